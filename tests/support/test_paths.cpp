@@ -1,0 +1,27 @@
+#include "tests/support/test_paths.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace nibrig::test {
+
+std::filesystem::path shared_data() {
+  const char* env = std::getenv("NIBRIG_SHARED_DATA");
+  std::filesystem::path dir = env != nullptr ? env : NIBRIG_SHARED_DATA_DEFAULT;
+  if (!std::filesystem::is_directory(dir)) {
+    throw std::runtime_error("shared data folder not found: " + dir.string() +
+                             " (set NIBRIG_SHARED_DATA or place shared/ beside the repository)");
+  }
+  return dir;
+}
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  std::filesystem::path dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::filesystem::path assets_dir() { return std::filesystem::path(NIBRIG_SOURCE_DIR) / "assets"; }
+
+}  // namespace nibrig::test
