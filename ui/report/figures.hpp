@@ -1,0 +1,81 @@
+// Publication-quality PNG figures for reports: heat maps (spectrograms), points with intervals, and
+// line plots. Inputs are plain data so that any caller adapts its own types; PLplot's pngcairo
+// device draws them, one figure at a time under a process-wide lock, each in a fresh PLplot stream.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nibrig::ui::report {
+
+// Pixel size of a written PNG. Text, line widths and markers scale with it (relative to the
+// default), so a figure keeps its proportions at any resolution.
+struct ImageSize {
+  int width_px = 1200;
+  int height_px = 800;
+};
+
+// Text fields (titles, labels, legend entries) are UTF-8 and may use PLplot's text escapes:
+// "#gm" is μ, "#u...#d" raises to a superscript, "#d...#u" lowers to a subscript, "##" is a '#'.
+
+// z[iy][ix] is the value of the cell centred on (x[ix], y[iy]). x and y must be strictly increasing
+// but need not be uniform: a cell extends half-way to its neighbours (the outer cells as far
+// outward as inward). With log_colour the colour shows 20·log10(z / max z) — z an amplitude —
+// clamped at -60 dB.
+struct HeatMap {
+  std::vector<double> x, y;
+  std::vector<std::vector<double>> z;
+  std::string title, x_label, y_label, colour_label;
+  bool log_colour = false;
+  ImageSize size{};
+};
+
+// One point estimate with its interval (e.g. μ of a tool–surface pair with its 95 % interval). Bars
+// of the same non-empty group share a colour and a legend entry.
+struct IntervalBar {
+  std::string label;
+  double value, low, high;
+  std::string group;
+};
+
+// The bars are drawn left to right in the given order. size is the smallest image written: it
+// widens so that every bar label has room (about 20 px per bar) and heightens for long labels.
+struct IntervalChart {
+  std::vector<IntervalBar> bars;
+  std::string title, value_label;
+  std::optional<std::pair<double, double>>
+      reference_band;  // drawn as a shaded band with a legend entry
+  std::string reference_label;
+  ImageSize size{};
+};
+
+// One curve; y_low and y_high, if given (both, each as long as x), are drawn as a shaded band.
+struct LineSeries {
+  std::string label;
+  std::vector<double> x, y;
+  std::vector<double> y_low, y_high;
+};
+
+// Up to six curves get distinct categorical colours; more (spectra at many speeds) get an ordered
+// sequence of colours from the heat maps' colour map, in the order given. Curves of at most 30
+// points also get a dot on each point.
+struct LinePlot {
+  std::vector<LineSeries> series;
+  std::string title, x_label, y_label;
+  bool log_y = false;
+  ImageSize size{};
+};
+
+// Each writes png through a temporary file in the same folder and a rename, so the path holds
+// either its previous content or the complete new figure. Throws std::invalid_argument, naming the
+// figure's title and the faulty field, for empty, mismatched or non-finite input;
+// std::runtime_error when the PLplot pngcairo device is missing or the file cannot be written. Safe
+// to call from several threads.
+void write_heat_map(const HeatMap& map, const std::filesystem::path& png);
+void write_interval_chart(const IntervalChart& chart, const std::filesystem::path& png);
+void write_line_plot(const LinePlot& plot, const std::filesystem::path& png);
+
+}  // namespace nibrig::ui::report
