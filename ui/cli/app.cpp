@@ -1,17 +1,46 @@
 #include "ui/cli/app.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <CLI/CLI.hpp>
-#include <iostream>
+#include <cstdio>
+#include <exception>
+#include <thread>
+
+#include "ui/cli/commands.hpp"
+#include "ui/cli/logging.hpp"
 
 namespace nibrig::ui::cli {
 
+unsigned worker_threads(const GlobalOptions& global) {
+  if (global.threads > 0) return global.threads;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
 int run(int argc, char** argv) {
-  CLI::App app{"nibrig: perception-aware modelling of digital drawing tools"};
+  auto global = std::make_shared<GlobalOptions>();
+  CLI::App app{
+      "nibrig: perception-aware modelling of digital drawing tools.\n"
+      "Measures tools on surfaces (friction, vibration spectra), builds tool catalogs of physical\n"
+      "descriptors, and reports them. Implements Piovarci et al., SIGGRAPH 2018."};
+  app.set_version_flag("--version", "nibrig 0.1.0");
   app.require_subcommand(1);
+  app.add_flag("-v,--verbose", global->verbosity, "More log output on stderr (-v info, -vv debug)");
+  app.add_option("-j,--threads", global->threads, "Worker threads (default: one per core)")
+      ->check(CLI::Range(1u, 256u));
+  app.parse_complete_callback([global] { configure_logging(global->verbosity); });
+
+  add_measure_command(app, global);
+  add_catalog_command(app, global);
+  add_demo_command(app, global);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "nibrig: error: %s\n", e.what());
+    return 1;
   }
   return 0;
 }

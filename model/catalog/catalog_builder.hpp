@@ -1,0 +1,46 @@
+// Every recording in a folder tree -> one tool catalog: finds the paper's friction and accelerometer
+// files and our rig sessions, analyses them in parallel, and gathers the descriptors of each
+// tool-surface pair with the provenance of every number.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/catalog/analysis.hpp"
+#include "model/io/catalog.hpp"
+
+namespace nibrig::model::catalog {
+
+enum class RecordingKind { paper_friction, paper_vibration, session };
+
+struct RecordingFile {
+  std::filesystem::path path;
+  RecordingKind kind;
+};
+
+struct FoundRecordings {
+  std::vector<RecordingFile> files;          // sorted by path, so catalogs are reproducible
+  std::vector<std::string> skipped;          // "<path>: <reason>" for files that are not recordings
+};
+
+FoundRecordings find_recordings(const std::filesystem::path& folder);
+
+// Which kind of recording a single path is; throws std::runtime_error naming the path if none.
+RecordingKind classify_recording(const std::filesystem::path& path);
+
+struct CatalogBuild {
+  io::Catalog catalog;
+  std::vector<FrictionAnalysis> friction;
+  std::vector<VibrationAnalysis> vibration;
+  std::vector<std::string> skipped;
+};
+
+// on_done is called (from worker threads, serialised by the caller if needed) as each file finishes.
+// A file that fails to read stops the build with its error: a catalog never silently lacks a file.
+CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::ThresholdCurve& threshold,
+                           const AnalysisOptions& options, unsigned threads,
+                           const std::function<void(const std::filesystem::path&)>& on_done = {});
+
+}  // namespace nibrig::model::catalog

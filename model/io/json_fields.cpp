@@ -1,0 +1,166 @@
+#include "model/io/json_fields.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "model/io/format_error.hpp"
+#include "model/io/text_lines.hpp"
+
+namespace nibrig::model::io::json_fields {
+
+namespace {
+
+std::string describe(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::null:
+      return "null";
+    case nlohmann::json::value_t::object:
+      return "an object";
+    case nlohmann::json::value_t::array:
+      return "an array";
+    case nlohmann::json::value_t::string:
+      return "the string " + in_quotes(value.get_ref<const std::string&>());
+    case nlohmann::json::value_t::boolean:
+      return value.get<bool>() ? "true" : "false";
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned:
+    case nlohmann::json::value_t::number_float:
+      return "the number " + value.dump();
+    default:
+      return "a value of another kind";
+  }
+}
+
+}  // namespace
+
+nlohmann::json parse_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw FormatError(file, "", "is a folder, expected a JSON file");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw FormatError(file, "", "cannot open for reading");
+  std::ostringstream content;
+  content << in.rdbuf();
+  const std::string text = content.str();
+  if (std::all_of(text.begin(), text.end(),
+                  [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) {
+    throw FormatError(file, "", "empty file: expected a JSON object");
+  }
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    const std::size_t byte = std::min<std::size_t>(error.byte, text.size());
+    const std::size_t line =
+        1 + static_cast<std::size_t>(
+                std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
+    throw FormatError(file, line_place(line), std::string("invalid JSON: ") + error.what());
+  } catch (const nlohmann::json::exception& error) {
+    // A number beyond double range ("1e999") is out_of_range, not parse_error, and has no position.
+    throw FormatError(file, "", std::string("invalid JSON: ") + error.what());
+  }
+}
+
+std::string member_path(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string element_path(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
+}
+
+std::string place(const std::string& path) { return path.empty() ? "" : "field '" + path + "'"; }
+
+const nlohmann::json& as_object(const nlohmann::json& value, const std::filesystem::path& file,
+                                const std::string& path) {
+  if (!value.is_object())
+    throw FormatError(file, place(path), "expected an object, found " + describe(value));
+  return value;
+}
+
+const nlohmann::json& as_array(const nlohmann::json& value, const std::filesystem::path& file,
+                               const std::string& path) {
+  if (!value.is_array())
+    throw FormatError(file, place(path), "expected a list, found " + describe(value));
+  return value;
+}
+
+const nlohmann::json& member(const nlohmann::json& object, const std::string& key,
+                             const std::filesystem::path& file, const std::string& parent) {
+  as_object(object, file, parent);
+  const auto it = object.find(key);
+  if (it == object.end()) {
+    throw FormatError(file, place(member_path(parent, key)), "missing field");
+  }
+  return *it;
+}
+
+std::string as_string(const nlohmann::json& value, const std::filesystem::path& file,
+                      const std::string& path) {
+  if (!value.is_string())
+    throw FormatError(file, place(path), "expected a string, found " + describe(value));
+  return value.get<std::string>();
+}
+
+double as_number(const nlohmann::json& value, const std::filesystem::path& file,
+                 const std::string& path) {
+  if (!value.is_number())
+    throw FormatError(file, place(path), "expected a number, found " + describe(value));
+  const double number = value.get<double>();
+  if (!std::isfinite(number))
+    throw FormatError(file, place(path), "expected a finite number, found " + value.dump());
+  return number;
+}
+
+long long as_integer(const nlohmann::json& value, const std::filesystem::path& file,
+                     const std::string& path, long long min, long long max) {
+  // Built piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + std::to_string(...).
+  std::string range = "[";
+  range.append(std::to_string(min)).append(", ").append(std::to_string(max)).append("]");
+  // nlohmann keeps non-negative integers as unsigned and negative ones as signed.
+  if (value.is_number_unsigned()) {
+    const auto number = value.get<unsigned long long>();
+    if (max < 0 || number > static_cast<unsigned long long>(max) ||
+        static_cast<long long>(number) < min) {
+      throw FormatError(file, place(path),
+                        "expected a whole number in " + range + ", found " + value.dump());
+    }
+    return static_cast<long long>(number);
+  }
+  if (value.is_number_integer()) {
+    const long long number = value.get<long long>();
+    if (number < min || number > max) {
+      throw FormatError(file, place(path),
+                        "expected a whole number in " + range + ", found " + value.dump());
+    }
+    return number;
+  }
+  throw FormatError(file, place(path),
+                    "expected a whole number in " + range + ", found " + describe(value));
+}
+
+std::vector<double> as_number_array(const nlohmann::json& value, const std::filesystem::path& file,
+                                    const std::string& path) {
+  as_array(value, file, path);
+  std::vector<double> numbers;
+  numbers.reserve(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    numbers.push_back(as_number(value[i], file, element_path(path, i)));
+  }
+  return numbers;
+}
+
+std::string string_member(const nlohmann::json& object, const std::string& key,
+                          const std::filesystem::path& file, const std::string& parent) {
+  return as_string(member(object, key, file, parent), file, member_path(parent, key));
+}
+
+double number_member(const nlohmann::json& object, const std::string& key,
+                     const std::filesystem::path& file, const std::string& parent) {
+  return as_number(member(object, key, file, parent), file, member_path(parent, key));
+}
+
+}  // namespace nibrig::model::io::json_fields

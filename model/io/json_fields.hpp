@@ -1,0 +1,51 @@
+// Typed access to the fields of a JSON file for the readers in model/io: every failure is a
+// FormatError naming the file and the JSON path of the field (e.g. `pairings[3].vibration.mu`).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace nibrig::model::io::json_fields {
+
+// Parses a whole file; syntax errors name the line. An empty file is an error.
+nlohmann::json parse_file(const std::filesystem::path& file);
+
+// "parent.key" and "parent[i]"; an empty parent gives "key".
+std::string member_path(const std::string& parent, const std::string& key);
+std::string element_path(const std::string& parent, std::size_t index);
+
+// The place string used in errors: "field 'a.b[2]'".
+std::string place(const std::string& path);
+
+// Checks `value` (found at `path`) is an object / array, else throws "expected an object, found
+// ...".
+const nlohmann::json& as_object(const nlohmann::json& value, const std::filesystem::path& file,
+                                const std::string& path);
+const nlohmann::json& as_array(const nlohmann::json& value, const std::filesystem::path& file,
+                               const std::string& path);
+
+// A member of an object that must be present; "missing field" otherwise.
+const nlohmann::json& member(const nlohmann::json& object, const std::string& key,
+                             const std::filesystem::path& file, const std::string& parent);
+
+std::string as_string(const nlohmann::json& value, const std::filesystem::path& file,
+                      const std::string& path);
+// A finite number (JSON has no NaN, but a reader must not trust that).
+double as_number(const nlohmann::json& value, const std::filesystem::path& file,
+                 const std::string& path);
+// A whole number in [min, max].
+long long as_integer(const nlohmann::json& value, const std::filesystem::path& file,
+                     const std::string& path, long long min, long long max);
+std::vector<double> as_number_array(const nlohmann::json& value, const std::filesystem::path& file,
+                                    const std::string& path);
+
+// Shorthands for a required member of a given type.
+std::string string_member(const nlohmann::json& object, const std::string& key,
+                          const std::filesystem::path& file, const std::string& parent);
+double number_member(const nlohmann::json& object, const std::string& key,
+                     const std::filesystem::path& file, const std::string& parent);
+
+}  // namespace nibrig::model::io::json_fields

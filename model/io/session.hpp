@@ -1,0 +1,99 @@
+// Our own rig recording format: a folder with session.json (what, how, calibration) and one float32
+// WAV file per stream. Written incrementally into <folder>.partial and renamed on finish, so a
+// capture that is killed still leaves every block recorded up to that point readable.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace nibrig::model::io {
+
+struct SessionInfo {
+  std::string tool, surface;
+  double normal_load_N = 0.0;
+  // WAV files store whole-number rates, so these must be whole numbers of hertz.
+  double acceleration_rate_hz = 0.0;  // acceleration.wav (audio rate)
+  double speed_rate_hz = 0.0;         // speed.wav
+  double force_rate_hz = 0.0;         // normal_force.wav and tangential_force.wav
+  // What each stream's numbers mean, e.g. {"acceleration": "audio full scale", "speed": "m/s"}.
+  std::map<std::string, std::string> units;
+  struct {
+    // acceleration.wav holds the signal as captured; times this factor it is m/s².
+    double accelerometer_m_s2_per_unit = 1.0;
+    double force_counts_per_N = 403.2;  // the OptoForce sensor's sensitivity
+    double lever_factor = 1.0;
+  } calibration;
+  std::string speed_profile;  // e.g. "sweep 17-250 mm/s, 3 s period"
+  std::string notes;
+  std::string created_utc;  // ISO 8601; the writer fills it in when empty
+};
+
+// The files inside a session folder.
+inline constexpr const char* kSessionJson = "session.json";
+inline constexpr const char* kAccelerationWav = "acceleration.wav";
+inline constexpr const char* kSpeedWav = "speed.wav";
+inline constexpr const char* kNormalForceWav = "normal_force.wav";
+inline constexpr const char* kTangentialForceWav = "tangential_force.wav";
+
+// Records one session. Every append goes straight to its WAV file and the WAV header is rewritten
+// after each block, so the .partial folder is valid at every moment. Not thread-safe: one capture
+// thread appends.
+class SessionWriter {
+ public:
+  // Creates <folder>.partial with session.json and the four empty streams. Throws
+  // std::invalid_argument for an unusable SessionInfo and std::runtime_error when <folder> or
+  // <folder>.partial already exists or cannot be created.
+  SessionWriter(std::filesystem::path folder, SessionInfo info);
+  ~SessionWriter();  // without finish(): closes the streams and leaves <folder>.partial readable
+  SessionWriter(const SessionWriter&) = delete;
+  SessionWriter& operator=(const SessionWriter&) = delete;
+
+  // Each throws std::invalid_argument for a non-finite sample (nothing of the block is written),
+  // std::runtime_error on a write failure and std::logic_error after finish().
+  void append_acceleration(std::span<const float> samples);
+  void append_speed(std::span<const float> samples_m_s);
+  void append_normal_force(std::span<const float> samples_N);
+  void append_tangential_force(std::span<const float> samples_N);
+
+  // Closes the streams, records the frame counts in session.json and renames <folder>.partial to
+  // <folder> atomically; fails (std::runtime_error) without replacing anything if <folder> exists.
+  void finish();
+
+  const std::filesystem::path& partial_folder() const { return partial_; }
+  const std::filesystem::path& folder() const { return folder_; }
+
+ private:
+  struct Stream;
+  void append(Stream& stream, std::span<const float> samples);
+  void close_streams() noexcept;
+
+  std::filesystem::path folder_;
+  std::filesystem::path partial_;
+  SessionInfo info_;
+  std::vector<std::unique_ptr<Stream>> streams_;  // acceleration, speed, normal, tangential
+  bool finished_ = false;
+};
+
+struct Session {
+  SessionInfo info;
+  std::vector<float> acceleration, speed_m_s, normal_force_N, tangential_force_N;
+  bool complete = false;  // false for a <folder>.partial left by an interrupted capture
+  std::filesystem::path folder;
+  // What the reader had to accept in a .partial folder (a stream whose data outlasts its header).
+  std::vector<std::string> warnings;
+};
+
+// Reads a finished session folder, or a .partial folder up to its last fully written block.
+// Throws FormatError for a missing or invalid session.json (naming the field), a WAV file that is
+// not mono float32, has the wrong sample rate, holds NaN or infinite samples, or (finished
+// sessions) holds a different number of frames than session.json records.
+Session read_session(const std::filesystem::path& folder);
+
+// The path of the .partial folder a writer uses for `folder`.
+std::filesystem::path partial_folder_of(const std::filesystem::path& folder);
+
+}  // namespace nibrig::model::io

@@ -1,0 +1,144 @@
+#include "model/io/session_json.hpp"
+
+#include <cmath>
+
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
+
+namespace nibrig::model::io::session_json {
+
+namespace {
+
+// libsndfile keeps the rate in an int; anything near that is not a real sensor rate anyway.
+constexpr double kHighestRate_hz = 10'000'000.0;
+
+std::optional<Problem> check_rate(double rate, const char* field) {
+  if (!std::isfinite(rate) || rate < 1.0 || rate > kHighestRate_hz || std::floor(rate) != rate) {
+    return Problem{field, "expected a whole number of hertz in [1, 10000000], found " +
+                              nlohmann::json(rate).dump()};
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> check_positive(double value, const char* field) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    return Problem{field, "expected a positive number, found " + nlohmann::json(value).dump()};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Problem> check(const SessionInfo& info) {
+  if (info.tool.empty()) return Problem{"tool", "expected a tool id, found an empty string"};
+  if (info.surface.empty())
+    return Problem{"surface", "expected a surface id, found an empty string"};
+  if (!std::isfinite(info.normal_load_N) || info.normal_load_N < 0.0) {
+    return Problem{"normal_load_N", "expected a load in newtons (>= 0), found " +
+                                        nlohmann::json(info.normal_load_N).dump()};
+  }
+  if (auto p = check_rate(info.acceleration_rate_hz, "acceleration_rate_hz")) return p;
+  if (auto p = check_rate(info.speed_rate_hz, "speed_rate_hz")) return p;
+  if (auto p = check_rate(info.force_rate_hz, "force_rate_hz")) return p;
+  if (auto p = check_positive(info.calibration.accelerometer_m_s2_per_unit,
+                              "calibration.accelerometer_m_s2_per_unit")) {
+    return p;
+  }
+  if (auto p =
+          check_positive(info.calibration.force_counts_per_N, "calibration.force_counts_per_N")) {
+    return p;
+  }
+  if (auto p = check_positive(info.calibration.lever_factor, "calibration.lever_factor")) return p;
+  return std::nullopt;
+}
+
+double rate_of(const SessionInfo& info, std::size_t stream) {
+  switch (stream) {
+    case 0:
+      return info.acceleration_rate_hz;
+    case 1:
+      return info.speed_rate_hz;
+    default:
+      return info.force_rate_hz;
+  }
+}
+
+nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4>* frames) {
+  nlohmann::json json = {
+      {"format", kFormat},
+      {"version", kVersion},
+      {"tool", info.tool},
+      {"surface", info.surface},
+      {"normal_load_N", info.normal_load_N},
+      {"acceleration_rate_hz", info.acceleration_rate_hz},
+      {"speed_rate_hz", info.speed_rate_hz},
+      {"force_rate_hz", info.force_rate_hz},
+      {"units", info.units},
+      {"calibration",
+       {{"accelerometer_m_s2_per_unit", info.calibration.accelerometer_m_s2_per_unit},
+        {"force_counts_per_N", info.calibration.force_counts_per_N},
+        {"lever_factor", info.calibration.lever_factor}}},
+      {"speed_profile", info.speed_profile},
+      {"notes", info.notes},
+      {"created_utc", info.created_utc},
+  };
+  if (frames != nullptr) {
+    nlohmann::json counts = nlohmann::json::object();
+    for (std::size_t k = 0; k < kStreams.size(); ++k) counts[kStreams[k]] = (*frames)[k];
+    json["frames"] = counts;
+  }
+  return json;
+}
+
+Parsed from_json(const nlohmann::json& json, const std::filesystem::path& file) {
+  using namespace json_fields;
+  as_object(json, file, "");
+  const std::string format = string_member(json, "format", file, "");
+  if (format != kFormat) {
+    throw FormatError(
+        file, place("format"),
+        "expected \"" + std::string(kFormat) + "\", found " + nlohmann::json(format).dump());
+  }
+  const long long version =
+      as_integer(member(json, "version", file, ""), file, "version", 1, 1'000'000);
+  if (version > kVersion) {
+    throw FormatError(file, place("version"),
+                      "expected version " + std::to_string(kVersion) + " (this program's), found " +
+                          std::to_string(version));
+  }
+  Parsed parsed;
+  SessionInfo& info = parsed.info;
+  info.tool = string_member(json, "tool", file, "");
+  info.surface = string_member(json, "surface", file, "");
+  info.normal_load_N = number_member(json, "normal_load_N", file, "");
+  info.acceleration_rate_hz = number_member(json, "acceleration_rate_hz", file, "");
+  info.speed_rate_hz = number_member(json, "speed_rate_hz", file, "");
+  info.force_rate_hz = number_member(json, "force_rate_hz", file, "");
+  const nlohmann::json& units = as_object(member(json, "units", file, ""), file, "units");
+  for (const auto& [key, value] : units.items()) {
+    info.units[key] = as_string(value, file, member_path("units", key));
+  }
+  const nlohmann::json& calibration = member(json, "calibration", file, "");
+  info.calibration.accelerometer_m_s2_per_unit =
+      number_member(calibration, "accelerometer_m_s2_per_unit", file, "calibration");
+  info.calibration.force_counts_per_N =
+      number_member(calibration, "force_counts_per_N", file, "calibration");
+  info.calibration.lever_factor = number_member(calibration, "lever_factor", file, "calibration");
+  info.speed_profile = string_member(json, "speed_profile", file, "");
+  info.notes = string_member(json, "notes", file, "");
+  info.created_utc = string_member(json, "created_utc", file, "");
+  if (auto problem = check(info)) throw FormatError(file, place(problem->field), problem->what);
+
+  if (const auto it = json.find("frames"); it != json.end()) {
+    as_object(*it, file, "frames");
+    std::array<std::int64_t, 4> frames{};
+    for (std::size_t k = 0; k < kStreams.size(); ++k) {
+      frames[k] = as_integer(member(*it, kStreams[k], file, "frames"), file,
+                             member_path("frames", kStreams[k]), 0, INT64_MAX);
+    }
+    parsed.frames = frames;
+  }
+  return parsed;
+}
+
+}  // namespace nibrig::model::io::session_json

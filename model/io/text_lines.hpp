@@ -1,0 +1,125 @@
+// Line-by-line reading of the text files every importer shares: plain or gzip-compressed files
+// through zlib, strict number parsing and header-column lookup. Every failure is a FormatError
+// naming the file, the line (and field) and what was expected.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+struct gzFile_s;  // zlib's handle type, kept out of this header
+
+namespace nibrig::model::io {
+
+// Reads a file one line at a time; gzip-compressed and plain files alike (zlib reads plain files
+// through unchanged). A truncated or corrupt compressed stream throws a FormatError naming the line
+// at which the data broke off, instead of looking like a short but valid file.
+class TextLineReader {
+ public:
+  explicit TextLineReader(std::filesystem::path file);
+  ~TextLineReader();
+  TextLineReader(const TextLineReader&) = delete;
+  TextLineReader& operator=(const TextLineReader&) = delete;
+
+  // The next line without its ending ("\n" or "\r\n"); false at the end of the file.
+  bool next(std::string& line);
+
+  // 1-based number of the line last returned by next(); 0 before the first.
+  std::size_t line_number() const { return line_; }
+
+  // False when the line last returned had no line ending: it was the file's last and the writer may
+  // have been stopped in the middle of it.
+  bool last_line_terminated() const { return terminated_; }
+
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  bool refill();
+
+  std::filesystem::path file_;
+  gzFile_s* gz_ = nullptr;
+  std::vector<char> buffer_;
+  std::size_t begin_ = 0;
+  std::size_t end_ = 0;
+  bool at_end_ = false;
+  std::string
+      pending_error_;  // zlib reported truncation: thrown once the buffered lines are used up
+  std::size_t line_ = 0;
+  bool terminated_ = true;
+};
+
+// Splits a line at every separator; no quoting (none of the formats read here quote fields).
+std::vector<std::string_view> split_fields(std::string_view line, char sep = ',');
+
+// A field as it may appear in an error message: quoted, control bytes escaped, long text shortened.
+std::string in_quotes(std::string_view text);
+
+// A finite decimal number (surrounding spaces allowed). Rejects empty fields, text, trailing
+// characters, NaN and infinities: FormatError "file line N, field 'column': expected a number,
+// ...".
+double parse_number(std::string_view field, const std::filesystem::path& file, std::size_t line,
+                    std::string_view column);
+
+// A whole number written without a fraction or exponent (counts, millisecond timestamps).
+long long parse_integer(std::string_view field, const std::filesystem::path& file, std::size_t line,
+                        std::string_view column);
+
+// The header line of a CSV file: finds columns by name so that column order does not matter, and
+// names the expected header when a column is missing.
+class CsvHeader {
+ public:
+  // expected: the header as the format documents it, quoted in errors ("TimeStamp,X,Y,Z").
+  CsvHeader(std::string_view line, std::filesystem::path file, std::size_t line_number,
+            std::string expected, char sep = ',');
+
+  std::optional<std::size_t> find(std::string_view name) const;
+  // Throws "missing column 'Z' (expected header ..., found ...)".
+  std::size_t column(std::string_view name) const;
+
+  const std::vector<std::string>& names() const { return names_; }
+  std::size_t line_number() const { return line_number_; }
+
+ private:
+  std::filesystem::path file_;
+  std::size_t line_number_;
+  std::string expected_;
+  std::string found_;
+  std::vector<std::string> names_;
+};
+
+// The data rows of a CSV file after its header line. Blank lines at the very end are tolerated
+// (editors add them); a blank line with data after it is an error, never skipped silently.
+class CsvReader {
+ public:
+  // Throws "empty file: expected a header line '<expected_header>'" for a file without any line.
+  CsvReader(std::filesystem::path file, std::string expected_header, char sep = ',');
+
+  const CsvHeader& header() const { return header_; }
+
+  // The next data row split into fields (views into an internal buffer, valid until the next call).
+  bool next(std::vector<std::string_view>& fields);
+
+  std::size_t line_number() const { return lines_.line_number(); }
+  // True when the row last returned is the file's last and has no line ending.
+  bool row_unterminated() const { return !lines_.last_line_terminated(); }
+
+  // Throws unless the row has at least `needed` fields: "line N: expected M fields (...), found K".
+  void require_fields(const std::vector<std::string_view>& fields, std::size_t needed) const;
+
+  const std::filesystem::path& file() const { return lines_.file(); }
+
+ private:
+  TextLineReader lines_;
+  char sep_;
+  std::string expected_header_;
+  std::string row_;
+  CsvHeader header_;
+};
+
+// The name of a CSV file without its ".csv" or ".csv.gz" ending; nullopt for any other name.
+std::optional<std::string> csv_stem(const std::filesystem::path& file);
+
+}  // namespace nibrig::model::io

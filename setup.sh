@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# nibrig setup: installs the Debian packages the project needs (only when something is missing),
+# builds, and runs one job:
+#   ./setup.sh demo    build (Release) and run `nibrig demo` on the bundled default -> nibrig-demo/
+#   ./setup.sh test    build with ASan+UBSan, run every test suite, then fuzz the readers briefly
+#   ./setup.sh bench   build (Release) and run the benchmarks with the scipy reference beside them
+#   ./setup.sh build   build (Release) only
+set -euo pipefail
+cd "$(dirname "$0")"
+root=$(pwd)
+job=${1:-demo}
+jobs=${NIBRIG_JOBS:-$(nproc)}
+
+packages=(
+  build-essential cmake pkg-config ninja-build ccache
+  libeigen3-dev libfftw3-dev libsndfile1-dev zlib1g-dev
+  nlohmann-json3-dev libcli11-dev libspdlog-dev
+  libplplot-dev plplot-driver-cairo
+  libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev
+  python3-numpy python3-scipy
+)
+
+install_packages() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "setup: installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure_and_build() {  # $1 = build dir, rest = cmake options
+  local dir=$1; shift
+  cmake -S "$root" -B "$dir" -G Ninja "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+}
+
+build_fuzzers() {  # libFuzzer needs clang; the readers are built again into each fuzz binary
+  local out=$root/build/fuzz
+  mkdir -p "$out"
+  for target in "$root"/tests/fuzz/fuzz_*.cpp; do
+    local name
+    name=$(basename "$target" .cpp)
+    clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -I"$root" \
+      "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib) -o "$out/$name"
+  done
+}
+
+run_fuzzers() {
+  local seconds=${NIBRIG_FUZZ_SECONDS:-20}
+  for bin in "$root"/build/fuzz/fuzz_*; do
+    local name corpus work
+    name=$(basename "$bin")
+    corpus=$root/tests/fuzz/corpus/${name#fuzz_}
+    work=$(mktemp -d)
+    cp -r "$corpus"/. "$work"/ 2>/dev/null || true
+    echo "fuzz: $name for ${seconds} s"
+    "$bin" -max_total_time="$seconds" -print_final_stats=1 "$work" 2>"$root/build/fuzz/$name.log" ||
+      { tail -40 "$root/build/fuzz/$name.log"; echo "fuzz: $name found a crash"; return 1; }
+    grep -E "stat::number_of_executed_units" "$root/build/fuzz/$name.log" || true
+    rm -rf "$work"
+  done
+}
+
+install_packages
+case "$job" in
+  demo)
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF
+    ./build/release/ui/nibrig demo -o nibrig-demo
+    ;;
+  test)
+    configure_and_build build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNIBRIG_SANITIZE=ON -DNIBRIG_BUILD_BENCH=OFF
+    (cd build/asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+       ctest --output-on-failure -j "$jobs")
+    build_fuzzers
+    run_fuzzers
+    ;;
+  bench)
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON
+    ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
+    /usr/bin/python3 tests/bench/scipy_spectrogram.py
+    ;;
+  build)
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release
+    ;;
+  *)
+    echo "usage: ./setup.sh [demo|test|bench|build]" >&2
+    exit 2
+    ;;
+esac

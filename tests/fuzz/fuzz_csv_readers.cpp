@@ -1,0 +1,94 @@
+// libFuzzer target for the text readers of model/io: the input bytes become a file (gzip or plain,
+// zlib tells them apart) read as a friction recording, an accelerometer recording, an artist's
+// trajectory and each kind of triplet file. A FormatError is the expected answer to bad bytes;
+// anything else (another exception, a crash, a sanitizer report) is a bug in a reader.
+//
+// Build and run (clang):
+//   clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address -I. tests/fuzz/fuzz_csv_readers.cpp \
+//     model/io/*.cpp -lz -lsndfile -o /tmp/fuzz_csv
+//   /tmp/fuzz_csv -max_total_time=60 /tmp/csv_corpus tests/fuzz/corpus/csv
+// (the first folder receives new inputs, so the seeds in the repository stay as they are).
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "model/io/format_error.hpp"
+#include "model/io/paper_drawing.hpp"
+#include "model/io/paper_friction.hpp"
+#include "model/io/paper_vibration.hpp"
+#include "model/io/triplets.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace io = nibrig::model::io;
+
+// A fresh folder for one input, removed afterwards; mkdtemp keeps parallel jobs (-jobs=N) apart.
+// Per input rather than per process because libFuzzer ends with _Exit, which skips any cleanup
+// registered for exit. In memory when possible: rewriting files on ext4 flushes them to disk on
+// close, which slows fuzzing ~50x.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    std::error_code ec;
+    const fs::path base = std::getenv("TMPDIR") == nullptr && fs::is_directory("/dev/shm", ec)
+                              ? fs::path("/dev/shm")
+                              : fs::temp_directory_path();
+    std::string pattern = (base / "nibrig-fuzz-csv-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) std::abort();  // the harness failed, not a reader
+    path_ = pattern;
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+void write_file(const fs::path& file, const std::uint8_t* data, std::size_t size) {
+  std::ofstream out(file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  if (!out) std::abort();  // the harness itself failed, not the reader
+}
+
+template <typename Read>
+void expect_only_format_errors(const fs::path& file, Read read) {
+  try {
+    read(file);
+  } catch (const io::FormatError&) {
+    // The reader recognised bad input and said so.
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const ScratchFolder scratch;
+  const fs::path& dir = scratch.path();
+  // File names the name parsers accept, so the fuzzer reaches the contents.
+  const fs::path friction = dir / "p2h_note_2.2N_14_1.csv";
+  const fs::path vibration = dir / "arm_vero_1_glass.csv";
+  const fs::path drawing = dir / "pen_paper_cube.csv";
+  const fs::path triplets = dir / "triplets.csv";
+  const fs::path lagunas = dir / "answers.json";
+  for (const fs::path* file : {&friction, &vibration, &drawing, &triplets, &lagunas}) {
+    write_file(*file, data, size);
+  }
+  expect_only_format_errors(friction, io::read_paper_friction);
+  expect_only_format_errors(vibration, io::read_paper_vibration);
+  expect_only_format_errors(drawing, io::read_paper_drawing);
+  expect_only_format_errors(triplets, io::read_triplets);
+  expect_only_format_errors(triplets, io::read_triplet_csv);
+  expect_only_format_errors(triplets, io::read_salmon_csv);
+  expect_only_format_errors(lagunas, io::read_lagunas_json);
+  return 0;
+}

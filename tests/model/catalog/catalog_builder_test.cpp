@@ -1,0 +1,59 @@
+#include "model/catalog/catalog_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::catalog {
+namespace {
+
+std::size_t count_files(const std::filesystem::path& folder, const std::string& prefix) {
+  std::size_t n = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(folder)) {
+    const auto name = e.path().filename().string();
+    if (e.is_regular_file() && name.rfind(prefix, 0) == 0 && name.find(".csv") != std::string::npos) ++n;
+  }
+  return n;
+}
+
+TEST(FindRecordings, FindsEveryFrictionAndVibrationFileOfThePaper) {
+  const auto root = test::shared_data() / "piovarci2018";
+  const auto found = find_recordings(root);
+  std::size_t friction = 0, vibration = 0;
+  for (const auto& f : found.files) {
+    if (f.kind == RecordingKind::paper_friction) ++friction;
+    if (f.kind == RecordingKind::paper_vibration) ++vibration;
+  }
+  // Independent count straight from the file system: every friction CSV, every arm_ CSV.
+  std::size_t friction_on_disk = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root / "friction")) {
+    if (e.is_regular_file()) ++friction_on_disk;
+  }
+  EXPECT_EQ(friction, friction_on_disk);
+  EXPECT_EQ(vibration, count_files(root / "vibration", "arm_"));
+  // The only skipped file is the bare timestamp list; drawings are not rig recordings.
+  ASSERT_EQ(found.skipped.size(), 1u);
+  EXPECT_NE(found.skipped[0].find("ts.csv.gz"), std::string::npos);
+}
+
+TEST(ClassifyRecording, RejectsWhatIsNotARecordingWithItsPath) {
+  const auto dir = test::scratch_dir("classify");
+  try {
+    classify_recording(dir / "nothing.csv");
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("nothing.csv"), std::string::npos);
+  }
+  try {
+    classify_recording(dir);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("session.json"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace nibrig::model::catalog

@@ -1,0 +1,22 @@
+// The subcommands of `nibrig`, one file each. Every command registers itself on the CLI11 app; its
+// callback does the work and throws on failure (app.cpp turns that into one line on stderr).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+
+namespace nibrig::ui::cli {
+
+struct GlobalOptions {
+  int verbosity = 0;
+  unsigned threads = 0;  // 0 = one per core
+};
+
+void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+
+// Threads to use for parallel work: the --threads option, or the number of cores.
+unsigned worker_threads(const GlobalOptions& global);
+
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,21 @@
+// Small file-output helpers shared by the commands: folders, files written atomically, file stems.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace nibrig::ui::cli {
+
+// Creates the folder (and parents) or throws naming it.
+void ensure_folder(const std::filesystem::path& folder);
+
+// Creates the folder of `path` and writes `text` atomically (model/io/atomic_file.hpp), so a crash
+// never leaves half a file.
+void write_text_file(const std::filesystem::path& path, const std::string& text);
+void write_json_file(const std::filesystem::path& path, const nlohmann::json& json);
+
+// "arm_vero_1_office.csv.gz" -> "arm_vero_1_office"; a session folder -> its name.
+std::string recording_stem(const std::filesystem::path& recording);
+
+}  // namespace nibrig::ui::cli
