@@ -1,15 +1,13 @@
 #include "model/measure/effective_sample_size.hpp"
 
-#include <fftw3.h>
-
+#include <algorithm>
 #include <cmath>
-#include <memory>
-#include <mutex>
+#include <complex>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
 
-#include "model/measure/fftw_planner_lock.hpp"
+#include "model/measure/real_fft.hpp"
 
 namespace nibrig::model::measure {
 
@@ -20,37 +18,20 @@ std::vector<double> autocovariance(std::span<const double> x, double mean) {
   const std::size_t n = x.size();
   std::size_t padded = 1;
   while (padded < 2 * n) padded *= 2;
-  const std::size_t bins = padded / 2 + 1;
-  std::unique_ptr<double, decltype(&fftw_free)> real(
-      static_cast<double*>(fftw_malloc(sizeof(double) * padded)), &fftw_free);
-  std::unique_ptr<fftw_complex, decltype(&fftw_free)> spec(
-      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * bins)), &fftw_free);
-  if (!real || !spec) throw std::bad_alloc();
-  fftw_plan forward = nullptr;
-  fftw_plan backward = nullptr;
-  {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    forward = fftw_plan_dft_r2c_1d(static_cast<int>(padded), real.get(), spec.get(), FFTW_ESTIMATE);
-    backward =
-        fftw_plan_dft_c2r_1d(static_cast<int>(padded), spec.get(), real.get(), FFTW_ESTIMATE);
+  RealFft fft(padded, RealFft::Plans::forward_and_backward);
+  const std::span<double> real = fft.real();
+  for (std::size_t i = 0; i < padded; ++i) real[i] = i < n ? x[i] - mean : 0.0;
+  fft.forward();
+  for (std::complex<double>& c : fft.spectrum()) {
+    const double re = c.real();
+    const double im = c.imag();
+    c = {re * re + im * im, 0.0};
   }
-  for (std::size_t i = 0; i < padded; ++i) real.get()[i] = i < n ? x[i] - mean : 0.0;
-  fftw_execute(forward);
-  for (std::size_t k = 0; k < bins; ++k) {
-    auto& c = spec.get()[k];
-    c[0] = c[0] * c[0] + c[1] * c[1];
-    c[1] = 0.0;
-  }
-  fftw_execute(backward);
-  {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    fftw_destroy_plan(forward);
-    fftw_destroy_plan(backward);
-  }
+  fft.backward();
   std::vector<double> acov(n);
   // FFTW's c2r is unnormalised (factor `padded`); the autocovariance divides by n.
   for (std::size_t k = 0; k < n; ++k) {
-    acov[k] = real.get()[k] / (static_cast<double>(padded) * static_cast<double>(n));
+    acov[k] = real[k] / (static_cast<double>(padded) * static_cast<double>(n));
   }
   return acov;
 }

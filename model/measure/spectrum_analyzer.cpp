@@ -1,14 +1,13 @@
 #include "model/measure/spectrum_analyzer.hpp"
 
-#include <fftw3.h>
-
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/fftw_planner_lock.hpp"
+#include "model/measure/real_fft.hpp"
 
 namespace nibrig::model::measure {
 
@@ -25,16 +24,13 @@ std::vector<double> window_coefficients(Window window, std::size_t length) {
 
 namespace {
 
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
-
-struct PlanDestroy {
-  void operator()(fftw_plan_s* plan) const {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    fftw_destroy_plan(plan);
+std::size_t checked_length(std::size_t segment_length) {
+  if (segment_length < 2) {
+    throw std::invalid_argument("SpectrumAnalyzer: segment length must be at least 2, got " +
+                                std::to_string(segment_length));
   }
-};
+  return segment_length;
+}
 
 void require_size(std::size_t got, std::size_t expected, const char* what) {
   if (got != expected) {
@@ -47,39 +43,25 @@ void require_size(std::size_t got, std::size_t expected, const char* what) {
 }  // namespace
 
 struct SpectrumAnalyzer::Impl {
-  std::size_t length = 0;
-  Window window = Window::rectangular;
+  Impl(std::size_t segment_length, Window w)
+      : length(segment_length),
+        window(w),
+        coefficients(window_coefficients(w, segment_length)),
+        sum_w(std::accumulate(coefficients.begin(), coefficients.end(), 0.0)),
+        sum_w2(std::inner_product(coefficients.begin(), coefficients.end(), coefficients.begin(),
+                                  0.0)),
+        fft(segment_length, RealFft::Plans::forward) {}
+
+  std::size_t length;
+  Window window;
   std::vector<double> coefficients;
-  double sum_w = 0.0;
-  double sum_w2 = 0.0;
-  std::unique_ptr<double, FftwFree> in;
-  std::unique_ptr<fftw_complex, FftwFree> out;
-  std::unique_ptr<fftw_plan_s, PlanDestroy> plan;
+  double sum_w;
+  double sum_w2;
+  RealFft fft;
 };
 
 SpectrumAnalyzer::SpectrumAnalyzer(std::size_t segment_length, Window window)
-    : impl_(std::make_unique<Impl>()) {
-  if (segment_length < 2) {
-    throw std::invalid_argument("SpectrumAnalyzer: segment length must be at least 2, got " +
-                                std::to_string(segment_length));
-  }
-  Impl& s = *impl_;
-  s.length = segment_length;
-  s.window = window;
-  s.coefficients = window_coefficients(window, segment_length);
-  s.sum_w = std::accumulate(s.coefficients.begin(), s.coefficients.end(), 0.0);
-  s.sum_w2 =
-      std::inner_product(s.coefficients.begin(), s.coefficients.end(), s.coefficients.begin(), 0.0);
-  s.in.reset(static_cast<double*>(fftw_malloc(sizeof(double) * segment_length)));
-  s.out.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * bins())));
-  if (!s.in || !s.out) throw std::bad_alloc();
-  {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    s.plan.reset(fftw_plan_dft_r2c_1d(static_cast<int>(segment_length), s.in.get(), s.out.get(),
-                                      FFTW_ESTIMATE));
-  }
-  if (!s.plan) throw std::runtime_error("SpectrumAnalyzer: FFTW could not make a plan");
-}
+    : impl_(std::make_unique<Impl>(checked_length(segment_length), window)) {}
 
 SpectrumAnalyzer::~SpectrumAnalyzer() = default;
 SpectrumAnalyzer::SpectrumAnalyzer(SpectrumAnalyzer&&) noexcept = default;
@@ -110,23 +92,23 @@ void SpectrumAnalyzer::transform(std::span<const double> segment, std::size_t ou
     for (; n < s.length; ++n) acc[0] += segment[n];
     mean = ((acc[0] + acc[1]) + (acc[2] + acc[3])) / static_cast<double>(s.length);
   }
-  double* in = s.in.get();
+  double* in = s.fft.real().data();
   const double* w = s.coefficients.data();
   for (std::size_t n = 0; n < s.length; ++n) in[n] = (segment[n] - mean) * w[n];
-  fftw_execute(s.plan.get());
+  s.fft.forward();
 }
 
 void SpectrumAnalyzer::amplitude(std::span<const double> segment, std::span<double> out,
                                  bool remove_mean) {
   transform(segment, out.size(), remove_mean);
   const Impl& s = *impl_;
-  const fftw_complex* X = s.out.get();
+  const std::complex<double>* X = s.fft.spectrum().data();
   const double scale = 2.0 / s.sum_w;
   const std::size_t nb = out.size();
   // sqrt(re² + im²), not std::hypot: hypot's overflow guard costs ~4x here, and spectra of physical
   // signals are nowhere near 1e154.
   for (std::size_t k = 0; k < nb; ++k) {
-    out[k] = scale * std::sqrt(X[k][0] * X[k][0] + X[k][1] * X[k][1]);
+    out[k] = scale * std::sqrt(X[k].real() * X[k].real() + X[k].imag() * X[k].imag());
   }
   // DC and (even-N) Nyquist have no mirror image in the two-sided spectrum: not doubled.
   out[0] *= 0.5;
@@ -141,10 +123,11 @@ void SpectrumAnalyzer::power_spectral_density(std::span<const double> segment,
   }
   transform(segment, out.size(), remove_mean);
   const Impl& s = *impl_;
-  const fftw_complex* X = s.out.get();
+  const std::complex<double>* X = s.fft.spectrum().data();
   const double scale = 2.0 / (sample_rate_hz * s.sum_w2);
   const std::size_t nb = out.size();
-  for (std::size_t k = 0; k < nb; ++k) out[k] = scale * (X[k][0] * X[k][0] + X[k][1] * X[k][1]);
+  for (std::size_t k = 0; k < nb; ++k)
+    out[k] = scale * (X[k].real() * X[k].real() + X[k].imag() * X[k].imag());
   out[0] *= 0.5;
   if (s.length % 2 == 0) out[nb - 1] *= 0.5;
 }

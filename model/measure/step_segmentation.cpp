@@ -1,17 +1,14 @@
 #include "model/measure/step_segmentation.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
-#include <memory>
-#include <mutex>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/fftw_planner_lock.hpp"
+#include "model/measure/real_fft.hpp"
 #include "model/measure/spectrum_analyzer.hpp"
 
 namespace nibrig::model::measure {
@@ -154,34 +151,19 @@ Envelope band_envelope(std::span<const double> x, double fs, const StepProtocol&
 std::vector<double> band_power_per_sample(std::span<const double> x, double fs, double low,
                                           double high) {
   const std::size_t n = x.size();
-  const std::size_t bins = n / 2 + 1;
-  std::unique_ptr<double, decltype(&fftw_free)> real(
-      static_cast<double*>(fftw_malloc(sizeof(double) * n)), &fftw_free);
-  std::unique_ptr<fftw_complex, decltype(&fftw_free)> spec(
-      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * bins)), &fftw_free);
-  if (!real || !spec) throw std::bad_alloc();
-  fftw_plan forward = nullptr;
-  fftw_plan backward = nullptr;
-  {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    forward = fftw_plan_dft_r2c_1d(static_cast<int>(n), real.get(), spec.get(), FFTW_ESTIMATE);
-    backward = fftw_plan_dft_c2r_1d(static_cast<int>(n), spec.get(), real.get(), FFTW_ESTIMATE);
-  }
-  std::copy(x.begin(), x.end(), real.get());
-  fftw_execute(forward);
-  for (std::size_t k = 0; k < bins; ++k) {
+  RealFft fft(n, RealFft::Plans::forward_and_backward);
+  const std::span<double> real = fft.real();
+  std::copy(x.begin(), x.end(), real.begin());
+  fft.forward();
+  const std::span<std::complex<double>> spec = fft.spectrum();
+  for (std::size_t k = 0; k < spec.size(); ++k) {
     const double f = static_cast<double>(k) * fs / static_cast<double>(n);
-    if (f < low || f > high) spec.get()[k][0] = spec.get()[k][1] = 0.0;
+    if (f < low || f > high) spec[k] = 0.0;
   }
-  fftw_execute(backward);
-  {
-    std::lock_guard lock(detail::fftw_planner_mutex());
-    fftw_destroy_plan(forward);
-    fftw_destroy_plan(backward);
-  }
+  fft.backward();
   std::vector<double> power(n);
   const double scale = 1.0 / static_cast<double>(n);  // FFTW's round trip multiplies by n
-  for (std::size_t i = 0; i < n; ++i) power[i] = std::pow(real.get()[i] * scale, 2);
+  for (std::size_t i = 0; i < n; ++i) power[i] = std::pow(real[i] * scale, 2);
   return power;
 }
 

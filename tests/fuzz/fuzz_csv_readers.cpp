@@ -8,51 +8,22 @@
 //     model/io/*.cpp -lz -lsndfile -o /tmp/fuzz_csv
 //   /tmp/fuzz_csv -max_total_time=60 /tmp/csv_corpus tests/fuzz/corpus/csv
 // (the first folder receives new inputs, so the seeds in the repository stay as they are).
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <string>
 
 #include "model/io/format_error.hpp"
 #include "model/io/paper_drawing.hpp"
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/triplets.hpp"
+#include "tests/fuzz/scratch_folder.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 namespace io = nibrig::model::io;
-
-// A fresh folder for one input, removed afterwards; mkdtemp keeps parallel jobs (-jobs=N) apart.
-// Per input rather than per process because libFuzzer ends with _Exit, which skips any cleanup
-// registered for exit. In memory when possible: rewriting files on ext4 flushes them to disk on
-// close, which slows fuzzing ~50x.
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    std::error_code ec;
-    const fs::path base = std::getenv("TMPDIR") == nullptr && fs::is_directory("/dev/shm", ec)
-                              ? fs::path("/dev/shm")
-                              : fs::temp_directory_path();
-    std::string pattern = (base / "nibrig-fuzz-csv-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) std::abort();  // the harness failed, not a reader
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 void write_file(const fs::path& file, const std::uint8_t* data, std::size_t size) {
   std::ofstream out(file, std::ios::binary);
@@ -72,7 +43,7 @@ void expect_only_format_errors(const fs::path& file, Read read) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const ScratchFolder scratch;
+  const nibrig::test::ScratchFolder scratch("nibrig-fuzz-csv");
   const fs::path& dir = scratch.path();
   // File names the name parsers accept, so the fuzzer reaches the contents.
   const fs::path friction = dir / "p2h_note_2.2N_14_1.csv";
