@@ -49,12 +49,7 @@ DrawingTrajectory read_paper_drawing(const std::filesystem::path& file) {
   long long frame_time_ms = 0;
   while (csv.next(fields)) {
     const std::size_t line = csv.line_number();
-    if (fields.size() < needed && csv.row_unterminated()) {
-      trajectory.warnings.push_back(
-          "line " + std::to_string(line) + " is cut off (" + std::to_string(fields.size()) +
-          " of " + std::to_string(needed) + " fields, no line ending) and was dropped");
-      break;
-    }
+    if (csv.cut_off_last_row(fields, needed, trajectory.warnings)) break;
     csv.require_fields(fields, needed);
     const long long stamp_ms = parse_integer(fields[c_time], file, line, "Unix Timestamp");
     if (stamp_ms < 0) {

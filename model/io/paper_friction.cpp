@@ -159,13 +159,7 @@ FrictionRecording read_paper_friction(const std::filesystem::path& file) {
   std::vector<std::string_view> fields;
   while (csv.next(fields)) {
     const std::size_t line = csv.line_number();
-    if (fields.size() < needed && csv.row_unterminated()) {
-      // The recorder was stopped while writing its last row.
-      recording.warnings.push_back("line " + std::to_string(line) + " is cut off (" +
-                                   std::to_string(fields.size()) + " of " + std::to_string(needed) +
-                                   " fields, no line ending) and was dropped");
-      break;
-    }
+    if (csv.cut_off_last_row(fields, needed, recording.warnings)) break;
     csv.require_fields(fields, needed);
     const auto stamp = parse_stamp(fields[c_time]);
     if (!stamp) {

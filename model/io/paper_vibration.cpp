@@ -143,12 +143,7 @@ VibrationRecording read_paper_vibration(const std::filesystem::path& file) {
   long long step_time_ms = 0;  // ... and the time they cover
   while (csv.next(fields)) {
     const std::size_t line = csv.line_number();
-    if (fields.size() < needed && csv.row_unterminated()) {
-      recording.warnings.push_back("line " + std::to_string(line) + " is cut off (" +
-                                   std::to_string(fields.size()) + " of " + std::to_string(needed) +
-                                   " fields, no line ending) and was dropped");
-      break;
-    }
+    if (csv.cut_off_last_row(fields, needed, recording.warnings)) break;
     csv.require_fields(fields, needed);
     const long long stamp_ms = parse_integer(fields[c_stamp], file, line, "timestamp");
     if (stamp_ms < 0) {

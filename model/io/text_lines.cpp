@@ -255,6 +255,15 @@ bool CsvReader::next(std::vector<std::string_view>& fields) {
   return false;
 }
 
+bool CsvReader::cut_off_last_row(const std::vector<std::string_view>& fields, std::size_t needed,
+                                 std::vector<std::string>& warnings) const {
+  if (fields.size() >= needed || !row_unterminated()) return false;
+  warnings.push_back("line " + std::to_string(lines_.line_number()) + " is cut off (" +
+                     std::to_string(fields.size()) + " of " + std::to_string(needed) +
+                     " fields, no line ending) and was dropped");
+  return true;
+}
+
 void CsvReader::require_fields(const std::vector<std::string_view>& fields,
                                std::size_t needed) const {
   if (fields.size() >= needed) return;

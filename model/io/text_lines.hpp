@@ -106,6 +106,12 @@ class CsvReader {
   // True when the row last returned is the file's last and has no line ending.
   bool row_unterminated() const { return !lines_.last_line_terminated(); }
 
+  // True when the row last returned is the file's unterminated last one with fewer than `needed`
+  // fields: its writer was stopped in the middle of it. Then adds the warning "line N is cut off (K
+  // of M fields, no line ending) and was dropped" and the caller stops reading; false otherwise.
+  bool cut_off_last_row(const std::vector<std::string_view>& fields, std::size_t needed,
+                        std::vector<std::string>& warnings) const;
+
   // Throws unless the row has at least `needed` fields: "line N: expected M fields (...), found K".
   void require_fields(const std::vector<std::string_view>& fields, std::size_t needed) const;
 
