@@ -1,5 +1,7 @@
 #include "tests/support/test_paths.hpp"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <stdexcept>
 
@@ -16,7 +18,10 @@ std::filesystem::path shared_data() {
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  std::filesystem::path dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / name;
+  // ctest runs tests in parallel, each in its own process: the process id keeps two tests that
+  // chose the same name from removing each other's files.
+  std::filesystem::path dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" /
+                              (name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

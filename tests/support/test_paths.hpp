@@ -10,7 +10,8 @@ namespace nibrig::test {
 // recordings; a missing folder is a failure, not a skip.
 std::filesystem::path shared_data();
 
-// A fresh, empty folder under the build tree for one test (removed and recreated on each call).
+// A fresh, empty folder under the build tree for one test process (removed and recreated on each
+// call with the same name in the same process).
 std::filesystem::path scratch_dir(const std::string& name);
 
 // The repository's assets/ folder.
