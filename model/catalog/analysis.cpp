@@ -65,8 +65,9 @@ FrictionAnalysis analyze_friction(const io::FrictionRecording& recording,
   analysis.source = recording.source;
   analysis.normal_load_N = recording.name.normal_load_N;
   analysis.sample_rate_hz = recording.sample_rate_hz;
-  analysis.fit = measure::fit_coulomb_friction(recording.tangential_force_N, recording.sample_rate_hz,
-                                               recording.name.normal_load_N, options.sweep);
+  analysis.fit =
+      measure::fit_coulomb_friction(recording.tangential_force_N, recording.sample_rate_hz,
+                                    recording.name.normal_load_N, options.sweep);
   analysis.upstream_mu =
       measure::upstream_mu(recording.tangential_force_N, recording.name.normal_load_N);
   analysis.tangential_force_N = recording.tangential_force_N;
@@ -102,16 +103,17 @@ VibrationAnalysis analyze_vibration(const io::VibrationRecording& recording,
   }
   analysis.contact_begin = segmentation.contact_begin;
   analysis.steps = segmentation.steps;
-  analysis.spectrum = measure::spectrum_per_step(recording.acceleration_m_s2, recording.sample_rate_hz,
-                                                 segmentation, options.binning);
+  analysis.spectrum = measure::spectrum_per_step(
+      recording.acceleration_m_s2, recording.sample_rate_hz, segmentation, options.binning);
   analysis.descriptors =
       measure::compute_vibration_descriptors(analysis.spectrum, threshold, options.max_bands);
-  analysis.spectrogram = measure::compute_spectrogram(recording.acceleration_m_s2,
-                                                      recording.sample_rate_hz, options.spectrogram);
+  analysis.spectrogram = measure::compute_spectrogram(
+      recording.acceleration_m_s2, recording.sample_rate_hz, options.spectrogram);
   return analysis;
 }
 
-SessionAnalysis analyze_session(const io::Session& session, const measure::ThresholdCurve& threshold,
+SessionAnalysis analyze_session(const io::Session& session,
+                                const measure::ThresholdCurve& threshold,
                                 const AnalysisOptions& options) {
   SessionAnalysis analysis;
   analysis.info = session.info;
@@ -134,8 +136,8 @@ SessionAnalysis analyze_session(const io::Session& session, const measure::Thres
       load = sum / static_cast<double>(session.normal_force_N.size());
     }
     friction.normal_load_N = load;
-    friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N, friction.sample_rate_hz,
-                                                 load, options.sweep);
+    friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N,
+                                                 friction.sample_rate_hz, load, options.sweep);
     friction.upstream_mu = std::nan("");
     analysis.friction = std::move(friction);
   }

@@ -1,6 +1,7 @@
-// One recording in, its physical descriptors out: the measurement pipeline of Sec. 3 and 4.4 applied to
-// a friction recording (contact, Coulomb μ with its interval, μ against speed), an accelerometer
-// recording (speed steps, velocity-binned spectrum, perceptually weighted descriptors) or a rig session.
+// One recording in, its physical descriptors out: the measurement pipeline of Sec. 3 and 4.4
+// applied to a friction recording (contact, Coulomb μ with its interval, μ against speed), an
+// accelerometer recording (speed steps, velocity-binned spectrum, perceptually weighted
+// descriptors) or a rig session.
 #pragma once
 
 #include <filesystem>
@@ -69,7 +70,8 @@ struct SessionAnalysis {
   std::optional<VibrationAnalysis> vibration;
 };
 
-SessionAnalysis analyze_session(const io::Session& session, const measure::ThresholdCurve& threshold,
+SessionAnalysis analyze_session(const io::Session& session,
+                                const measure::ThresholdCurve& threshold,
                                 const AnalysisOptions& options);
 
 // The descriptors in the catalog's terms, with their provenance.

@@ -18,7 +18,8 @@ namespace nibrig::model::catalog {
 namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 bool is_csv(const std::filesystem::path& path) {
@@ -38,7 +39,8 @@ bool is_under(const std::filesystem::path& path, const std::string& folder) {
 RecordingKind classify_recording(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path)) {
     if (std::filesystem::exists(path / "session.json")) return RecordingKind::session;
-    throw std::runtime_error(path.string() + ": a folder without session.json is not a rig session");
+    throw std::runtime_error(path.string() +
+                             ": a folder without session.json is not a rig session");
   }
   if (!std::filesystem::exists(path)) throw std::runtime_error(path.string() + ": no such file");
   const std::string name = path.filename().string();
@@ -74,7 +76,8 @@ FoundRecordings find_recordings(const std::filesystem::path& folder) {
   }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& path : candidates) {
-    // The artists' drawings are trajectories, not rig recordings: they drive the engine, not the catalog.
+    // The artists' drawings are trajectories, not rig recordings: they drive the engine, not the
+    // catalog.
     if (is_under(path, "drawing")) continue;
     try {
       found.files.push_back({path, classify_recording(path)});
@@ -85,8 +88,9 @@ FoundRecordings find_recordings(const std::filesystem::path& folder) {
   return found;
 }
 
-CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::ThresholdCurve& threshold,
-                           const AnalysisOptions& options, unsigned threads,
+CatalogBuild build_catalog(const FoundRecordings& recordings,
+                           const measure::ThresholdCurve& threshold, const AnalysisOptions& options,
+                           unsigned threads,
                            const std::function<void(const std::filesystem::path&)>& on_done) {
   const std::size_t n = recordings.files.size();
   std::vector<std::optional<FrictionAnalysis>> friction(n);
@@ -109,7 +113,8 @@ CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::Thr
             friction[i] = analyze_friction(io::read_paper_friction(file.path), options);
             break;
           case RecordingKind::paper_vibration:
-            vibration[i] = analyze_vibration(io::read_paper_vibration(file.path), threshold, options);
+            vibration[i] =
+                analyze_vibration(io::read_paper_vibration(file.path), threshold, options);
             break;
           case RecordingKind::session:
             sessions[i] = analyze_session(io::read_session(file.path), threshold, options);
@@ -123,7 +128,8 @@ CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::Thr
       if (on_done) on_done(file.path);
     }
   };
-  threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(n, 1))));
+  threads =
+      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(n, 1))));
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
@@ -176,13 +182,15 @@ CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::Thr
   for (auto& [id, surface] : surfaces) build.catalog.surfaces.push_back(surface);
   for (auto& [key, p] : pairings) build.catalog.pairings.push_back(std::move(p));
   for (const auto& s : recordings.skipped) build.catalog.notes.push_back("skipped " + s);
-  const bool from_paper = std::any_of(recordings.files.begin(), recordings.files.end(), [](const auto& f) {
-    return f.kind != RecordingKind::session;
-  });
-  if (from_paper) build.catalog.citation =
-      "M. Piovarci, D. I. W. Levin, D. M. Kaufman, P. Didyk, \"Perception-Aware Modeling and "
-      "Fabrication of Digital Drawing Tools\", ACM Transactions on Graphics 37(4), SIGGRAPH 2018; "
-      "recordings from the authors' supplementary material";
+  const bool from_paper =
+      std::any_of(recordings.files.begin(), recordings.files.end(),
+                  [](const auto& f) { return f.kind != RecordingKind::session; });
+  if (from_paper)
+    build.catalog.citation =
+        "M. Piovarci, D. I. W. Levin, D. M. Kaufman, P. Didyk, \"Perception-Aware Modeling and "
+        "Fabrication of Digital Drawing Tools\", ACM Transactions on Graphics 37(4), SIGGRAPH "
+        "2018; "
+        "recordings from the authors' supplementary material";
   return build;
 }
 

@@ -1,6 +1,6 @@
-// Every recording in a folder tree -> one tool catalog: finds the paper's friction and accelerometer
-// files and our rig sessions, analyses them in parallel, and gathers the descriptors of each
-// tool-surface pair with the provenance of every number.
+// Every recording in a folder tree -> one tool catalog: finds the paper's friction and
+// accelerometer files and our rig sessions, analyses them in parallel, and gathers the descriptors
+// of each tool-surface pair with the provenance of every number.
 #pragma once
 
 #include <filesystem>
@@ -21,8 +21,8 @@ struct RecordingFile {
 };
 
 struct FoundRecordings {
-  std::vector<RecordingFile> files;          // sorted by path, so catalogs are reproducible
-  std::vector<std::string> skipped;          // "<path>: <reason>" for files that are not recordings
+  std::vector<RecordingFile> files;  // sorted by path, so catalogs are reproducible
+  std::vector<std::string> skipped;  // "<path>: <reason>" for files that are not recordings
 };
 
 FoundRecordings find_recordings(const std::filesystem::path& folder);
@@ -37,10 +37,12 @@ struct CatalogBuild {
   std::vector<std::string> skipped;
 };
 
-// on_done is called (from worker threads, serialised by the caller if needed) as each file finishes.
-// A file that fails to read stops the build with its error: a catalog never silently lacks a file.
-CatalogBuild build_catalog(const FoundRecordings& recordings, const measure::ThresholdCurve& threshold,
-                           const AnalysisOptions& options, unsigned threads,
+// on_done is called (from worker threads, serialised by the caller if needed) as each file
+// finishes. A file that fails to read stops the build with its error: a catalog never silently
+// lacks a file.
+CatalogBuild build_catalog(const FoundRecordings& recordings,
+                           const measure::ThresholdCurve& threshold, const AnalysisOptions& options,
+                           unsigned threads,
                            const std::function<void(const std::filesystem::path&)>& on_done = {});
 
 }  // namespace nibrig::model::catalog

@@ -6,14 +6,16 @@
 
 namespace nibrig::model::catalog {
 
-io::VelocitySpectrum resample_spectrum(const io::VelocitySpectrum& spectrum, double frequency_step_hz) {
+io::VelocitySpectrum resample_spectrum(const io::VelocitySpectrum& spectrum,
+                                       double frequency_step_hz) {
   const auto& f = spectrum.frequencies_hz;
   if (!(frequency_step_hz > 0.0)) throw std::invalid_argument("frequency step must be positive");
   if (f.size() < 2) return spectrum;
   io::VelocitySpectrum out;
   out.speeds_m_s = spectrum.speeds_m_s;
   const double first = std::ceil(f.front() / frequency_step_hz) * frequency_step_hz;
-  for (double x = first; x <= f.back() + 1e-9; x += frequency_step_hz) out.frequencies_hz.push_back(x);
+  for (double x = first; x <= f.back() + 1e-9; x += frequency_step_hz)
+    out.frequencies_hz.push_back(x);
   for (const auto& row : spectrum.amplitude_m_s2) {
     std::vector<double> resampled;
     resampled.reserve(out.frequencies_hz.size());

@@ -93,8 +93,9 @@ void build(const CatalogOptions& options, unsigned threads) {
   }
   Progress progress("analysing", found.files.size());
   const catalog::AnalysisOptions analysis_options;
-  auto result = catalog::build_catalog(found, threshold, analysis_options, threads,
-                                       [&](const auto& path) { progress.advance(path.filename()); });
+  auto result =
+      catalog::build_catalog(found, threshold, analysis_options, threads,
+                             [&](const auto& path) { progress.advance(path.filename()); });
   if (options.compact_step_hz > 0.0) {
     result.catalog =
         catalog::compact_catalog(result.catalog, options.compact_step_hz, options.compact_digits);
@@ -109,10 +110,12 @@ void build(const CatalogOptions& options, unsigned threads) {
     ensure_folder(options.report);
     write_text_file(options.report / "friction.csv", friction_table(result));
     write_text_file(options.report / "vibration.csv", vibration_table(result));
-    if (!result.friction.empty()) plot_catalog_friction(result.catalog, options.report / "friction.png");
+    if (!result.friction.empty())
+      plot_catalog_friction(result.catalog, options.report / "friction.png");
     for (const auto& v : result.vibration) {
-      plot_velocity_spectrum(v.spectrum, "Velocity-binned spectrum: " + v.tool + " on " + v.surface,
-                             options.report / (v.tool + "_" + v.surface + "_velocity_spectrum.png"));
+      plot_velocity_spectrum(
+          v.spectrum, "Velocity-binned spectrum: " + v.tool + " on " + v.surface,
+          options.report / (v.tool + "_" + v.surface + "_velocity_spectrum.png"));
     }
     std::cout << "wrote report to " << options.report.string() << "\n";
   }
@@ -121,11 +124,13 @@ void build(const CatalogOptions& options, unsigned threads) {
 }  // namespace
 
 void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
-  auto* catalog = app.add_subcommand("catalog", "Tool catalogs: physical descriptors of tools on surfaces");
+  auto* catalog =
+      app.add_subcommand("catalog", "Tool catalogs: physical descriptors of tools on surfaces");
   catalog->require_subcommand(1);
   auto options = std::make_shared<CatalogOptions>();
-  auto* cmd = catalog->add_subcommand(
-      "build",
+  auto* cmd =
+      catalog->add_subcommand("build", "Every recording below a folder -> one tool catalog");
+  cmd->footer(
       "Analyse every recording in a folder tree (the paper's friction and accelerometer files,\n"
       "rig session folders) and write one catalog JSON with the descriptors of each tool-surface\n"
       "pair and the provenance of every number. Prints a summary comparing mu with the paper.");
@@ -138,7 +143,8 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--threshold", options->threshold, "Detection-threshold curve CSV")
       ->check(CLI::ExistingFile);
   cmd->add_option("--compact", options->compact_step_hz,
-                  "Resample spectra to this frequency step (Hz), round them and write one-line JSON, for bundling");
+                  "Resample spectra to this frequency step (Hz), round them and write one-line "
+                  "JSON, for bundling");
   cmd->add_option("--digits", options->compact_digits, "Significant digits kept with --compact")
       ->check(CLI::Range(2, 17))
       ->capture_default_str();

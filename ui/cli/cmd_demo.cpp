@@ -1,6 +1,6 @@
-// `nibrig demo`: the main job on the bundled default. Runs the measurement pipeline's descriptor stage
-// on the derived spectra and friction coefficients bundled in assets/ (the raw recordings are not
-// redistributed) and writes a report folder a person can read.
+// `nibrig demo`: the main job on the bundled default. Runs the measurement pipeline's descriptor
+// stage on the derived spectra and friction coefficients bundled in assets/ (the raw recordings are
+// not redistributed) and writes a report folder a person can read.
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -44,7 +44,8 @@ std::string descriptors_csv(const model::io::Catalog& catalog, int max_bands) {
       const auto bands = p.vibration->band_energies.find(max_bands);
       for (int b = 0; b < max_bands; ++b) {
         csv << ',';
-        if (bands != p.vibration->band_energies.end()) csv << bands->second[static_cast<std::size_t>(b)];
+        if (bands != p.vibration->band_energies.end())
+          csv << bands->second[static_cast<std::size_t>(b)];
       }
     } else {
       csv << ',' << std::string(static_cast<std::size_t>(max_bands), ',');
@@ -70,8 +71,8 @@ void demo(const DemoOptions& options) {
     if (p.friction) ++friction_pairs;
     if (!p.vibration) continue;
     ++vibration_pairs;
-    const auto d = model::measure::compute_vibration_descriptors(p.vibration->spectrum, threshold,
-                                                                 max_bands);
+    const auto d =
+        model::measure::compute_vibration_descriptors(p.vibration->spectrum, threshold, max_bands);
     p.vibration->weighted_mean = d.weighted_mean;
     p.vibration->weighted_power = d.weighted_power;
     p.vibration->band_energies = d.band_energies;
@@ -93,8 +94,8 @@ void demo(const DemoOptions& options) {
   }
 
   std::ostringstream summary;
-  summary << "nibrig demo: measurement pipeline on the bundled default (" << catalog_path.filename().string()
-          << ")\n"
+  summary << "nibrig demo: measurement pipeline on the bundled default ("
+          << catalog_path.filename().string() << ")\n"
           << "  " << catalog.tools.size() << " tools, " << catalog.surfaces.size() << " surfaces, "
           << catalog.pairings.size() << " pairs: " << friction_pairs << " with friction, "
           << vibration_pairs << " with vibration spectra\n";
@@ -112,7 +113,8 @@ void demo(const DemoOptions& options) {
     const model::io::Pairing* weakest = nullptr;
     for (const auto& p : catalog.pairings) {
       if (!p.vibration) continue;
-      if (!strongest || p.vibration->weighted_mean > strongest->vibration->weighted_mean) strongest = &p;
+      if (!strongest || p.vibration->weighted_mean > strongest->vibration->weighted_mean)
+        strongest = &p;
       if (!weakest || p.vibration->weighted_mean < weakest->vibration->weighted_mean) weakest = &p;
     }
     summary << "  weighted vibration (mean sensation re threshold): strongest " << strongest->tool
@@ -132,8 +134,9 @@ void demo(const DemoOptions& options) {
 
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto options = std::make_shared<DemoOptions>();
-  auto* cmd = app.add_subcommand(
-      "demo",
+  auto* cmd =
+      app.add_subcommand("demo", "The main job: descriptors and a report from the bundled default");
+  cmd->footer(
       "The main job on the bundled default, no hardware or raw data needed: computes the\n"
       "perceptual descriptors of every tool-surface pair in assets/default_catalog.json (spectra\n"
       "and friction derived from the paper's recordings) and writes a report folder with the\n"

@@ -48,10 +48,10 @@ void measure(const MeasureOptions& options) {
       options.threshold.empty() ? asset("thresholds/israr2006_pen_hold.csv") : options.threshold);
   const catalog::AnalysisOptions analysis_options;
   const std::string stem = recording_stem(options.recording);
-  const std::filesystem::path plot_dir = options.plots.empty()
-                                             ? (options.output.empty() ? std::filesystem::path(".")
-                                                                       : options.output.parent_path())
-                                             : options.plots;
+  const std::filesystem::path plot_dir =
+      options.plots.empty()
+          ? (options.output.empty() ? std::filesystem::path(".") : options.output.parent_path())
+          : options.plots;
   nlohmann::json result;
   switch (catalog::classify_recording(options.recording)) {
     case catalog::RecordingKind::paper_friction: {
@@ -102,8 +102,9 @@ void measure(const MeasureOptions& options) {
 
 void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto options = std::make_shared<MeasureOptions>();
-  auto* cmd = app.add_subcommand(
-      "measure",
+  auto* cmd =
+      app.add_subcommand("measure", "Analyse one recording: descriptors as JSON and PNG figures");
+  cmd->footer(
       "Analyse one recording and write its physical descriptors as JSON.\n"
       "A friction file (<tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]) gives the Coulomb\n"
       "coefficient `mu` with a 95 % interval and mu per speed; an accelerometer file\n"
@@ -112,7 +113,8 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "folder gives both. PNG figures go beside the output (or --plots).");
   cmd->add_option("recording", options->recording, "Recording file or session folder")->required();
   cmd->add_option("-o,--output", options->output, "JSON output file (default: standard output)");
-  cmd->add_option("--plots", options->plots, "Folder for the PNG figures (default: beside -o, or .)");
+  cmd->add_option("--plots", options->plots,
+                  "Folder for the PNG figures (default: beside -o, or .)");
   cmd->add_flag("--no-plots", options->no_plots, "Do not write figures");
   cmd->add_option("--threshold", options->threshold,
                   "Detection-threshold curve CSV (default: the bundled Israr et al. 2006 curve)")

@@ -69,7 +69,8 @@ void plot_spectrogram(const model::measure::Spectrogram& spectrogram, const std:
   map.z.assign(map.y.size(), std::vector<double>(map.x.size()));
   for (std::size_t t = 0; t < map.x.size(); ++t) {
     for (std::size_t f = 0; f < map.y.size(); ++f) {
-      map.z[f][t] = spectrogram.amplitude(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(f));
+      map.z[f][t] =
+          spectrogram.amplitude(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(f));
     }
   }
   map.title = title;
@@ -118,8 +119,11 @@ void plot_friction_trace(const model::catalog::FrictionAnalysis& analysis,
   }
   const double begin = static_cast<double>(analysis.fit.contact.begin) / analysis.sample_rate_hz;
   const double end = static_cast<double>(analysis.fit.contact.end) / analysis.sample_rate_hz;
-  report::LineSeries contact{.label = "detected contact, #gm", .x = {begin, end},
-                             .y = {analysis.fit.mu, analysis.fit.mu}, .y_low = {}, .y_high = {}};
+  report::LineSeries contact{.label = "detected contact, #gm",
+                             .x = {begin, end},
+                             .y = {analysis.fit.mu, analysis.fit.mu},
+                             .y_low = {},
+                             .y_high = {}};
   plot.series = {trace, contact};
   report::write_line_plot(plot, png);
 }
@@ -134,9 +138,8 @@ void plot_catalog_friction(const model::io::Catalog& catalog, const std::filesys
   for (const auto& p : catalog.pairings) {
     if (p.friction) pairs.push_back(&p);
   }
-  std::stable_sort(pairs.begin(), pairs.end(), [](const auto* a, const auto* b) {
-    return a->surface < b->surface;
-  });
+  std::stable_sort(pairs.begin(), pairs.end(),
+                   [](const auto* a, const auto* b) { return a->surface < b->surface; });
   for (const auto* p : pairs) {
     chart.bars.push_back({.label = p->tool + " / " + p->surface,
                           .value = p->friction->mu,

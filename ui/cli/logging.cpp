@@ -10,9 +10,15 @@ void configure_logging(int verbosity) {
   if (!logger) logger = spdlog::stderr_color_mt("nibrig");
   logger->set_pattern("%^%l%$: %v");
   switch (verbosity) {
-    case 0: logger->set_level(spdlog::level::warn); break;
-    case 1: logger->set_level(spdlog::level::info); break;
-    default: logger->set_level(spdlog::level::debug); break;
+    case 0:
+      logger->set_level(spdlog::level::warn);
+      break;
+    case 1:
+      logger->set_level(spdlog::level::info);
+      break;
+    default:
+      logger->set_level(spdlog::level::debug);
+      break;
   }
   spdlog::set_default_logger(logger);
 }

@@ -4,7 +4,6 @@
 
 #include "model/io/atomic_file.hpp"
 
-
 namespace nibrig::ui::cli {
 
 void ensure_folder(const std::filesystem::path& folder) {

@@ -1,4 +1,5 @@
-// Progress on long work, drawn on stderr only when stderr is a terminal (quiet in pipes, CI and logs).
+// Progress on long work, drawn on stderr only when stderr is a terminal (quiet in pipes, CI and
+// logs).
 #pragma once
 
 #include <cstddef>

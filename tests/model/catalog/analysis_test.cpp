@@ -14,7 +14,8 @@ namespace {
 
 // A synthetic rig session with known physics: the tip speed ramps 20 -> 240 mm/s, the accelerometer
 // sees a 100 Hz sinusoid whose amplitude is 10 s^-1 x speed (stored in raw units at 0.5 m/s^2 per
-// unit, so the calibration must be applied), and after 2 s the tangential force is 0.25 x the 2 N load.
+// unit, so the calibration must be applied), and after 2 s the tangential force is 0.25 x the 2 N
+// load.
 io::Session write_and_read_synthetic_session(const std::filesystem::path& folder) {
   io::SessionInfo info;
   info.tool = "synthetic";

@@ -14,7 +14,8 @@ std::size_t count_files(const std::filesystem::path& folder, const std::string& 
   std::size_t n = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(folder)) {
     const auto name = e.path().filename().string();
-    if (e.is_regular_file() && name.rfind(prefix, 0) == 0 && name.find(".csv") != std::string::npos) ++n;
+    if (e.is_regular_file() && name.rfind(prefix, 0) == 0 && name.find(".csv") != std::string::npos)
+      ++n;
   }
   return n;
 }

@@ -24,7 +24,8 @@ TEST(ResampleSpectrum, ReproducesALinearSpectrumExactly) {
   for (std::size_t i = 0; i < r.speeds_m_s.size(); ++i) {
     for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k) {
       // 1e-12: only rounding of the interpolation weights.
-      EXPECT_NEAR(r.amplitude_m_s2[i][k], r.speeds_m_s[i] * (1.0 + 0.01 * r.frequencies_hz[k]), 1e-12);
+      EXPECT_NEAR(r.amplitude_m_s2[i][k], r.speeds_m_s[i] * (1.0 + 0.01 * r.frequencies_hz[k]),
+                  1e-12);
     }
   }
 }

@@ -51,7 +51,8 @@ TEST(Cli, MeasureFrictionWritesMuAndFigures) {
 
 TEST(Cli, MeasureVibrationWritesTheVelocityBinnedSpectrumKeys) {
   const auto out = test::scratch_dir("cli_measure_vibration");
-  const auto file = test::shared_data() / "piovarci2018/vibration/prints/arm_plain_DM85_4_office.csv.gz";
+  const auto file =
+      test::shared_data() / "piovarci2018/vibration/prints/arm_plain_DM85_4_office.csv.gz";
   ASSERT_EQ(run_cli({"measure", file.string(), "-o", (out / "v.json").string()}), 0);
   const auto j = read_json(out / "v.json");
   const auto& f = j["frequencies_hz"];
