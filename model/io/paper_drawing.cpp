@@ -51,12 +51,7 @@ DrawingTrajectory read_paper_drawing(const std::filesystem::path& file) {
     const std::size_t line = csv.line_number();
     if (csv.cut_off_last_row(fields, needed, trajectory.warnings)) break;
     csv.require_fields(fields, needed);
-    const long long stamp_ms = parse_integer(fields[c_time], file, line, "Unix Timestamp");
-    if (stamp_ms < 0) {
-      throw FormatError(
-          file, field_place(line, "Unix Timestamp"),
-          "expected Unix time in milliseconds (>= 0), found " + in_quotes(fields[c_time]));
-    }
+    const long long stamp_ms = parse_unix_ms(fields[c_time], file, line, "Unix Timestamp");
     if (trajectory.time_s.empty()) {
       first_ms = stamp_ms;
     } else {

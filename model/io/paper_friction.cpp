@@ -24,19 +24,6 @@ constexpr double kRateTolerance = 0.05;
       file, "", "unparsable file name, expected " + std::string(kExpectedName) + " (" + why + ")");
 }
 
-std::optional<double> positive_number(std::string_view text) {
-  if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())) == 0) {
-    return std::nullopt;
-  }
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value <= 0.0) {
-    return std::nullopt;
-  }
-  return value;
-}
-
 // Digits only, no sign: the parts of a wall-clock stamp.
 std::optional<long long> digits(std::string_view text, std::size_t max_digits) {
   if (text.empty() || text.size() > max_digits) return std::nullopt;
@@ -120,9 +107,9 @@ FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
   }
   if (load_token.back() != 'N')
     bad_name(file, "the load must end in 'N', found " + in_quotes(load_token));
-  const auto load = positive_number(load_token.substr(0, load_token.size() - 1));
+  const auto load = positive_number_in_name(load_token.substr(0, load_token.size() - 1));
   if (!load) bad_name(file, "the load must be a positive number, found " + in_quotes(load_token));
-  const auto lever = positive_number(lever_token);
+  const auto lever = positive_number_in_name(lever_token);
   if (!lever)
     bad_name(file, "the lever factor must be a positive number, found " + in_quotes(lever_token));
   const auto rep = digits(rep_token, 6);

@@ -35,19 +35,6 @@ bool is_word(std::string_view text) {
   });
 }
 
-// A tip diameter in millimetres as written in the names ("1", "2", "4"); nullopt if not a number.
-std::optional<double> tip_mm(std::string_view text) {
-  if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())) == 0)
-    return std::nullopt;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value <= 0.0) {
-    return std::nullopt;
-  }
-  return value;
-}
-
 bool is_nail_variant(std::string_view text) {
   return text.size() > 4 && text.substr(0, 4) == "nail" &&
          std::all_of(text.begin() + 4, text.end(),
@@ -59,7 +46,7 @@ void set_printed(VibrationFileName& name, const std::filesystem::path& file,
   if (std::isalpha(static_cast<unsigned char>(material.front())) == 0) {
     bad_name(file, "a material starts with a letter, found " + in_quotes(material));
   }
-  const auto mm = tip_mm(tip);
+  const auto mm = positive_number_in_name(tip);
   if (!mm)
     bad_name(file, "the tip diameter must be a positive number of mm, found " + in_quotes(tip));
   name.material = std::string(material);
@@ -145,12 +132,7 @@ VibrationRecording read_paper_vibration(const std::filesystem::path& file) {
     const std::size_t line = csv.line_number();
     if (csv.cut_off_last_row(fields, needed, recording.warnings)) break;
     csv.require_fields(fields, needed);
-    const long long stamp_ms = parse_integer(fields[c_stamp], file, line, "timestamp");
-    if (stamp_ms < 0) {
-      throw FormatError(
-          file, field_place(line, "timestamp"),
-          "expected Unix time in milliseconds (>= 0), found " + in_quotes(fields[c_stamp]));
-    }
+    const long long stamp_ms = parse_unix_ms(fields[c_stamp], file, line, "timestamp");
     const double accel_g = parse_number(fields[c_accel], file, line, "xAccel");
     const std::size_t index = recording.acceleration_m_s2.size();
     if (index == 0) {

@@ -1,5 +1,7 @@
 #include "model/io/text_lines.hpp"
 
+#include <cctype>
+
 #include <zlib.h>
 
 #include <cerrno>
@@ -281,6 +283,29 @@ std::optional<std::string> csv_stem(const std::filesystem::path& file) {
     }
   }
   return std::nullopt;
+}
+
+long long parse_unix_ms(std::string_view field, const std::filesystem::path& file, std::size_t line,
+                        std::string_view column) {
+  const long long ms = parse_integer(field, file, line, column);
+  if (ms < 0) {
+    throw FormatError(file, field_place(line, std::string(column)),
+                      "expected Unix time in milliseconds (>= 0), found " + in_quotes(field));
+  }
+  return ms;
+}
+
+std::optional<double> positive_number_in_name(std::string_view text) {
+  if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())) == 0) {
+    return std::nullopt;
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+      value <= 0.0) {
+    return std::nullopt;
+  }
+  return value;
 }
 
 }  // namespace nibrig::model::io

@@ -67,6 +67,15 @@ double parse_number(std::string_view field, const std::filesystem::path& file, s
 long long parse_integer(std::string_view field, const std::filesystem::path& file, std::size_t line,
                         std::string_view column);
 
+// A Unix timestamp in milliseconds (a whole number >= 0), as the paper's accelerometer and drawing
+// files write it; errors like parse_integer, naming `column`.
+long long parse_unix_ms(std::string_view field, const std::filesystem::path& file, std::size_t line,
+                        std::string_view column);
+
+// A plain positive decimal number written in a file NAME ("2.2", "13.3", "4"): digits first, no sign,
+// finite and > 0; nullopt otherwise, so the caller can say which part of the name was wrong.
+std::optional<double> positive_number_in_name(std::string_view text);
+
 // The header line of a CSV file: finds columns by name so that column order does not matter, and
 // names the expected header when a column is missing.
 class CsvHeader {
