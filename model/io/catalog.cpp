@@ -174,19 +174,7 @@ nlohmann::json catalog_json(const Catalog& catalog) {
 
 Catalog catalog_from(const nlohmann::json& json, const std::filesystem::path& file) {
   as_object(json, file, "");
-  const std::string format = string_member(json, "format", file, "");
-  if (format != kFormat) {
-    throw FormatError(
-        file, place("format"),
-        std::string("expected \"") + kFormat + "\", found " + nlohmann::json(format).dump());
-  }
-  const long long version =
-      as_integer(member(json, "version", file, ""), file, "version", 1, 1'000'000);
-  if (version > kVersion) {
-    throw FormatError(file, place("version"),
-                      "expected version " + std::to_string(kVersion) + " (this program's), found " +
-                          std::to_string(version));
-  }
+  check_format_and_version(json, file, kFormat, kVersion);
   Catalog catalog;
   catalog.citation = string_member(json, "citation", file, "");
 

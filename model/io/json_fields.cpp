@@ -163,4 +163,20 @@ double number_member(const nlohmann::json& object, const std::string& key,
   return as_number(member(object, key, file, parent), file, member_path(parent, key));
 }
 
+void check_format_and_version(const nlohmann::json& object, const std::filesystem::path& file,
+                              const std::string& format, long long newest_version) {
+  const std::string found = string_member(object, "format", file, "");
+  if (found != format) {
+    throw FormatError(file, place("format"),
+                      "expected \"" + format + "\", found " + nlohmann::json(found).dump());
+  }
+  const long long version =
+      as_integer(member(object, "version", file, ""), file, "version", 1, 1'000'000);
+  if (version > newest_version) {
+    throw FormatError(file, place("version"),
+                      "expected version " + std::to_string(newest_version) +
+                          " (this program's), found " + std::to_string(version));
+  }
+}
+
 }  // namespace nibrig::model::io::json_fields

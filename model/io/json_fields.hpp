@@ -43,6 +43,11 @@ std::vector<double> as_number_array(const nlohmann::json& value, const std::file
                                     const std::string& path);
 
 // Shorthands for a required member of a given type.
+// Checks the "format" and "version" members every file of ours opens with: the format name must
+// match and the version must not be newer than this program's. Errors name the member.
+void check_format_and_version(const nlohmann::json& object, const std::filesystem::path& file,
+                              const std::string& format, long long newest_version);
+
 std::string string_member(const nlohmann::json& object, const std::string& key,
                           const std::filesystem::path& file, const std::string& parent);
 double number_member(const nlohmann::json& object, const std::string& key,

@@ -93,19 +93,7 @@ nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4
 Parsed from_json(const nlohmann::json& json, const std::filesystem::path& file) {
   using namespace json_fields;
   as_object(json, file, "");
-  const std::string format = string_member(json, "format", file, "");
-  if (format != kFormat) {
-    throw FormatError(
-        file, place("format"),
-        "expected \"" + std::string(kFormat) + "\", found " + nlohmann::json(format).dump());
-  }
-  const long long version =
-      as_integer(member(json, "version", file, ""), file, "version", 1, 1'000'000);
-  if (version > kVersion) {
-    throw FormatError(file, place("version"),
-                      "expected version " + std::to_string(kVersion) + " (this program's), found " +
-                          std::to_string(version));
-  }
+  check_format_and_version(json, file, kFormat, kVersion);
   Parsed parsed;
   SessionInfo& info = parsed.info;
   info.tool = string_member(json, "tool", file, "");
