@@ -12,15 +12,15 @@
 namespace nibrig::model::mechanics {
 
 // Node order inside a tetrahedron is Gmsh's "Tetrahedron10": corners 0-3, then the nodes on edges
-// (0,1) (1,2) (0,2) (0,3) (2,3) (1,3). On curved boundaries the edge nodes lie on the surface, not at
-// the chord midpoint, so elements are isoparametric.
+// (0,1) (1,2) (0,2) (0,3) (2,3) (1,3). On curved boundaries the edge nodes lie on the surface, not
+// at the chord midpoint, so elements are isoparametric.
 using Tet10 = std::array<int, 10>;
 
 struct TetMesh {
-  Eigen::Matrix3Xd nodes;                      // one column per node, metres
-  std::vector<Tet10> tets;                     // indices into nodes' columns
-  std::vector<int> tet_region;                 // per tet, index into region_names
-  std::vector<std::string> region_names;       // material regions, e.g. "body", "tip"
+  Eigen::Matrix3Xd nodes;                             // one column per node, metres
+  std::vector<Tet10> tets;                            // indices into nodes' columns
+  std::vector<int> tet_region;                        // per tet, index into region_names
+  std::vector<std::string> region_names;              // material regions, e.g. "body", "tip"
   std::map<std::string, std::vector<int>> node_sets;  // e.g. "clamp": nodes held fixed (sorted)
 };
 

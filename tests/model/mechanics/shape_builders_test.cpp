@@ -1,0 +1,153 @@
+#include "model/mechanics/shape_builders.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace nibrig::model::mechanics {
+namespace {
+
+using std::numbers::pi;
+using ::testing::HasSubstr;
+
+// Volume from the corner nodes: exact for straight-sided elements; on curved faces the chords cut
+// a sliver whose relative size shrinks with the element size (below 0.5 % at the sizes used here).
+double corner_volume(const TetMesh& mesh, int region = -1) {
+  double volume = 0;
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    if (region >= 0 && mesh.tet_region[e] != region) continue;
+    const auto& t = mesh.tets[e];
+    const Eigen::Vector3d a = mesh.nodes.col(t[0]);
+    volume +=
+        (mesh.nodes.col(t[1]) - a).cross(mesh.nodes.col(t[2]) - a).dot(mesh.nodes.col(t[3]) - a) /
+        6;
+  }
+  return volume;
+}
+
+bool all_corners_positive(const TetMesh& mesh) {
+  for (const auto& t : mesh.tets) {
+    const Eigen::Vector3d a = mesh.nodes.col(t[0]);
+    if ((mesh.nodes.col(t[1]) - a).cross(mesh.nodes.col(t[2]) - a).dot(mesh.nodes.col(t[3]) - a) <=
+        0)
+      return false;
+  }
+  return true;
+}
+
+TEST(BarMesh, PaperBarHasTheVolumeOfItsDrawing) {
+  const BarGeometry bar;  // the paper's bar
+  const TetMesh mesh = mesh_bar(bar, 0.004);
+  const double L = bar.free_length(), w = bar.width, t = bar.thickness;
+  const double expected =
+      ((L - w / 2) * w + pi * w * w / 8 - pi * bar.cutout_radius * bar.cutout_radius) * t;
+  EXPECT_NEAR(corner_volume(mesh), expected, 0.005 * expected);
+  EXPECT_TRUE(all_corners_positive(mesh));
+  ASSERT_EQ(mesh.region_names, std::vector<std::string>{"body"});
+  EXPECT_EQ(mesh.tets.size(), mesh.tet_region.size());
+
+  const Eigen::Vector3d lo = mesh.nodes.rowwise().minCoeff(), hi = mesh.nodes.rowwise().maxCoeff();
+  EXPECT_NEAR(lo.x(), 0, 1e-12);
+  EXPECT_NEAR(hi.x(), L, 1e-9);
+  EXPECT_NEAR(hi.y() - lo.y(), w, 1e-9);
+  EXPECT_NEAR(hi.z() - lo.z(), t, 1e-9);
+}
+
+TEST(BarMesh, ClampIsExactlyTheFixedFace) {
+  const TetMesh mesh = mesh_bar(BarGeometry{}, 0.004);
+  const auto& clamp = mesh.node_sets.at("clamp");
+  ASSERT_FALSE(clamp.empty());
+  for (int n : clamp) EXPECT_NEAR(mesh.nodes(0, n), 0.0, 1e-12);
+  // A quadratic triangulation of a 20 × 2 mm face has its corners and edge midpoints on it; at
+  // least the four corners of the rectangle must be there.
+  EXPECT_GE(clamp.size(), 4u);
+}
+
+TEST(BarMesh, SquareAndFilletedEndsAndNoCutout) {
+  BarGeometry bar;
+  bar.cutout = false;
+  bar.end_radius = 0;
+  const double box = bar.free_length() * bar.width * bar.thickness;
+  EXPECT_NEAR(corner_volume(mesh_bar(bar, 0.005)), box, 1e-9 * box);  // straight faces only: exact
+
+  bar.end_radius = 0.004;  // two quarter-circle corners remove (4 - π) r² of the rectangle
+  const double filleted = box - (4 - pi) * bar.end_radius * bar.end_radius * bar.thickness;
+  EXPECT_NEAR(corner_volume(mesh_bar(bar, 0.004)), filleted, 0.002 * filleted);
+}
+
+TEST(BarMesh, ImpossibleBarsNameTheirField) {
+  BarGeometry bar;
+  bar.clamp_length = 0.3;
+  EXPECT_THAT([&] { validate(bar); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("clamp length")));
+  bar = {};
+  bar.cutout_radius = 0.011;
+  EXPECT_THAT([&] { validate(bar); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("cutout radius")));
+  bar = {};
+  bar.thickness = -0.002;
+  EXPECT_THAT([&] { validate(bar); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("thickness")));
+  bar = {};
+  bar.width = std::nan("");
+  EXPECT_THROW(validate(bar), std::invalid_argument);
+  EXPECT_THAT([&] { mesh_bar(BarGeometry{}, 0); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("mesh size")));
+}
+
+TEST(StylusMesh, TwoMaterialStylusHasBothRegionsWithTheirVolumes) {
+  StylusGeometry s;
+  s.tip_diameter = 0.004;
+  s.tip_insert_length = 0.006;  // the hemisphere (2 mm) and 4 mm of the cone
+  const TetMesh mesh = mesh_stylus(s, 0.002);
+  ASSERT_EQ(mesh.region_names.size(), 2u);
+  const int tip =
+      static_cast<int>(std::find(mesh.region_names.begin(), mesh.region_names.end(), "tip") -
+                       mesh.region_names.begin());
+  ASSERT_LT(tip, 2);
+  EXPECT_TRUE(all_corners_positive(mesh));
+
+  const double R = s.body_diameter / 2, r = s.tip_diameter / 2;
+  auto frustum = [](double h, double r1, double r2) {
+    return pi * h * (r1 * r1 + r1 * r2 + r2 * r2) / 3;
+  };
+  const double cone_in_tip = s.tip_insert_length - r;
+  const double radius_at_cut = r + (R - r) * cone_in_tip / s.taper_length;
+  const double tip_volume = 2 * pi * r * r * r / 3 + frustum(cone_in_tip, radius_at_cut, r);
+  const double all =
+      pi * R * R * s.body_length + frustum(s.taper_length, R, r) + 2 * pi * r * r * r / 3;
+  // Corner volumes replace curved faces by chords: with Gmsh's curvature sizing of 12 elements per
+  // circle an inscribed polygon loses up to 1 − sin(π/6)·6/π = 4.5 % of a cross-section, and never
+  // gains: the corner volume lies in [0.955, 1] × the drawing's.
+  EXPECT_LE(corner_volume(mesh, tip), tip_volume);
+  EXPECT_GE(corner_volume(mesh, tip), 0.955 * tip_volume);
+  EXPECT_LE(corner_volume(mesh), all);
+  EXPECT_GE(corner_volume(mesh), 0.955 * all);
+
+  const double apex = mesh.nodes.row(0).maxCoeff();
+  EXPECT_NEAR(apex, s.overall_length(), 1e-6);
+  for (int n : mesh.node_sets.at("clamp")) EXPECT_LE(mesh.nodes(0, n), s.grip_length + 1e-9);
+}
+
+TEST(StylusMesh, ImpossibleStyliNameTheirField) {
+  StylusGeometry s;
+  s.tip_diameter = 0.02;
+  EXPECT_THAT([&] { validate(s); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("tip diameter")));
+  s = {};
+  s.grip_length = 0.2;
+  EXPECT_THAT([&] { validate(s); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("grip length")));
+  s = {};
+  s.tip_insert_length = 0.13;
+  EXPECT_THAT([&] { validate(s); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("tip insert")));
+}
+
+}  // namespace
+}  // namespace nibrig::model::mechanics
