@@ -123,6 +123,23 @@ TetMesh tet_mesh_from_gmsh(const std::string& default_region) {
       }
     }
   }
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (dim == 3 || name.empty()) continue;
+    std::vector<std::size_t> group_nodes;
+    std::vector<double> group_coords;
+    gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, group_nodes, group_coords);
+    auto& set = mesh.node_sets[name];
+    for (std::size_t gmsh_tag : group_nodes) {
+      auto it = dense_index.find(gmsh_tag);
+      if (it != dense_index.end()) set.push_back(it->second);
+    }
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+  }
   mesh.nodes = Eigen::Map<const Eigen::Matrix3Xd>(
       used_coords.data(), 3, static_cast<Eigen::Index>(used_coords.size() / 3));
   return mesh;

@@ -35,7 +35,8 @@ void generate_quadratic_tets(double max_size, double min_size);
 
 // The current Gmsh mesh as a TetMesh: 10-node tetrahedra only (a first-order mesh is raised to
 // second order first), nodes renumbered densely. A volume's region is the name of its physical
-// group when it has one, otherwise `default_region`. Node sets stay empty.
+// group when it has one, otherwise `default_region`. Every named physical group of points, curves
+// or surfaces becomes a node set of that name (how a .msh file marks its "clamp").
 TetMesh tet_mesh_from_gmsh(const std::string& default_region);
 
 }  // namespace nibrig::model::mechanics

@@ -1,0 +1,107 @@
+#include "model/mechanics/material_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
+
+namespace nibrig::model::mechanics {
+namespace {
+
+namespace jf = io::json_fields;
+
+bool same_name(const std::string& a, const std::string& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](unsigned char x, unsigned char y) {
+    return std::tolower(x) == std::tolower(y);
+  });
+}
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+MaterialTable::MaterialTable(std::vector<Material> materials) : materials_(std::move(materials)) {
+  for (std::size_t i = 0; i < materials_.size(); ++i) {
+    validate(materials_[i]);
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_name(materials_[i].name, materials_[j].name))
+        throw std::invalid_argument("material '" + materials_[i].name + "' is defined twice");
+  }
+}
+
+const Material& MaterialTable::find(const std::string& name) const {
+  for (const auto& m : materials_)
+    if (same_name(m.name, name)) return m;
+  std::string known;
+  for (const auto& m : materials_) known += (known.empty() ? "" : ", ") + m.name;
+  throw std::invalid_argument("unknown material '" + name + "' (known: " + known + ")");
+}
+
+void validate(const Material& m) {
+  const std::string who = "material '" + m.name + "': ";
+  if (m.name.empty()) throw std::invalid_argument("a material has no name");
+  if (!(std::isfinite(m.youngs_modulus) && m.youngs_modulus > 0))
+    throw std::invalid_argument(who + "Young's modulus must be positive, got " +
+                                number_text(m.youngs_modulus) + " Pa");
+  if (!(std::isfinite(m.poisson_ratio) && m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
+    throw std::invalid_argument(who + "Poisson ratio must lie in (-1, 0.5), got " +
+                                number_text(m.poisson_ratio));
+  if (!(std::isfinite(m.density) && m.density > 0))
+    throw std::invalid_argument(who + "density must be positive, got " + number_text(m.density) +
+                                " kg/m^3");
+  if (m.damping) {
+    if (!(std::isfinite(m.damping->mass) && m.damping->mass >= 0))
+      throw std::invalid_argument(who + "Rayleigh mass coefficient must be zero or positive, got " +
+                                  number_text(m.damping->mass) + " 1/s");
+    if (!(std::isfinite(m.damping->stiffness) && m.damping->stiffness >= 0))
+      throw std::invalid_argument(who +
+                                  "Rayleigh stiffness coefficient must be zero or positive, got " +
+                                  number_text(m.damping->stiffness) + " s");
+  }
+}
+
+MaterialTable read_material_table(const std::filesystem::path& file) {
+  const nlohmann::json root = jf::parse_file(file);
+  jf::as_object(root, file, "");
+  jf::check_format_and_version(root, file, "nibrig-materials", 1);
+  const auto& list = jf::as_array(jf::member(root, "materials", file, ""), file, "materials");
+  std::vector<Material> materials;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = jf::element_path("materials", i);
+    const auto& entry = jf::as_object(list[i], file, path);
+    Material m;
+    m.name = jf::string_member(entry, "name", file, path);
+    m.youngs_modulus = jf::number_member(entry, "youngs_modulus", file, path);
+    m.poisson_ratio = jf::number_member(entry, "poisson_ratio", file, path);
+    m.density = jf::number_member(entry, "density", file, path);
+    if (entry.contains("rayleigh_mass") || entry.contains("rayleigh_stiffness")) {
+      RayleighDamping d;
+      if (entry.contains("rayleigh_mass"))
+        d.mass = jf::number_member(entry, "rayleigh_mass", file, path);
+      if (entry.contains("rayleigh_stiffness"))
+        d.stiffness = jf::number_member(entry, "rayleigh_stiffness", file, path);
+      m.damping = d;
+    }
+    m.source = jf::string_member(entry, "source", file, path);
+    try {
+      validate(m);
+    } catch (const std::invalid_argument& e) {
+      throw io::FormatError(file, jf::place(path), e.what());
+    }
+    materials.push_back(std::move(m));
+  }
+  try {
+    return MaterialTable(std::move(materials));
+  } catch (const std::invalid_argument& e) {
+    throw io::FormatError(file, jf::place("materials"), e.what());
+  }
+}
+
+}  // namespace nibrig::model::mechanics
