@@ -1,0 +1,92 @@
+#include "model/io/acceleration_trace.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/io/session.hpp"
+#include "tests/model/io/io_test_files.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::io {
+namespace {
+
+using test::expect_message_names;
+using test::format_error_of;
+
+AccelerationTrace decaying_sine(std::size_t samples) {
+  AccelerationTrace trace{2000.0, {}};
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double t = static_cast<double>(i) / trace.sample_rate_hz;
+    trace.acceleration_m_s2.push_back(3.0 * std::exp(-2 * t) * std::sin(2 * M_PI * 37 * t));
+  }
+  return trace;
+}
+
+TEST(AccelerationTrace, CsvRoundTripKeepsRateAndSamples) {
+  const auto file = test::scratch_dir("trace") / "ring.csv";
+  const AccelerationTrace written = decaying_sine(500);
+  write_acceleration_trace(file, written);
+  const AccelerationTrace read = read_acceleration_trace(file);
+  // Times are written with 10 significant digits: the rate comes back to that precision.
+  EXPECT_NEAR(read.sample_rate_hz, 2000.0, 1e-6);
+  ASSERT_EQ(read.acceleration_m_s2.size(), 500u);
+  for (std::size_t i = 0; i < 500; ++i)
+    EXPECT_NEAR(read.acceleration_m_s2[i], written.acceleration_m_s2[i], 1e-9);
+}
+
+TEST(AccelerationTrace, SessionFolderGivesCalibratedAcceleration) {
+  const auto folder = test::scratch_dir("trace_session") / "ring";
+  SessionInfo info;
+  info.tool = "bar";
+  info.surface = "none";
+  info.normal_load_N = 0.0;
+  info.acceleration_rate_hz = 4000;
+  info.speed_rate_hz = 100;
+  info.force_rate_hz = 100;
+  info.calibration.accelerometer_m_s2_per_unit = 9.80665 * 16;  // a ±16 g sensor at full scale
+  {
+    SessionWriter writer(folder, info);
+    std::vector<float> samples(400, 0.25f);
+    writer.append_acceleration(samples);
+    writer.finish();
+  }
+  const AccelerationTrace trace = read_acceleration_trace(folder);
+  EXPECT_DOUBLE_EQ(trace.sample_rate_hz, 4000);
+  ASSERT_EQ(trace.acceleration_m_s2.size(), 400u);
+  EXPECT_NEAR(trace.acceleration_m_s2[0], 0.25 * 9.80665 * 16, 1e-9);
+}
+
+TEST(AccelerationTrace, BadFilesNameFileLineAndExpectation) {
+  const auto dir = test::scratch_dir("trace_bad");
+  std::string rows;
+  for (int i = 0; i < 20; ++i) rows += std::to_string(i * 0.001) + ",0.5\n";
+
+  test::write_text(dir / "uneven.csv", "time_s,acceleration_m_s2\n" + rows + "0.025,0.5\n");
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "uneven.csv"); }),
+                       {"uneven.csv", "line 22", "evenly spaced"});
+
+  test::write_text(dir / "nan.csv", "time_s,acceleration_m_s2\n0,0.1\n0.001,nan\n" + rows);
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "nan.csv"); }),
+                       {"nan.csv", "line 3", "acceleration_m_s2"});
+
+  test::write_text(dir / "column.csv", "time_s,accel_g\n" + rows);
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "column.csv"); }),
+                       {"column.csv", "acceleration_m_s2"});
+
+  test::write_text(dir / "short.csv", "time_s,acceleration_m_s2\n0,1\n0.001,2\n");
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "short.csv"); }),
+                       {"short.csv", "at least 16 samples"});
+
+  test::write_text(dir / "backwards.csv",
+                   "time_s,acceleration_m_s2\n0,1\n0.002,2\n0.001,2\n" + rows);
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "backwards.csv"); }),
+                       {"backwards.csv", "line 4", "increase"});
+
+  test::write_text(dir / "empty.csv", "");
+  expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "empty.csv"); }),
+                       {"empty.csv", "time_s,acceleration_m_s2"});
+}
+
+}  // namespace
+}  // namespace nibrig::model::io
