@@ -44,18 +44,14 @@ const Material& MaterialTable::find(const std::string& name) const {
   throw std::invalid_argument("unknown material '" + name + "' (known: " + known + ")");
 }
 
+IsotropicMaterial elastic_part(const Material& m) {
+  return {m.name, m.youngs_modulus, m.poisson_ratio, m.density};
+}
+
 void validate(const Material& m) {
   const std::string who = "material '" + m.name + "': ";
   if (m.name.empty()) throw std::invalid_argument("a material has no name");
-  if (!(std::isfinite(m.youngs_modulus) && m.youngs_modulus > 0))
-    throw std::invalid_argument(who + "Young's modulus must be positive, got " +
-                                number_text(m.youngs_modulus) + " Pa");
-  if (!(std::isfinite(m.poisson_ratio) && m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
-    throw std::invalid_argument(who + "Poisson ratio must lie in (-1, 0.5), got " +
-                                number_text(m.poisson_ratio));
-  if (!(std::isfinite(m.density) && m.density > 0))
-    throw std::invalid_argument(who + "density must be positive, got " + number_text(m.density) +
-                                " kg/m^3");
+  validate(elastic_part(m));
   if (m.damping) {
     if (!(std::isfinite(m.damping->mass) && m.damping->mass >= 0))
       throw std::invalid_argument(who + "Rayleigh mass coefficient must be zero or positive, got " +

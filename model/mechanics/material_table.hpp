@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "model/mechanics/isotropic_material.hpp"
+
 namespace nibrig::model::mechanics {
 
 struct RayleighDamping {
@@ -37,8 +39,11 @@ class MaterialTable {
   std::vector<Material> materials_;
 };
 
-// Throws std::invalid_argument naming the material and field: E ≤ 0, ν outside (−1, 0.5), ρ ≤ 0,
-// negative damping, anything not finite.
+// The elastic constants the FEM needs.
+IsotropicMaterial elastic_part(const Material& material);
+
+// Throws std::invalid_argument naming the material and field: the elastic constants as
+// validate(IsotropicMaterial) checks them, negative damping, anything not finite.
 void validate(const Material& material);
 
 // Format "nibrig-materials", version 1. Throws io::FormatError naming the file and field.

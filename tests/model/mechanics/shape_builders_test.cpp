@@ -9,6 +9,8 @@
 #include <numbers>
 #include <set>
 
+#include "model/mechanics/tet10_element.hpp"
+
 namespace nibrig::model::mechanics {
 namespace {
 
@@ -27,6 +29,15 @@ double corner_volume(const TetMesh& mesh, int region = -1) {
         (mesh.nodes.col(t[1]) - a).cross(mesh.nodes.col(t[2]) - a).dot(mesh.nodes.col(t[3]) - a) /
         6;
   }
+  return volume;
+}
+
+// Volume of the isoparametric elements: the total of the unit-density consistent mass.
+double quadratic_volume(const TetMesh& mesh, int region = -1) {
+  double volume = 0;
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e)
+    if (region < 0 || mesh.tet_region[e] == region)
+      volume += tet10_scalar_mass(tet10_nodes(mesh, e), 1.0).sum();
   return volume;
 }
 
@@ -121,13 +132,12 @@ TEST(StylusMesh, TwoMaterialStylusHasBothRegionsWithTheirVolumes) {
   const double tip_volume = 2 * pi * r * r * r / 3 + frustum(cone_in_tip, radius_at_cut, r);
   const double all =
       pi * R * R * s.body_length + frustum(s.taper_length, R, r) + 2 * pi * r * r * r / 3;
-  // Corner volumes replace curved faces by chords: with Gmsh's curvature sizing of 12 elements per
-  // circle an inscribed polygon loses up to 1 − sin(π/6)·6/π = 4.5 % of a cross-section, and never
-  // gains: the corner volume lies in [0.955, 1] × the drawing's.
-  EXPECT_LE(corner_volume(mesh, tip), tip_volume);
-  EXPECT_GE(corner_volume(mesh, tip), 0.955 * tip_volume);
-  EXPECT_LE(corner_volume(mesh), all);
-  EXPECT_GE(corner_volume(mesh), 0.955 * all);
+  // The quadratic elements put their edge nodes on the true surface; the volume they enclose (the
+  // unit-density mass, integrated exactly) differs from the drawing's by the O(h³) gap between a
+  // quadratic patch and the sphere or cone (measured 3e-4 on the 2 mm tip, 3e-5 overall at 2 mm
+  // elements). A wrong shape (a missing hemisphere is 8 % of the tip region) is far outside.
+  EXPECT_NEAR(quadratic_volume(mesh, tip), tip_volume, 1e-3 * tip_volume);
+  EXPECT_NEAR(quadratic_volume(mesh), all, 2e-4 * all);
 
   const double apex = mesh.nodes.row(0).maxCoeff();
   EXPECT_NEAR(apex, s.overall_length(), 1e-6);

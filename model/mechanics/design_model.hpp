@@ -1,0 +1,39 @@
+// From a design to its modal model: mesh, assemble, solve for the lowest modes, read them at the
+// tip and sensor, apply Rayleigh damping. The one pipeline the CLI, the demo, the ring-down fit and
+// (later) the real-time voices share; it records how long each stage took.
+#pragma once
+
+#include <vector>
+
+#include "model/mechanics/design.hpp"
+#include "model/mechanics/fem_assembly.hpp"
+#include "model/mechanics/isotropic_material.hpp"
+#include "model/mechanics/modal_analysis.hpp"
+#include "model/mechanics/modal_model.hpp"
+
+namespace nibrig::model::mechanics {
+
+struct DesignModel {
+  Design design;
+  TetMesh mesh;
+  std::vector<Material> region_materials;  // in the order of mesh.region_names
+  RayleighDamping damping;
+  std::string damping_source;  // "the design", "material 'X'", or "none (undamped)"
+  Eigen::Index free_dofs = 0;
+  ModalResult modes;
+  ModalModel modal;
+  struct {
+    double meshing_s = 0, assembly_s = 0, modes_s = 0;
+  } seconds;
+};
+
+// The design's damping: its own when given, else that of the material of region "body" (or of the
+// only region), else none (ζ = 0; the caller should say so). Second: where it came from.
+std::pair<RayleighDamping, std::string> design_damping(const Design& design,
+                                                       const MaterialTable& materials);
+
+// Throws what the stages throw (bad shape, no clamp, unknown material, tip or sensor outside the
+// body, modal solver failure), each naming the design.
+DesignModel build_design_model(const Design& design, const MaterialTable& materials);
+
+}  // namespace nibrig::model::mechanics

@@ -1,0 +1,23 @@
+// Figures of the mechanics: a tool's frequency response from tip force to sensor acceleration,
+// and a ring-down test, measured against simulated (the paper's Fig. 11).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/mechanics/modal_model.hpp"
+
+namespace nibrig::ui::cli {
+
+// |H(f)| over 1-500 Hz on a log scale, one curve per (label, model).
+void plot_frequency_responses(
+    const std::vector<std::pair<std::string, model::mechanics::ModalModel>>& models,
+    const std::string& title, const std::filesystem::path& png);
+
+// Acceleration over time: measured (or simulated alone when `measured` is empty) and the model.
+void plot_ring_down(const std::vector<double>& measured, const std::vector<double>& simulated,
+                    double sample_rate, const std::string& title, const std::filesystem::path& png);
+
+}  // namespace nibrig::ui::cli
