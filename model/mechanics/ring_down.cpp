@@ -93,16 +93,21 @@ struct RingDownResiduals {
   const RingDownOptions* options;
   const io::AccelerationTrace* trace;
   int* evaluations;
+  double release_time = 0.0;
 
-  int inputs() const { return 3; }
+  int inputs() const { return 2; }
+
+  double stiffness_damping(const Eigen::VectorXd& theta) const {
+    return std::exp(theta[1]) / (reference->omega.front() * std::exp(theta[0] / 2));
+  }
   int values() const { return static_cast<int>(trace->acceleration_m_s2.size()); }
 
   std::vector<double> simulate(const Eigen::VectorXd& theta, double* gain) const {
-    const RayleighDamping damping{options->mass_damping, std::exp(theta[1])};
+    const RayleighDamping damping{options->mass_damping, stiffness_damping(theta)};
     const ModalModel model = rescale_modulus(*reference, std::exp(theta[0]), damping);
     const auto& measured = trace->acceleration_m_s2;
     std::vector<double> simulated = simulate_release(model, options->preload, trace->sample_rate_hz,
-                                                     measured.size(), std::max(0.0, theta[2]));
+                                                     measured.size(), release_time);
     ++*evaluations;
     *gain = options->fit_gain ? best_gain(measured, simulated) : 1.0;
     return simulated;
@@ -190,16 +195,13 @@ RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& op
   // 1. Modulus and first-mode damping ratio on a grid, scored on magnitude spectra. 5 % steps in
   //    modulus (2.5 % in frequency) resolve a line as narrow as ζ = 2.5 %; the damping grid is in ζ
   //    of the first mode so that it means the same at every modulus.
-  Eigen::VectorXd theta(3);
+  Eigen::VectorXd theta(2);
   double best_score = -1.0;
-  const double omega1_ref = reference.omega.front();
   for (double log_ratio = std::log(0.02); log_ratio <= std::log(50.0);
        log_ratio += std::log(1.05)) {
-    const double omega1 = omega1_ref * std::exp(log_ratio / 2);
     for (double zeta1 : {0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5}) {
-      const double lambda = 2 * zeta1 / omega1;
-      Eigen::VectorXd candidate(3);
-      candidate << log_ratio, std::log(lambda), 0.0;
+      Eigen::VectorXd candidate(2);
+      candidate << log_ratio, std::log(2 * zeta1);
       double gain = 1.0;
       const double score = normalised_correlation(
           measured_magnitude, magnitude_spectrum(fft, residuals.simulate(candidate, &gain)));
@@ -209,20 +211,47 @@ RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& op
   // 2. Release time: where the model released at t = 0 best lines up with the trace.
   {
     double gain = 1.0;
-    theta[2] = 0.0;
     const std::vector<double> at_zero = residuals.simulate(theta, &gain);
-    theta[2] = release_time_by_correlation(fft, measured, at_zero, trace.sample_rate_hz);
+    residuals.release_time =
+        release_time_by_correlation(fft, measured, at_zero, trace.sample_rate_hz);
   }
-  // 3. Levenberg-Marquardt on all three together.
+  // 3. Levenberg-Marquardt on modulus and damping; then the release time by a search within 20
+  //    samples of its estimate, to a twentieth of a sample; then both once more.
   Eigen::NumericalDiff<RingDownResiduals> numerical(residuals);
-  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<RingDownResiduals>> solver(numerical);
-  solver.setMaxfev(400);
-  solver.minimize(theta);
+  auto refine = [&] {
+    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<RingDownResiduals>> solver(numerical);
+    solver.setMaxfev(400);
+    solver.minimize(theta);
+  };
+  auto misfit_at = [&](double release) {
+    numerical.release_time = release;
+    Eigen::VectorXd r(numerical.values());
+    numerical(theta, r);
+    return r.squaredNorm();
+  };
+  const double step = 1.0 / trace.sample_rate_hz;
+  double best_release = numerical.release_time, best_misfit = misfit_at(best_release);
+  auto search_release = [&](double spacing, int points) {
+    const double centre = best_release;
+    for (int k = -points; k <= points; ++k) {
+      const double release = std::max(0.0, centre + k * spacing);
+      const double m = misfit_at(release);
+      if (m < best_misfit) best_misfit = m, best_release = release;
+    }
+    numerical.release_time = best_release;
+  };
+  refine();
+  search_release(step, 20);  // the correlation peak of a decaying step can sit a few samples off
+  search_release(step / 20, 20);  // then to a twentieth of a sample
+  refine();
+  best_misfit = misfit_at(best_release);
+  search_release(step / 20, 20);
+  residuals.release_time = best_release;
 
   RingDownFit fit;
   fit.youngs_modulus = options.reference_modulus * std::exp(theta[0]);
-  fit.rayleigh_stiffness = std::exp(theta[1]);
-  fit.release_time = std::max(0.0, theta[2]);
+  fit.rayleigh_stiffness = residuals.stiffness_damping(theta);
+  fit.release_time = best_release;
   const std::vector<double> simulated = residuals.simulate(theta, &fit.gain);
   fit.fitted.resize(simulated.size());
   double misfit = 0.0;

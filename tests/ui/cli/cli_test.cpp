@@ -7,29 +7,14 @@
 #include <vector>
 
 #include "tests/support/test_paths.hpp"
-#include "ui/cli/app.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
 
-int run_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "nibrig");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run(static_cast<int>(argv.size()), argv.data());
-}
-
-nlohmann::json read_json(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
-bool is_png(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[8] = {};
-  in.read(magic, 8);
-  return in && std::string(magic + 1, 3) == "PNG";
-}
+using test::is_png;
+using test::read_json;
+using test::run_cli;
 
 TEST(Cli, MeasureFrictionWritesMuAndFigures) {
   const auto out = test::scratch_dir("cli_measure_friction");
