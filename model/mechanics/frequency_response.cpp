@@ -45,4 +45,8 @@ std::vector<std::complex<double>> frequency_response(const ModalModel& model,
   return h;
 }
 
+std::vector<std::complex<double>> frequency_response(const ModalModel& model) {
+  return frequency_response(model, default_frequency_grid());
+}
+
 }  // namespace nibrig::model::mechanics

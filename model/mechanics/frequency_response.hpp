@@ -21,4 +21,7 @@ std::vector<double> default_frequency_grid();
 std::vector<std::complex<double>> frequency_response(const ModalModel& model,
                                                      std::span<const double> frequencies);
 
+// The same over default_frequency_grid().
+std::vector<std::complex<double>> frequency_response(const ModalModel& model);
+
 }  // namespace nibrig::model::mechanics

@@ -30,6 +30,7 @@ class LinearForcingIntegrator {
   // thread.
   void set_state(std::span<const double> displacement, std::span<const double> velocity,
                  double force);
+  // The state of mode < modes() at the last processed sample (unchecked: read on the audio thread).
   double displacement(std::size_t mode) const noexcept { return q_[mode]; }
   double velocity(std::size_t mode) const noexcept { return v_[mode]; }
 

@@ -31,9 +31,12 @@ Transition mode_transition(double omega, double zeta, double step);
 
 // ∫_0^h r^power g(r) e^{jΩr} dr, power 0 or 1, where g is the mode's displacement impulse response
 // (g'' + 2ζωg' + ω²g = 0, g(0) = 0, g'(0) = 1), so that e^{rU}(0, 1)ᵀ = (g(r), g'(r)). Every
-// forcing integral of Eq. 8 over one step reduces to these moments; computed in closed form (a
-// series in μ² = ω²(ζ²−1) where the two poles are close, the poles' exponentials where they are
-// apart), accurate to a few ulps of ∫|integrand| also at exact resonance of an undamped mode.
+// forcing integral of Eq. 8 over one step reduces to these moments. Closed forms, no quadrature:
+// where the poles are close (|μ|h ≤ 1, μ² = ω²(ζ²−1)) a series in μ²h² of incomplete-gamma terms,
+// elsewhere integration-by-parts identities or the two poles' exponentials, whichever does not
+// cancel. Relative error a few ulps times max(1, Ωh, min(ωh, 1/ζ)) (the rounding of the phases
+// themselves), also at exact resonance of an undamped mode. Throws std::invalid_argument for
+// another power; other arguments are not validated (ω > 0, ζ ≥ 0, step > 0, all finite).
 std::complex<double> impulse_response_moment(double omega, double zeta, double step, int power,
                                              double forcing_omega = 0.0);
 

@@ -25,7 +25,8 @@
 namespace nibrig::model::mechanics {
 
 ModeState SinusoidStep::advance(ModeState x, double modal_amplitude, double end_phase) const {
-  const std::complex<double> e = std::polar(modal_amplitude, end_phase);
+  // Not std::polar(modal_amplitude, …): the amplitude carries the sign of b and may be negative.
+  const std::complex<double> e = modal_amplitude * std::polar(1.0, end_phase);
   const ModeState free = transition.apply(x);
   return {free.displacement + (e * displacement_gain).imag(),
           free.velocity + (e * velocity_gain).imag()};

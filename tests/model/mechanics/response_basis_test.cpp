@@ -187,6 +187,10 @@ TEST(FrequencyResponse, DefaultGridAndLimits) {
   EXPECT_EQ(h[0], std::complex<double>(0.0, 0.0));
   EXPECT_LE(std::abs(h[1] - cb), bound);
   EXPECT_LT(bound, 1e-2 * std::abs(cb));  // so that the check says something
+  // Without a grid, the default one: entry k is f = k + 1 Hz.
+  const auto h_default = frequency_response(m);
+  ASSERT_EQ(h_default.size(), 500u);
+  EXPECT_EQ(h_default[99], frequency_response(m, std::vector<double>{100.0})[0]);
 }
 
 }  // namespace
