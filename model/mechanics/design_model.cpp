@@ -49,7 +49,7 @@ DesignModel build_design_model(const Design& design, const MaterialTable& materi
   model.mesh = naming_design(design, [&] { return mesh_design(design); });
   model.seconds.meshing_s = seconds_since(start);
   // Before the expensive stages: a tip or sensor off the body is a mistake in the design file.
-  const PointLocator locator(model.mesh);
+  const PointLocator locator = naming_design(design, [&] { return PointLocator(model.mesh); });
   naming_design(design, [&] { return locator.locate(design.tip.point); });
   naming_design(design, [&] { return locator.locate(design.sensor.point); });
 

@@ -6,6 +6,10 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <spdlog/spdlog.h>
+
+#include "model/mechanics/mesh_repair.hpp"
+
 namespace nibrig::model::mechanics {
 namespace {
 
@@ -59,12 +63,22 @@ void GmshSession::throw_if_failed(const std::string& what) const {
 void generate_quadratic_tets(double max_size, double min_size) {
   gmsh::option::setNumber("Mesh.MeshSizeMax", max_size);
   gmsh::option::setNumber("Mesh.MeshSizeMin", min_size);
+  // OpenCASCADE gives every point a default size from the model's extent, which would cap the
+  // element size of a small part below what the caller asked for.
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   // Resolve curved features (a 1 mm tip on a 10 mm body) without refining the whole body.
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 12);
   gmsh::option::setNumber("Mesh.ElementOrder", 2);
   gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
   gmsh::option::setNumber("Mesh.Optimize", 1);
-  gmsh::model::mesh::generate(3);
+  try {
+    gmsh::model::mesh::generate(3);
+  } catch (const std::string& message) {  // some Gmsh 4.8 failures throw a bare string
+    throw std::runtime_error("Gmsh: " + message);
+  }
+  // Moving edge nodes onto a curved surface can fold a small element near a tip (seen on the 2 mm
+  // tip stylus at 3 mm elements); Debian's Gmsh 4.8 has no working high-order optimiser to untangle
+  // it, so tet_mesh_from_gmsh straightens such elements instead (mesh_repair.hpp).
 }
 
 TetMesh tet_mesh_from_gmsh(const std::string& default_region) {
@@ -142,6 +156,8 @@ TetMesh tet_mesh_from_gmsh(const std::string& default_region) {
   }
   mesh.nodes = Eigen::Map<const Eigen::Matrix3Xd>(
       used_coords.data(), 3, static_cast<Eigen::Index>(used_coords.size() / 3));
+  const std::size_t straightened = straighten_inverted_elements(mesh);
+  if (straightened > 0) spdlog::debug("straightened {} curved element(s) that Gmsh had folded", straightened);
   return mesh;
 }
 
