@@ -1,6 +1,7 @@
 #include "model/mechanics/modal_analysis.hpp"
 
 #include <Spectra/SymGEigsShiftSolver.h>
+#include <spdlog/spdlog.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -151,6 +152,8 @@ ModalResult compute_modes(const FemSystem& system, const ModalOptions& options) 
   result.shapes = system.expand(vectors);
   result.restarts = static_cast<int>(solver.num_iterations());
   result.solves = static_cast<int>(solver.num_operations());
+  spdlog::debug("modal analysis: {} modes of {} free DOFs, {} to {} Hz, {} solves", lambda.size(),
+                n, result.frequency_hz(0), result.frequency_hz(lambda.size() - 1), result.solves);
   return result;
 }
 
