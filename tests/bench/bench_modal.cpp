@@ -6,9 +6,11 @@
 #include <benchmark/benchmark.h>
 
 #include <map>
+#include <random>
 
 #include "model/mechanics/fem_assembly.hpp"
 #include "model/mechanics/modal_analysis.hpp"
+#include "model/mechanics/point_probe.hpp"
 #include "tests/support/gmsh_tet_mesh.hpp"
 
 namespace {
@@ -83,6 +85,24 @@ void BM_Modes64(benchmark::State& state) {
   state.counters["f64_hz"] = r.frequency_hz(r.frequency_hz.size() - 1);
 }
 
+// Building the search grid, then finding 1000 random points of the rod (per iteration).
+void BM_LocatePoints(benchmark::State& state) {
+  const TetMesh& mesh = stylus(mesh_size_of(state));
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> along(0.0, kLength - kRadius), across(-0.6, 0.6);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 1000; ++i)
+    points.emplace_back(along(rng), across(rng) * kRadius, across(rng) * kRadius);
+  double weight_sum = 0.0;
+  for (auto _ : state) {
+    const PointLocator locator(mesh);
+    for (const auto& p : points) weight_sum += locator.locate(p).weights.sum();
+  }
+  benchmark::DoNotOptimize(weight_sum);
+  state.counters["tets"] = static_cast<double>(mesh.tets.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points.size()));
+}
+
 // What a design iteration costs end to end: mesh, assemble, 64 modes.
 void BM_MeshAssembleModes64(benchmark::State& state) {
   for (auto _ : state) {
@@ -97,6 +117,7 @@ void BM_MeshAssembleModes64(benchmark::State& state) {
 BENCHMARK(BM_MeshStylus)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Assemble)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Modes64)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LocatePoints)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MeshAssembleModes64)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
