@@ -1,6 +1,7 @@
 #include "model/mechanics/modal_analysis.hpp"
 
 #include <Spectra/SymGEigsShiftSolver.h>
+#include <spdlog/spdlog.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -101,6 +102,12 @@ ModalResult compute_modes(const FemSystem& system, const ModalOptions& options) 
       << "] for " << n << " free DOFs";
     throw std::invalid_argument(s.str());
   }
+  if (!std::isfinite(options.shift) || !(options.tolerance > 0.0) || options.max_restarts < 0) {
+    std::ostringstream s;
+    s << "modal analysis: bad options (shift " << options.shift << " rad^2/s^2, tolerance "
+      << options.tolerance << ", max_restarts " << options.max_restarts << ")";
+    throw std::invalid_argument(s.str());
+  }
   const Eigen::Index basis =
       options.basis_size > 0 ? std::clamp<Eigen::Index>(options.basis_size, options.modes + 1, n)
                              : std::min<Eigen::Index>(n, 2 * options.modes + 1);
@@ -118,7 +125,7 @@ ModalResult compute_modes(const FemSystem& system, const ModalOptions& options) 
   if (solver.info() != Spectra::CompInfo::Successful) {
     std::ostringstream s;
     s << "modal analysis did not converge: " << converged << " of " << options.modes
-      << " modes after " << solver.num_iterations() << " Lanczos restarts (" << n
+      << " modes after " << solver.num_iterations() - 1 << " Lanczos restarts (" << n
       << " free DOFs, basis " << basis << ", tolerance " << options.tolerance << ")";
     throw std::runtime_error(s.str());
   }
@@ -149,8 +156,10 @@ ModalResult compute_modes(const FemSystem& system, const ModalOptions& options) 
   }
   result.frequency_hz = result.omega / (2.0 * std::numbers::pi);
   result.shapes = system.expand(vectors);
-  result.restarts = static_cast<int>(solver.num_iterations());
+  result.restarts = static_cast<int>(solver.num_iterations()) - 1;
   result.solves = static_cast<int>(solver.num_operations());
+  spdlog::debug("modal analysis: {} modes of {} free DOFs, {} to {} Hz, {} solves", lambda.size(),
+                n, result.frequency_hz(0), result.frequency_hz(lambda.size() - 1), result.solves);
   return result;
 }
 

@@ -33,11 +33,11 @@ struct TetQuadrature {
 // order of isoparametric P2 elements (Ciarlet & Raviart 1972), which the cantilever test checks.
 const TetQuadrature& tet_quadrature_degree2();
 
-// 14 points, degree 5, all weights positive (Walkington 2000, "Quadrature on simplices of
-// arbitrary dimension"; also listed as Keast's positive 14-point rule). The consistent mass
-// N_a N_b det J is of degree 4 on straight elements, so it is exact there; the positive weights
-// keep the mass matrix positive definite, which Keast's 11-point degree-4 rule (one negative
-// weight) does not guarantee.
+// 14 points, degree 5, all weights positive (the rule in Walkington 2000, "Quadrature on
+// simplices of arbitrary dimension"; its exactness is checked on monomials in the tests). The
+// consistent mass N_a N_b det J is of degree 4 on straight elements, so it is exact there; the
+// positive weights keep the mass matrix positive definite, which Keast's 11-point degree-4 rule
+// (negative weight at the centroid) does not guarantee.
 const TetQuadrature& tet_quadrature_degree5();
 
 Tet10Shape tet10_shape(const Eigen::Vector3d& xi);

@@ -195,6 +195,18 @@ TEST(ModalAnalysis, BadRequestsAndUnheldBodiesAreReported) {
   none.modes = 0;
   EXPECT_THROW(compute_modes(sys, none), std::invalid_argument);
 
+  // With no restart allowed, the first Lanczos basis is never even checked for converged modes.
+  ModalOptions no_restart;
+  no_restart.modes = 6;
+  no_restart.max_restarts = 0;
+  EXPECT_THAT([&] { compute_modes(sys, no_restart); },
+              ::testing::ThrowsMessage<std::runtime_error>(
+                  HasSubstr("did not converge: 0 of 6 modes after 0 Lanczos restarts")));
+  ModalOptions bad_tolerance;
+  bad_tolerance.modes = 4;
+  bad_tolerance.tolerance = 0.0;
+  EXPECT_THROW(compute_modes(sys, bad_tolerance), std::invalid_argument);
+
   // A single clamped node holds translations but not the three rotations about it.
   TetMesh pinned = mesh;
   pinned.node_sets["clamp"].resize(1);
