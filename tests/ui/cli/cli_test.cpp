@@ -117,6 +117,12 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   EXPECT_TRUE(std::filesystem::exists(out / "demo" / "catalog.json"));
   EXPECT_TRUE(std::filesystem::exists(out / "demo" / "descriptors.csv"));
   EXPECT_TRUE(is_png(out / "demo" / "friction.png"));
+  // Mechanics: the bar against beam theory, the paper's bar with its ring-down, the styli.
+  EXPECT_NE(text.find("Euler-Bernoulli"), std::string::npos) << text;
+  EXPECT_NE(text.find("ring-down fit"), std::string::npos) << text;
+  EXPECT_TRUE(std::filesystem::exists(out / "demo" / "mechanics" / "cantilever_convergence.csv"));
+  EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "paper_bar_ring_down.png"));
+  EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "stylus_frequency_responses.png"));
 }
 
 }  // namespace
