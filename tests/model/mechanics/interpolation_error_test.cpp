@@ -38,6 +38,7 @@
 #include "model/mechanics/linear_forcing_integrator.hpp"
 #include "model/mechanics/linear_forcing_step.hpp"
 #include "model/mechanics/sinusoid_step.hpp"
+#include "tests/model/mechanics/paper_damped_model.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -45,19 +46,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kRate = 48000.0;
 
-// A stylus-like model with the paper's stiffness damping λ = 1.25e-3 (ζ = λω/2): one light mode,
-// one near critical, the rest overdamped. Every transient decays at ≥ 200 /s (the 90 Hz mode).
-ModalModel paper_damped_model() {
-  ModalModel m;
-  for (double f : {90.0, 240.0, 620.0, 2400.0, 7000.0}) {
-    const double w = 2.0 * kPi * f;
-    m.omega.push_back(w);
-    m.zeta.push_back(rayleigh_damping_ratio(w, 0.0, 1.25e-3));
-  }
-  m.input = {1.1, -0.8, 0.5, 0.9, -0.4};
-  m.output = {0.7, 1.3, -0.6, 0.35, 0.8};
-  return m;
-}
+using test::paper_damped_model;
 
 // H(ν) = Σ c b (−Ω²)/(ω² − Ω² + 2jζωΩ), Ω = 2πν, for any real ν (negative gives the conjugate).
 std::complex<double> response(const ModalModel& m, double nu) {

@@ -17,6 +17,7 @@
 #include "model/mechanics/frequency_response.hpp"
 #include "model/mechanics/linear_forcing_integrator.hpp"
 #include "model/mechanics/sinusoid_step.hpp"
+#include "tests/model/mechanics/paper_damped_model.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -24,18 +25,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kRate = 48000.0;
 
-// The paper's λ = 1.25e-3 on five modes: every transient decays at ≥ 200 /s.
-ModalModel model() {
-  ModalModel m;
-  for (double f : {90.0, 240.0, 620.0, 2400.0, 7000.0}) {
-    const double w = 2.0 * kPi * f;
-    m.omega.push_back(w);
-    m.zeta.push_back(rayleigh_damping_ratio(w, 0.0, 1.25e-3));
-  }
-  m.input = {1.1, -0.8, 0.5, 0.9, -0.4};
-  m.output = {0.7, 1.3, -0.6, 0.35, 0.8};
-  return m;
-}
+ModalModel model() { return test::paper_damped_model(); }
 
 double peak(const std::vector<double>& x) {
   double p = 0.0;
