@@ -227,7 +227,7 @@ void run_ring_down(const RingDownCommandOptions& o) {
   if (!o.no_plots) {
     const auto png = plot_folder(o.plots, o.json) / (stem + "_ring_down.png");
     ensure_folder(png.parent_path());
-    plot_ring_down(trace.acceleration_m_s2, fit.fitted, trace.sample_rate_hz,
+    plot_ring_down(trace.acceleration_m_s2, "measured", fit.fitted, trace.sample_rate_hz,
                    "Ring-down: " + model.design.name + ", E " +
                        std::to_string(fit.youngs_modulus / 1e9).substr(0, 5) + " GPa",
                    png);

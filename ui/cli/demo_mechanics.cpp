@@ -107,7 +107,7 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
   mech::RingDownOptions options;
   options.reference_modulus = materials.find("VeroClear").youngs_modulus;
   const auto fit = mech::fit_ring_down(reference.modal, options, trace);
-  plot_ring_down(trace.acceleration_m_s2, fit.fitted, rate,
+  plot_ring_down(trace.acceleration_m_s2, "simulated trace, 3 % noise", fit.fitted, rate,
                  "Paper bar ring-down (simulated trace, 3 % noise) and the fitted model",
                  dir / "paper_bar_ring_down.png");
   summary << std::setprecision(4) << "  paper bar (rounded end, R5 hole): first modes "

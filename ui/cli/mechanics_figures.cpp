@@ -27,8 +27,8 @@ void plot_frequency_responses(
   report::write_line_plot(plot, png);
 }
 
-void plot_ring_down(const std::vector<double>& measured, const std::vector<double>& simulated,
-                    double sample_rate, const std::string& title,
+void plot_ring_down(const std::vector<double>& trace, const std::string& trace_label,
+                    const std::vector<double>& fitted, double sample_rate, const std::string& title,
                     const std::filesystem::path& png) {
   report::LinePlot plot;
   plot.title = title;
@@ -42,8 +42,8 @@ void plot_ring_down(const std::vector<double>& measured, const std::vector<doubl
       series.x.push_back(static_cast<double>(i) / sample_rate);
     return series;
   };
-  if (!measured.empty()) plot.series.push_back(series_of("measured", measured));
-  plot.series.push_back(series_of("simulated", simulated));
+  plot.series.push_back(series_of(trace_label, trace));
+  plot.series.push_back(series_of("fitted model", fitted));
   report::write_line_plot(plot, png);
 }
 

@@ -16,8 +16,10 @@ void plot_frequency_responses(
     const std::vector<std::pair<std::string, model::mechanics::ModalModel>>& models,
     const std::string& title, const std::filesystem::path& png);
 
-// Acceleration over time: measured (or simulated alone when `measured` is empty) and the model.
-void plot_ring_down(const std::vector<double>& measured, const std::vector<double>& simulated,
-                    double sample_rate, const std::string& title, const std::filesystem::path& png);
+// Acceleration over time: the trace that was fitted (labelled `trace_label`: "measured", or what
+// stands in for a measurement) and the fitted model.
+void plot_ring_down(const std::vector<double>& trace, const std::string& trace_label,
+                    const std::vector<double>& fitted, double sample_rate, const std::string& title,
+                    const std::filesystem::path& png);
 
 }  // namespace nibrig::ui::cli
