@@ -121,13 +121,14 @@ TetMesh mesh_bar(const BarGeometry& bar, double mesh_size) {
   if (semicircle) {
     volume = fuse_volumes(volume, occ::addCylinder(L - w / 2, 0, -t / 2, 0, 0, t, w / 2));
   } else if (r > 0) {
-    occ::synchronize();
+    // Asked of the OpenCASCADE kernel directly: a second synchronize of the model would make
+    // Gmsh 4.8 drop (and leak) the entities of the first.
     gmsh::vectorpair end_edges;  // the two edges along z at the free end's corners
-    gmsh::model::getEntitiesInBoundingBox(L - 1e-7, -w, -t, L + 1e-7, w, t, end_edges, 1);
+    occ::getEntitiesInBoundingBox(L - 1e-7, -w, -t, L + 1e-7, w, t, end_edges, 1);
     std::vector<int> corner_edges;
     for (const auto& [dim, tag] : end_edges) {
       double xmin, ymin, zmin, xmax, ymax, zmax;
-      gmsh::model::getBoundingBox(dim, tag, xmin, ymin, zmin, xmax, ymax, zmax);
+      occ::getBoundingBox(dim, tag, xmin, ymin, zmin, xmax, ymax, zmax);
       if (zmax - zmin > t / 2) corner_edges.push_back(tag);
     }
     gmsh::vectorpair out;
