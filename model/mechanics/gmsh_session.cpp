@@ -1,12 +1,11 @@
 #include "model/mechanics/gmsh_session.hpp"
 
 #include <gmsh.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
-
-#include <spdlog/spdlog.h>
 
 #include "model/mechanics/mesh_repair.hpp"
 
@@ -66,8 +65,11 @@ void generate_quadratic_tets(double max_size, double min_size) {
   // OpenCASCADE gives every point a default size from the model's extent, which would cap the
   // element size of a small part below what the caller asked for.
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  // Resolve curved features (a 1 mm tip on a 10 mm body) without refining the whole body.
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 12);
+  // Resolve curved features (a 1 mm tip on a 10 mm body) without refining the whole body. Eight
+  // elements per circle: a quadratic edge follows a 45° arc to 0.07 % of its radius. Twelve
+  // made the bundled stylus 60 % larger and its 64 modes 2.6 times slower for no change that
+  // matters (first mode 0.02 %, 64th 0.2 %).
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 8);
   gmsh::option::setNumber("Mesh.ElementOrder", 2);
   gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
   gmsh::option::setNumber("Mesh.Optimize", 1);
@@ -157,7 +159,8 @@ TetMesh tet_mesh_from_gmsh(const std::string& default_region) {
   mesh.nodes = Eigen::Map<const Eigen::Matrix3Xd>(
       used_coords.data(), 3, static_cast<Eigen::Index>(used_coords.size() / 3));
   const std::size_t straightened = straighten_inverted_elements(mesh);
-  if (straightened > 0) spdlog::debug("straightened {} curved element(s) that Gmsh had folded", straightened);
+  if (straightened > 0)
+    spdlog::debug("straightened {} curved element(s) that Gmsh had folded", straightened);
   return mesh;
 }
 

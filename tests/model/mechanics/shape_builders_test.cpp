@@ -134,9 +134,10 @@ TEST(StylusMesh, TwoMaterialStylusHasBothRegionsWithTheirVolumes) {
       pi * R * R * s.body_length + frustum(s.taper_length, R, r) + 2 * pi * r * r * r / 3;
   // The quadratic elements put their edge nodes on the true surface; the volume they enclose (the
   // unit-density mass, integrated exactly) differs from the drawing's by the O(h³) gap between a
-  // quadratic patch and the sphere or cone (measured 3e-4 on the 2 mm tip, 3e-5 overall at 2 mm
-  // elements). A wrong shape (a missing hemisphere is 8 % of the tip region) is far outside.
-  EXPECT_NEAR(quadratic_volume(mesh, tip), tip_volume, 1e-3 * tip_volume);
+  // quadratic patch and the sphere or cone (measured 1.7e-3 on the 2 mm tip with Gmsh's eight
+  // elements per circle, 3e-5 overall at 2 mm elements). A wrong shape (a missing hemisphere is 8 %
+  // of the tip region) is far outside.
+  EXPECT_NEAR(quadratic_volume(mesh, tip), tip_volume, 4e-3 * tip_volume);
   EXPECT_NEAR(quadratic_volume(mesh), all, 2e-4 * all);
 
   const double apex = mesh.nodes.row(0).maxCoeff();
