@@ -1,0 +1,37 @@
+// Fitting a perceptual space: L-BFGS (LBFGSpp) on the objective of objective.hpp from many random
+// starts in parallel, keeping the best. One stimulus is pinned at the origin (translation);
+// rotation is fixed by the correlation term, scale by the likelihood. Reports the spread of the
+// optima.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "model/space/objective.hpp"
+
+namespace nibrig::model::space {
+
+struct FitOptions {
+  int starts = 16;
+  unsigned threads = 0;       // 0: one per core
+  unsigned seed = 1;          // start k uses seed + k: results do not depend on the thread count
+  std::size_t pinned = 0;     // the stimulus held at the origin
+  double start_spread = 1.0;  // standard deviation of the random starting coordinates
+  int max_iterations = 1000;
+};
+
+struct FitResult {
+  Eigen::MatrixXd coordinates;  // dims × stimuli
+  double objective = 0.0;
+  double negative_log_likelihood = 0.0;
+  double correlation_penalty = 0.0;      // −Σ log|r_d| (without λ)
+  std::vector<double> start_objectives;  // the optimum each start reached, ascending
+  int best_start = 0;
+  int iterations = 0;  // of the best start
+};
+
+// Throws what validate(problem) throws, and std::invalid_argument for starts < 1 or a pinned
+// stimulus out of range.
+FitResult fit_space(const SpaceProblem& problem, const FitOptions& options = {});
+
+}  // namespace nibrig::model::space

@@ -1,0 +1,130 @@
+#include "model/space/objective.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "model/space/normal_tail.hpp"
+
+namespace nibrig::model::space {
+namespace {
+
+constexpr double kCorrelationSmoothing = 1e-12;  // ε² in log √(r² + ε²)
+
+std::string triplet_name(std::size_t t) { return "triplet " + std::to_string(t); }
+
+double distance(const Eigen::MatrixXd& q, std::size_t i, std::size_t j) {
+  return (q.col(i) - q.col(j)).norm();
+}
+
+// d/dQ_i of ‖Q_i − Q_j‖: the unit vector from j to i, 0 where they coincide.
+Eigen::VectorXd unit(const Eigen::MatrixXd& q, std::size_t i, std::size_t j) {
+  Eigen::VectorXd v = q.col(i) - q.col(j);
+  const double n = v.norm();
+  return n > 0 ? Eigen::VectorXd(v / n) : Eigen::VectorXd::Zero(v.size());
+}
+
+double likelihood_part(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient) {
+  double nll = 0.0;
+  for (const auto& t : p.triplets) {
+    const double d = distance(q, t.a, t.reference) - distance(q, t.b, t.reference);
+    const double x = -p.scale * d;  // P(a) = Φ(x), P(b) = Φ(−x)
+    nll -= t.count_a * log_normal_cdf(x) + t.count_b * log_normal_cdf(-x);
+    if (!gradient) continue;
+    // ∂nll/∂d = s·[C_a·φ(x)/Φ(x) − C_b·φ(−x)/Φ(−x)]
+    const double dnll_dd =
+        p.scale * (t.count_a * normal_pdf_over_cdf(x) - t.count_b * normal_pdf_over_cdf(-x));
+    const Eigen::VectorXd ua = unit(q, t.a, t.reference), ub = unit(q, t.b, t.reference);
+    gradient->col(t.a) += dnll_dd * ua;
+    gradient->col(t.b) -= dnll_dd * ub;
+    gradient->col(t.reference) += dnll_dd * (ub - ua);
+  }
+  return nll;
+}
+
+double correlation_part(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient,
+                        double weight) {
+  double penalty = 0.0;
+  for (std::size_t d = 0; d < p.dims; ++d) {
+    const Eigen::VectorXd x = p.descriptors.col(static_cast<Eigen::Index>(d)).array() -
+                              p.descriptors.col(static_cast<Eigen::Index>(d)).mean();
+    const Eigen::VectorXd c = q.row(static_cast<Eigen::Index>(d)).transpose().array() -
+                              q.row(static_cast<Eigen::Index>(d)).mean();
+    const double nx = x.norm(), nc = c.norm();
+    if (nc == 0) {  // every stimulus at the same coordinate: r undefined, taken as 0
+      penalty -= 0.5 * std::log(kCorrelationSmoothing);
+      continue;
+    }
+    const double r = c.dot(x) / (nc * nx);
+    penalty -= 0.5 * std::log(r * r + kCorrelationSmoothing);
+    if (!gradient) continue;
+    // ∂r/∂q = x̃/(‖q̃‖‖x̃‖) − r q̃/‖q̃‖² (already zero-mean, so centring adds nothing)
+    const Eigen::VectorXd dr = x / (nc * nx) - r * c / (nc * nc);
+    gradient->row(static_cast<Eigen::Index>(d)) -=
+        weight * (r / (r * r + kCorrelationSmoothing)) * dr.transpose();
+  }
+  return penalty;
+}
+
+}  // namespace
+
+void validate(const SpaceProblem& p) {
+  if (p.dims < 1) throw std::invalid_argument("a perceptual space needs at least one dimension");
+  if (p.stimuli < p.dims + 1)
+    throw std::invalid_argument("a " + std::to_string(p.dims) + "-D space needs at least " +
+                                std::to_string(p.dims + 1) + " stimuli, found " +
+                                std::to_string(p.stimuli));
+  if (!(p.lambda >= 0) || !std::isfinite(p.lambda))
+    throw std::invalid_argument("lambda must be zero or positive");
+  if (!(p.scale > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+  for (std::size_t i = 0; i < p.triplets.size(); ++i) {
+    const auto& t = p.triplets[i];
+    if (t.reference >= p.stimuli || t.a >= p.stimuli || t.b >= p.stimuli)
+      throw std::invalid_argument(triplet_name(i) + ": stimulus index out of range (" +
+                                  std::to_string(p.stimuli) + " stimuli)");
+    if (t.reference == t.a || t.reference == t.b || t.a == t.b)
+      throw std::invalid_argument(triplet_name(i) +
+                                  ": the reference and both candidates must be different stimuli");
+    if (t.count_a < 0 || t.count_b < 0)
+      throw std::invalid_argument(triplet_name(i) + ": negative count");
+  }
+  if (p.lambda > 0 || p.descriptors.size() > 0) {
+    if (static_cast<std::size_t>(p.descriptors.rows()) != p.stimuli ||
+        static_cast<std::size_t>(p.descriptors.cols()) < p.dims)
+      throw std::invalid_argument("descriptor table is " + std::to_string(p.descriptors.rows()) +
+                                  " × " + std::to_string(p.descriptors.cols()) +
+                                  ", expected one row per stimulus (" + std::to_string(p.stimuli) +
+                                  ") and a column per dimension (" + std::to_string(p.dims) + ")");
+    for (std::size_t d = 0; d < p.dims; ++d) {
+      const auto column = p.descriptors.col(static_cast<Eigen::Index>(d));
+      if (!column.allFinite())
+        throw std::invalid_argument("descriptor " + std::to_string(d) + " is not finite");
+      if (column.maxCoeff() == column.minCoeff())
+        throw std::invalid_argument("descriptor " + std::to_string(d) +
+                                    " is constant: nothing can correlate with it");
+    }
+  }
+}
+
+double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient) {
+  if (gradient) gradient->setZero(q.rows(), q.cols());
+  double value = likelihood_part(p, q, gradient);
+  if (p.lambda > 0) value += p.lambda * correlation_part(p, q, gradient, p.lambda);
+  return value;
+}
+
+double negative_log_likelihood(const SpaceProblem& p, const Eigen::MatrixXd& q) {
+  return likelihood_part(p, q, nullptr);
+}
+
+double correlation_penalty(const SpaceProblem& p, const Eigen::MatrixXd& q) {
+  return p.descriptors.size() > 0 ? correlation_part(p, q, nullptr, 0.0) : 0.0;
+}
+
+double probability_first(const Eigen::MatrixXd& q, std::size_t reference, std::size_t a,
+                         std::size_t b, double scale) {
+  const double d = distance(q, a, reference) - distance(q, b, reference);
+  return std::exp(log_normal_cdf(-scale * d));
+}
+
+}  // namespace nibrig::model::space

@@ -1,0 +1,69 @@
+// Cost of fitting a perceptual space: the paper's study size (15 stimuli, every one of the 1365
+// triplets, a simulated observer) in 2-D with 16 starts, and the Lagunas et al. 2019 training
+// split (100 materials) in 3-D.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "model/io/triplets.hpp"
+#include "model/space/fit.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace {
+
+using namespace nibrig::model;
+
+space::SpaceProblem paper_sized_study() {
+  std::mt19937 generator(2018);
+  std::uniform_real_distribution<double> spread(-2.0, 2.0);
+  Eigen::MatrixXd truth(2, 15);
+  for (Eigen::Index i = 0; i < truth.size(); ++i) truth.data()[i] = spread(generator);
+  space::SpaceProblem p;
+  p.dims = 2;
+  p.stimuli = 15;
+  for (std::size_t r = 0; r < 15; ++r)
+    for (std::size_t a = 0; a < 15; ++a)
+      for (std::size_t b = a + 1; b < 15; ++b) {
+        if (a == r || b == r) continue;
+        std::binomial_distribution<int> observer(2, space::probability_first(truth, r, a, b));
+        io::Triplet t;
+        t.reference = r, t.a = a, t.b = b;
+        t.count_a = observer(generator);
+        t.count_b = 2 - t.count_a;
+        p.triplets.push_back(t);
+      }
+  return p;
+}
+
+void BM_FitPaperSizedStudy2D(benchmark::State& state) {
+  const space::SpaceProblem study = paper_sized_study();
+  space::FitOptions options;
+  options.starts = 16;
+  for (auto _ : state) {
+    const auto fit = space::fit_space(study, options);
+    benchmark::DoNotOptimize(fit.objective);
+  }
+  state.counters["triplets"] = static_cast<double>(study.triplets.size());
+}
+
+void BM_FitLagunas3D(benchmark::State& state) {
+  const io::TripletSet set = io::read_lagunas_json(nibrig::test::shared_data() / "lagunas2019" /
+                                                   "answers_processed_train.json");
+  space::SpaceProblem p;
+  p.dims = 3;
+  p.stimuli = set.stimuli.size();
+  p.triplets = set.triplets;
+  space::FitOptions options;
+  options.starts = 8;
+  for (auto _ : state) {
+    const auto fit = space::fit_space(p, options);
+    benchmark::DoNotOptimize(fit.objective);
+    state.counters["objective"] = fit.objective;
+  }
+  state.counters["triplets"] = static_cast<double>(p.triplets.size());
+}
+
+BENCHMARK(BM_FitPaperSizedStudy2D)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace

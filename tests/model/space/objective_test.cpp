@@ -1,0 +1,115 @@
+#include "model/space/objective.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "model/space/normal_tail.hpp"
+
+namespace nibrig::model::space {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(NormalTail, LogCdfAgreesWithErfcAndItsAsymptote) {
+  // Where erfc is still representable both forms hold; 1e-12 relative is the round-off of erfc.
+  for (double x : {3.0, 0.0, -1.0, -4.99, -5.01, -6.0, -10.0, -20.0, -30.0})
+    EXPECT_NEAR(log_normal_cdf(x), std::log(0.5 * std::erfc(-x / std::sqrt(2.0))),
+                1e-12 * std::abs(std::log(0.5 * std::erfc(-x / std::sqrt(2.0)))))
+        << x;
+  // Far beyond (erfc underflows at −38): log Φ(x) = −x²/2 − log(−x) − log √(2π) + log(1 − 1/x² +
+  // 3/x⁴ − …).
+  for (double x : {-50.0, -1e3}) {
+    const double series = -0.5 * x * x - std::log(-x) - 0.5 * std::log(2 * M_PI) +
+                          std::log(1 - 1 / (x * x) + 3 / std::pow(x, 4) - 15 / std::pow(x, 6));
+    EXPECT_NEAR(log_normal_cdf(x), series, 1e-12 * std::abs(series)) << x;
+  }
+}
+
+TEST(NormalTail, PdfOverCdfIsTheDerivativeOfLogCdf) {
+  for (double x : {2.0, 0.3, -3.0, -4.9999, -5.0001, -8.0, -40.0, -500.0}) {
+    const double h = 1e-5 * std::max(1.0, std::abs(x));
+    const double numeric = (log_normal_cdf(x + h) - log_normal_cdf(x - h)) / (2 * h);
+    // Central differences: error O(h²·f''') ≈ 1e-9 relative at these h.
+    EXPECT_NEAR(normal_pdf_over_cdf(x), numeric, 1e-7 * std::max(1.0, std::abs(numeric))) << x;
+  }
+}
+
+SpaceProblem random_problem(std::size_t stimuli, std::size_t dims, double lambda, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, stimuli - 1);
+  std::uniform_int_distribution<int> count(0, 6);
+  SpaceProblem p;
+  p.stimuli = stimuli;
+  p.dims = dims;
+  p.lambda = lambda;
+  while (p.triplets.size() < 60) {
+    io::Triplet t;
+    t.reference = pick(generator), t.a = pick(generator), t.b = pick(generator);
+    if (t.reference == t.a || t.reference == t.b || t.a == t.b) continue;
+    t.count_a = count(generator), t.count_b = count(generator);
+    p.triplets.push_back(t);
+  }
+  std::normal_distribution<double> normal;
+  p.descriptors = Eigen::MatrixXd(stimuli, dims);
+  for (Eigen::Index i = 0; i < p.descriptors.size(); ++i)
+    p.descriptors.data()[i] = normal(generator);
+  return p;
+}
+
+TEST(SpaceObjective, AnalyticGradientMatchesFiniteDifferences) {
+  for (double lambda : {0.0, 3.0}) {
+    const SpaceProblem p = random_problem(8, 2, lambda, 5);
+    std::mt19937 generator(9);
+    std::normal_distribution<double> normal;
+    Eigen::MatrixXd q(2, 8);
+    for (Eigen::Index i = 0; i < q.size(); ++i) q.data()[i] = normal(generator);
+    Eigen::MatrixXd gradient;
+    objective(p, q, &gradient);
+    for (Eigen::Index i = 0; i < q.size(); ++i) {
+      Eigen::MatrixXd plus = q, minus = q;
+      const double h = 1e-6;
+      plus.data()[i] += h, minus.data()[i] -= h;
+      const double numeric = (objective(p, plus, nullptr) - objective(p, minus, nullptr)) / (2 * h);
+      // Central differences on a smooth function of O(100): truncation ~h²·f''' and round-off
+      // ~1e-16·f/h ≈ 1e-8; 1e-6 relative leaves room for both and catches any missed term.
+      EXPECT_NEAR(gradient.data()[i], numeric, 1e-6 * std::max(1.0, std::abs(numeric)))
+          << "lambda " << lambda << ", coordinate " << i;
+    }
+  }
+}
+
+TEST(SpaceObjective, OneUnitOfDistanceIsSeventyFivePercent) {
+  Eigen::MatrixXd q(1, 3);
+  q << 0.0, 1.0, 2.0;  // a at distance 1 from the reference, b at distance 2
+  EXPECT_NEAR(probability_first(q, 0, 1, 2), 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-15);
+  EXPECT_NEAR(probability_first(q, 0, 1, 2), 0.7475, 1e-4);
+}
+
+TEST(SpaceObjective, BadProblemsNameWhatIsWrong) {
+  SpaceProblem p = random_problem(6, 2, 1.0, 1);
+  p.triplets[3].a = 9;
+  EXPECT_THAT([&] { validate(p); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                        HasSubstr("triplet 3: stimulus index out of range")));
+  p = random_problem(6, 2, 1.0, 1);
+  p.triplets[2].a = p.triplets[2].reference;
+  EXPECT_THAT([&] { validate(p); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                        HasSubstr("triplet 2: the reference and both candidates")));
+  p = random_problem(6, 2, 1.0, 1);
+  p.triplets[0].count_b = -1;
+  EXPECT_THAT([&] { validate(p); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                        HasSubstr("triplet 0: negative count")));
+  p = random_problem(6, 2, 1.0, 1);
+  p.descriptors.conservativeResize(5, 2);
+  EXPECT_THAT([&] { validate(p); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("one row per stimulus")));
+  p = random_problem(6, 2, 1.0, 1);
+  p.dims = 6;
+  EXPECT_THAT([&] { validate(p); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                        HasSubstr("needs at least 7 stimuli")));
+}
+
+}  // namespace
+}  // namespace nibrig::model::space
