@@ -28,7 +28,8 @@ bool storable(const std::string& text) { return text.find_first_of(",\n\r") == s
 }  // namespace
 
 std::optional<std::string> triplet_problem(const Triplet& triplet,
-                                           const std::vector<std::string>& stimuli) {
+                                           const std::vector<std::string>& stimuli,
+                                           Responses responses) {
   for (std::size_t index : {triplet.reference, triplet.a, triplet.b}) {
     if (index >= stimuli.size()) {
       return "index " + std::to_string(index) + " out of range (" + std::to_string(stimuli.size()) +
@@ -44,7 +45,7 @@ std::optional<std::string> triplet_problem(const Triplet& triplet,
     return "expected counts >= 0, found " + std::to_string(triplet.count_a) + " and " +
            std::to_string(triplet.count_b);
   }
-  if (triplet.count_a == 0 && triplet.count_b == 0) {
+  if (responses == Responses::required && triplet.count_a == 0 && triplet.count_b == 0) {
     return "expected at least one response, found counts 0 and 0";
   }
   return std::nullopt;
@@ -59,6 +60,10 @@ std::size_t response_count(const TripletSet& set) {
 }
 
 TripletSet read_triplet_csv(const std::filesystem::path& file) {
+  return read_triplet_csv(file, Responses::required);
+}
+
+TripletSet read_triplet_csv(const std::filesystem::path& file, Responses responses) {
   CsvReader csv(file, kExpectedHeader);
   const std::size_t columns[] = {csv.header().column("reference"), csv.header().column("a"),
                                  csv.header().column("b")};
@@ -103,7 +108,7 @@ TripletSet read_triplet_csv(const std::filesystem::path& file) {
     triplet.count_a = static_cast<int>(count_a);
     triplet.count_b = static_cast<int>(count_b);
     if (c_observer) triplet.observer = std::string(fields[*c_observer]);
-    if (auto problem = triplet_problem(triplet, set.stimuli)) {
+    if (auto problem = triplet_problem(triplet, set.stimuli, responses)) {
       throw FormatError(file, line_place(line), *problem);
     }
     set.triplets.push_back(std::move(triplet));
@@ -136,8 +141,10 @@ void write_triplet_csv(const std::filesystem::path& file, const TripletSet& set)
   write_file_atomically(file, text);
 }
 
-TripletSet read_triplets(const std::filesystem::path& file) {
-  if (file.extension() == ".json") return read_lagunas_json(file);
+namespace {
+
+TripletSet read_any_triplets(const std::filesystem::path& file, Responses responses) {
+  if (file.extension() == ".json") return read_lagunas_json(file, responses);
   std::string first;
   {
     TextLineReader lines(file);
@@ -148,16 +155,26 @@ TripletSet read_triplets(const std::filesystem::path& file) {
     }
   }
   const std::size_t start = first.find_first_not_of(" \t\xEF\xBB\xBF");
-  if (start != std::string::npos && first[start] == '{') return read_lagunas_json(file);
+  if (start != std::string::npos && first[start] == '{') return read_lagunas_json(file, responses);
   const CsvHeader header(first, file, 1, kExpectedHeader);
   if (header.find("Center") && header.find("Answer")) return read_salmon_csv(file);
-  if (header.find("reference")) return read_triplet_csv(file);
+  if (header.find("reference")) return read_triplet_csv(file, responses);
   throw FormatError(
       file, line_place(1),
       "unrecognised triplet file: expected a header " + std::string(kExpectedHeader) +
           " (nibrig), one with Participant.ID,Center,Left,Right,Answer (Salmon), or a "
           "JSON object with answers and agreement (Lagunas et al.), found " +
           in_quotes(first));
+}
+
+}  // namespace
+
+TripletSet read_triplets(const std::filesystem::path& file) {
+  return read_any_triplets(file, Responses::required);
+}
+
+TripletSet read_triplet_queries(const std::filesystem::path& file) {
+  return read_any_triplets(file, Responses::optional);
 }
 
 }  // namespace nibrig::model::io

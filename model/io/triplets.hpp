@@ -49,4 +49,8 @@ TripletSet read_salmon_csv(const std::filesystem::path& file);
 // Answer is Salmon's, one with reference,a,b is ours.
 TripletSet read_triplets(const std::filesystem::path& file);
 
+// The same formats read as triplets to predict (`nibrig space predict`): counts are not used, so a
+// triplet with no response (both counts 0) is accepted; everything else is checked as above.
+TripletSet read_triplet_queries(const std::filesystem::path& file);
+
 }  // namespace nibrig::model::io

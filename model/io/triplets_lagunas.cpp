@@ -46,6 +46,10 @@ std::vector<std::string> read_names(const std::filesystem::path& file) {
 }  // namespace
 
 TripletSet read_lagunas_json(const std::filesystem::path& file) {
+  return read_lagunas_json(file, Responses::required);
+}
+
+TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses) {
   using namespace json_fields;
   const nlohmann::json json = parse_file(file);
   const nlohmann::json& answers = as_array(member(json, "answers", file, ""), file, "answers");
@@ -103,7 +107,7 @@ TripletSet read_lagunas_json(const std::filesystem::path& file) {
         static_cast<int>(as_integer(counts[0], file, element_path(agreement_path, 0), 0, INT_MAX));
     triplet.count_b =
         static_cast<int>(as_integer(counts[1], file, element_path(agreement_path, 1), 0, INT_MAX));
-    if (triplet.count_a == 0 && triplet.count_b == 0) {
+    if (responses == Responses::required && triplet.count_a == 0 && triplet.count_b == 0) {
       throw FormatError(file, place(agreement_path),
                         "expected at least one response, found [0, 0]");
     }
@@ -113,7 +117,7 @@ TripletSet read_lagunas_json(const std::filesystem::path& file) {
     for (long long k = 0; k <= largest; ++k) set.stimuli.push_back(std::to_string(k));
   }
   for (std::size_t i = 0; i < set.triplets.size(); ++i) {
-    if (auto problem = triplet_problem(set.triplets[i], set.stimuli)) {
+    if (auto problem = triplet_problem(set.triplets[i], set.stimuli, responses)) {
       throw FormatError(file, place(element_path("answers", i)), *problem);
     }
   }

@@ -70,7 +70,7 @@ void run_fit(const FitCommandOptions& o, const GlobalOptions& global) {
 
 void run_predict(const PredictCommandOptions& o) {
   const space::SpaceFile s = space::read_space_file(o.space_file);
-  const model::io::TripletSet queries = model::io::read_triplets(o.queries);
+  const model::io::TripletSet queries = model::io::read_triplet_queries(o.queries);
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < s.stimuli.size(); ++i) index[s.stimuli[i]] = i;
   auto find = [&](const std::string& name) {

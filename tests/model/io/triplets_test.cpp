@@ -75,6 +75,22 @@ TEST(Triplets, DispatchByContent) {
       {"other.csv", "line 1", "unrecognised triplet file", "reference,a,b,count_a,count_b"});
 }
 
+TEST(Triplets, QueriesNeedNoResponsesJudgmentsDo) {
+  const auto dir = test::scratch_dir("triplet_queries");
+  test::write_text(dir / "q.csv", "reference,a,b,count_a,count_b\nx,y,z,0,0\ny,z,x,2,1\n");
+  const TripletSet queries = read_triplet_queries(dir / "q.csv");
+  ASSERT_EQ(queries.triplets.size(), 2u);
+  EXPECT_EQ(queries.stimuli[queries.triplets[0].reference], "x");
+  expect_message_names(format_error_of([&] { read_triplets(dir / "q.csv"); }),
+                       {"q.csv", "line 2", "at least one response"});
+  test::write_text(dir / "q.json", R"({"answers": [[0, 1, 2]], "agreement": [[0, 0]]})");
+  EXPECT_EQ(read_triplet_queries(dir / "q.json").triplets.size(), 1u);
+  // Everything but the counts is still checked.
+  test::write_text(dir / "self.csv", "reference,a,b,count_a,count_b\nx,x,z,0,0\n");
+  expect_message_names(format_error_of([&] { read_triplet_queries(dir / "self.csv"); }),
+                       {"self.csv", "line 2", "three different stimuli"});
+}
+
 TEST(Triplets, CsvRoundTrip) {
   const auto dir = test::scratch_dir("triplets_round_trip");
   TripletSet set;

@@ -80,6 +80,17 @@ TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
                 model::space::probability_first(space.coordinates, t.reference, t.a, t.b), 1e-9);
   }
   EXPECT_FALSE(std::getline(csv, line));
+
+  // Queries need no responses: a list of triplets with both counts 0 is predicted too.
+  std::ofstream(dir / "queries.csv")
+      << "reference,a,b,count_a,count_b\ns0,s1,s5,0,0\ns5,s4,s0,0,0\n";
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(
+      run_cli({"space", "predict", (dir / "space.json").string(), (dir / "queries.csv").string()}),
+      0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 3) << out;
+  EXPECT_NE(out.find("s0,s1,s5,"), std::string::npos) << out;
 }
 
 TEST(SpaceCli, UnknownStimulusAndUnsupportedLambdaFailInOneLine) {
@@ -90,7 +101,7 @@ TEST(SpaceCli, UnknownStimulusAndUnsupportedLambdaFailInOneLine) {
                      (dir / "space.json").string()}),
             0);
   testing::internal::GetCapturedStdout();
-  std::ofstream(dir / "other.csv") << "reference,a,b,count_a,count_b\ns0,s1,zebra,1,0\n";
+  std::ofstream(dir / "other.csv") << "reference,a,b,count_a,count_b\ns0,s1,zebra,0,0\n";
   testing::internal::CaptureStderr();
   EXPECT_NE(
       run_cli({"space", "predict", (dir / "space.json").string(), (dir / "other.csv").string()}),
