@@ -3,11 +3,13 @@
 #include <LBFGS.h>
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
-#include <thread>
+#include <string>
+
+#include "model/space/parallel_for.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -48,16 +50,29 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
   std::normal_distribution<double> normal(0.0, options.start_spread);
   Eigen::MatrixXd q0(static_cast<Eigen::Index>(problem.dims),
                      static_cast<Eigen::Index>(problem.stimuli));
-  for (Eigen::Index i = 0; i < q0.size(); ++i) q0.data()[i] = normal(generator);
-  q0.col(static_cast<Eigen::Index>(options.pinned)).setZero();
+  if (start == 0 && options.initial.size() > 0) {
+    q0 = options.initial.colwise() - options.initial.col(static_cast<Eigen::Index>(options.pinned));
+  } else {
+    for (Eigen::Index i = 0; i < q0.size(); ++i) q0.data()[i] = normal(generator);
+    q0.col(static_cast<Eigen::Index>(options.pinned)).setZero();
+  }
   Eigen::VectorXd x = free_part(q0, options.pinned);
 
+  // The best finite point any evaluation saw: LBFGSpp's line search evaluates trial points in
+  // place and, when it gives up (at a kink where stimuli coincide, at round-off level near the
+  // optimum, or after a trial step overflowed to a non-finite point), leaves x at its last trial.
+  Eigen::VectorXd best_x = x;
+  double best_f = std::numeric_limits<double>::infinity();
   auto function = [&](const Eigen::VectorXd& v, Eigen::VectorXd& grad) {
     const Eigen::MatrixXd q = to_coordinates(v, problem.dims, problem.stimuli, options.pinned);
     Eigen::MatrixXd g;
     const double f = objective(problem, q, &g);
     grad = free_part(g, options.pinned);
-    return f;
+    if (std::isfinite(f) && f < best_f && grad.allFinite()) {
+      best_f = f;
+      best_x = v;
+    }
+    return std::isfinite(f) ? f : std::numeric_limits<double>::infinity();
   };
   LBFGSpp::LBFGSParam<double> param;
   param.epsilon = 1e-6;  // relative gradient norm: far below what a count of judgments resolves
@@ -68,11 +83,12 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
   try {
     result.iterations = solver.minimize(function, x, fx);
   } catch (const std::exception&) {
-    // LBFGSpp throws when its line search cannot improve further (at a kink where stimuli coincide,
-    // or at round-off level near the optimum): x then holds its last accepted point, which is kept.
-    Eigen::VectorXd grad(x.size());
-    fx = function(x, grad);
+    // Kept: the best point evaluated so far (above).
   }
+  if (!std::isfinite(best_f))
+    throw std::runtime_error("the objective is not finite at start " + std::to_string(start));
+  x = best_x;
+  fx = best_f;
   result.coordinates = to_coordinates(x, problem.dims, problem.stimuli, options.pinned);
   result.objective = fx;
   return result;
@@ -85,28 +101,18 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options) {
   if (options.starts < 1) throw std::invalid_argument("fit needs at least one start");
   if (options.pinned >= problem.stimuli)
     throw std::invalid_argument("the pinned stimulus is out of range");
+  if (options.initial.size() > 0 &&
+      (options.initial.rows() != static_cast<Eigen::Index>(problem.dims) ||
+       options.initial.cols() != static_cast<Eigen::Index>(problem.stimuli) ||
+       !options.initial.allFinite()))
+    throw std::invalid_argument("the initial space must be finite, " +
+                                std::to_string(problem.dims) + " × " +
+                                std::to_string(problem.stimuli));
 
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
-  std::atomic<int> next{0};
-  std::vector<std::exception_ptr> failures(results.size());
-  auto worker = [&] {
-    for (int s = next++; s < options.starts; s = next++) {
-      try {
-        results[static_cast<std::size_t>(s)] = run_start(problem, options, s);
-      } catch (...) {  // rethrown on the calling thread once every worker has joined
-        failures[static_cast<std::size_t>(s)] = std::current_exception();
-      }
-    }
-  };
-  const unsigned threads = std::min<unsigned>(
-      options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency()),
-      static_cast<unsigned>(options.starts));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+  parallel_for(results.size(), options.threads, [&](std::size_t s) {
+    results[s] = run_start(problem, options, static_cast<int>(s));
+  });
 
   FitResult fit;
   for (std::size_t s = 0; s < results.size(); ++s) {

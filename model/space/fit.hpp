@@ -18,6 +18,9 @@ struct FitOptions {
   std::size_t pinned = 0;     // the stimulus held at the origin
   double start_spread = 1.0;  // standard deviation of the random starting coordinates
   int max_iterations = 1000;
+  // When not empty (dims × stimuli), start 0 begins here instead of at random, shifted so that the
+  // pinned stimulus sits at the origin: a refit on resampled data starts at the reference space.
+  Eigen::MatrixXd initial;
 };
 
 struct FitResult {
@@ -30,8 +33,8 @@ struct FitResult {
   int iterations = 0;  // of the best start
 };
 
-// Throws what validate(problem) throws, and std::invalid_argument for starts < 1 or a pinned
-// stimulus out of range.
+// Throws what validate(problem) throws, and std::invalid_argument for starts < 1, a pinned
+// stimulus out of range or an initial space of the wrong shape.
 FitResult fit_space(const SpaceProblem& problem, const FitOptions& options = {});
 
 }  // namespace nibrig::model::space
