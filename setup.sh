@@ -14,7 +14,7 @@ jobs=${NIBRIG_JOBS:-$(nproc)}
 packages=(
   build-essential cmake pkg-config ninja-build ccache
   libeigen3-dev libspectra-dev liblbfgspp-dev libgmsh-dev libfftw3-dev libsndfile1-dev zlib1g-dev
-  nlohmann-json3-dev libcli11-dev libspdlog-dev
+  nlohmann-json3-dev libcli11-dev libspdlog-dev libboost-dev
   libplplot-dev plplot-driver-cairo
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
