@@ -1,0 +1,44 @@
+// Simulated judgments for the space tests: every triplet of a known space judged a number of times
+// by a Thurstonian observer, so that a fit, a cross-validation or a bootstrap can be checked against
+// the truth.
+#pragma once
+
+#include <Eigen/Core>
+#include <random>
+
+#include "model/space/objective.hpp"
+
+namespace nibrig::model::space::testing {
+
+// Uniform in ±half_width per coordinate: ±2 units gives preferences of 75-95 % between typical
+// triplets, the informative range of Φ(−2/3·d).
+inline Eigen::MatrixXd random_truth(Eigen::Index dims, Eigen::Index stimuli, unsigned seed,
+                                    double half_width = 2.0) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> spread(-half_width, half_width);
+  Eigen::MatrixXd truth(dims, stimuli);
+  for (Eigen::Index i = 0; i < truth.size(); ++i) truth.data()[i] = spread(generator);
+  return truth;
+}
+
+inline SpaceProblem every_triplet_judged(const Eigen::MatrixXd& truth, int judgments,
+                                         unsigned seed) {
+  std::mt19937 generator(seed);
+  SpaceProblem p;
+  p.dims = static_cast<std::size_t>(truth.rows());
+  p.stimuli = static_cast<std::size_t>(truth.cols());
+  for (std::size_t r = 0; r < p.stimuli; ++r)
+    for (std::size_t a = 0; a < p.stimuli; ++a)
+      for (std::size_t b = a + 1; b < p.stimuli; ++b) {
+        if (a == r || b == r) continue;
+        std::binomial_distribution<int> observer(judgments, probability_first(truth, r, a, b));
+        io::Triplet t;
+        t.reference = r, t.a = a, t.b = b;
+        t.count_a = observer(generator);
+        t.count_b = judgments - t.count_a;
+        p.triplets.push_back(t);
+      }
+  return p;
+}
+
+}  // namespace nibrig::model::space::testing
