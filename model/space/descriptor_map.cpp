@@ -1,0 +1,120 @@
+#include "model/space/descriptor_map.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <cmath>
+#include <stdexcept>
+
+#include "model/space/objective.hpp"
+
+namespace nibrig::model::space {
+namespace {
+
+Eigen::VectorXd standardised_row(const DescriptorMap& map, const Eigen::VectorXd& x) {
+  Eigen::VectorXd z(x.size() + 1);
+  z(0) = 1.0;
+  z.tail(x.size()) =
+      (x - map.descriptor_mean).array() / map.descriptor_scale.array();
+  return z;
+}
+
+// A draw from N(mean, covariance); a zero covariance gives the mean.
+Eigen::VectorXd draw(const Placement& p, const Eigen::MatrixXd& factor,
+                     std::normal_distribution<double>& normal, std::mt19937_64& generator) {
+  Eigen::VectorXd u(p.mean.size());
+  for (Eigen::Index i = 0; i < u.size(); ++i) u(i) = normal(generator);
+  return p.mean + factor * u;
+}
+
+// A factor F with F·Fᵀ = covariance; semi-definite covariances (a judged stimulus: zero) are fine.
+Eigen::MatrixXd square_root(const Eigen::MatrixXd& covariance) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
+  return eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+}
+
+}  // namespace
+
+DescriptorMap fit_descriptor_map(const Eigen::MatrixXd& coordinates,
+                                 const Eigen::MatrixXd& descriptors,
+                                 const std::vector<std::string>& names) {
+  const Eigen::Index n = coordinates.cols(), p = descriptors.cols(), dims = coordinates.rows();
+  if (descriptors.rows() != n)
+    throw std::invalid_argument("the descriptor table has " + std::to_string(descriptors.rows()) +
+                                " rows for " + std::to_string(n) + " stimuli");
+  if (static_cast<Eigen::Index>(names.size()) != p)
+    throw std::invalid_argument(std::to_string(names.size()) + " descriptor names for " +
+                                std::to_string(p) + " columns");
+  if (p == 0) throw std::invalid_argument("a descriptor map needs at least one descriptor");
+  if (n <= p + 1)
+    throw std::invalid_argument("a descriptor map of " + std::to_string(p) +
+                                " descriptors needs more than " + std::to_string(p + 1) +
+                                " stimuli, got " + std::to_string(n));
+  if (!coordinates.allFinite() || !descriptors.allFinite())
+    throw std::invalid_argument("the descriptor map's inputs must be finite");
+  DescriptorMap map;
+  map.descriptor_names = names;
+  map.samples = static_cast<std::size_t>(n);
+  map.descriptor_mean = descriptors.colwise().mean().transpose();
+  map.descriptor_scale.resize(p);
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const double sd = std::sqrt((descriptors.col(j).array() - map.descriptor_mean(j)).square().sum() /
+                                static_cast<double>(n - 1));
+    if (!(sd > 0.0))
+      throw std::invalid_argument("descriptor '" + names[static_cast<std::size_t>(j)] +
+                                  "' is the same for every stimulus: it cannot place anything");
+    map.descriptor_scale(j) = sd;
+  }
+  Eigen::MatrixXd z(n, p + 1);
+  for (Eigen::Index i = 0; i < n; ++i)
+    z.row(i) = standardised_row(map, descriptors.row(i).transpose()).transpose();
+  const Eigen::MatrixXd normal_matrix = z.transpose() * z;
+  map.design_inverse = normal_matrix.inverse();
+  map.coefficients = (map.design_inverse * z.transpose() * coordinates.transpose()).transpose();
+  const Eigen::MatrixXd residual = coordinates - map.coefficients * z.transpose();  // dims × n
+  map.residual_covariance = residual * residual.transpose() / static_cast<double>(n - p - 1);
+  for (Eigen::Index d = 0; d < dims; ++d) {
+    const double total = (coordinates.row(d).array() - coordinates.row(d).mean()).square().sum();
+    map.r_squared.push_back(total > 0 ? 1.0 - residual.row(d).squaredNorm() / total : 0.0);
+  }
+  return map;
+}
+
+Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors) {
+  if (descriptors.size() != map.descriptor_mean.size())
+    throw std::invalid_argument("expected " + std::to_string(map.descriptor_mean.size()) +
+                                " descriptors, got " + std::to_string(descriptors.size()));
+  for (Eigen::Index j = 0; j < descriptors.size(); ++j)
+    if (!std::isfinite(descriptors(j)))
+      throw std::invalid_argument("descriptor '" + map.descriptor_names[static_cast<std::size_t>(j)] +
+                                  "' is not finite");
+  const Eigen::VectorXd z = standardised_row(map, descriptors);
+  Placement p;
+  p.mean = map.coefficients * z;
+  p.covariance = map.residual_covariance * (1.0 + z.dot(map.design_inverse * z));
+  return p;
+}
+
+UncertainProbability uncertain_probability_first(const Placement& reference, const Placement& a,
+                                                 const Placement& b, double scale, int samples,
+                                                 std::mt19937_64& generator) {
+  if (samples < 2) throw std::invalid_argument("an uncertain probability needs at least 2 samples");
+  const Eigen::MatrixXd lr = square_root(reference.covariance), la = square_root(a.covariance),
+                        lb = square_root(b.covariance);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::MatrixXd q(reference.mean.size(), 3);
+  double sum = 0.0, sum_sq = 0.0;
+  for (int k = 0; k < samples; ++k) {
+    q.col(0) = draw(reference, lr, normal, generator);
+    q.col(1) = draw(a, la, normal, generator);
+    q.col(2) = draw(b, lb, normal, generator);
+    const double p = probability_first(q, 0, 1, 2, scale);
+    sum += p;
+    sum_sq += p * p;
+  }
+  UncertainProbability u;
+  u.mean = sum / samples;
+  u.sd = std::sqrt(std::max(0.0, (sum_sq - sum * sum / samples) / (samples - 1)));
+  return u;
+}
+
+}  // namespace nibrig::model::space

@@ -1,0 +1,53 @@
+// Placing a tool in the perceptual space from its physical descriptors alone (Sec. 4.4, 6.1): the
+// axes were fitted to correlate with the descriptors, so a linear map from descriptors to
+// coordinates, learnt by least squares over the judged stimuli, places a new tool without a new
+// experiment. Its uncertainty is the regression's prediction covariance.
+#pragma once
+
+#include <Eigen/Core>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace nibrig::model::space {
+
+// coordinates ≈ B · [1, z]ᵀ with z the standardised descriptors (z = (x − mean) / scale).
+struct DescriptorMap {
+  std::vector<std::string> descriptor_names;
+  Eigen::VectorXd descriptor_mean, descriptor_scale;  // per descriptor
+  Eigen::MatrixXd coefficients;         // dims × (1 + descriptors)
+  Eigen::MatrixXd design_inverse;       // (ZᵀZ)⁻¹ of the design matrix Z = [1, z]
+  Eigen::MatrixXd residual_covariance;  // dims × dims, unbiased (n − 1 − descriptors degrees)
+  std::vector<double> r_squared;        // per axis
+  std::size_t samples = 0;
+};
+
+// coordinates: dims × n stimuli; descriptors: n × p. Throws std::invalid_argument for rows that do
+// not match the stimuli, names that do not match the columns, non-finite values, a constant
+// descriptor, or n ≤ p + 1 (no residual degree of freedom to estimate the uncertainty).
+DescriptorMap fit_descriptor_map(const Eigen::MatrixXd& coordinates,
+                                 const Eigen::MatrixXd& descriptors,
+                                 const std::vector<std::string>& names);
+
+// A position with its uncertainty: mean and covariance (dims × dims) of where the tool lies.
+struct Placement {
+  Eigen::VectorXd mean;
+  Eigen::MatrixXd covariance;
+};
+
+// The prediction covariance Σ·(1 + z₀ᵀ(ZᵀZ)⁻¹z₀) holds both the scatter of judged stimuli about
+// the map and the uncertainty of the map itself (larger far from the judged descriptors). Throws
+// std::invalid_argument naming the descriptor for a wrong length or a non-finite value.
+Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors);
+
+// P(a chosen as closer to the reference than b) when any of the three is uncertain: mean and
+// standard deviation over `samples` draws of the uncertain positions (a judged stimulus has a zero
+// covariance). Deterministic for a given generator state.
+struct UncertainProbability {
+  double mean = 0.0, sd = 0.0;
+};
+UncertainProbability uncertain_probability_first(const Placement& reference, const Placement& a,
+                                                 const Placement& b, double scale, int samples,
+                                                 std::mt19937_64& generator);
+
+}  // namespace nibrig::model::space

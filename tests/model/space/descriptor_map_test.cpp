@@ -1,0 +1,91 @@
+#include "model/space/descriptor_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <random>
+
+namespace nibrig::model::space {
+namespace {
+
+// n stimuli with 2 descriptors and a 2-D space that is a linear function of them plus noise.
+struct LinearWorld {
+  Eigen::MatrixXd descriptors, coordinates, map;
+  Eigen::VectorXd offset;
+};
+
+LinearWorld linear_world(Eigen::Index n, double noise, std::mt19937_64& generator) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  LinearWorld w;
+  w.map = Eigen::Matrix2d{{2.0, 0.5}, {-1.0, 3.0}};
+  w.offset = Eigen::Vector2d(0.3, -0.7);
+  w.descriptors.resize(n, 2);
+  w.coordinates.resize(2, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    w.descriptors.row(i) << normal(generator), 0.1 * normal(generator) + 1.0;
+    w.coordinates.col(i) = w.offset + w.map * w.descriptors.row(i).transpose() +
+                           noise * Eigen::Vector2d(normal(generator), normal(generator));
+  }
+  return w;
+}
+
+TEST(SpaceDescriptorMap, ExactlyLinearDataIsReproduced) {
+  std::mt19937_64 generator(1);
+  const LinearWorld w = linear_world(12, 0.0, generator);
+  const DescriptorMap m = fit_descriptor_map(w.coordinates, w.descriptors, {"x", "y"});
+  const Eigen::Vector2d x(0.4, 1.2);
+  const Placement p = place_from_descriptors(m, x);
+  EXPECT_TRUE(p.mean.isApprox(w.offset + w.map * x, 1e-10));
+  EXPECT_LT(p.covariance.norm(), 1e-20);  // no residual: no uncertainty
+  EXPECT_NEAR(m.r_squared[0], 1.0, 1e-12);
+}
+
+TEST(SpaceDescriptorMap, PredictionRegionsCoverNewToolsAtTheirLevel) {
+  // Monte Carlo against the regression's own theory: a new tool drawn from the same world falls
+  // inside the Mahalanobis radius √χ²₂(0.68) = 1.510 of its placement about 68 % of the time (a
+  // little less: the covariance is estimated from 15 stimuli, so the exact law is Hotelling's T²);
+  // 2000 worlds give a sampling error of ±1 point.
+  std::mt19937_64 generator(3);
+  int inside = 0;
+  const int worlds = 2000;
+  for (int k = 0; k < worlds; ++k) {
+    const LinearWorld w = linear_world(16, 0.2, generator);
+    const DescriptorMap m = fit_descriptor_map(w.coordinates.leftCols(15),
+                                               w.descriptors.topRows(15), {"x", "y"});
+    const Placement p = place_from_descriptors(m, w.descriptors.row(15).transpose());
+    const Eigen::Vector2d d = w.coordinates.col(15) - p.mean;
+    inside += d.dot(p.covariance.inverse() * d) <= 1.510 * 1.510;
+  }
+  const double coverage = static_cast<double>(inside) / worlds;
+  EXPECT_GT(coverage, 0.60);  // T² with 12 residual degrees: ≈ 0.63-0.65
+  EXPECT_LT(coverage, 0.70);
+}
+
+TEST(SpaceDescriptorMap, UncertainProbabilityIsExactForCertainPositions) {
+  Placement r{Eigen::Vector2d(0, 0), Eigen::Matrix2d::Zero()};
+  Placement a{Eigen::Vector2d(1, 0), Eigen::Matrix2d::Zero()};
+  Placement b{Eigen::Vector2d(0, 2), Eigen::Matrix2d::Zero()};
+  std::mt19937_64 generator(1);
+  const UncertainProbability u = uncertain_probability_first(r, a, b, 2.0 / 3.0, 50, generator);
+  EXPECT_NEAR(u.mean, 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-12);  // Φ(2/3)
+  EXPECT_NEAR(u.sd, 0.0, 1e-12);
+  b.covariance = Eigen::Matrix2d::Identity();
+  EXPECT_GT(uncertain_probability_first(r, a, b, 2.0 / 3.0, 200, generator).sd, 0.01);
+}
+
+TEST(SpaceDescriptorMap, RejectsTablesThatDoNotMatch) {
+  const Eigen::MatrixXd q = Eigen::MatrixXd::Random(2, 5);
+  EXPECT_THROW(fit_descriptor_map(q, Eigen::MatrixXd::Random(4, 2), {"x", "y"}),
+               std::invalid_argument);  // rows ≠ stimuli
+  EXPECT_THROW(fit_descriptor_map(q, Eigen::MatrixXd::Random(5, 2), {"x"}), std::invalid_argument);
+  EXPECT_THROW(fit_descriptor_map(q.leftCols(3), Eigen::MatrixXd::Random(3, 2), {"x", "y"}),
+               std::invalid_argument);  // no residual degree of freedom
+  Eigen::MatrixXd constant = Eigen::MatrixXd::Random(5, 2);
+  constant.col(1).setConstant(1.0);
+  EXPECT_THROW(fit_descriptor_map(q, constant, {"x", "y"}), std::invalid_argument);
+  const DescriptorMap m = fit_descriptor_map(q, Eigen::MatrixXd::Random(5, 2), {"x", "y"});
+  EXPECT_THROW(place_from_descriptors(m, Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace nibrig::model::space
