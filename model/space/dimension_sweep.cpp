@@ -1,0 +1,38 @@
+#include "model/space/dimension_sweep.hpp"
+
+#include <stdexcept>
+
+namespace nibrig::model::space {
+
+std::vector<SweepPoint> sweep_dimensions(
+    const SpaceProblem& base, const std::function<Eigen::MatrixXd(std::size_t)>& descriptors,
+    const SweepOptions& options) {
+  if (options.dims.empty() || options.lambdas.empty())
+    throw std::invalid_argument("the sweep needs at least one dimension and one λ");
+  std::vector<SweepPoint> points;
+  for (std::size_t dims : options.dims) {
+    for (double lambda : options.lambdas) {
+      SpaceProblem problem = base;
+      problem.dims = dims;
+      problem.lambda = lambda;
+      problem.descriptors.resize(0, 0);
+      if (lambda > 0) {
+        if (!descriptors)
+          throw std::invalid_argument("λ > 0 ties the axes to descriptors, and none were given");
+        problem.descriptors = descriptors(dims);
+      }
+      const CrossValidationResult cv = cross_validate(problem, options.cross_validation);
+      SweepPoint p;
+      p.dims = dims;
+      p.lambda = lambda;
+      p.mean_error = cv.mean_fold_error;
+      p.sd_error = cv.sd_fold_error;
+      p.majority_agreement = cv.pooled.majority.fraction;
+      p.individual_agreement = cv.pooled.individual.fraction;
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+}  // namespace nibrig::model::space
