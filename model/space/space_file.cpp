@@ -10,6 +10,86 @@ namespace nibrig::model::space {
 
 namespace jf = io::json_fields;
 
+namespace {
+
+nlohmann::json rows_of(const Eigen::MatrixXd& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    std::vector<double> row(static_cast<std::size_t>(m.cols()));
+    for (Eigen::Index c = 0; c < m.cols(); ++c) row[static_cast<std::size_t>(c)] = m(r, c);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+nlohmann::json vector_of(const Eigen::VectorXd& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+// A rows × cols matrix stored as an array of rows at `path`.
+Eigen::MatrixXd matrix_at(const nlohmann::json& value, const std::filesystem::path& file,
+                          const std::string& path, Eigen::Index rows, Eigen::Index cols) {
+  const auto& array = jf::as_array(value, file, path);
+  if (static_cast<Eigen::Index>(array.size()) != rows)
+    throw io::FormatError(file, jf::place(path),
+                          "expected " + std::to_string(rows) + " rows, found " +
+                              std::to_string(array.size()));
+  Eigen::MatrixXd m(rows, cols);
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const std::string at = jf::element_path(path, static_cast<std::size_t>(r));
+    const auto row = jf::as_number_array(array[static_cast<std::size_t>(r)], file, at);
+    if (static_cast<Eigen::Index>(row.size()) != cols)
+      throw io::FormatError(file, jf::place(at), "expected " + std::to_string(cols) + " values");
+    for (Eigen::Index c = 0; c < cols; ++c) m(r, c) = row[static_cast<std::size_t>(c)];
+  }
+  return m;
+}
+
+Eigen::VectorXd vector_at(const nlohmann::json& value, const std::filesystem::path& file,
+                          const std::string& path, Eigen::Index size) {
+  const auto v = jf::as_number_array(value, file, path);
+  if (static_cast<Eigen::Index>(v.size()) != size)
+    throw io::FormatError(file, jf::place(path), "expected " + std::to_string(size) + " values");
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), size);
+}
+
+nlohmann::json map_json(const DescriptorMap& m) {
+  return {{"descriptor_mean", vector_of(m.descriptor_mean)},
+          {"descriptor_scale", vector_of(m.descriptor_scale)},
+          {"coefficients", rows_of(m.coefficients)},
+          {"design_inverse", rows_of(m.design_inverse)},
+          {"residual_covariance", rows_of(m.residual_covariance)},
+          {"r_squared", m.r_squared},
+          {"samples", m.samples}};
+}
+
+DescriptorMap read_map(const nlohmann::json& j, const std::filesystem::path& file,
+                       const std::vector<std::string>& names, Eigen::Index dims) {
+  const std::string at = "descriptor_map";
+  jf::as_object(j, file, at);
+  const auto p = static_cast<Eigen::Index>(names.size());
+  DescriptorMap m;
+  m.descriptor_names = names;
+  auto field = [&](const char* key) { return jf::member_path(at, key); };
+  m.descriptor_mean = vector_at(jf::member(j, "descriptor_mean", file, at), file,
+                                field("descriptor_mean"), p);
+  m.descriptor_scale = vector_at(jf::member(j, "descriptor_scale", file, at), file,
+                                 field("descriptor_scale"), p);
+  m.coefficients = matrix_at(jf::member(j, "coefficients", file, at), file, field("coefficients"),
+                             dims, p + 1);
+  m.design_inverse = matrix_at(jf::member(j, "design_inverse", file, at), file,
+                               field("design_inverse"), p + 1, p + 1);
+  m.residual_covariance = matrix_at(jf::member(j, "residual_covariance", file, at), file,
+                                    field("residual_covariance"), dims, dims);
+  const auto r2 = jf::as_number_array(jf::member(j, "r_squared", file, at), file, field("r_squared"));
+  m.r_squared = r2;
+  m.samples = static_cast<std::size_t>(
+      jf::as_integer(jf::member(j, "samples", file, at), file, field("samples"), 0, 1LL << 40));
+  return m;
+}
+
+}  // namespace
+
 void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
   nlohmann::json coordinates = nlohmann::json::array();
   for (Eigen::Index i = 0; i < s.coordinates.cols(); ++i) {
@@ -33,7 +113,26 @@ void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
         {"triplets", s.triplets},
         {"responses", s.responses}}},
       {"provenance", {{"judgments", s.judgments}}}};
-  io::write_file_atomically(file, j.dump(2) + "\n");
+  nlohmann::json out = j;
+  out["fit"]["seconds"] = s.seconds;
+  if (!s.descriptor_names.empty()) {
+    out["descriptors"] = {{"names", s.descriptor_names},
+                          {"values", rows_of(s.descriptors)},
+                          {"source", s.descriptor_source}};
+    out["provenance"]["descriptors"] = s.descriptor_source;
+  }
+  if (s.descriptor_map) out["descriptor_map"] = map_json(*s.descriptor_map);
+  if (!s.regions.empty()) {
+    nlohmann::json regions = nlohmann::json::array();
+    for (const auto& r : s.regions)
+      regions.push_back({{"mean", vector_of(r.mean)},
+                         {"covariance", rows_of(r.covariance)},
+                         {"radius", r.radius}});
+    out["bootstrap"] = {{"resamples", s.bootstrap_resamples},
+                        {"levels", s.region_levels},
+                        {"regions", regions}};
+  }
+  io::write_file_atomically(file, out.dump(2) + "\n");
 }
 
 SpaceFile read_space_file(const std::filesystem::path& file) {
@@ -66,6 +165,52 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
   }
   if (root.contains("provenance") && root["provenance"].contains("judgments"))
     s.judgments = jf::as_string(root["provenance"]["judgments"], file, "provenance.judgments");
+  const Eigen::Index dims = s.coordinates.rows(), n = s.coordinates.cols();
+  if (root.contains("descriptors")) {
+    const auto& d = jf::as_object(root["descriptors"], file, "descriptors");
+    const auto& names = jf::as_array(jf::member(d, "names", file, "descriptors"), file,
+                                     "descriptors.names");
+    for (std::size_t i = 0; i < names.size(); ++i)
+      s.descriptor_names.push_back(
+          jf::as_string(names[i], file, jf::element_path("descriptors.names", i)));
+    s.descriptors = matrix_at(jf::member(d, "values", file, "descriptors"), file,
+                              "descriptors.values", n,
+                              static_cast<Eigen::Index>(s.descriptor_names.size()));
+    if (d.contains("source")) s.descriptor_source = jf::as_string(d["source"], file, "descriptors.source");
+  }
+  if (root.contains("descriptor_map")) {
+    if (s.descriptor_names.empty())
+      throw io::FormatError(file, jf::place("descriptor_map"),
+                            "a descriptor map needs the descriptors' names (field 'descriptors')");
+    s.descriptor_map = read_map(root["descriptor_map"], file, s.descriptor_names, dims);
+  }
+  if (root.contains("bootstrap")) {
+    const auto& b = jf::as_object(root["bootstrap"], file, "bootstrap");
+    s.bootstrap_resamples = static_cast<int>(jf::as_integer(
+        jf::member(b, "resamples", file, "bootstrap"), file, "bootstrap.resamples", 2, 1 << 30));
+    s.region_levels =
+        jf::as_number_array(jf::member(b, "levels", file, "bootstrap"), file, "bootstrap.levels");
+    const auto& regions =
+        jf::as_array(jf::member(b, "regions", file, "bootstrap"), file, "bootstrap.regions");
+    if (static_cast<Eigen::Index>(regions.size()) != n)
+      throw io::FormatError(file, jf::place("bootstrap.regions"),
+                            "expected one region per stimulus (" + std::to_string(n) + ")");
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+      const std::string at = jf::element_path("bootstrap.regions", i);
+      ConfidenceRegion r;
+      r.mean = vector_at(jf::member(regions[i], "mean", file, at), file,
+                         jf::member_path(at, "mean"), dims);
+      r.covariance = matrix_at(jf::member(regions[i], "covariance", file, at), file,
+                               jf::member_path(at, "covariance"), dims, dims);
+      r.radius = jf::as_number_array(jf::member(regions[i], "radius", file, at), file,
+                                     jf::member_path(at, "radius"));
+      if (r.radius.size() != s.region_levels.size())
+        throw io::FormatError(file, jf::place(jf::member_path(at, "radius")),
+                              "expected one radius per level (" +
+                                  std::to_string(s.region_levels.size()) + ")");
+      s.regions.push_back(r);
+    }
+  }
   return s;
 }
 

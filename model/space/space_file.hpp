@@ -1,12 +1,17 @@
 // A fitted perceptual space on disk (space.json, format "nibrig-space" version 1): stimulus names,
-// coordinates, the model's scale, λ, fit statistics and provenance; what `nibrig space fit` writes
-// and `nibrig space predict` reads.
+// coordinates, the model's scale, λ, fit statistics and provenance; optionally the descriptors the
+// axes were tied to, the map that places new tools from descriptors, and bootstrap confidence
+// regions. What `nibrig space fit` writes and `space predict`, `space embed` and the plots read.
 #pragma once
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "model/space/bootstrap.hpp"
+#include "model/space/descriptor_map.hpp"
 
 namespace nibrig::model::space {
 
@@ -19,6 +24,18 @@ struct SpaceFile {
   std::vector<double> start_objectives;
   std::size_t triplets = 0, responses = 0;
   std::string judgments;  // the file fitted
+  double seconds = 0.0;   // wall time of the fit
+
+  // The descriptors (stimuli × names) and where they came from; empty names when none.
+  std::vector<std::string> descriptor_names;
+  Eigen::MatrixXd descriptors;
+  std::string descriptor_source;
+  std::optional<DescriptorMap> descriptor_map;
+
+  // Bootstrap confidence regions, one per stimulus, at region_levels; empty when not computed.
+  std::vector<double> region_levels;
+  std::vector<ConfidenceRegion> regions;
+  int bootstrap_resamples = 0;
 };
 
 void write_space_file(const std::filesystem::path& file, const SpaceFile& space);
