@@ -1,6 +1,6 @@
-// Publication-quality PNG figures for reports: heat maps (spectrograms), points with intervals, line
-// plots and labelled scatter plots with confidence regions. Inputs are plain data so that any caller
-// adapts its own types; PLplot's pngcairo device draws them, one figure at a time under a
+// Publication-quality PNG figures for reports: heat maps (spectrograms), points with intervals,
+// line plots and labelled scatter plots with confidence regions. Inputs are plain data so that any
+// caller adapts its own types; PLplot's pngcairo device draws them, one figure at a time under a
 // process-wide lock, each in a fresh PLplot stream.
 #pragma once
 
@@ -80,9 +80,9 @@ struct Ellipse {
 struct ScatterPoint {
   std::string label;  // drawn beside the point unless empty
   double x, y;
-  std::string group;  // same non-empty group: same colour and one legend entry
+  std::string group;             // same non-empty group: same colour and one legend entry
   std::vector<Ellipse> regions;  // regions[k] drawn in style k (see ScatterPlot::region_labels)
-  bool hollow = false;  // an open marker (e.g. a tool placed from descriptors, not judged)
+  bool hollow = false;           // an open marker (e.g. a tool placed from descriptors, not judged)
 };
 
 // Regions are drawn first (pale translucent fills in the point's group colour, then outlines whose

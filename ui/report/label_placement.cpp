@@ -39,20 +39,27 @@ Box marker_box(const LabelRequest& r, double radius) {
 Box candidate_box(const LabelRequest& r, const PlacementOptions& options, int candidate) {
   const bool far = candidate >= near_candidates;
   // The far ring clears the near one by about a line of text, so that a leader line shows.
-  const double d =
-      options.marker_radius + options.gap + (far ? options.gap + 1.2 * r.height : 0.0);
+  const double d = options.marker_radius + options.gap + (far ? options.gap + 1.2 * r.height : 0.0);
   // Diagonal spots sit at the same distance from the marker as the straight ones, roughly.
   const double diagonal = 0.75 * d;
   const double w = r.width, h = r.height;
   switch (candidate % near_candidates) {
-    case 0: return {r.x + d, r.y - 0.5 * h, r.x + d + w, r.y + 0.5 * h};
-    case 1: return {r.x - d - w, r.y - 0.5 * h, r.x - d, r.y + 0.5 * h};
-    case 2: return {r.x - 0.5 * w, r.y + d, r.x + 0.5 * w, r.y + d + h};
-    case 3: return {r.x - 0.5 * w, r.y - d - h, r.x + 0.5 * w, r.y - d};
-    case 4: return {r.x + diagonal, r.y + diagonal, r.x + diagonal + w, r.y + diagonal + h};
-    case 5: return {r.x - diagonal - w, r.y + diagonal, r.x - diagonal, r.y + diagonal + h};
-    case 6: return {r.x + diagonal, r.y - diagonal - h, r.x + diagonal + w, r.y - diagonal};
-    default: return {r.x - diagonal - w, r.y - diagonal - h, r.x - diagonal, r.y - diagonal};
+    case 0:
+      return {r.x + d, r.y - 0.5 * h, r.x + d + w, r.y + 0.5 * h};
+    case 1:
+      return {r.x - d - w, r.y - 0.5 * h, r.x - d, r.y + 0.5 * h};
+    case 2:
+      return {r.x - 0.5 * w, r.y + d, r.x + 0.5 * w, r.y + d + h};
+    case 3:
+      return {r.x - 0.5 * w, r.y - d - h, r.x + 0.5 * w, r.y - d};
+    case 4:
+      return {r.x + diagonal, r.y + diagonal, r.x + diagonal + w, r.y + diagonal + h};
+    case 5:
+      return {r.x - diagonal - w, r.y + diagonal, r.x - diagonal, r.y + diagonal + h};
+    case 6:
+      return {r.x + diagonal, r.y - diagonal - h, r.x + diagonal + w, r.y - diagonal};
+    default:
+      return {r.x - diagonal - w, r.y - diagonal - h, r.x - diagonal, r.y - diagonal};
   }
 }
 
@@ -68,7 +75,8 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
     const double reach =
         requests[i].width + 2.0 * (options.marker_radius + options.gap) + requests[i].height;
     for (std::size_t j = 0; j < n; ++j) {
-      if (j != i && std::hypot(requests[j].x - requests[i].x, requests[j].y - requests[i].y) < reach)
+      if (j != i &&
+          std::hypot(requests[j].x - requests[i].x, requests[j].y - requests[i].y) < reach)
         ++crowd[i];
     }
   }

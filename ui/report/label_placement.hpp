@@ -1,6 +1,6 @@
-// Where the labels of a scatter plot go: beside their points, each at the candidate spot that covers
-// the fewest labels and markers already placed. Pure page geometry (pixels, origin bottom left),
-// kept apart from drawing so that it can be reasoned about and tested without PLplot.
+// Where the labels of a scatter plot go: beside their points, each at the candidate spot that
+// covers the fewest labels and markers already placed. Pure page geometry (pixels, origin bottom
+// left), kept apart from drawing so that it can be reasoned about and tested without PLplot.
 #pragma once
 
 #include <vector>

@@ -63,10 +63,14 @@ void open_up(double& lo, double& hi) {
 Stroke region_stroke(std::size_t k, const Style& st) {
   const double s = st.scale;
   switch (k % 4) {
-    case 0: return {1.9 * s, {}};
-    case 1: return {1.4 * s, {7.0 * s, 4.0 * s}};
-    case 2: return {1.4 * s, {1.8 * s, 3.2 * s}};
-    default: return {1.4 * s, {8.0 * s, 3.5 * s, 1.8 * s, 3.5 * s}};
+    case 0:
+      return {1.9 * s, {}};
+    case 1:
+      return {1.4 * s, {7.0 * s, 4.0 * s}};
+    case 2:
+      return {1.4 * s, {1.8 * s, 3.2 * s}};
+    default:
+      return {1.4 * s, {8.0 * s, 3.5 * s, 1.8 * s, 3.5 * s}};
   }
 }
 
@@ -95,9 +99,10 @@ ScatterFrame layout_scatter(const ScatterPlot& plot) {
   const auto& palette = categorical_palette();
   for (const auto& p : plot.points) {
     const auto it = std::find(groups.begin(), groups.end(), p.group);
-    f.colours.push_back(it == groups.end()
-                            ? (groups.empty() ? palette[0] : ungrouped_grey)
-                            : palette[static_cast<std::size_t>(it - groups.begin()) % palette.size()]);
+    f.colours.push_back(
+        it == groups.end()
+            ? (groups.empty() ? palette[0] : ungrouped_grey)
+            : palette[static_cast<std::size_t>(it - groups.begin()) % palette.size()]);
   }
   for (std::size_t g = 0; g < groups.size(); ++g)
     f.legend.push_back({groups[g], palette[g % palette.size()], LegendEntry::Kind::point});

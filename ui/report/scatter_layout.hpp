@@ -1,6 +1,7 @@
 // Where everything of a scatter plot goes before anything is drawn: colours per group, legend,
 // axis ranges that hold every marker, region and label (one data unit as many pixels on x as on y
-// when asked), and the labels' spots. Apart from the drawing so that tests can find a point's pixel.
+// when asked), and the labels' spots. Apart from the drawing so that tests can find a point's
+// pixel.
 #pragma once
 
 #include <vector>
@@ -21,7 +22,7 @@ struct ScatterFrame {
   LegendLayout legend_layout;
   double legend_top = 0.0;  // page y of the legend's first row
   AxesLayout axes;
-  Mapping mapping;  // data to page pixels (origin bottom left)
+  Mapping mapping;                     // data to page pixels (origin bottom left)
   std::vector<Stroke> region_strokes;  // style k of the regions
   double marker_radius = 0.0, label_cap = 0.0;
   PlacementOptions placement{};

@@ -143,8 +143,8 @@ void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& pn
   draw_y_axis(page, f.mapping, f.axes.y, st);
   draw_axis_titles(page, f.axes.box, plot.x_label, plot.y_label, st);
   draw_title(page, plot.title, st);
-  draw_legend(page, f.legend, f.legend_layout, 0.5 * (f.axes.box.x0 + f.axes.box.x1),
-              f.legend_top, st);
+  draw_legend(page, f.legend, f.legend_layout, 0.5 * (f.axes.box.x0 + f.axes.box.x1), f.legend_top,
+              st);
   page.commit();
 }
 

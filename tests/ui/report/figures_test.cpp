@@ -23,11 +23,11 @@
 namespace nibrig::ui::report {
 namespace {
 
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test::expect_rejected;
 using test::expect_white_border;
 using test::names_in;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 HeatMap sample_heat_map() {
