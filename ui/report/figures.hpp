@@ -106,7 +106,8 @@ struct ScatterPlot {
 
 // Each writes png through a temporary file in the same folder and a rename, so the path holds
 // either its previous content or the complete new figure. Throws std::invalid_argument, naming the
-// figure's title and the faulty field, for empty, mismatched or non-finite input;
+// figure's title and the faulty field, for empty, mismatched or non-finite input (and for a
+// scatter plot's negative semi-axes or unnamed region styles);
 // std::runtime_error when the PLplot pngcairo device is missing or the file cannot be written. Safe
 // to call from several threads.
 void write_heat_map(const HeatMap& map, const std::filesystem::path& png);
