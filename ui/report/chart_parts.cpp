@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace nibrig::ui::report::detail {
@@ -160,6 +161,30 @@ double swatch_width(const Style& st) { return 34 * st.scale; }
 
 }  // namespace
 
+void ellipse_polygon(double cx, double cy, double a, double b, double angle_rad, int n,
+                     std::vector<double>& xs, std::vector<double>& ys) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / n;
+    const double u = a * std::cos(t), v = b * std::sin(t);
+    xs.push_back(cx + u * c - v * s);
+    ys.push_back(cy + u * s + v * c);
+  }
+}
+
+void draw_ring(PlotPage& page, double x, double y, double radius, Rgb colour) {
+  // White inside, so that a ring over a region or a line still reads as open.
+  const double width = 0.35 * radius;
+  page.colour({255, 255, 255});
+  page.disc(x, y, radius);
+  std::vector<double> xs, ys;
+  ellipse_polygon(x, y, radius - 0.5 * width, radius - 0.5 * width, 0.0, 36, xs, ys);
+  xs.push_back(xs.front()), ys.push_back(ys.front());
+  page.colour(colour);
+  page.line_width(width);
+  page.polyline(xs, ys);
+}
+
 LegendLayout layout_legend(const std::vector<LegendEntry>& entries, double available_width,
                            const Style& st) {
   LegendLayout layout;
@@ -205,9 +230,25 @@ void draw_legend(PlotPage& page, const std::vector<LegendEntry>& entries,
       page.line_width(st.curve_width * 0.8);
       page.segment(x + 0.5 * sw, y - half * 1.1, x + 0.5 * sw, y + half * 1.1);
     }
-    if (e.kind == LegendEntry::Kind::marker || e.with_marker) {
+    if (e.kind == LegendEntry::Kind::marker || e.kind == LegendEntry::Kind::point ||
+        e.with_marker) {
       page.colour(e.colour);
       page.disc(x + 0.5 * sw, y, 4.5 * st.scale);
+    }
+    if (e.kind == LegendEntry::Kind::open_point) {
+      draw_ring(page, x + 0.5 * sw, y, 4.5 * st.scale, e.colour);
+    }
+    if (e.kind == LegendEntry::Kind::region) {
+      std::vector<double> xs, ys;
+      ellipse_polygon(x + 0.5 * sw, y, 0.5 * sw - 0.5 * e.stroke.width_px, half, 0.0, 72, xs, ys);
+      page.colour(e.colour, region_alpha);
+      page.fill(xs, ys);
+      xs.push_back(xs.front()), ys.push_back(ys.front());
+      page.colour(e.colour);
+      page.line_width(e.stroke.width_px);
+      page.dashes(e.stroke.dashes_px);
+      page.polyline(xs, ys);
+      page.dashes({});
     }
     page.colour(text_grey);
     page.text(x + sw + 0.6 * st.legend_cap, y, 0.0, 0.0, st.legend_cap, e.label);

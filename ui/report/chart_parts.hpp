@@ -81,13 +81,34 @@ void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label
 double title_room(const std::string& title, const Style& st);
 void draw_title(PlotPage& page, const std::string& title, const Style& st);
 
+// How a line is drawn: its width and, if not solid, alternating dash and gap lengths (px).
+struct Stroke {
+  double width_px = 1.0;
+  std::vector<double> dashes_px;
+};
+
+// An ellipse (centre, semi-axes, angle of the first semi-axis from +x in radians) as n vertices
+// of a polygon (the first not repeated at the end), appended to xs and ys.
+void ellipse_polygon(double cx, double cy, double a, double b, double angle_rad, int n,
+                     std::vector<double>& xs, std::vector<double>& ys);
+
+// The fill of a region: its colour at this opacity, a pale tint on white, so that regions which
+// overlap stay visible through one another.
+constexpr double region_alpha = 0.10;
+
+// An open marker: a ring in `colour` of outer radius `radius`, white inside.
+void draw_ring(PlotPage& page, double x, double y, double radius, Rgb colour);
+
 struct LegendEntry {
-  enum class Kind { line, marker, band };
+  // marker: a dot on an upright bar (a point with its interval); point: a dot alone; open_point: a
+  // ring; region: a small ellipse, pale inside, outlined with `stroke`.
+  enum class Kind { line, marker, band, point, open_point, region };
   std::string label;
   Rgb colour;
   Kind kind;
   bool with_marker = false;  // a line with a dot on it
   bool with_band = false;    // a line over its shaded band
+  Stroke stroke{};           // region outlines only
 };
 
 struct LegendLayout {

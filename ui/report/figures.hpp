@@ -1,6 +1,7 @@
-// Publication-quality PNG figures for reports: heat maps (spectrograms), points with intervals, and
-// line plots. Inputs are plain data so that any caller adapts its own types; PLplot's pngcairo
-// device draws them, one figure at a time under a process-wide lock, each in a fresh PLplot stream.
+// Publication-quality PNG figures for reports: heat maps (spectrograms), points with intervals,
+// line plots and labelled scatter plots with confidence regions. Inputs are plain data so that any
+// caller adapts its own types; PLplot's pngcairo device draws them, one figure at a time under a
+// process-wide lock, each in a fresh PLplot stream.
 #pragma once
 
 #include <filesystem>
@@ -69,13 +70,49 @@ struct LinePlot {
   ImageSize size{};
 };
 
+// A region around a point: the ellipse with this centre, semi-axes and the angle (radians, from +x)
+// of the first semi-axis.
+struct Ellipse {
+  double centre_x, centre_y, semi_axis_1, semi_axis_2, angle_rad;
+};
+
+// One stimulus of a 2-D space (e.g. a perceptual space), with its confidence regions.
+struct ScatterPoint {
+  std::string label;  // drawn beside the point unless empty
+  double x, y;
+  std::string group;             // same non-empty group: same colour and one legend entry
+  std::vector<Ellipse> regions;  // regions[k] drawn in style k (see ScatterPlot::region_labels)
+  bool hollow = false;           // an open marker (e.g. a tool placed from descriptors, not judged)
+};
+
+// Regions are drawn first (pale translucent fills in the point's group colour, then outlines whose
+// dash and width say the style k), markers over them, labels last in a small font. Points without
+// a group are grey when others have one. Each label goes to the spot beside its point (right, left,
+// above, below, the diagonals, then further out with a thin leader line) that covers the fewest
+// labels and markers already placed; with more than 40 points a label that cannot be placed
+// without covering another label or a marker is left out rather than drawn over the crowd. The axes
+// cover every marker and every region's bounding box, with room for each label beside its point.
+// The legend has one entry per group, one per region style, and "placed from descriptors" when a
+// point is hollow.
+struct ScatterPlot {
+  std::vector<ScatterPoint> points;
+  std::string title, x_label, y_label;
+  // Legend text of region style k, e.g. {"68 %", "95 %"}. Empty: regions get no legend entries;
+  // otherwise it must name every style a point uses.
+  std::vector<std::string> region_labels;
+  bool equal_axes = true;  // same scale on x and y (distances in a perceptual space are isotropic)
+  ImageSize size{};
+};
+
 // Each writes png through a temporary file in the same folder and a rename, so the path holds
 // either its previous content or the complete new figure. Throws std::invalid_argument, naming the
-// figure's title and the faulty field, for empty, mismatched or non-finite input;
+// figure's title and the faulty field, for empty, mismatched or non-finite input (and for a
+// scatter plot's negative semi-axes or unnamed region styles);
 // std::runtime_error when the PLplot pngcairo device is missing or the file cannot be written. Safe
 // to call from several threads.
 void write_heat_map(const HeatMap& map, const std::filesystem::path& png);
 void write_interval_chart(const IntervalChart& chart, const std::filesystem::path& png);
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png);
+void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png);
 
 }  // namespace nibrig::ui::report

@@ -178,6 +178,23 @@ void PlotPage::colour(Rgb c, double alpha) {
 
 void PlotPage::line_width(double px) { plwidth(px); }
 
+void PlotPage::dashes(const std::vector<double>& on_off_px) {
+  if (on_off_px.size() < 2) {
+    pllsty(1);
+    return;
+  }
+  // plstyl counts in micrometres on the page.
+  PLFLT xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  plgspa(&xmin, &xmax, &ymin, &ymax);
+  const double um_per_px = 1000.0 * (xmax - xmin) / width_;
+  std::vector<PLINT> marks, spaces;
+  for (std::size_t i = 0; i + 1 < on_off_px.size(); i += 2) {
+    marks.push_back(static_cast<PLINT>(std::lround(on_off_px[i] * um_per_px)));
+    spaces.push_back(static_cast<PLINT>(std::lround(on_off_px[i + 1] * um_per_px)));
+  }
+  plstyl(static_cast<PLINT>(marks.size()), marks.data(), spaces.data());
+}
+
 void PlotPage::polyline(const std::vector<double>& x, const std::vector<double>& y) {
   if (x.size() < 2) return;
   plline(static_cast<PLINT>(x.size()), x.data(), y.data());

@@ -30,6 +30,8 @@ class PlotPage {
 
   void colour(Rgb c, double alpha = 1.0);
   void line_width(double px);
+  // Lines drawn next are dashed: alternating dash and gap lengths in px; empty for solid lines.
+  void dashes(const std::vector<double>& on_off_px);
   void polyline(const std::vector<double>& x, const std::vector<double>& y);
   void segment(double x0, double y0, double x1, double y1);
   void fill(const std::vector<double>& x, const std::vector<double>& y);

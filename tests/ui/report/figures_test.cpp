@@ -16,12 +16,16 @@
 #include <thread>
 
 #include "tests/support/test_paths.hpp"
+#include "tests/ui/report/figure_checks.hpp"
 #include "tests/ui/report/png_reader.hpp"
 #include "ui/report/colour_maps.hpp"
 
 namespace nibrig::ui::report {
 namespace {
 
+using test::expect_rejected;
+using test::expect_white_border;
+using test::names_in;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -74,27 +78,6 @@ LinePlot sample_line_plot(std::size_t curves = 3) {
     plot.series.push_back(s);
   }
   return plot;
-}
-
-std::vector<std::string> names_in(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-// A margin of 3 px around the image must stay white: a clipped label or line would reach it.
-void expect_white_border(const fs::path& png) {
-  const auto img = test::decode_png(png);
-  const Rgb white{255, 255, 255};
-  int dark = 0;
-  for (int y = 0; y < img.height; ++y) {
-    for (int x = 0; x < img.width; ++x) {
-      const bool border = x < 3 || y < 3 || x >= img.width - 3 || y >= img.height - 3;
-      if (border && !test::near(img.at(x, y), white, 0)) ++dark;
-    }
-  }
-  EXPECT_EQ(dark, 0) << png << " has drawing at its border";
 }
 
 TEST(ReportFigures, EachKindWritesAPngOfTheAskedSize) {
@@ -319,25 +302,6 @@ TEST(ReportHeatMap, MoreCellsThanPixelsStillShowANarrowPeak) {
   ASSERT_LE(c.bright_x0, c.bright_x1) << "the peak vanished";
   const double expected = c.map_x0 + (4500.0 + 0.5) / 6000.0 * (c.map_x1 - c.map_x0 + 1);
   EXPECT_NEAR(0.5 * (c.bright_x0 + c.bright_x1), expected, 3.0);
-}
-
-// Each bad input must be refused with the kind of figure, its title and the fault in the message,
-// and must leave an existing file untouched and nothing else behind.
-void expect_rejected(const std::function<void(const fs::path&)>& write, const std::string& title,
-                     const std::string& fault) {
-  const auto dir = test::scratch_dir("report_rejects");
-  const auto target = dir / "figure.png";
-  { std::ofstream(target) << "previous content"; }
-  try {
-    write(target);
-    ADD_FAILURE() << "accepted input with: " << fault;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_THAT(e.what(), AllOf(HasSubstr("\"" + title + "\""), HasSubstr(fault)));
-  }
-  EXPECT_EQ(names_in(dir), std::vector<std::string>{"figure.png"});
-  std::ifstream in(target);
-  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(content, "previous content");
 }
 
 TEST(ReportFigures, BadHeatMapsAreRefused) {
