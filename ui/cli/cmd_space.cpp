@@ -1,151 +1,139 @@
-// `nibrig space fit|predict`: triplet judgments → a perceptual space (space.json), and the
-// probability that the first candidate is chosen for any list of triplets.
-#include <spdlog/spdlog.h>
-
-#include <iomanip>
-#include <iostream>
-#include <map>
-#include <sstream>
-
-#include "model/io/triplets.hpp"
-#include "model/space/fit.hpp"
-#include "model/space/space_file.hpp"
+// `nibrig space ...`: registers the perceptual-space subcommands; the work is in
+// space_fit_command.cpp, space_validate_command.cpp and space_query_commands.cpp.
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/output.hpp"
+#include "ui/cli/space_commands.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
 
-namespace space = model::space;
-
-struct FitCommandOptions {
-  std::filesystem::path judgments, output = "space.json";
-  std::size_t dims = 2;
-  double lambda = 0.0;
-  int starts = 16;
-  unsigned seed = 1;
-};
-
-struct PredictCommandOptions {
-  std::filesystem::path space_file, queries, output;
-};
-
-void run_fit(const FitCommandOptions& o, const GlobalOptions& global) {
-  if (o.lambda > 0)
-    throw std::invalid_argument(
-        "--lambda > 0 ties the axes to descriptors, which `space fit` does not read yet; use "
-        "--lambda 0");
-  const model::io::TripletSet set = model::io::read_triplets(o.judgments);
-  space::SpaceProblem problem;
-  problem.dims = o.dims;
-  problem.stimuli = set.stimuli.size();
-  problem.triplets = set.triplets;
-  problem.lambda = o.lambda;
-  space::FitOptions options;
-  options.starts = o.starts;
-  options.seed = o.seed;
-  options.threads = worker_threads(global);
-  spdlog::info("{}: {} stimuli, {} triplets, {} responses; {}-D fit from {} starts",
-               o.judgments.string(), set.stimuli.size(), set.triplets.size(),
-               model::io::response_count(set), o.dims, o.starts);
-  const space::FitResult fit = space::fit_space(problem, options);
-  space::SpaceFile file;
-  file.stimuli = set.stimuli;
-  file.coordinates = fit.coordinates;
-  file.scale = problem.scale;
-  file.lambda = problem.lambda;
-  file.objective = fit.objective;
-  file.negative_log_likelihood = fit.negative_log_likelihood;
-  file.start_objectives = fit.start_objectives;
-  file.triplets = set.triplets.size();
-  file.responses = model::io::response_count(set);
-  file.judgments = o.judgments.string();
-  space::write_space_file(o.output, file);
-  std::cout << "fitted " << o.dims << "-D space of " << set.stimuli.size()
-            << " stimuli: -log likelihood " << fit.negative_log_likelihood << " (best of "
-            << o.starts << " starts; worst start " << fit.start_objectives.back() << ") -> "
-            << o.output.string() << "\n";
+void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) {
+  auto o = std::make_shared<SpaceFitOptions>();
+  auto* fit = cmd.add_subcommand("fit", "Fit a space to judgments -> space.json");
+  fit->footer(
+      "Maximum likelihood from many random starts (L-BFGS), the best kept; stimulus 1 at the "
+      "origin.\n"
+      "--descriptors names a catalog whose pairings \"tool/surface\" are the judged stimuli: axis 1 "
+      "is\n"
+      "tied to friction mu, axis 2 to log10 weighted vibration (D >= 3: band energies) with weight\n"
+      "--lambda, and a map from descriptors to coordinates is learnt so new tools can be placed.");
+  fit->add_option("judgments", o->judgments, "Judgments file")->required()->check(CLI::ExistingFile);
+  fit->add_option("--descriptors", o->descriptors, "Catalog with the stimuli's descriptors")
+      ->check(CLI::ExistingFile);
+  fit->add_option("--dims", o->dims, "Dimensions (default 2)")->check(CLI::Range(1, 10));
+  fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)");
+  fit->add_option("--starts", o->starts, "Random starts (default 16)")->check(CLI::Range(1, 10000));
+  fit->add_option("--seed", o->seed, "Seed of the first start (default 1)");
+  fit->add_option("--bootstrap", o->bootstrap,
+                  "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
+      ->check(CLI::Range(0, 100000));
+  fit->add_option("--plot", o->plot, "PNG of the space (first two axes)");
+  fit->add_option("-o,--output", o->output, "Output space file (default space.json)");
+  fit->callback([o, global] {
+    configure_logging(global->verbosity);
+    if (o->bootstrap == 1) throw CLI::ValidationError("--bootstrap", "needs at least 2 resamples");
+    run_space_fit(*o, worker_threads(*global));
+  });
 }
 
-void run_predict(const PredictCommandOptions& o) {
-  const space::SpaceFile s = space::read_space_file(o.space_file);
-  const model::io::TripletSet queries = model::io::read_triplet_queries(o.queries);
-  std::map<std::string, std::size_t> index;
-  for (std::size_t i = 0; i < s.stimuli.size(); ++i) index[s.stimuli[i]] = i;
-  auto find = [&](const std::string& name) {
-    const auto it = index.find(name);
-    if (it == index.end())
-      throw std::invalid_argument(o.queries.string() + ": stimulus '" + name + "' is not in " +
-                                  o.space_file.string());
-    return it->second;
-  };
-  std::ostringstream csv;
-  csv << "reference,a,b,p_first\n" << std::setprecision(10);
-  for (const auto& t : queries.triplets) {
-    const std::string& r = queries.stimuli[t.reference];
-    const std::string& a = queries.stimuli[t.a];
-    const std::string& b = queries.stimuli[t.b];
-    csv << r << ',' << a << ',' << b << ','
-        << space::probability_first(s.coordinates, find(r), find(a), find(b), s.scale) << '\n';
-  }
-  if (o.output.empty()) {
-    std::cout << csv.str();
-  } else {
-    write_text_file(o.output, csv.str());
-    spdlog::info("wrote {} predictions to {}", queries.triplets.size(), o.output.string());
-  }
+void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) {
+  auto o = std::make_shared<SpaceValidateOptions>();
+  auto* v = cmd.add_subcommand("validate", "Cross-validate spaces of several dimensions and lambdas");
+  v->footer(
+      "Error = mean over held-out triplets of |predicted - observed probability| (the paper's 17 % "
+      "for\n"
+      "5-fold, 2-D). Agreement: with each triplet's majority answer and with every individual "
+      "answer;\n"
+      "a prediction of exactly 0.5 counts as half right.");
+  v->add_option("judgments", o->judgments, "Judgments file")->required()->check(CLI::ExistingFile);
+  v->add_option("--descriptors", o->descriptors, "Catalog (needed for lambdas above 0)")
+      ->check(CLI::ExistingFile);
+  v->add_option("--folds", o->folds, "Folds (default 5)")->check(CLI::Range(2, 100));
+  v->add_option("--dims", o->dims, "Dimensions to try (default 1,2,3)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10));
+  v->add_option("--lambdas", o->lambdas, "Lambdas to try (default 0)")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber);
+  v->add_option("--starts", o->starts, "Random starts per fit (default 8)")
+      ->check(CLI::Range(1, 10000));
+  v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)");
+  v->add_option("--json", o->json, "Write the results as JSON");
+  v->add_option("--report", o->report, "Folder for validation.json and the sweep plot");
+  v->callback([o, global] {
+    configure_logging(global->verbosity);
+    run_space_validate(*o, worker_threads(*global));
+  });
+}
+
+void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) {
+  auto p = std::make_shared<SpaceQueryOptions>();
+  auto* predict = cmd.add_subcommand(
+      "predict", "Probability that the first candidate is chosen, per query, as CSV");
+  predict->footer(
+      "Writes reference,a,b,p_first, one row per query in input order; queries in any judgment "
+      "format\n"
+      "(counts ignored; for Salmon the first candidate is Left, for Lagunas answers[i][1]). With\n"
+      "--catalog, tools not in the space are placed from their descriptors and a column p_first_sd\n"
+      "gives the spread of p over their placement uncertainty.");
+  predict->add_option("space", p->space_file, "space.json from `space fit`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  predict->add_option("queries", p->queries, "Triplets to predict")
+      ->required()
+      ->check(CLI::ExistingFile);
+  predict->add_option("--catalog", p->catalog, "Place unjudged tools from this catalog")
+      ->check(CLI::ExistingFile);
+  predict->add_option("-o,--output", p->output, "Output CSV (default: standard output)");
+  predict->callback([p, global] {
+    configure_logging(global->verbosity);
+    run_space_predict(*p);
+  });
+
+  auto e = std::make_shared<SpaceQueryOptions>();
+  auto* evaluate = cmd.add_subcommand(
+      "evaluate", "Score a space's predictions against judgments (agreement, z-test, Pearson r)");
+  evaluate->add_option("space", e->space_file, "space.json")->required()->check(CLI::ExistingFile);
+  evaluate->add_option("judgments", e->queries, "Judgments to predict")
+      ->required()
+      ->check(CLI::ExistingFile);
+  evaluate->add_option("--catalog", e->catalog, "Place unjudged tools from this catalog")
+      ->check(CLI::ExistingFile);
+  evaluate->add_option("-o,--output", e->output, "Write the scores as JSON");
+  evaluate->callback([e, global] {
+    configure_logging(global->verbosity);
+    run_space_evaluate(*e);
+  });
+
+  auto m = std::make_shared<SpaceEmbedOptions>();
+  auto* embed =
+      cmd.add_subcommand("embed", "Place every catalog tool in a space from its descriptors");
+  embed->add_option("space", m->space_file, "space.json fitted with --descriptors")
+      ->required()
+      ->check(CLI::ExistingFile);
+  embed->add_option("catalog", m->catalog, "Catalog")->required()->check(CLI::ExistingFile);
+  embed->add_option("-o,--output", m->output, "Output CSV (default: standard output)");
+  embed->add_option("--plot", m->plot, "PNG of the space with the placed tools");
+  embed->callback([m, global] {
+    configure_logging(global->verbosity);
+    run_space_embed(*m);
+  });
 }
 
 }  // namespace
 
 void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
-  auto* cmd =
-      app.add_subcommand("space", "Perceptual space: fit triplet judgments, predict preferences");
+  auto* cmd = app.add_subcommand(
+      "space", "Perceptual space: fit, validate, predict, evaluate and place tools");
   cmd->require_subcommand(1);
   cmd->footer(
       "Judgments: our CSV (reference,a,b,count_a,count_b[,observer]), the Lagunas et al. 2019 JSON "
       "or\n"
       "the Salmon responses CSV, told apart by content. The model (Sec. 4): P(a closer to the\n"
       "reference than b) = Phi(-2/3 (|Q_a - Q_r| - |Q_b - Q_r|)), one unit = 75 % preference.");
-
-  auto fit = std::make_shared<FitCommandOptions>();
-  auto* fit_cmd = cmd->add_subcommand("fit", "Fit a space to judgments -> space.json");
-  fit_cmd->footer(
-      "Maximum likelihood from many random starts (L-BFGS), the best kept; stimulus 1 at the "
-      "origin.");
-  fit_cmd->add_option("judgments", fit->judgments, "Judgments file")
-      ->required()
-      ->check(CLI::ExistingFile);
-  fit_cmd->add_option("--dims", fit->dims, "Dimensions (default 2)")->check(CLI::Range(1, 10));
-  fit_cmd->add_option("--lambda", fit->lambda, "Weight of the descriptor correlation (default 0)");
-  fit_cmd->add_option("--starts", fit->starts, "Random starts (default 16)")
-      ->check(CLI::Range(1, 10000));
-  fit_cmd->add_option("--seed", fit->seed, "Seed of the first start (default 1)");
-  fit_cmd->add_option("-o,--output", fit->output, "Output space file (default space.json)");
-  fit_cmd->callback([fit, global] {
-    configure_logging(global->verbosity);
-    run_fit(*fit, *global);
-  });
-
-  auto predict = std::make_shared<PredictCommandOptions>();
-  auto* predict_cmd = cmd->add_subcommand(
-      "predict", "Probability that the first candidate is chosen, per query, as CSV");
-  predict_cmd->footer(
-      "Writes reference,a,b,p_first, one row per query in input order; queries in any judgment "
-      "format\n"
-      "(counts ignored; for Salmon the first candidate is Left, for Lagunas answers[i][1]).");
-  predict_cmd->add_option("space", predict->space_file, "space.json from `space fit`")
-      ->required()
-      ->check(CLI::ExistingFile);
-  predict_cmd->add_option("queries", predict->queries, "Triplets to predict")
-      ->required()
-      ->check(CLI::ExistingFile);
-  predict_cmd->add_option("-o,--output", predict->output, "Output CSV (default: standard output)");
-  predict_cmd->callback([predict, global] {
-    configure_logging(global->verbosity);
-    run_predict(*predict);
-  });
+  add_fit(*cmd, global);
+  add_validate(*cmd, global);
+  add_queries(*cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

@@ -112,7 +112,7 @@ TEST(SpaceCli, UnknownStimulusAndUnsupportedLambdaFailInOneLine) {
   testing::internal::CaptureStderr();
   EXPECT_NE(run_cli({"space", "fit", judgments.string(), "--lambda", "1"}), 0);
   err = testing::internal::GetCapturedStderr();
-  EXPECT_NE(err.find("--lambda"), std::string::npos) << err;
+  EXPECT_NE(err.find("--descriptors"), std::string::npos) << err;
 }
 
 }  // namespace

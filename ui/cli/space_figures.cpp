@@ -1,0 +1,108 @@
+#include "ui/cli/space_figures.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/distributions/chi_squared.hpp>
+#include <cmath>
+#include <map>
+
+#include "model/space/bootstrap.hpp"
+#include "ui/report/figures.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace space = model::space;
+
+namespace {
+
+std::string group_of(const std::string& name) {
+  const auto slash = name.rfind('/');
+  return slash == std::string::npos ? std::string() : name.substr(slash + 1);
+}
+
+report::Ellipse ellipse_at(const Eigen::VectorXd& centre, const space::PlaneEllipse& e,
+                           bool one_dimensional) {
+  report::Ellipse out{centre(0), one_dimensional ? 0.0 : centre(1), e.semi_axis_1, e.semi_axis_2,
+                      e.angle_rad};
+  return out;
+}
+
+// The plane ellipse of a region; a 1-D region becomes an interval drawn as a flat ellipse.
+space::PlaneEllipse plane_of(const space::ConfidenceRegion& r, std::size_t level) {
+  if (r.covariance.rows() >= 2) return space::plane_ellipse(r, level);
+  return {r.radius.at(level) * std::sqrt(r.covariance(0, 0)), 0.0, 0.0};
+}
+
+}  // namespace
+
+void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& placed,
+                      const std::string& title, const std::filesystem::path& png) {
+  const bool one_d = s.coordinates.rows() == 1;
+  report::ScatterPlot plot;
+  plot.title = title;
+  plot.x_label = s.descriptor_names.empty() ? "axis 1" : "axis 1 (" + s.descriptor_names[0] + ")";
+  plot.y_label = one_d ? "" : s.descriptor_names.size() < 2 ? "axis 2"
+                                                            : "axis 2 (" + s.descriptor_names[1] + ")";
+  plot.equal_axes = !one_d;
+  // Bootstrap levels and the placement ellipses share the styles: 68 % and 95 %.
+  std::vector<double> levels = s.region_levels.empty() ? std::vector<double>{0.68, 0.95}
+                                                       : s.region_levels;
+  for (double l : levels) plot.region_labels.push_back(fmt::format("{:g} %", 100 * l));
+  for (std::size_t i = 0; i < s.stimuli.size(); ++i) {
+    const Eigen::VectorXd q = s.coordinates.col(static_cast<Eigen::Index>(i));
+    report::ScatterPoint p{s.stimuli[i], q(0), one_d ? 0.0 : q(1), group_of(s.stimuli[i]), {}, false};
+    if (!s.regions.empty())
+      for (std::size_t k = 0; k < s.region_levels.size(); ++k)
+        p.regions.push_back(ellipse_at(q, plane_of(s.regions[i], k), one_d));
+    plot.points.push_back(p);
+  }
+  const auto dims = static_cast<double>(s.coordinates.rows());
+  for (const auto& t : placed) {
+    report::ScatterPoint p{t.name, t.placement.mean(0), one_d ? 0.0 : t.placement.mean(1),
+                           group_of(t.name), {}, true};
+    // A Gaussian placement: the level-k ellipse has the χ² radius of the space's dimensions.
+    space::ConfidenceRegion region{t.placement.mean, t.placement.covariance, {}};
+    for (double l : levels)
+      region.radius.push_back(
+          std::sqrt(boost::math::quantile(boost::math::chi_squared(dims), l)));
+    for (std::size_t k = 0; k < levels.size(); ++k)
+      p.regions.push_back(ellipse_at(t.placement.mean, plane_of(region, k), one_d));
+    plot.points.push_back(p);
+  }
+  report::write_scatter_plot(plot, png);
+}
+
+void write_sweep_plot(const std::vector<space::SweepPoint>& points, const std::string& title,
+                      const std::filesystem::path& png) {
+  std::map<double, int> lambdas;
+  for (const auto& p : points) lambdas[p.lambda] = 0;
+  report::LinePlot plot;
+  plot.title = title;
+  plot.y_label = "held-out error |#gDp| (%)";
+  if (lambdas.size() == 1) {
+    plot.x_label = "dimensions";
+    report::LineSeries line{fmt::format("#gl = {:g}", points.front().lambda), {}, {}, {}, {}};
+    for (const auto& p : points) {
+      line.x.push_back(static_cast<double>(p.dims));
+      line.y.push_back(100 * p.mean_error);
+      line.y_low.push_back(100 * (p.mean_error - p.sd_error));
+      line.y_high.push_back(100 * (p.mean_error + p.sd_error));
+    }
+    plot.series.push_back(line);
+  } else {
+    plot.x_label = "#gl";
+    std::map<std::size_t, report::LineSeries> by_dims;
+    for (const auto& p : points) {
+      auto& line = by_dims[p.dims];
+      line.label = std::to_string(p.dims) + "-D";
+      line.x.push_back(p.lambda);
+      line.y.push_back(100 * p.mean_error);
+      line.y_low.push_back(100 * (p.mean_error - p.sd_error));
+      line.y_high.push_back(100 * (p.mean_error + p.sd_error));
+    }
+    for (auto& [d, line] : by_dims) plot.series.push_back(line);
+  }
+  report::write_line_plot(plot, png);
+}
+
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,169 @@
+// `nibrig space predict|evaluate|embed`: a fitted space answering questions about triplets and
+// tools, including tools placed from their descriptors alone.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+#include "model/space/prediction_scores.hpp"
+#include "ui/cli/output.hpp"
+#include "ui/cli/space_commands.hpp"
+#include "ui/cli/space_figures.hpp"
+#include "ui/cli/space_inputs.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace space = model::space;
+
+namespace {
+
+constexpr int kUncertaintySamples = 2000;  // sd of p to about ±2 % of itself
+
+// A name as one CSV field: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+struct Prediction {
+  double p = 0.0, sd = 0.0;
+};
+
+std::vector<Prediction> predict(const SpaceQueryOptions& o, const space::SpaceFile& s,
+                                const model::io::TripletSet& queries, SpaceLocator& locator) {
+  std::mt19937_64 generator(1);
+  std::vector<Prediction> out;
+  for (const auto& t : queries.triplets) {
+    const auto& r = locator.locate(queries.stimuli[t.reference], o.queries);
+    const auto& a = locator.locate(queries.stimuli[t.a], o.queries);
+    const auto& b = locator.locate(queries.stimuli[t.b], o.queries);
+    if (r.covariance.isZero(0.0) && a.covariance.isZero(0.0) && b.covariance.isZero(0.0)) {
+      Eigen::MatrixXd q(r.mean.size(), 3);
+      q << r.mean, a.mean, b.mean;
+      out.push_back({space::probability_first(q, 0, 1, 2, s.scale), 0.0});
+    } else {
+      const auto u = space::uncertain_probability_first(r, a, b, s.scale, kUncertaintySamples,
+                                                        generator);
+      out.push_back({u.mean, u.sd});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void run_space_predict(const SpaceQueryOptions& o) {
+  const space::SpaceFile s = space::read_space_file(o.space_file);
+  const model::io::TripletSet queries = model::io::read_triplet_queries(o.queries);
+  SpaceLocator locator(s, o.space_file, o.catalog);
+  const std::vector<Prediction> p = predict(o, s, queries, locator);
+  std::ostringstream csv;
+  csv << "reference,a,b,p_first" << (o.catalog.empty() ? "" : ",p_first_sd") << '\n'
+      << std::setprecision(10);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto& t = queries.triplets[i];
+    csv << csv_field(queries.stimuli[t.reference]) << ',' << csv_field(queries.stimuli[t.a]) << ','
+        << csv_field(queries.stimuli[t.b]) << ',' << p[i].p;
+    if (!o.catalog.empty()) csv << ',' << p[i].sd;
+    csv << '\n';
+  }
+  if (o.output.empty()) {
+    std::cout << csv.str();
+  } else {
+    write_text_file(o.output, csv.str());
+    spdlog::info("wrote {} predictions to {}", p.size(), o.output.string());
+  }
+}
+
+void run_space_evaluate(const SpaceQueryOptions& o) {
+  const space::SpaceFile s = space::read_space_file(o.space_file);
+  const model::io::TripletSet judged = model::io::read_triplets(o.queries);
+  SpaceLocator locator(s, o.space_file, o.catalog);
+  const std::vector<Prediction> p = predict(o, s, judged, locator);
+  std::vector<double> mean;
+  for (const auto& x : p) mean.push_back(x.p);
+  const space::PredictionScores scores = space::score_predictions(mean, judged.triplets);
+  std::size_t placed = 0;
+  for (const auto& name : judged.stimuli) placed += locator.placed(name);
+  std::cout << fmt::format("{} triplets, {} responses of {}; {} stimuli placed from descriptors\n",
+                           scores.triplets, scores.responses, o.queries.filename().string(),
+                           placed);
+  std::cout << fmt::format(
+      "majority answer predicted: {:g} of {:g} ({:.1f} %), z = {:.2f}, one-sided p = {:.2g}\n",
+      scores.majority.agreements, scores.majority.trials, 100 * scores.majority.fraction,
+      scores.majority.z, scores.majority.p_value);
+  std::cout << fmt::format("individual answers predicted: {:.1f} % of {}\n",
+                           100 * scores.individual.fraction, scores.responses);
+  std::cout << fmt::format("mean |p_predicted - p_observed| = {:.1f} %\n",
+                           100 * scores.mean_absolute_error);
+  if (scores.probability_correlation)
+    std::cout << fmt::format("Pearson r (predicted vs observed p) = {:.3f}, p = {:.2g}\n",
+                             scores.probability_correlation->r,
+                             scores.probability_correlation->p_value);
+  if (!o.output.empty()) {
+    nlohmann::json j = {{"triplets", scores.triplets},
+                        {"responses", scores.responses},
+                        {"placed_from_descriptors", placed},
+                        {"majority_agreements", scores.majority.agreements},
+                        {"majority_trials", scores.majority.trials},
+                        {"majority_z", scores.majority.z},
+                        {"majority_p_value", scores.majority.p_value},
+                        {"individual_agreement", scores.individual.fraction},
+                        {"mean_absolute_error", scores.mean_absolute_error}};
+    if (scores.probability_correlation) {
+      j["pearson_r"] = scores.probability_correlation->r;
+      j["pearson_p_value"] = scores.probability_correlation->p_value;
+    }
+    write_json_file(o.output, j);
+  }
+}
+
+void run_space_embed(const SpaceEmbedOptions& o) {
+  const space::SpaceFile s = space::read_space_file(o.space_file);
+  if (!s.descriptor_map)
+    throw std::invalid_argument(o.space_file.string() +
+                                " has no descriptor map: fit it with --descriptors catalog.json");
+  const model::io::Catalog catalog = model::io::read_catalog(o.catalog);
+  const space::DescriptorTable table =
+      space::descriptors_of_catalog(catalog, o.catalog, s.descriptor_map->descriptor_names.size());
+  if (table.names != s.descriptor_map->descriptor_names)
+    throw std::invalid_argument(o.catalog.string() + " does not provide the descriptors of " +
+                                o.space_file.string());
+  std::vector<PlacedTool> placed;
+  std::ostringstream csv;
+  const auto dims = s.coordinates.rows();
+  csv << "stimulus,judged";
+  for (Eigen::Index d = 0; d < dims; ++d) csv << ",axis" << d + 1 << ",axis" << d + 1 << "_sd";
+  csv << '\n' << std::setprecision(8);
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const bool judged =
+        std::find(s.stimuli.begin(), s.stimuli.end(), table.rows[i]) != s.stimuli.end();
+    const space::Placement p =
+        space::place_from_descriptors(*s.descriptor_map, table.values.row(static_cast<Eigen::Index>(i)).transpose());
+    csv << csv_field(table.rows[i]) << ',' << (judged ? "yes" : "no");
+    for (Eigen::Index d = 0; d < dims; ++d)
+      csv << ',' << p.mean(d) << ',' << std::sqrt(p.covariance(d, d));
+    csv << '\n';
+    if (!judged) placed.push_back({table.rows[i], p});
+  }
+  std::cout << fmt::format("{} catalog pairings placed ({} of them judged in {})\n",
+                           table.rows.size(), table.rows.size() - placed.size(),
+                           o.space_file.filename().string());
+  if (o.output.empty()) {
+    std::cout << csv.str();
+  } else {
+    write_text_file(o.output, csv.str());
+    std::cout << "-> " << o.output.string() << "\n";
+  }
+  if (!o.plot.empty()) {
+    write_space_plot(s, placed, "Tools placed from their descriptors", o.plot);
+    std::cout << "-> " << o.plot.string() << "\n";
+  }
+}
+
+}  // namespace nibrig::ui::cli
