@@ -202,11 +202,10 @@ std::vector<io::Triplet> two_stage_counts(const std::vector<io::Triplet>& stage_
       it->second.count_b += canonical.count_b;
     }
   }
-  const std::size_t repeated = selected.size();
   std::vector<io::Triplet> kept;
   for (const io::Triplet& t : stage_one) {
     if (is_tie(t, rule) || t.count_a + t.count_b == 0) continue;
-    if (repeated && selected.count(key_of(t.reference, t.a, t.b))) continue;
+    if (selected.count(key_of(t.reference, t.a, t.b))) continue;
     kept.push_back(t);
   }
   std::vector<io::Triplet> merged;
