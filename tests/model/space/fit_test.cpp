@@ -6,27 +6,21 @@
 #include <random>
 
 #include "model/space/procrustes.hpp"
+#include "model/space/simulated_observer.hpp"
+#include "model/space/trial_plan.hpp"
 
 namespace nibrig::model::space {
 namespace {
 
-// Every triplet of `truth` judged `judgments` times by a simulated Thurstonian observer.
+// Every triplet of `truth` judged `judgments` times by the simulated Thurstonian observer.
 SpaceProblem simulated_study(const Eigen::MatrixXd& truth, int judgments, unsigned seed) {
-  std::mt19937 generator(seed);
+  const SimulatedObserver observer(truth);
+  std::mt19937_64 generator(seed);
   SpaceProblem p;
   p.dims = static_cast<std::size_t>(truth.rows());
   p.stimuli = static_cast<std::size_t>(truth.cols());
-  for (std::size_t r = 0; r < p.stimuli; ++r)
-    for (std::size_t a = 0; a < p.stimuli; ++a)
-      for (std::size_t b = a + 1; b < p.stimuli; ++b) {
-        if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(judgments, probability_first(truth, r, a, b));
-        io::Triplet t;
-        t.reference = r, t.a = a, t.b = b;
-        t.count_a = observer(generator);
-        t.count_b = judgments - t.count_a;
-        p.triplets.push_back(t);
-      }
+  const std::vector<Trial> trials = plan_all_triplets(p.stimuli, judgments, generator());
+  p.triplets = merge_trials(trials, observer.answer(trials, generator));
   return p;
 }
 

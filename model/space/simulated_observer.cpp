@@ -1,0 +1,70 @@
+#include "model/space/simulated_observer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace nibrig::model::space {
+
+double rms_distance_difference(const Eigen::MatrixXd& q) {
+  const Eigen::Index n = q.cols();
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index a = 0; a < n; ++a)
+      for (Eigen::Index b = a + 1; b < n; ++b) {
+        if (a == r || b == r) continue;
+        const double d = (q.col(a) - q.col(r)).norm() - (q.col(b) - q.col(r)).norm();
+        sum += d * d;
+        ++count;
+      }
+  return count ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+Eigen::MatrixXd random_space(std::size_t dims, std::size_t stimuli, std::mt19937_64& generator,
+                             double rms_difference) {
+  if (dims < 1) throw std::invalid_argument("a random space needs at least one dimension");
+  if (stimuli < 3) throw std::invalid_argument("a random space needs at least 3 stimuli");
+  if (!(rms_difference > 0) || !std::isfinite(rms_difference))
+    throw std::invalid_argument("the RMS distance difference of a random space must be positive");
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::MatrixXd q(static_cast<Eigen::Index>(dims), static_cast<Eigen::Index>(stimuli));
+  for (Eigen::Index i = 0; i < q.size(); ++i) q.data()[i] = normal(generator);
+  const double current = rms_distance_difference(q);
+  // Only a degenerate draw (all points equidistant) has no difference at all; never in practice.
+  if (!(current > 0)) throw std::runtime_error("random space: degenerate draw");
+  return q * (rms_difference / current);
+}
+
+SimulatedObserver::SimulatedObserver(Eigen::MatrixXd truth, double scale)
+    : truth_(std::move(truth)), scale_(scale) {
+  if (truth_.cols() < 3 || truth_.rows() < 1)
+    throw std::invalid_argument("a simulated observer needs a space with at least 3 stimuli");
+  if (!(scale_ > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+}
+
+double SimulatedObserver::probability_first(std::size_t reference, std::size_t a,
+                                            std::size_t b) const {
+  return space::probability_first(truth_, reference, a, b, scale_);
+}
+
+bool SimulatedObserver::chooses_first(std::size_t reference, std::size_t a, std::size_t b,
+                                      std::mt19937_64& generator) const {
+  return std::bernoulli_distribution(probability_first(reference, a, b))(generator);
+}
+
+std::vector<Choice> SimulatedObserver::answer(const std::vector<Trial>& trials,
+                                              std::mt19937_64& generator) const {
+  const auto n = static_cast<std::size_t>(truth_.cols());
+  std::vector<Choice> choices;
+  choices.reserve(trials.size());
+  for (const Trial& t : trials) {
+    if (t.reference >= n || t.left >= n || t.right >= n)
+      throw std::invalid_argument("simulated observer: a trial names a stimulus beyond the " +
+                                  std::to_string(n) + " of the space");
+    choices.push_back(chooses_first(t.reference, t.left, t.right, generator) ? Choice::left
+                                                                             : Choice::right);
+  }
+  return choices;
+}
+
+}  // namespace nibrig::model::space
