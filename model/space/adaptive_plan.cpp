@@ -181,12 +181,17 @@ std::vector<AdaptiveCheckpoint> run_adaptive_study(const SimulatedObserver& obse
   SpaceProblem problem;
   problem.stimuli = n;
   problem.dims = dims;
+  // The fit maximises the posterior whose Laplace approximation the ensemble samples: without the
+  // prior, a handful of single answers is often explained perfectly by some configuration and the
+  // likelihood alone would stretch it without bound.
+  problem.prior_sd = options.ensemble.prior_sd;
   FitOptions fit_options = options.fit;
   std::vector<AdaptiveCheckpoint> reported;
   for (int round = 1;; ++round) {
     problem.triplets = merge_trials(trials, choices);
     fit_options.seed = options.fit.seed + 7919u * static_cast<unsigned>(round);
     const FitResult fit = fit_space(problem, fit_options);
+    fit_options.initial = fit.coordinates;  // the next round's first start: one batch away
     const std::size_t next = checkpoints[reported.size()];
     if (trials.size() >= next) {
       reported.push_back({trials.size(), fit.coordinates, problem.triplets});

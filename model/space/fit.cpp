@@ -79,16 +79,25 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
   param.max_iterations = options.max_iterations;
   LBFGSpp::LBFGSSolver<double> solver(param);
   StartResult result;
-  double fx = 0.0;
-  try {
-    result.iterations = solver.minimize(function, x, fx);
-  } catch (const std::exception&) {
-    // Kept: the best point evaluated so far (above).
+  // A line search that gives up at a kink (two stimuli crossing, common in 1-D) has stopped short
+  // of the optimum, not reached it: restart the quasi-Newton memory from the best point while that
+  // still improves the objective.
+  constexpr int kMaxRestarts = 50;
+  for (int restart = 0; restart <= kMaxRestarts; ++restart) {
+    const double before = best_f;
+    double fx = 0.0;
+    try {
+      result.iterations += solver.minimize(function, x, fx);
+      break;  // converged
+    } catch (const std::exception&) {
+      x = best_x;  // the best point evaluated so far (above)
+    }
+    if (std::isfinite(before) && !(best_f < before - 1e-10 * std::abs(before))) break;
   }
   if (!std::isfinite(best_f))
     throw std::runtime_error("the objective is not finite at start " + std::to_string(start));
   x = best_x;
-  fx = best_f;
+  const double fx = best_f;
   result.coordinates = to_coordinates(x, problem.dims, problem.stimuli, options.pinned);
   result.objective = fx;
   return result;

@@ -77,6 +77,8 @@ void validate(const SpaceProblem& p) {
   if (!(p.lambda >= 0) || !std::isfinite(p.lambda))
     throw std::invalid_argument("lambda must be zero or positive");
   if (!(p.scale > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+  if (!(p.prior_sd >= 0) || !std::isfinite(p.prior_sd))
+    throw std::invalid_argument("the coordinate prior's sd must be zero (none) or positive");
   for (std::size_t i = 0; i < p.triplets.size(); ++i) {
     const auto& t = p.triplets[i];
     if (t.reference >= p.stimuli || t.a >= p.stimuli || t.b >= p.stimuli)
@@ -110,6 +112,11 @@ double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixX
   if (gradient) gradient->setZero(q.rows(), q.cols());
   double value = likelihood_part(p, q, gradient);
   if (p.lambda > 0) value += p.lambda * correlation_part(p, q, gradient, p.lambda);
+  if (p.prior_sd > 0) {
+    const double precision = 1.0 / (p.prior_sd * p.prior_sd);
+    value += 0.5 * precision * q.squaredNorm();
+    if (gradient) *gradient += precision * q;
+  }
   return value;
 }
 

@@ -23,11 +23,17 @@ struct SpaceProblem {
   Eigen::MatrixXd descriptors;
   double lambda = 0.0;
   double scale = kThurstoneScale;
+  // 0: none, the objective of Eq. 6 exactly. > 0: a Gaussian prior N(0, prior_sd²) on every
+  // coordinate adds Σ q²/(2·prior_sd²). With few judgments some configuration may explain every
+  // answer; the likelihood then has no maximum and a fit stretches without bound (seen with one
+  // answer per triplet in the adaptive study). A prior far wider than the space leaves
+  // well-determined fits unchanged.
+  double prior_sd = 0.0;
 };
 
 // Throws std::invalid_argument naming the triplet or field: an index out of range, a reference
 // equal to a candidate, a negative count, descriptors of the wrong shape or with a constant column
-// (no correlation exists), λ < 0, fewer stimuli than dims + 1.
+// (no correlation exists), λ < 0, a negative prior_sd, fewer stimuli than dims + 1.
 void validate(const SpaceProblem& problem);
 
 // Objective at coordinates Q (dims × stimuli, one column per stimulus); when `gradient` is given it

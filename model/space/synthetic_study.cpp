@@ -1,13 +1,11 @@
 #include "model/space/synthetic_study.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <stdexcept>
-#include <thread>
 
 #include "model/space/fit.hpp"
+#include "model/space/parallel_for.hpp"
 #include "model/space/procrustes.hpp"
 
 namespace nibrig::model::space {
@@ -27,29 +25,6 @@ std::uint64_t splitmix64(std::uint64_t x) {
 // thread runs it or in what order.
 std::uint64_t job_seed(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
   return splitmix64(splitmix64(splitmix64(seed) ^ a) ^ (b * 0x9E3779B97F4A7C15ull));
-}
-
-template <typename Job>
-void parallel_for(std::size_t count, unsigned threads, const Job& job) {
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> failures(count);
-  auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      try {
-        job(i);
-      } catch (...) {  // rethrown on the calling thread after every worker has joined
-        failures[i] = std::current_exception();
-      }
-    }
-  };
-  const std::size_t wanted = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t used = std::max<std::size_t>(1, std::min(wanted, count));
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < used; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
 }
 
 Eigen::MatrixXd fit_counts(const std::vector<io::Triplet>& counts, std::size_t dims,

@@ -137,7 +137,7 @@ TEST(AdaptivePlan, LoopReportsEachCheckpointAndImprovesWithTrials) {
     late += probability_error(checkpoints[1].coordinates, observer.truth()) / runs;
   }
   // Eight times the answers: the probability error of the fit should at least halve (√8 ≈ 2.8
-  // for pure noise; measured 0.34 → 0.10); averaged over four truths so that one unlucky space
+  // for pure noise; measured 0.21 → 0.08); averaged over four truths so that one unlucky space
   // does not decide.
   EXPECT_LT(late, 0.5 * early) << "error " << early << " at 30 trials, " << late << " at 240";
 }
