@@ -1,5 +1,6 @@
 // `nibrig space ...`: registers the perceptual-space subcommands; the work is in
-// space_fit_command.cpp, space_validate_command.cpp and space_query_commands.cpp.
+// space_fit_command.cpp, space_validate_command.cpp, space_query_commands.cpp and
+// space_design_commands.cpp.
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/space_commands.hpp"
@@ -120,6 +121,76 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
   });
 }
 
+void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) {
+  auto s = std::make_shared<SpaceSynthOptions>();
+  auto* synth = cmd.add_subcommand(
+      "synth", "Synthetic validation (Fig. 10): recover random spaces from simulated experiments");
+  synth->footer(
+      "Each trial: a random truth, a Thurstonian observer, the paper's two-stage experiment (half "
+      "the\n"
+      "triplets twice, 60 ties ten times), a fit, alignment by Procrustes. --compare also runs the\n"
+      "adaptive design (expected information gain) against two-stage at equal numbers of trials.");
+  synth->add_option("--dims", s->dims, "Dimensions (default 1,2,3,4,5)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10));
+  synth->add_option("--trials", s->trials, "Random truths per dimension (default 100)")
+      ->check(CLI::Range(1, 100000));
+  synth->add_option("--stimuli", s->stimuli, "Stimuli (default 15)")->check(CLI::Range(3, 200));
+  synth->add_option("--starts", s->starts, "Fit starts (default 4)")->check(CLI::Range(1, 1000));
+  synth->add_option("--seed", s->seed, "Seed (default 1)");
+  synth->add_flag("--all-judgments", s->all_judgments,
+                  "Fit every answer, not the paper's selection (stage 2 + non-tied stage 1)");
+  synth->add_flag("--compare", s->compare, "Also compare adaptive and two-stage designs");
+  synth->add_option("--budgets", s->budgets, "Trial budgets compared (default 500,1000,1966)")
+      ->delimiter(',');
+  synth->add_option("--compare-trials", s->compare_trials, "Truths per budget (default 20)")
+      ->check(CLI::Range(1, 100000));
+  synth->add_option("--json", s->json, "Write the results as JSON");
+  synth->add_option("--report", s->report, "Folder for synthetic.json and a chart");
+  synth->callback([s, global] {
+    configure_logging(global->verbosity);
+    run_space_synth(*s, worker_threads(*global));
+  });
+
+  auto p = std::make_shared<SpacePlanOptions>();
+  auto* plan = cmd.add_subcommand("plan", "Trial lists of the two-stage experiment (Sec. 4.2)");
+  plan->footer(
+      "Stage 1: INPUT is a text file of stimulus names, one per line; a random FRACTION of all\n"
+      "triplets, each REPETITIONS times (default 2), random order, left/right balanced. Stage 2: "
+      "INPUT\n"
+      "is the answered stage-1 list; its ties (|count_a - count_b| <= 1) are repeated (default 10\n"
+      "times, at most --max-triplets of them). Lists: trial,stage,reference,left,right,chosen.");
+  plan->add_option("input", p->input, "Stimulus list (stage 1) or answered stage-1 list")
+      ->required()
+      ->check(CLI::ExistingFile);
+  plan->add_option("--stage", p->stage, "1 or 2 (default 1)")->check(CLI::Range(1, 2));
+  plan->add_option("--repetitions", p->repetitions, "Presentations per triplet")
+      ->check(CLI::Range(1, 1000));
+  plan->add_option("--fraction", p->fraction, "Share of all triplets in stage 1 (default 0.5)")
+      ->check(CLI::Range(1e-9, 1.0));
+  plan->add_option("--max-triplets", p->max_triplets, "Ties repeated in stage 2 (default 60)");
+  plan->add_option("--seed", p->seed, "Seed (default 1)");
+  plan->add_option("-o,--output", p->output, "Trial list to write")->required();
+  plan->callback([p, global] {
+    configure_logging(global->verbosity);
+    run_space_plan(*p);
+  });
+
+  auto m = std::make_shared<SpaceMergeOptions>();
+  auto* merge =
+      cmd.add_subcommand("merge", "Answered trial lists -> judgments (reference,a,b,count_a,count_b)");
+  merge->add_option("lists", m->lists, "Answered lists: stage 1, then stage 2")
+      ->required()
+      ->check(CLI::ExistingFile);
+  merge->add_flag("--all-judgments", m->all_judgments,
+                  "Keep every answer (default: stage 2 and the stage-1 triplets that were no tie)");
+  merge->add_option("-o,--output", m->output, "Judgments CSV to write")->required();
+  merge->callback([m, global] {
+    configure_logging(global->verbosity);
+    run_space_merge(*m);
+  });
+}
+
 }  // namespace
 
 void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
@@ -134,6 +205,7 @@ void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> globa
   add_fit(*cmd, global);
   add_validate(*cmd, global);
   add_queries(*cmd, global);
+  add_design(*cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

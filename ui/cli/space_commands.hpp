@@ -40,3 +40,37 @@ struct SpaceEmbedOptions {
 void run_space_embed(const SpaceEmbedOptions& options);
 
 }  // namespace nibrig::ui::cli
+
+namespace nibrig::ui::cli {
+
+struct SpaceSynthOptions {
+  std::vector<std::size_t> dims{1, 2, 3, 4, 5};
+  std::size_t trials = 100, stimuli = 15;
+  int starts = 4;
+  unsigned seed = 1;
+  bool all_judgments = false;  // fit every answer instead of the paper's selection
+  bool compare = false;        // adaptive vs two-stage at several budgets
+  std::vector<std::size_t> budgets{500, 1000, 1966};
+  std::size_t compare_trials = 20;
+  std::filesystem::path json, report;
+};
+void run_space_synth(const SpaceSynthOptions& options, unsigned threads);
+
+struct SpacePlanOptions {
+  std::filesystem::path input, output;  // stage 1: stimulus list; stage 2: answered stage-1 list
+  int stage = 1;
+  int repetitions = 0;  // 0: the paper's (2 in stage 1, 10 in stage 2)
+  double fraction = 0.5;
+  std::size_t max_triplets = 60;
+  unsigned seed = 1;
+};
+void run_space_plan(const SpacePlanOptions& options);
+
+struct SpaceMergeOptions {
+  std::vector<std::filesystem::path> lists;  // answered trial lists (stage 1, then stage 2)
+  std::filesystem::path output;
+  bool all_judgments = false;
+};
+void run_space_merge(const SpaceMergeOptions& options);
+
+}  // namespace nibrig::ui::cli
