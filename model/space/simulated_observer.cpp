@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace nibrig::model::space {
 
@@ -33,6 +34,22 @@ Eigen::MatrixXd random_space(std::size_t dims, std::size_t stimuli, std::mt19937
   // Only a degenerate draw (all points equidistant) has no difference at all; never in practice.
   if (!(current > 0)) throw std::runtime_error("random space: degenerate draw");
   return q * (rms_difference / current);
+}
+
+Eigen::MatrixXd space_from_descriptors(const Eigen::MatrixXd& descriptors, double rms_difference) {
+  if (descriptors.rows() < 3 || descriptors.cols() < 1)
+    throw std::invalid_argument("a space from descriptors needs at least 3 stimuli and a descriptor");
+  if (!descriptors.allFinite()) throw std::invalid_argument("descriptors must be finite");
+  const Eigen::RowVectorXd mean = descriptors.colwise().mean();
+  Eigen::MatrixXd q = (descriptors.rowwise() - mean).transpose();  // descriptors × stimuli
+  for (Eigen::Index d = 0; d < q.rows(); ++d) {
+    const double sd = std::sqrt(q.row(d).squaredNorm() / static_cast<double>(q.cols() - 1));
+    if (!(sd > 0))
+      throw std::invalid_argument("descriptor " + std::to_string(d) +
+                                  " is the same for every stimulus");
+    q.row(d) /= sd;
+  }
+  return q * (rms_difference / rms_distance_difference(q));
 }
 
 SimulatedObserver::SimulatedObserver(Eigen::MatrixXd truth, double scale)

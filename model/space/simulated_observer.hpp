@@ -31,6 +31,14 @@ inline constexpr double kDefaultTruthDifference = 1.5;
 Eigen::MatrixXd random_space(std::size_t dims, std::size_t stimuli, std::mt19937_64& generator,
                              double rms_difference = kDefaultTruthDifference);
 
+// A ground truth in which perception follows the physical descriptors (stimuli × descriptors):
+// each descriptor standardised (mean 0, sd 1), one per axis, then scaled as a whole to the given
+// RMS distance difference. What `nibrig demo` uses to simulate an observer of the catalog's tools
+// when no human judgments are at hand. Throws std::invalid_argument for fewer than 3 stimuli, no
+// descriptor, a constant or non-finite descriptor.
+Eigen::MatrixXd space_from_descriptors(const Eigen::MatrixXd& descriptors,
+                                       double rms_difference = kDefaultTruthDifference);
+
 class SimulatedObserver {
  public:
   // Throws std::invalid_argument for a space with fewer than 3 stimuli or a non-positive scale.

@@ -13,6 +13,7 @@
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/demo_mechanics.hpp"
+#include "ui/cli/demo_space.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
@@ -56,7 +57,7 @@ std::string descriptors_csv(const model::io::Catalog& catalog, int max_bands) {
   return csv.str();
 }
 
-void demo(const DemoOptions& options) {
+void demo(const DemoOptions& options, unsigned threads) {
   constexpr int max_bands = 5;
   const auto catalog_path =
       options.catalog.empty() ? asset("default_catalog.json") : options.catalog;
@@ -128,6 +129,7 @@ void demo(const DemoOptions& options) {
           << "  report: " << options.output.string()
           << "/ (catalog.json, descriptors.csv, friction.png, spectra/*.png)\n";
   summary << run_mechanics_demo(options.output);
+  summary << run_space_demo(catalog, catalog_path, options.output, threads);
   write_text_file(options.output / "SUMMARY.txt", summary.str());
   std::cout << summary.str();
 }
@@ -144,13 +146,15 @@ void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global
       "and friction derived from the paper's recordings) and writes a report folder with the\n"
       "catalog, a descriptor table, the friction chart and a spectrum figure per pair. Then the\n"
       "mechanics: a cantilever against Euler-Bernoulli under mesh refinement, the paper's bar\n"
-      "with a ring-down fit, and the frequency responses of the bundled stylus designs.");
+      "with a ring-down fit, and the frequency responses of the bundled stylus designs. Last, a\n"
+      "perceptual space from a SIMULATED observer (no human judgments of drawing tools are\n"
+      "bundled): the two-stage experiment, a fit with bootstrap regions, every tool placed.");
   cmd->add_option("-o,--output", options->output, "Report folder")->capture_default_str();
   cmd->add_option("--catalog", options->catalog, "Use this catalog instead of the bundled one")
       ->check(CLI::ExistingFile);
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
-    demo(*options);
+    demo(*options, worker_threads(*global));
   });
 }
 

@@ -62,3 +62,23 @@ TEST(SimulatedObserver, RejectsWhatItCannotAnswer) {
 
 }  // namespace
 }  // namespace nibrig::model::space
+
+namespace nibrig::model::space {
+namespace {
+
+TEST(SimulatedObserver, ASpaceFromDescriptorsKeepsTheirStandardisedShape) {
+  Eigen::MatrixXd d(4, 2);
+  d << 0.1, 10, 0.2, 30, 0.3, 20, 0.4, 40;
+  const Eigen::MatrixXd q = space_from_descriptors(d, 1.5);
+  EXPECT_NEAR(rms_distance_difference(q), 1.5, 1e-12);
+  // Axis 1 is descriptor 1 up to a positive affine map: equal steps stay equal.
+  EXPECT_NEAR(q(0, 1) - q(0, 0), q(0, 3) - q(0, 2), 1e-12);
+  // Both axes are standardised before the common scale: their spreads are equal.
+  const auto spread = [&](Eigen::Index r) { return (q.row(r).array() - q.row(r).mean()).matrix().norm(); };
+  EXPECT_NEAR(spread(0), spread(1), 1e-12);
+  d.col(1).setConstant(2.0);
+  EXPECT_THROW(space_from_descriptors(d), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace nibrig::model::space

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "model/io/triplets.hpp"
+#include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -123,6 +125,18 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   EXPECT_TRUE(std::filesystem::exists(out / "demo" / "mechanics" / "cantilever_convergence.csv"));
   EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "paper_bar_ring_down.png"));
   EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "stylus_frequency_responses.png"));
+  // The space: a simulated-observer study that says so, its space, judgments and figures.
+  EXPECT_NE(text.find("SIMULATED observer"), std::string::npos) << text;
+  const auto space = model::space::read_space_file(out / "demo" / "space" / "space.json");
+  EXPECT_EQ(space.stimuli.size(), 15u);
+  EXPECT_EQ(space.regions.size(), 15u);
+  EXPECT_TRUE(space.descriptor_map.has_value());
+  EXPECT_NE(space.judgments.find("SIMULATED"), std::string::npos);
+  EXPECT_GT(model::io::read_triplet_csv(out / "demo" / "space" / "judgments.csv").triplets.size(),
+            600u);  // about half of the 1365 triplets were presented in stage 1
+  EXPECT_TRUE(is_png(out / "demo" / "space" / "space.png"));
+  EXPECT_TRUE(is_png(out / "demo" / "space" / "placed_tools.png"));
+  EXPECT_TRUE(is_png(out / "demo" / "space" / "dimension_sweep.png"));
 }
 
 }  // namespace
