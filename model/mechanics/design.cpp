@@ -248,11 +248,16 @@ TetMesh mesh_design(const Design& design) {
         "design '" + design.name +
         "': the mesh has no clamped region (no node in the clamp box or \"clamp\" group); "
         "an unclamped stylus would float freely");
-  for (const auto& region : mesh.region_names)
-    if (!design.region_materials.count(region))
-      throw std::invalid_argument("design '" + design.name + "': region '" + region +
-                                  "' of the mesh has no material");
+  for (const auto& region : mesh.region_names) material_of_region(design, region);
   return mesh;
+}
+
+const std::string& material_of_region(const Design& design, const std::string& region) {
+  const auto it = design.region_materials.find(region);
+  if (it != design.region_materials.end()) return it->second;
+  if (design.region_materials.size() == 1) return design.region_materials.begin()->second;
+  throw std::invalid_argument("design '" + design.name + "': mesh region '" + region +
+                              "' has no material, and the design names more than one");
 }
 
 }  // namespace nibrig::model::mechanics

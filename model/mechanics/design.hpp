@@ -65,4 +65,9 @@ Design read_design(const std::filesystem::path& file, const MaterialTable& mater
 // or a region has no material).
 TetMesh mesh_design(const Design& design);
 
+// The material of a mesh region: as the design names it, or, for a region the design does not
+// name, the design's only material (a mesh file's regions are known only once it is meshed).
+// Throws std::invalid_argument naming the design and region when the design names several.
+const std::string& material_of_region(const Design& design, const std::string& region);
+
 }  // namespace nibrig::model::mechanics

@@ -55,7 +55,7 @@ DesignModel build_design_model(const Design& design, const MaterialTable& materi
 
   std::vector<IsotropicMaterial> elastic;
   for (const auto& region : model.mesh.region_names) {
-    model.region_materials.push_back(materials.find(design.region_materials.at(region)));
+    model.region_materials.push_back(materials.find(material_of_region(design, region)));
     elastic.push_back(elastic_part(model.region_materials.back()));
   }
   start = std::chrono::steady_clock::now();

@@ -32,7 +32,8 @@ struct DesignModel {
 std::pair<RayleighDamping, std::string> design_damping(const Design& design,
                                                        const MaterialTable& materials);
 
-// Throws what the stages throw (bad shape, no clamp, unknown material, tip or sensor outside the
+// Regions get their materials by material_of_region (design.hpp). Throws what the stages throw (bad shape, no clamp, unknown
+// material, an unnamed region when the design names several materials, tip or sensor outside the
 // body, modal solver failure), each naming the design.
 DesignModel build_design_model(const Design& design, const MaterialTable& materials);
 

@@ -110,13 +110,8 @@ mech::Design design_from(const DesignOptions& o, const mech::MaterialTable& mate
   return design;
 }
 
-// A mesh file's regions are only known after meshing: give every region the one material.
-mech::DesignModel build(mech::Design design, const mech::MaterialTable& materials) {
-  if (std::holds_alternative<mech::MeshFileShape>(design.shape)) {
-    const mech::TetMesh probe_mesh = mech::mesh_design(design);
-    const std::string material = design.region_materials.begin()->second;
-    for (const auto& region : probe_mesh.region_names) design.region_materials[region] = material;
-  }
+// A mesh file's regions take the design's one material (build_design_model).
+mech::DesignModel build(const mech::Design& design, const mech::MaterialTable& materials) {
   spdlog::info("{}: meshing at {:.2f} mm and solving for {} modes", design.name,
                design.mesh_size * 1e3, design.modes);
   mech::DesignModel model = mech::build_design_model(design, materials);

@@ -59,6 +59,18 @@ TEST(DesignModel, MaterialWithoutDampingGivesUndampedModesAndSaysSo) {
   EXPECT_EQ(model.modal.zeta[0], 0.0);
 }
 
+TEST(DesignModel, AnUnnamedRegionTakesTheOnlyMaterialAndIsNamedWhenThereAreSeveral) {
+  // A mesh file's regions are known only after meshing; the one material covers them.
+  Design design = paper_bar();
+  design.modes = 2;
+  design.region_materials = {{"whatever", "steel"}};
+  EXPECT_EQ(build_design_model(design, bundled_materials()).region_materials.at(0).name, "steel");
+  design.region_materials = {{"nib", "steel"}, {"shaft", "VeroClear"}};
+  EXPECT_THAT([&] { build_design_model(design, bundled_materials()); },
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  ::testing::AllOf(HasSubstr("region 'body'"), HasSubstr("more than one"))));
+}
+
 TEST(DesignModel, RingDownFitRecoversThePapersVeroClearFromASimulatedBar) {
   // The trace comes from a bar computed at the paper's values; the fit starts from a model at
   // 1 GPa computed separately, so the E-scaling it relies on is checked against a real re-solve.
