@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <complex>
 #include <numeric>
 #include <stdexcept>
@@ -266,6 +267,16 @@ RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& op
   fit.first_mode_damping_ratio = fitted.zeta.front();
   fit.evaluations = evaluations;
   return fit;
+}
+
+void add_relative_noise(std::vector<double>& trace, double relative_rms, unsigned seed) {
+  if (trace.empty()) return;
+  double sum = 0.0;
+  for (double a : trace) sum += a * a;
+  const double rms = std::sqrt(sum / static_cast<double>(trace.size()));
+  std::mt19937 generator(seed);
+  std::normal_distribution<double> noise(0.0, relative_rms * rms);
+  for (double& a : trace) a += noise(generator);
 }
 
 }  // namespace nibrig::model::mechanics

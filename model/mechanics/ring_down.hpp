@@ -21,6 +21,10 @@ namespace nibrig::model::mechanics {
 std::vector<double> simulate_release(const ModalModel& model, double preload, double sample_rate,
                                      std::size_t samples, double release_time = 0.0);
 
+// Adds Gaussian sensor noise of `relative_rms` times the trace's RMS (seeded): how a simulated trace
+// stands in for a measured one where the paper publishes values but not its recording.
+void add_relative_noise(std::vector<double>& trace, double relative_rms, unsigned seed);
+
 // The same body at another stiffness: K scales with E and M does not, so ω_i scales with
 // √(modulus_ratio) while the mass-normalised shapes (b_i, c_i) stay; the damping ratios follow
 // from `damping`. For a body of several materials every modulus is scaled by the same ratio.

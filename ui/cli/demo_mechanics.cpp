@@ -93,12 +93,7 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
   const double rate = 1000.0;
   model::io::AccelerationTrace trace{rate,
                                      mech::simulate_release(bar.modal, 0.05, rate, 4000, 0.2)};
-  double rms = 0;
-  for (double a : trace.acceleration_m_s2) rms += a * a;
-  rms = std::sqrt(rms / static_cast<double>(trace.acceleration_m_s2.size()));
-  std::mt19937 generator(2018);
-  std::normal_distribution<double> noise(0.0, 0.03 * rms);
-  for (double& a : trace.acceleration_m_s2) a += noise(generator);
+  mech::add_relative_noise(trace.acceleration_m_s2, 0.03, 2018);
   model::io::write_acceleration_trace(dir / "paper_bar_ring_down_simulated.csv", trace);
 
   mech::Design start = design;

@@ -84,12 +84,7 @@ TEST(DesignModel, RingDownFitRecoversThePapersVeroClearFromASimulatedBar) {
 
   const double rate = 1000.0;
   io::AccelerationTrace trace{rate, simulate_release(truth.modal, 0.05, rate, 4000, 0.25)};
-  double rms = 0;
-  for (double a : trace.acceleration_m_s2) rms += a * a;
-  rms = std::sqrt(rms / static_cast<double>(trace.acceleration_m_s2.size()));
-  std::mt19937 generator(11);
-  std::normal_distribution<double> noise(0.0, 0.03 * rms);
-  for (double& a : trace.acceleration_m_s2) a += noise(generator);
+  add_relative_noise(trace.acceleration_m_s2, 0.03, 11);
 
   RingDownOptions options;
   options.reference_modulus = 2.5e9;
