@@ -1,0 +1,54 @@
+#include "rt/speed_source.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace nibrig::rt {
+
+ConstantSpeed::ConstantSpeed(double speed_m_s) : speed_(speed_m_s) {
+  if (!(speed_m_s >= 0) || !std::isfinite(speed_m_s))
+    throw std::invalid_argument("a constant speed must be finite and not negative");
+}
+
+SweepSpeed::SweepSpeed(double low_m_s, double high_m_s, double period_s)
+    : low_(low_m_s), high_(high_m_s), period_(period_s) {
+  if (!(low_m_s >= 0) || !(high_m_s >= low_m_s) || !std::isfinite(high_m_s))
+    throw std::invalid_argument("a sweep needs 0 <= low <= high speed");
+  if (!(period_s > 0) || !std::isfinite(period_s))
+    throw std::invalid_argument("a sweep needs a positive period");
+}
+
+double SweepSpeed::speed_at(double t) const noexcept {
+  const double phase = t / period_ - std::floor(t / period_);  // [0, 1)
+  const double rise = phase < 0.5 ? 2.0 * phase : 2.0 * (1.0 - phase);
+  return low_ + (high_ - low_) * rise;
+}
+
+TrajectorySpeed::TrajectorySpeed(const model::io::DrawingTrajectory& trajectory) {
+  const auto& t = trajectory.time_s;
+  if (t.size() < 2 || trajectory.speed_m_s.size() != t.size() ||
+      trajectory.touching.size() != t.size())
+    throw std::invalid_argument(trajectory.source.string() +
+                                ": a trajectory needs at least 2 frames with speed and touch");
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (i > 0 && !(t[i] > t[i - 1]))
+      throw std::invalid_argument(trajectory.source.string() + ": frame " + std::to_string(i) +
+                                  " does not come after the one before it");
+    time_.push_back(t[i] - t.front());
+    speed_.push_back(trajectory.touching[i] ? std::max(0.0, trajectory.speed_m_s[i]) : 0.0);
+  }
+}
+
+double TrajectorySpeed::speed_at(double t) const noexcept {
+  const double wrapped = t - duration() * std::floor(t / duration());
+  const auto after = std::upper_bound(time_.begin(), time_.end(), wrapped);
+  if (after == time_.end()) return speed_.back();
+  const auto i = static_cast<std::size_t>(after - time_.begin());
+  if (i == 0) return speed_.front();
+  const double f = (wrapped - time_[i - 1]) / (time_[i] - time_[i - 1]);
+  return speed_[i - 1] + f * (speed_[i] - speed_[i - 1]);
+}
+
+}  // namespace nibrig::rt
