@@ -9,6 +9,10 @@ find_package(Threads REQUIRED)
 find_package(Boost 1.74 REQUIRED)  # header-only: Boost.Math distributions (p-values)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 pkg_check_modules(SNDFILE REQUIRED IMPORTED_TARGET sndfile)
+# RtAudio 5.2 with its JACK, ALSA and PulseAudio back ends; libjack itself only for the tests'
+# loopback clients (playback/ talks to devices through RtAudio alone).
+pkg_check_modules(RTAUDIO REQUIRED IMPORTED_TARGET rtaudio)
+pkg_check_modules(JACK REQUIRED IMPORTED_TARGET jack)
 pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot plplot-c++)
 find_package(Spectra 1.0 REQUIRED PATHS /usr/share/spectra/cmake)
 # Gmsh ships only a header and a shared library in Debian (no CMake or pkg-config file).

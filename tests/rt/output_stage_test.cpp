@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "tests/rt/allocation_counter.hpp"
+#include "tests/support/allocation_counter.hpp"
 
 namespace nibrig::rt {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "model/io/paper_drawing.hpp"
-#include "tests/rt/allocation_counter.hpp"
+#include "tests/support/allocation_counter.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::rt {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <thread>
 
-#include "tests/rt/allocation_counter.hpp"
+#include "tests/support/allocation_counter.hpp"
 
 namespace nibrig::rt {
 namespace {

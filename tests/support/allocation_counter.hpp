@@ -4,9 +4,9 @@
 
 #include <cstddef>
 
-namespace nibrig::rt::testing {
+namespace nibrig::testing {
 
 // Allocations by this thread since it started.
 std::size_t allocations_on_this_thread();
 
-}  // namespace nibrig::rt::testing
+}  // namespace nibrig::testing

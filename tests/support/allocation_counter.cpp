@@ -1,4 +1,4 @@
-#include "tests/rt/allocation_counter.hpp"
+#include "tests/support/allocation_counter.hpp"
 
 #include <cstdlib>
 #include <new>
@@ -25,9 +25,9 @@ void* or_throw(void* p) {
 
 }  // namespace
 
-namespace nibrig::rt::testing {
+namespace nibrig::testing {
 std::size_t allocations_on_this_thread() { return allocations; }
-}  // namespace nibrig::rt::testing
+}  // namespace nibrig::testing
 
 // Replacements of every global allocation and deallocation function for this test binary. All of
 // them, not only the common ones: the libraries loaded beside the tests (through Gmsh) would

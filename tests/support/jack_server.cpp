@@ -1,0 +1,113 @@
+#include "tests/support/jack_server.hpp"
+
+#include <fcntl.h>
+#include <jack/jack.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace nibrig::testing {
+namespace {
+
+std::string unique_name() {
+  static std::atomic<int> counter{0};
+  return "nibrig-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+bool client_can_connect(const std::string& server) {
+  jack_status_t status{};
+  jack_client_t* client = jack_client_open(
+      "nibrig-probe", static_cast<jack_options_t>(JackNoStartServer | JackServerName), &status,
+      server.c_str());
+  if (client == nullptr) return false;
+  jack_client_close(client);
+  return true;
+}
+
+void quiet_jack_errors() {
+  // libjack prints "Cannot connect to server socket" on every failed probe; the log says enough.
+  jack_set_error_function([](const char*) {});
+  jack_set_info_function([](const char*) {});
+}
+
+}  // namespace
+
+JackServer::JackServer(const JackServerSettings& settings)
+    : settings_(settings), name_(unique_name()) {
+  log_file_ = std::filesystem::temp_directory_path() / (name_ + ".log");
+  ::setenv("JACK_DEFAULT_SERVER", name_.c_str(), 1);
+  ::setenv("JACK_NO_AUDIO_RESERVATION", "1", 1);
+  quiet_jack_errors();
+  start();
+}
+
+JackServer::~JackServer() {
+  kill();
+  std::error_code ignored;
+  std::filesystem::remove(log_file_, ignored);
+}
+
+std::string JackServer::log() const {
+  std::ifstream in(log_file_);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void JackServer::start() {
+  if (pid_ > 0) return;
+  const std::string rate = std::to_string(settings_.sample_rate);
+  const std::string period = std::to_string(settings_.period);
+  std::vector<std::string> args = {"jackd", "--no-realtime", "-n", name_,  "-d",
+                                   "dummy", "-r",            rate, "-p", period};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log_file_.c_str(), O_WRONLY | O_CREAT | O_APPEND,
+                                   0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  const int failed = posix_spawnp(&pid_, "jackd", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (failed != 0) {
+    pid_ = -1;
+    throw std::runtime_error("cannot start jackd (is jackd2 installed?)");
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!client_can_connect(name_)) {
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      throw std::runtime_error("jackd exited at start:\n" + log());
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill();
+      throw std::runtime_error("jackd did not accept clients within 10 s:\n" + log());
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+void JackServer::kill() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGKILL);
+  int status = 0;
+  ::waitpid(pid_, &status, 0);
+  pid_ = -1;
+}
+
+}  // namespace nibrig::testing
