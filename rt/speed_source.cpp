@@ -29,7 +29,7 @@ double SweepSpeed::speed_at(double t) const noexcept {
 TrajectorySpeed::TrajectorySpeed(const model::io::DrawingTrajectory& trajectory) {
   const auto& t = trajectory.time_s;
   if (t.size() < 2 || trajectory.speed_m_s.size() != t.size() ||
-      trajectory.touching.size() != t.size())
+      trajectory.touching.size() != t.size() || trajectory.normal_force_N.size() != t.size())
     throw std::invalid_argument(trajectory.source.string() +
                                 ": a trajectory needs at least 2 frames with speed and touch");
   for (std::size_t i = 0; i < t.size(); ++i) {
@@ -37,18 +37,24 @@ TrajectorySpeed::TrajectorySpeed(const model::io::DrawingTrajectory& trajectory)
       throw std::invalid_argument(trajectory.source.string() + ": frame " + std::to_string(i) +
                                   " does not come after the one before it");
     time_.push_back(t[i] - t.front());
-    speed_.push_back(trajectory.touching[i] ? std::max(0.0, trajectory.speed_m_s[i]) : 0.0);
+    const bool touching = trajectory.touching[i];
+    speed_.push_back(touching ? std::max(0.0, trajectory.speed_m_s[i]) : 0.0);
+    // The tracker reports small negative forces (sensor offset) while touching: no pull, so 0.
+    force_.push_back(touching ? std::max(0.0, trajectory.normal_force_N[i]) : 0.0);
   }
 }
 
-double TrajectorySpeed::speed_at(double t) const noexcept {
+double TrajectorySpeed::speed_at(double t) const noexcept { return interpolate(speed_, t); }
+double TrajectorySpeed::force_at(double t) const noexcept { return interpolate(force_, t); }
+
+double TrajectorySpeed::interpolate(const std::vector<double>& values, double t) const noexcept {
   const double wrapped = t - duration() * std::floor(t / duration());
   const auto after = std::upper_bound(time_.begin(), time_.end(), wrapped);
-  if (after == time_.end()) return speed_.back();
+  if (after == time_.end()) return values.back();
   const auto i = static_cast<std::size_t>(after - time_.begin());
-  if (i == 0) return speed_.front();
+  if (i == 0) return values.front();
   const double f = (wrapped - time_[i - 1]) / (time_[i] - time_[i - 1]);
-  return speed_[i - 1] + f * (speed_[i] - speed_[i - 1]);
+  return values[i - 1] + f * (values[i] - values[i - 1]);
 }
 
 }  // namespace nibrig::rt

@@ -1,4 +1,4 @@
-// Where the tip's speed comes from when nobody moves a real stylus: a constant, the rig's sweep
+// Where the tip's speed (and normal force) comes from when nobody moves a real stylus: a constant, the rig's sweep
 // (Sec. 4.3: 17 → 250 mm/s with a full period of 3 s) or an artist's recorded trajectory
 // (../shared/data/piovarci2018/drawing). Evaluated on the audio thread: speed_at never allocates,
 // locks or throws; everything that can fail happens at construction.
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/io/paper_drawing.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::rt {
 
@@ -15,6 +16,8 @@ class SpeedSource {
   virtual ~SpeedSource() = default;
   // Tangential tip speed in m/s at time t (s) since the source started.
   virtual double speed_at(double t) const noexcept = 0;
+  // Normal force in N at time t: the paper's load unless the source recorded one.
+  virtual double force_at(double) const noexcept { return kReferenceNormalForce; }
 };
 
 class ConstantSpeed final : public SpeedSource {
@@ -40,17 +43,20 @@ class SweepSpeed final : public SpeedSource {
   double low_, high_, period_;
 };
 
-// A recorded trajectory replayed in a loop: speed interpolated linearly between frames (across a
-// tracking dropout too), 0 at frames where the pen did not touch. Throws std::invalid_argument for a trajectory with fewer than 2 frames or times
-// that do not increase.
+// A recorded trajectory replayed in a loop: speed and normal force interpolated linearly between
+// frames (across a tracking dropout too), both 0 at frames where the pen did not touch. Throws
+// std::invalid_argument for a trajectory with fewer than 2 frames or times that do not increase.
 class TrajectorySpeed final : public SpeedSource {
  public:
   explicit TrajectorySpeed(const model::io::DrawingTrajectory& trajectory);
   double speed_at(double t) const noexcept override;
+  double force_at(double t) const noexcept override;
   double duration() const noexcept { return time_.back(); }
 
  private:
-  std::vector<double> time_, speed_;  // time from the first frame (s), speed (m/s)
+  double interpolate(const std::vector<double>& values, double t) const noexcept;
+  // Time from the first frame (s), speed (m/s), normal force (N).
+  std::vector<double> time_, speed_, force_;
 };
 
 }  // namespace nibrig::rt

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "model/io/paper_drawing.hpp"
 #include "tests/support/allocation_counter.hpp"
 #include "tests/support/test_paths.hpp"
@@ -25,6 +27,7 @@ TEST(SpeedSource, TheSweepIsTheRigsTriangleFrom17To250MillimetresPerSecond) {
   EXPECT_THROW(SweepSpeed(0.2, 0.1), std::invalid_argument);
   EXPECT_THROW(ConstantSpeed(-1.0), std::invalid_argument);
   EXPECT_EQ(ConstantSpeed(0.12).speed_at(5.0), 0.12);
+  EXPECT_EQ(ConstantSpeed(0.12).force_at(5.0), kReferenceNormalForce);  // the paper's load
 }
 
 TEST(SpeedSource, ATrajectoryReplaysAnArtistsRecordedSpeedWithoutAllocating) {
@@ -36,10 +39,12 @@ TEST(SpeedSource, ATrajectoryReplaysAnArtistsRecordedSpeedWithoutAllocating) {
   std::size_t touching = 0;
   for (std::size_t i = 0; i < drawing.time_s.size(); ++i) {
     const double expected = drawing.touching[i] ? drawing.speed_m_s[i] : 0.0;
+    const double force = drawing.touching[i] ? std::max(0.0, drawing.normal_force_N[i]) : 0.0;
     // At a frame's own time the interpolation returns that frame (up to the subtraction of the
     // start time, a few ulps of a Unix time).
-    EXPECT_NEAR(source.speed_at(drawing.time_s[i] - drawing.time_s.front()), expected, 1e-9)
-        << "frame " << i;
+    const double t = drawing.time_s[i] - drawing.time_s.front();
+    EXPECT_NEAR(source.speed_at(t), expected, 1e-9) << "frame " << i;
+    EXPECT_NEAR(source.force_at(t), force, 1e-9) << "frame " << i;
     touching += drawing.touching[i];
   }
   EXPECT_EQ(testing::allocations_on_this_thread(), before);

@@ -1,0 +1,91 @@
+// How the noise is made. Every hop (half a frame) a new frame of independent complex Gaussian bins
+// Z_k is drawn; for each table speed s the frame Z_k·M_s(k) is inverse-transformed, multiplied by
+// a sine window and overlap-added into that speed's stream. The sine window's squares sum to 1 at
+// 50 % overlap, so the streams are stationary Gaussian processes with the table's spectra, and
+// frames never repeat (xoshiro256**), so nothing in the output is periodic: a fixed-phase sum of
+// sinusoids on a 1 Hz grid would repeat every second. Because all streams share the same Z, they
+// are coherent: mixing two of them with weights w and 1−w gives noise whose amplitude spectrum is
+// exactly w·M_s + (1−w)·M_{s+1}. The speed therefore acts through per-sample weights, with no
+// filter state to update and no lag; the only cost is computing every speed's stream (one inverse
+// FFT per speed per hop, a fraction of a millisecond every half second at 4 kHz).
+#include "rt/forcing_generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace nibrig::rt {
+
+ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
+    : table_(std::move(table)),
+      noise_(seed),
+      fft_(table_ ? table_->frame_length() : 2, model::measure::RealFft::Plans::forward_and_backward),
+      frame_(table_ ? table_->frame_length() : 2),
+      hop_(frame_ / 2) {
+  if (!table_) throw std::invalid_argument("a forcing generator needs a table");
+  window_.resize(frame_);
+  for (std::size_t n = 0; n < frame_; ++n)
+    window_[n] = std::sin(std::numbers::pi * (static_cast<double>(n) + 0.5) /
+                          static_cast<double>(frame_));
+  streams_.assign(table_->speeds().size() * frame_, 0.0);
+  z_.resize(table_->bins());
+  next_frame();      // frame −1: its second half overlaps the first output hop
+  position_ = hop_;  // so the first call moves on and adds frame 0
+}
+
+void ForcingGenerator::next_frame() noexcept {
+  const std::size_t speeds = table_->speeds().size(), bins = table_->bins();
+  // The hop just handed out is done: shift every stream by a hop and clear its tail.
+  for (std::size_t s = 0; s < speeds; ++s) {
+    double* stream = streams_.data() + s * frame_;
+    std::copy(stream + hop_, stream + frame_, stream);
+    std::fill(stream + hop_, stream + frame_, 0.0);
+  }
+  // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
+  for (std::size_t k = 0; k < bins; ++k) {
+    double re, im;
+    noise_.normal_pair(re, im);
+    z_[k] = {re * std::numbers::sqrt2 / 2, im * std::numbers::sqrt2 / 2};
+  }
+  const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised
+  auto spectrum = fft_.spectrum();
+  auto real = fft_.real();
+  for (std::size_t s = 0; s < speeds; ++s) {
+    const auto magnitude = table_->magnitudes(s);
+    for (std::size_t k = 0; k < bins; ++k) spectrum[k] = z_[k] * magnitude[k];
+    fft_.backward();
+    double* stream = streams_.data() + s * frame_;
+    for (std::size_t n = 0; n < frame_; ++n) stream[n] += window_[n] * real[n] * scale;
+  }
+  position_ = 0;
+}
+
+void ForcingGenerator::generate(const double* speed_m_s, const double* normal_force_n,
+                                double* out, std::size_t count) noexcept {
+  const auto& speeds = table_->speeds();
+  const std::size_t last = speeds.size() - 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (position_ == hop_) next_frame();
+    const double v = std::isfinite(speed_m_s[i]) ? std::max(0.0, speed_m_s[i]) : 0.0;
+    const double force = std::isfinite(normal_force_n[i]) ? normal_force_n[i] : 0.0;
+    const double gain = std::clamp(force / kReferenceNormalForce, 0.0, kMaxNormalForceRatio);
+    const double* stream = streams_.data() + position_;
+    double value;
+    if (v <= speeds.front()) {
+      value = (v / speeds.front()) * stream[0];
+    } else if (v >= speeds[last]) {
+      value = stream[last * frame_];
+      above_range_ += v > speeds[last];
+    } else {
+      std::size_t s = 1;
+      while (speeds[s] < v) ++s;  // at most the table's few speeds
+      const double u = (v - speeds[s - 1]) / (speeds[s] - speeds[s - 1]);
+      value = (1 - u) * stream[(s - 1) * frame_] + u * stream[s * frame_];
+    }
+    out[i] = gain * value;
+    ++position_;
+  }
+}
+
+}  // namespace nibrig::rt

@@ -1,0 +1,56 @@
+// The forcing a tool feels as it slides over a surface, made up sample by sample on the audio
+// thread from a ForcingTable: stationary Gaussian noise whose spectrum is the table's at the
+// current speed, scaled by normal force. Never periodic (see forcing_generator.cpp for how), and a
+// change of speed takes effect at the very next sample.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "model/measure/real_fft.hpp"
+#include "rt/forcing_table.hpp"
+#include "rt/gaussian_noise.hpp"
+#include "rt/reference_load.hpp"
+
+namespace nibrig::rt {
+
+class ForcingGenerator {
+ public:
+  // Keeps `table` (shared: voices of the same tool and surface can share one). Allocates frames
+  // and the FFT plan here, on the control thread; the first frames are made here too, so output
+  // is stationary from the first sample. Equal seeds give equal output.
+  ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed);
+
+  // out[i] = forcing (N) at speed[i] (m/s) and normal force[i] (N), one sample each at the
+  // table's rate. Speed dependence: the amplitude spectrum is interpolated linearly between the
+  // table's speeds; below the lowest it fades linearly to silence at rest (no sliding, no
+  // vibration); above the highest it stays at the highest (clamped, and counted). Normal-force
+  // dependence — an assumption, since the paper measured at one load only: amplitude ∝ force /
+  // 2.2 N, as a Coulomb friction force and so the stick-slip excitation it drives would scale;
+  // capped at kMaxNormalForceRatio; 0 N (lifted) is silence. NaN speed or force counts as 0.
+  // Real-time safe: no allocation, lock or exception.
+  void generate(const double* speed_m_s, const double* normal_force_n, double* out,
+                std::size_t count) noexcept;
+
+  const ForcingTable& table() const noexcept { return *table_; }
+  // Samples generated above the table's highest speed (the clamp of DESIGN.md, "Velocity").
+  std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
+
+ private:
+  void next_frame() noexcept;
+
+  std::shared_ptr<const ForcingTable> table_;
+  GaussianNoise noise_;
+  model::measure::RealFft fft_;
+  std::size_t frame_, hop_;
+  std::vector<double> window_;
+  std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
+  std::vector<double> streams_;  // speeds × frame: overlap-added output per table speed
+  std::size_t position_;         // next sample of the first hop to hand out
+  std::uint64_t above_range_ = 0;
+};
+
+}  // namespace nibrig::rt
