@@ -1,6 +1,7 @@
 // How the noise is made. Every hop (half a frame) a new frame of independent complex Gaussian bins
 // Z_k is drawn; for each table speed s the frame Z_k·M_s(k) is inverse-transformed, multiplied by
-// a sine window and overlap-added into that speed's stream. The sine window's squares sum to 1 at
+// a sine window and overlap-added into that speed's stream (the work of a frame is spread over
+// the calls of the hop before it). The sine window's squares sum to 1 at
 // 50 % overlap, so the streams are stationary Gaussian processes with the table's spectra, and
 // frames never repeat (xoshiro256**), so nothing in the output is periodic: a fixed-phase sum of
 // sinusoids on a 1 Hz grid would repeat every second. Because all streams share the same Z, they
@@ -29,35 +30,52 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
     window_[n] = std::sin(std::numbers::pi * (static_cast<double>(n) + 0.5) /
                           static_cast<double>(frame_));
   streams_.assign(table_->speeds().size() * frame_, 0.0);
+  next_.assign(streams_.size(), 0.0);
   z_.resize(table_->bins());
-  next_frame();      // frame −1: its second half overlaps the first output hop
-  position_ = hop_;  // so the first call moves on and adds frame 0
+  finish_next_frame();
+  start_next_hop();     // frame −1: its second half overlaps the first output hop
+  finish_next_frame();  // frame 0, added when the first call starts the first hop
+  position_ = hop_;
 }
 
-void ForcingGenerator::next_frame() noexcept {
-  const std::size_t speeds = table_->speeds().size(), bins = table_->bins();
-  // The hop just handed out is done: shift every stream by a hop and clear its tail.
-  for (std::size_t s = 0; s < speeds; ++s) {
-    double* stream = streams_.data() + s * frame_;
-    std::copy(stream + hop_, stream + frame_, stream);
-    std::fill(stream + hop_, stream + frame_, 0.0);
-  }
-  // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
-  for (std::size_t k = 0; k < bins; ++k) {
-    double re, im;
-    noise_.normal_pair(re, im);
-    z_[k] = {re * std::numbers::sqrt2 / 2, im * std::numbers::sqrt2 / 2};
-  }
-  const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised
-  auto spectrum = fft_.spectrum();
-  auto real = fft_.real();
-  for (std::size_t s = 0; s < speeds; ++s) {
+void ForcingGenerator::prepare_next_frame_step() noexcept {
+  const std::size_t bins = table_->bins();
+  if (steps_done_ == 0) {
+    // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
+    for (std::size_t k = 0; k < bins; ++k) {
+      double re, im;
+      noise_.normal_pair(re, im);
+      z_[k] = {re * std::numbers::sqrt2 / 2, im * std::numbers::sqrt2 / 2};
+    }
+  } else {
+    const std::size_t s = steps_done_ - 1;
+    const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised
+    auto spectrum = fft_.spectrum();
     const auto magnitude = table_->magnitudes(s);
     for (std::size_t k = 0; k < bins; ++k) spectrum[k] = z_[k] * magnitude[k];
     fft_.backward();
-    double* stream = streams_.data() + s * frame_;
-    for (std::size_t n = 0; n < frame_; ++n) stream[n] += window_[n] * real[n] * scale;
+    const auto real = fft_.real();
+    double* next = next_.data() + s * frame_;
+    for (std::size_t n = 0; n < frame_; ++n) next[n] = window_[n] * real[n] * scale;
   }
+  ++steps_done_;
+}
+
+void ForcingGenerator::finish_next_frame() noexcept {
+  while (steps_done_ < table_->speeds().size() + 1) prepare_next_frame_step();
+}
+
+void ForcingGenerator::start_next_hop() noexcept {
+  finish_next_frame();  // normally done already, a step per call
+  for (std::size_t s = 0; s < table_->speeds().size(); ++s) {
+    double* stream = streams_.data() + s * frame_;
+    const double* next = next_.data() + s * frame_;
+    // Drop the hop just handed out, then add the new frame over the whole window.
+    std::copy(stream + hop_, stream + frame_, stream);
+    std::fill(stream + hop_, stream + frame_, 0.0);
+    for (std::size_t n = 0; n < frame_; ++n) stream[n] += next[n];
+  }
+  steps_done_ = 0;
   position_ = 0;
 }
 
@@ -65,8 +83,11 @@ void ForcingGenerator::generate(const double* speed_m_s, const double* normal_fo
                                 double* out, std::size_t count) noexcept {
   const auto& speeds = table_->speeds();
   const std::size_t last = speeds.size() - 1;
+  // The next frame is made one step (a draw of Z, or one speed's inverse FFT) per call, so no
+  // callback pays for a whole frame; a hop is thousands of samples, callbacks a few dozen.
+  if (steps_done_ < speeds.size() + 1) prepare_next_frame_step();
   for (std::size_t i = 0; i < count; ++i) {
-    if (position_ == hop_) next_frame();
+    if (position_ == hop_) start_next_hop();
     const double v = std::isfinite(speed_m_s[i]) ? std::max(0.0, speed_m_s[i]) : 0.0;
     const double force = std::isfinite(normal_force_n[i]) ? normal_force_n[i] : 0.0;
     const double gain = std::clamp(force / kReferenceNormalForce, 0.0, kMaxNormalForceRatio);

@@ -40,7 +40,9 @@ class ForcingGenerator {
   std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
 
  private:
-  void next_frame() noexcept;
+  void prepare_next_frame_step() noexcept;
+  void finish_next_frame() noexcept;
+  void start_next_hop() noexcept;
 
   std::shared_ptr<const ForcingTable> table_;
   GaussianNoise noise_;
@@ -49,6 +51,8 @@ class ForcingGenerator {
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
   std::vector<double> streams_;  // speeds × frame: overlap-added output per table speed
+  std::vector<double> next_;     // speeds × frame: the next windowed frame, being made
+  std::size_t steps_done_ = 0;   // of the next frame: 0 = nothing, 1 = Z drawn, 1 + s = s speeds
   std::size_t position_;         // next sample of the first hop to hand out
   std::uint64_t above_range_ = 0;
 };
