@@ -1,0 +1,35 @@
+// The options render and audition share: which tool on which surface, through which stylus, and
+// how the stylus moves (constant speed, the rig's sweep, or an artist's recorded drawing).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "rt/speed_source.hpp"
+
+namespace nibrig::ui::cli {
+
+struct StrokeOptions {
+  std::string tool, surface;
+  std::filesystem::path catalog, design;
+  double speed_mm_s = -1;  // constant speed; < 0 = not given
+  bool sweep = false;
+  std::filesystem::path trajectory;
+  double force_n = -1;  // constant normal force; < 0 = the paper's 2.2 N (or the trajectory's)
+  unsigned seed = 1;
+};
+
+void add_stroke_options(CLI::App* cmd, StrokeOptions& o);
+
+// The source the options describe (exactly one of --speed, --sweep, --trajectory; none = --sweep),
+// and a line saying what it is, for the summary.
+struct Stroke {
+  std::unique_ptr<rt::SpeedSource> source;
+  std::string description;
+  double natural_seconds;  // one sweep period ×2, the trajectory's length, or 5 s
+};
+Stroke make_stroke(const StrokeOptions& o);
+
+}  // namespace nibrig::ui::cli

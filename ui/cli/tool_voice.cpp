@@ -1,0 +1,58 @@
+#include "ui/cli/tool_voice.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <stdexcept>
+
+#include "model/mechanics/design.hpp"
+#include "model/mechanics/design_model.hpp"
+#include "model/mechanics/material_table.hpp"
+#include "rt/voice_builder.hpp"
+#include "ui/cli/assets.hpp"
+
+namespace nibrig::ui::cli {
+
+StylusModes stylus_modes(const std::filesystem::path& design) {
+  namespace mech = model::mechanics;
+  const auto materials = mech::read_material_table(asset("materials.json"));
+  const auto file = design.empty() ? asset(kDefaultVoiceDesign) : design;
+  const mech::Design d = mech::read_design(file, materials);
+  const mech::DesignModel model = mech::build_design_model(d, materials);
+  spdlog::info("{}: {} modes, first at {:.1f} Hz (meshing and modes {:.2f} s)", d.name,
+               model.modal.size(), model.modal.omega.front() / (2 * 3.141592653589793),
+               model.seconds.meshing_s + model.seconds.assembly_s + model.seconds.modes_s);
+  return {d.name, model.modal};
+}
+
+model::io::Catalog voice_catalog(const std::filesystem::path& catalog) {
+  return model::io::read_catalog(catalog.empty() ? asset("default_catalog.json") : catalog);
+}
+
+std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
+                                      const std::filesystem::path& catalog_file,
+                                      const std::string& tool, const std::string& surface,
+                                      const StylusModes& stylus, double internal_rate,
+                                      std::uint64_t seed) {
+  const std::string where = catalog_file.empty() ? "the bundled catalog" : catalog_file.string();
+  std::string surfaces;
+  for (const auto& p : catalog.pairings) {
+    if (p.tool != tool || !p.vibration) continue;
+    if (p.surface == surface)
+      return rt::build_voice(tool + " on " + surface, stylus.modal, p.vibration->spectrum,
+                             internal_rate, seed);
+    surfaces += (surfaces.empty() ? "" : ", ") + p.surface;
+  }
+  if (!surfaces.empty())
+    throw std::invalid_argument(where + " has no vibration spectrum of '" + tool + "' on '" +
+                                surface + "'; it has one on: " + surfaces);
+  std::string tools;
+  for (const auto& t : catalog.tools) {
+    bool has = false;
+    for (const auto& p : catalog.pairings) has |= p.tool == t.id && p.vibration.has_value();
+    if (has) tools += (tools.empty() ? "" : ", ") + t.id;
+  }
+  throw std::invalid_argument(where + " has no vibration spectrum of tool '" + tool +
+                              "'; tools with one: " + tools);
+}
+
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,39 @@
+// How the CLI turns "tool X on surface Y" into a real-time voice: the catalog's acceleration
+// spectrum of that pairing, shaped by a stylus's modes (by default the bundled printed stylus with
+// a 2 mm tip), built at the engine's internal rate. Shared by render, audition and the demo.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "model/io/catalog.hpp"
+#include "model/mechanics/modal_model.hpp"
+#include "rt/voice.hpp"
+
+namespace nibrig::ui::cli {
+
+// The stylus whose modes every voice gets unless the user names another design.
+inline constexpr const char* kDefaultVoiceDesign = "designs/stylus_vero_tip2mm.json";
+
+struct StylusModes {
+  std::string name;
+  model::mechanics::ModalModel modal;
+};
+
+// Meshes the design (a nibrig-design JSON; empty = kDefaultVoiceDesign) and solves for its modes.
+StylusModes stylus_modes(const std::filesystem::path& design);
+
+// The catalog (empty = the bundled default).
+model::io::Catalog voice_catalog(const std::filesystem::path& catalog);
+
+// Throws std::invalid_argument naming the catalog and listing the surfaces the tool has (or the
+// tools there are) when the pairing has no vibration spectrum.
+std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
+                                      const std::filesystem::path& catalog_file,
+                                      const std::string& tool, const std::string& surface,
+                                      const StylusModes& stylus, double internal_rate,
+                                      std::uint64_t seed);
+
+}  // namespace nibrig::ui::cli
