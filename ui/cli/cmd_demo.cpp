@@ -13,6 +13,7 @@
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/demo_mechanics.hpp"
+#include "ui/cli/demo_render.hpp"
 #include "ui/cli/demo_space.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
@@ -130,6 +131,7 @@ void demo(const DemoOptions& options, unsigned threads) {
           << "/ (catalog.json, descriptors.csv, friction.png, spectra/*.png)\n";
   summary << run_mechanics_demo(options.output);
   summary << run_space_demo(catalog, catalog_path, options.output, threads);
+  summary << run_render_demo(catalog, options.catalog, options.output);
   write_text_file(options.output / "SUMMARY.txt", summary.str());
   std::cout << summary.str();
 }
@@ -148,7 +150,9 @@ void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global
       "mechanics: a cantilever against Euler-Bernoulli under mesh refinement, the paper's bar\n"
       "with a ring-down fit, and the frequency responses of the bundled stylus designs. Last, a\n"
       "perceptual space from a SIMULATED observer (no human judgments of drawing tools are\n"
-      "bundled): the two-stage experiment, a fit with bootstrap regions, every tool placed.");
+      "bundled): the two-stage experiment, a fit with bootstrap regions, every tool placed.\n"
+      "Finally every tool with a vibration spectrum is rendered over the rig's sweep through the\n"
+      "real-time engine into render/*.wav.");
   cmd->add_option("-o,--output", options->output, "Report folder")->capture_default_str();
   cmd->add_option("--catalog", options->catalog, "Use this catalog instead of the bundled one")
       ->check(CLI::ExistingFile);

@@ -1,0 +1,17 @@
+// The real-time part of `nibrig demo`: every bundled tool that has a vibration spectrum, on one
+// surface, rendered through the real-time engine over one sweep of the rig (17 → 250 → 17 mm/s)
+// into <report>/render/*.wav. Returns its lines for SUMMARY.txt.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "model/io/catalog.hpp"
+
+namespace nibrig::ui::cli {
+
+std::string run_render_demo(const model::io::Catalog& catalog,
+                            const std::filesystem::path& catalog_file,
+                            const std::filesystem::path& report);
+
+}  // namespace nibrig::ui::cli
