@@ -1,0 +1,149 @@
+// The real-time engine's budget. realtime_factor: seconds of 48 kHz output per second of one core,
+// for one voice with 64 modes and a forcing spectrum covering 1-500 Hz, rendered in 64-frame
+// blocks exactly as a JACK callback would (target: at least 200). Beside it, in the same run, the
+// naive way to compute the same kind of output — a sine per partial per sample (the 500 partials
+// of a 1 Hz grid, random fixed phases) and a matrix exponential per mode per step — and the ratio.
+// Then the time of each 64-frame block (median and 99th percentile) for one voice and for the
+// three of a triplet presentation.
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
+
+#include "rt/engine.hpp"
+#include "rt/voice_builder.hpp"
+
+namespace {
+
+using nibrig::model::mechanics::ModalModel;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kRate = 48000.0;
+
+// 64 modes log-spaced from 80 Hz to 20 kHz with the paper's λ = 1.25e-3 (as bench_integrator).
+ModalModel stylus64() {
+  ModalModel m;
+  for (std::size_t i = 0; i < 64; ++i) {
+    const double f = 80.0 * std::pow(250.0, static_cast<double>(i) / 64.0);
+    const double w = 2.0 * std::numbers::pi * f;
+    m.omega.push_back(w);
+    m.zeta.push_back(1.25e-3 * w / 2);
+    m.input.push_back(i % 2 ? 0.8 : -1.1);
+    m.output.push_back(i % 3 ? 0.5 : 1.3);
+  }
+  return m;
+}
+
+// 1-500 Hz every 1 Hz at the paper's six speeds, rising with speed and falling with frequency.
+nibrig::model::io::VelocitySpectrum full_spectrum() {
+  nibrig::model::io::VelocitySpectrum s;
+  for (int f = 1; f <= 500; ++f) s.frequencies_hz.push_back(f);
+  for (int k = 0; k < 6; ++k) {
+    const double v = 0.017 + (0.250 - 0.017) * k / 5.0;
+    s.speeds_m_s.push_back(v);
+    std::vector<double> row;
+    for (double f : s.frequencies_hz) row.push_back(0.05 * (v / 0.1) / (1 + f / 200));
+    s.amplitude_m_s2.push_back(row);
+  }
+  return s;
+}
+
+std::unique_ptr<nibrig::rt::Engine> engine_with_voices(std::size_t voices) {
+  auto engine = std::make_unique<nibrig::rt::Engine>(nibrig::rt::EngineSettings{});
+  for (std::size_t i = 0; i < voices; ++i)
+    engine->load(i, nibrig::rt::build_voice("bench", stylus64(), full_spectrum(),
+                                            engine->internal_rate(), 1 + i));
+  engine->select(0);
+  engine->attach(std::make_unique<nibrig::rt::SweepSpeed>());
+  return engine;
+}
+
+// Seconds of CPU per second of output for the naive reference, from `samples` samples.
+double naive_seconds_per_second(std::size_t samples) {
+  const ModalModel m = stylus64();
+  const auto spectrum = full_spectrum();
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> phase(0, 2 * std::numbers::pi);
+  std::vector<double> phases(500);
+  for (auto& p : phases) p = phase(rng);
+  std::vector<Eigen::Vector2d> x(m.size(), Eigen::Vector2d::Zero());
+  const double h = 1.0 / kRate;
+  double previous = 0, sink = 0;
+  const auto start = Clock::now();
+  for (std::size_t n = 0; n < samples; ++n) {
+    const double t = static_cast<double>(n) * h;
+    const double v = 0.017 + 0.233 * std::abs(std::fmod(t / 1.5, 2.0) - 1.0);
+    const auto s = std::min<std::size_t>(5, static_cast<std::size_t>((v - 0.017) / 0.0466));
+    double force = 0;
+    for (std::size_t k = 0; k < 500; ++k)
+      force += spectrum.amplitude_m_s2[s][k] *
+               std::sin(2 * std::numbers::pi * spectrum.frequencies_hz[k] * t + phases[k]);
+    double a = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const double w = m.omega[i], z = m.zeta[i];
+      Eigen::Matrix4d g = Eigen::Matrix4d::Zero();
+      g(0, 1) = 1.0;
+      g(1, 0) = -w * w;
+      g(1, 1) = -2.0 * z * w;
+      g(1, 2) = m.input[i];
+      g(2, 3) = 1.0;
+      const Eigen::Matrix4d e = (g * h).exp();
+      const Eigen::Vector4d state(x[i][0], x[i][1], previous, (force - previous) / h);
+      x[i] = (e * state).head<2>();
+      a += m.output[i] * (-w * w * x[i][0] - 2.0 * z * w * x[i][1] + m.input[i] * force);
+    }
+    previous = force;
+    sink += a;
+  }
+  benchmark::DoNotOptimize(sink);
+  return std::chrono::duration<double>(Clock::now() - start).count() / (samples / kRate);
+}
+
+void BM_RealtimeFactorOneVoice64Modes(benchmark::State& state) {
+  auto engine = engine_with_voices(1);
+  std::vector<float> block(64);
+  double audio = 0, cpu = 0;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    for (std::size_t b = 0; b < 750; ++b) engine->render(block.data(), block.size());  // 1 s
+    cpu += std::chrono::duration<double>(Clock::now() - start).count();
+    audio += 1.0;
+    benchmark::DoNotOptimize(block.data());
+  }
+  const double naive = naive_seconds_per_second(480);  // 10 ms of output is plenty to time it
+  state.counters["realtime_factor"] = audio / cpu;
+  state.counters["naive_realtime_factor"] = 1.0 / naive;
+  state.counters["speedup_vs_naive"] = (audio / cpu) * naive;
+  state.counters["internal_rate_hz"] = engine->internal_rate();
+}
+BENCHMARK(BM_RealtimeFactorOneVoice64Modes)->Unit(benchmark::kMillisecond)->Iterations(20);
+
+void BM_CallbackTime64Frames(benchmark::State& state) {
+  auto engine = engine_with_voices(static_cast<std::size_t>(state.range(0)));
+  std::vector<float> block(64);
+  std::vector<double> times;
+  times.reserve(75000);
+  for (auto _ : state) {
+    for (std::size_t b = 0; b < 7500; ++b) {  // 10 s
+      const auto start = Clock::now();
+      engine->render(block.data(), block.size());
+      times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    benchmark::DoNotOptimize(block.data());
+  }
+  std::sort(times.begin(), times.end());
+  state.counters["voices"] = static_cast<double>(state.range(0));
+  state.counters["median_us"] = 1e6 * times[times.size() / 2];
+  state.counters["p99_us"] = 1e6 * times[times.size() * 99 / 100];
+  state.counters["max_us"] = 1e6 * times.back();
+  state.counters["budget_us"] = 1e6 * 64 / kRate;
+}
+BENCHMARK(BM_CallbackTime64Frames)->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+}  // namespace
