@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "playback/device_error.hpp"
+#include "playback/device_probe.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -55,21 +56,15 @@ ApiDevices probe(RtAudio::Api api) {
   result.display_name = RtAudio::getApiDisplayName(api);
   try {
     RtAudio rt(api);
-    // RtAudio prints its warnings to stderr itself; what matters is returned in the listing.
+    // RtAudio would print its warnings to stderr; what matters is returned in the listing.
     rt.showWarnings(false);
-    const unsigned count = rt.getDeviceCount();
-    for (unsigned i = 0; i < count; ++i) {
-      const RtAudio::DeviceInfo info = rt.getDeviceInfo(i);
-      if (!info.probed) continue;
-      result.devices.push_back(DeviceInfo{info.name, info.outputChannels, info.inputChannels,
-                                          info.sampleRates, info.preferredSampleRate,
-                                          info.isDefaultOutput, info.isDefaultInput});
-    }
-    if (count == 0) {
+    const DeviceTable table = probe_devices(rt);
+    for (const ProbedDevice& d : table.devices) result.devices.push_back(d.info);
+    if (table.count == 0) {
       result.unavailable_reason = no_devices_reason(api);
     } else if (result.devices.empty()) {
       result.unavailable_reason =
-          "RtAudio could not probe any of its " + std::to_string(count) + " devices";
+          "RtAudio could not probe any of its " + std::to_string(table.count) + " devices";
     }
   } catch (const RtAudioError& e) {
     // A server that goes away between counting and probing lands here: it is a state of the

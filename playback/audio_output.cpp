@@ -11,6 +11,7 @@
 
 #include "playback/audio_devices.hpp"
 #include "playback/device_error.hpp"
+#include "playback/device_probe.hpp"
 #include "playback/output_callback.hpp"
 #include "playback/sample_ring.hpp"
 
@@ -102,39 +103,29 @@ struct AudioOutput::Impl {
   std::unique_ptr<RtAudio> open() {
     auto fresh = std::make_unique<RtAudio>(api_id);
     fresh->showWarnings(false);
-    std::optional<unsigned> index;
-    DeviceInfo found;
-    std::string names;
-    const unsigned count = fresh->getDeviceCount();
-    for (unsigned i = 0; i < count && !index; ++i) {
-      RtAudio::DeviceInfo d;
-      try {
-        d = fresh->getDeviceInfo(i);
-      } catch (const RtAudioError&) {
-        continue;  // gone between counting and probing
+    const DeviceTable table = probe_devices(*fresh);
+    const auto it = std::find_if(table.devices.begin(), table.devices.end(),
+                                 [&](const ProbedDevice& d) { return d.info.name == device; });
+    if (it == table.devices.end()) {
+      std::string names;
+      for (const ProbedDevice& d : table.devices) {
+        names += (names.empty() ? "'" : ", '") + d.info.name + "'";
       }
-      if (!d.probed) continue;
-      names += (names.empty() ? "'" : ", '") + d.name + "'";
-      if (d.name == device) {
-        index = i;
-        found = DeviceInfo{d.name,          d.outputChannels,      d.inputChannels,
-                           d.sampleRates,   d.preferredSampleRate, d.isDefaultOutput,
-                           d.isDefaultInput};
-      }
+      if (table.unprobed > 0) names += " and " + std::to_string(table.unprobed) + " unprobed";
+      throw DeviceError(
+          api + " device '" + device + "' is not there (" +
+          (table.count == 0 ? "no devices: is the server running?" : "devices: " + names) + ")");
     }
-    if (!index) {
-      throw DeviceError(api + " device '" + device + "' is not there (" +
-                        (count == 0 ? "no devices: is the server running?" : "devices: " + names) +
-                        ")");
-    }
+    const unsigned index = it->index;
+    const DeviceInfo& found = it->info;
     validate(found);
 
     RtAudio::StreamParameters out;
-    out.deviceId = *index;
+    out.deviceId = index;
     out.nChannels = found.output_channels;
     out.firstChannel = 0;
     RtAudio::StreamParameters in;
-    in.deviceId = *index;
+    in.deviceId = index;
     in.nChannels = settings.input_channel ? found.input_channels : 0;
     in.firstChannel = 0;
     RtAudio::StreamOptions options;
@@ -177,13 +168,14 @@ struct AudioOutput::Impl {
     return fresh;
   }
 
-  // Polls until the audio callback has run once more, up to `timeout`.
-  bool heartbeat_within(milliseconds timeout) const {
+  // Polls until the audio callback has run `count` more times, up to `timeout`. One callback
+  // proves nothing: the cycle in flight when a server dies still completes.
+  bool heartbeat_within(milliseconds timeout, std::uint64_t count) const {
     const std::uint64_t before = state.counters.callbacks.load(std::memory_order_acquire);
     const auto deadline = Clock::now() + timeout;
     while (Clock::now() < deadline) {
-      if (state.counters.callbacks.load(std::memory_order_acquire) != before) return true;
-      std::this_thread::sleep_for(milliseconds(2));
+      if (state.counters.callbacks.load(std::memory_order_acquire) - before >= count) return true;
+      std::this_thread::sleep_for(milliseconds(1));
     }
     return false;
   }
@@ -213,12 +205,14 @@ struct AudioOutput::Impl {
 
   void close_on_exit() noexcept {
     if (!rt) return;
-    // A healthy stream is closed at once. One whose callbacks stopped may be mid-close by
-    // RtAudio's own shutdown thread, so it is treated as lost.
+    // A stream whose server still runs cycles is closed at once. One whose callbacks stopped may
+    // be mid-close by RtAudio's own shutdown thread (closing it here too would free it twice), so
+    // it is treated as lost. A server dying within the few milliseconds of closeStream() itself
+    // is a window RtAudio 5.2 leaves open: its shutdown handler takes no lock.
     bool healthy = false;
     try {
       healthy = status.load() == OutputStatus::running && rt->isStreamOpen() &&
-                heartbeat_within(std::max(milliseconds(100), settings.stall_timeout / 4));
+                heartbeat_within(std::max(milliseconds(100), settings.stall_timeout / 4), 3);
     } catch (...) {
     }
     if (!healthy) {

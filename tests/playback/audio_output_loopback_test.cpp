@@ -33,36 +33,104 @@ constexpr std::size_t kRecordFrames = 2 * 48000;  // 2 s
 // would pass samples through a conversion; anything larger is a different sample.
 constexpr double kTolerance = 1e-6;
 
-struct Comparison {
-  std::size_t offset = 0;  // recorded[k] is rendered frame k + offset
-  long delay_frames = 0;   // recorder's clock minus renderer's clock for the same sample
-  double max_error = 0.0;
-  std::size_t exact = 0;  // samples bit-identical to the offline render
+// How the recorder's cycles line up with the renderer's calls on the server's frame clock.
+struct CycleCheck {
+  std::size_t cycles = 0;   // recorded cycles
+  std::size_t on_time = 0;  // equal to the block rendered in the same cycle (delay 0)
+  std::size_t shifted = 0;  // equal to a block rendered a few cycles earlier or later
+  std::size_t torn = 0;     // each sample from one of the nearby blocks: read during a write
+  std::size_t silent = 0;   // all zero: JACK's silence for a client that missed the cycle
+  std::size_t altered = 0;  // some sample from no nearby block: a sample was changed
+  std::size_t exact = 0;    // of the matching cycles, bit-identical ones
 };
 
-// Lines `recorded` up with the offline render and measures the delay on the server's clock.
-Comparison compare(const std::vector<float>& recorded, jack_nframes_t recorded_from,
-                   const SignalRenderer& renderer) {
-  const std::size_t rendered = renderer.calls() * kPeriod;
-  const std::vector<float> offline = render_offline(rendered, kPeriod);
-  // A 512-sample window from the middle of the recording (its start may precede the connection).
-  const std::size_t probe = recorded.size() / 2;
-  const auto found = locate(offline, recorded.data() + probe, 512);
-  EXPECT_TRUE(found.has_value()) << "the recording does not occur (exactly once) in the render";
-  Comparison c;
-  if (!found) return c;
-  c.offset = *found - probe;
-  for (std::size_t k = 0; k < recorded.size(); ++k) {
-    const double error = std::abs(double{recorded[k]} - double{offline[k + c.offset]});
-    c.max_error = std::max(c.max_error, error);
-    c.exact += recorded[k] == offline[k + c.offset] ? 1 : 0;
+double block_error(const std::vector<float>& recorded, std::size_t at,
+                   const std::vector<float>& rendered, std::size_t from, std::size_t frames) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < frames; ++i) {
+    worst = std::max(worst, std::abs(double{recorded[at + i]} - double{rendered[from + i]}));
   }
-  // Rendered frame n was written during the call n / period, whose cycle started at call_time.
-  const std::size_t frame = c.offset;  // the frame recorded as sample 0
-  const jack_nframes_t rendered_at =
-      renderer.call_time(frame / kPeriod) + static_cast<jack_nframes_t>(frame % kPeriod);
-  c.delay_frames = static_cast<long>(static_cast<std::int32_t>(recorded_from - rendered_at));
-  return c;
+  return worst;
+}
+
+// Compares each recorded cycle with the block the renderer produced in the cycle that started at
+// the same frame time, and, when that fails, with the blocks of the 8 calls either side.
+CycleCheck check_cycles(const JackRecorder& ear, std::size_t input,
+                        const SignalRenderer& renderer) {
+  const std::size_t calls = renderer.calls();
+  const std::vector<float> offline = render_offline(calls * kPeriod, kPeriod);
+  std::vector<jack_nframes_t> call_times(calls);
+  for (std::size_t c = 0; c < calls; ++c) call_times[c] = renderer.call_time(c);
+  const std::vector<float>& recorded = ear.samples(input);
+
+  CycleCheck check;
+  for (const JackRecorder::Cycle& cycle : ear.cycles()) {
+    ++check.cycles;
+    const auto at = std::lower_bound(call_times.begin(), call_times.end(), cycle.time);
+    const auto same = static_cast<std::size_t>(at - call_times.begin());
+    auto matches = [&](std::size_t call) {
+      const double error =
+          block_error(recorded, cycle.start, offline, call * kPeriod, cycle.frames);
+      check.exact += error == 0.0 ? 1 : 0;
+      return error <= kTolerance;
+    };
+    if (same < calls && call_times[same] == cycle.time && matches(same)) {
+      ++check.on_time;
+      continue;
+    }
+    const std::size_t first = same > 8 ? same - 8 : 0;
+    const std::size_t last = std::min(calls, same + 9);
+    bool found = false;
+    for (std::size_t c = first; c < last && !found; ++c) found = c != same && matches(c);
+    if (found) {
+      ++check.shifted;
+      continue;
+    }
+    if (std::all_of(recorded.begin() + cycle.start, recorded.begin() + cycle.start + cycle.frames,
+                    [](float x) { return x == 0.0f; })) {
+      ++check.silent;
+      continue;
+    }
+    bool every_sample_rendered = true;
+    for (std::size_t i = 0; i < cycle.frames && every_sample_rendered; ++i) {
+      bool seen = false;
+      for (std::size_t c = first; c < last && !seen; ++c) {
+        seen = std::abs(double{recorded[cycle.start + i]} - double{offline[c * kPeriod + i]}) <=
+               kTolerance;
+      }
+      every_sample_rendered = seen;
+    }
+    ++(every_sample_rendered ? check.torn : check.altered);
+  }
+  return check;
+}
+
+void expect_played_as_rendered(const CycleCheck& c, const JackRecorder& ear,
+                               const AudioOutput& output) {
+  SCOPED_TRACE(::testing::Message()
+               << c.cycles << " cycles: " << c.on_time << " on time, " << c.shifted << " shifted, "
+               << c.altered << " altered; " << ear.xruns() << " xruns seen by the recorder, "
+               << output.stats().output_underflows << " by the stream");
+  ::testing::Test::RecordProperty("cycles", std::to_string(c.cycles));
+  ::testing::Test::RecordProperty("cycles_on_time", std::to_string(c.on_time));
+  ::testing::Test::RecordProperty("cycles_shifted", std::to_string(c.shifted));
+  ::testing::Test::RecordProperty("cycles_torn", std::to_string(c.torn));
+  ::testing::Test::RecordProperty("cycles_silent", std::to_string(c.silent));
+  EXPECT_GT(c.cycles, 0u);
+  // No sample may be one the renderer did not produce at that place in a nearby cycle (JACK hands
+  // one output to one input unchanged).
+  EXPECT_EQ(c.altered, 0u);
+  EXPECT_EQ(c.exact, c.on_time + c.shifted) << "matches within the tolerance but not bit-exact";
+  // Delay 0: a downstream client runs after its upstream one in the same cycle, and RtAudio
+  // writes its ports right after the callback, so the recorder gets a block the cycle it was
+  // rendered. The test server runs without realtime priority on a shared 2-core machine: a late
+  // client is an xrun, after which JACK (asynchronous mode) may hand a block a cycle late, while
+  // it is being written, or silence in its place. Allow that for at most 10% of the cycles, and
+  // only when JACK reported xruns.
+  EXPECT_GE(c.on_time * 10, c.cycles * 9);
+  if (c.shifted + c.torn + c.silent > 0) {
+    EXPECT_GT(ear.xruns() + output.stats().output_underflows, 0u);
+  }
 }
 
 TEST(AudioOutputLoopback, ChannelOneCarriesTheRenderedSamplesExactlyInTheSameJackCycle) {
@@ -77,12 +145,7 @@ TEST(AudioOutputLoopback, ChannelOneCarriesTheRenderedSamplesExactlyInTheSameJac
   ear.start();
   ASSERT_TRUE(ear.wait_full(10s)) << "recorded " << ear.recorded() << " frames";
 
-  const Comparison c = compare(ear.samples(0), ear.first_frame_time(), renderer);
-  EXPECT_LE(c.max_error, kTolerance);
-  EXPECT_EQ(c.exact, kRecordFrames);
-  // A downstream client runs after its upstream one in the same cycle: RtAudio writes its output
-  // ports after the callback returns, so the recorder gets the block the cycle it was rendered.
-  EXPECT_EQ(c.delay_frames, 0) << "offset " << c.offset;
+  expect_played_as_rendered(check_cycles(ear, 0, renderer), ear, output);
   // Channel 2 was opened (both device outputs are) and carries silence.
   const auto& other = ear.samples(1);
   EXPECT_TRUE(std::all_of(other.begin(), other.end(), [](float x) { return x == 0.0f; }));
@@ -105,9 +168,7 @@ TEST(AudioOutputLoopback, ChannelTwoCarriesTheSignalAndChannelOneIsSilent) {
 
   const auto& first = ear.samples(0);
   EXPECT_TRUE(std::all_of(first.begin(), first.end(), [](float x) { return x == 0.0f; }));
-  const Comparison c = compare(ear.samples(1), ear.first_frame_time(), renderer);
-  EXPECT_LE(c.max_error, kTolerance);
-  EXPECT_EQ(c.delay_frames, 0);
+  expect_played_as_rendered(check_cycles(ear, 1, renderer), ear, output);
 }
 
 TEST(AudioOutputLoopback, CapturedInputIsTheRenderedOutputOnePeriodLater) {

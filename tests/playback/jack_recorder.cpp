@@ -7,7 +7,7 @@
 namespace nibrig::playback::testing {
 
 JackRecorder::JackRecorder(const std::string& name, std::size_t ports, std::size_t capacity_frames)
-    : name_(name), capacity_(capacity_frames) {
+    : name_(name), capacity_(capacity_frames), cycles_(capacity_frames / 16 + 2) {
   jack_status_t status{};
   client_ = jack_client_open(
       name.c_str(), static_cast<jack_options_t>(JackNoStartServer | JackUseExactName), &status);
@@ -63,8 +63,10 @@ int JackRecorder::process(jack_nframes_t frames, void* self) noexcept {
   const bool recording = r.recording_.load(std::memory_order_acquire);
   const std::size_t at = r.recorded_.load(std::memory_order_relaxed);
   const std::size_t n = recording ? std::min<std::size_t>(frames, r.capacity_ - at) : 0;
-  if (recording && at == 0 && n > 0) {
-    r.first_time_.store(jack_last_frame_time(r.client_), std::memory_order_relaxed);
+  const std::size_t cycle = r.cycle_count_.load(std::memory_order_relaxed);
+  if (n > 0 && cycle < r.cycles_.size()) {
+    r.cycles_[cycle] = Cycle{jack_last_frame_time(r.client_), at, n};
+    r.cycle_count_.store(cycle + 1, std::memory_order_release);
   }
   for (std::size_t i = 0; i < r.ports_.size(); ++i) {
     const auto* in = static_cast<const float*>(jack_port_get_buffer(r.ports_[i], frames));

@@ -34,8 +34,17 @@ class JackRecorder {
   bool wait_full(std::chrono::milliseconds timeout) const;
   std::size_t recorded() const { return recorded_.load(std::memory_order_acquire); }
   const std::vector<float>& samples(std::size_t input) const { return buffers_[input]; }
-  // The server's frame time of samples(…)[0].
-  jack_nframes_t first_frame_time() const { return first_time_.load(std::memory_order_acquire); }
+  // One JACK cycle of the recording: the server's frame time at its start and where its samples
+  // begin in samples(…).
+  struct Cycle {
+    jack_nframes_t time = 0;
+    std::size_t start = 0;
+    std::size_t frames = 0;
+  };
+  // The recorded cycles; read once the recording is full.
+  std::vector<Cycle> cycles() const {
+    return {cycles_.begin(), cycles_.begin() + cycle_count_.load(std::memory_order_acquire)};
+  }
   // Frames, since activation, in which any input carried a non-zero sample.
   std::uint64_t nonsilent_frames() const { return nonsilent_.load(std::memory_order_acquire); }
   // Xruns the server reported to this client.
@@ -53,7 +62,8 @@ class JackRecorder {
   std::size_t capacity_;
   std::atomic<bool> recording_{false};
   std::atomic<std::size_t> recorded_{0};
-  std::atomic<jack_nframes_t> first_time_{0};
+  std::vector<Cycle> cycles_;  // preallocated: one per recorded cycle of at least 16 frames
+  std::atomic<std::size_t> cycle_count_{0};
   std::atomic<std::uint64_t> nonsilent_{0};
   std::atomic<std::uint64_t> xruns_{0};
 };
