@@ -103,7 +103,12 @@ struct AudioOutput::Impl {
   std::unique_ptr<RtAudio> open() {
     auto fresh = std::make_unique<RtAudio>(api_id);
     fresh->showWarnings(false);
-    const DeviceTable table = probe_devices(*fresh);
+    DeviceTable table;
+    try {
+      table = probe_devices(*fresh);
+    } catch (const RtAudioError& e) {
+      throw DeviceError("cannot list " + api + " devices to find '" + device + "': " + e.what());
+    }
     const auto it = std::find_if(table.devices.begin(), table.devices.end(),
                                  [&](const ProbedDevice& d) { return d.info.name == device; });
     if (it == table.devices.end()) {

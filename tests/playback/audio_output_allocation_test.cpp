@@ -42,6 +42,7 @@ TEST(AudioOutputAllocation, TheAudioThreadAllocatesNothingWhileStreamingAndCaptu
   // server loses many cycles (900 seen while a sanitizer build ran beside), so ask for 300:
   // still far too many for an allocation made now and then to hide.
   EXPECT_GT(renderer.calls() - first_calls, 300u);
+  RecordProperty("callbacks_checked", std::to_string(renderer.calls()));
   EXPECT_TRUE(renderer.same_thread_throughout());
   // Exactly zero: one allocation in thousands of callbacks is already a defect.
   EXPECT_EQ(renderer.last_allocations(), renderer.first_allocations());
