@@ -54,7 +54,17 @@ JackServer::JackServer(const JackServerSettings& settings)
 }
 
 JackServer::~JackServer() {
-  kill();
+  if (pid_ > 0) {
+    stop();
+  } else if (left_registered_) {
+    // Only a server of the same name reclaims a killed server's registry slot: start it once
+    // more and stop it cleanly, or every killed server would take one of the 8 slots for good.
+    try {
+      start();
+      stop();
+    } catch (const std::exception&) {
+    }
+  }
   std::error_code ignored;
   std::filesystem::remove(log_file_, ignored);
 }
@@ -87,6 +97,7 @@ void JackServer::start() {
     pid_ = -1;
     throw std::runtime_error("cannot start jackd (is jackd2 installed?)");
   }
+  left_registered_ = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
   while (!client_can_connect(name_)) {
     int status = 0;
@@ -107,6 +118,22 @@ void JackServer::kill() {
   ::kill(pid_, SIGKILL);
   int status = 0;
   ::waitpid(pid_, &status, 0);
+  pid_ = -1;
+  left_registered_ = true;
+}
+
+void JackServer::stop() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGTERM);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  int status = 0;
+  while (::waitpid(pid_, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill();
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
   pid_ = -1;
 }
 

@@ -35,10 +35,16 @@ class JackServer {
   void start();
 
  private:
+  // SIGTERM, so that jackd leaves the machine-wide server registry; SIGKILL after 5 s.
+  void stop();
+
   JackServerSettings settings_;
   std::string name_;
   std::filesystem::path log_file_;
   pid_t pid_ = -1;
+  // A killed jackd keeps its slot in jack2's server registry (/dev/shm/jack-shm-registry, 8 slots
+  // for the whole machine) until a server of the same name starts again.
+  bool left_registered_ = false;
 };
 
 }  // namespace nibrig::testing
