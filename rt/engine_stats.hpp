@@ -19,9 +19,9 @@ std::size_t callback_time_bin(double seconds);
 
 struct EngineStats {
   std::uint64_t callbacks = 0, frames = 0;
-  // Blocks whose rendering took longer than the block lasts: measured inside the callback, so they
-  // are ours, unlike the device's xruns (which a shared machine without real-time scheduling also
-  // causes).
+  // Blocks whose rendering took more CPU time than the block lasts: measured inside the callback,
+  // so they are ours, unlike the device's xruns (which a shared machine without real-time
+  // scheduling also causes). The histogram and max_callback_s are wall time, preemption included.
   std::uint64_t overruns = 0;
   std::uint64_t device_xruns = 0;  // reported by the audio back end (playback/)
   double max_callback_s = 0;
