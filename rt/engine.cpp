@@ -39,9 +39,13 @@ void check(const EngineSettings& s) {
 
 }  // namespace
 
+double internal_rate_for(const EngineSettings& settings) {
+  return settings.sample_rate_hz / static_cast<double>(upsampling_factor(settings));
+}
+
 Engine::Engine(const EngineSettings& settings)
     : settings_(settings),
-      internal_rate_(settings.sample_rate_hz / static_cast<double>(upsampling_factor(settings))),
+      internal_rate_(internal_rate_for(settings)),
       fade_step_(0),
       commands_(settings.queue_capacity),
       contacts_(settings.queue_capacity),
@@ -68,13 +72,16 @@ Engine::~Engine() {
   while (auto c = commands_.try_pop()) {
     delete c->voice;
     delete c->source;
+    delete c->filter;
   }
   for (auto& p : players_) delete p.voice;
   delete source_;
+  delete calibration_;
 }
 
 bool Engine::push(const Command& command) {
-  const bool hands_over = command.voice != nullptr || command.source != nullptr;
+  const bool hands_over = command.voice != nullptr || command.source != nullptr ||
+                          command.kind == CommandKind::calibration;
   if (hands_over && handed_over_ >= settings_.queue_capacity) collect();
   if ((hands_over && handed_over_ >= settings_.queue_capacity) || !commands_.try_push(command)) {
     stats_.refused_commands.fetch_add(1, std::memory_order_relaxed);
@@ -129,19 +136,29 @@ bool Engine::set_output_level(double level_per_m_s2) {
   return push({CommandKind::output_level, 0, nullptr, nullptr, level_per_m_s2, 0});
 }
 
+bool Engine::set_calibration(std::unique_ptr<FirFilter>&& filter) {
+  collect();
+  // Counted as handed over even when it is nullptr: the audio thread retires the old filter in
+  // exchange, one item back for the one given.
+  if (!push({CommandKind::calibration, 0, nullptr, nullptr, 0, 0, filter.get()})) return false;
+  filter.release();
+  return true;
+}
+
 void Engine::collect() {
   while (auto r = retired_.try_pop()) {
     delete r->voice;
     delete r->source;
+    delete r->filter;
     --handed_over_;
   }
 }
 
 // ---- audio thread ----
 
-void Engine::retire(Voice* voice, SpeedSource* source) noexcept {
+void Engine::retire(Voice* voice, SpeedSource* source, FirFilter* filter) noexcept {
   // Cannot fail: see the capacity of retired_ in the constructor.
-  retired_.try_push({voice, source});
+  retired_.try_push({voice, source, filter});
 }
 
 void Engine::take_commands() noexcept {
@@ -172,6 +189,10 @@ void Engine::take_commands() noexcept {
         source_ = c->source;
         source_sequence_ = c->sequence;
         source_start_ = internal_clock_;
+        break;
+      case CommandKind::calibration:
+        retire(nullptr, nullptr, calibration_);  // an empty retirement when there was none
+        calibration_ = c->filter;
         break;
       case CommandKind::output_level:
         target_level_ = c->value;
@@ -250,6 +271,7 @@ void Engine::render_piece(float* out, std::size_t frames) noexcept {
   const std::size_t count = upsampler_.inputs_needed(frames);
   fill_contact(count);
   mix_players(count);
+  if (calibration_) calibration_->process(mix_buffer_.data(), count);
   internal_clock_ += count;
   upsampler_.process(mix_buffer_.data(), out, frames);
   output_.process(out, frames);

@@ -11,6 +11,7 @@
 
 #include "rt/block_renderer.hpp"
 #include "rt/engine_stats.hpp"
+#include "rt/fir_filter.hpp"
 #include "rt/output_stage.hpp"
 #include "rt/speed_source.hpp"
 #include "rt/spsc_queue.hpp"
@@ -35,6 +36,9 @@ struct EngineSettings {
   OutputStageSettings output;      // its sample_rate_hz is set from sample_rate_hz
   std::size_t queue_capacity = 256;  // pending commands, and objects handed over at once
 };
+
+// The internal rate an engine with these settings runs its voices at (see internal_rate_hz).
+double internal_rate_for(const EngineSettings& settings);
 
 class Engine final : public BlockRenderer {
  public:
@@ -69,6 +73,12 @@ class Engine final : public BlockRenderer {
   // from when it is taken over (deterministic: an offline render and a device hear the same).
   bool attach(std::unique_ptr<SpeedSource>&& source);
   bool set_output_level(double level_per_m_s2);
+  // The actuator's inverse filter (playback/actuator_file.hpp), run on the mix at the internal
+  // rate: it turns requested m/s² into output level so that the actuator
+  // delivers them, so with it the output level is a trim (1 = as calibrated). Its taps must be
+  // designed for internal_rate(). nullptr removes it. The change is not crossfaded: load it
+  // before playing.
+  bool set_calibration(std::unique_ptr<FirFilter>&& filter);
   // Frees what the audio thread has let go of. Called by the control functions; call it now and
   // then when idle.
   void collect();
@@ -82,7 +92,7 @@ class Engine final : public BlockRenderer {
   void render(float* out, std::size_t frames) noexcept override;
 
  private:
-  enum class CommandKind { load, select, attach, output_level };
+  enum class CommandKind { load, select, attach, output_level, calibration };
   struct Command {
     CommandKind kind;
     std::size_t slot;
@@ -90,6 +100,7 @@ class Engine final : public BlockRenderer {
     SpeedSource* source;
     double value;
     std::uint64_t sequence;
+    FirFilter* filter = nullptr;
   };
   struct Contact {
     double speed, force;
@@ -98,6 +109,7 @@ class Engine final : public BlockRenderer {
   struct Retired {
     Voice* voice;
     SpeedSource* source;
+    FirFilter* filter = nullptr;
   };
   struct Player {
     Voice* voice = nullptr;
@@ -111,7 +123,7 @@ class Engine final : public BlockRenderer {
   void take_commands() noexcept;
   void fill_contact(std::size_t count) noexcept;
   void mix_players(std::size_t count) noexcept;
-  void retire(Voice* voice, SpeedSource* source) noexcept;
+  void retire(Voice* voice, SpeedSource* source, FirFilter* filter = nullptr) noexcept;
 
   EngineSettings settings_;
   double internal_rate_;
@@ -126,6 +138,7 @@ class Engine final : public BlockRenderer {
   std::vector<Player> players_;
   std::size_t selected_ = 0;
   SpeedSource* source_ = nullptr;
+  FirFilter* calibration_ = nullptr;
   std::uint64_t source_sequence_ = 0, contact_sequence_ = 0;
   std::uint64_t source_start_ = 0;  // internal sample at which the source was taken over
   std::uint64_t internal_clock_ = 0;

@@ -13,7 +13,11 @@ FirFilter::FirFilter(std::span<const double> taps) : taps_(taps.begin(), taps.en
   history_.assign(2 * taps_.size(), 0.0);
 }
 
-void FirFilter::process(float* samples, std::size_t count) noexcept {
+void FirFilter::process(float* samples, std::size_t count) noexcept { run(samples, count); }
+void FirFilter::process(double* samples, std::size_t count) noexcept { run(samples, count); }
+
+template <class Sample>
+void FirFilter::run(Sample* samples, std::size_t count) noexcept {
   const std::size_t length = taps_.size();
   const double* taps = taps_.data();
   for (std::size_t i = 0; i < count; ++i) {
@@ -35,7 +39,7 @@ void FirFilter::process(float* samples, std::size_t count) noexcept {
       s3 += taps[k + 3] * window[k + 3];
     }
     for (; k < length; ++k) s0 += taps[k] * window[k];
-    samples[i] = static_cast<float>((s0 + s1) + (s2 + s3));
+    samples[i] = static_cast<Sample>((s0 + s1) + (s2 + s3));
   }
 }
 

@@ -19,6 +19,8 @@ class FirFilter {
   // size() outputs non-finite and is then forgotten (an FIR has no feedback to keep it); the output
   // stage after it turns such samples into silence.
   void process(float* samples, std::size_t count) noexcept;
+  // The same on the engine's double-precision mix.
+  void process(double* samples, std::size_t count) noexcept;
   // Forgets the history, as if only zeros had been processed.
   void reset() noexcept;
 
@@ -26,6 +28,9 @@ class FirFilter {
   std::span<const double> taps() const noexcept { return taps_; }
 
  private:
+  template <class Sample>
+  void run(Sample* samples, std::size_t count) noexcept;
+
   std::vector<double> taps_;
   // The last size() inputs, stored twice (at i and i + size()), newest first from position_: the
   // window x[n], x[n−1], ... is then always contiguous and the inner loop is a plain dot product.

@@ -174,3 +174,30 @@ TEST(Engine, NoAllocationOnTheAudioThreadWhileAnotherThreadFloodsIt) {
 
 }  // namespace
 }  // namespace nibrig::rt
+
+namespace nibrig::rt {
+namespace {
+
+TEST(Engine, ACalibrationFilterShapesTheMixBeforeTheDevice) {
+  auto plain = engine_with({"stab"}, 0, std::make_unique<ConstantSpeed>(0.1));
+  auto calibrated = engine_with({"stab"}, 0, std::make_unique<ConstantSpeed>(0.1));
+  // A one-tap filter of gain 2 (the simplest inverse filter): every output sample doubles, up
+  // to float rounding, since everything after the mix is linear below the limiter.
+  const std::vector<double> taps{2.0};
+  ASSERT_TRUE(calibrated->set_calibration(std::make_unique<FirFilter>(taps)));
+  const auto a = render(*plain, 48000, 64);
+  const auto b = render(*calibrated, 48000, 64);
+  double peak = 0;
+  for (float x : a) peak = std::max(peak, double{std::abs(x)});
+  ASSERT_LT(2 * peak, EngineSettings{}.output.limit);
+  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(b[i], 2 * a[i], 1e-6 * peak) << i;
+  // Removed again: back to the plain output's level (the filter is swapped, not faded; the DC
+  // blocker's 32 ms memory of the doubled signal dies away within the first quarter second).
+  ASSERT_TRUE(calibrated->set_calibration(nullptr));
+  const auto c = render(*calibrated, 24000, 64);
+  const auto d = render(*plain, 24000, 64);
+  EXPECT_NEAR(rms(c, 12000, 24000) / rms(d, 12000, 24000), 1.0, 0.01);
+}
+
+}  // namespace
+}  // namespace nibrig::rt
