@@ -1,0 +1,112 @@
+#include "playback/calibration_run.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <atomic>
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "rt/engine.hpp"
+
+namespace nibrig::playback {
+namespace {
+
+// Plays a prepared buffer once from its first call, then silence.
+class BufferPlayer final : public rt::BlockRenderer {
+ public:
+  explicit BufferPlayer(const std::vector<double>& signal) : signal_(signal) {}
+  void render(float* out, std::size_t frames) noexcept override {
+    std::size_t at = position_.load(std::memory_order_relaxed);
+    for (std::size_t i = 0; i < frames; ++i, ++at)
+      out[i] = at < signal_.size() ? static_cast<float>(signal_[at]) : 0.0f;
+    position_.store(at, std::memory_order_release);
+  }
+  std::size_t played() const { return position_.load(std::memory_order_acquire); }
+
+ private:
+  const std::vector<double>& signal_;
+  std::atomic<std::size_t> position_{0};
+};
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+}  // namespace
+
+InverseFilterSettings design_for_device_rate(InverseFilterSettings design, double device_rate_hz) {
+  rt::EngineSettings engine;
+  engine.sample_rate_hz = device_rate_hz;
+  const double internal = rt::internal_rate_for(engine);
+  design.sample_rate_hz = internal;
+  design.taps = static_cast<std::size_t>(std::lround(0.064 * internal));
+  return design;
+}
+
+ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
+  if (!settings.device.input_channel)
+    throw std::invalid_argument("calibration needs the accelerometer's input channel");
+  if (!(settings.accelerometer_m_s2_per_unit > 0))
+    throw std::invalid_argument("the accelerometer's scale must be positive");
+  SweepSettings sweep = settings.sweep;
+  sweep.sample_rate_hz = settings.device.sample_rate;
+  validate(sweep);
+  const std::vector<double> signal = exponential_sweep(sweep);
+  const auto lead = static_cast<std::size_t>(
+      std::lround(sweep.sample_rate_hz * std::chrono::duration<double>(settings.lead_in).count()));
+  std::vector<double> played(lead, 0.0);
+  played.insert(played.end(), signal.begin(), signal.end());
+
+  OutputSettings device = settings.device;
+  // Enough ring for the whole recording: the control thread here only drains it now and then.
+  device.capture_capacity = std::max(device.capture_capacity, std::size_t{1} << 16);
+  BufferPlayer player(played);
+  AudioOutput output(player, device);
+  spdlog::info("calibration: playing {} sweep(s) of {:.1f} s on '{}' channel {}, recording channel {}",
+               sweep.repetitions, sweep.duration_s, output.stream_info().device,
+               device.output_channel, *device.input_channel);
+  // Captured sample j arrived in the callback that rendered frame j: both count from the
+  // stream's first callback, which is where the player starts the sweep.
+  std::vector<float> captured;
+  std::vector<float> block(8192);
+  const auto deadline = std::chrono::steady_clock::now() + settings.timeout;
+  while (captured.size() < played.size()) {
+    const std::size_t n = output.read_captured(block.data(), block.size());
+    captured.insert(captured.end(), block.begin(), block.begin() + n);
+    if (std::chrono::steady_clock::now() > deadline)
+      throw std::runtime_error("calibration: recorded " + std::to_string(captured.size()) + " of " +
+                               std::to_string(played.size()) + " samples within " +
+                               std::to_string(settings.timeout.count()) + " s");
+    if (output.status() == OutputStatus::lost)
+      throw std::runtime_error("calibration: the device was lost while recording (" +
+                               output.last_problem() + ")");
+    if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (output.stats().capture_dropped > 0)
+    throw std::runtime_error("calibration: " + std::to_string(output.stats().capture_dropped) +
+                             " recorded samples were dropped; try again on a quieter machine");
+  std::vector<double> recorded(signal.size());
+  for (std::size_t j = 0; j < recorded.size(); ++j)
+    recorded[j] = settings.accelerometer_m_s2_per_unit * captured[lead + j];
+
+  const ResponseEstimate estimate = estimate_response(sweep, signal, recorded);
+  ActuatorCalibration calibration;
+  calibration.name = settings.name;
+  calibration.created = utc_now();
+  calibration.sweep = sweep;
+  calibration.delay_s = estimate.delay_s;
+  calibration.response = estimate.response;
+  calibration.design = design_for_device_rate(settings.design, sweep.sample_rate_hz);
+  calibration.filter = design_inverse_filter(calibration.response, calibration.design);
+  return calibration;
+}
+
+}  // namespace nibrig::playback
