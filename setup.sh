@@ -16,7 +16,7 @@ packages=(
   libeigen3-dev libspectra-dev liblbfgspp-dev libgmsh-dev libfftw3-dev libsndfile1-dev zlib1g-dev
   nlohmann-json3-dev libcli11-dev libspdlog-dev libboost-dev
   libplplot-dev plplot-driver-cairo
-  librtaudio-dev jackd2 libjack-jackd2-dev
+  librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   python3-numpy python3-scipy

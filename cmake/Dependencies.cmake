@@ -13,6 +13,7 @@ pkg_check_modules(SNDFILE REQUIRED IMPORTED_TARGET sndfile)
 # loopback clients (playback/ talks to devices through RtAudio alone).
 pkg_check_modules(RTAUDIO REQUIRED IMPORTED_TARGET rtaudio)
 pkg_check_modules(JACK REQUIRED IMPORTED_TARGET jack)
+pkg_check_modules(ALSA REQUIRED IMPORTED_TARGET alsa)  # only to quiet alsa-lib's stderr
 pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot plplot-c++)
 find_package(Spectra 1.0 REQUIRED PATHS /usr/share/spectra/cmake)
 # Gmsh ships only a header and a shared library in Debian (no CMake or pkg-config file).

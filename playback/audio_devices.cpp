@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "playback/alsa_quiet.hpp"
 #include "playback/device_error.hpp"
 #include "playback/device_probe.hpp"
 
@@ -55,6 +56,7 @@ ApiDevices probe(RtAudio::Api api) {
   result.api = RtAudio::getApiName(api);
   result.display_name = RtAudio::getApiDisplayName(api);
   try {
+    quiet_alsa_library();
     RtAudio rt(api);
     // RtAudio would print its warnings to stderr; what matters is returned in the listing.
     rt.showWarnings(false);

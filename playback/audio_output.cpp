@@ -9,6 +9,7 @@
 #include <thread>
 #include <utility>
 
+#include "playback/alsa_quiet.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/device_error.hpp"
 #include "playback/device_probe.hpp"
@@ -101,6 +102,7 @@ struct AudioOutput::Impl {
 
   // Finds the device by its exact name on a fresh RtAudio, checks it, opens and starts the stream.
   std::unique_ptr<RtAudio> open() {
+    quiet_alsa_library();
     auto fresh = std::make_unique<RtAudio>(api_id);
     fresh->showWarnings(false);
     DeviceTable table;

@@ -25,6 +25,7 @@ struct RenderOptions {
 
 void render(const RenderOptions& o) {
   const auto catalog = voice_catalog(o.stroke.catalog);
+  pairing_spectrum(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface);
   const StylusModes stylus = stylus_modes(o.stroke.design);
   rt::EngineSettings settings;
   settings.sample_rate_hz = o.rate;

@@ -1,6 +1,7 @@
 // The real-time part of `nibrig demo`: every bundled tool that has a vibration spectrum, on one
 // surface, rendered through the real-time engine over one sweep of the rig (17 → 250 → 17 mm/s)
-// into <report>/render/*.wav. Returns its lines for SUMMARY.txt.
+// into <report>/render/*.wav, then played one after another when an audio device is present.
+// Returns its lines for SUMMARY.txt.
 #pragma once
 
 #include <filesystem>

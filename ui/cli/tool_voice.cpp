@@ -28,18 +28,15 @@ model::io::Catalog voice_catalog(const std::filesystem::path& catalog) {
   return model::io::read_catalog(catalog.empty() ? asset("default_catalog.json") : catalog);
 }
 
-std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
-                                      const std::filesystem::path& catalog_file,
-                                      const std::string& tool, const std::string& surface,
-                                      const StylusModes& stylus, double internal_rate,
-                                      std::uint64_t seed) {
+const model::io::VelocitySpectrum& pairing_spectrum(const model::io::Catalog& catalog,
+                                                    const std::filesystem::path& catalog_file,
+                                                    const std::string& tool,
+                                                    const std::string& surface) {
   const std::string where = catalog_file.empty() ? "the bundled catalog" : catalog_file.string();
   std::string surfaces;
   for (const auto& p : catalog.pairings) {
     if (p.tool != tool || !p.vibration) continue;
-    if (p.surface == surface)
-      return rt::build_voice(tool + " on " + surface, stylus.modal, p.vibration->spectrum,
-                             internal_rate, seed);
+    if (p.surface == surface) return p.vibration->spectrum;
     surfaces += (surfaces.empty() ? "" : ", ") + p.surface;
   }
   if (!surfaces.empty())
@@ -53,6 +50,16 @@ std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
   }
   throw std::invalid_argument(where + " has no vibration spectrum of tool '" + tool +
                               "'; tools with one: " + tools);
+}
+
+std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
+                                      const std::filesystem::path& catalog_file,
+                                      const std::string& tool, const std::string& surface,
+                                      const StylusModes& stylus, double internal_rate,
+                                      std::uint64_t seed) {
+  return rt::build_voice(tool + " on " + surface, stylus.modal,
+                         pairing_spectrum(catalog, catalog_file, tool, surface), internal_rate,
+                         seed);
 }
 
 }  // namespace nibrig::ui::cli

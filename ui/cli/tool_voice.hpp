@@ -28,8 +28,15 @@ StylusModes stylus_modes(const std::filesystem::path& design);
 // The catalog (empty = the bundled default).
 model::io::Catalog voice_catalog(const std::filesystem::path& catalog);
 
-// Throws std::invalid_argument naming the catalog and listing the surfaces the tool has (or the
-// tools there are) when the pairing has no vibration spectrum.
+// The measured acceleration spectrum of tool on surface. Throws std::invalid_argument naming the
+// catalog and listing the surfaces the tool has (or the tools there are) when there is none; cheap,
+// so commands check their pairings before meshing a stylus.
+const model::io::VelocitySpectrum& pairing_spectrum(const model::io::Catalog& catalog,
+                                                    const std::filesystem::path& catalog_file,
+                                                    const std::string& tool,
+                                                    const std::string& surface);
+
+// A voice with that spectrum through the stylus's modes (rt/voice_builder.hpp).
 std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,
                                       const std::filesystem::path& catalog_file,
                                       const std::string& tool, const std::string& surface,

@@ -1,0 +1,76 @@
+// End-to-end tests of `nibrig render`, `devices` and `audition`, in-process; the device commands
+// run against a private JACK server with the dummy driver.
+#include <gtest/gtest.h>
+#include <sndfile.h>
+
+#include <cmath>
+#include <vector>
+
+#include "tests/support/jack_server.hpp"
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+using test::run_cli;
+
+TEST(AudioCli, RenderWritesTheToolOverTheSweepToAWav) {
+  const auto out = test::scratch_dir("cli_render");
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"render", "--tool", "cryon", "--surface", "office", "--sweep",
+                            "--seconds", "1", "-o", (out / "cryon.wav").string()});
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("cryon on office"), std::string::npos) << text;
+  SF_INFO info{};
+  SNDFILE* f = sf_open((out / "cryon.wav").c_str(), SFM_READ, &info);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(info.frames, 48000);
+  std::vector<float> x(48000);
+  sf_read_float(f, x.data(), 48000);
+  sf_close(f);
+  double sum = 0;
+  for (float v : x) sum += double{v} * v;
+  // Crayon on paper is a fraction of a m/s² rms at these speeds (catalog), 0.05 output per m/s².
+  EXPECT_GT(std::sqrt(sum / 48000), 1e-3);
+}
+
+TEST(AudioCli, RenderNamesWhatTheCatalogHasWhenAPairingIsMissing) {
+  ::testing::internal::CaptureStderr();
+  const int code = run_cli({"render", "--tool", "cryon", "--surface", "moon", "-o", "/tmp/x.wav"});
+  const std::string text = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(code, 0);
+  EXPECT_NE(text.find("has one on:"), std::string::npos) << text;
+  EXPECT_NE(text.find("office"), std::string::npos) << text;
+}
+
+TEST(AudioCli, DevicesAndAuditionUseTheJackServerByName) {
+  nibrig::testing::JackServer server;
+  ::testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli({"devices"}), 0);
+  const std::string list = ::testing::internal::GetCapturedStdout();
+  EXPECT_NE(list.find("'system': 2 out, 2 in"), std::string::npos) << list;
+
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"audition", "--tool", "cryon", "--surface", "office", "--also", "stab",
+                            "--switch-every", "0.4", "--speed", "120", "--api", "jack",
+                            "--device", "sys", "--seconds", "1"});
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("now stab on office"), std::string::npos) << text;
+  EXPECT_NE(text.find("engine overruns"), std::string::npos) << text;
+}
+
+TEST(AudioCli, AuditionSaysWhichDevicesExistWhenTheNameIsWrong) {
+  nibrig::testing::JackServer server;
+  ::testing::internal::CaptureStderr();
+  const int code = run_cli({"audition", "--tool", "cryon", "--surface", "office", "--api", "jack",
+                            "--device", "speakers", "--seconds", "1"});
+  const std::string text = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(code, 0);
+  EXPECT_NE(text.find("system"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,178 @@
+// `nibrig devices`, `nibrig audition` and `nibrig calibrate`: the commands that touch an audio
+// device. Audition plays a tool (or switches between up to three, as an A/B or triplet
+// presentation would) through the real-time engine; calibrate measures an actuator and stores its
+// inverse filter, which audition then applies.
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "playback/audio_devices.hpp"
+#include "playback/audio_output.hpp"
+#include "playback/calibration_run.hpp"
+#include "rt/engine.hpp"
+#include "ui/cli/commands.hpp"
+#include "ui/cli/device_options.hpp"
+#include "ui/cli/logging.hpp"
+#include "ui/cli/stroke_options.hpp"
+#include "ui/cli/tool_voice.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+struct AuditionOptions {
+  StrokeOptions stroke;
+  DeviceOptions device;
+  std::vector<std::string> also;
+  double switch_every = 2.0;
+  double seconds = 0;
+  std::filesystem::path actuator;
+};
+
+struct CalibrateOptions {
+  std::string name;
+  DeviceOptions device;
+  unsigned input_channel = 1;
+  double accelerometer = 1.0;
+  std::filesystem::path output;
+};
+
+void devices() {
+  for (const auto& api : playback::list_devices()) std::printf("%s\n", playback::describe_devices(api).c_str());
+}
+
+void audition(const AuditionOptions& o) {
+  if (o.also.size() > 2) throw std::invalid_argument("--also takes at most two more tools (a triplet)");
+  const playback::OutputSettings device = output_settings(o.device, "nibrig-audition");
+  const auto catalog = voice_catalog(o.stroke.catalog);
+  std::vector<std::string> tools{o.stroke.tool};
+  tools.insert(tools.end(), o.also.begin(), o.also.end());
+  for (const auto& tool : tools) pairing_spectrum(catalog, o.stroke.catalog, tool, o.stroke.surface);
+  const StylusModes stylus = stylus_modes(o.stroke.design);
+  rt::EngineSettings settings;
+  settings.sample_rate_hz = device.sample_rate;
+  settings.slots = 1 + o.also.size();
+  rt::Engine engine(settings);
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    auto voice = tool_voice(catalog, o.stroke.catalog, tools[i], o.stroke.surface, stylus,
+                            engine.internal_rate(), o.stroke.seed + i);
+    names.push_back(voice->name());
+    engine.load(i, std::move(voice));
+  }
+  engine.select(0);
+  if (!o.actuator.empty()) {
+    const auto calibration = playback::read_actuator_file(o.actuator);
+    const auto filter = playback::redesign_for_rate(calibration, engine.internal_rate());
+    engine.set_calibration(std::make_unique<rt::FirFilter>(filter.taps));
+    engine.set_output_level(1.0);  // the filter turns m/s² into output level
+    std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over 20-500 Hz\n",
+                calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db);
+  }
+  Stroke stroke = make_stroke(o.stroke);
+  engine.attach(std::move(stroke.source));
+  const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
+
+  playback::AudioOutput output(engine, device);
+  const auto info = output.stream_info();
+  std::printf("playing %s through %s on %s '%s' channel %u at %u Hz, %u-frame periods; %s\n",
+              names[0].c_str(), stylus.name.c_str(), info.api.c_str(), info.device.c_str(),
+              device.output_channel, info.sample_rate, info.period_frames,
+              stroke.description.c_str());
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t slot = 0;
+  double next_switch = o.switch_every;
+  for (;;) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    engine.collect();
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (t >= seconds) break;
+    if (tools.size() > 1 && t >= next_switch) {
+      slot = (slot + 1) % tools.size();
+      engine.select(slot);
+      next_switch += o.switch_every;
+      std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
+    }
+    static bool reported_loss = false;
+    if (output.status() == playback::OutputStatus::lost && !reported_loss) {
+      std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, output.last_problem().c_str());
+      reported_loss = true;
+    } else if (output.status() == playback::OutputStatus::running) {
+      reported_loss = false;
+    }
+  }
+  const auto e = engine.stats();
+  const auto d = output.stats();
+  std::printf("played %.1f s: %llu callbacks; engine overruns %llu; callback median <= %.1f us, 99th "
+              "percentile <= %.1f us, max %.1f us; peak %.3f of full scale, %llu samples limited; "
+              "device underflows %llu, losses %llu, reconnects %llu\n",
+              seconds, static_cast<unsigned long long>(e.callbacks),
+              static_cast<unsigned long long>(e.overruns), 1e6 * e.callback_time_quantile(0.5),
+              1e6 * e.callback_time_quantile(0.99), 1e6 * e.max_callback_s, e.peak_output,
+              static_cast<unsigned long long>(e.limited_samples),
+              static_cast<unsigned long long>(d.output_underflows),
+              static_cast<unsigned long long>(d.losses), static_cast<unsigned long long>(d.reconnects));
+}
+
+void calibrate(const CalibrateOptions& o) {
+  playback::CalibrationRunSettings s;
+  s.name = o.name;
+  s.device = output_settings(o.device, "nibrig-calibrate");
+  s.device.input_channel = o.input_channel;
+  s.accelerometer_m_s2_per_unit = o.accelerometer;
+  const auto c = playback::run_calibration(s);
+  playback::write_actuator_file(o.output, c);
+  std::printf("actuator '%s': chain delay %.2f ms; inverse filter (%zu taps at %.0f Hz) flat to "
+              "%.2f dB over 20-500 Hz (rms %.2f dB), largest boost %.1f dB%s; wrote %s\n",
+              c.name.c_str(), 1e3 * c.delay_s, c.filter.taps.size(), c.filter.sample_rate_hz,
+              c.filter.max_deviation_db, c.filter.rms_deviation_db, c.filter.max_boost_db,
+              c.filter.boost_limited.empty() ? "" : " (capped in places: not flattened there)",
+              o.output.c_str());
+}
+
+}  // namespace
+
+void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
+  auto* list = app.add_subcommand("devices", "List audio APIs and devices (choose them by name)");
+  list->callback([global] {
+    configure_logging(global->verbosity);
+    devices();
+  });
+
+  auto a = std::make_shared<AuditionOptions>();
+  auto* play = app.add_subcommand(
+      "audition", "Play a tool on a surface through the real-time engine on an audio device");
+  add_stroke_options(play, a->stroke);
+  add_device_options(play, a->device);
+  play->add_option("--also", a->also,
+                   "One or two more tools on the same surface: the engine switches between them "
+                   "(A/B or triplet) every --switch-every seconds");
+  play->add_option("--switch-every", a->switch_every, "Seconds between switches")
+      ->check(CLI::PositiveNumber);
+  play->add_option("--seconds", a->seconds, "How long to play (default: the stroke's length)");
+  play->add_option("--actuator", a->actuator, "Actuator calibration from `nibrig calibrate`")
+      ->check(CLI::ExistingFile);
+  play->callback([a, global] {
+    configure_logging(global->verbosity);
+    audition(*a);
+  });
+
+  auto c = std::make_shared<CalibrateOptions>();
+  auto* cal = app.add_subcommand(
+      "calibrate", "Measure an actuator with a sweep and its accelerometer; store its inverse filter");
+  cal->add_option("--name", c->name, "The actuator's name")->required();
+  add_device_options(cal, c->device);
+  cal->add_option("--input-channel", c->input_channel, "Input channel of the accelerometer (1-based)")
+      ->check(CLI::PositiveNumber);
+  cal->add_option("--accelerometer", c->accelerometer,
+                  "m/s² per unit of input level (accelerometer sensitivity and input gain)")
+      ->check(CLI::PositiveNumber);
+  cal->add_option("-o,--output", c->output, "Actuator file to write (JSON)")->required();
+  cal->callback([c, global] {
+    configure_logging(global->verbosity);
+    calibrate(*c);
+  });
+}
+
+}  // namespace nibrig::ui::cli

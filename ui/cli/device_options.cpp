@@ -1,0 +1,32 @@
+#include "ui/cli/device_options.hpp"
+
+#include "playback/audio_devices.hpp"
+
+namespace nibrig::ui::cli {
+
+void add_device_options(CLI::App* cmd, DeviceOptions& o) {
+  cmd->add_option("--api", o.api, "Audio API: jack, alsa or pulse (default: the first with a device)");
+  cmd->add_option("--device", o.device,
+                  "Device name, or a unique part of it (see `nibrig devices`; default: the API's default)");
+  cmd->add_option("--channel", o.channel, "Output channel driving the actuator (1-based)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--rate", o.rate, "Sample rate in Hz (default: the device's)");
+  cmd->add_option("--period", o.period, "Period in frames (JACK uses its server's)")
+      ->check(CLI::PositiveNumber);
+}
+
+playback::OutputSettings output_settings(const DeviceOptions& o, const std::string& stream_name) {
+  const playback::DeviceChoice choice = playback::choose_device(o.api, o.device);
+  playback::OutputSettings s;
+  s.api = choice.api;
+  s.device = choice.device.name;
+  s.sample_rate = o.rate > 0 ? o.rate
+                  : choice.device.preferred_sample_rate > 0 ? choice.device.preferred_sample_rate
+                                                            : 48000;
+  s.period_frames = o.period;
+  s.output_channel = o.channel;
+  s.stream_name = stream_name;
+  return s;
+}
+
+}  // namespace nibrig::ui::cli
