@@ -309,6 +309,7 @@ void Engine::render(float* out, std::size_t frames) noexcept {
   if (cpu > static_cast<double>(frames) / settings_.sample_rate_hz)
     stats_.overruns.fetch_add(1, relaxed);
   if (seconds > stats_.max_callback_s.load(relaxed)) stats_.max_callback_s.store(seconds, relaxed);
+  if (cpu > stats_.max_callback_cpu_s.load(relaxed)) stats_.max_callback_cpu_s.store(cpu, relaxed);
   stats_.callback_time_histogram[callback_time_bin(seconds)].fetch_add(1, relaxed);
   const auto& counts = output_.counts();
   stats_.peak_output.store(counts.peak, relaxed);

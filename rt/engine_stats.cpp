@@ -36,6 +36,7 @@ EngineStats AtomicEngineStats::snapshot() const {
   s.overruns = overruns.load(relaxed);
   s.device_xruns = device_xruns.load(relaxed);
   s.max_callback_s = max_callback_s.load(relaxed);
+  s.max_callback_cpu_s = max_callback_cpu_s.load(relaxed);
   for (std::size_t b = 0; b < kCallbackTimeBins; ++b)
     s.callback_time_histogram[b] = callback_time_histogram[b].load(relaxed);
   s.peak_output = peak_output.load(relaxed);

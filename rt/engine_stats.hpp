@@ -25,6 +25,7 @@ struct EngineStats {
   std::uint64_t overruns = 0;
   std::uint64_t device_xruns = 0;  // reported by the audio back end (playback/)
   double max_callback_s = 0;
+  double max_callback_cpu_s = 0;  // the largest CPU time of one block (what overruns compare)
   std::array<std::uint64_t, kCallbackTimeBins> callback_time_histogram{};
   double peak_output = 0;                 // largest |sample| sent to the device (full scale 1)
   std::uint64_t limited_samples = 0;      // samples the limiter attenuated
@@ -41,7 +42,7 @@ struct EngineStats {
 // The audio thread's side: every field an atomic, updated at the end of each block.
 struct AtomicEngineStats {
   std::atomic<std::uint64_t> callbacks{0}, frames{0}, overruns{0}, device_xruns{0};
-  std::atomic<double> max_callback_s{0};
+  std::atomic<double> max_callback_s{0}, max_callback_cpu_s{0};
   std::array<std::atomic<std::uint64_t>, kCallbackTimeBins> callback_time_histogram{};
   std::atomic<double> peak_output{0};
   std::atomic<std::uint64_t> limited_samples{0}, non_finite_samples{0},

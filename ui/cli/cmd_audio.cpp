@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "playback/audio_devices.hpp"
+#include "playback/actuator_store.hpp"
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
 #include "rt/engine.hpp"
@@ -27,7 +28,7 @@ struct AuditionOptions {
   std::vector<std::string> also;
   double switch_every = 2.0;
   double seconds = 0;
-  std::filesystem::path actuator;
+  std::string actuator;
 };
 
 struct CalibrateOptions {
@@ -63,7 +64,7 @@ void audition(const AuditionOptions& o) {
   }
   engine.select(0);
   if (!o.actuator.empty()) {
-    const auto calibration = playback::read_actuator_file(o.actuator);
+    const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
     const auto filter = playback::redesign_for_rate(calibration, engine.internal_rate());
     engine.set_calibration(std::make_unique<rt::FirFilter>(filter.taps));
     engine.set_output_level(1.0);  // the filter turns m/s² into output level
@@ -122,13 +123,15 @@ void calibrate(const CalibrateOptions& o) {
   s.device.input_channel = o.input_channel;
   s.accelerometer_m_s2_per_unit = o.accelerometer;
   const auto c = playback::run_calibration(s);
-  playback::write_actuator_file(o.output, c);
+  const auto file = o.output.empty() ? playback::actuator_path(o.name) : o.output;
+  std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
+  playback::write_actuator_file(file, c);
   std::printf("actuator '%s': chain delay %.2f ms; inverse filter (%zu taps at %.0f Hz) flat to "
               "%.2f dB over 20-500 Hz (rms %.2f dB), largest boost %.1f dB%s; wrote %s\n",
               c.name.c_str(), 1e3 * c.delay_s, c.filter.taps.size(), c.filter.sample_rate_hz,
               c.filter.max_deviation_db, c.filter.rms_deviation_db, c.filter.max_boost_db,
               c.filter.boost_limited.empty() ? "" : " (capped in places: not flattened there)",
-              o.output.c_str());
+              file.c_str());
 }
 
 }  // namespace
@@ -151,8 +154,8 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   play->add_option("--switch-every", a->switch_every, "Seconds between switches")
       ->check(CLI::PositiveNumber);
   play->add_option("--seconds", a->seconds, "How long to play (default: the stroke's length)");
-  play->add_option("--actuator", a->actuator, "Actuator calibration from `nibrig calibrate`")
-      ->check(CLI::ExistingFile);
+  play->add_option("--actuator", a->actuator,
+                   "Actuator calibration from `nibrig calibrate`: its name, or a file");
   play->callback([a, global] {
     configure_logging(global->verbosity);
     audition(*a);
@@ -168,7 +171,12 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cal->add_option("--accelerometer", c->accelerometer,
                   "m/s² per unit of input level (accelerometer sensitivity and input gain)")
       ->check(CLI::PositiveNumber);
-  cal->add_option("-o,--output", c->output, "Actuator file to write (JSON)")->required();
+  cal->add_option("-o,--output", c->output,
+                  "Actuator file to write (default: the actuator store, see `nibrig calibrate "
+                  "--help`)");
+  cal->footer("Calibrations are stored per actuator name in $NIBRIG_ACTUATORS, else\n"
+              "$XDG_DATA_HOME/nibrig/actuators, else ~/.local/share/nibrig/actuators;\n"
+              "`nibrig audition --actuator NAME` finds them there.");
   cal->callback([c, global] {
     configure_logging(global->verbosity);
     calibrate(*c);
