@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model/mechanics/linear_forcing_integrator.hpp"
+#include "tests/bench/naive_modal_step.hpp"
 
 namespace {
 
@@ -75,20 +76,7 @@ void BM_IntegratorNaiveMatrixExponential(benchmark::State& state) {
   for (auto _ : state) {
     for (std::size_t n = 1; n < force.size(); ++n) {
       const double f0 = force[n - 1], f1 = force[n];
-      double a = 0.0;
-      for (std::size_t i = 0; i < modes; ++i) {
-        const double w = m.omega[i], z = m.zeta[i];
-        Eigen::Matrix4d g = Eigen::Matrix4d::Zero();
-        g(0, 1) = 1.0;
-        g(1, 0) = -w * w;
-        g(1, 1) = -2.0 * z * w;
-        g(1, 2) = m.input[i];
-        g(2, 3) = 1.0;
-        const Eigen::Matrix4d e = (g * h).exp();
-        const Eigen::Vector4d s(x[i][0], x[i][1], f0, (f1 - f0) / h);
-        x[i] = (e * s).head<2>();
-        a += m.output[i] * (-w * w * x[i][0] - 2.0 * z * w * x[i][1] + m.input[i] * f1);
-      }
+      const double a = nibrig::bench::naive_modal_step(m, x, f0, f1, h);
       acceleration[n] = static_cast<float>(a);
     }
     benchmark::DoNotOptimize(acceleration.data());

@@ -7,17 +7,16 @@
 // three of a triplet presentation.
 #include <benchmark/benchmark.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
 #include "rt/engine.hpp"
 #include "rt/voice_builder.hpp"
+#include "tests/bench/naive_modal_step.hpp"
 
 namespace {
 
@@ -84,20 +83,7 @@ double naive_seconds_per_second(std::size_t samples) {
     for (std::size_t k = 0; k < 500; ++k)
       force += spectrum.amplitude_m_s2[s][k] *
                std::sin(2 * std::numbers::pi * spectrum.frequencies_hz[k] * t + phases[k]);
-    double a = 0;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      const double w = m.omega[i], z = m.zeta[i];
-      Eigen::Matrix4d g = Eigen::Matrix4d::Zero();
-      g(0, 1) = 1.0;
-      g(1, 0) = -w * w;
-      g(1, 1) = -2.0 * z * w;
-      g(1, 2) = m.input[i];
-      g(2, 3) = 1.0;
-      const Eigen::Matrix4d e = (g * h).exp();
-      const Eigen::Vector4d state(x[i][0], x[i][1], previous, (force - previous) / h);
-      x[i] = (e * state).head<2>();
-      a += m.output[i] * (-w * w * x[i][0] - 2.0 * z * w * x[i][1] + m.input[i] * force);
-    }
+    const double a = nibrig::bench::naive_modal_step(m, x, previous, force, h);
     previous = force;
     sink += a;
   }
