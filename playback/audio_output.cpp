@@ -147,11 +147,20 @@ struct AudioOutput::Impl {
     state.input_index = settings.input_channel ? *settings.input_channel - 1 : 0;
 
     unsigned frames = settings.period_frames;
-    try {
-      fresh->openStream(&out, settings.input_channel ? &in : nullptr, RTAUDIO_FLOAT32,
-                        settings.sample_rate, &frames, &output_callback, &state, &options);
-    } catch (const RtAudioError& e) {
-      throw DeviceError("cannot open " + asked() + ": " + e.what());
+    for (int attempt = 1;; ++attempt) {
+      try {
+        frames = settings.period_frames;
+        fresh->openStream(&out, settings.input_channel ? &in : nullptr, RTAUDIO_FLOAT32,
+                          settings.sample_rate, &frames, &output_callback, &state, &options);
+        break;
+      } catch (const RtAudioError& e) {
+        // openStream counts the devices again through a temporary JACK client, which a busy
+        // server refuses now and then ("output device parameter value is invalid", seen in CI),
+        // as in probing; a lasting fault fails the same way every time and is reported.
+        if (attempt == kProbeAttempts)
+          throw DeviceError("cannot open " + asked() + ": " + e.what());
+        std::this_thread::sleep_for(kProbeRetryPause);
+      }
     }
     state.prepare(frames);
     try {

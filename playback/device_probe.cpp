@@ -6,8 +6,8 @@
 namespace nibrig::playback {
 namespace {
 
-constexpr int kAttempts = 3;
-constexpr std::chrono::milliseconds kRetryPause{20};
+constexpr int kAttempts = kProbeAttempts;
+constexpr std::chrono::milliseconds kRetryPause = kProbeRetryPause;
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 
 #include <rtaudio/RtAudio.h>
 
+#include <chrono>
 #include <vector>
 
 #include "playback/audio_devices.hpp"
@@ -26,5 +27,10 @@ struct DeviceTable {
 // to probe are retried a few times, 20 ms apart: RtAudio's JACK back end opens a temporary client
 // to count and another per device, and a busy server refuses one now and then.
 DeviceTable probe_devices(RtAudio& rt);
+
+// The same patience for other calls that go through such temporary clients (openStream counts
+// the devices again): how many tries, and the pause between them.
+inline constexpr int kProbeAttempts = 3;
+inline constexpr std::chrono::milliseconds kProbeRetryPause{20};
 
 }  // namespace nibrig::playback
