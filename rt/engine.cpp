@@ -245,10 +245,15 @@ void Engine::mix_players(std::size_t count) noexcept {
     p.voice->process(speed_buffer_.data(), force_buffer_.data(), voice_buffer_.data(), count);
     above += p.voice->forcing().samples_above_speed_range() - before;
     const double target = (!p.leaving && p.slot == selected_) ? 1.0 : 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-      if (p.fade < target) p.fade = std::min(target, p.fade + fade_step_);
-      else if (p.fade > target) p.fade = std::max(target, p.fade - fade_step_);
-      if (p.fade > 0) mix_buffer_[i] += std::sin(0.5 * std::numbers::pi * p.fade) * voice_buffer_[i];
+    if (p.fade == target) {  // steady: full or silent, no gain curve to follow
+      if (target > 0)
+        for (std::size_t i = 0; i < count; ++i) mix_buffer_[i] += voice_buffer_[i];
+    } else {
+      for (std::size_t i = 0; i < count; ++i) {
+        if (p.fade < target) p.fade = std::min(target, p.fade + fade_step_);
+        else if (p.fade > target) p.fade = std::max(target, p.fade - fade_step_);
+        if (p.fade > 0) mix_buffer_[i] += std::sin(0.5 * std::numbers::pi * p.fade) * voice_buffer_[i];
+      }
     }
     if (p.leaving && p.fade == 0.0) {
       retire(p.voice, nullptr);

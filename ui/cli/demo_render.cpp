@@ -108,13 +108,17 @@ std::string run_render_demo(const model::io::Catalog& catalog,
   write_text_file(folder / "renders.csv", table.str());
   std::string played = "  no audio device: nothing played (see `nibrig devices`)\n";
   if (const auto device = available_output()) played = play_all(catalog, catalog_file, stylus, pairs, *device);
-  char line[400];
+  const rt::EngineSettings engine_settings;
+  char line[500];
   std::snprintf(line, sizeof line,
-                "real-time engine: %zu tools rendered over one sweep (17 -> 250 -> 17 mm/s, 3 s) "
-                "through the modes of '%s' at 48 kHz, 64-frame blocks;\n  loudest %s at %.2f m/s^2 "
-                "rms; slowest render %.0fx real time (WAV writing included)\n"
+                "real-time engine: %zu tools rendered over one sweep (%.0f -> %.0f -> %.0f mm/s, "
+                "%.0f s) through the modes of '%s' at %.0f Hz, %zu-frame blocks;\n  loudest %s at "
+                "%.2f m/s^2 rms; slowest render %.0fx real time (WAV writing included)\n"
                 "  report: render/*.wav, render/renders.csv\n",
-                pairs.size(), stylus.name.c_str(), loudest_name.c_str(), loudest, slowest);
+                pairs.size(), 1e3 * rt::SweepSpeed::kPaperLow, 1e3 * rt::SweepSpeed::kPaperHigh,
+                1e3 * rt::SweepSpeed::kPaperLow, rt::SweepSpeed::kPaperPeriod, stylus.name.c_str(),
+                engine_settings.sample_rate_hz, playback::OfflineRenderSettings{}.block_frames,
+                loudest_name.c_str(), loudest, slowest);
   return line + played;
 }
 
