@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <ctime>
@@ -68,36 +69,60 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
   OutputSettings device = settings.device;
   // Enough ring for the whole recording: the control thread here only drains it now and then.
   device.capture_capacity = std::max(device.capture_capacity, std::size_t{1} << 16);
-  BufferPlayer player(played);
-  AudioOutput output(player, device);
-  spdlog::info("calibration: playing {} sweep(s) of {:.1f} s on '{}' channel {}, recording channel {}",
-               sweep.repetitions, sweep.duration_s, output.stream_info().device,
-               device.output_channel, *device.input_channel);
-  // Captured sample j arrived in the callback that rendered frame j: both count from the
-  // stream's first callback, which is where the player starts the sweep.
-  std::vector<float> captured;
-  std::vector<float> block(8192);
-  const auto deadline = std::chrono::steady_clock::now() + settings.timeout;
-  while (captured.size() < played.size()) {
-    const std::size_t n = output.read_captured(block.data(), block.size());
-    captured.insert(captured.end(), block.begin(), block.begin() + n);
-    if (std::chrono::steady_clock::now() > deadline)
-      throw std::runtime_error("calibration: recorded " + std::to_string(captured.size()) + " of " +
-                               std::to_string(played.size()) + " samples within " +
-                               std::to_string(settings.timeout.count()) + " s");
-    if (output.status() == OutputStatus::lost)
-      throw std::runtime_error("calibration: the device was lost while recording (" +
-                               output.last_problem() + ")");
-    if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  if (output.stats().capture_dropped > 0)
-    throw std::runtime_error("calibration: " + std::to_string(output.stats().capture_dropped) +
-                             " recorded samples were dropped; try again on a quieter machine");
-  std::vector<double> recorded(signal.size());
-  for (std::size_t j = 0; j < recorded.size(); ++j)
-    recorded[j] = settings.accelerometer_m_s2_per_unit * captured[lead + j];
 
-  const ResponseEstimate estimate = estimate_response(sweep, signal, recorded);
+  // One pass: play and record. Captured sample j arrived in the callback that rendered frame j:
+  // both count from the stream's first callback, which is where the player starts.
+  auto measure = [&]() {
+    BufferPlayer player(played);
+    AudioOutput output(player, device);
+    spdlog::info("calibration: playing {} sweep(s) of {:.1f} s on '{}' channel {}, recording channel {}",
+                 sweep.repetitions, sweep.duration_s, output.stream_info().device,
+                 device.output_channel, *device.input_channel);
+    std::vector<float> captured;
+    std::vector<float> block(8192);
+    const auto deadline = std::chrono::steady_clock::now() + settings.timeout;
+    while (captured.size() < played.size()) {
+      const std::size_t n = output.read_captured(block.data(), block.size());
+      captured.insert(captured.end(), block.begin(), block.begin() + n);
+      if (std::chrono::steady_clock::now() > deadline)
+        throw std::runtime_error("calibration: recorded " + std::to_string(captured.size()) +
+                                 " of " + std::to_string(played.size()) + " samples within " +
+                                 std::to_string(settings.timeout.count()) + " s");
+      if (output.status() == OutputStatus::lost)
+        throw std::runtime_error("calibration: the device was lost while recording (" +
+                                 output.last_problem() + ")");
+      if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    std::vector<double> recorded(signal.size());
+    for (std::size_t j = 0; j < recorded.size(); ++j)
+      recorded[j] = settings.accelerometer_m_s2_per_unit * captured[lead + j];
+    return estimate_response(sweep, signal, recorded);
+  };
+  // How far the repetitions agree over the band: a block lost or late in one of them (an xrun
+  // that really hit the data) shows as a low SNR between them. Empty with a single repetition.
+  auto band_snr_db = [](const ResponseEstimate& e) {
+    std::vector<double> in_band;
+    for (std::size_t k = 0; k < e.snr_db.size(); ++k)
+      if (e.response.frequencies_hz[k] >= 20 && e.response.frequencies_hz[k] <= 500)
+        in_band.push_back(e.snr_db[k]);
+    if (in_band.empty()) return 1e9;
+    std::sort(in_band.begin(), in_band.end());
+    return in_band[in_band.size() / 2];
+  };
+  ResponseEstimate estimate = measure();
+  for (int attempt = 2; attempt <= settings.attempts && band_snr_db(estimate) < settings.min_snr_db;
+       ++attempt) {
+    spdlog::warn("calibration: the sweeps agree to only {:.1f} dB (median over 20-500 Hz); "
+                 "measuring again",
+                 band_snr_db(estimate));
+    ResponseEstimate again = measure();
+    if (band_snr_db(again) > band_snr_db(estimate)) estimate = std::move(again);
+  }
+  if (band_snr_db(estimate) < settings.min_snr_db)
+    spdlog::warn("calibration: the best of {} attempts agrees to {:.1f} dB only; check the "
+                 "flatness it reports",
+                 settings.attempts, band_snr_db(estimate));
+
   ActuatorCalibration calibration;
   calibration.name = settings.name;
   calibration.created = utc_now();

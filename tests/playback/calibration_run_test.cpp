@@ -26,12 +26,13 @@ TEST(CalibrationRun, MeasuresAndFlattensASimulatedActuatorThroughJack) {
   settings.sweep.silence_s = 0.5;
   settings.sweep.repetitions = 2;
   auto run = std::async(std::launch::async, [&] { return run_calibration(settings); });
-  // Wire out → actuator → in as soon as the stream's ports exist (within the lead-in).
+  // Wire out → actuator → in whenever the stream's ports exist (within each attempt's lead-in:
+  // run_calibration measures again after xruns, on a fresh stream with fresh ports).
   bool wired = false;
-  for (int i = 0; i < 200 && !wired; ++i) {
-    wired = actuator.connect("cal:outport 0", "actuator:in") &&
-            actuator.connect("actuator:out", "cal:inport 0");
-    if (!wired) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  while (run.wait_for(std::chrono::milliseconds(2)) != std::future_status::ready) {
+    const bool out = actuator.connect("cal:outport 0", "actuator:in");
+    const bool in = actuator.connect("actuator:out", "cal:inport 0");
+    wired = wired || (out && in);
   }
   ASSERT_TRUE(wired) << server.log();
   const ActuatorCalibration c = run.get();
