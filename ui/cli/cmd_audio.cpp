@@ -68,8 +68,9 @@ void audition(const AuditionOptions& o) {
     const auto filter = playback::redesign_for_rate(calibration, engine.internal_rate());
     engine.set_calibration(std::make_unique<rt::FirFilter>(filter.taps));
     engine.set_output_level(1.0);  // the filter turns m/s² into output level
-    std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over 20-500 Hz\n",
-                calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db);
+    std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
+                calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db,
+                calibration.design.band_low_hz, calibration.design.band_high_hz);
   }
   Stroke stroke = make_stroke(o.stroke);
   engine.attach(std::move(stroke.source));
@@ -127,9 +128,9 @@ void calibrate(const CalibrateOptions& o) {
   std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
   playback::write_actuator_file(file, c);
   std::printf("actuator '%s': chain delay %.2f ms; inverse filter (%zu taps at %.0f Hz) flat to "
-              "%.2f dB over 20-500 Hz (rms %.2f dB), largest boost %.1f dB%s; wrote %s\n",
+              "%.2f dB over %.0f-%.0f Hz (rms %.2f dB), largest boost %.1f dB%s; wrote %s\n",
               c.name.c_str(), 1e3 * c.delay_s, c.filter.taps.size(), c.filter.sample_rate_hz,
-              c.filter.max_deviation_db, c.filter.rms_deviation_db, c.filter.max_boost_db,
+              c.filter.max_deviation_db, c.design.band_low_hz, c.design.band_high_hz, c.filter.rms_deviation_db, c.filter.max_boost_db,
               c.filter.boost_limited.empty() ? "" : " (capped in places: not flattened there)",
               file.c_str());
 }
