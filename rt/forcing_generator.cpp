@@ -1,14 +1,16 @@
 // How the noise is made. Every hop (half a frame) a new frame of independent complex Gaussian bins
-// Z_k is drawn; for each table speed s the frame Z_k·M_s(k) is inverse-transformed, multiplied by
-// a sine window and overlap-added into that speed's stream (the work of a frame is spread over
-// the calls of the hop before it). The sine window's squares sum to 1 at
-// 50 % overlap, so the streams are stationary Gaussian processes with the table's spectra, and
-// frames never repeat (xoshiro256**), so nothing in the output is periodic: a fixed-phase sum of
+// Z_k is drawn; for each table speed s the frame Z_k·M_s(k) is inverse-transformed and multiplied
+// by a sine window, and each output sample is the sum of two such frames, 50 % overlapped. The work
+// of a frame is spread over the calls of the hop before it and the overlap-add is done as samples
+// are read, so no call pays for a whole frame (when several warm voices hopped in the same call,
+// moving their frames cost up to a millisecond). The sine window's squares sum to 1 at 50 %
+// overlap, so the streams are stationary Gaussian processes with the table's spectra, and frames
+// never repeat (xoshiro256**), so nothing in the output is periodic: a fixed-phase sum of
 // sinusoids on a 1 Hz grid would repeat every second. Because all streams share the same Z, they
 // are coherent: mixing two of them with weights w and 1−w gives noise whose amplitude spectrum is
 // exactly w·M_s + (1−w)·M_{s+1}. The speed therefore acts through per-sample weights, with no
 // filter state to update and no lag; the only cost is computing every speed's stream (one inverse
-// FFT per speed per hop, a fraction of a millisecond every half second at 4 kHz).
+// FFT per speed per hop).
 #include "rt/forcing_generator.hpp"
 
 #include <algorithm>
@@ -17,6 +19,14 @@
 #include <stdexcept>
 
 namespace nibrig::rt {
+
+namespace {
+
+// Z is drawn in this many parts (a few hundred bins each at 8 kHz), so that no call pays for
+// thousands of Gaussian draws; the draws come in the same order, so the noise does not depend on it.
+constexpr std::size_t kNoiseChunks = 8;
+
+}  // namespace
 
 ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
     : table_(std::move(table)),
@@ -29,52 +39,53 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
   for (std::size_t n = 0; n < frame_; ++n)
     window_[n] = std::sin(std::numbers::pi * (static_cast<double>(n) + 0.5) /
                           static_cast<double>(frame_));
-  streams_.assign(table_->speeds().size() * frame_, 0.0);
-  next_.assign(streams_.size(), 0.0);
+  frames_.assign(3 * table_->speeds().size() * frame_, 0.0);
   z_.resize(table_->bins());
   finish_next_frame();
   start_next_hop();     // frame −1: its second half overlaps the first output hop
-  finish_next_frame();  // frame 0, added when the first call starts the first hop
+  finish_next_frame();  // frame 0, which the first call's hop makes current
   position_ = hop_;
+}
+
+std::size_t ForcingGenerator::frame_steps() const noexcept {
+  return kNoiseChunks + table_->speeds().size();
 }
 
 void ForcingGenerator::prepare_next_frame_step() noexcept {
   const std::size_t bins = table_->bins();
-  if (steps_done_ == 0) {
+  if (steps_done_ < kNoiseChunks) {
     // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
-    for (std::size_t k = 0; k < bins; ++k) {
+    const std::size_t from = bins * steps_done_ / kNoiseChunks;
+    const std::size_t to = bins * (steps_done_ + 1) / kNoiseChunks;
+    for (std::size_t k = from; k < to; ++k) {
       double re, im;
       noise_.normal_pair(re, im);
       z_[k] = {re * std::numbers::sqrt2 / 2, im * std::numbers::sqrt2 / 2};
     }
   } else {
-    const std::size_t s = steps_done_ - 1;
+    const std::size_t s = steps_done_ - kNoiseChunks;
     const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised
     auto spectrum = fft_.spectrum();
     const auto magnitude = table_->magnitudes(s);
     for (std::size_t k = 0; k < bins; ++k) spectrum[k] = z_[k] * magnitude[k];
     fft_.backward();
     const auto real = fft_.real();
-    double* next = next_.data() + s * frame_;
+    double* next = frame_slot(next_, s);
     for (std::size_t n = 0; n < frame_; ++n) next[n] = window_[n] * real[n] * scale;
   }
   ++steps_done_;
 }
 
 void ForcingGenerator::finish_next_frame() noexcept {
-  while (steps_done_ < table_->speeds().size() + 1) prepare_next_frame_step();
+  while (steps_done_ < frame_steps()) prepare_next_frame_step();
 }
 
 void ForcingGenerator::start_next_hop() noexcept {
-  finish_next_frame();  // normally done already, a step per call
-  for (std::size_t s = 0; s < table_->speeds().size(); ++s) {
-    double* stream = streams_.data() + s * frame_;
-    const double* next = next_.data() + s * frame_;
-    // Drop the hop just handed out, then add the new frame over the whole window.
-    std::copy(stream + hop_, stream + frame_, stream);
-    std::fill(stream + hop_, stream + frame_, 0.0);
-    for (std::size_t n = 0; n < frame_; ++n) stream[n] += next[n];
-  }
+  finish_next_frame();  // normally done already, spread over the calls of the hop
+  const std::size_t freed = previous_;
+  previous_ = current_;
+  current_ = next_;
+  next_ = freed;
   steps_done_ = 0;
   position_ = 0;
 }
@@ -83,26 +94,35 @@ void ForcingGenerator::generate(const double* speed_m_s, const double* normal_fo
                                 double* out, std::size_t count) noexcept {
   const auto& speeds = table_->speeds();
   const std::size_t last = speeds.size() - 1;
-  // The next frame is made one step (a draw of Z, or one speed's inverse FFT) per call, so no
-  // callback pays for a whole frame; a hop is thousands of samples, callbacks a few dozen.
-  if (steps_done_ < speeds.size() + 1) prepare_next_frame_step();
+  // The next frame is made a few steps per call, as many as keep it on time for the hop whatever
+  // the block size (one step per call at the usual few dozen samples: a hop is thousands).
+  if (steps_done_ < frame_steps()) {
+    const std::size_t left = frame_steps() - steps_done_;
+    const std::size_t samples_left = std::max<std::size_t>(hop_ - position_, 1);
+    const std::size_t steps = std::min(left, std::max<std::size_t>(1, left * count / samples_left));
+    for (std::size_t i = 0; i < steps; ++i) prepare_next_frame_step();
+  }
   for (std::size_t i = 0; i < count; ++i) {
     if (position_ == hop_) start_next_hop();
     const double v = std::isfinite(speed_m_s[i]) ? std::max(0.0, speed_m_s[i]) : 0.0;
     const double force = std::isfinite(normal_force_n[i]) ? normal_force_n[i] : 0.0;
     const double gain = std::clamp(force / kReferenceNormalForce, 0.0, kMaxNormalForceRatio);
-    const double* stream = streams_.data() + position_;
+    // Overlap-add as the samples are read: the previous frame's second half plus the current
+    // frame's first half.
+    auto stream = [&](std::size_t s) {
+      return frame_slot(previous_, s)[hop_ + position_] + frame_slot(current_, s)[position_];
+    };
     double value;
     if (v <= speeds.front()) {
-      value = (v / speeds.front()) * stream[0];
+      value = (v / speeds.front()) * stream(0);
     } else if (v >= speeds[last]) {
-      value = stream[last * frame_];
+      value = stream(last);
       above_range_ += v > speeds[last];
     } else {
       std::size_t s = 1;
       while (speeds[s] < v) ++s;  // at most the table's few speeds
       const double u = (v - speeds[s - 1]) / (speeds[s] - speeds[s - 1]);
-      value = (1 - u) * stream[(s - 1) * frame_] + u * stream[s * frame_];
+      value = (1 - u) * stream(s - 1) + u * stream(s);
     }
     out[i] = gain * value;
     ++position_;

@@ -40,9 +40,15 @@ class ForcingGenerator {
   std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
 
  private:
+  // The work of one frame, in steps: kNoiseChunks draws of a part of Z, then one windowed inverse
+  // FFT per table speed.
+  std::size_t frame_steps() const noexcept;
   void prepare_next_frame_step() noexcept;
   void finish_next_frame() noexcept;
   void start_next_hop() noexcept;
+  double* frame_slot(std::size_t slot, std::size_t speed) noexcept {
+    return frames_.data() + (slot * table_->speeds().size() + speed) * frame_;
+  }
 
   std::shared_ptr<const ForcingTable> table_;
   GaussianNoise noise_;
@@ -50,10 +56,13 @@ class ForcingGenerator {
   std::size_t frame_, hop_;
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
-  std::vector<double> streams_;  // speeds × frame: overlap-added output per table speed
-  std::vector<double> next_;     // speeds × frame: the next windowed frame, being made
-  std::size_t steps_done_ = 0;   // of the next frame: 0 = nothing, 1 = Z drawn, 1 + s = s speeds
-  std::size_t position_;         // next sample of the first hop to hand out
+  // Three slots of speeds × frame windowed frames: the previous frame (its second half is being
+  // handed out), the current one (its first half), and the next (being made). A hop only renames
+  // them, so no call pays for moving a whole frame.
+  std::vector<double> frames_;
+  std::size_t previous_ = 0, current_ = 1, next_ = 2;
+  std::size_t steps_done_ = 0;   // of the next frame (see frame_steps)
+  std::size_t position_;         // next sample of the current hop to hand out
   std::uint64_t above_range_ = 0;
 };
 

@@ -149,11 +149,12 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
   const auto stats = engine.stats();
   const auto device = output.stats();
   EXPECT_EQ(renderer.allocations(), 0u) << "over " << renderer.calls() << " callbacks";
-  // Overruns are CPU time above the period, measured inside the callback. On this shared 2-core
-  // VM a handful in 45,000 callbacks still occur under the flood (7 in the first run, wall time
-  // up to 9 ms): not yet explained — hypervisor steal time is charged to the running thread, and
-  // that is the suspect. Bounded here at 0.1 % of callbacks until it is; see the issue note.
-  EXPECT_LE(stats.overruns, renderer.calls() / 1000);
+  // Overruns are CPU time above the period, measured inside the callback (preemption and the
+  // dummy driver's xruns are not ours and not counted). Until the forcing generator spread its
+  // hop over the calls, 0-22 blocks a minute took up to 4 ms here: every warm voice moved its
+  // frames in the same callback. Since then the largest block takes 0.25-0.36 ms of CPU time
+  // under the flood, with the machine's two cores otherwise busy (see the issue note).
+  EXPECT_EQ(stats.overruns, 0u) << "largest CPU time of a block " << 1e6 * stats.max_callback_cpu_s << " us";
   EXPECT_GT(renderer.calls(), 20000u);  // 60 s of 64-frame periods is 45,000
   EXPECT_GT(swaps, 20u);
   EXPECT_GT(contacts, 100000u);
