@@ -76,6 +76,10 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
 
   // One pass: play and record. Captured sample j arrived in the callback that rendered frame j:
   // both count from the stream's first callback, which is where the player starts.
+  struct Attempt {
+    ResponseEstimate estimate;
+    std::uint64_t xruns = 0;  // the device's own, during this attempt: they explain a bad one
+  };
   auto measure = [&]() {
     BufferPlayer player(played);
     AudioOutput output(player, device);
@@ -100,7 +104,9 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
     std::vector<double> recorded(signal.size());
     for (std::size_t j = 0; j < recorded.size(); ++j)
       recorded[j] = settings.accelerometer_m_s2_per_unit * captured[lead + j];
-    return estimate_response(sweep, signal, recorded);
+    const OutputStats stats = output.stats();
+    return Attempt{estimate_response(sweep, signal, recorded),
+                   stats.output_underflows + stats.input_overflows};
   };
   // How far the repetitions agree over the band: a block lost or late in one of them (an xrun
   // that really hit the data) shows as a low SNR between them. Empty with a single repetition.
@@ -114,19 +120,20 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
     std::sort(in_band.begin(), in_band.end());
     return in_band[in_band.size() / 2];
   };
-  ResponseEstimate estimate = measure();
-  for (int attempt = 2; attempt <= settings.attempts && band_snr_db(estimate) < settings.min_snr_db;
+  Attempt best = measure();
+  for (int attempt = 2; attempt <= settings.attempts && band_snr_db(best.estimate) < settings.min_snr_db;
        ++attempt) {
-    spdlog::warn("calibration: the sweeps agree to only {:.1f} dB (median over {:.0f}-{:.0f} Hz); "
-                 "measuring again",
-                 band_snr_db(estimate), band_low, band_high);
-    ResponseEstimate again = measure();
-    if (band_snr_db(again) > band_snr_db(estimate)) estimate = std::move(again);
+    spdlog::warn("calibration: the sweeps agree to only {:.1f} dB (median over {:.0f}-{:.0f} Hz; "
+                 "the device reported {} xrun(s) meanwhile); measuring again",
+                 band_snr_db(best.estimate), band_low, band_high, best.xruns);
+    Attempt again = measure();
+    if (band_snr_db(again.estimate) > band_snr_db(best.estimate)) best = std::move(again);
   }
-  if (band_snr_db(estimate) < settings.min_snr_db)
-    spdlog::warn("calibration: the best of {} attempts agrees to {:.1f} dB only; check the "
-                 "flatness it reports",
-                 settings.attempts, band_snr_db(estimate));
+  if (band_snr_db(best.estimate) < settings.min_snr_db)
+    spdlog::warn("calibration: the best of {} attempts agrees to {:.1f} dB only ({} xrun(s) "
+                 "during it); check the flatness it reports",
+                 settings.attempts, band_snr_db(best.estimate), best.xruns);
+  const ResponseEstimate& estimate = best.estimate;
 
   ActuatorCalibration calibration;
   calibration.name = settings.name;
