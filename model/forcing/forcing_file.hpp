@@ -1,0 +1,29 @@
+// A fitted forcing model on disk (forcing.json, format "nibrig-forcing" version 1): what
+// `nibrig forcing fit` writes and prediction reads. Layout in the README ("Formats").
+#pragma once
+
+#include <filesystem>
+
+#include "model/forcing/forcing_model.hpp"
+
+namespace nibrig::model::forcing {
+
+// {"format": "nibrig-forcing", "version": 1, "knot_frequencies_hz": [...],
+//  "reference": {"tip_diameter_mm", "material"},
+//  "tip_curves": [{"tip_diameter_mm", "log_gain": [one per knot]}],
+//  "material_curves": [{"material", "log_gain": [...]}],
+//  "frequencies_hz": [...], "speeds_mm_s": [...],
+//  "surfaces": [{"id", "forcing_n": [[one per frequency] per speed]}],
+//  "fit": {"residual_rms_db", "observations", "skipped_nonpositive",
+//          "exemplars": [{"tool", "surface", "rms_db"}]},
+//  "notes": [...]}
+// log_gain is the natural log of the gain. Written through a temporary file and a rename.
+void write_forcing_model(const std::filesystem::path& file, const ForcingModel& model);
+
+// Throws io::FormatError naming the file and field: wrong format or version, a missing field,
+// knots or frequencies not strictly increasing, frequencies outside the knots, a curve or forcing
+// row of the wrong length, duplicate tips, materials or surfaces, a reference without its curve or
+// with a non-zero one (the gauge), negative or non-finite numbers where they cannot be.
+ForcingModel read_forcing_model(const std::filesystem::path& file);
+
+}  // namespace nibrig::model::forcing

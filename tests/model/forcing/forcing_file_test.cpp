@@ -1,0 +1,128 @@
+// forcing.json: what is written is read back unchanged, and a damaged file is refused with the
+// file and the field named.
+#include "model/forcing/forcing_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "model/forcing/forcing_fit.hpp"
+#include "model/io/format_error.hpp"
+#include "tests/model/forcing/synthetic_exemplars.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::forcing {
+namespace {
+
+ForcingModel fitted_model() {
+  auto truth = test::make_synthetic_truth(8);
+  test::add_log_noise(truth.exemplars, 0.1, 1);
+  ForcingModel model = fit_forcing_model(truth.exemplars);
+  model.notes = {"synthetic", "second note"};
+  return model;
+}
+
+TEST(ForcingFile, RoundTripKeepsEveryNumber) {
+  const auto dir = nibrig::test::scratch_dir("forcing_file_round_trip");
+  const ForcingModel model = fitted_model();
+  write_forcing_model(dir / "forcing.json", model);
+  const ForcingModel back = read_forcing_model(dir / "forcing.json");
+  // nlohmann writes doubles with round-trip precision; only the mm <-> m conversions round.
+  EXPECT_EQ(back.knot_frequencies_hz, model.knot_frequencies_hz);
+  ASSERT_EQ(back.tip_log_gain.size(), model.tip_log_gain.size());
+  for (const auto& [d, curve] : model.tip_log_gain) EXPECT_EQ(back.tip_curve(d), curve);
+  EXPECT_EQ(back.material_log_gain, model.material_log_gain);
+  EXPECT_NEAR(back.reference_tip_diameter_m, model.reference_tip_diameter_m, 1e-15);
+  EXPECT_EQ(back.reference_material, model.reference_material);
+  EXPECT_EQ(back.frequencies_hz, model.frequencies_hz);
+  ASSERT_EQ(back.speeds_m_s.size(), model.speeds_m_s.size());
+  for (std::size_t s = 0; s < model.speeds_m_s.size(); ++s)
+    EXPECT_NEAR(back.speeds_m_s[s], model.speeds_m_s[s], 1e-15);
+  EXPECT_EQ(back.surface_forcing, model.surface_forcing);
+  EXPECT_EQ(back.residual_rms_db, model.residual_rms_db);
+  EXPECT_EQ(back.observations, model.observations);
+  EXPECT_EQ(back.skipped_nonpositive, model.skipped_nonpositive);
+  ASSERT_EQ(back.exemplar_fits.size(), model.exemplar_fits.size());
+  for (std::size_t e = 0; e < model.exemplar_fits.size(); ++e) {
+    EXPECT_EQ(back.exemplar_fits[e].tool, model.exemplar_fits[e].tool);
+    EXPECT_EQ(back.exemplar_fits[e].surface, model.exemplar_fits[e].surface);
+    EXPECT_EQ(back.exemplar_fits[e].rms_db, model.exemplar_fits[e].rms_db);
+  }
+  EXPECT_EQ(back.notes, model.notes);
+}
+
+class DamagedForcingFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = nibrig::test::scratch_dir("forcing_file_damaged");
+    write_forcing_model(dir_ / "good.json", fitted_model());
+    std::ifstream in(dir_ / "good.json");
+    good_ = nlohmann::json::parse(in);
+  }
+
+  // Writes `json` to a file and expects reading it to fail naming the file and `field`.
+  void expect_refused(const nlohmann::json& json, const std::string& field,
+                      const std::string& problem) {
+    const auto file = dir_ / "bad.json";
+    std::ofstream(file) << json.dump();
+    try {
+      read_forcing_model(file);
+      ADD_FAILURE() << "expected a FormatError for " << field;
+    } catch (const io::FormatError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+      EXPECT_NE(what.find("field '" + field + "'"), std::string::npos) << what;
+      EXPECT_NE(what.find(problem), std::string::npos) << what;
+    }
+  }
+
+  std::filesystem::path dir_;
+  nlohmann::json good_;
+};
+
+TEST_F(DamagedForcingFile, MissingFieldIsNamed) {
+  auto j = good_;
+  j.erase("knot_frequencies_hz");
+  expect_refused(j, "knot_frequencies_hz", "missing field");
+  j = good_;
+  j["surfaces"][1].erase("forcing_n");
+  expect_refused(j, "surfaces[1].forcing_n", "missing field");
+}
+
+TEST_F(DamagedForcingFile, WrongLengthsAreNamed) {
+  auto j = good_;
+  j["tip_curves"][0]["log_gain"].erase(0);
+  expect_refused(j, "tip_curves[0].log_gain", "one value per knot (11), found 10");
+  j = good_;
+  j["surfaces"][0]["forcing_n"][1].erase(3);
+  expect_refused(j, "surfaces[0].forcing_n[1]", "one value per frequency");
+  j = good_;
+  j["surfaces"][2]["forcing_n"].erase(0);
+  expect_refused(j, "surfaces[2].forcing_n", "one row per speed");
+}
+
+TEST_F(DamagedForcingFile, BadValuesAreNamed) {
+  auto j = good_;
+  j["format"] = "nibrig-space";
+  expect_refused(j, "format", "nibrig-forcing");
+  j = good_;
+  j["knot_frequencies_hz"][4] = 10.0;
+  expect_refused(j, "knot_frequencies_hz[4]", "strictly increasing");
+  j = good_;
+  j["surfaces"][0]["forcing_n"][0][5] = -1.0;
+  expect_refused(j, "surfaces[0].forcing_n[0][5]", ">= 0");
+  j = good_;
+  j["material_curves"][0]["log_gain"][2] = "high";
+  expect_refused(j, "material_curves[0].log_gain[2]", "expected a number");
+  j = good_;
+  for (auto& curve : j["material_curves"])
+    if (curve["material"] == "vero") curve["log_gain"][0] = 0.5;
+  expect_refused(j, "material_curves", "must be all zeros");
+  j = good_;
+  j["surfaces"][1]["id"] = j["surfaces"][0]["id"];
+  expect_refused(j, "surfaces[1].id", "a second entry");
+}
+
+}  // namespace
+}  // namespace nibrig::model::forcing

@@ -1,0 +1,112 @@
+// End-to-end tests of `nibrig forcing fit|loo`, in-process, on the bundled catalog.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "model/forcing/forcing_file.hpp"
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+using test::is_png;
+using test::run_cli;
+
+std::vector<std::string> lines_of(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// Both commands run with a coarser mesh and fewer modes than the template's (4 mm, 32 instead of
+// 3 mm, 64: ~1 % in |H|, ~4x faster): these tests are about the commands; the model's real-data
+// test uses the full resolution.
+const std::vector<std::string> kCoarse{"--modes", "32", "--mesh-size", "0.004"};
+
+std::vector<std::string> with_coarse(std::vector<std::string> args) {
+  args.insert(args.end(), kCoarse.begin(), kCoarse.end());
+  return args;
+}
+
+TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
+  const auto out = test::scratch_dir("cli_forcing_fit");
+  testing::internal::CaptureStdout();
+  const int code = run_cli(with_coarse({"forcing", "fit", "-o", (out / "forcing.json").string(),
+                                        "--plots", (out / "plots").string()}));
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  const auto model = model::forcing::read_forcing_model(out / "forcing.json");
+  // The bundled catalog: 54 printed exemplars on 6 surfaces (see the model's real-data test).
+  EXPECT_EQ(model.exemplar_count(), 54u);
+  EXPECT_EQ(model.surface_forcing.size(), 6u);
+  EXPECT_EQ(model.tip_log_gain.size(), 3u);
+  EXPECT_EQ(model.material_log_gain.size(), 4u);
+  EXPECT_GT(model.residual_rms_db, 0.0);
+  ASSERT_FALSE(model.notes.empty());
+  EXPECT_NE(model.notes.front().find("default_catalog.json"), std::string::npos);
+  EXPECT_NE(model.notes[1].find("32 modes, 4.00 mm"), std::string::npos) << model.notes[1];
+  EXPECT_TRUE(is_png(out / "plots" / "tip_curves.png"));
+  EXPECT_TRUE(is_png(out / "plots" / "material_curves.png"));
+  EXPECT_NE(text.find("23 of the paper's 27 tools"), std::string::npos) << text;
+  EXPECT_NE(text.find("missing from the catalog: DM952 on office"), std::string::npos) << text;
+  EXPECT_NE(text.find("residual RMS"), std::string::npos) << text;
+}
+
+TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
+  const auto out = test::scratch_dir("cli_forcing_loo");
+  testing::internal::CaptureStdout();
+  const int code = run_cli({"forcing", "loo", "--csv", (out / "loo.csv").string(), "--modes", "32",
+                            "--mesh-size", "0.004"});
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("23 predicted, 0 not predictable"), std::string::npos) << text;
+  EXPECT_NE(text.find("worst: "), std::string::npos) << text;
+  EXPECT_NE(text.find("vero2       office"), std::string::npos) << text;
+  const auto csv = lines_of(out / "loo.csv");
+  ASSERT_EQ(csv.size(), 24u);  // header and the 23 paper tools present
+  EXPECT_EQ(csv[0].rfind("tool,surface,predictable,rms_db,baseline_rms_db,rms_db_17_mm_s", 0), 0u)
+      << csv[0];
+  for (std::size_t k = 1; k < csv.size(); ++k) {
+    std::stringstream row(csv[k]);
+    std::vector<std::string> cells;
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 11u) << csv[k];
+    EXPECT_EQ(cells[2], "yes") << csv[k];
+    const double rms = std::stod(cells[3]);
+    EXPECT_GT(rms, 0.5) << csv[k];  // a held-out measurement is never predicted to its noise
+    EXPECT_LT(rms, 6.0) << csv[k];
+  }
+}
+
+TEST(ForcingCli, AMissingCatalogIsOneClearLine) {
+  testing::internal::CaptureStderr();
+  const int code = run_cli({"forcing", "fit", "/nonexistent/catalog.json"});
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(code, 0);
+  EXPECT_NE(err.find("/nonexistent/catalog.json: no such file (expected a tool catalog JSON)"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
+TEST(ForcingCli, AMalformedCatalogNamesTheFileAndField) {
+  const auto dir = test::scratch_dir("cli_forcing_bad_catalog");
+  std::ifstream in(test::assets_dir() / "default_catalog.json");
+  auto catalog = nlohmann::json::parse(in);
+  catalog["pairings"][0]["vibration"]["amplitude_m_s2"][2].erase(0);
+  const auto file = dir / "broken.json";
+  std::ofstream(file) << catalog.dump();
+  testing::internal::CaptureStderr();
+  const int code = run_cli({"forcing", "loo", file.string()});
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(code, 0);
+  EXPECT_NE(err.find(file.string()), std::string::npos) << err;
+  EXPECT_NE(err.find("pairings[0].vibration.amplitude_m_s2[2]"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace nibrig::ui::cli

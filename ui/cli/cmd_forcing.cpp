@@ -1,0 +1,218 @@
+// `nibrig forcing fit|loo`: the data-driven forcing model of Sec. 5.2 (Eq. 10) fitted to the
+// printed tools of a catalog, and its leave-one-out validation (Fig. 12).
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <sstream>
+
+#include "model/forcing/forcing_file.hpp"
+#include "model/forcing/leave_one_out.hpp"
+#include "ui/cli/commands.hpp"
+#include "ui/cli/forcing_figures.hpp"
+#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/logging.hpp"
+#include "ui/cli/output.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace {
+
+namespace forcing = model::forcing;
+
+struct FitCommandOptions {
+  ForcingInputOptions inputs;
+  std::filesystem::path output = "forcing.json";
+  std::filesystem::path plots;
+};
+
+struct LooCommandOptions {
+  ForcingInputOptions inputs;
+  std::filesystem::path csv;
+  bool all = false;  // hold out every exemplar, not only the paper's tools
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One row per curve, its gain in dB at every knot.
+std::string curves_table(const forcing::ForcingModel& model) {
+  std::string out = fmt::format("{:<22}", "gain (dB) at Hz");
+  for (double f : model.knot_frequencies_hz) out += fmt::format("{:>7g}", f);
+  out += "\n";
+  auto row = [&](const std::string& label, const std::vector<double>& knots) {
+    out += fmt::format("{:<22}", label);
+    for (double k : knots) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(k));
+    out += "\n";
+  };
+  for (const auto& [d, knots] : model.tip_log_gain)
+    row(fmt::format("tip {:g} mm{}", d * 1e3,
+                    std::abs(d - model.reference_tip_diameter_m) < 1e-6 ? " (ref)" : ""),
+        knots);
+  for (const auto& [m, knots] : model.material_log_gain)
+    row(fmt::format("material {}{}", m, m == model.reference_material ? " (ref)" : ""), knots);
+  return out;
+}
+
+void run_fit(const FitCommandOptions& o) {
+  ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  std::cout << describe_inputs(inputs);
+  const auto start = std::chrono::steady_clock::now();
+  forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
+  const double fit_seconds = seconds_since(start);
+  model.notes = inputs.notes;
+  model.notes.push_back(
+      "fit of Eq. 10 in log amplitude; ln t(2 mm) = ln m(vero) = 0 fix the scale, so F_S is the "
+      "forcing the 2 mm VeroClear tool sees (model/forcing/forcing_fit.hpp)");
+
+  const auto [best, worst] =
+      std::minmax_element(model.exemplar_fits.begin(), model.exemplar_fits.end(),
+                          [](const auto& a, const auto& b) { return a.rms_db < b.rms_db; });
+  std::cout << fmt::format(
+      "fit: {} observations ({} amplitudes <= 0 skipped), residual RMS {:.2f} dB; per exemplar "
+      "{:.2f} ({} on {}) to {:.2f} dB ({} on {}); {:.3f} s\n",
+      model.observations, model.skipped_nonpositive, model.residual_rms_db, best->rms_db,
+      best->tool, best->surface, worst->rms_db, worst->tool, worst->surface, fit_seconds);
+  std::cout << curves_table(model);
+  ensure_folder(o.output.parent_path());
+  forcing::write_forcing_model(o.output, model);
+  std::cout << "wrote " << o.output.string() << "\n";
+  if (!o.plots.empty()) {
+    ensure_folder(o.plots);
+    plot_scaling_curves(model, o.plots);
+    std::cout << "wrote " << (o.plots / "tip_curves.png").string() << " and "
+              << (o.plots / "material_curves.png").string() << "\n";
+  }
+}
+
+std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& speeds_m_s) {
+  std::ostringstream csv;
+  csv << "tool,surface,predictable,rms_db,baseline_rms_db";
+  for (double v : speeds_m_s) csv << fmt::format(",rms_db_{:g}_mm_s", v * 1e3);
+  csv << ",reason\n";
+  for (const auto& r : loo.results) {
+    csv << r.tool << ',' << r.surface << ',' << (r.predictable ? "yes" : "no") << ',';
+    if (r.predictable)
+      csv << fmt::format("{},{}", r.rms_db, r.baseline_rms_db);
+    else
+      csv << ',';
+    for (std::size_t s = 0; s < speeds_m_s.size(); ++s)
+      csv << ',' << (r.predictable ? fmt::format("{}", r.rms_db_by_speed[s]) : "");
+    std::string reason = r.reason;
+    std::replace(reason.begin(), reason.end(), '"', '\'');
+    csv << ",\"" << reason << "\"\n";
+  }
+  return csv.str();
+}
+
+void run_loo(const LooCommandOptions& o) {
+  ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  std::cout << describe_inputs(inputs);
+  std::vector<std::size_t> held;
+  for (std::size_t e = 0; e < inputs.exemplars.size(); ++e)
+    if (o.all || forcing::is_paper_tool(inputs.exemplars[e])) held.push_back(e);
+  if (held.empty())
+    throw std::runtime_error(
+        "no paper tool (vero, DM95 or DM85 with a 1, 2 or 4 mm tip on office, note or stone) "
+        "among the exemplars; --all holds out every exemplar instead");
+
+  const auto start = std::chrono::steady_clock::now();
+  const forcing::LeaveOneOut loo = forcing::leave_one_out(inputs.exemplars, held);
+  const double seconds = seconds_since(start);
+  const auto& speeds = inputs.exemplars.front().measured.speeds_m_s;
+
+  std::string header = fmt::format("{:<12}{:<11}{:>8}{:>10}  RMS dB at mm/s:", "tool", "surface",
+                                   "RMS dB", "baseline");
+  for (double v : speeds) header += fmt::format("{:>7.0f}", v * 1e3);
+  std::cout << header << "\n";
+  for (const auto& r : loo.results) {
+    std::string line = fmt::format("{:<12}{:<11}", r.tool, r.surface);
+    if (r.predictable) {
+      line += fmt::format("{:>8.2f}{:>10.2f}  {:15}", r.rms_db, r.baseline_rms_db, "");
+      for (double e : r.rms_db_by_speed) line += fmt::format("{:>7.2f}", e);
+    } else {
+      line += "  not predictable: " + r.reason;
+    }
+    std::cout << line << "\n";
+  }
+  const auto& s = loo.summary;
+  std::cout << fmt::format(
+      "held out {} ({} predicted, {} not predictable) in {:.2f} s; RMS dB mean {:.2f}, median "
+      "{:.2f}, max {:.2f}; baseline (geometric mean of the other tools on the surface) mean "
+      "{:.2f}\n",
+      loo.results.size(), s.predicted, s.not_predictable, seconds, s.mean_rms_db, s.median_rms_db,
+      s.max_rms_db, s.mean_baseline_rms_db);
+  if (!s.worst.empty()) {
+    std::string worst = "worst:";
+    for (std::size_t k = 0; k < s.worst.size(); ++k) {
+      const auto& r = loo.results[s.worst[k]];
+      worst += fmt::format("{} {} on {} ({:.2f} dB)", k ? "," : "", r.tool, r.surface, r.rms_db);
+    }
+    std::cout << worst << "\n";
+  }
+  if (!o.csv.empty()) {
+    write_text_file(o.csv, loo_csv(loo, speeds));
+    std::cout << "wrote " << o.csv.string() << "\n";
+  }
+}
+
+void add_input_options(CLI::App* cmd, ForcingInputOptions& o) {
+  // Files are checked when read, so that a bad one is reported in one line like every other error.
+  cmd->add_option("catalog", o.catalog, "Tool catalog JSON (default: the bundled one)");
+  cmd->add_option("--design", o.design_template,
+                  "Stylus design every printed tool is derived from (default: "
+                  "assets/designs/stylus_vero_tip2mm.json)");
+  cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
+  cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
+      ->check(CLI::PositiveNumber);
+}
+
+}  // namespace
+
+void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
+  auto* forcing_cmd = app.add_subcommand(
+      "forcing", "Data-driven forcing model: surface forcing, tip and material curves (Sec. 5.2)");
+  forcing_cmd->require_subcommand(1);
+
+  auto fit_options = std::make_shared<FitCommandOptions>();
+  auto* fit = forcing_cmd->add_subcommand("fit", "Fit Eq. 10 to a catalog's printed tools");
+  fit->footer(
+      "Every printed tool with a material, a tip diameter and a vibration spectrum is an "
+      "exemplar;\n"
+      "its response H comes from its simulated design. Fits the surface forcing F_S(f, v), a tip\n"
+      "curve per diameter and a material curve per material (log gains, Hermite knots every 50\n"
+      "Hz, the 2 mm VeroClear tool as reference) and writes them as forcing.json.");
+  add_input_options(fit, fit_options->inputs);
+  fit->add_option("-o,--output", fit_options->output, "Forcing model JSON to write")
+      ->capture_default_str();
+  fit->add_option("--plots", fit_options->plots,
+                  "Also write tip_curves.png and material_curves.png (Fig. 13) to this folder");
+  fit->callback([fit_options, global] {
+    configure_logging(global->verbosity);
+    run_fit(*fit_options);
+  });
+
+  auto loo_options = std::make_shared<LooCommandOptions>();
+  auto* loo = forcing_cmd->add_subcommand("loo", "Leave-one-out validation of the fit (Fig. 12)");
+  loo->footer(
+      "Holds out each of the paper's tools ({vero, DM95, DM85} x {1, 2, 4 mm} on office, note and\n"
+      "stone) in turn, fits the rest and predicts it: RMS of 20 log10(predicted/measured) over "
+      "all\n"
+      "bins and speeds, and per speed, beside a baseline (the geometric mean of the other tools "
+      "on\n"
+      "the same surface).");
+  add_input_options(loo, loo_options->inputs);
+  loo->add_option("--csv", loo_options->csv, "Also write the table as CSV");
+  loo->add_flag("--all", loo_options->all, "Hold out every exemplar, not only the paper's tools");
+  loo->callback([loo_options, global] {
+    configure_logging(global->verbosity);
+    run_loo(*loo_options);
+  });
+}
+
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,111 @@
+#include "ui/cli/forcing_inputs.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <set>
+
+#include "model/io/catalog.hpp"
+#include "model/mechanics/material_table.hpp"
+#include "ui/cli/assets.hpp"
+#include "ui/cli/progress.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace forcing = model::forcing;
+namespace mech = model::mechanics;
+
+ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
+  const auto catalog_path = o.catalog.empty() ? asset("default_catalog.json") : o.catalog;
+  const auto template_path =
+      o.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json") : o.design_template;
+  const auto materials_path = o.materials.empty() ? asset("materials.json") : o.materials;
+
+  for (const auto& [path, what] : {std::pair{catalog_path, "a tool catalog JSON"},
+                                   std::pair{template_path, "a stylus design JSON"},
+                                   std::pair{materials_path, "a material table JSON"}})
+    if (!std::filesystem::exists(path))
+      throw std::runtime_error(path.string() + ": no such file (expected " + what + ")");
+  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
+  ForcingInputs inputs;
+  inputs.selection = forcing::select_printed_exemplars(catalog);
+  inputs.exemplars = std::move(inputs.selection.exemplars);
+  inputs.selection.exemplars.clear();
+  for (const auto& excluded : inputs.selection.excluded) spdlog::info("left out: {}", excluded);
+  if (inputs.exemplars.empty())
+    throw std::runtime_error(catalog_path.string() +
+                             ": no printed tool with a material, a tip diameter and a vibration "
+                             "spectrum: nothing to fit");
+
+  const mech::MaterialTable materials = mech::read_material_table(materials_path);
+  const mech::Design template_design = mech::read_design(template_path, materials);
+  forcing::ResponseOptions response_options;
+  response_options.modes = o.modes;
+  response_options.mesh_size = o.mesh_size;
+  std::unique_ptr<Progress> progress;
+  const auto start = std::chrono::steady_clock::now();
+  inputs.designs = forcing::attach_responses(
+      inputs.exemplars, template_design, materials, response_options,
+      [&](const forcing::DesignResponse& r, std::size_t, std::size_t total) {
+        if (!progress) progress = std::make_unique<Progress>("simulating designs", total);
+        progress->advance(r.design);
+        spdlog::info("{}: {} modes, first at {:.1f} Hz, {:.2f} s", r.design, r.modes,
+                     r.first_mode_hz, r.seconds);
+      });
+  progress.reset();
+  inputs.response_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const int modes = o.modes > 0 ? o.modes : template_design.modes;
+  const double mesh = o.mesh_size > 0 ? o.mesh_size : template_design.mesh_size;
+  inputs.notes.push_back("catalog: " + catalog_path.string());
+  inputs.notes.push_back(fmt::format(
+      "responses |H| from tip force to sensor acceleration of each tool's design: template {} "
+      "('{}') with the tool's tip diameter and tip insert (model/forcing/printed_tool_design.hpp), "
+      "materials {}, {} modes, {:.2f} mm quadratic tetrahedra",
+      template_path.string(), template_design.name, materials_path.string(), modes, mesh * 1e3));
+  const auto missing = forcing::missing_paper_tools(inputs.exemplars);
+  if (!missing.empty()) {
+    std::string list;
+    for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+    inputs.notes.push_back("of the paper's 27 tools this catalog lacks: " + list);
+  }
+  return inputs;
+}
+
+std::string describe_inputs(const ForcingInputs& inputs) {
+  std::set<std::string> surfaces;
+  std::size_t paper = 0;
+  for (const auto& e : inputs.exemplars) {
+    surfaces.insert(e.surface);
+    paper += forcing::is_paper_tool(e) ? 1 : 0;
+  }
+  std::string out =
+      fmt::format("{} exemplars of printed tools on {} surfaces; {} of the paper's 27 tools\n",
+                  inputs.exemplars.size(), surfaces.size(), paper);
+  const auto missing = forcing::missing_paper_tools(inputs.exemplars);
+  if (!missing.empty()) {
+    std::string list;
+    for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+    out += "missing from the catalog: " + list + "\n";
+  }
+  out += fmt::format(
+      "left out: {} pairings of printed tools without a design or spectrum (-v lists them), {} "
+      "of real and commercial tools\n",
+      inputs.selection.excluded.size(), inputs.selection.other_kinds);
+  double low = 1e300, high = 0;
+  for (const auto& d : inputs.designs) {
+    low = std::min(low, d.first_mode_hz);
+    high = std::max(high, d.first_mode_hz);
+  }
+  out +=
+      fmt::format("simulated {} designs in {:.1f} s ({} modes each, first mode {:.1f}-{:.1f} Hz)\n",
+                  inputs.designs.size(), inputs.response_seconds,
+                  inputs.designs.empty() ? 0 : inputs.designs.front().modes, low, high);
+  return out;
+}
+
+}  // namespace nibrig::ui::cli
