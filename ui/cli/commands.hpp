@@ -17,6 +17,7 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);

@@ -1,0 +1,84 @@
+#include "model/design/interpolation_check.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "model/design/predicted_tool.hpp"
+#include "model/forcing/leave_one_out.hpp"
+
+namespace nibrig::model::design {
+
+std::vector<InterpolatedPrediction> hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars,
+                                                 double tip_m) {
+  std::vector<forcing::ForcingExemplar> training;
+  std::vector<const forcing::ForcingExemplar*> held_out;
+  std::set<double> tips;
+  for (const auto& e : exemplars) {
+    if (forcing::same_tip(e.tip_diameter_m, tip_m)) {
+      held_out.push_back(&e);
+    } else {
+      training.push_back(e);
+      tips.insert(e.tip_diameter_m);
+    }
+  }
+  const std::string what = "holding out the " + forcing::tip_label(tip_m) + " tips";
+  if (held_out.empty()) throw std::invalid_argument(what + ": no exemplar has that tip");
+  const auto upper = tips.upper_bound(tip_m);
+  if (tips.empty() || upper == tips.begin() || upper == tips.end())
+    throw std::invalid_argument(what + ": the other tips do not lie on both sides of it");
+  const double lower_tip = *std::prev(upper), upper_tip = *upper;
+
+  forcing::ForcingFitOptions options;
+  options.reference_tip_diameter_m = *tips.begin();
+  if (const auto problems = forcing::fit_problems(training, options); !problems.empty()) {
+    std::string text = what + ": the rest cannot be fitted:";
+    for (const auto& p : problems) text += " " + p + ";";
+    throw std::invalid_argument(text);
+  }
+  const forcing::ForcingModel model = forcing::fit_forcing_model(training, options);
+
+  std::vector<InterpolatedPrediction> results;
+  for (const forcing::ForcingExemplar* e : held_out) {
+    InterpolatedPrediction r;
+    r.tool = e->tool;
+    r.surface = e->surface;
+    r.material = e->material;
+    r.tip_diameter_m = e->tip_diameter_m;
+    if (model.surface_forcing.count(e->surface) == 0)
+      r.not_predictable = "no other tool was measured on " + e->surface;
+    else if (model.material_log_gain.count(e->material) == 0)
+      r.not_predictable = "no other tool is of " + e->material;
+    if (!r.not_predictable.empty()) {
+      results.push_back(std::move(r));
+      continue;
+    }
+    r.lower_tip_m = lower_tip;
+    r.upper_tip_m = upper_tip;
+    auto error_at = [&](double tip) {
+      const DesignPoint point{{{e->material, 1.0}}, tip};
+      return forcing::log_spectrum_error(
+          predict_spectrum(model, point, e->surface, e->response_magnitude), e->measured);
+    };
+    const auto interpolated = error_at(e->tip_diameter_m);
+    const auto lower = error_at(lower_tip);
+    const auto upper_error = error_at(upper_tip);
+    r.rms_db = interpolated.rms_db;
+    r.rms_db_by_speed = interpolated.rms_db_by_speed;
+    r.lower_tip_rms_db = lower.rms_db;
+    r.lower_tip_rms_db_by_speed = lower.rms_db_by_speed;
+    r.upper_tip_rms_db = upper_error.rms_db;
+    r.upper_tip_rms_db_by_speed = upper_error.rms_db_by_speed;
+    for (const auto& other : exemplars) {
+      if (other.surface != e->surface || other.material != e->material) continue;
+      if (forcing::same_tip(other.tip_diameter_m, lower_tip))
+        r.lower_measured_rms_db = forcing::log_spectrum_error(other.measured, e->measured).rms_db;
+      if (forcing::same_tip(other.tip_diameter_m, upper_tip))
+        r.upper_measured_rms_db = forcing::log_spectrum_error(other.measured, e->measured).rms_db;
+    }
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,46 @@
+// The check of Sec. 5.3 (Fig. 14): predict measured designs that the fit never saw, by
+// interpolation between the designs it did see, and compare with the no-interpolation baseline.
+// Here the held-out designs are every exemplar with one tip diameter (e.g. all 2 mm tools): the
+// model is fitted without them (the reference tip moved to the smallest remaining one), and each is
+// predicted with its own simulated response and the tip curve interpolated between the fitted
+// neighbours. The baseline is the same prediction with a neighbour's tip curve instead — the
+// paper's grey lines, a simulation that does not interpolate the parameters — once per neighbour.
+// Beside it, the neighbours' own measurements as predictions (no model at all).
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "model/forcing/forcing_fit.hpp"
+
+namespace nibrig::model::design {
+
+struct InterpolatedPrediction {
+  std::string tool, surface, material;
+  double tip_diameter_m = 0.0;
+  // Why it could not be predicted (its surface or material is in no training exemplar); empty
+  // when it was, and then the errors below are set.
+  std::string not_predictable;
+  // RMS over bins and speeds of 20·log10(predicted/measured), and per speed.
+  double rms_db = 0.0;
+  std::vector<double> rms_db_by_speed;
+  // The baseline with the smaller and with the larger neighbour's tip curve.
+  double lower_tip_rms_db = 0.0, upper_tip_rms_db = 0.0;
+  double lower_tip_m = 0.0, upper_tip_m = 0.0;
+  std::vector<double> lower_tip_rms_db_by_speed, upper_tip_rms_db_by_speed;
+  // What a designer without the model would do: take the measured neighbour of the same material
+  // on the same surface as the prediction (negative when that neighbour was not measured).
+  double lower_measured_rms_db = -1.0, upper_measured_rms_db = -1.0;
+  bool beats_baseline() const {
+    return not_predictable.empty() && rms_db < lower_tip_rms_db && rms_db < upper_tip_rms_db;
+  }
+};
+
+// Exemplars need their responses (forcing::attach_responses). Throws std::invalid_argument when
+// no exemplar has `tip_m`, when it is not strictly between two other fitted tips, or when the
+// training set cannot be fitted (forcing::fit_problems, joined).
+std::vector<InterpolatedPrediction> hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars,
+                                                 double tip_m);
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,181 @@
+#include "model/design/predicted_tool.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/design/mixed_design.hpp"
+#include "model/mechanics/design_model.hpp"
+#include "model/mechanics/frequency_response.hpp"
+
+namespace nibrig::model::design {
+
+namespace {
+
+std::string mm(double metres) {
+  std::ostringstream out;
+  out << std::setprecision(4) << metres * 1e3 << " mm";
+  return out.str();
+}
+
+// Where d lies among the ascending `diameters`: the two neighbours and the weight of the upper.
+// Throws when d is outside them, saying by how far.
+struct Bracket {
+  std::size_t lower = 0, upper = 0;
+  double weight = 0.0;
+};
+
+Bracket bracket(const std::vector<double>& diameters, double d, const std::string& what) {
+  if (diameters.empty()) throw std::invalid_argument(what + ": no tip diameters to interpolate");
+  constexpr double kSameTip = 1e-6;  // m: tips from files in mm (forcing::same_tip)
+  if (d < diameters.front() - kSameTip || d > diameters.back() + kSameTip) {
+    const bool below = d < diameters.front();
+    throw std::invalid_argument(
+        what + ": the tip of " + mm(d) + " is " +
+        mm(below ? diameters.front() - d : d - diameters.back()) + (below ? " below the smallest" : " above the largest") +
+        " diameter there is (" + mm(diameters.front()) + " to " + mm(diameters.back()) +
+        "); nothing is extrapolated");
+  }
+  Bracket b;
+  while (b.upper + 1 < diameters.size() && diameters[b.upper] < d - kSameTip) ++b.upper;
+  b.lower = b.upper == 0 ? 0 : b.upper - 1;
+  if (std::abs(diameters[b.upper] - d) <= kSameTip || b.lower == b.upper) {
+    b.lower = b.upper;
+    return b;
+  }
+  b.weight = (d - diameters[b.lower]) / (diameters[b.upper] - diameters[b.lower]);
+  return b;
+}
+
+}  // namespace
+
+std::vector<double> interpolated_log_gain(const forcing::ForcingModel& model,
+                                          const DesignPoint& point,
+                                          std::span<const double> frequencies_hz) {
+  validate(point);
+  std::vector<double> tips;
+  for (const auto& [d, curve] : model.tip_log_gain) tips.push_back(d);  // std::map: ascending
+  const Bracket b = bracket(tips, point.tip_diameter_m, "the forcing model's tip curves");
+  std::vector<double> gain(frequencies_hz.size(), 0.0);
+  for (std::size_t j = 0; j < frequencies_hz.size(); ++j) {
+    const double f = frequencies_hz[j];
+    gain[j] = (1 - b.weight) * model.tip_log_gain_at(tips[b.lower], f) +
+              b.weight * model.tip_log_gain_at(tips[b.upper], f);
+    for (const auto& share : point.mix)
+      gain[j] += share.fraction * model.material_log_gain_at(share.material, f);
+  }
+  return gain;
+}
+
+io::VelocitySpectrum predict_spectrum(const forcing::ForcingModel& model, const DesignPoint& point,
+                                      const std::string& surface,
+                                      std::span<const double> response_magnitude) {
+  // The reference tool's prediction carries |H|·F_S (and every check of the inputs); the
+  // interpolated scalings multiply it.
+  io::VelocitySpectrum spectrum =
+      model.predict(response_magnitude, surface, model.reference_tip_diameter_m,
+                    model.reference_material);
+  const std::vector<double> gain = interpolated_log_gain(model, point, model.frequencies_hz);
+  for (auto& row : spectrum.amplitude_m_s2)
+    for (std::size_t j = 0; j < row.size(); ++j) row[j] *= std::exp(gain[j]);
+  return spectrum;
+}
+
+double interpolated_friction(const io::Catalog& catalog, const DesignPoint& point,
+                             const std::string& surface) {
+  validate(point);
+  double mu = 0.0;
+  for (const auto& share : point.mix) {
+    std::map<double, double> by_tip;  // diameter → μ of the printed tools of this material
+    for (const auto& pairing : catalog.pairings) {
+      if (pairing.surface != surface || !pairing.friction) continue;
+      const auto tool = std::find_if(catalog.tools.begin(), catalog.tools.end(),
+                                     [&](const auto& t) { return t.id == pairing.tool; });
+      if (tool == catalog.tools.end() || tool->kind != "printed" ||
+          tool->material != share.material || !tool->tip_diameter_m ||
+          tool->id.find("_nail") != std::string::npos)
+        continue;
+      by_tip[*tool->tip_diameter_m] = pairing.friction->mu;
+    }
+    const std::string what = "friction of printed " + share.material + " tools on " + surface;
+    if (by_tip.empty())
+      throw std::invalid_argument(what + ": the catalog has none measured");
+    std::vector<double> tips, mus;
+    for (const auto& [d, m] : by_tip) {
+      tips.push_back(d);
+      mus.push_back(m);
+    }
+    const Bracket b = bracket(tips, point.tip_diameter_m, what);
+    mu += share.fraction * ((1 - b.weight) * mus[b.lower] + b.weight * mus[b.upper]);
+  }
+  return mu;
+}
+
+PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& point,
+                           const std::string& surface, const mechanics::Design* own_design) {
+  if (setup.model == nullptr || setup.catalog == nullptr || setup.threshold == nullptr)
+    throw std::invalid_argument("predict_tool: the setup needs a model, a catalog and a threshold");
+  const forcing::ForcingModel& model = *setup.model;
+  PredictedTool tool;
+  tool.point = point;
+  tool.surface = surface;
+  // The cheap checks first: a tip out of range or an unknown surface fails before the FEM.
+  interpolated_log_gain(model, point, model.frequencies_hz);
+  if (model.surface_forcing.count(surface) == 0) {
+    std::string known;
+    for (const auto& [id, forcing] : model.surface_forcing) known += (known.empty() ? "" : ", ") + id;
+    throw std::invalid_argument("the forcing model has no surface '" + surface + "' (it has " +
+                                known + ")");
+  }
+  tool.mu = interpolated_friction(*setup.catalog, point, surface);
+
+  MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials}
+                                 : mixed_design(point, setup.template_design, setup.materials);
+  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
+  if (setup.modes > 0) mixed.design.modes = setup.modes;
+  const mechanics::DesignModel built = mechanics::build_design_model(mixed.design, mixed.materials);
+  tool.design_name = mixed.design.name;
+  tool.first_mode_hz = built.modal.omega.front() / (2 * M_PI);
+  for (const auto& h : mechanics::frequency_response(built.modal, model.frequencies_hz))
+    tool.response_magnitude.push_back(std::abs(h));
+  tool.spectrum = predict_spectrum(model, point, surface, tool.response_magnitude);
+  tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
+  return tool;
+}
+
+io::ToolEntry predicted_tool_entry(const PredictedTool& tool) {
+  io::ToolEntry entry;
+  entry.id = "pred:" + to_string(tool.point);
+  entry.name = "predicted " + to_string(tool.point);
+  entry.kind = "predicted";
+  entry.material = tool.point.mix.size() == 1 ? tool.point.mix.front().material : "mix";
+  entry.tip_diameter_m = tool.point.tip_diameter_m;
+  return entry;
+}
+
+io::Pairing predicted_pairing(const PredictedTool& tool, const std::string& threshold_name) {
+  io::Pairing pairing;
+  pairing.tool = predicted_tool_entry(tool).id;
+  pairing.surface = tool.surface;
+  io::FrictionDescriptor friction;
+  friction.mu = friction.mu_ci_low = friction.mu_ci_high = tool.mu;
+  friction.provenance = {"interpolated", "μ linear in tip diameter between measured printed tools, "
+                                         "weighted by the material fractions"};
+  pairing.friction = friction;
+  io::VibrationDescriptor vibration;
+  vibration.spectrum = tool.spectrum;
+  vibration.weighted_mean = tool.vibration.weighted_mean;
+  vibration.weighted_power = tool.vibration.weighted_power;
+  vibration.band_energies = tool.vibration.band_energies;
+  vibration.threshold_curve = threshold_name;
+  vibration.provenance = {"predicted", "simulated response of '" + tool.design_name +
+                                           "' × fitted surface forcing × interpolated tip and "
+                                           "material scaling (Sec. 5.2-5.3)"};
+  pairing.vibration = vibration;
+  return pairing;
+}
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,98 @@
+// End-to-end tests of `nibrig predict`, in-process, on the bundled catalog: a forcing model is
+// fitted once (coarse designs, as in forcing_cli_test), then a mix, a designer's stylus file and
+// bad designs are predicted with it.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+using test::is_png;
+using test::read_json;
+using test::run_cli;
+
+const std::vector<std::string> kCoarse{"--modes", "32", "--mesh-size", "0.004"};
+
+std::vector<std::string> with_coarse(std::vector<std::string> args) {
+  args.insert(args.end(), kCoarse.begin(), kCoarse.end());
+  return args;
+}
+
+// Runs the command and returns its exit code with what it printed on stderr.
+std::pair<int, std::string> failing(std::vector<std::string> args) {
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int code = run_cli(std::move(args));
+  testing::internal::GetCapturedStdout();
+  return {code, testing::internal::GetCapturedStderr()};
+}
+
+TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
+  const auto out = test::scratch_dir("cli_predict");
+  const std::string forcing = (out / "forcing.json").string();
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli(with_coarse({"forcing", "fit", "-o", forcing})), 0);
+  testing::internal::GetCapturedStdout();
+
+  // A mix between fitted designs, compared with the measured 1 mm VeroClear tool.
+  testing::internal::CaptureStdout();
+  const int code = run_cli(with_coarse(
+      {"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm", "--surface", "office", "--forcing",
+       forcing, "--against", "vero1", "--plot", (out / "mix.png").string(), "-o",
+       (out / "mix.json").string()}));
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  const auto mix = read_json(out / "mix.json");
+  // The keys `nibrig measure` writes for a recording.
+  for (const char* key : {"frequencies_hz", "speeds_mm_s", "amplitude_m_s2", "descriptors", "mu"})
+    EXPECT_TRUE(mix.contains(key)) << key;
+  EXPECT_EQ(mix["amplitude_m_s2"].size(), mix["speeds_mm_s"].size());
+  EXPECT_GT(mix["descriptors"]["weighted_mean"].get<double>(), 0.0);
+  // A quarter DM85 (μ ≈ 0.5-0.8 on office) raises μ above VeroClear's (≈ 0.2-0.3).
+  EXPECT_GT(mix["mu"].get<double>(), 0.2);
+  EXPECT_LT(mix["mu"].get<double>(), 0.6);
+  // Within the leave-one-out's worst of a held-out tool (3.4 dB): a near neighbour of vero1.
+  EXPECT_LT(mix["comparison"]["rms_db"].get<double>(), 3.5);
+  EXPECT_TRUE(is_png(out / "mix.png"));
+
+  // The bundled 1 mm VeroClear stylus file is the fitted vero1 design: predicting the file and the
+  // point "vero,tip=1mm" must give the same spectrum.
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli(with_coarse({"predict", "--design",
+                                 (test::assets_dir() / "designs" / "stylus_vero_tip1mm.json").string(),
+                                 "--surface", "office", "--forcing", forcing, "-o",
+                                 (out / "file.json").string()})),
+            0);
+  ASSERT_EQ(run_cli(with_coarse({"predict", "--design", "vero,tip=1mm", "--surface", "office",
+                                 "--forcing", forcing, "-o", (out / "point.json").string()})),
+            0);
+  testing::internal::GetCapturedStdout();
+  const auto file = read_json(out / "file.json")["amplitude_m_s2"];
+  const auto point = read_json(out / "point.json")["amplitude_m_s2"];
+  ASSERT_EQ(file.size(), point.size());
+  for (std::size_t s = 0; s < file.size(); ++s)
+    for (std::size_t j = 0; j < file[s].size(); ++j)
+      ASSERT_NEAR(file[s][j].get<double>(), point[s][j].get<double>(),
+                  1e-9 * point[s][j].get<double>());
+
+  // Bad input fails in one line that says what is wrong.
+  auto [sum_code, sum_error] = failing({"predict", "--design", "DM85:0.3,vero:0.6,tip=1mm",
+                                        "--surface", "office", "--forcing", forcing});
+  EXPECT_NE(sum_code, 0);
+  EXPECT_NE(sum_error.find("add up to 0.9, expected 1"), std::string::npos) << sum_error;
+  auto [tip_code, tip_error] = failing(
+      {"predict", "--design", "vero,tip=5mm", "--surface", "office", "--forcing", forcing});
+  EXPECT_NE(tip_code, 0);
+  EXPECT_NE(tip_error.find("1 mm above the largest"), std::string::npos) << tip_error;
+  auto [surface_code, surface_error] = failing(
+      {"predict", "--design", "vero,tip=2mm", "--surface", "marble", "--forcing", forcing});
+  EXPECT_NE(surface_code, 0);
+  EXPECT_NE(surface_error.find("no surface 'marble'"), std::string::npos) << surface_error;
+}
+
+}  // namespace
+}  // namespace nibrig::ui::cli

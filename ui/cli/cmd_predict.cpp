@@ -1,0 +1,221 @@
+// `nibrig predict`: how a design that was never printed will measure on a surface (Sec. 5.3) —
+// its velocity-binned spectrum, friction and descriptors in the JSON layout `nibrig measure` writes
+// for a real recording, so the two compare directly; with a measurement, a PNG of both.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "model/design/mixed_design.hpp"
+#include "model/design/predicted_tool.hpp"
+#include "model/forcing/forcing_file.hpp"
+#include "model/forcing/leave_one_out.hpp"
+#include "model/io/catalog.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
+#include "ui/cli/assets.hpp"
+#include "ui/cli/commands.hpp"
+#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/logging.hpp"
+#include "ui/cli/output.hpp"
+#include "ui/report/figures.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace {
+
+namespace design = model::design;
+namespace forcing = model::forcing;
+namespace mech = model::mechanics;
+
+struct PredictOptions {
+  std::string design;  // a design.json or a design point ("DM85:0.25,vero:0.75,tip=1mm")
+  std::string surface;
+  std::filesystem::path forcing_model;  // empty: fit on the catalog now
+  ForcingInputOptions inputs;           // catalog, template, materials, modes, mesh size
+  std::filesystem::path output = "predicted.json";
+  std::filesystem::path measured;  // a `nibrig measure` JSON to compare with
+  std::string against;             // or a catalog tool measured on the surface
+  std::filesystem::path plot;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+forcing::ForcingModel forcing_model_for(const PredictOptions& o) {
+  if (!o.forcing_model.empty()) return forcing::read_forcing_model(o.forcing_model);
+  spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
+  ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  return forcing::fit_forcing_model(inputs.exemplars);
+}
+
+nlohmann::json descriptors_json(const model::measure::VibrationDescriptors& d) {
+  nlohmann::json bands = nlohmann::json::object();
+  for (const auto& [k, energies] : d.band_energies) bands[std::to_string(k)] = energies;
+  return {{"weighted_mean", d.weighted_mean},
+          {"weighted_power", d.weighted_power},
+          {"band_energies", bands}};
+}
+
+// The measured spectrum to compare with: a `nibrig measure` output, or the catalog's pairing.
+std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(
+    const PredictOptions& o, const model::io::Catalog& catalog) {
+  if (!o.measured.empty()) {
+    const auto json = model::io::json_fields::parse_file(o.measured);
+    return std::pair{o.measured.filename().string(),
+                     model::io::velocity_spectrum_from_json(json, o.measured, "")};
+  }
+  if (o.against.empty()) return std::nullopt;
+  for (const auto& p : catalog.pairings)
+    if (p.tool == o.against && p.surface == o.surface && p.vibration)
+      return std::pair{o.against + " on " + o.surface + " (measured)", p.vibration->spectrum};
+  throw std::invalid_argument("--against: the catalog has no vibration spectrum of '" + o.against +
+                              "' on '" + o.surface + "'");
+}
+
+// Predicted and measured amplitude at the lowest, a middle and the highest speed.
+void plot_against(const design::PredictedTool& tool, const std::string& label,
+                  const model::io::VelocitySpectrum& measured, const std::filesystem::path& png) {
+  report::LinePlot plot;
+  plot.title = fmt::format("{} on {}: predicted vs {}", design::to_string(tool.point), tool.surface,
+                           label);
+  plot.x_label = "Frequency (Hz)";
+  plot.y_label = "Amplitude (m/s²)";
+  plot.log_y = true;
+  const std::size_t rows = tool.spectrum.speeds_m_s.size();
+  for (std::size_t s : {std::size_t{0}, rows / 2, rows - 1}) {
+    const double v = tool.spectrum.speeds_m_s[s];
+    plot.series.push_back({fmt::format("predicted, {:.0f} mm/s", v * 1e3),
+                           tool.spectrum.frequencies_hz, tool.spectrum.amplitude_m_s2[s], {}, {}});
+    std::size_t nearest = 0;
+    for (std::size_t m = 0; m < measured.speeds_m_s.size(); ++m)
+      if (std::abs(measured.speeds_m_s[m] - v) < std::abs(measured.speeds_m_s[nearest] - v))
+        nearest = m;
+    plot.series.push_back({fmt::format("measured, {:.0f} mm/s", measured.speeds_m_s[nearest] * 1e3),
+                           measured.frequencies_hz, measured.amplitude_m_s2[nearest], {}, {}});
+  }
+  report::write_line_plot(plot, png);
+}
+
+void run_predict(const PredictOptions& o) {
+  const auto catalog_path =
+      o.inputs.catalog.empty() ? asset("default_catalog.json") : o.inputs.catalog;
+  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
+  const mech::MaterialTable materials = mech::read_material_table(
+      o.inputs.materials.empty() ? asset("materials.json") : o.inputs.materials);
+
+  // A design file is used as it is; a design point is built on the printed tools' template.
+  std::optional<mech::Design> own;
+  design::DesignPoint point;
+  if (o.design.ends_with(".json")) {
+    own = mech::read_design(o.design, materials);
+    point = design::design_point_of(*own);
+  } else {
+    point = design::parse_design_point(o.design);
+  }
+  const forcing::ForcingModel model = forcing_model_for(o);
+  const auto threshold =
+      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
+
+  design::PredictionSetup setup;
+  setup.model = &model;
+  setup.catalog = &catalog;
+  setup.template_design = mech::read_design(
+      o.inputs.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json")
+                                       : o.inputs.design_template,
+      materials);
+  setup.materials = materials;
+  setup.threshold = &threshold;
+  setup.mesh_size = o.inputs.mesh_size;
+  setup.modes = o.inputs.modes;
+  const auto start = std::chrono::steady_clock::now();
+  const design::PredictedTool tool = design::predict_tool(setup, point, o.surface, own ? &*own : nullptr);
+  std::cout << fmt::format(
+      "{} on {}: design '{}' (first mode {:.1f} Hz), mu {:.3f}, weighted mean vibration {:.4g}; "
+      "{:.1f} s\n",
+      design::to_string(point), o.surface, tool.design_name, tool.first_mode_hz, tool.mu,
+      tool.vibration.weighted_mean, seconds_since(start));
+
+  nlohmann::json j = model::io::to_json(tool.spectrum);
+  j["kind"] = "prediction";
+  j["tool"] = design::to_string(point);
+  j["surface"] = o.surface;
+  j["mu"] = tool.mu;
+  j["descriptors"] = descriptors_json(tool.vibration);
+  j["threshold_curve"] = threshold.source();
+  j["design"] = {{"name", tool.design_name},
+                 {"first_mode_hz", tool.first_mode_hz},
+                 {"tip_diameter_mm", point.tip_diameter_m * 1e3}};
+  for (const auto& share : point.mix) j["design"]["mix"][share.material] = share.fraction;
+  j["notes"] = {
+      "amplitude = |H| (simulated design) x F_S (fitted surface forcing) x t x m (tip and "
+      "material scaling interpolated linearly, Sec. 5.3); mu interpolated linearly between "
+      "measured printed tools (model/design/predicted_tool.hpp)"};
+
+  if (const auto measured = measurement(o, catalog)) {
+    const auto& [label, spectrum] = *measured;
+    if (spectrum.frequencies_hz == tool.spectrum.frequencies_hz &&
+        spectrum.speeds_m_s.size() == tool.spectrum.speeds_m_s.size()) {
+      const auto error = forcing::log_spectrum_error(tool.spectrum, spectrum);
+      j["comparison"] = {{"against", label}, {"rms_db", error.rms_db},
+                         {"rms_db_by_speed", error.rms_db_by_speed}};
+      std::cout << fmt::format("against {}: RMS {:.2f} dB over all bins and speeds\n", label,
+                               error.rms_db);
+    } else {
+      std::cout << "against " << label << ": other frequencies or speeds, compared in the plot only\n";
+    }
+    if (!o.plot.empty()) {
+      plot_against(tool, label, spectrum, o.plot);
+      std::cout << "wrote " << o.plot.string() << "\n";
+    }
+  } else if (!o.plot.empty()) {
+    throw std::invalid_argument("--plot draws the prediction against a measurement: give "
+                                "--measured FILE or --against TOOL");
+  }
+  write_json_file(o.output, j);
+  std::cout << "wrote " << o.output.string() << "\n";
+}
+
+}  // namespace
+
+void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
+  auto o = std::make_shared<PredictOptions>();
+  auto* cmd = app.add_subcommand(
+      "predict", "Predict the spectrum, friction and descriptors of a design on a surface");
+  cmd->footer(
+      "A design is a stylus file (design.json: a parametric stylus whose tip material is\n"
+      "VeroClear-Piovarci2018, DM95 or DM85) or a point such as \"DM85:0.25,vero:0.75,tip=1mm\"\n"
+      "(fractions adding up to 1; a tip between the fitted 1 and 4 mm: nothing is extrapolated).\n"
+      "The output has the keys of `nibrig measure`: frequencies_hz, speeds_mm_s, amplitude_m_s2,\n"
+      "descriptors, mu.");
+  cmd->add_option("--design", o->design, "design.json, or a design point")->required();
+  cmd->add_option("--surface", o->surface, "Surface id (office, note, stone, glass, ...)")
+      ->required();
+  cmd->add_option("--forcing", o->forcing_model,
+                  "Forcing model from `nibrig forcing fit` (default: fit the catalog now)");
+  cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
+  cmd->add_option("--template", o->inputs.design_template,
+                  "Stylus the design points are built on (default: "
+                  "assets/designs/stylus_vero_tip2mm.json)");
+  cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
+  cmd->add_option("--modes", o->inputs.modes, "Modes of the design (default: the template's)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("-o,--output", o->output, "Prediction JSON to write")->capture_default_str();
+  auto* measured = cmd->add_option("--measured", o->measured,
+                                   "A `nibrig measure` JSON of a real recording to compare with");
+  cmd->add_option("--against", o->against, "A catalog tool measured on the surface to compare with")
+      ->excludes(measured);
+  cmd->add_option("--plot", o->plot, "PNG of prediction and measurement at three speeds");
+  cmd->callback([o, global] {
+    configure_logging(global->verbosity);
+    run_predict(*o);
+  });
+}
+
+}  // namespace nibrig::ui::cli
