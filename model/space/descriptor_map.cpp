@@ -117,4 +117,23 @@ UncertainProbability uncertain_probability_first(const Placement& reference, con
   return u;
 }
 
+UncertainDistance uncertain_distance(const Placement& a, const Placement& b, int samples,
+                                     std::mt19937_64& generator) {
+  if (a.mean.size() != b.mean.size())
+    throw std::invalid_argument("uncertain_distance: placements of different dimensions");
+  if (samples < 2) throw std::invalid_argument("an uncertain distance needs at least 2 samples");
+  const Eigen::MatrixXd la = square_root(a.covariance), lb = square_root(b.covariance);
+  std::normal_distribution<double> normal;
+  double sum = 0, sum_sq = 0;
+  for (int k = 0; k < samples; ++k) {
+    const double d = (draw(a, la, normal, generator) - draw(b, lb, normal, generator)).norm();
+    sum += d;
+    sum_sq += d * d;
+  }
+  UncertainDistance u;
+  u.between_means = (a.mean - b.mean).norm();
+  u.sd = std::sqrt(std::max(0.0, (sum_sq - sum * sum / samples) / (samples - 1)));
+  return u;
+}
+
 }  // namespace nibrig::model::space

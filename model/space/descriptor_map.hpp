@@ -50,4 +50,13 @@ UncertainProbability uncertain_probability_first(const Placement& reference, con
                                                  const Placement& b, double scale, int samples,
                                                  std::mt19937_64& generator);
 
+// The distance between two uncertain positions: between their means, and its standard deviation
+// over `samples` draws of both (a judged stimulus has a zero covariance). Throws
+// std::invalid_argument for placements of different dimensions or fewer than 2 samples.
+struct UncertainDistance {
+  double between_means = 0.0, sd = 0.0;
+};
+UncertainDistance uncertain_distance(const Placement& a, const Placement& b, int samples,
+                                     std::mt19937_64& generator);
+
 }  // namespace nibrig::model::space

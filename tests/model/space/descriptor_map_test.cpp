@@ -87,5 +87,24 @@ TEST(SpaceDescriptorMap, RejectsTablesThatDoNotMatch) {
   EXPECT_THROW(place_from_descriptors(m, Eigen::VectorXd::Zero(3)), std::invalid_argument);
 }
 
+TEST(SpaceDescriptorMap, UncertainDistanceMatchesTheClosedFormOfAHalfNormal) {
+  std::mt19937_64 generator(7);
+  // Certain positions: the distance itself, no spread.
+  const Placement a{Eigen::Vector2d(0, 0), Eigen::Matrix2d::Zero()};
+  const Placement b{Eigen::Vector2d(3, 4), Eigen::Matrix2d::Zero()};
+  const auto certain = uncertain_distance(a, b, 100, generator);
+  EXPECT_DOUBLE_EQ(certain.between_means, 5.0);
+  EXPECT_NEAR(certain.sd, 0.0, 1e-12);
+  // One dimension, equal means, each N(0, σ²): |X − Y| is half-normal with scale σ√2, whose sd is
+  // σ√2·√(1 − 2/π). 40,000 draws: the sd's relative standard error is ~0.5 %; 3 % is ample.
+  const double sigma = 0.3;
+  const Placement x{Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, sigma * sigma)};
+  const auto spread = uncertain_distance(x, x, 40000, generator);
+  EXPECT_DOUBLE_EQ(spread.between_means, 0.0);
+  const double expected = sigma * std::sqrt(2.0) * std::sqrt(1 - 2 / M_PI);
+  EXPECT_NEAR(spread.sd, expected, 0.03 * expected);
+  EXPECT_THROW(uncertain_distance(a, x, 100, generator), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace nibrig::model::space

@@ -1,0 +1,145 @@
+#include "model/design/design_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "model/space/catalog_descriptors.hpp"
+
+namespace nibrig::model::design {
+
+namespace {
+
+DesignPoint mix_point(const RangeSearchOptions& o, double second_fraction, double tip_m) {
+  DesignPoint point;
+  if (second_fraction < 1) point.mix.push_back({o.first_material, 1 - second_fraction});
+  if (second_fraction > 0) point.mix.push_back({o.second_material, second_fraction});
+  point.tip_diameter_m = tip_m;
+  return point;
+}
+
+std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
+  std::vector<std::size_t> order(evaluated.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return evaluated[a].distance < evaluated[b].distance;
+  });
+  return order;
+}
+
+}  // namespace
+
+space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool) {
+  io::Catalog one;
+  one.tools.push_back(predicted_tool_entry(tool));
+  one.pairings.push_back(predicted_pairing(tool, "the catalog's"));
+  const space::DescriptorTable row =
+      space::descriptors_of_catalog(one, "prediction", map.descriptor_names.size());
+  if (row.names != map.descriptor_names)
+    throw std::invalid_argument("the space's descriptor map uses descriptors a prediction does "
+                                "not provide");
+  return space::place_from_descriptors(map, row.values.row(0).transpose());
+}
+
+Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,
+                            const space::DescriptorMap& map, const space::Placement& target,
+                            int samples, std::uint64_t seed) {
+  return [setup, surface, map, target, samples, seed](const DesignPoint& point) {
+    const PredictedTool tool = predict_tool(setup, point, surface);
+    Candidate c;
+    c.point = point;
+    c.placement = place_predicted(map, tool);
+    c.mu = tool.mu;
+    c.weighted_mean = tool.vibration.weighted_mean;
+    std::mt19937_64 generator(seed);  // the same draws for every candidate: comparable sds
+    const space::UncertainDistance d =
+        space::uncertain_distance(c.placement, target, samples, generator);
+    c.distance = d.between_means;
+    c.distance_sd = d.sd;
+    return c;
+  };
+}
+
+SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
+                         const LineSearchOptions& options) {
+  if (options.scan_points < 2)
+    throw std::invalid_argument("line search: at least 2 scan points (the two designs)");
+  if (!(options.refine_tolerance > 0 && options.refine_tolerance < 1))
+    throw std::invalid_argument("line search: the refinement tolerance is a fraction in (0, 1)");
+  SearchResult result;
+  std::vector<double> lambdas;
+  auto at = [&](double lambda) {
+    lambdas.push_back(lambda);
+    result.evaluated.push_back(evaluate(interpolate(a, b, lambda)));
+    return result.evaluated.back().distance;
+  };
+  const int n = options.scan_points;
+  std::size_t best = 0;
+  for (int k = 0; k < n; ++k) {
+    at(static_cast<double>(k) / (n - 1));
+    if (result.evaluated.back().distance < result.evaluated[best].distance)
+      best = result.evaluated.size() - 1;
+  }
+  // Golden section inside the steps either side of the best scan point.
+  const double step = 1.0 / (n - 1);
+  double lo = std::max(0.0, lambdas[best] - step), hi = std::min(1.0, lambdas[best] + step);
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+  double f1 = at(x1), f2 = at(x2);
+  while (hi - lo > options.refine_tolerance) {
+    if (f1 < f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - golden * (hi - lo);
+      f1 = at(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + golden * (hi - lo);
+      f2 = at(x2);
+    }
+  }
+  result.ranked = ranking(result.evaluated);
+  return result;
+}
+
+SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o) {
+  if (o.fraction_points < 2 || o.tip_points < 2)
+    throw std::invalid_argument("range search: at least 2 grid points per axis");
+  if (o.first_material == o.second_material)
+    throw std::invalid_argument("range search: the mix needs two different materials");
+  if (!(o.min_tip_m > 0 && o.max_tip_m > o.min_tip_m))
+    throw std::invalid_argument("range search: the tip range must be a positive interval");
+  SearchResult result;
+  std::vector<std::pair<double, double>> done;  // (fraction, tip) evaluated
+  auto at = [&](double fraction, double tip) {
+    for (const auto& [f, t] : done)
+      if (std::abs(f - fraction) < 1e-9 && std::abs(t - tip) < 1e-12) return;
+    done.emplace_back(fraction, tip);
+    result.evaluated.push_back(evaluate(mix_point(o, fraction, tip)));
+  };
+  double fraction_step = 1.0 / (o.fraction_points - 1);
+  double tip_step = (o.max_tip_m - o.min_tip_m) / (o.tip_points - 1);
+  for (int i = 0; i < o.fraction_points; ++i)
+    for (int j = 0; j < o.tip_points; ++j) at(i * fraction_step, o.min_tip_m + j * tip_step);
+  for (int round = 0; round < o.refinements; ++round) {
+    const auto best = ranking(result.evaluated).front();
+    const auto [f0, t0] = done[best];
+    fraction_step /= 2;
+    tip_step /= 2;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) {
+        const double f = f0 + di * fraction_step, t = t0 + dj * tip_step;
+        if (f < -1e-12 || f > 1 + 1e-12 || t < o.min_tip_m - 1e-12 || t > o.max_tip_m + 1e-12)
+          continue;
+        at(std::clamp(f, 0.0, 1.0), std::clamp(t, o.min_tip_m, o.max_tip_m));
+      }
+  }
+  result.ranked = ranking(result.evaluated);
+  return result;
+}
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,73 @@
+// Stylus design by search in the perceptual space (Sec. 6.2, Fig. 17): the design whose predicted
+// tool lies closest to a target tool. Each candidate is a prediction (predicted_tool.hpp) placed
+// from its descriptors through the space's descriptor map, with that placement's uncertainty.
+//
+// Two searches: along the line between two designs (the paper's line search: a scan at equal
+// steps, then golden-section refinement inside the best step, since the distance need not be
+// unimodal along the line), and over the whole 2-D range of a two-material mix × tip diameter (a
+// grid, then two rounds of a finer grid around the best cell). Every candidate evaluated is kept:
+// in order they are the path drawn in the space; ranked, the optimum and its runners-up.
+#pragma once
+
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "model/design/design_point.hpp"
+#include "model/design/predicted_tool.hpp"
+#include "model/space/descriptor_map.hpp"
+
+namespace nibrig::model::design {
+
+struct Candidate {
+  DesignPoint point;
+  space::Placement placement;
+  double mu = 0.0, weighted_mean = 0.0;  // the predicted descriptors, for reports
+  // Distance of the placement's mean to the target's, and its standard deviation when both
+  // positions are drawn from their uncertainties (space::uncertain_distance).
+  double distance = 0.0, distance_sd = 0.0;
+};
+
+// Where a predicted tool lies: its descriptors (those the map was fitted with: μ and the weighted
+// vibration, as space::paper_descriptor_names) through the map. Throws what the descriptor code
+// throws for a tool without a usable descriptor.
+space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool);
+
+using Evaluate = std::function<Candidate(const DesignPoint&)>;
+
+// The evaluation a search uses: predict, place, measure the distance to `target`.
+Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,
+                            const space::DescriptorMap& map, const space::Placement& target,
+                            int samples = 2000, std::uint64_t seed = 1);
+
+struct SearchResult {
+  std::vector<Candidate> evaluated;  // in the order evaluated: the path
+  std::vector<std::size_t> ranked;   // indices into evaluated, nearest first
+
+  const Candidate& best() const { return evaluated.at(ranked.at(0)); }
+};
+
+struct LineSearchOptions {
+  int scan_points = 9;            // equal steps from a to b, both ends included
+  double refine_tolerance = 0.01;  // of the line's length, for the golden-section refinement
+};
+
+// The point interpolate(a, b, λ) with λ in [0, 1] nearest to the target. Throws
+// std::invalid_argument for fewer than 2 scan points or a tolerance outside (0, 1).
+SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
+                         const LineSearchOptions& options = {});
+
+struct RangeSearchOptions {
+  std::string first_material = "vero", second_material = "DM85";  // mix = second's fraction
+  double min_tip_m = 0.001, max_tip_m = 0.004;
+  int fraction_points = 5, tip_points = 4;  // the first grid, ends included
+  int refinements = 2;                      // finer 3 × 3 grids around the best, halving steps
+};
+
+// The mix of the two materials (the second's fraction from 0 to 1) × tip diameter nearest to the
+// target. Throws std::invalid_argument for a grid of fewer than 2 points per axis, equal
+// materials or an empty tip range.
+SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& options = {});
+
+}  // namespace nibrig::model::design

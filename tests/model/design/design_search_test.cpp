@@ -1,0 +1,76 @@
+// The searches against objectives whose minimum is known, checked against a brute-force scan of a
+// fine grid (the independent reference); no FEM is involved.
+#include "model/design/design_search.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace nibrig::model::design {
+namespace {
+
+// A candidate whose distance is a given function of the DM85 fraction and the tip in mm.
+template <typename F>
+Evaluate objective(F f) {
+  return [f](const DesignPoint& p) {
+    Candidate c;
+    c.point = p;
+    c.distance = f(p.fraction_of("DM85"), p.tip_diameter_m * 1e3);
+    return c;
+  };
+}
+
+TEST(DesignSearch, TheLineSearchFindsTheMinimumABruteForceScanFinds) {
+  // Along vero 1 mm → DM85 4 mm, λ sets the fraction to λ and the tip to 1 + 3λ mm. Two dips: a
+  // shallow one near λ = 0.15 and the deeper one at λ = 0.62, which the scan must not miss.
+  const auto f = [](double fraction, double) {
+    return std::min(0.5 + 4 * std::pow(fraction - 0.15, 2), 0.2 + 3 * std::pow(fraction - 0.62, 2));
+  };
+  const auto result = line_search(parse_design_point("vero,tip=1mm"),
+                                  parse_design_point("DM85,tip=4mm"), objective(f));
+  double brute = 0, brute_value = 1e9;
+  for (int k = 0; k <= 100000; ++k) {
+    const double l = k / 100000.0;
+    if (f(l, 0) < brute_value) brute_value = f(l, 0), brute = l;
+  }
+  EXPECT_NEAR(result.best().point.fraction_of("DM85"), brute, 0.01);
+  EXPECT_NEAR(result.best().point.tip_diameter_m, 0.001 + 0.003 * brute, 0.0003);
+  EXPECT_NEAR(result.best().distance, brute_value, 1e-3);
+  // The path starts with the scan from a to b, and the ranking is by distance.
+  EXPECT_DOUBLE_EQ(result.evaluated.front().point.fraction_of("vero"), 1.0);
+  EXPECT_DOUBLE_EQ(result.evaluated[8].point.fraction_of("DM85"), 1.0);
+  for (std::size_t k = 1; k < result.ranked.size(); ++k)
+    EXPECT_LE(result.evaluated[result.ranked[k - 1]].distance,
+              result.evaluated[result.ranked[k]].distance);
+  EXPECT_LT(result.evaluated.size(), 30u);  // 9 scan points and a few golden sections
+}
+
+TEST(DesignSearch, TheRangeSearchFindsTheMinimumOfTheWholeRange) {
+  const auto f = [](double fraction, double tip_mm) {
+    return std::hypot(fraction - 0.6, 0.4 * (tip_mm - 2.7));
+  };
+  const auto result = range_search(objective(f));
+  // The first grid has steps of 0.25 and 1 mm, two refinements quarter them: the optimum is found
+  // within half a final step.
+  EXPECT_NEAR(result.best().point.fraction_of("DM85"), 0.6, 0.0625 / 2 + 1e-9);
+  EXPECT_NEAR(result.best().point.tip_diameter_m * 1e3, 2.7, 0.25 / 2 + 1e-9);
+  // Every candidate is a valid design inside the range.
+  for (const auto& c : result.evaluated) {
+    EXPECT_NO_THROW(validate(c.point));
+    EXPECT_GE(c.point.tip_diameter_m, 0.001 - 1e-12);
+    EXPECT_LE(c.point.tip_diameter_m, 0.004 + 1e-12);
+  }
+}
+
+TEST(DesignSearch, RefusesSearchesThatCannotBeMade) {
+  const auto f = objective([](double, double) { return 0.0; });
+  EXPECT_THROW(line_search(parse_design_point("vero,tip=1mm"), parse_design_point("DM85,tip=4mm"),
+                           f, {1, 0.01}),
+               std::invalid_argument);
+  RangeSearchOptions same;
+  same.second_material = "vero";
+  EXPECT_THROW(range_search(f, same), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace nibrig::model::design
