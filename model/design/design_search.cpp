@@ -28,7 +28,29 @@ std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
   return order;
 }
 
+bool same_design(const DesignPoint& a, const DesignPoint& b) {
+  double variation = 0;
+  for (const auto& share : a.mix) variation += std::abs(share.fraction - b.fraction_of(share.material));
+  for (const auto& share : b.mix)
+    if (a.fraction_of(share.material) == 0) variation += share.fraction;
+  return variation / 2 < kSameDesignFraction &&
+         std::abs(a.tip_diameter_m - b.tip_diameter_m) < kSameDesignTip;
+}
+
 }  // namespace
+
+std::vector<std::size_t> SearchResult::runners_up(std::size_t count) const {
+  std::vector<std::size_t> listed{ranked.at(0)}, out;
+  for (std::size_t k = 1; k < ranked.size() && out.size() < count; ++k) {
+    const DesignPoint& p = evaluated[ranked[k]].point;
+    if (std::any_of(listed.begin(), listed.end(),
+                    [&](std::size_t i) { return same_design(evaluated[i].point, p); }))
+      continue;
+    listed.push_back(ranked[k]);
+    out.push_back(ranked[k]);
+  }
+  return out;
+}
 
 space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool) {
   io::Catalog one;

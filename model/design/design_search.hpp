@@ -46,7 +46,16 @@ struct SearchResult {
   std::vector<std::size_t> ranked;   // indices into evaluated, nearest first
 
   const Candidate& best() const { return evaluated.at(ranked.at(0)); }
+  // Up to `count` candidates after the optimum, in rank order, each a design of its own: one
+  // within kSameDesignFraction of mix and kSameDesignTip of tip of a better one listed (the
+  // refinement's near neighbours of the optimum) is skipped. Indices into evaluated.
+  std::vector<std::size_t> runners_up(std::size_t count) const;
 };
+
+// Mixes closer than this (half the summed |Δfraction|) with tips closer than kSameDesignTip are
+// one design for a report: a printer dithers in steps of a few per cent.
+inline constexpr double kSameDesignFraction = 0.05;
+inline constexpr double kSameDesignTip = 0.0001;  // m
 
 struct LineSearchOptions {
   int scan_points = 9;            // equal steps from a to b, both ends included

@@ -36,6 +36,7 @@ int run(int argc, char** argv) {
   add_space_command(app, global);
   add_forcing_command(app, global);
   add_predict_command(app, global);
+  add_design_command(app, global);
   add_render_command(app, global);
   add_audio_commands(app, global);
   add_demo_command(app, global);

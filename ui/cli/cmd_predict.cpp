@@ -18,6 +18,7 @@
 #include "model/io/json_fields.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/design_reports.hpp"
 #include "ui/cli/forcing_inputs.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
@@ -51,14 +52,6 @@ forcing::ForcingModel forcing_model_for(const PredictOptions& o) {
   spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
   ForcingInputs inputs = load_forcing_inputs(o.inputs);
   return forcing::fit_forcing_model(inputs.exemplars);
-}
-
-nlohmann::json descriptors_json(const model::measure::VibrationDescriptors& d) {
-  nlohmann::json bands = nlohmann::json::object();
-  for (const auto& [k, energies] : d.band_energies) bands[std::to_string(k)] = energies;
-  return {{"weighted_mean", d.weighted_mean},
-          {"weighted_power", d.weighted_power},
-          {"band_energies", bands}};
 }
 
 // The measured spectrum to compare with: a `nibrig measure` output, or the catalog's pairing.
@@ -140,21 +133,7 @@ void run_predict(const PredictOptions& o) {
       design::to_string(point), o.surface, tool.design_name, tool.first_mode_hz, tool.mu,
       tool.vibration.weighted_mean, seconds_since(start));
 
-  nlohmann::json j = model::io::to_json(tool.spectrum);
-  j["kind"] = "prediction";
-  j["tool"] = design::to_string(point);
-  j["surface"] = o.surface;
-  j["mu"] = tool.mu;
-  j["descriptors"] = descriptors_json(tool.vibration);
-  j["threshold_curve"] = threshold.source();
-  j["design"] = {{"name", tool.design_name},
-                 {"first_mode_hz", tool.first_mode_hz},
-                 {"tip_diameter_mm", point.tip_diameter_m * 1e3}};
-  for (const auto& share : point.mix) j["design"]["mix"][share.material] = share.fraction;
-  j["notes"] = {
-      "amplitude = |H| (simulated design) x F_S (fitted surface forcing) x t x m (tip and "
-      "material scaling interpolated linearly, Sec. 5.3); mu interpolated linearly between "
-      "measured printed tools (model/design/predicted_tool.hpp)"};
+  nlohmann::json j = prediction_json(tool, threshold.source());
 
   if (const auto measured = measurement(o, catalog)) {
     const auto& [label, spectrum] = *measured;

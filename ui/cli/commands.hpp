@@ -18,6 +18,7 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
 void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);

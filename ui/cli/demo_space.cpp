@@ -126,7 +126,8 @@ std::string run_space_demo(const model::io::Catalog& catalog,
     if (std::find(stimuli.begin(), stimuli.end(), all.rows[i]) == stimuli.end())
       placed.push_back({all.rows[i], space::place_from_descriptors(
                                          *file.descriptor_map,
-                                         all.values.row(static_cast<Eigen::Index>(i)).transpose())});
+                                         all.values.row(static_cast<Eigen::Index>(i)).transpose()),
+                        "", true});
   write_space_plot(file, {}, "Perceptual space of a SIMULATED observer (2-D, 68/95 % bootstrap)",
                    dir / "space.png");
   write_space_plot(file, placed, "SIMULATED observer: every catalog tool placed from descriptors",

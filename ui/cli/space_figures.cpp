@@ -59,7 +59,11 @@ void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& 
   const auto dims = static_cast<double>(s.coordinates.rows());
   for (const auto& t : placed) {
     report::ScatterPoint p{t.name, t.placement.mean(0), one_d ? 0.0 : t.placement.mean(1),
-                           group_of(t.name), {}, true};
+                           t.group.empty() ? group_of(t.name) : t.group, {}, true};
+    if (!t.regions) {
+      plot.points.push_back(p);
+      continue;
+    }
     // A Gaussian placement: the level-k ellipse has the χ² radius of the space's dimensions.
     space::ConfidenceRegion region{t.placement.mean, t.placement.covariance, {}};
     for (double l : levels)

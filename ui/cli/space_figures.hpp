@@ -13,8 +13,10 @@
 namespace nibrig::ui::cli {
 
 struct PlacedTool {
-  std::string name;
+  std::string name;  // also its label; empty: an unlabelled marker
   model::space::Placement placement;
+  std::string group;    // its legend entry; empty: the surface part of the name
+  bool regions = true;  // with its 68 % / 95 % ellipses
 };
 
 // The first two axes (a 1-D space on a line); judged stimuli as filled points coloured by surface

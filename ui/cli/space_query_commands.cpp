@@ -150,7 +150,7 @@ void run_space_embed(const SpaceEmbedOptions& o) {
     for (Eigen::Index d = 0; d < dims; ++d)
       csv << ',' << p.mean(d) << ',' << std::sqrt(p.covariance(d, d));
     csv << '\n';
-    if (!judged) placed.push_back({table.rows[i], p});
+    if (!judged) placed.push_back({table.rows[i], p, "", true});
   }
   std::cout << fmt::format("{} catalog pairings placed ({} of them judged in {})\n",
                            table.rows.size(), table.rows.size() - placed.size(),

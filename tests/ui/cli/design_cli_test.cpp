@@ -1,0 +1,101 @@
+// End-to-end test of `nibrig design` on the bundled catalog, in a space made for the test: the
+// 2-D space of the paper's descriptors (μ, log10 of the weighted mean vibration), with the
+// coordinates of a handful of measured tools equal to their standardised descriptors and a
+// small deterministic scatter, so that the descriptor map is known and the search's answer can be
+// reasoned about.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "model/design/design_point.hpp"
+#include "model/io/catalog.hpp"
+#include "model/space/catalog_descriptors.hpp"
+#include "model/space/descriptor_map.hpp"
+#include "model/space/space_file.hpp"
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+using test::is_png;
+using test::read_json;
+using test::run_cli;
+
+namespace space = model::space;
+
+std::filesystem::path write_test_space(const std::filesystem::path& folder) {
+  const auto catalog_file = test::assets_dir() / "default_catalog.json";
+  const auto catalog = model::io::read_catalog(catalog_file);
+  space::SpaceFile s;
+  s.stimuli = {"cryon/office", "stab/office", "vero1/office", "vero4/office", "DM854/office",
+               "vero1/glass",  "DM851/glass", "vero4/glass"};
+  const auto table = space::descriptors_for_stimuli(catalog, catalog_file, s.stimuli, 2);
+  s.descriptor_names = table.names;
+  s.descriptors = table.values;
+  const Eigen::Index n = table.values.rows();
+  s.coordinates.resize(2, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double wobble = 0.05 * ((i % 3) - 1.0);  // leaves the map a residual to estimate
+    s.coordinates(0, i) = 5 * table.values(i, 0) + wobble;
+    s.coordinates(1, i) = table.values(i, 1) - wobble;
+  }
+  s.scale = 1.0;
+  s.judgments = "none: a space made for the test";
+  s.descriptor_map = space::fit_descriptor_map(s.coordinates, s.descriptors, s.descriptor_names);
+  const auto file = folder / "space.json";
+  space::write_space_file(file, s);
+  return file;
+}
+
+TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
+  const auto out = test::scratch_dir("cli_design");
+  const auto space_file = write_test_space(out);
+  const std::vector<std::string> coarse{"--modes", "32", "--mesh-size", "0.004"};
+  std::vector<std::string> fit{"forcing", "fit", "-o", (out / "forcing.json").string()};
+  fit.insert(fit.end(), coarse.begin(), coarse.end());
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli(fit), 0);
+  testing::internal::GetCapturedStdout();
+
+  // The target is the measured 4 mm DM85 tool on glass, placed from its descriptors; the line runs
+  // from the 1 mm VeroClear design to the 4 mm DM85 one. The model predicts the DM85 end from the
+  // same tool's data, so the optimum must lie at or next to that end.
+  std::vector<std::string> args{"design", "--target", "DM854/glass", "--surface", "glass",
+                                "--space", space_file.string(), "--forcing",
+                                (out / "forcing.json").string(), "--between", "vero,tip=1mm",
+                                "DM85,tip=4mm", "-o", (out / "search.json").string(), "--plot",
+                                (out / "path.png").string()};
+  args.insert(args.end(), coarse.begin(), coarse.end());
+  testing::internal::CaptureStdout();
+  const int code = run_cli(args);
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  const auto search = read_json(out / "search.json");
+  const auto& path = search["path"];
+  ASSERT_GE(path.size(), 9u);
+  const double at_vero = path[0]["distance"], at_dm85 = path[8]["distance"];
+  const double best = search["optimum"]["distance"];
+  EXPECT_LE(best, at_vero);
+  EXPECT_LE(best, at_dm85);
+  EXPECT_LT(at_dm85, at_vero);
+  // Within one scan step (1/8 of the line) of the DM85 end.
+  const auto optimum = model::design::parse_design_point(search["optimum"]["design"].get<std::string>());
+  EXPECT_GE(optimum.fraction_of("DM85"), 0.875) << search["optimum"]["design"];
+  EXPECT_GE(search["runners_up"].size(), 1u);
+  EXPECT_TRUE(is_png(out / "path.png"));
+  EXPECT_NE(text.find("placed from its descriptors"), std::string::npos) << text;
+
+  // A target the space cannot place fails in one line.
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int bad = run_cli({"design", "--target", "nothing/glass", "--surface", "glass", "--space",
+                           space_file.string(), "--forcing", (out / "forcing.json").string()});
+  testing::internal::GetCapturedStdout();
+  const std::string error = testing::internal::GetCapturedStderr();
+  EXPECT_NE(bad, 0);
+  EXPECT_NE(error.find("nothing/glass"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace nibrig::ui::cli

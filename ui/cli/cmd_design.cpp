@@ -1,0 +1,196 @@
+// `nibrig design`: the printable design that feels closest to a target tool on an artificial
+// surface (Sec. 6.2, Fig. 17) — along the line between two designs, or over the whole mix × tip
+// range — with the optimum, its distance, the runners-up and the path drawn in the space.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "model/design/design_search.hpp"
+#include "model/forcing/forcing_file.hpp"
+#include "model/forcing/forcing_fit.hpp"
+#include "model/io/catalog.hpp"
+#include "model/space/space_file.hpp"
+#include "ui/cli/assets.hpp"
+#include "ui/cli/commands.hpp"
+#include "ui/cli/design_reports.hpp"
+#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/logging.hpp"
+#include "ui/cli/output.hpp"
+#include "ui/cli/space_inputs.hpp"
+
+namespace nibrig::ui::cli {
+
+namespace {
+
+namespace design = model::design;
+namespace forcing = model::forcing;
+namespace mech = model::mechanics;
+namespace space = model::space;
+
+struct DesignOptions {
+  std::string target;   // "tool/surface", judged in the space or placed from the catalog
+  std::string surface;  // the artificial surface the stylus is for
+  std::filesystem::path space_file;
+  std::vector<std::string> between;  // two designs: a line search; none: the whole range
+  std::string mix = "vero,DM85";     // the two materials of the range search
+  std::filesystem::path forcing_model;
+  ForcingInputOptions inputs;
+  int runners_up = 4;
+  std::filesystem::path output = "design_search.json";
+  std::filesystem::path plot;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void run_design(const DesignOptions& o) {
+  const auto catalog_path =
+      o.inputs.catalog.empty() ? asset("default_catalog.json") : o.inputs.catalog;
+  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
+  const space::SpaceFile space_file = space::read_space_file(o.space_file);
+  if (!space_file.descriptor_map)
+    throw std::invalid_argument(o.space_file.string() +
+                                " has no descriptor map (fit it with --descriptors): designs are "
+                                "placed from their predicted descriptors");
+  SpaceLocator locator(space_file, o.space_file, catalog_path);
+  const space::Placement target = locator.locate(o.target, o.space_file);
+
+  std::optional<design::DesignPoint> a, b;
+  if (!o.between.empty()) {
+    if (o.between.size() != 2)
+      throw std::invalid_argument("--between takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
+    a = design::parse_design_point(o.between[0]);
+    b = design::parse_design_point(o.between[1]);
+  }
+  design::RangeSearchOptions range;
+  if (const auto comma = o.mix.find(','); comma != std::string::npos) {
+    range.first_material = o.mix.substr(0, comma);
+    range.second_material = o.mix.substr(comma + 1);
+  } else {
+    throw std::invalid_argument("--mix takes two materials, e.g. vero,DM85");
+  }
+
+  forcing::ForcingModel model;
+  if (!o.forcing_model.empty()) {
+    model = forcing::read_forcing_model(o.forcing_model);
+  } else {
+    spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
+    model = forcing::fit_forcing_model(load_forcing_inputs(o.inputs).exemplars);
+  }
+  range.min_tip_m = model.tip_log_gain.begin()->first;
+  range.max_tip_m = model.tip_log_gain.rbegin()->first;
+  const mech::MaterialTable materials = mech::read_material_table(
+      o.inputs.materials.empty() ? asset("materials.json") : o.inputs.materials);
+  const auto threshold =
+      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
+  design::PredictionSetup setup;
+  setup.model = &model;
+  setup.catalog = &catalog;
+  setup.template_design = mech::read_design(
+      o.inputs.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json")
+                                       : o.inputs.design_template,
+      materials);
+  setup.materials = materials;
+  setup.threshold = &threshold;
+  setup.mesh_size = o.inputs.mesh_size;
+  setup.modes = o.inputs.modes;
+
+  std::size_t evaluations = 0;
+  const design::Evaluate distance =
+      design::distance_to_target(setup, o.surface, *space_file.descriptor_map, target);
+  const design::Evaluate counted = [&](const design::DesignPoint& p) {
+    auto c = distance(p);
+    spdlog::debug("{}: distance {:.3f}", design::to_string(p), c.distance);
+    ++evaluations;
+    return c;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  const design::LineSearchOptions line;
+  const auto last_of_scan = static_cast<std::size_t>(line.scan_points - 1);
+  const design::SearchResult result =
+      a ? design::line_search(*a, *b, counted, line) : design::range_search(counted, range);
+  const double seconds = seconds_since(start);
+
+  const std::string how =
+      a ? fmt::format("along the line {} -> {}", o.between[0], o.between[1])
+        : fmt::format("over {} to {} x tips {:g}-{:g} mm", range.first_material,
+                      range.second_material, range.min_tip_m * 1e3, range.max_tip_m * 1e3);
+  std::cout << fmt::format("target {} ({}); designs on {} {}: {} predicted in {:.1f} s\n",
+                           o.target, locator.placed(o.target) ? "placed from its descriptors" : "judged",
+                           o.surface, how, evaluations, seconds);
+  const auto& best = result.best();
+  std::cout << fmt::format("optimum {}: distance {:.3f} +- {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
+                           design::to_string(best.point), best.distance, best.distance_sd, best.mu,
+                           best.weighted_mean);
+  const auto runners = result.runners_up(static_cast<std::size_t>(o.runners_up));
+  for (std::size_t k = 0; k < runners.size(); ++k) {
+    const auto& c = result.evaluated[runners[k]];
+    std::cout << fmt::format("  runner-up {}: {} distance {:.3f} +- {:.3f}\n", k + 1,
+                             design::to_string(c.point), c.distance, c.distance_sd);
+  }
+  if (a) {
+    const auto& first = result.evaluated.front();
+    std::cout << fmt::format("  the two designs themselves: {} {:.3f}, {} {:.3f}\n",
+                             o.between[0], first.distance, o.between[1],
+                             result.evaluated[last_of_scan].distance);
+  }
+
+  nlohmann::json j = search_json(result, o.target, o.surface, how, seconds, o.runners_up);
+  j["space"] = o.space_file.string();
+  write_json_file(o.output, j);
+  std::cout << "wrote " << o.output.string() << "\n";
+  if (!o.plot.empty()) {
+    std::vector<std::size_t> ends;
+    if (a) ends = {0, last_of_scan};
+    write_search_plot(space_file, o.target, locator.placed(o.target) ? &target : nullptr, result,
+                      ends, o.surface, o.plot);
+    std::cout << "wrote " << o.plot.string() << "\n";
+  }
+}
+
+}  // namespace
+
+void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
+  auto o = std::make_shared<DesignOptions>();
+  auto* cmd = app.add_subcommand(
+      "design", "Find the printable design that feels closest to a target tool (Sec. 6.2)");
+  cmd->footer(
+      "Every candidate is predicted (as `nibrig predict`) and placed in the space from its\n"
+      "descriptors; the distance to the target is between the placements' means, with its\n"
+      "spread from their uncertainties. --between searches the line between two designs (a scan of\n"
+      "9 points, then golden sections); otherwise the whole range of a two-material mix (--mix)\n"
+      "and the fitted tips (a 5 x 4 grid refined twice).");
+  cmd->add_option("--target", o->target, "Target tool as tool/surface (e.g. cryon/office)")
+      ->required();
+  cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)")
+      ->required();
+  cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)")
+      ->required();
+  cmd->add_option("--between", o->between, "Two designs: search the line between them")
+      ->expected(2);
+  cmd->add_option("--mix", o->mix, "The two materials of the range search")->capture_default_str();
+  cmd->add_option("--forcing", o->forcing_model,
+                  "Forcing model from `nibrig forcing fit` (default: fit the catalog now)");
+  cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
+  cmd->add_option("--template", o->inputs.design_template,
+                  "Stylus the designs are built on (default: assets/designs/stylus_vero_tip2mm.json)");
+  cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
+  cmd->add_option("--modes", o->inputs.modes, "Modes of each design (default: the template's)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--runners-up", o->runners_up, "How many runners-up to report")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o->output, "Search JSON to write")->capture_default_str();
+  cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)");
+  cmd->callback([o, global] {
+    configure_logging(global->verbosity);
+    run_design(*o);
+  });
+}
+
+}  // namespace nibrig::ui::cli

@@ -1,0 +1,40 @@
+// What `nibrig predict`, `nibrig design` and the demo write about predicted designs: the
+// prediction JSON (the keys `nibrig measure` writes for a recording, so the two compare directly),
+// the search JSON, and the search's path in the space (Fig. 17).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "model/design/design_search.hpp"
+#include "model/design/predicted_tool.hpp"
+#include "model/space/space_file.hpp"
+
+namespace nibrig::ui::cli {
+
+// kind "prediction": tool (the design point), surface, frequencies_hz, speeds_mm_s,
+// amplitude_m_s2, descriptors (weighted_mean, weighted_power, band_energies), mu,
+// threshold_curve, design (name, first_mode_hz, tip_diameter_mm, mix) and notes.
+nlohmann::json prediction_json(const model::design::PredictedTool& tool,
+                               const std::string& threshold_source);
+
+// One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates.
+nlohmann::json candidate_json(const model::design::Candidate& candidate);
+
+// kind "design_search": target, surface, search (how), seconds, optimum, runners_up (distinct
+// designs, SearchResult::runners_up), path (every candidate in the order evaluated).
+nlohmann::json search_json(const model::design::SearchResult& result, const std::string& target,
+                           const std::string& surface, const std::string& how, double seconds,
+                           int runners_up);
+
+// The space's judged stimuli, the target when it was placed rather than judged, every candidate
+// (the path; `ends` of them labelled, e.g. the two designs of a line search) and the optimum with
+// its 68 % / 95 % ellipses.
+void write_search_plot(const model::space::SpaceFile& space, const std::string& target,
+                       const model::space::Placement* placed_target,
+                       const model::design::SearchResult& result,
+                       const std::vector<std::size_t>& ends, const std::string& surface,
+                       const std::filesystem::path& png);
+
+}  // namespace nibrig::ui::cli
