@@ -139,6 +139,7 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
   const mechanics::DesignModel built = mechanics::build_design_model(mixed.design, mixed.materials);
   tool.design_name = mixed.design.name;
   tool.first_mode_hz = built.modal.omega.front() / (2 * M_PI);
+  tool.modal = built.modal;
   for (const auto& h : mechanics::frequency_response(built.modal, model.frequencies_hz))
     tool.response_magnitude.push_back(std::abs(h));
   tool.spectrum = predict_spectrum(model, point, surface, tool.response_magnitude);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "model/design/design_point.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/actuator_store.hpp"
 #include "playback/audio_output.hpp"
@@ -49,16 +50,24 @@ void audition(const AuditionOptions& o) {
   const auto catalog = voice_catalog(o.stroke.catalog);
   std::vector<std::string> tools{o.stroke.tool};
   tools.insert(tools.end(), o.also.begin(), o.also.end());
-  for (const auto& tool : tools) pairing_spectrum(catalog, o.stroke.catalog, tool, o.stroke.surface);
+  for (const auto& tool : tools)
+    if (names_design_point(tool))
+      model::design::parse_design_point(tool);  // refuses a bad design before any work
+    else
+      pairing_spectrum(catalog, o.stroke.catalog, tool, o.stroke.surface);
   const StylusModes stylus = stylus_modes(o.stroke.design);
+  DesignPredictor predictor(catalog, o.stroke.catalog, o.stroke.forcing_model);
   rt::EngineSettings settings;
   settings.sample_rate_hz = device.sample_rate;
   settings.slots = 1 + o.also.size();
   rt::Engine engine(settings);
   std::vector<std::string> names;
   for (std::size_t i = 0; i < tools.size(); ++i) {
-    auto voice = tool_voice(catalog, o.stroke.catalog, tools[i], o.stroke.surface, stylus,
-                            engine.internal_rate(), o.stroke.seed + i);
+    auto voice = names_design_point(tools[i])
+                     ? predicted_voice(predictor.predict(tools[i], o.stroke.surface),
+                                       engine.internal_rate(), o.stroke.seed + i)
+                     : tool_voice(catalog, o.stroke.catalog, tools[i], o.stroke.surface, stylus,
+                                  engine.internal_rate(), o.stroke.seed + i);
     names.push_back(voice->name());
     engine.load(i, std::move(voice));
   }

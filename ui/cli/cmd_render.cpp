@@ -25,13 +25,24 @@ struct RenderOptions {
 
 void render(const RenderOptions& o) {
   const auto catalog = voice_catalog(o.stroke.catalog);
-  pairing_spectrum(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface);
-  const StylusModes stylus = stylus_modes(o.stroke.design);
+  const bool predicted = names_design_point(o.stroke.tool);
+  if (!predicted) pairing_spectrum(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface);
   rt::EngineSettings settings;
   settings.sample_rate_hz = o.rate;
   rt::Engine engine(settings);
-  auto voice = tool_voice(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface, stylus,
-                          engine.internal_rate(), o.stroke.seed);
+  std::unique_ptr<rt::Voice> voice;
+  std::string modes;
+  if (predicted) {
+    DesignPredictor predictor(catalog, o.stroke.catalog, o.stroke.forcing_model);
+    const auto tool = predictor.predict(o.stroke.tool, o.stroke.surface);
+    voice = predicted_voice(tool, engine.internal_rate(), o.stroke.seed);
+    modes = tool.design_name;
+  } else {
+    const StylusModes stylus = stylus_modes(o.stroke.design);
+    voice = tool_voice(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface, stylus,
+                       engine.internal_rate(), o.stroke.seed);
+    modes = stylus.name;
+  }
   const std::string name = voice->name();
   engine.load(0, std::move(voice));
   engine.select(0);
@@ -46,7 +57,7 @@ void render(const RenderOptions& o) {
   const auto result = playback::render_to_wav(engine, o.output, render_settings);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto stats = engine.stats();
-  std::printf("%s through %s, %s\n", name.c_str(), stylus.name.c_str(), stroke.description.c_str());
+  std::printf("%s through %s, %s\n", name.c_str(), modes.c_str(), stroke.description.c_str());
   std::printf("wrote %s: %.2f s at %.0f Hz (%zu frames in %zu-frame blocks)\n", o.output.c_str(),
               render_settings.seconds, o.rate, result.frames, o.period);
   std::printf("level: peak %.4f, rms %.4f of full scale (%.3g m/s² rms at %.3g per m/s², uncalibrated)\n",

@@ -23,9 +23,15 @@ class WithForce final : public rt::SpeedSource {
 }  // namespace
 
 void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
-  cmd->add_option("--tool", o.tool, "Tool id in the catalog (e.g. cryon, stab, vero2)")->required();
+  cmd->add_option("--tool", o.tool,
+                  "Tool id in the catalog (e.g. cryon, stab, vero2), or a design point to predict "
+                  "(e.g. \"DM85:0.5,vero:0.5,tip=2mm\", with its own modes)")
+      ->required();
   cmd->add_option("--surface", o.surface, "Surface id (e.g. office, note, stone, glass)")->required();
   cmd->add_option("--catalog", o.catalog, "Catalog JSON (default: the bundled one)");
+  cmd->add_option("--forcing", o.forcing_model,
+                  "Forcing model for design points (`nibrig forcing fit`; default: fit the "
+                  "catalog first)");
   cmd->add_option("--design", o.design,
                   "Stylus design JSON whose modes shape the vibration (default: assets/designs/"
                   "stylus_vero_tip2mm.json)");

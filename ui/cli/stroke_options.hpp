@@ -12,8 +12,10 @@
 namespace nibrig::ui::cli {
 
 struct StrokeOptions {
+  // A catalog tool id, or a design point ("DM85:0.5,vero:0.5,tip=2mm") to predict (tool_voice.hpp).
   std::string tool, surface;
   std::filesystem::path catalog, design;
+  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog first
   double speed_mm_s = -1;  // constant speed; < 0 = not given
   bool sweep = false;
   std::filesystem::path trajectory;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "model/design/predicted_tool.hpp"
 #include "model/io/catalog.hpp"
 #include "model/mechanics/modal_model.hpp"
 #include "rt/voice.hpp"
@@ -35,6 +36,28 @@ const model::io::VelocitySpectrum& pairing_spectrum(const model::io::Catalog& ca
                                                     const std::filesystem::path& catalog_file,
                                                     const std::string& tool,
                                                     const std::string& surface);
+
+// Whether `tool` is a design point to predict ("...tip=2mm") rather than a catalog id.
+bool names_design_point(const std::string& tool);
+
+// Design points predicted on demand, with one forcing model (read from `forcing_model`, or fitted
+// to the catalog the first time one is needed: ~8 s).
+class DesignPredictor {
+ public:
+  DesignPredictor(const model::io::Catalog& catalog, std::filesystem::path catalog_file,
+                  std::filesystem::path forcing_model);
+  ~DesignPredictor();
+  // Checks the point (refuses a bad mix or tip before any work) and predicts it on `surface`.
+  model::design::PredictedTool predict(const std::string& point, const std::string& surface);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// A voice of a predicted design: its own modes and its predicted spectrum.
+std::unique_ptr<rt::Voice> predicted_voice(const model::design::PredictedTool& tool,
+                                           double internal_rate, std::uint64_t seed);
 
 // A voice with that spectrum through the stylus's modes (rt/voice_builder.hpp).
 std::unique_ptr<rt::Voice> tool_voice(const model::io::Catalog& catalog,

@@ -3,7 +3,15 @@
 // bad designs are predicted with it.
 #include <gtest/gtest.h>
 
+#include <sndfile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+
+#include "model/measure/amplitude_convention.hpp"
+#include "rt/engine.hpp"
 
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -20,6 +28,19 @@ const std::vector<std::string> kCoarse{"--modes", "32", "--mesh-size", "0.004"};
 std::vector<std::string> with_coarse(std::vector<std::string> args) {
   args.insert(args.end(), kCoarse.begin(), kCoarse.end());
   return args;
+}
+
+// The rms of a mono float WAV after its first second (the engine's fades and warm-up).
+double wav_rms(const std::filesystem::path& file, std::size_t skip) {
+  SF_INFO info{};
+  SNDFILE* f = sf_open(file.c_str(), SFM_READ, &info);
+  if (f == nullptr) return 0;
+  std::vector<float> x(static_cast<std::size_t>(info.frames));
+  sf_read_float(f, x.data(), info.frames);
+  sf_close(f);
+  double sum = 0;
+  for (std::size_t i = skip; i < x.size(); ++i) sum += double{x[i]} * x[i];
+  return std::sqrt(sum / static_cast<double>(x.size() - skip));
 }
 
 // Runs the command and returns its exit code with what it printed on stderr.
@@ -78,6 +99,36 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
     for (std::size_t j = 0; j < file[s].size(); ++j)
       ASSERT_NEAR(file[s][j].get<double>(), point[s][j].get<double>(),
                   1e-9 * point[s][j].get<double>());
+
+  // The design point compiles into a real-time voice: rendered at a measured speed, its level is
+  // the predicted spectrum's (Parseval with the catalog's amplitude convention). 20 s of noise over
+  // ~500 Hz estimate the rms to ~1 %; the generator's total power is within 0.1 dB (rt tests).
+  const std::string design = "DM85:0.25,vero:0.75,tip=1.5mm";
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli({"predict", "--design", design, "--surface", "office", "--forcing", forcing,
+                     "-o", (out / "full.json").string()}),
+            0);
+  ASSERT_EQ(run_cli({"render", "--tool", design, "--surface", "office", "--forcing", forcing,
+                     "--speed", "110.2", "--seconds", "20", "-o", (out / "design.wav").string()}),
+            0);
+  const std::string rendered = testing::internal::GetCapturedStdout();
+  EXPECT_NE(rendered.find("predicted " + design), std::string::npos) << rendered;
+  const auto full = read_json(out / "full.json");
+  const auto speeds = full["speeds_mm_s"].get<std::vector<double>>();
+  const auto row = std::find_if(speeds.begin(), speeds.end(),
+                                [](double v) { return std::abs(v - 110.2) < 0.05; }) - speeds.begin();
+  ASSERT_LT(static_cast<std::size_t>(row), speeds.size());
+  const auto frequencies = full["frequencies_hz"].get<std::vector<double>>();
+  const auto amplitude = full["amplitude_m_s2"][row].get<std::vector<double>>();
+  double power = 0;
+  for (std::size_t j = 0; j < amplitude.size(); ++j)
+    power += model::measure::noise_psd_from_mean_amplitude(amplitude[j],
+                                                           model::measure::kCatalogWindowSeconds) *
+             (frequencies[1] - frequencies[0]);
+  const double expected_rms = std::sqrt(power) * rt::EngineSettings{}.output_level_per_m_s2;
+  const double level_db = 20 * std::log10(wav_rms(out / "design.wav", 48000) / expected_rms);
+  std::printf("predicted design rendered at 110.2 mm/s: level %+.2f dB from its spectrum's\n", level_db);
+  EXPECT_NEAR(level_db, 0.0, 0.5);
 
   // Bad input fails in one line that says what is wrong.
   auto [sum_code, sum_error] = failing({"predict", "--design", "DM85:0.3,vero:0.6,tip=1mm",
