@@ -1,0 +1,100 @@
+// Cost of the forcing model and of design by search (issue 6): simulating the nine printed
+// designs' responses, the fit of Eq. 10 plus the leave-one-out over the paper's tools, and one line
+// search (every candidate meshed, solved and predicted at the template's full resolution, 3 mm and
+// 64 modes). The space of the search is made from the catalog's descriptors (as in
+// design_cli_test): its cost does not depend on how the space was fitted.
+#include <benchmark/benchmark.h>
+
+#include "model/design/design_search.hpp"
+#include "model/forcing/catalog_exemplars.hpp"
+#include "model/forcing/leave_one_out.hpp"
+#include "model/io/catalog.hpp"
+#include "model/mechanics/design.hpp"
+#include "model/space/catalog_descriptors.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace {
+
+using namespace nibrig::model;
+
+struct Inputs {
+  io::Catalog catalog;
+  mechanics::MaterialTable materials;
+  mechanics::Design template_design;
+  std::vector<forcing::ForcingExemplar> exemplars;
+};
+
+Inputs& inputs(bool with_responses) {
+  static Inputs in = [] {
+    const auto assets = nibrig::test::assets_dir();
+    Inputs i;
+    i.catalog = io::read_catalog(assets / "default_catalog.json");
+    i.materials = mechanics::read_material_table(assets / "materials.json");
+    i.template_design = mechanics::read_design(assets / "designs" / "stylus_vero_tip2mm.json", i.materials);
+    i.exemplars = forcing::select_printed_exemplars(i.catalog).exemplars;
+    return i;
+  }();
+  if (with_responses && in.exemplars.front().response_magnitude.empty())
+    forcing::attach_responses(in.exemplars, in.template_design, in.materials);
+  return in;
+}
+
+void BM_ForcingDesignResponses(benchmark::State& state) {
+  auto& in = inputs(false);
+  std::size_t designs = 0;
+  for (auto _ : state) {
+    auto exemplars = in.exemplars;
+    designs = forcing::attach_responses(exemplars, in.template_design, in.materials).size();
+  }
+  state.counters["designs"] = static_cast<double>(designs);
+}
+BENCHMARK(BM_ForcingDesignResponses)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_ForcingFitAndLeaveOneOut(benchmark::State& state) {
+  auto& in = inputs(true);
+  std::vector<std::size_t> paper;
+  for (std::size_t e = 0; e < in.exemplars.size(); ++e)
+    if (forcing::is_paper_tool(in.exemplars[e])) paper.push_back(e);
+  double mean_db = 0;
+  for (auto _ : state) {
+    const auto model = forcing::fit_forcing_model(in.exemplars);
+    benchmark::DoNotOptimize(model.residual_rms_db);
+    mean_db = forcing::leave_one_out(in.exemplars, paper).summary.mean_rms_db;
+  }
+  state.counters["exemplars"] = static_cast<double>(in.exemplars.size());
+  state.counters["held_out"] = static_cast<double>(paper.size());
+  state.counters["loo_mean_db"] = mean_db;
+}
+BENCHMARK(BM_ForcingFitAndLeaveOneOut)->Iterations(3)->Unit(benchmark::kMillisecond);
+
+void BM_DesignLineSearch(benchmark::State& state) {
+  auto& in = inputs(true);
+  const auto model = forcing::fit_forcing_model(in.exemplars);
+  const std::vector<std::string> stimuli{"cryon/office", "stab/office", "vero1/office",
+                                         "vero4/office", "DM854/office", "vero1/glass",
+                                         "DM851/glass", "vero4/glass"};
+  const auto table = space::descriptors_for_stimuli(in.catalog, "bundled catalog", stimuli, 2);
+  Eigen::MatrixXd coordinates = table.values.transpose();
+  for (Eigen::Index i = 0; i < coordinates.cols(); ++i) coordinates(0, i) += 0.01 * (i % 3);
+  const auto map = space::fit_descriptor_map(coordinates, table.values, table.names);
+  const space::Placement target{coordinates.col(0), Eigen::MatrixXd::Zero(2, 2)};
+  const auto threshold =
+      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds" / "israr2006_pen_hold.csv");
+  design::PredictionSetup setup;
+  setup.model = &model;
+  setup.catalog = &in.catalog;
+  setup.template_design = in.template_design;
+  setup.materials = in.materials;
+  setup.threshold = &threshold;
+  std::size_t predictions = 0;
+  for (auto _ : state) {
+    const auto result = design::line_search(
+        design::parse_design_point("vero,tip=1mm"), design::parse_design_point("DM85,tip=4mm"),
+        design::distance_to_target(setup, "protector", map, target));
+    predictions = result.evaluated.size();
+  }
+  state.counters["predictions"] = static_cast<double>(predictions);
+}
+BENCHMARK(BM_DesignLineSearch)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
