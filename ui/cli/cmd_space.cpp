@@ -115,6 +115,9 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
   embed->add_option("catalog", m->catalog, "Catalog")->required()->check(CLI::ExistingFile);
   embed->add_option("-o,--output", m->output, "Output CSV (default: standard output)");
   embed->add_option("--plot", m->plot, "PNG of the space with the placed tools");
+  embed->add_option("--predicted", m->predicted,
+                    "Predictions (`nibrig predict -o`) to place beside the catalog's tools")
+      ->check(CLI::ExistingFile);
   embed->callback([m, global] {
     configure_logging(global->verbosity);
     run_space_embed(*m);

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "model/io/catalog.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
 #include "ui/cli/space_figures.hpp"
 
 namespace nibrig::ui::cli {
@@ -33,6 +35,29 @@ nlohmann::json prediction_json(const design::PredictedTool& tool,
       "material scaling interpolated linearly, Sec. 5.3); mu interpolated linearly between "
       "measured printed tools (model/design/predicted_tool.hpp)"};
   return j;
+}
+
+std::pair<model::io::ToolEntry, model::io::Pairing> read_prediction(
+    const std::filesystem::path& file, const model::measure::ThresholdCurve& threshold) {
+  namespace fields = model::io::json_fields;
+  const nlohmann::json j = fields::parse_file(file);
+  fields::as_object(j, file, "");
+  if (fields::string_member(j, "kind", file, "") != "prediction")
+    throw model::io::FormatError(file, fields::place("kind"),
+                                 "expected \"prediction\" (a `nibrig predict` file)");
+  design::PredictedTool tool;
+  try {
+    tool.point = design::parse_design_point(fields::string_member(j, "tool", file, ""));
+  } catch (const std::invalid_argument& e) {
+    throw model::io::FormatError(file, fields::place("tool"), e.what());
+  }
+  tool.surface = fields::string_member(j, "surface", file, "");
+  tool.mu = fields::number_member(j, "mu", file, "");
+  tool.spectrum = model::io::velocity_spectrum_from_json(j, file, "");
+  tool.vibration = model::measure::compute_vibration_descriptors(tool.spectrum, threshold);
+  if (j.contains("design") && j["design"].is_object() && j["design"].contains("name"))
+    tool.design_name = fields::string_member(j["design"], "name", file, "design");
+  return {design::predicted_tool_entry(tool), design::predicted_pairing(tool, threshold.source())};
 }
 
 nlohmann::json candidate_json(const design::Candidate& c) {

@@ -9,6 +9,8 @@
 
 #include "model/design/design_search.hpp"
 #include "model/design/predicted_tool.hpp"
+#include "model/io/catalog.hpp"
+#include "model/measure/threshold_curve.hpp"
 #include "model/space/space_file.hpp"
 
 namespace nibrig::ui::cli {
@@ -18,6 +20,12 @@ namespace nibrig::ui::cli {
 // threshold_curve, design (name, first_mode_hz, tip_diameter_mm, mix) and notes.
 nlohmann::json prediction_json(const model::design::PredictedTool& tool,
                                const std::string& threshold_source);
+
+// A prediction JSON read back as the catalog entries of a predicted tool (kind "predicted", id
+// "pred:<design>"), its vibration descriptors recomputed from its spectrum with `threshold`.
+// Throws io::FormatError naming the file and field (not a prediction, a missing or bad field).
+std::pair<model::io::ToolEntry, model::io::Pairing> read_prediction(
+    const std::filesystem::path& file, const model::measure::ThresholdCurve& threshold);
 
 // One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates.
 nlohmann::json candidate_json(const model::design::Candidate& candidate);

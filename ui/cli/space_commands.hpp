@@ -36,6 +36,7 @@ void run_space_evaluate(const SpaceQueryOptions& options);
 
 struct SpaceEmbedOptions {
   std::filesystem::path space_file, catalog, output, plot;
+  std::vector<std::filesystem::path> predicted;  // `nibrig predict` outputs placed beside the catalog
 };
 void run_space_embed(const SpaceEmbedOptions& options);
 

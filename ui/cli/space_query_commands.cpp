@@ -12,6 +12,8 @@
 #include "model/space/prediction_scores.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
+#include "ui/cli/assets.hpp"
+#include "ui/cli/design_reports.hpp"
 #include "ui/cli/space_figures.hpp"
 #include "ui/cli/space_inputs.hpp"
 
@@ -129,7 +131,16 @@ void run_space_embed(const SpaceEmbedOptions& o) {
   if (!s.descriptor_map)
     throw std::invalid_argument(o.space_file.string() +
                                 " has no descriptor map: fit it with --descriptors catalog.json");
-  const model::io::Catalog catalog = model::io::read_catalog(o.catalog);
+  model::io::Catalog catalog = model::io::read_catalog(o.catalog);
+  if (!o.predicted.empty()) {
+    const auto threshold =
+        model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
+    for (const auto& file : o.predicted) {
+      auto [tool, pairing] = read_prediction(file, threshold);
+      catalog.tools.push_back(std::move(tool));
+      catalog.pairings.push_back(std::move(pairing));
+    }
+  }
   const space::DescriptorTable table =
       space::descriptors_of_catalog(catalog, o.catalog, s.descriptor_map->descriptor_names.size());
   if (table.names != s.descriptor_map->descriptor_names)
@@ -150,7 +161,8 @@ void run_space_embed(const SpaceEmbedOptions& o) {
     for (Eigen::Index d = 0; d < dims; ++d)
       csv << ',' << p.mean(d) << ',' << std::sqrt(p.covariance(d, d));
     csv << '\n';
-    if (!judged) placed.push_back({table.rows[i], p, "", true});
+    const bool predicted = table.rows[i].rfind("pred:", 0) == 0;
+    if (!judged) placed.push_back({table.rows[i], p, predicted ? "predicted" : "", true});
   }
   std::cout << fmt::format("{} catalog pairings placed ({} of them judged in {})\n",
                            table.rows.size(), table.rows.size() - placed.size(),

@@ -5,6 +5,8 @@
 // reasoned about.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "model/design/design_point.hpp"
@@ -85,6 +87,35 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_GE(search["runners_up"].size(), 1u);
   EXPECT_TRUE(is_png(out / "path.png"));
   EXPECT_NE(text.find("placed from its descriptors"), std::string::npos) << text;
+
+  // A predicted tool is placed in the space beside the catalog's (Fig. 15), hollow, "predicted".
+  std::vector<std::string> predict{"predict", "--design", "DM85:0.5,vero:0.5,tip=2mm", "--surface",
+                                   "glass", "--forcing", (out / "forcing.json").string(), "-o",
+                                   (out / "predicted.json").string()};
+  predict.insert(predict.end(), coarse.begin(), coarse.end());
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli(predict), 0);
+  ASSERT_EQ(run_cli({"space", "embed", space_file.string(),
+                     (test::assets_dir() / "default_catalog.json").string(), "--predicted",
+                     (out / "predicted.json").string(), "-o", (out / "placed.csv").string(),
+                     "--plot", (out / "placed.png").string()}),
+            0);
+  testing::internal::GetCapturedStdout();
+  std::ifstream placed(out / "placed.csv");
+  const std::string csv((std::istreambuf_iterator<char>(placed)), std::istreambuf_iterator<char>());
+  EXPECT_NE(csv.find("\"pred:DM85:0.5,vero:0.5,tip=2mm/glass\",no,"), std::string::npos) << csv;
+  EXPECT_TRUE(is_png(out / "placed.png"));
+  // A file that is not a prediction is refused, naming it and the field.
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int not_prediction = run_cli({"space", "embed", space_file.string(),
+                                      (test::assets_dir() / "default_catalog.json").string(),
+                                      "--predicted", (out / "search.json").string()});
+  testing::internal::GetCapturedStdout();
+  const std::string refused = testing::internal::GetCapturedStderr();
+  EXPECT_NE(not_prediction, 0);
+  EXPECT_NE(refused.find("search.json"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("kind"), std::string::npos) << refused;
 
   // A target the space cannot place fails in one line.
   testing::internal::CaptureStderr();
