@@ -54,6 +54,20 @@ TEST_F(PrintedToolDesign, MatchesTheBundledTwoMaterialStylus) {
   EXPECT_DOUBLE_EQ(derived.damping->mass, bundled.damping->mass);
 }
 
+TEST_F(PrintedToolDesign, MatchesEveryBundledDigitalMaterialStylus) {
+  for (const std::string material : {"DM95", "DM85"})
+    for (const int mm : {1, 2, 4}) {
+      const std::string file = "stylus_vero_" + std::string(material == "DM95" ? "dm95" : "dm85") +
+                               "tip_" + std::to_string(mm) + "mm.json";
+      SCOPED_TRACE(file);
+      const mech::Design bundled = read(file);
+      const mech::Design derived =
+          printed_tool_design(printed_tip_of(material), mm * 1e-3, template_design, materials);
+      expect_same_stylus(derived, bundled);
+      EXPECT_EQ(bundled.region_materials.at("tip"), material);
+    }
+}
+
 TEST_F(PrintedToolDesign, MatchesTheBundledOneMaterialStyli) {
   for (const auto& [file, diameter] :
        {std::pair{"stylus_vero_tip1mm.json", 0.001}, std::pair{"stylus_vero_tip4mm.json", 0.004},
