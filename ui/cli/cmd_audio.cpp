@@ -56,7 +56,7 @@ void audition(const AuditionOptions& o) {
     else
       pairing_spectrum(catalog, o.stroke.catalog, tool, o.stroke.surface);
   const StylusModes stylus = stylus_modes(o.stroke.design);
-  DesignPredictor predictor(catalog, o.stroke.catalog, o.stroke.forcing_model);
+  DesignPredictor predictor(o.stroke.catalog, o.stroke.forcing_model);
   rt::EngineSettings settings;
   settings.sample_rate_hz = device.sample_rate;
   settings.slots = 1 + o.also.size();

@@ -132,7 +132,7 @@ void demo(const DemoOptions& options, unsigned threads) {
           << "/ (catalog.json, descriptors.csv, friction.png, spectra/*.png)\n";
   summary << run_mechanics_demo(options.output);
   summary << run_space_demo(catalog, catalog_path, options.output, threads);
-  summary << run_forcing_demo(catalog, catalog_path, options.output);
+  summary << run_forcing_demo(catalog_path, options.output);
   summary << run_render_demo(catalog, options.catalog, options.output);
   write_text_file(options.output / "SUMMARY.txt", summary.str());
   std::cout << summary.str();

@@ -9,14 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "model/design/design_search.hpp"
-#include "model/forcing/forcing_file.hpp"
-#include "model/forcing/forcing_fit.hpp"
 #include "model/io/catalog.hpp"
 #include "model/space/space_file.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_inputs.hpp"
@@ -50,7 +48,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void run_design(const DesignOptions& o) {
   const auto catalog_path =
       o.inputs.catalog.empty() ? asset("default_catalog.json") : o.inputs.catalog;
-  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
   const space::SpaceFile space_file = space::read_space_file(o.space_file);
   if (!space_file.descriptor_map)
     throw std::invalid_argument(o.space_file.string() +
@@ -74,34 +71,14 @@ void run_design(const DesignOptions& o) {
     throw std::invalid_argument("--mix takes two materials, e.g. vero,DM85");
   }
 
-  forcing::ForcingModel model;
-  if (!o.forcing_model.empty()) {
-    model = forcing::read_forcing_model(o.forcing_model);
-  } else {
-    spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
-    model = forcing::fit_forcing_model(load_forcing_inputs(o.inputs).exemplars);
-  }
+  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model);
+  const auto& model = inputs->model;
   range.min_tip_m = model.tip_log_gain.begin()->first;
   range.max_tip_m = model.tip_log_gain.rbegin()->first;
-  const mech::MaterialTable materials = mech::read_material_table(
-      o.inputs.materials.empty() ? asset("materials.json") : o.inputs.materials);
-  const auto threshold =
-      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
-  design::PredictionSetup setup;
-  setup.model = &model;
-  setup.catalog = &catalog;
-  setup.template_design = mech::read_design(
-      o.inputs.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json")
-                                       : o.inputs.design_template,
-      materials);
-  setup.materials = materials;
-  setup.threshold = &threshold;
-  setup.mesh_size = o.inputs.mesh_size;
-  setup.modes = o.inputs.modes;
 
   std::size_t evaluations = 0;
   const design::Evaluate distance =
-      design::distance_to_target(setup, o.surface, *space_file.descriptor_map, target);
+      design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, target);
   const design::Evaluate counted = [&](const design::DesignPoint& p) {
     auto c = distance(p);
     spdlog::debug("{}: distance {:.3f}", design::to_string(p), c.distance);

@@ -19,7 +19,7 @@
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/report/figures.hpp"
@@ -45,13 +45,6 @@ struct PredictOptions {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-forcing::ForcingModel forcing_model_for(const PredictOptions& o) {
-  if (!o.forcing_model.empty()) return forcing::read_forcing_model(o.forcing_model);
-  spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
-  ForcingInputs inputs = load_forcing_inputs(o.inputs);
-  return forcing::fit_forcing_model(inputs.exemplars);
 }
 
 // The measured spectrum to compare with: a `nibrig measure` output, or the catalog's pairing.
@@ -95,38 +88,23 @@ void plot_against(const design::PredictedTool& tool, const std::string& label,
 }
 
 void run_predict(const PredictOptions& o) {
-  const auto catalog_path =
-      o.inputs.catalog.empty() ? asset("default_catalog.json") : o.inputs.catalog;
-  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
-  const mech::MaterialTable materials = mech::read_material_table(
-      o.inputs.materials.empty() ? asset("materials.json") : o.inputs.materials);
-
-  // A design file is used as it is; a design point is built on the printed tools' template.
+  // The design first, so that a bad one fails before a forcing model is fitted: a design file is
+  // used as it is, a design point is built on the printed tools' template.
   std::optional<mech::Design> own;
   design::DesignPoint point;
   if (o.design.ends_with(".json")) {
-    own = mech::read_design(o.design, materials);
+    own = mech::read_design(o.design, mech::read_material_table(o.inputs.materials.empty()
+                                                                     ? asset("materials.json")
+                                                                     : o.inputs.materials));
     point = design::design_point_of(*own);
   } else {
     point = design::parse_design_point(o.design);
   }
-  const forcing::ForcingModel model = forcing_model_for(o);
-  const auto threshold =
-      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
-
-  design::PredictionSetup setup;
-  setup.model = &model;
-  setup.catalog = &catalog;
-  setup.template_design = mech::read_design(
-      o.inputs.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json")
-                                       : o.inputs.design_template,
-      materials);
-  setup.materials = materials;
-  setup.threshold = &threshold;
-  setup.mesh_size = o.inputs.mesh_size;
-  setup.modes = o.inputs.modes;
+  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model);
+  const auto& catalog = inputs->catalog;
+  const auto& threshold = *inputs->threshold;
   const auto start = std::chrono::steady_clock::now();
-  const design::PredictedTool tool = design::predict_tool(setup, point, o.surface, own ? &*own : nullptr);
+  const design::PredictedTool tool = design::predict_tool(inputs->setup, point, o.surface, own ? &*own : nullptr);
   std::cout << fmt::format(
       "{} on {}: design '{}' (first mode {:.1f} Hz), mu {:.3f}, weighted mean vibration {:.4g}; "
       "{:.1f} s\n",

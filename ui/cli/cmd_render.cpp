@@ -33,7 +33,7 @@ void render(const RenderOptions& o) {
   std::unique_ptr<rt::Voice> voice;
   std::string modes;
   if (predicted) {
-    DesignPredictor predictor(catalog, o.stroke.catalog, o.stroke.forcing_model);
+    DesignPredictor predictor(o.stroke.catalog, o.stroke.forcing_model);
     const auto tool = predictor.predict(o.stroke.tool, o.stroke.surface);
     voice = predicted_voice(tool, engine.internal_rate(), o.stroke.seed);
     modes = tool.design_name;

@@ -16,6 +16,7 @@
 #include "ui/cli/figures.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {
@@ -42,8 +43,7 @@ constexpr const char* kTarget = "cryon/office";
 
 }  // namespace
 
-std::string run_forcing_demo(const model::io::Catalog& catalog,
-                             const std::filesystem::path& catalog_file,
+std::string run_forcing_demo(const std::filesystem::path& catalog_file,
                              const std::filesystem::path& report) {
   const auto dir = report / "forcing";
   ensure_folder(dir);
@@ -78,17 +78,9 @@ std::string run_forcing_demo(const model::io::Catalog& catalog,
       if (m >= 0) interpolated += r.rms_db, neighbours += m, ++compared;
   }
 
-  const mech::MaterialTable materials = mech::read_material_table(asset("materials.json"));
-  const auto threshold =
-      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
-  design::PredictionSetup setup;
-  setup.model = &model;
-  setup.catalog = &catalog;
-  setup.template_design = mech::read_design(asset("designs/stylus_vero_tip2mm.json"), materials);
-  setup.materials = materials;
-  setup.threshold = &threshold;
-  setup.modes = options.modes;
-  setup.mesh_size = options.mesh_size;
+  const auto prediction = load_prediction_inputs(options, "", model);
+  const design::PredictionSetup& setup = prediction->setup;
+  const auto& threshold = *prediction->threshold;
   const design::PredictedTool predicted =
       design::predict_tool(setup, design::parse_design_point(kInterpolated), "office");
   write_json_file(dir / "predicted.json", prediction_json(predicted, threshold.source()));

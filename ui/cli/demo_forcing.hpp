@@ -9,12 +9,10 @@
 #include <filesystem>
 #include <string>
 
-#include "model/io/catalog.hpp"
 
 namespace nibrig::ui::cli {
 
-std::string run_forcing_demo(const model::io::Catalog& catalog,
-                             const std::filesystem::path& catalog_file,
+std::string run_forcing_demo(const std::filesystem::path& catalog_file,
                              const std::filesystem::path& report);
 
 }  // namespace nibrig::ui::cli

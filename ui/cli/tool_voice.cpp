@@ -5,14 +5,12 @@
 #include <stdexcept>
 
 #include "model/design/design_point.hpp"
-#include "model/forcing/forcing_file.hpp"
-#include "model/forcing/forcing_fit.hpp"
 #include "model/mechanics/design.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "rt/voice_builder.hpp"
 #include "ui/cli/assets.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -71,42 +69,25 @@ bool names_design_point(const std::string& tool) {
 }
 
 struct DesignPredictor::State {
-  const model::io::Catalog& catalog;
-  std::filesystem::path catalog_file, forcing_file;
-  std::optional<model::forcing::ForcingModel> model;
-  std::optional<model::measure::ThresholdCurve> threshold;
-  model::design::PredictionSetup setup;
+  ForcingInputOptions options;
+  std::filesystem::path forcing_file;
+  std::unique_ptr<PredictionInputs> inputs;  // loaded when the first design point needs them
 };
 
-DesignPredictor::DesignPredictor(const model::io::Catalog& catalog,
-                                 std::filesystem::path catalog_file,
+DesignPredictor::DesignPredictor(std::filesystem::path catalog_file,
                                  std::filesystem::path forcing_model)
-    : state_(new State{catalog, std::move(catalog_file), std::move(forcing_model), {}, {}, {}}) {}
+    : state_(new State{{}, std::move(forcing_model), nullptr}) {
+  state_->options.catalog = std::move(catalog_file);
+  state_->options.design_template = asset(kDefaultVoiceDesign);
+}
 
 DesignPredictor::~DesignPredictor() = default;
 
 model::design::PredictedTool DesignPredictor::predict(const std::string& point,
                                                       const std::string& surface) {
   const model::design::DesignPoint design = model::design::parse_design_point(point);
-  State& s = *state_;
-  if (!s.model) {
-    if (!s.forcing_file.empty()) {
-      s.model = model::forcing::read_forcing_model(s.forcing_file);
-    } else {
-      spdlog::info("{}: no --forcing given, fitting the forcing model to the catalog first", point);
-      ForcingInputOptions inputs;
-      inputs.catalog = s.catalog_file;
-      s.model = model::forcing::fit_forcing_model(load_forcing_inputs(inputs).exemplars);
-    }
-    s.threshold = model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
-    s.setup.model = &*s.model;
-    s.setup.catalog = &s.catalog;
-    s.setup.materials = model::mechanics::read_material_table(asset("materials.json"));
-    s.setup.template_design =
-        model::mechanics::read_design(asset(kDefaultVoiceDesign), s.setup.materials);
-    s.setup.threshold = &*s.threshold;
-  }
-  return model::design::predict_tool(s.setup, design, surface);
+  if (!state_->inputs) state_->inputs = load_prediction_inputs(state_->options, state_->forcing_file);
+  return model::design::predict_tool(state_->inputs->setup, design, surface);
 }
 
 std::unique_ptr<rt::Voice> predicted_voice(const model::design::PredictedTool& tool,

@@ -40,12 +40,12 @@ const model::io::VelocitySpectrum& pairing_spectrum(const model::io::Catalog& ca
 // Whether `tool` is a design point to predict ("...tip=2mm") rather than a catalog id.
 bool names_design_point(const std::string& tool);
 
-// Design points predicted on demand, with one forcing model (read from `forcing_model`, or fitted
-// to the catalog the first time one is needed: ~8 s).
+// Design points predicted on demand with one set of prediction inputs (prediction_inputs.hpp),
+// loaded the first time a point needs them: the catalog (empty: the bundled one), the forcing model
+// from `forcing_model` (empty: fitted to the catalog, ~8 s).
 class DesignPredictor {
  public:
-  DesignPredictor(const model::io::Catalog& catalog, std::filesystem::path catalog_file,
-                  std::filesystem::path forcing_model);
+  DesignPredictor(std::filesystem::path catalog_file, std::filesystem::path forcing_model);
   ~DesignPredictor();
   // Checks the point (refuses a bad mix or tip before any work) and predicts it on `surface`.
   model::design::PredictedTool predict(const std::string& point, const std::string& surface);
