@@ -29,10 +29,17 @@ bool read_number(std::string_view s, double& value) {
   throw std::invalid_argument("design '" + std::string(text) + "': " + what);
 }
 
-std::string number(double x) {
+std::string number(double x, int digits = 6) {
   std::ostringstream out;
-  out << std::setprecision(6) << x;
+  out << std::setprecision(digits) << x;
   return out.str();
+}
+
+std::string written(const DesignPoint& point, int digits) {
+  std::string out;
+  for (const auto& share : point.mix)
+    out += share.material + ":" + number(share.fraction, digits) + ",";
+  return out + "tip=" + number(point.tip_diameter_m * 1e3, digits) + "mm";
 }
 
 }  // namespace
@@ -96,12 +103,9 @@ DesignPoint parse_design_point(std::string_view text) {
   return point;
 }
 
-std::string to_string(const DesignPoint& point) {
-  std::string out;
-  for (const auto& share : point.mix)
-    out += share.material + ":" + number(share.fraction) + ",";
-  return out + "tip=" + number(point.tip_diameter_m * 1e3) + "mm";
-}
+std::string to_string(const DesignPoint& point) { return written(point, 6); }
+
+std::string label(const DesignPoint& point) { return written(point, 3); }
 
 DesignPoint interpolate(const DesignPoint& a, const DesignPoint& b, double lambda) {
   if (!(lambda >= 0.0 && lambda <= 1.0))

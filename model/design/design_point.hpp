@@ -38,6 +38,10 @@ void validate(const DesignPoint& point);
 // "DM85:0.25,vero:0.75,tip=1mm": parse_design_point reads it back to the same point.
 std::string to_string(const DesignPoint& point);
 
+// For people: fractions and tip to 3 significant digits ("vero:0.0477,DM85:0.952,tip=3.86mm"); a
+// design a printer dithers in steps of a few per cent needs no more. Files keep to_string.
+std::string label(const DesignPoint& point);
+
 // The point a fraction `lambda` of the way from a to b: every material's fraction and the tip
 // diameter interpolated linearly (the paper's line between two designs, Sec. 6.2).
 DesignPoint interpolate(const DesignPoint& a, const DesignPoint& b, double lambda);

@@ -101,13 +101,13 @@ void run_design(const DesignOptions& o) {
                            o.surface, how, evaluations, seconds);
   const auto& best = result.best();
   std::cout << fmt::format("optimum {}: distance {:.3f} +- {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
-                           design::to_string(best.point), best.distance, best.distance_sd, best.mu,
+                           design::label(best.point), best.distance, best.distance_sd, best.mu,
                            best.weighted_mean);
   const auto runners = result.runners_up(static_cast<std::size_t>(o.runners_up));
   for (std::size_t k = 0; k < runners.size(); ++k) {
     const auto& c = result.evaluated[runners[k]];
     std::cout << fmt::format("  runner-up {}: {} distance {:.3f} +- {:.3f}\n", k + 1,
-                             design::to_string(c.point), c.distance, c.distance_sd);
+                             design::label(c.point), c.distance, c.distance_sd);
   }
   if (a) {
     const auto& first = result.evaluated.front();

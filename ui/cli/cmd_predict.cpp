@@ -67,7 +67,7 @@ std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(
 void plot_against(const design::PredictedTool& tool, const std::string& label,
                   const model::io::VelocitySpectrum& measured, const std::filesystem::path& png) {
   report::LinePlot plot;
-  plot.title = fmt::format("{} on {}: predicted vs {}", design::to_string(tool.point), tool.surface,
+  plot.title = fmt::format("{} on {}: predicted vs {}", design::label(tool.point), tool.surface,
                            label);
   plot.x_label = "Frequency (Hz)";
   plot.y_label = "Amplitude (m/s²)";
@@ -108,7 +108,7 @@ void run_predict(const PredictOptions& o) {
   std::cout << fmt::format(
       "{} on {}: design '{}' (first mode {:.1f} Hz), mu {:.3f}, weighted mean vibration {:.4g}; "
       "{:.1f} s\n",
-      design::to_string(point), o.surface, tool.design_name, tool.first_mode_hz, tool.mu,
+      design::label(point), o.surface, tool.design_name, tool.first_mode_hz, tool.mu,
       tool.vibration.weighted_mean, seconds_since(start));
 
   nlohmann::json j = prediction_json(tool, threshold.source());

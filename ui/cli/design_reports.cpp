@@ -98,11 +98,11 @@ void write_search_plot(const model::space::SpaceFile& space, const std::string& 
     if (k == result.ranked.front()) continue;
     const auto& c = result.evaluated[k];
     const bool end = std::find(ends.begin(), ends.end(), k) != ends.end();
-    placed.push_back({end ? design::to_string(c.point) : "", c.placement,
+    placed.push_back({end ? design::label(c.point) : "", c.placement,
                       end ? "the designs searched between" : "candidates", end});
   }
   const auto& best = result.best();
-  placed.push_back({"optimum " + design::to_string(best.point), best.placement, "optimum", true});
+  placed.push_back({"optimum " + design::label(best.point), best.placement, "optimum", true});
   write_space_plot(space, placed, fmt::format("Designs on {} nearest {}", surface, target), png);
 }
 

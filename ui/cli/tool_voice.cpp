@@ -92,7 +92,7 @@ model::design::PredictedTool DesignPredictor::predict(const std::string& point,
 
 std::unique_ptr<rt::Voice> predicted_voice(const model::design::PredictedTool& tool,
                                            double internal_rate, std::uint64_t seed) {
-  return rt::build_voice("predicted " + model::design::to_string(tool.point) + " on " +
+  return rt::build_voice("predicted " + model::design::label(tool.point) + " on " +
                              tool.surface,
                          tool.modal, tool.spectrum, internal_rate, seed);
 }

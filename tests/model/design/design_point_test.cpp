@@ -27,6 +27,8 @@ TEST(DesignPoint, ReadsTheIssuesExampleAndWritesItBack) {
   EXPECT_DOUBLE_EQ(p.fraction_of("vero"), 0.75);
   EXPECT_DOUBLE_EQ(p.fraction_of("DM95"), 0.0);
   EXPECT_DOUBLE_EQ(p.tip_diameter_m, 0.001);
+  EXPECT_EQ(label(DesignPoint{{{"vero", 0.0477458}, {"DM85", 0.9522542}}, 0.00385676}),
+            "vero:0.0477,DM85:0.952,tip=3.86mm");
   const DesignPoint again = parse_design_point(to_string(p));
   EXPECT_EQ(to_string(again), to_string(p));
   EXPECT_DOUBLE_EQ(again.tip_diameter_m, p.tip_diameter_m);
