@@ -153,6 +153,8 @@ void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global
       "with a ring-down fit, and the frequency responses of the bundled stylus designs. Last, a\n"
       "perceptual space from a SIMULATED observer (no human judgments of drawing tools are\n"
       "bundled): the two-stage experiment, a fit with bootstrap regions, every tool placed.\n"
+      "Then the forcing model of the printed tools with its leave-one-out, a predicted design\n"
+      "and a design search in that space (forcing/).\n"
       "Finally every tool with a vibration spectrum is rendered over the rig's sweep through the\n"
       "real-time engine into render/*.wav.");
   cmd->add_option("-o,--output", options->output, "Report folder")->capture_default_str();
