@@ -11,6 +11,7 @@
 #include "model/design/design_search.hpp"
 #include "model/io/catalog.hpp"
 #include "model/space/space_file.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
@@ -24,8 +25,6 @@ namespace nibrig::ui::cli {
 namespace {
 
 namespace design = model::design;
-namespace forcing = model::forcing;
-namespace mech = model::mechanics;
 namespace space = model::space;
 
 struct DesignOptions {
@@ -40,10 +39,6 @@ struct DesignOptions {
   std::filesystem::path output = "design_search.json";
   std::filesystem::path plot;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void run_design(const DesignOptions& o) {
   const auto catalog_path =

@@ -10,6 +10,7 @@
 
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_inputs.hpp"
@@ -33,10 +34,6 @@ struct LooCommandOptions {
   std::filesystem::path csv;
   bool all = false;  // hold out every exemplar, not only the paper's tools
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // One row per curve, its gain in dB at every knot.
 std::string curves_table(const forcing::ForcingModel& model) {

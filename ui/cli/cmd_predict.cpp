@@ -16,6 +16,7 @@
 #include "model/io/catalog.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
@@ -42,10 +43,6 @@ struct PredictOptions {
   std::string against;             // or a catalog tool measured on the surface
   std::filesystem::path plot;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The measured spectrum to compare with: a `nibrig measure` output, or the catalog's pairing.
 std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(

@@ -13,6 +13,7 @@
 #include "model/space/space_file.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/design_reports.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_inputs.hpp"
@@ -26,10 +27,6 @@ namespace {
 namespace design = model::design;
 namespace forcing = model::forcing;
 namespace mech = model::mechanics;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The paper's Fig. 14 design, halfway between its two printed ones (DM85 with a 4 mm tip and
 // VeroClear with a 1 mm tip), on office paper; and its Fig. 17 (left) search on a screen
@@ -125,7 +122,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
                               kTarget);
 
   return fmt::format(
-             "forcing model (Sec. 5.2; designs at 32 modes on a 4 mm mesh, ~1 % in |H|): {} "
+             "forcing model (Sec. 5.2; designs at {} modes on a {:g} mm mesh): {} "
              "printed exemplars on {} surfaces, residual RMS {:.2f} dB\n"
              "  leave-one-out over {} of the paper's 27 tools: RMS mean {:.2f}, median {:.2f}, max "
              "{:.2f} dB (worst: {}); model-free baseline {:.2f} dB\n"
@@ -133,7 +130,8 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              "for their measured neighbours; interpolated and endpoint tip curves differ by at "
              "most {:.2f} dB\n"
              "  predicted {} on office: mu {:.3f}, weighted mean vibration {:.4g}\n",
-             model.exemplar_count(), model.surface_forcing.size(), model.residual_rms_db,
+             options.modes, options.mesh_size * 1e3, model.exemplar_count(),
+             model.surface_forcing.size(), model.residual_rms_db,
              loo.summary.predicted, loo.summary.mean_rms_db, loo.summary.median_rms_db,
              loo.summary.max_rms_db, worst, loo.summary.mean_baseline_rms_db,
              compared ? interpolated / compared : 0.0, compared ? neighbours / compared : 0.0,

@@ -13,6 +13,7 @@
 #include "model/io/triplets.hpp"
 #include "model/space/synthetic_study.hpp"
 #include "model/space/trial_plan.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/report/figures.hpp"
@@ -22,10 +23,6 @@ namespace nibrig::ui::cli {
 namespace space = model::space;
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 nlohmann::json summary_json(const space::Summary& s) { return {{"mean", s.mean}, {"sd", s.sd}}; }
 
