@@ -9,8 +9,8 @@
 
 namespace nibrig::model::design {
 
-std::vector<InterpolatedPrediction> hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars,
-                                                 double tip_m) {
+std::vector<InterpolatedPrediction> hold_out_tip(
+    std::span<const forcing::ForcingExemplar> exemplars, double tip_m) {
   std::vector<forcing::ForcingExemplar> training;
   std::vector<const forcing::ForcingExemplar*> held_out;
   std::set<double> tips;
@@ -53,22 +53,9 @@ std::vector<InterpolatedPrediction> hold_out_tip(std::span<const forcing::Forcin
       results.push_back(std::move(r));
       continue;
     }
-    r.lower_tip_m = lower_tip;
-    r.upper_tip_m = upper_tip;
-    auto error_at = [&](double tip) {
-      const DesignPoint point{{{e->material, 1.0}}, tip};
-      return forcing::log_spectrum_error(
-          predict_spectrum(model, point, e->surface, e->response_magnitude), e->measured);
-    };
-    const auto interpolated = error_at(e->tip_diameter_m);
-    const auto lower = error_at(lower_tip);
-    const auto upper_error = error_at(upper_tip);
-    r.rms_db = interpolated.rms_db;
-    r.rms_db_by_speed = interpolated.rms_db_by_speed;
-    r.lower_tip_rms_db = lower.rms_db;
-    r.lower_tip_rms_db_by_speed = lower.rms_db_by_speed;
-    r.upper_tip_rms_db = upper_error.rms_db;
-    r.upper_tip_rms_db_by_speed = upper_error.rms_db_by_speed;
+    r.comparison =
+        compare_with_baselines(model, DesignPoint{{{e->material, 1.0}}, e->tip_diameter_m},
+                               e->surface, e->response_magnitude, e->measured);
     for (const auto& other : exemplars) {
       if (other.surface != e->surface || other.material != e->material) continue;
       if (forcing::same_tip(other.tip_diameter_m, lower_tip))

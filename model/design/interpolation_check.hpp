@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "model/design/no_interpolation_baseline.hpp"
 #include "model/forcing/forcing_fit.hpp"
 
 namespace nibrig::model::design {
@@ -20,27 +21,21 @@ struct InterpolatedPrediction {
   std::string tool, surface, material;
   double tip_diameter_m = 0.0;
   // Why it could not be predicted (its surface or material is in no training exemplar); empty
-  // when it was, and then the errors below are set.
+  // when it was, and then the comparison below is set.
   std::string not_predictable;
-  // RMS over bins and speeds of 20·log10(predicted/measured), and per speed.
-  double rms_db = 0.0;
-  std::vector<double> rms_db_by_speed;
-  // The baseline with the smaller and with the larger neighbour's tip curve.
-  double lower_tip_rms_db = 0.0, upper_tip_rms_db = 0.0;
-  double lower_tip_m = 0.0, upper_tip_m = 0.0;
-  std::vector<double> lower_tip_rms_db_by_speed, upper_tip_rms_db_by_speed;
+  // The interpolated prediction and the two baselines (no_interpolation_corners: the smaller and
+  // the larger neighbour's tip curve, in that order) against the measurement, overall and per
+  // speed.
+  InterpolationComparison comparison;
   // What a designer without the model would do: take the measured neighbour of the same material
   // on the same surface as the prediction (negative when that neighbour was not measured).
   double lower_measured_rms_db = -1.0, upper_measured_rms_db = -1.0;
-  bool beats_baseline() const {
-    return not_predictable.empty() && rms_db < lower_tip_rms_db && rms_db < upper_tip_rms_db;
-  }
 };
 
 // Exemplars need their responses (forcing::attach_responses). Throws std::invalid_argument when
 // no exemplar has `tip_m`, when it is not strictly between two other fitted tips, or when the
 // training set cannot be fitted (forcing::fit_problems, joined).
-std::vector<InterpolatedPrediction> hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars,
-                                                 double tip_m);
+std::vector<InterpolatedPrediction> hold_out_tip(
+    std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
 
 }  // namespace nibrig::model::design

@@ -2,55 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 #include "model/design/mixed_design.hpp"
+#include "model/design/tip_bracket.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/frequency_response.hpp"
 
 namespace nibrig::model::design {
-
-namespace {
-
-std::string mm(double metres) {
-  std::ostringstream out;
-  out << std::setprecision(4) << metres * 1e3 << " mm";
-  return out.str();
-}
-
-// Where d lies among the ascending `diameters`: the two neighbours and the weight of the upper.
-// Throws when d is outside them, saying by how far.
-struct Bracket {
-  std::size_t lower = 0, upper = 0;
-  double weight = 0.0;
-};
-
-Bracket bracket(const std::vector<double>& diameters, double d, const std::string& what) {
-  if (diameters.empty()) throw std::invalid_argument(what + ": no tip diameters to interpolate");
-  constexpr double kSameTip = 1e-6;  // m: tips from files in mm (forcing::same_tip)
-  if (d < diameters.front() - kSameTip || d > diameters.back() + kSameTip) {
-    const bool below = d < diameters.front();
-    throw std::invalid_argument(
-        what + ": the tip of " + mm(d) + " is " +
-        mm(below ? diameters.front() - d : d - diameters.back()) + (below ? " below the smallest" : " above the largest") +
-        " diameter there is (" + mm(diameters.front()) + " to " + mm(diameters.back()) +
-        "); nothing is extrapolated");
-  }
-  Bracket b;
-  while (b.upper + 1 < diameters.size() && diameters[b.upper] < d - kSameTip) ++b.upper;
-  b.lower = b.upper == 0 ? 0 : b.upper - 1;
-  if (std::abs(diameters[b.upper] - d) <= kSameTip || b.lower == b.upper) {
-    b.lower = b.upper;
-    return b;
-  }
-  b.weight = (d - diameters[b.lower]) / (diameters[b.upper] - diameters[b.lower]);
-  return b;
-}
-
-}  // namespace
 
 std::vector<double> interpolated_log_gain(const forcing::ForcingModel& model,
                                           const DesignPoint& point,
@@ -58,7 +18,7 @@ std::vector<double> interpolated_log_gain(const forcing::ForcingModel& model,
   validate(point);
   std::vector<double> tips;
   for (const auto& [d, curve] : model.tip_log_gain) tips.push_back(d);  // std::map: ascending
-  const Bracket b = bracket(tips, point.tip_diameter_m, "the forcing model's tip curves");
+  const TipBracket b = bracket_tip(tips, point.tip_diameter_m, "the forcing model's tip curves");
   std::vector<double> gain(frequencies_hz.size(), 0.0);
   for (std::size_t j = 0; j < frequencies_hz.size(); ++j) {
     const double f = frequencies_hz[j];
@@ -75,9 +35,8 @@ io::VelocitySpectrum predict_spectrum(const forcing::ForcingModel& model, const 
                                       std::span<const double> response_magnitude) {
   // The reference tool's prediction carries |H|·F_S (and every check of the inputs); the
   // interpolated scalings multiply it.
-  io::VelocitySpectrum spectrum =
-      model.predict(response_magnitude, surface, model.reference_tip_diameter_m,
-                    model.reference_material);
+  io::VelocitySpectrum spectrum = model.predict(
+      response_magnitude, surface, model.reference_tip_diameter_m, model.reference_material);
   const std::vector<double> gain = interpolated_log_gain(model, point, model.frequencies_hz);
   for (auto& row : spectrum.amplitude_m_s2)
     for (std::size_t j = 0; j < row.size(); ++j) row[j] *= std::exp(gain[j]);
@@ -101,14 +60,13 @@ double interpolated_friction(const io::Catalog& catalog, const DesignPoint& poin
       by_tip[*tool->tip_diameter_m] = pairing.friction->mu;
     }
     const std::string what = "friction of printed " + share.material + " tools on " + surface;
-    if (by_tip.empty())
-      throw std::invalid_argument(what + ": the catalog has none measured");
+    if (by_tip.empty()) throw std::invalid_argument(what + ": the catalog has none measured");
     std::vector<double> tips, mus;
     for (const auto& [d, m] : by_tip) {
       tips.push_back(d);
       mus.push_back(m);
     }
-    const Bracket b = bracket(tips, point.tip_diameter_m, what);
+    const TipBracket b = bracket_tip(tips, point.tip_diameter_m, what);
     mu += share.fraction * ((1 - b.weight) * mus[b.lower] + b.weight * mus[b.upper]);
   }
   return mu;
@@ -126,7 +84,8 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
   interpolated_log_gain(model, point, model.frequencies_hz);
   if (model.surface_forcing.count(surface) == 0) {
     std::string known;
-    for (const auto& [id, forcing] : model.surface_forcing) known += (known.empty() ? "" : ", ") + id;
+    for (const auto& [id, forcing] : model.surface_forcing)
+      known += (known.empty() ? "" : ", ") + id;
     throw std::invalid_argument("the forcing model has no surface '" + surface + "' (it has " +
                                 known + ")");
   }
@@ -163,8 +122,9 @@ io::Pairing predicted_pairing(const PredictedTool& tool, const std::string& thre
   pairing.surface = tool.surface;
   io::FrictionDescriptor friction;
   friction.mu = friction.mu_ci_low = friction.mu_ci_high = tool.mu;
-  friction.provenance = {"interpolated", "μ linear in tip diameter between measured printed tools, "
-                                         "weighted by the material fractions"};
+  friction.provenance = {"interpolated",
+                         "μ linear in tip diameter between measured printed tools, "
+                         "weighted by the material fractions"};
   pairing.friction = friction;
   io::VibrationDescriptor vibration;
   vibration.spectrum = tool.spectrum;

@@ -37,32 +37,38 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
   int beaten = 0, predicted = 0, closer_than_measured = 0, with_measured = 0;
   double interpolated_sum = 0, measured_sum = 0;
   for (const auto& r : results) {
-    std::printf("%-7s %-9s interpolated %.2f dB; with the 1 mm curve %.2f dB, with the 4 mm curve "
-                "%.2f dB; measured 1 mm tool %.2f dB, 4 mm tool %.2f dB %s\n",
-                r.tool.c_str(), r.surface.c_str(), r.rms_db, r.lower_tip_rms_db,
-                r.upper_tip_rms_db, r.lower_measured_rms_db, r.upper_measured_rms_db,
-                r.not_predictable.c_str());
     ASSERT_TRUE(r.not_predictable.empty()) << r.tool << " on " << r.surface;
+    const auto& c = r.comparison;
+    ASSERT_EQ(c.baselines.size(), 2u) << r.tool << " on " << r.surface;
+    const double rms_db = c.interpolated.rms_db;
+    std::printf(
+        "%-7s %-9s interpolated %.2f dB; with the 1 mm curve %.2f dB, with the 4 mm curve "
+        "%.2f dB; measured 1 mm tool %.2f dB, 4 mm tool %.2f dB\n",
+        r.tool.c_str(), r.surface.c_str(), rms_db, c.baselines[0].error.rms_db,
+        c.baselines[1].error.rms_db, r.lower_measured_rms_db, r.upper_measured_rms_db);
+    EXPECT_DOUBLE_EQ(c.baselines[0].corner.tip_diameter_m, 0.001);
+    EXPECT_DOUBLE_EQ(c.baselines[1].corner.tip_diameter_m, 0.004);
     ++predicted;
-    beaten += r.beats_baseline();
+    beaten += c.beats_every_baseline();
     // The tip curves are nearly equal, so the three simulations agree closely.
-    EXPECT_NEAR(r.rms_db, r.lower_tip_rms_db, 0.15) << r.tool << " on " << r.surface;
-    EXPECT_NEAR(r.rms_db, r.upper_tip_rms_db, 0.15) << r.tool << " on " << r.surface;
+    for (const auto& baseline : c.baselines)
+      EXPECT_NEAR(rms_db, baseline.error.rms_db, 0.15) << r.tool << " on " << r.surface;
     // Within the leave-one-out's worst (3.4 dB, forcing's RealCatalog test): a held-out tip is
     // predicted as well as a held-out tool.
-    EXPECT_LT(r.rms_db, 3.5) << r.tool << " on " << r.surface;
+    EXPECT_LT(rms_db, 3.5) << r.tool << " on " << r.surface;
     for (double measured : {r.lower_measured_rms_db, r.upper_measured_rms_db}) {
       if (measured < 0) continue;
       ++with_measured;
-      closer_than_measured += r.rms_db < measured;
-      interpolated_sum += r.rms_db;
+      closer_than_measured += rms_db < measured;
+      interpolated_sum += rms_db;
       measured_sum += measured;
     }
   }
-  std::printf("interpolation beats both simulated baselines on %d of %d; closer than the measured "
-              "neighbour in %d of %d comparisons (mean %.2f vs %.2f dB)\n",
-              beaten, predicted, closer_than_measured, with_measured,
-              interpolated_sum / with_measured, measured_sum / with_measured);
+  std::printf(
+      "interpolation beats both simulated baselines on %d of %d; closer than the measured "
+      "neighbour in %d of %d comparisons (mean %.2f vs %.2f dB)\n",
+      beaten, predicted, closer_than_measured, with_measured, interpolated_sum / with_measured,
+      measured_sum / with_measured);
   // On average the prediction is closer than a measured neighbour: 2.03 vs 2.37 dB when written.
   EXPECT_LT(interpolated_sum / with_measured, measured_sum / with_measured);
   EXPECT_GT(closer_than_measured, with_measured / 2);

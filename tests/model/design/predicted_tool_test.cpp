@@ -9,31 +9,12 @@
 #include <cmath>
 
 #include "model/forcing/hermite_curve.hpp"
+#include "tests/model/design/hand_made_forcing_model.hpp"
 
 namespace nibrig::model::design {
 namespace {
 
 using ::testing::HasSubstr;
-
-forcing::ForcingModel hand_made_model() {
-  forcing::ForcingModel m;
-  m.knot_frequencies_hz = forcing::default_knot_frequencies();
-  const std::size_t knots = m.knot_frequencies_hz.size();
-  std::vector<double> zeros(knots, 0.0), rising(knots), falling(knots), bump(knots);
-  for (std::size_t k = 0; k < knots; ++k) {
-    rising[k] = 0.02 * static_cast<double>(k);
-    falling[k] = -0.05 * static_cast<double>(k);
-    bump[k] = k == 4 ? 0.3 : 0.0;
-  }
-  m.tip_log_gain = {{0.001, rising}, {0.002, zeros}, {0.004, falling}};
-  m.material_log_gain = {{"vero", zeros}, {"DM85", bump}, {"DM95", falling}};
-  m.frequencies_hz = {10, 100, 200, 333, 490};
-  m.speeds_m_s = {0.017, 0.25};
-  m.surface_forcing["office"] = {{1, 2, 3, 4, 5}, {2, 4, 6, 8, 10}};
-  return m;
-}
-
-const std::vector<double> kResponse = {0.5, 1.0, 2.0, 1.5, 0.25};
 
 TEST(PredictedTool, AtAFittedDesignItIsTheModelsOwnPrediction) {
   const auto model = hand_made_model();
@@ -54,10 +35,10 @@ TEST(PredictedTool, BetweenFittedDesignsTheLogGainsAreLinear) {
   const auto gain = interpolated_log_gain(model, point, model.frequencies_hz);
   for (std::size_t j = 0; j < model.frequencies_hz.size(); ++j) {
     const double f = model.frequencies_hz[j];
-    const double tip = 0.5 * forcing::hermite_value(model.knot_frequencies_hz,
-                                                    model.tip_log_gain.at(0.004), f);
+    const double tip =
+        0.5 * forcing::hermite_value(model.knot_frequencies_hz, model.tip_log_gain.at(0.004), f);
     const double material = 0.25 * forcing::hermite_value(model.knot_frequencies_hz,
-                                                           model.material_log_gain.at("DM85"), f);
+                                                          model.material_log_gain.at("DM85"), f);
     EXPECT_NEAR(gain[j], tip + material, 1e-12) << f << " Hz";
   }
 }
@@ -71,8 +52,9 @@ TEST(PredictedTool, RefusesToExtrapolateAndNamesWhatIsMissing) {
     EXPECT_THAT(e.what(), HasSubstr("1 mm above the largest"));
     EXPECT_THAT(e.what(), HasSubstr("1 mm to 4 mm"));
   }
-  EXPECT_THROW(interpolated_log_gain(model, DesignPoint{{{"wood", 1.0}}, 0.002}, model.frequencies_hz),
-               std::invalid_argument);
+  EXPECT_THROW(
+      interpolated_log_gain(model, DesignPoint{{{"wood", 1.0}}, 0.002}, model.frequencies_hz),
+      std::invalid_argument);
   EXPECT_THROW(predict_spectrum(model, DesignPoint{{{"vero", 1.0}}, 0.002}, "glass", kResponse),
                std::invalid_argument);
 }
