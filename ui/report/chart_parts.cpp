@@ -130,16 +130,23 @@ AxesLayout layout_axes(const Style& st, double width, double height, double top,
 
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
                       const std::string& y_label, const Style& st) {
+  draw_axis_titles(
+      page, box, x_label, y_label, st,
+      Box{0.0, 0.0, static_cast<double>(page.width()), static_cast<double>(page.height())});
+}
+
+void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
+                      const std::string& y_label, const Style& st, const Box& area) {
   page.colour(black);
   if (!x_label.empty()) {
-    // Centred on the plot, so the room is twice the distance to the nearer side of the image.
+    // Centred on the plot, so the room is twice the distance to the nearer side of the area.
     const double centre = 0.5 * (box.x0 + box.x1);
-    const double room = 2.0 * std::min(centre - st.pad, page.width() - st.pad - centre);
-    page.text(centre, st.pad + 0.85 * st.label_cap, 0.0, 0.5, st.fit(x_label, st.label_cap, room),
-              x_label);
+    const double room = 2.0 * std::min(centre - area.x0 - st.pad, area.x1 - st.pad - centre);
+    page.text(centre, area.y0 + st.pad + 0.85 * st.label_cap, 0.0, 0.5,
+              st.fit(x_label, st.label_cap, room), x_label);
   }
   if (!y_label.empty()) {
-    page.text(st.pad + 0.75 * st.label_cap, 0.5 * (box.y0 + box.y1), 90.0, 0.5,
+    page.text(area.x0 + st.pad + 0.75 * st.label_cap, 0.5 * (box.y0 + box.y1), 90.0, 0.5,
               st.fit(y_label, st.label_cap, box.height() + 0.5 * st.pad), y_label);
   }
 }

@@ -74,9 +74,12 @@ struct AxisRange {
 AxesLayout layout_axes(const Style& st, double width, double height, double top,
                        const std::string& x_label, const std::string& y_label,
                        double right_reserved, AxisRange x, AxisRange y);
-// Axis titles: centred under the box, and turned to read upwards at the left edge of the image.
+// Axis titles: centred under the box, and turned to read upwards at the left edge of the image —
+// or of `area`, the part of the image the plot owns (a panel of several).
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
                       const std::string& y_label, const Style& st);
+void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
+                      const std::string& y_label, const Style& st, const Box& area);
 // The figure title, centred on the image at its top.
 double title_room(const std::string& title, const Style& st);
 void draw_title(PlotPage& page, const std::string& title, const Style& st);

@@ -70,6 +70,20 @@ struct LinePlot {
   ImageSize size{};
 };
 
+// Small multiples: line plots side by side in rows of `columns`, each with its own axes and its
+// title above it (e.g. one panel per speed), under one figure title and one legend — the first
+// panel's: give every panel its series in the same order and with the same labels, so that a colour
+// means the same in each. With shared_axes every panel covers the range of all of them, so that
+// curves compare across panels at a glance; all panels then need the same log_y. Axis titles are
+// drawn once per row (y) and under the bottom row (x). A panel's own size is ignored.
+struct LinePanels {
+  std::vector<LinePlot> panels;
+  std::string title;
+  int columns = 3;
+  bool shared_axes = true;
+  ImageSize size{1800, 700};
+};
+
 // A region around a point: the ellipse with this centre, semi-axes and the angle (radians, from +x)
 // of the first semi-axis.
 struct Ellipse {
@@ -113,6 +127,7 @@ struct ScatterPlot {
 void write_heat_map(const HeatMap& map, const std::filesystem::path& png);
 void write_interval_chart(const IntervalChart& chart, const std::filesystem::path& png);
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png);
+void write_line_panels(const LinePanels& figure, const std::filesystem::path& png);
 void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png);
 
 }  // namespace nibrig::ui::report

@@ -1,10 +1,7 @@
 // write_line_plot: curves with optional shaded bands, a legend above the plot.
-#include <algorithm>
-#include <cmath>
-#include <limits>
-
 #include "ui/report/chart_parts.hpp"
 #include "ui/report/figures.hpp"
+#include "ui/report/line_parts.hpp"
 
 namespace nibrig::ui::report {
 
@@ -13,143 +10,29 @@ namespace {
 using namespace detail;
 
 constexpr const char* kind = "line plot";
-constexpr std::size_t max_points_with_markers = 30;
-// Beyond this many curves, hues stop being told apart at a glance and an ordered map reads better.
-constexpr std::size_t max_categorical = 6;
-
-void validate(const LinePlot& plot) {
-  check_size(plot.size, kind, plot.title);
-  if (plot.series.empty()) reject(kind, plot.title, "no series to draw");
-  for (std::size_t s = 0; s < plot.series.size(); ++s) {
-    const auto& series = plot.series[s];
-    const std::string name = "series " + std::to_string(s) +
-                             (series.label.empty() ? std::string() : " (" + series.label + ")");
-    if (series.x.empty()) reject(kind, plot.title, name + " has no points");
-    if (series.y.size() != series.x.size()) {
-      reject(kind, plot.title,
-             name + " has " + std::to_string(series.x.size()) + " x but " +
-                 std::to_string(series.y.size()) + " y values");
-    }
-    const bool band = !series.y_low.empty() || !series.y_high.empty();
-    if (band &&
-        (series.y_low.size() != series.x.size() || series.y_high.size() != series.x.size())) {
-      reject(kind, plot.title,
-             name + " has a band of " + std::to_string(series.y_low.size()) + " low and " +
-                 std::to_string(series.y_high.size()) + " high values for " +
-                 std::to_string(series.x.size()) + " points");
-    }
-    const auto check = [&](const std::vector<double>& v, const char* field, bool positive) {
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        if (!std::isfinite(v[i])) {
-          reject(kind, plot.title,
-                 name + " " + field + "[" + std::to_string(i) + "] is not finite");
-        }
-        if (positive && v[i] <= 0.0) {
-          reject(kind, plot.title,
-                 name + " " + field + "[" + std::to_string(i) + "] = " + std::to_string(v[i]) +
-                     " cannot be shown on a log axis");
-        }
-      }
-    };
-    check(series.x, "x", false);
-    check(series.y, "y", plot.log_y);
-    check(series.y_low, "y_low", plot.log_y);
-    check(series.y_high, "y_high", plot.log_y);
-    for (std::size_t i = 0; band && i < series.x.size(); ++i) {
-      if (series.y_low[i] > series.y_high[i]) {
-        reject(kind, plot.title,
-               name + " band at point " + std::to_string(i) + " has y_low " +
-                   std::to_string(series.y_low[i]) + " above y_high " +
-                   std::to_string(series.y_high[i]));
-      }
-    }
-  }
-}
-
-// A range that is not empty: a single value gets some room around it.
-AxisRange widen(double lo, double hi, double pad_fraction, bool log) {
-  if (hi - lo <= 0.0) {
-    const double half = log ? 0.5 : std::max(std::abs(lo) * 0.1, 0.5);
-    return {lo - half, hi + half, log};
-  }
-  const double pad = (hi - lo) * pad_fraction;
-  return {lo - pad, hi + pad, log};
-}
-
-Rgb series_colour(std::size_t i, std::size_t n) {
-  if (n <= max_categorical) return categorical_palette()[i];
-  // Many curves are usually an ordered family (spectra at increasing speeds): an ordered map, its
-  // top end left out because pale yellow vanishes on white.
-  return viridis_at(0.88 * static_cast<double>(i) / static_cast<double>(n - 1));
-}
 
 }  // namespace
 
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png) {
-  validate(plot);
+  check_size(plot.size, kind, plot.title);
+  validate_line_series(plot, kind);
   const auto st = Style::for_size(plot.size);
   const double width = plot.size.width_px, height = plot.size.height_px;
-  const auto yv = [&](double y) { return plot.log_y ? std::log10(y) : y; };
 
-  double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
-  double y_lo = x_lo, y_hi = -x_lo;
-  bool markers = false;
-  for (const auto& s : plot.series) {
-    for (double x : s.x) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
-    for (const auto* v : {&s.y, &s.y_low, &s.y_high}) {
-      for (double y : *v) y_lo = std::min(y_lo, yv(y)), y_hi = std::max(y_hi, yv(y));
-    }
-    markers = markers || s.x.size() <= max_points_with_markers;
-  }
-  const AxisRange xr = widen(x_lo, x_hi, markers ? 0.03 : 0.0, false);
-  const AxisRange yr = widen(y_lo, y_hi, 0.05, plot.log_y);
-
-  std::vector<LegendEntry> legend;
-  for (std::size_t i = 0; i < plot.series.size(); ++i) {
-    const auto& s = plot.series[i];
-    if (s.label.empty()) continue;
-    legend.push_back({s.label, series_colour(i, plot.series.size()), LegendEntry::Kind::line,
-                      s.x.size() <= max_points_with_markers, !s.y_low.empty()});
-  }
+  LineExtent extent;
+  extent.add(plot);
+  const auto legend = line_legend(plot);
   const auto legend_layout = layout_legend(legend, width - 2 * st.pad, st);
   const double top = st.pad + title_room(plot.title, st) +
                      (legend.empty() ? 0.0 : legend_layout.height() + 0.5 * st.label_gap);
-  const auto axes = layout_axes(st, width, height, top, plot.x_label, plot.y_label, st.pad, xr, yr);
-  const Mapping m{axes.box, xr.lo, xr.hi, yr.lo, yr.hi};
+  const auto axes = layout_axes(st, width, height, top, plot.x_label, plot.y_label, st.pad,
+                                extent.x_range(), extent.y_range(plot.log_y));
+  const Mapping m{axes.box, extent.x_range().lo, extent.x_range().hi, extent.y_range(plot.log_y).lo,
+                  extent.y_range(plot.log_y).hi};
 
   detail::PlotPage page(plot.title, png, plot.size.width_px, plot.size.height_px);
   draw_grid(page, m, &axes.x, &axes.y, st);
-
-  // Bands first, so that no band hides a curve.
-  for (std::size_t i = 0; i < plot.series.size(); ++i) {
-    const auto& s = plot.series[i];
-    if (s.y_low.empty()) continue;
-    page.colour(series_colour(i, plot.series.size()), band_alpha);
-    if (s.x.size() == 1) continue;  // a single point's interval is drawn as an error bar below
-    std::vector<double> px, py;
-    for (std::size_t k = 0; k < s.x.size(); ++k)
-      px.push_back(m.px(s.x[k])), py.push_back(m.py(yv(s.y_high[k])));
-    for (std::size_t k = s.x.size(); k-- > 0;)
-      px.push_back(m.px(s.x[k])), py.push_back(m.py(yv(s.y_low[k])));
-    page.fill(px, py);
-  }
-  for (std::size_t i = 0; i < plot.series.size(); ++i) {
-    const auto& s = plot.series[i];
-    const auto c = series_colour(i, plot.series.size());
-    page.colour(c);
-    page.line_width(plot.series.size() > 6 ? 0.75 * st.curve_width : st.curve_width);
-    std::vector<double> px, py;
-    for (std::size_t k = 0; k < s.x.size(); ++k)
-      px.push_back(m.px(s.x[k])), py.push_back(m.py(yv(s.y[k])));
-    page.polyline(px, py);
-    if (s.x.size() <= max_points_with_markers) {
-      for (std::size_t k = 0; k < px.size(); ++k) page.disc(px[k], py[k], 4.5 * st.scale);
-    }
-    if (s.x.size() == 1 && !s.y_low.empty()) {
-      page.line_width(st.curve_width);
-      page.segment(px[0], m.py(yv(s.y_low[0])), px[0], m.py(yv(s.y_high[0])));
-    }
-  }
+  draw_curves(page, plot, m, st);
   draw_frame(page, axes.box, st);
   draw_x_axis(page, m, axes.x, st);
   draw_y_axis(page, m, axes.y, st);
