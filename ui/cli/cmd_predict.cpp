@@ -1,6 +1,7 @@
 // `nibrig predict`: how a design that was never printed will measure on a surface (Sec. 5.3) —
 // its velocity-binned spectrum, friction and descriptors in the JSON layout `nibrig measure` writes
-// for a real recording, so the two compare directly; with a measurement, a PNG of both.
+// for a real recording, so the two compare directly; with a measurement, its error per speed
+// against the no-interpolation baselines of Fig. 14, and a PNG of all of them.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -10,19 +11,20 @@
 #include <nlohmann/json.hpp>
 
 #include "model/design/mixed_design.hpp"
+#include "model/design/no_interpolation_baseline.hpp"
 #include "model/design/predicted_tool.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/io/catalog.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
-#include "ui/cli/elapsed.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/prediction_inputs.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 #include "ui/report/figures.hpp"
 
 namespace nibrig::ui::cli {
@@ -60,28 +62,72 @@ std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(
                               "' on '" + o.surface + "'");
 }
 
-// Predicted and measured amplitude at the lowest, a middle and the highest speed.
-void plot_against(const design::PredictedTool& tool, const std::string& label,
-                  const model::io::VelocitySpectrum& measured, const std::filesystem::path& png) {
-  report::LinePlot plot;
-  plot.title = fmt::format("{} on {}: predicted vs {}", design::label(tool.point), tool.surface,
-                           label);
-  plot.x_label = "Frequency (Hz)";
-  plot.y_label = "Amplitude (m/s²)";
-  plot.log_y = true;
-  const std::size_t rows = tool.spectrum.speeds_m_s.size();
-  for (std::size_t s : {std::size_t{0}, rows / 2, rows - 1}) {
+// The measured row nearest in speed to v.
+std::size_t nearest_speed(const model::io::VelocitySpectrum& spectrum, double v) {
+  std::size_t nearest = 0;
+  for (std::size_t m = 0; m < spectrum.speeds_m_s.size(); ++m)
+    if (std::abs(spectrum.speeds_m_s[m] - v) < std::abs(spectrum.speeds_m_s[nearest] - v))
+      nearest = m;
+  return nearest;
+}
+
+// "DM85 4 mm": whose scalings a no-interpolation baseline used.
+std::string corner_name(const design::DesignPoint& corner) {
+  return corner.mix.front().material + " " + forcing::tip_label(corner.tip_diameter_m);
+}
+
+// Like Fig. 14: a panel per speed with the measurement, the prediction and, when the design was
+// interpolated, the no-interpolation baselines (its simulation with a fitted neighbour's scalings).
+void plot_against(const design::PredictedTool& tool, const forcing::ForcingModel& model,
+                  const std::string& label, const model::io::VelocitySpectrum& measured,
+                  const std::filesystem::path& png) {
+  std::vector<std::pair<std::string, model::io::VelocitySpectrum>> baselines;
+  for (const auto& corner : design::no_interpolation_corners(model, tool.point))
+    baselines.emplace_back(
+        "no interpolation: " + corner_name(corner),
+        design::predict_spectrum(model, corner, tool.surface, tool.response_magnitude));
+  report::LinePanels figure;
+  figure.title =
+      fmt::format("{} on {}: predicted vs {}", design::label(tool.point), tool.surface, label);
+  for (std::size_t s = 0; s < tool.spectrum.speeds_m_s.size(); ++s) {
     const double v = tool.spectrum.speeds_m_s[s];
-    plot.series.push_back({fmt::format("predicted, {:.0f} mm/s", v * 1e3),
-                           tool.spectrum.frequencies_hz, tool.spectrum.amplitude_m_s2[s], {}, {}});
-    std::size_t nearest = 0;
-    for (std::size_t m = 0; m < measured.speeds_m_s.size(); ++m)
-      if (std::abs(measured.speeds_m_s[m] - v) < std::abs(measured.speeds_m_s[nearest] - v))
-        nearest = m;
-    plot.series.push_back({fmt::format("measured, {:.0f} mm/s", measured.speeds_m_s[nearest] * 1e3),
-                           measured.frequencies_hz, measured.amplitude_m_s2[nearest], {}, {}});
+    const std::size_t m = nearest_speed(measured, v);
+    report::LinePlot panel;
+    panel.title = std::abs(measured.speeds_m_s[m] - v) < 5e-4
+                      ? fmt::format("{:.0f} mm/s", v * 1e3)
+                      : fmt::format("{:.0f} mm/s (measured at {:.0f})", v * 1e3,
+                                    measured.speeds_m_s[m] * 1e3);
+    panel.x_label = "Frequency (Hz)";
+    panel.y_label = "Amplitude (m/s²)";
+    panel.log_y = true;
+    panel.series.push_back(
+        {"measured", measured.frequencies_hz, measured.amplitude_m_s2[m], {}, {}});
+    panel.series.push_back(
+        {"predicted", tool.spectrum.frequencies_hz, tool.spectrum.amplitude_m_s2[s], {}, {}});
+    for (const auto& [name, spectrum] : baselines)
+      panel.series.push_back(
+          {name, spectrum.frequencies_hz, spectrum.amplitude_m_s2[s], {}, {}, /*muted=*/true});
+    figure.panels.push_back(std::move(panel));
   }
-  report::write_line_plot(plot, png);
+  figure.size = {1800, figure.panels.size() > 3 ? 1100 : 700};
+  report::write_line_panels(figure, png);
+}
+
+// The RMS errors per speed of the prediction and of each no-interpolation baseline, as a table.
+std::string comparison_table(const design::InterpolationComparison& c,
+                             std::span<const double> speeds_m_s) {
+  std::string out = fmt::format("  {:>12} {:>13}", "speed (mm/s)", "interpolated");
+  for (const auto& b : c.baselines) out += fmt::format(" {:>13}", corner_name(b.corner));
+  out += "\n";
+  for (std::size_t s = 0; s < speeds_m_s.size(); ++s) {
+    out += fmt::format("  {:>12.1f} {:>13.2f}", speeds_m_s[s] * 1e3,
+                       c.interpolated.rms_db_by_speed[s]);
+    for (const auto& b : c.baselines) out += fmt::format(" {:>13.2f}", b.error.rms_db_by_speed[s]);
+    out += "\n";
+  }
+  out += fmt::format("  {:>12} {:>13.2f}", "all", c.interpolated.rms_db);
+  for (const auto& b : c.baselines) out += fmt::format(" {:>13.2f}", b.error.rms_db);
+  return out + "\n";
 }
 
 void run_predict(const PredictOptions& o) {
@@ -90,9 +136,9 @@ void run_predict(const PredictOptions& o) {
   std::optional<mech::Design> own;
   design::DesignPoint point;
   if (o.design.ends_with(".json")) {
-    own = mech::read_design(o.design, mech::read_material_table(o.inputs.materials.empty()
-                                                                     ? asset("materials.json")
-                                                                     : o.inputs.materials));
+    own = mech::read_design(
+        o.design, mech::read_material_table(o.inputs.materials.empty() ? asset("materials.json")
+                                                                       : o.inputs.materials));
     point = design::design_point_of(*own);
   } else {
     point = design::parse_design_point(o.design);
@@ -101,7 +147,8 @@ void run_predict(const PredictOptions& o) {
   const auto& catalog = inputs->catalog;
   const auto& threshold = *inputs->threshold;
   const auto start = std::chrono::steady_clock::now();
-  const design::PredictedTool tool = design::predict_tool(inputs->setup, point, o.surface, own ? &*own : nullptr);
+  const design::PredictedTool tool =
+      design::predict_tool(inputs->setup, point, o.surface, own ? &*own : nullptr);
   std::cout << fmt::format(
       "{} on {}: design '{}' (first mode {:.1f} Hz), mu {:.3f}, weighted mean vibration {:.4g}; "
       "{:.1f} s\n",
@@ -112,23 +159,44 @@ void run_predict(const PredictOptions& o) {
 
   if (const auto measured = measurement(o, catalog)) {
     const auto& [label, spectrum] = *measured;
+    const auto& model = *inputs->setup.model;
     if (spectrum.frequencies_hz == tool.spectrum.frequencies_hz &&
         spectrum.speeds_m_s.size() == tool.spectrum.speeds_m_s.size()) {
-      const auto error = forcing::log_spectrum_error(tool.spectrum, spectrum);
-      j["comparison"] = {{"against", label}, {"rms_db", error.rms_db},
-                         {"rms_db_by_speed", error.rms_db_by_speed}};
+      const auto c = design::compare_with_baselines(model, point, o.surface,
+                                                    tool.response_magnitude, spectrum);
+      nlohmann::json baselines = nlohmann::json::array();
+      for (const auto& b : c.baselines)
+        baselines.push_back({{"scalings_of", design::to_string(b.corner)},
+                             {"rms_db", b.error.rms_db},
+                             {"rms_db_by_speed", b.error.rms_db_by_speed}});
+      j["comparison"] = {{"against", label},
+                         {"rms_db", c.interpolated.rms_db},
+                         {"rms_db_by_speed", c.interpolated.rms_db_by_speed},
+                         {"no_interpolation_baselines", baselines},
+                         {"beats_every_baseline", c.beats_every_baseline()}};
       std::cout << fmt::format("against {}: RMS {:.2f} dB over all bins and speeds\n", label,
-                               error.rms_db);
+                               c.interpolated.rms_db);
+      std::cout << comparison_table(c, tool.spectrum.speeds_m_s);
+      if (c.baselines.empty())
+        std::cout << "a fitted design: nothing was interpolated, so there is no no-interpolation "
+                     "baseline\n";
+      else
+        std::cout << fmt::format(
+            "interpolation {} every no-interpolation baseline (Fig. 14: the same simulation with a "
+            "fitted neighbour's tip and material scalings)\n",
+            c.beats_every_baseline() ? "beats" : "does not beat");
     } else {
-      std::cout << "against " << label << ": other frequencies or speeds, compared in the plot only\n";
+      std::cout << "against " << label
+                << ": other frequencies or speeds, compared in the plot only\n";
     }
     if (!o.plot.empty()) {
-      plot_against(tool, label, spectrum, o.plot);
+      plot_against(tool, model, label, spectrum, o.plot);
       std::cout << "wrote " << o.plot.string() << "\n";
     }
   } else if (!o.plot.empty()) {
-    throw std::invalid_argument("--plot draws the prediction against a measurement: give "
-                                "--measured FILE or --against TOOL");
+    throw std::invalid_argument(
+        "--plot draws the prediction against a measurement: give "
+        "--measured FILE or --against TOOL");
   }
   write_json_file(o.output, j);
   std::cout << "wrote " << o.output.string() << "\n";
@@ -145,7 +213,9 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "VeroClear-Piovarci2018, DM95 or DM85) or a point such as \"DM85:0.25,vero:0.75,tip=1mm\"\n"
       "(fractions adding up to 1; a tip between the fitted 1 and 4 mm: nothing is extrapolated).\n"
       "The output has the keys of `nibrig measure`: frequencies_hz, speeds_mm_s, amplitude_m_s2,\n"
-      "descriptors, mu.");
+      "descriptors, mu. Against a measurement (--measured, --against) it also reports, per speed,\n"
+      "the RMS dB error of the prediction and of each no-interpolation baseline: the same\n"
+      "simulation with the scalings of one fitted design around the point (Fig. 14's grey lines).");
   cmd->add_option("--design", o->design, "design.json, or a design point")->required();
   cmd->add_option("--surface", o->surface, "Surface id (office, note, stone, glass, ...)")
       ->required();
@@ -155,7 +225,8 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--template", o->inputs.design_template,
                   "Stylus the design points are built on (default: "
                   "assets/designs/stylus_vero_tip2mm.json)");
-  cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
+  cmd->add_option("--materials", o->inputs.materials,
+                  "Material table (default: assets/materials.json)");
   cmd->add_option("--modes", o->inputs.modes, "Modes of the design (default: the template's)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres")
@@ -165,7 +236,9 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
                                    "A `nibrig measure` JSON of a real recording to compare with");
   cmd->add_option("--against", o->against, "A catalog tool measured on the surface to compare with")
       ->excludes(measured);
-  cmd->add_option("--plot", o->plot, "PNG of prediction and measurement at three speeds");
+  cmd->add_option("--plot", o->plot,
+                  "PNG like Fig. 14: measurement, prediction and no-interpolation baselines, a "
+                  "panel per speed");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_predict(*o);

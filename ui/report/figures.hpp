@@ -58,11 +58,14 @@ struct LineSeries {
   std::string label;
   std::vector<double> x, y;
   std::vector<double> y_low, y_high;
+  // A reference drawn thin, in grey and under the other curves (e.g. Fig. 14's no-interpolation
+  // baselines), so that it does not hide them; several get distinct shades of grey.
+  bool muted = false;
 };
 
-// Up to six curves get distinct categorical colours; more (spectra at many speeds) get an ordered
-// sequence of colours from the heat maps' colour map, in the order given. Curves of at most 30
-// points also get a dot on each point.
+// Up to six curves (not counting muted ones) get distinct categorical colours; more (spectra at
+// many speeds) get an ordered sequence of colours from the heat maps' colour map, in the order
+// given. Curves of at most 30 points also get a dot on each point.
 struct LinePlot {
   std::vector<LineSeries> series;
   std::string title, x_label, y_label;

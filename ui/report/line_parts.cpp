@@ -23,11 +23,25 @@ AxisRange widen(double lo, double hi, double pad_fraction, bool log) {
 
 }  // namespace
 
-Rgb series_colour(std::size_t i, std::size_t n) {
-  if (n <= max_categorical) return categorical_palette()[i];
+Rgb series_colour(const LinePlot& plot, std::size_t i) {
+  const bool muted = plot.series[i].muted;
+  std::size_t rank = 0, n = 0;  // i's place among the series of its kind, and how many there are
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    if (plot.series[k].muted != muted) continue;
+    if (k < i) ++rank;
+    ++n;
+  }
+  if (muted) {
+    const int grey =
+        n == 1
+            ? 140
+            : 95 + static_cast<int>(100 * static_cast<double>(rank) / static_cast<double>(n - 1));
+    return Rgb{grey, grey, grey};
+  }
+  if (n <= max_categorical) return categorical_palette()[rank];
   // Many curves are usually an ordered family (spectra at increasing speeds): an ordered map, its
   // top end left out because pale yellow vanishes on white.
-  return viridis_at(0.88 * static_cast<double>(i) / static_cast<double>(n - 1));
+  return viridis_at(0.88 * static_cast<double>(rank) / static_cast<double>(n - 1));
 }
 
 void validate_line_series(const LinePlot& plot, const char* kind) {
@@ -98,7 +112,7 @@ std::vector<LegendEntry> line_legend(const LinePlot& plot) {
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const auto& s = plot.series[i];
     if (s.label.empty()) continue;
-    legend.push_back({s.label, series_colour(i, plot.series.size()), LegendEntry::Kind::line,
+    legend.push_back({s.label, series_colour(plot, i), LegendEntry::Kind::line,
                       s.x.size() <= max_points_with_markers, !s.y_low.empty()});
   }
   return legend;
@@ -109,7 +123,7 @@ void draw_curves(PlotPage& page, const LinePlot& plot, const Mapping& m, const S
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const auto& s = plot.series[i];
     if (s.y_low.empty()) continue;
-    page.colour(series_colour(i, plot.series.size()), band_alpha);
+    page.colour(series_colour(plot, i), band_alpha);
     if (s.x.size() == 1) continue;  // a single point's interval is drawn as an error bar below
     std::vector<double> px, py;
     for (std::size_t k = 0; k < s.x.size(); ++k)
@@ -118,11 +132,19 @@ void draw_curves(PlotPage& page, const LinePlot& plot, const Mapping& m, const S
       px.push_back(m.px(s.x[k])), py.push_back(m.py(yv(s.y_low[k])));
     page.fill(px, py);
   }
-  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+  // Muted references first, so that the curves they are compared with lie on top.
+  std::vector<std::size_t> order;
+  for (bool muted : {true, false})
+    for (std::size_t i = 0; i < plot.series.size(); ++i)
+      if (plot.series[i].muted == muted) order.push_back(i);
+  std::size_t coloured = 0;
+  for (const auto& s : plot.series) coloured += !s.muted;
+  for (std::size_t i : order) {
     const auto& s = plot.series[i];
-    const auto c = series_colour(i, plot.series.size());
+    const auto c = series_colour(plot, i);
     page.colour(c);
-    page.line_width(plot.series.size() > max_categorical ? 0.75 * st.curve_width : st.curve_width);
+    const double width = coloured > max_categorical ? 0.75 * st.curve_width : st.curve_width;
+    page.line_width(s.muted ? 0.6 * width : width);
     std::vector<double> px, py;
     for (std::size_t k = 0; k < s.x.size(); ++k)
       px.push_back(m.px(s.x[k])), py.push_back(m.py(yv(s.y[k])));

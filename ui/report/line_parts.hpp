@@ -30,8 +30,9 @@ struct LineExtent {
   AxisRange y_range(bool log_y) const;
 };
 
-// Colour of series i of n: categorical up to six, an ordered colour map beyond.
-Rgb series_colour(std::size_t i, std::size_t n);
+// Colour of series i: among the curves that are not muted, categorical up to six and an ordered
+// colour map beyond; muted ones in shades of grey from dark to light.
+Rgb series_colour(const LinePlot& plot, std::size_t i);
 
 // One entry per labelled series.
 std::vector<LegendEntry> line_legend(const LinePlot& plot);

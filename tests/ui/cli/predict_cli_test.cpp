@@ -79,6 +79,20 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   // Within the leave-one-out's worst of a held-out tool (3.4 dB): a near neighbour of vero1.
   EXPECT_LT(mix["comparison"]["rms_db"].get<double>(), 3.5);
   EXPECT_TRUE(is_png(out / "mix.png"));
+  // Fig. 14's no-interpolation baselines: each material of the mix with each fitted tip around
+  // 1.5 mm, errors per speed beside the prediction's, and the verdict consistent with them.
+  const auto& comparison = mix["comparison"];
+  const auto& baselines = comparison["no_interpolation_baselines"];
+  ASSERT_EQ(baselines.size(), 4u);
+  EXPECT_EQ(baselines[0]["scalings_of"], "DM85:1,tip=1mm");
+  EXPECT_EQ(baselines[3]["scalings_of"], "vero:1,tip=2mm");
+  bool beats = true;
+  for (const auto& b : baselines) {
+    EXPECT_EQ(b["rms_db_by_speed"].size(), mix["speeds_mm_s"].size());
+    beats = beats && comparison["rms_db"].get<double>() < b["rms_db"].get<double>();
+  }
+  EXPECT_EQ(comparison["beats_every_baseline"].get<bool>(), beats);
+  EXPECT_NE(text.find("no-interpolation baseline"), std::string::npos) << text;
 
   // The bundled 1 mm VeroClear stylus file is the fitted vero1 design: predicting the file and the
   // point "vero,tip=1mm" must give the same spectrum.

@@ -1,5 +1,5 @@
-// Small multiples (write_line_panels): each panel inside its own part of the image, shared axes that
-// really are shared, nothing at the border, and bad input refused naming the panel.
+// Small multiples (write_line_panels): each panel inside its own part of the image, shared axes
+// that really are shared, nothing at the border, and bad input refused naming the panel.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -44,6 +44,9 @@ std::vector<int> rows_of_first_colour(const test::RgbImage& img, int x0, int x1)
   }
   return rows;
 }
+
+// The grey of a plot's only muted series (line_parts.cpp).
+Rgb series_grey_for_test() { return Rgb{140, 140, 140}; }
 
 double mean(const std::vector<int>& v) {
   double sum = 0;
@@ -104,6 +107,45 @@ TEST(ReportLinePanels, MorePanelsThanColumnsWrapIntoRows) {
   EXPECT_GT(left.back() - left.front(), img.height / 3);
   EXPECT_LT(right.back() - right.front(), img.height / 10);
   EXPECT_LT(right.back(), img.height / 2);
+}
+
+TEST(ReportLinePanels, MutedReferencesAreGreyAndLieUnderTheCurves) {
+  const auto dir = test::scratch_dir("report_muted");
+  LinePlot plot = flat_panel("", 1e-2);   // measured, then predicted ten times higher
+  LineSeries reference = plot.series[1];  // a muted reference exactly under the predicted curve
+  reference.label = "baseline";
+  reference.muted = true;
+  plot.series.insert(plot.series.begin(), reference);
+  plot.title = "Muted";
+  write_line_plot(plot, dir / "muted.png");
+  const auto img = test::decode_png(dir / "muted.png");
+  // The coloured curves keep the first two colours although the muted series comes first: each
+  // draws a line across the plot. The grey line lies exactly under the predicted one, drawn before
+  // it and thinner, so none of it shows on the rows of that line.
+  const auto line_rows = [&](Rgb colour, int tolerance) {
+    std::vector<int> rows;
+    for (int y = 0; y < img.height; ++y) {
+      int hits = 0;
+      for (int x = 0; x < img.width; ++x) hits += test::near(img.at(x, y), colour, tolerance);
+      if (hits > img.width / 2) rows.push_back(y);
+    }
+    return rows;
+  };
+  const auto measured_rows = line_rows(categorical_palette()[0], 12);
+  const auto predicted_rows = line_rows(categorical_palette()[1], 12);
+  ASSERT_FALSE(measured_rows.empty());
+  ASSERT_FALSE(predicted_rows.empty());
+  const Rgb grey = series_grey_for_test();
+  int hidden_grey = 0;
+  for (int y = predicted_rows.front() - 3; y <= predicted_rows.back() + 3; ++y)
+    for (int x = img.width / 4; x < 3 * img.width / 4; ++x)
+      hidden_grey += test::near(img.at(x, y), grey, 6);
+  EXPECT_EQ(hidden_grey, 0);
+  // The baseline's legend swatch is that grey.
+  int legend_grey = 0;
+  for (int y = 0; y < predicted_rows.front() - 10; ++y)
+    for (int x = 0; x < img.width; ++x) legend_grey += test::near(img.at(x, y), grey, 6);
+  EXPECT_GT(legend_grey, 20);
 }
 
 TEST(ReportLinePanels, BadFiguresAreRefusedNamingThePanel) {
