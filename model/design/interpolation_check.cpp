@@ -9,8 +9,7 @@
 
 namespace nibrig::model::design {
 
-std::vector<InterpolatedPrediction> hold_out_tip(
-    std::span<const forcing::ForcingExemplar> exemplars, double tip_m) {
+TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, double tip_m) {
   std::vector<forcing::ForcingExemplar> training;
   std::vector<const forcing::ForcingExemplar*> held_out;
   std::set<double> tips;
@@ -36,9 +35,12 @@ std::vector<InterpolatedPrediction> hold_out_tip(
     for (const auto& p : problems) text += " " + p + ";";
     throw std::invalid_argument(text);
   }
-  const forcing::ForcingModel model = forcing::fit_forcing_model(training, options);
-
-  std::vector<InterpolatedPrediction> results;
+  TipHoldOut out;
+  out.model = forcing::fit_forcing_model(training, options);
+  out.lower_tip_m = lower_tip;
+  out.upper_tip_m = upper_tip;
+  const forcing::ForcingModel& model = out.model;
+  auto& results = out.predictions;
   for (const forcing::ForcingExemplar* e : held_out) {
     InterpolatedPrediction r;
     r.tool = e->tool;
@@ -65,7 +67,7 @@ std::vector<InterpolatedPrediction> hold_out_tip(
     }
     results.push_back(std::move(r));
   }
-  return results;
+  return out;
 }
 
 }  // namespace nibrig::model::design

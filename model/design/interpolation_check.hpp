@@ -32,10 +32,15 @@ struct InterpolatedPrediction {
   double lower_measured_rms_db = -1.0, upper_measured_rms_db = -1.0;
 };
 
+struct TipHoldOut {
+  forcing::ForcingModel model;  // fitted without the held-out tip (reference: the smallest tip)
+  double lower_tip_m = 0.0, upper_tip_m = 0.0;      // the fitted neighbours interpolated between
+  std::vector<InterpolatedPrediction> predictions;  // one per held-out exemplar, in input order
+};
+
 // Exemplars need their responses (forcing::attach_responses). Throws std::invalid_argument when
 // no exemplar has `tip_m`, when it is not strictly between two other fitted tips, or when the
 // training set cannot be fitted (forcing::fit_problems, joined).
-std::vector<InterpolatedPrediction> hold_out_tip(
-    std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
+TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
 
 }  // namespace nibrig::model::design

@@ -10,8 +10,8 @@
 
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "ui/cli/elapsed.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_inputs.hpp"
 #include "ui/cli/logging.hpp"
@@ -156,19 +156,6 @@ void run_loo(const LooCommandOptions& o) {
   }
 }
 
-void add_input_options(CLI::App* cmd, ForcingInputOptions& o) {
-  // Files are checked when read, so that a bad one is reported in one line like every other error.
-  cmd->add_option("catalog", o.catalog, "Tool catalog JSON (default: the bundled one)");
-  cmd->add_option("--design", o.design_template,
-                  "Stylus design every printed tool is derived from (default: "
-                  "assets/designs/stylus_vero_tip2mm.json)");
-  cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
-  cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
-      ->check(CLI::PositiveNumber);
-}
-
 }  // namespace
 
 void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
@@ -184,7 +171,7 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "its response H comes from its simulated design. Fits the surface forcing F_S(f, v), a tip\n"
       "curve per diameter and a material curve per material (log gains, Hermite knots every 50\n"
       "Hz, the 2 mm VeroClear tool as reference) and writes them as forcing.json.");
-  add_input_options(fit, fit_options->inputs);
+  add_forcing_input_options(fit, fit_options->inputs);
   fit->add_option("-o,--output", fit_options->output, "Forcing model JSON to write")
       ->capture_default_str();
   fit->add_option("--plots", fit_options->plots,
@@ -203,13 +190,15 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "bins and speeds, and per speed, beside a baseline (the geometric mean of the other tools "
       "on\n"
       "the same surface).");
-  add_input_options(loo, loo_options->inputs);
+  add_forcing_input_options(loo, loo_options->inputs);
   loo->add_option("--csv", loo_options->csv, "Also write the table as CSV");
   loo->add_flag("--all", loo_options->all, "Hold out every exemplar, not only the paper's tools");
   loo->callback([loo_options, global] {
     configure_logging(global->verbosity);
     run_loo(*loo_options);
   });
+
+  add_forcing_holdout_command(forcing_cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

@@ -22,6 +22,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
+#include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/prediction_inputs.hpp"
@@ -60,74 +61,6 @@ std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(
       return std::pair{o.against + " on " + o.surface + " (measured)", p.vibration->spectrum};
   throw std::invalid_argument("--against: the catalog has no vibration spectrum of '" + o.against +
                               "' on '" + o.surface + "'");
-}
-
-// The measured row nearest in speed to v.
-std::size_t nearest_speed(const model::io::VelocitySpectrum& spectrum, double v) {
-  std::size_t nearest = 0;
-  for (std::size_t m = 0; m < spectrum.speeds_m_s.size(); ++m)
-    if (std::abs(spectrum.speeds_m_s[m] - v) < std::abs(spectrum.speeds_m_s[nearest] - v))
-      nearest = m;
-  return nearest;
-}
-
-// "DM85 4 mm": whose scalings a no-interpolation baseline used.
-std::string corner_name(const design::DesignPoint& corner) {
-  return corner.mix.front().material + " " + forcing::tip_label(corner.tip_diameter_m);
-}
-
-// Like Fig. 14: a panel per speed with the measurement, the prediction and, when the design was
-// interpolated, the no-interpolation baselines (its simulation with a fitted neighbour's scalings).
-void plot_against(const design::PredictedTool& tool, const forcing::ForcingModel& model,
-                  const std::string& label, const model::io::VelocitySpectrum& measured,
-                  const std::filesystem::path& png) {
-  std::vector<std::pair<std::string, model::io::VelocitySpectrum>> baselines;
-  for (const auto& corner : design::no_interpolation_corners(model, tool.point))
-    baselines.emplace_back(
-        "no interpolation: " + corner_name(corner),
-        design::predict_spectrum(model, corner, tool.surface, tool.response_magnitude));
-  report::LinePanels figure;
-  figure.title =
-      fmt::format("{} on {}: predicted vs {}", design::label(tool.point), tool.surface, label);
-  for (std::size_t s = 0; s < tool.spectrum.speeds_m_s.size(); ++s) {
-    const double v = tool.spectrum.speeds_m_s[s];
-    const std::size_t m = nearest_speed(measured, v);
-    report::LinePlot panel;
-    panel.title = std::abs(measured.speeds_m_s[m] - v) < 5e-4
-                      ? fmt::format("{:.0f} mm/s", v * 1e3)
-                      : fmt::format("{:.0f} mm/s (measured at {:.0f})", v * 1e3,
-                                    measured.speeds_m_s[m] * 1e3);
-    panel.x_label = "Frequency (Hz)";
-    panel.y_label = "Amplitude (m/s²)";
-    panel.log_y = true;
-    panel.series.push_back(
-        {"measured", measured.frequencies_hz, measured.amplitude_m_s2[m], {}, {}});
-    panel.series.push_back(
-        {"predicted", tool.spectrum.frequencies_hz, tool.spectrum.amplitude_m_s2[s], {}, {}});
-    for (const auto& [name, spectrum] : baselines)
-      panel.series.push_back(
-          {name, spectrum.frequencies_hz, spectrum.amplitude_m_s2[s], {}, {}, /*muted=*/true});
-    figure.panels.push_back(std::move(panel));
-  }
-  figure.size = {1800, figure.panels.size() > 3 ? 1100 : 700};
-  report::write_line_panels(figure, png);
-}
-
-// The RMS errors per speed of the prediction and of each no-interpolation baseline, as a table.
-std::string comparison_table(const design::InterpolationComparison& c,
-                             std::span<const double> speeds_m_s) {
-  std::string out = fmt::format("  {:>12} {:>13}", "speed (mm/s)", "interpolated");
-  for (const auto& b : c.baselines) out += fmt::format(" {:>13}", corner_name(b.corner));
-  out += "\n";
-  for (std::size_t s = 0; s < speeds_m_s.size(); ++s) {
-    out += fmt::format("  {:>12.1f} {:>13.2f}", speeds_m_s[s] * 1e3,
-                       c.interpolated.rms_db_by_speed[s]);
-    for (const auto& b : c.baselines) out += fmt::format(" {:>13.2f}", b.error.rms_db_by_speed[s]);
-    out += "\n";
-  }
-  out += fmt::format("  {:>12} {:>13.2f}", "all", c.interpolated.rms_db);
-  for (const auto& b : c.baselines) out += fmt::format(" {:>13.2f}", b.error.rms_db);
-  return out + "\n";
 }
 
 void run_predict(const PredictOptions& o) {
@@ -190,7 +123,8 @@ void run_predict(const PredictOptions& o) {
                 << ": other frequencies or speeds, compared in the plot only\n";
     }
     if (!o.plot.empty()) {
-      plot_against(tool, model, label, spectrum, o.plot);
+      write_interpolation_figure(model, tool.point, tool.surface, tool.response_magnitude, label,
+                                 spectrum, o.plot);
       std::cout << "wrote " << o.plot.string() << "\n";
     }
   } else if (!o.plot.empty()) {

@@ -17,6 +17,8 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `forcing holdout`, registered by add_forcing_command on its `forcing` subcommand.
+void add_forcing_holdout_command(CLI::App* forcing, std::shared_ptr<const GlobalOptions> global);
 void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);

@@ -67,7 +67,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   const auto held = design::hold_out_tip(inputs.exemplars, 0.002);
   double interpolated = 0, neighbours = 0, widest = 0;
   int compared = 0, held_predicted = 0, beats = 0;
-  for (const auto& r : held) {
+  for (const auto& r : held.predictions) {
     if (!r.not_predictable.empty()) continue;
     ++held_predicted;
     beats += r.comparison.beats_every_baseline();

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <memory>
@@ -106,6 +107,19 @@ std::string describe_inputs(const ForcingInputs& inputs) {
                   inputs.designs.size(), inputs.response_seconds,
                   inputs.designs.empty() ? 0 : inputs.designs.front().modes, low, high);
   return out;
+}
+
+void add_forcing_input_options(CLI::App* cmd, ForcingInputOptions& o) {
+  // Files are checked when read, so that a bad one is reported in one line like every other error.
+  cmd->add_option("catalog", o.catalog, "Tool catalog JSON (default: the bundled one)");
+  cmd->add_option("--design", o.design_template,
+                  "Stylus design every printed tool is derived from (default: "
+                  "assets/designs/stylus_vero_tip2mm.json)");
+  cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
+  cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
+      ->check(CLI::PositiveNumber);
 }
 
 }  // namespace nibrig::ui::cli

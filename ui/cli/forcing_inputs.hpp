@@ -8,6 +8,10 @@
 
 #include "model/forcing/catalog_exemplars.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace nibrig::ui::cli {
 
 struct ForcingInputOptions {
@@ -29,6 +33,10 @@ struct ForcingInputs {
 // Reads the catalog first (so a bad catalog fails before any meshing), then the materials and the
 // template, then meshes and solves each distinct design once, with progress on a terminal.
 ForcingInputs load_forcing_inputs(const ForcingInputOptions& options);
+
+// The options above on a command: the catalog as a positional argument, --design, --materials,
+// --modes and --mesh-size. Files are checked when read, so a bad one fails in one line.
+void add_forcing_input_options(CLI::App* cmd, ForcingInputOptions& o);
 
 // Lines a person reads first: exemplars, what was left out, the paper's tools present and missing,
 // the designs simulated.

@@ -32,7 +32,10 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
   auto selection = forcing::select_printed_exemplars(catalog);
   forcing::attach_responses(selection.exemplars, template_design, materials, {0.004, 32});
 
-  const auto results = hold_out_tip(selection.exemplars, 0.002);
+  const auto held = hold_out_tip(selection.exemplars, 0.002);
+  EXPECT_DOUBLE_EQ(held.lower_tip_m, 0.001);
+  EXPECT_DOUBLE_EQ(held.upper_tip_m, 0.004);
+  const auto& results = held.predictions;
   ASSERT_GE(results.size(), 10u);  // vero2 and DM852 on five surfaces, DM952 on two
   int beaten = 0, predicted = 0, closer_than_measured = 0, with_measured = 0;
   double interpolated_sum = 0, measured_sum = 0;

@@ -82,6 +82,52 @@ TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
   }
 }
 
+TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed) {
+  const auto out = test::scratch_dir("cli_forcing_holdout");
+  testing::internal::CaptureStdout();
+  const int code =
+      run_cli(with_coarse({"forcing", "holdout", "--tip", "2", "--csv",
+                           (out / "holdout.csv").string(), "--plots", (out / "plots").string()}));
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  // The 15 measured 2 mm tools (vero2 and DM852 on five surfaces, DM952 on two, teflon2 on
+  // three), each beside both baselines, per speed and overall.
+  EXPECT_NE(text.find("held out the 2 mm tools (15)"), std::string::npos) << text;
+  EXPECT_NE(text.find("t interpolated between 1 mm and 4 mm"), std::string::npos) << text;
+  EXPECT_NE(text.find("by speed, mean RMS dB over the 15 predicted"), std::string::npos) << text;
+  EXPECT_NE(text.find("interpolation beats both no-interpolation baselines (Fig. 14) on "),
+            std::string::npos)
+      << text;
+  const auto csv = lines_of(out / "holdout.csv");
+  ASSERT_EQ(csv.size(), 1u + 15u * 7u);  // header; six speeds and "all" per tool
+  EXPECT_EQ(csv[0].rfind("tool,surface,speed_mm_s,interpolated_rms_db,tip_1mm_curve_rms_db,"
+                         "tip_4mm_curve_rms_db",
+                         0),
+            0u)
+      << csv[0];
+  for (std::size_t k = 1; k < csv.size(); ++k) {
+    std::stringstream row(csv[k]);
+    std::vector<std::string> cells;
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 6u) << csv[k];
+    for (int c : {3, 4, 5}) {
+      const double rms = std::stod(cells[c]);
+      EXPECT_GT(rms, 0.3) << csv[k];
+      EXPECT_LT(rms, 6.0) << csv[k];
+    }
+  }
+  EXPECT_TRUE(is_png(out / "plots" / "vero2_office.png"));
+  EXPECT_TRUE(is_png(out / "plots" / "DM952_glass.png"));
+
+  // A tip that is not strictly inside the others cannot be interpolated.
+  testing::internal::CaptureStderr();
+  EXPECT_NE(run_cli(with_coarse({"forcing", "holdout", "--tip", "4"})), 0);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("holding out the 4 mm tips: the other tips do not lie on both sides of it"),
+            std::string::npos)
+      << err;
+}
+
 TEST(ForcingCli, AMissingCatalogIsOneClearLine) {
   testing::internal::CaptureStderr();
   const int code = run_cli({"forcing", "fit", "/nonexistent/catalog.json"});
