@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "model/design/predicted_tool.hpp"
+#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/leave_one_out.hpp"
 
 namespace nibrig::model::design {
@@ -66,6 +67,42 @@ TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, dou
         r.upper_measured_rms_db = forcing::log_spectrum_error(other.measured, e->measured).rms_db;
     }
     results.push_back(std::move(r));
+  }
+  return out;
+}
+
+TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars, double tip_m) {
+  const forcing::ForcingModel model = forcing::fit_forcing_model(exemplars);
+  std::vector<double> tips;
+  for (const auto& [d, knots] : model.tip_log_gain) tips.push_back(d);
+  const std::string what = "resolving the " + forcing::tip_label(tip_m) + " tip";
+  const auto held =
+      std::find_if(tips.begin(), tips.end(), [&](double d) { return forcing::same_tip(d, tip_m); });
+  if (held == tips.end()) throw std::invalid_argument(what + ": the fit has no curve for it");
+  if (held == tips.begin() || held + 1 == tips.end())
+    throw std::invalid_argument(what + ": the other tips do not lie on both sides of it");
+
+  TipResolution out;
+  out.tip_m = *held;
+  out.lower_tip_m = *(held - 1);
+  out.upper_tip_m = *(held + 1);
+  out.knot_frequencies_hz = model.knot_frequencies_hz;
+  const double w = (out.tip_m - out.lower_tip_m) / (out.upper_tip_m - out.lower_tip_m);
+  const auto effect_at = [&](const std::map<double, std::vector<double>>& t, std::size_t k) {
+    return t.at(out.upper_tip_m)[k] - t.at(out.lower_tip_m)[k];
+  };
+  const auto deviation_at = [&](const std::map<double, std::vector<double>>& t, std::size_t k) {
+    return t.at(out.tip_m)[k] - ((1 - w) * t.at(out.lower_tip_m)[k] + w * t.at(out.upper_tip_m)[k]);
+  };
+  const forcing::CurveJackknife jackknife = forcing::jackknife_curves(exemplars);
+  out.tools = jackknife.replicates.size();
+  for (std::size_t k = 0; k < out.knot_frequencies_hz.size(); ++k) {
+    out.effect.push_back(effect_at(model.tip_log_gain, k));
+    out.deviation.push_back(deviation_at(model.tip_log_gain, k));
+    out.effect_se.push_back(jackknife.standard_error(
+        [&](const forcing::CurveReplicate& r) { return effect_at(r.tip, k); }));
+    out.deviation_se.push_back(jackknife.standard_error(
+        [&](const forcing::CurveReplicate& r) { return deviation_at(r.tip, k); }));
   }
   return out;
 }

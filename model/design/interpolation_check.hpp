@@ -43,4 +43,23 @@ struct TipHoldOut {
 // training set cannot be fitted (forcing::fit_problems, joined).
 TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
 
+// What the data can resolve of that check, from a fit of every exemplar (held-out tip included):
+// per knot, the tip effect between the neighbours (ln t_upper − ln t_lower) and how far the
+// held-out tip's own curve lies from the straight line between them (ln t_held − the
+// interpolation) — each with its delete-one-tool jackknife standard error (curve_jackknife.hpp).
+// Both are differences of tip curves, so the choice of reference tip does not change them. When
+// the deviation is within its error, interpolation is as good as the data can tell; when the
+// effect is within its error, nothing — interpolated or not — can be told apart from a neighbour.
+struct TipResolution {
+  double tip_m = 0.0, lower_tip_m = 0.0, upper_tip_m = 0.0;
+  std::vector<double> knot_frequencies_hz;
+  std::vector<double> effect, effect_se;        // ln t_upper − ln t_lower, per knot
+  std::vector<double> deviation, deviation_se;  // ln t_held − interpolation, per knot
+  std::size_t tools = 0;                        // jackknife replicates
+};
+
+// Throws std::invalid_argument when `tip_m` has no curve in the full fit or is not strictly
+// between two fitted tips, or when fewer than two tools can be left out.
+TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
+
 }  // namespace nibrig::model::design

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "ui/cli/commands.hpp"
@@ -35,22 +36,37 @@ struct LooCommandOptions {
   bool all = false;  // hold out every exemplar, not only the paper's tools
 };
 
-// One row per curve, its gain in dB at every knot.
-std::string curves_table(const forcing::ForcingModel& model) {
+// One row per curve, its gain in dB at every knot, and under it the jackknife standard error of
+// each knot (dB) when there is one.
+std::string curves_table(const forcing::ForcingModel& model,
+                         const forcing::CurveJackknife& jackknife) {
+  const bool errors = jackknife.replicates.size() >= 2;
   std::string out = fmt::format("{:<22}", "gain (dB) at Hz");
   for (double f : model.knot_frequencies_hz) out += fmt::format("{:>7g}", f);
   out += "\n";
-  auto row = [&](const std::string& label, const std::vector<double>& knots) {
+  auto row = [&](const std::string& label, const std::vector<double>& knots,
+                 const std::vector<double>& standard_errors) {
     out += fmt::format("{:<22}", label);
     for (double k : knots) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(k));
+    out += "\n";
+    if (standard_errors.empty()) return;
+    out += fmt::format("{:<22}", "  ± (SE)");
+    for (double se : standard_errors) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(se));
     out += "\n";
   };
   for (const auto& [d, knots] : model.tip_log_gain)
     row(fmt::format("tip {:g} mm{}", d * 1e3,
-                    std::abs(d - model.reference_tip_diameter_m) < 1e-6 ? " (ref)" : ""),
-        knots);
+                    forcing::same_tip(d, model.reference_tip_diameter_m) ? " (ref)" : ""),
+        knots, errors ? jackknife.tip_standard_errors(d) : std::vector<double>{});
   for (const auto& [m, knots] : model.material_log_gain)
-    row(fmt::format("material {}{}", m, m == model.reference_material ? " (ref)" : ""), knots);
+    row(fmt::format("material {}{}", m, m == model.reference_material ? " (ref)" : ""), knots,
+        errors ? jackknife.material_standard_errors(m) : std::vector<double>{});
+  if (errors)
+    out += fmt::format(
+        "SE: delete-one-tool jackknife over {} printed tools{}\n", jackknife.replicates.size(),
+        jackknife.not_left_out.empty()
+            ? std::string()
+            : fmt::format(" ({} could not be left out)", jackknife.not_left_out.size()));
   return out;
 }
 
@@ -73,13 +89,15 @@ void run_fit(const FitCommandOptions& o) {
       "{:.2f} ({} on {}) to {:.2f} dB ({} on {}); {:.3f} s\n",
       model.observations, model.skipped_nonpositive, model.residual_rms_db, best->rms_db,
       best->tool, best->surface, worst->rms_db, worst->tool, worst->surface, fit_seconds);
-  std::cout << curves_table(model);
+  const forcing::CurveJackknife jackknife = forcing::jackknife_curves(inputs.exemplars);
+  std::cout << curves_table(model, jackknife);
+  for (const auto& why : jackknife.not_left_out) spdlog::info("jackknife: not left out: {}", why);
   ensure_folder(o.output.parent_path());
   forcing::write_forcing_model(o.output, model);
   std::cout << "wrote " << o.output.string() << "\n";
   if (!o.plots.empty()) {
     ensure_folder(o.plots);
-    plot_scaling_curves(model, o.plots);
+    plot_scaling_curves(model, o.plots, &jackknife);
     std::cout << "wrote " << (o.plots / "tip_curves.png").string() << " and "
               << (o.plots / "material_curves.png").string() << "\n";
   }

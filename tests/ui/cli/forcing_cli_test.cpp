@@ -54,6 +54,8 @@ TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
   EXPECT_NE(text.find("23 of the paper's 27 tools"), std::string::npos) << text;
   EXPECT_NE(text.find("missing from the catalog: DM952 on office"), std::string::npos) << text;
   EXPECT_NE(text.find("residual RMS"), std::string::npos) << text;
+  EXPECT_NE(text.find("SE: delete-one-tool jackknife over 12 printed tools"), std::string::npos)
+      << text;
 }
 
 TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
@@ -98,6 +100,10 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
   EXPECT_NE(text.find("interpolation beats both no-interpolation baselines (Fig. 14) on "),
             std::string::npos)
       << text;
+  // And how large the tip effect is against its error (delete-one-tool jackknife: the 12 prints).
+  EXPECT_NE(text.find("jackknife over 12 tools"), std::string::npos) << text;
+  EXPECT_NE(text.find("4 mm − 1 mm (the tip effect)"), std::string::npos) << text;
+  EXPECT_NE(text.find("2 mm − the line 1 mm–4 mm"), std::string::npos) << text;
   const auto csv = lines_of(out / "holdout.csv");
   ASSERT_EQ(csv.size(), 1u + 15u * 7u);  // header; six speeds and "all" per tool
   EXPECT_EQ(csv[0].rfind("tool,surface,speed_mm_s,interpolated_rms_db,tip_1mm_curve_rms_db,"
