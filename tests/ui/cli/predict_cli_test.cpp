@@ -2,17 +2,16 @@
 // fitted once (coarse designs, as in forcing_cli_test), then a mix, a designer's stylus file and
 // bad designs are predicted with it.
 #include <gtest/gtest.h>
-
 #include <sndfile.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "model/measure/amplitude_convention.hpp"
 #include "rt/engine.hpp"
-
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -61,10 +60,10 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
 
   // A mix between fitted designs, compared with the measured 1 mm VeroClear tool.
   testing::internal::CaptureStdout();
-  const int code = run_cli(with_coarse(
-      {"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm", "--surface", "office", "--forcing",
-       forcing, "--against", "vero1", "--plot", (out / "mix.png").string(), "-o",
-       (out / "mix.json").string()}));
+  const int code =
+      run_cli(with_coarse({"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm", "--surface",
+                           "office", "--forcing", forcing, "--against", "vero1", "--plot",
+                           (out / "mix.png").string(), "-o", (out / "mix.json").string()}));
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto mix = read_json(out / "mix.json");
@@ -94,13 +93,37 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   EXPECT_EQ(comparison["beats_every_baseline"].get<bool>(), beats);
   EXPECT_NE(text.find("no-interpolation baseline"), std::string::npos) << text;
 
+  // The prediction's own output as the "measurement": zero error, every baseline beaten; with one
+  // speed moved by 5 mm/s the grids differ and only the plot compares.
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli(with_coarse({"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm",
+                                 "--surface", "office", "--forcing", forcing, "--measured",
+                                 (out / "mix.json").string(), "-o", (out / "self.json").string()})),
+            0);
+  auto shifted = mix;
+  shifted["speeds_mm_s"][0] = shifted["speeds_mm_s"][0].get<double>() + 5.0;
+  std::ofstream(out / "shifted.json") << shifted.dump();
+  ASSERT_EQ(
+      run_cli(with_coarse(
+          {"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm", "--surface", "office",
+           "--forcing", forcing, "--measured", (out / "shifted.json").string(), "--plot",
+           (out / "shifted.png").string(), "-o", (out / "shifted_prediction.json").string()})),
+      0);
+  const std::string compared = testing::internal::GetCapturedStdout();
+  const auto self = read_json(out / "self.json")["comparison"];
+  EXPECT_NEAR(self["rms_db"].get<double>(), 0.0, 1e-9);
+  EXPECT_TRUE(self["beats_every_baseline"].get<bool>());
+  EXPECT_FALSE(read_json(out / "shifted_prediction.json").contains("comparison"));
+  EXPECT_NE(compared.find("compared in the plot only"), std::string::npos) << compared;
+  EXPECT_TRUE(is_png(out / "shifted.png"));
+
   // The bundled 1 mm VeroClear stylus file is the fitted vero1 design: predicting the file and the
   // point "vero,tip=1mm" must give the same spectrum.
   testing::internal::CaptureStdout();
-  ASSERT_EQ(run_cli(with_coarse({"predict", "--design",
-                                 (test::assets_dir() / "designs" / "stylus_vero_tip1mm.json").string(),
-                                 "--surface", "office", "--forcing", forcing, "-o",
-                                 (out / "file.json").string()})),
+  ASSERT_EQ(run_cli(with_coarse(
+                {"predict", "--design",
+                 (test::assets_dir() / "designs" / "stylus_vero_tip1mm.json").string(), "--surface",
+                 "office", "--forcing", forcing, "-o", (out / "file.json").string()})),
             0);
   ASSERT_EQ(run_cli(with_coarse({"predict", "--design", "vero,tip=1mm", "--surface", "office",
                                  "--forcing", forcing, "-o", (out / "point.json").string()})),
@@ -130,7 +153,8 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   const auto full = read_json(out / "full.json");
   const auto speeds = full["speeds_mm_s"].get<std::vector<double>>();
   const auto row = std::find_if(speeds.begin(), speeds.end(),
-                                [](double v) { return std::abs(v - 110.2) < 0.05; }) - speeds.begin();
+                                [](double v) { return std::abs(v - 110.2) < 0.05; }) -
+                   speeds.begin();
   ASSERT_LT(static_cast<std::size_t>(row), speeds.size());
   const auto frequencies = full["frequencies_hz"].get<std::vector<double>>();
   const auto amplitude = full["amplitude_m_s2"][row].get<std::vector<double>>();
@@ -141,7 +165,8 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
              (frequencies[1] - frequencies[0]);
   const double expected_rms = std::sqrt(power) * rt::EngineSettings{}.output_level_per_m_s2;
   const double level_db = 20 * std::log10(wav_rms(out / "design.wav", 48000) / expected_rms);
-  std::printf("predicted design rendered at 110.2 mm/s: level %+.2f dB from its spectrum's\n", level_db);
+  std::printf("predicted design rendered at 110.2 mm/s: level %+.2f dB from its spectrum's\n",
+              level_db);
   EXPECT_NEAR(level_db, 0.0, 0.5);
 
   // Bad input fails in one line that says what is wrong.
@@ -149,12 +174,12 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
                                         "--surface", "office", "--forcing", forcing});
   EXPECT_NE(sum_code, 0);
   EXPECT_NE(sum_error.find("add up to 0.9, expected 1"), std::string::npos) << sum_error;
-  auto [tip_code, tip_error] = failing(
-      {"predict", "--design", "vero,tip=5mm", "--surface", "office", "--forcing", forcing});
+  auto [tip_code, tip_error] =
+      failing({"predict", "--design", "vero,tip=5mm", "--surface", "office", "--forcing", forcing});
   EXPECT_NE(tip_code, 0);
   EXPECT_NE(tip_error.find("1 mm above the largest"), std::string::npos) << tip_error;
-  auto [surface_code, surface_error] = failing(
-      {"predict", "--design", "vero,tip=2mm", "--surface", "marble", "--forcing", forcing});
+  auto [surface_code, surface_error] =
+      failing({"predict", "--design", "vero,tip=2mm", "--surface", "marble", "--forcing", forcing});
   EXPECT_NE(surface_code, 0);
   EXPECT_NE(surface_error.find("no surface 'marble'"), std::string::npos) << surface_error;
 }
