@@ -204,7 +204,10 @@ void add_forcing_holdout_command(CLI::App* forcing_cmd,
       "as reference) and predicts each held-out tool with its own simulated response and the tip\n"
       "curve interpolated between the fitted neighbours. Reports the RMS dB error overall and per\n"
       "speed beside the no-interpolation baselines (the same prediction with either neighbour's\n"
-      "curve: Fig. 14's grey lines) and the measured neighbours taken as they are.");
+      "curve: Fig. 14's grey lines) and the measured neighbours taken as they are. Then, from a\n"
+      "fit of every tool, what the data resolve: the tip effect between the neighbours and the\n"
+      "held-out curve's departure from the interpolation, per knot with delete-one-tool\n"
+      "jackknife standard errors.");
   add_forcing_input_options(cmd, o->inputs);
   cmd->add_option("--tip", o->tip_mm, "Tip diameter to hold out, mm")
       ->capture_default_str()
