@@ -5,8 +5,12 @@
 // design_cli_test): its cost does not depend on how the space was fitted.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 #include "model/design/design_search.hpp"
+#include "model/design/interpolation_check.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
+#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/io/catalog.hpp"
 #include "model/mechanics/design.hpp"
@@ -30,7 +34,8 @@ Inputs& inputs(bool with_responses) {
     Inputs i;
     i.catalog = io::read_catalog(assets / "default_catalog.json");
     i.materials = mechanics::read_material_table(assets / "materials.json");
-    i.template_design = mechanics::read_design(assets / "designs" / "stylus_vero_tip2mm.json", i.materials);
+    i.template_design =
+        mechanics::read_design(assets / "designs" / "stylus_vero_tip2mm.json", i.materials);
     i.exemplars = forcing::select_printed_exemplars(i.catalog).exemplars;
     return i;
   }();
@@ -67,19 +72,37 @@ void BM_ForcingFitAndLeaveOneOut(benchmark::State& state) {
 }
 BENCHMARK(BM_ForcingFitAndLeaveOneOut)->Iterations(3)->Unit(benchmark::kMillisecond);
 
+// The curves' standard errors (one refit per printed tool) and the 2 mm hold-out with what the
+// data resolve: what `nibrig forcing fit` and `forcing holdout` add to the fit.
+void BM_ForcingJackknifeAndHoldout(benchmark::State& state) {
+  auto& in = inputs(true);
+  std::size_t tools = 0, resolved = 0;
+  for (auto _ : state) {
+    tools = forcing::jackknife_curves(in.exemplars).replicates.size();
+    benchmark::DoNotOptimize(design::hold_out_tip(in.exemplars, 0.002).predictions.size());
+    const auto r = design::tip_resolution(in.exemplars, 0.002);
+    resolved = 0;
+    for (std::size_t k = 0; k < r.effect.size(); ++k)
+      resolved += std::abs(r.effect[k]) > 2 * r.effect_se[k];
+  }
+  state.counters["tools"] = static_cast<double>(tools);
+  state.counters["tip_effect_knots_resolved"] = static_cast<double>(resolved);
+}
+BENCHMARK(BM_ForcingJackknifeAndHoldout)->Iterations(3)->Unit(benchmark::kMillisecond);
+
 void BM_DesignLineSearch(benchmark::State& state) {
   auto& in = inputs(true);
   const auto model = forcing::fit_forcing_model(in.exemplars);
-  const std::vector<std::string> stimuli{"cryon/office", "stab/office", "vero1/office",
+  const std::vector<std::string> stimuli{"cryon/office", "stab/office",  "vero1/office",
                                          "vero4/office", "DM854/office", "vero1/glass",
-                                         "DM851/glass", "vero4/glass"};
+                                         "DM851/glass",  "vero4/glass"};
   const auto table = space::descriptors_for_stimuli(in.catalog, "bundled catalog", stimuli, 2);
   Eigen::MatrixXd coordinates = table.values.transpose();
   for (Eigen::Index i = 0; i < coordinates.cols(); ++i) coordinates(0, i) += 0.01 * (i % 3);
   const auto map = space::fit_descriptor_map(coordinates, table.values, table.names);
   const space::Placement target{coordinates.col(0), Eigen::MatrixXd::Zero(2, 2)};
-  const auto threshold =
-      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds" / "israr2006_pen_hold.csv");
+  const auto threshold = measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds" /
+                                                       "israr2006_pen_hold.csv");
   design::PredictionSetup setup;
   setup.model = &model;
   setup.catalog = &in.catalog;

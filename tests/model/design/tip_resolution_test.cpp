@@ -65,6 +65,15 @@ TEST(TipResolution, RefusesATipWithoutNeighboursOnBothSides) {
   const auto truth = forcing::test::make_synthetic_truth();
   EXPECT_THROW(tip_resolution(truth.exemplars, 0.004), std::invalid_argument);
   EXPECT_THROW(tip_resolution(truth.exemplars, 0.003), std::invalid_argument);
+  // The hold-out itself says why, as `nibrig forcing holdout --tip 4` prints it.
+  try {
+    hold_out_tip(truth.exemplars, 0.004);
+    FAIL() << "the 4 mm tip has no larger neighbour";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "holding out the 4 mm tips: the other tips do not lie on both sides of it");
+  }
+  EXPECT_THROW(hold_out_tip(truth.exemplars, 0.003), std::invalid_argument);  // no such tool
 }
 
 }  // namespace
