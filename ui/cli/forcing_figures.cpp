@@ -20,23 +20,33 @@ std::vector<double> curve_frequencies(const model::forcing::ForcingModel& model)
   return f;
 }
 
-// The 95 % band of a curve from its jackknife replicates: the curve's value ±1.96 standard errors
-// at each frequency (the Hermite curve is linear in its knots, so each replicate's value is exact).
-void add_band(
-    report::LineSeries& series, const model::forcing::ForcingModel& model,
-    const model::forcing::CurveJackknife& jackknife,
-    const std::function<const std::vector<double>&(const model::forcing::CurveReplicate&)>&
-        knots_of) {
+using KnotsOf = std::function<const std::vector<double>&(const model::forcing::CurveReplicate&)>;
+
+// One fitted curve (its knot values) in dB at `frequencies`; with a jackknife, its 95 % band: the
+// value ±1.96 standard errors at each frequency (the Hermite curve is linear in its knots, so each
+// replicate's value there is exact).
+report::LineSeries curve_series(std::string label, const std::vector<double>& knots,
+                                const std::vector<double>& frequencies,
+                                const model::forcing::ForcingModel& model,
+                                const model::forcing::CurveJackknife* jackknife,
+                                const KnotsOf& knots_of) {
   namespace forcing = model::forcing;
-  for (std::size_t i = 0; i < series.x.size(); ++i) {
-    const double f = series.x[i];
-    const double se = jackknife.standard_error([&](const forcing::CurveReplicate& r) {
+  report::LineSeries series;
+  series.label = std::move(label);
+  series.x = frequencies;
+  for (double f : frequencies)
+    series.y.push_back(
+        forcing::log_gain_to_db(forcing::hermite_value(model.knot_frequencies_hz, knots, f)));
+  if (jackknife == nullptr) return series;
+  for (std::size_t i = 0; i < frequencies.size(); ++i) {
+    const double se = jackknife->standard_error([&](const forcing::CurveReplicate& r) {
       return forcing::log_gain_to_db(
-          forcing::hermite_value(model.knot_frequencies_hz, knots_of(r), f));
+          forcing::hermite_value(model.knot_frequencies_hz, knots_of(r), frequencies[i]));
     });
     series.y_low.push_back(series.y[i] - 1.96 * se);
     series.y_high.push_back(series.y[i] + 1.96 * se);
   }
+  return series;
 }
 
 }  // namespace
@@ -55,19 +65,13 @@ void plot_scaling_curves(const model::forcing::ForcingModel& model,
                            model.reference_tip_diameter_m * 1e3, band_note);
   tips.x_label = "Frequency (Hz)";
   tips.y_label = "Gain (dB)";
-  for (const auto& [diameter, curve] : model.tip_log_gain) {
-    report::LineSeries series;
-    series.label = fmt::format("{:g} mm", diameter * 1e3);
-    series.x = frequencies;
-    for (double f : frequencies)
-      series.y.push_back(forcing::log_gain_to_db(model.tip_log_gain_at(diameter, f)));
-    if (bands)
-      add_band(series, model, *jackknife,
-               [d = diameter](const forcing::CurveReplicate& r) -> const std::vector<double>& {
-                 return r.tip.at(d);
-               });
-    tips.series.push_back(std::move(series));
-  }
+  const forcing::CurveJackknife* with_bands = bands ? jackknife : nullptr;
+  for (const auto& [diameter, knots] : model.tip_log_gain)
+    tips.series.push_back(curve_series(
+        fmt::format("{:g} mm", diameter * 1e3), knots, frequencies, model, with_bands,
+        [d = diameter](const forcing::CurveReplicate& r) -> const std::vector<double>& {
+          return r.tip.at(d);
+        }));
   report::write_line_plot(tips, folder / "tip_curves.png");
 
   report::LinePlot materials;
@@ -75,19 +79,12 @@ void plot_scaling_curves(const model::forcing::ForcingModel& model,
       fmt::format("Material scaling m(f), relative to {}{}", model.reference_material, band_note);
   materials.x_label = "Frequency (Hz)";
   materials.y_label = "Gain (dB)";
-  for (const auto& [name, curve] : model.material_log_gain) {
-    report::LineSeries series;
-    series.label = name;
-    series.x = frequencies;
-    for (double f : frequencies)
-      series.y.push_back(forcing::log_gain_to_db(model.material_log_gain_at(name, f)));
-    if (bands)
-      add_band(series, model, *jackknife,
-               [m = name](const forcing::CurveReplicate& r) -> const std::vector<double>& {
-                 return r.material.at(m);
-               });
-    materials.series.push_back(std::move(series));
-  }
+  for (const auto& [name, knots] : model.material_log_gain)
+    materials.series.push_back(
+        curve_series(name, knots, frequencies, model, with_bands,
+                     [m = name](const forcing::CurveReplicate& r) -> const std::vector<double>& {
+                       return r.material.at(m);
+                     }));
   report::write_line_plot(materials, folder / "material_curves.png");
 }
 
