@@ -21,13 +21,6 @@ std::string joined(const std::set<std::string>& names) {
   return out;
 }
 
-bool same_grid(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    if (std::abs(a[k] - b[k]) > 1e-9 * std::max(1.0, std::abs(a[k]))) return false;
-  return true;
-}
-
 // Which free curve (a block of knot values) each exemplar's tip and material use. The reference
 // tip and material are pinned at zero and own no block.
 struct Layout {
@@ -96,8 +89,7 @@ std::vector<std::string> data_problems(std::span<const ForcingExemplar> exemplar
     const std::string name = exemplar_name(e);
     if (!(std::isfinite(e.tip_diameter_m) && e.tip_diameter_m > 0))
       problems.push_back(name + ": tip diameter must be a positive length");
-    if (!same_grid(e.measured.frequencies_hz, grid.frequencies_hz) ||
-        !same_grid(e.measured.speeds_m_s, grid.speeds_m_s)) {
+    if (!io::same_grid(e.measured, grid)) {
       problems.push_back(name + ": its frequencies or speeds differ from those of " +
                          exemplar_name(exemplars.front()));
       continue;

@@ -1,17 +1,38 @@
 // The velocity-binned magnitude spectrum of a tool on a surface: the common currency between
-// measurement (model/measure), the tool catalog (model/io/catalog), prediction (model/forcing) and plots.
+// measurement (model/measure), the tool catalog (model/io/catalog), prediction (model/forcing) and
+// plots.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace nibrig::model::io {
 
-// amplitude_m_s2[s][f] is the single-sided amplitude (peak, m/s^2) at frequencies_hz[f] while the tip
-// moves at speeds_m_s[s]. In JSON files the speeds are written as `speeds_mm_s` (mm/s), see catalog.hpp.
+// amplitude_m_s2[s][f] is the single-sided amplitude (peak, m/s^2) at frequencies_hz[f] while the
+// tip moves at speeds_m_s[s]. In JSON files the speeds are written as `speeds_mm_s` (mm/s), see
+// catalog.hpp.
 struct VelocitySpectrum {
   std::vector<double> frequencies_hz;
   std::vector<double> speeds_m_s;
   std::vector<std::vector<double>> amplitude_m_s2;
 };
+
+// Whether a and b have the same frequencies and speeds, each to a relative 1e-9 (values that went
+// through a file in other units), the speeds also to within `speed_tolerance_m_s` when one is
+// given (speeds a recording was segmented into need not match a model's to the last digit).
+inline bool same_grid(const VelocitySpectrum& a, const VelocitySpectrum& b,
+                      double speed_tolerance_m_s = 0.0) {
+  const auto same = [](const std::vector<double>& x, const std::vector<double>& y,
+                       double tolerance) {
+    if (x.size() != y.size()) return false;
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (std::abs(x[k] - y[k]) > std::max(tolerance, 1e-9 * std::max(1.0, std::abs(x[k]))))
+        return false;
+    return true;
+  };
+  return same(a.frequencies_hz, b.frequencies_hz, 0.0) &&
+         same(a.speeds_m_s, b.speeds_m_s, speed_tolerance_m_s);
+}
 
 }  // namespace nibrig::model::io

@@ -63,18 +63,6 @@ std::optional<std::pair<std::string, model::io::VelocitySpectrum>> measurement(
                               "' on '" + o.surface + "'");
 }
 
-// Whether a measurement has the prediction's frequencies and speeds (to 0.5 mm/s: speeds written
-// to a file in mm/s and read back), so that errors per bin and per speed mean what they say.
-bool same_grid(const model::io::VelocitySpectrum& measured,
-               const model::io::VelocitySpectrum& predicted) {
-  if (measured.frequencies_hz != predicted.frequencies_hz ||
-      measured.speeds_m_s.size() != predicted.speeds_m_s.size())
-    return false;
-  for (std::size_t s = 0; s < measured.speeds_m_s.size(); ++s)
-    if (std::abs(measured.speeds_m_s[s] - predicted.speeds_m_s[s]) > 5e-4) return false;
-  return true;
-}
-
 void run_predict(const PredictOptions& o) {
   // The design first, so that a bad one fails before a forcing model is fitted: a design file is
   // used as it is, a design point is built on the printed tools' template.
@@ -105,7 +93,8 @@ void run_predict(const PredictOptions& o) {
   if (const auto measured = measurement(o, catalog)) {
     const auto& [label, spectrum] = *measured;
     const auto& model = *inputs->setup.model;
-    if (same_grid(spectrum, tool.spectrum)) {
+    // Speeds to 0.5 mm/s: a recording's segmented speeds written in mm/s and read back.
+    if (model::io::same_grid(spectrum, tool.spectrum, 5e-4)) {
       const auto c = design::compare_with_baselines(model, point, o.surface,
                                                     tool.response_magnitude, spectrum);
       nlohmann::json baselines = nlohmann::json::array();
