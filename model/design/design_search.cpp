@@ -30,7 +30,8 @@ std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
 
 bool same_design(const DesignPoint& a, const DesignPoint& b) {
   double variation = 0;
-  for (const auto& share : a.mix) variation += std::abs(share.fraction - b.fraction_of(share.material));
+  for (const auto& share : a.mix)
+    variation += std::abs(share.fraction - b.fraction_of(share.material));
   for (const auto& share : b.mix)
     if (a.fraction_of(share.material) == 0) variation += share.fraction;
   return variation / 2 < kSameDesignFraction &&
@@ -59,8 +60,9 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
   const space::DescriptorTable row =
       space::descriptors_of_catalog(one, "prediction", map.descriptor_names.size());
   if (row.names != map.descriptor_names)
-    throw std::invalid_argument("the space's descriptor map uses descriptors a prediction does "
-                                "not provide");
+    throw std::invalid_argument(
+        "the space's descriptor map uses descriptors a prediction does "
+        "not provide");
   return space::place_from_descriptors(map, row.values.row(0).transpose());
 }
 

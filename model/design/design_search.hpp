@@ -58,7 +58,7 @@ inline constexpr double kSameDesignFraction = 0.05;
 inline constexpr double kSameDesignTip = 0.0001;  // m
 
 struct LineSearchOptions {
-  int scan_points = 9;            // equal steps from a to b, both ends included
+  int scan_points = 9;             // equal steps from a to b, both ends included
   double refine_tolerance = 0.01;  // of the line's length, for the golden-section refinement
 };
 

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "model/design/predicted_tool.hpp"
-#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/leave_one_out.hpp"
 
 namespace nibrig::model::design {
@@ -71,10 +70,53 @@ TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, dou
   return out;
 }
 
-TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars, double tip_m) {
-  const forcing::ForcingModel model = forcing::fit_forcing_model(exemplars);
+TipHoldOutSummary summarize(const TipHoldOut& held) {
+  TipHoldOutSummary s;
+  for (const auto& r : held.predictions) {
+    if (!r.not_predictable.empty()) continue;
+    ++s.predicted;
+    s.beats_every_baseline += r.comparison.beats_every_baseline();
+    const double rms_db = r.comparison.interpolated.rms_db;
+    for (const auto& baseline : r.comparison.baselines)
+      s.widest_baseline_gap_db =
+          std::max(s.widest_baseline_gap_db, std::abs(rms_db - baseline.error.rms_db));
+    for (double measured : {r.lower_measured_rms_db, r.upper_measured_rms_db}) {
+      if (measured < 0) continue;
+      ++s.compared_with_measured;
+      s.closer_than_measured += rms_db < measured;
+      s.mean_predicted_db += rms_db;
+      s.mean_measured_db += measured;
+    }
+  }
+  if (s.compared_with_measured > 0) {
+    s.mean_predicted_db /= s.compared_with_measured;
+    s.mean_measured_db /= s.compared_with_measured;
+  }
+  return s;
+}
+
+namespace {
+
+std::size_t beyond_two_errors(const std::vector<double>& value, const std::vector<double>& se) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < value.size(); ++k) n += std::abs(value[k]) > 2 * se[k];
+  return n;
+}
+
+}  // namespace
+
+std::size_t TipResolution::effect_resolved_knots() const {
+  return beyond_two_errors(effect, effect_se);
+}
+
+std::size_t TipResolution::deviation_resolved_knots() const {
+  return beyond_two_errors(deviation, deviation_se);
+}
+
+TipResolution tip_resolution(const forcing::CurveJackknife& jackknife, double tip_m) {
+  const auto& full = jackknife.full.tip;
   std::vector<double> tips;
-  for (const auto& [d, knots] : model.tip_log_gain) tips.push_back(d);
+  for (const auto& [d, knots] : full) tips.push_back(d);
   const std::string what = "resolving the " + forcing::tip_label(tip_m) + " tip";
   const auto held =
       std::find_if(tips.begin(), tips.end(), [&](double d) { return forcing::same_tip(d, tip_m); });
@@ -86,7 +128,7 @@ TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars
   out.tip_m = *held;
   out.lower_tip_m = *(held - 1);
   out.upper_tip_m = *(held + 1);
-  out.knot_frequencies_hz = model.knot_frequencies_hz;
+  out.knot_frequencies_hz = jackknife.knot_frequencies_hz;
   const double w = (out.tip_m - out.lower_tip_m) / (out.upper_tip_m - out.lower_tip_m);
   const auto effect_at = [&](const std::map<double, std::vector<double>>& t, std::size_t k) {
     return t.at(out.upper_tip_m)[k] - t.at(out.lower_tip_m)[k];
@@ -94,11 +136,10 @@ TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars
   const auto deviation_at = [&](const std::map<double, std::vector<double>>& t, std::size_t k) {
     return t.at(out.tip_m)[k] - ((1 - w) * t.at(out.lower_tip_m)[k] + w * t.at(out.upper_tip_m)[k]);
   };
-  const forcing::CurveJackknife jackknife = forcing::jackknife_curves(exemplars);
   out.tools = jackknife.replicates.size();
   for (std::size_t k = 0; k < out.knot_frequencies_hz.size(); ++k) {
-    out.effect.push_back(effect_at(model.tip_log_gain, k));
-    out.deviation.push_back(deviation_at(model.tip_log_gain, k));
+    out.effect.push_back(effect_at(full, k));
+    out.deviation.push_back(deviation_at(full, k));
     out.effect_se.push_back(jackknife.standard_error(
         [&](const forcing::CurveReplicate& r) { return effect_at(r.tip, k); }));
     out.deviation_se.push_back(jackknife.standard_error(

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/design/no_interpolation_baseline.hpp"
+#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_fit.hpp"
 
 namespace nibrig::model::design {
@@ -38,6 +39,17 @@ struct TipHoldOut {
   std::vector<InterpolatedPrediction> predictions;  // one per held-out exemplar, in input order
 };
 
+// The hold-out in a few numbers, over the predictable tools: how many beat both baselines, the
+// largest |RMS error − a baseline's|, and against the measured neighbours (every neighbour that
+// was measured is one comparison) how often the prediction is closer and the mean of each side.
+struct TipHoldOutSummary {
+  int predicted = 0, beats_every_baseline = 0;
+  double widest_baseline_gap_db = 0.0;
+  int compared_with_measured = 0, closer_than_measured = 0;
+  double mean_predicted_db = 0.0, mean_measured_db = 0.0;  // over those comparisons
+};
+TipHoldOutSummary summarize(const TipHoldOut& held);
+
 // Exemplars need their responses (forcing::attach_responses). Throws std::invalid_argument when
 // no exemplar has `tip_m`, when it is not strictly between two other fitted tips, or when the
 // training set cannot be fitted (forcing::fit_problems, joined).
@@ -56,10 +68,14 @@ struct TipResolution {
   std::vector<double> effect, effect_se;        // ln t_upper − ln t_lower, per knot
   std::vector<double> deviation, deviation_se;  // ln t_held − interpolation, per knot
   std::size_t tools = 0;                        // jackknife replicates
+  // Knots where the effect, or the deviation, exceeds twice its standard error.
+  std::size_t effect_resolved_knots() const;
+  std::size_t deviation_resolved_knots() const;
 };
 
+// From a jackknife of every exemplar (forcing::jackknife_curves: its full fit and replicates).
 // Throws std::invalid_argument when `tip_m` has no curve in the full fit or is not strictly
-// between two fitted tips, or when fewer than two tools can be left out.
-TipResolution tip_resolution(std::span<const forcing::ForcingExemplar> exemplars, double tip_m);
+// between two fitted tips, or when fewer than two tools could be left out.
+TipResolution tip_resolution(const forcing::CurveJackknife& jackknife, double tip_m);
 
 }  // namespace nibrig::model::design

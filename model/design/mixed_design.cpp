@@ -33,9 +33,9 @@ MixedDesign mixed_design(const DesignPoint& point, const mechanics::Design& temp
   std::vector<mechanics::Material> all = materials.materials();
   all.push_back(mixed);
   MixedDesign result{{}, mechanics::MaterialTable(std::move(all))};
-  result.design = forcing::printed_tool_design({mixed.name, forcing::kPrintedTipInsertLength},
-                                               point.tip_diameter_m, template_design,
-                                               result.materials);
+  result.design =
+      forcing::printed_tool_design({mixed.name, forcing::kPrintedTipInsertLength},
+                                   point.tip_diameter_m, template_design, result.materials);
   return result;
 }
 

@@ -12,8 +12,7 @@ std::vector<DesignPoint> no_interpolation_corners(const forcing::ForcingModel& m
   // The same checks as the prediction itself, so that a corner is never asked of a point that
   // cannot be predicted.
   interpolated_log_gain(model, point, model.frequencies_hz);
-  std::vector<double> tips;
-  for (const auto& [d, curve] : model.tip_log_gain) tips.push_back(d);  // std::map: ascending
+  const std::vector<double> tips = fitted_tips(model);
   const TipBracket b = bracket_tip(tips, point.tip_diameter_m, "the forcing model's tip curves");
   std::vector<double> corner_tips{tips[b.lower]};
   if (b.upper != b.lower) corner_tips.push_back(tips[b.upper]);

@@ -16,8 +16,7 @@ std::vector<double> interpolated_log_gain(const forcing::ForcingModel& model,
                                           const DesignPoint& point,
                                           std::span<const double> frequencies_hz) {
   validate(point);
-  std::vector<double> tips;
-  for (const auto& [d, curve] : model.tip_log_gain) tips.push_back(d);  // std::map: ascending
+  const std::vector<double> tips = fitted_tips(model);
   const TipBracket b = bracket_tip(tips, point.tip_diameter_m, "the forcing model's tip curves");
   std::vector<double> gain(frequencies_hz.size(), 0.0);
   for (std::size_t j = 0; j < frequencies_hz.size(); ++j) {

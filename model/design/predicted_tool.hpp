@@ -51,8 +51,8 @@ struct PredictionSetup {
   mechanics::Design template_design;     // the printed tools' stylus (assets/designs)
   mechanics::MaterialTable materials;
   const measure::ThresholdCurve* threshold = nullptr;  // weights the descriptors, as the catalog
-  double mesh_size = 0.0;                // m; 0 keeps the template's
-  int modes = 0;                         // 0 keeps the template's
+  double mesh_size = 0.0;                              // m; 0 keeps the template's
+  int modes = 0;                                       // 0 keeps the template's
 };
 
 struct PredictedTool {

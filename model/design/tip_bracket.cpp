@@ -7,6 +7,12 @@
 
 namespace nibrig::model::design {
 
+std::vector<double> fitted_tips(const forcing::ForcingModel& model) {
+  std::vector<double> tips;
+  for (const auto& [d, curve] : model.tip_log_gain) tips.push_back(d);  // std::map: ascending
+  return tips;
+}
+
 TipBracket bracket_tip(const std::vector<double>& diameters, double d, const std::string& what) {
   if (diameters.empty()) throw std::invalid_argument(what + ": no tip diameters to interpolate");
   if ((d < diameters.front() && !forcing::same_tip(d, diameters.front())) ||

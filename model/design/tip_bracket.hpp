@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "model/forcing/forcing_model.hpp"
+
 namespace nibrig::model::design {
 
 // The two neighbours of d among ascending `diameters` and the weight of the upper; lower == upper
@@ -16,5 +18,8 @@ struct TipBracket {
   double weight = 0.0;
 };
 TipBracket bracket_tip(const std::vector<double>& diameters, double d, const std::string& what);
+
+// The tip diameters a forcing model has curves for, ascending.
+std::vector<double> fitted_tips(const forcing::ForcingModel& model);
 
 }  // namespace nibrig::model::design

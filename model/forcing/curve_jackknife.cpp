@@ -26,11 +26,14 @@ std::string missing_curve(const CurveReplicate& full, const CurveReplicate& repl
 
 CurveJackknife jackknife_curves(std::span<const ForcingExemplar> exemplars,
                                 const ForcingFitOptions& options) {
-  const CurveReplicate full = curves_of(fit_forcing_model(exemplars, options));
+  CurveJackknife out;
+  const ForcingModel model = fit_forcing_model(exemplars, options);
+  out.full = curves_of(model);
+  out.knot_frequencies_hz = model.knot_frequencies_hz;
+  const CurveReplicate& full = out.full;
   std::set<std::string> tools;
   for (const auto& e : exemplars) tools.insert(e.tool);
 
-  CurveJackknife out;
   for (const std::string& tool : tools) {
     std::vector<ForcingExemplar> rest;
     for (const auto& e : exemplars)

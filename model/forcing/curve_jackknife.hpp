@@ -27,8 +27,10 @@ struct CurveReplicate {
 };
 
 struct CurveJackknife {
-  std::vector<std::string> tools;          // left out in turn, one replicate each
-  std::vector<CurveReplicate> replicates;  // in the order of `tools`
+  CurveReplicate full;                      // the fit of every tool, whose errors these are
+  std::vector<double> knot_frequencies_hz;  // of every curve's knots
+  std::vector<std::string> tools;           // left out in turn, one replicate each
+  std::vector<CurveReplicate> replicates;   // in the order of `tools`
   // Tools that could not be left out, each with why: without them a curve of the full fit is no
   // longer identifiable, or has no exemplar left. A jackknife over the others still describes
   // the rest of the data, but says nothing about those tools' own influence.

@@ -5,8 +5,6 @@
 // design_cli_test): its cost does not depend on how the space was fitted.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-
 #include "model/design/design_search.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
@@ -78,12 +76,10 @@ void BM_ForcingJackknifeAndHoldout(benchmark::State& state) {
   auto& in = inputs(true);
   std::size_t tools = 0, resolved = 0;
   for (auto _ : state) {
-    tools = forcing::jackknife_curves(in.exemplars).replicates.size();
+    const auto jackknife = forcing::jackknife_curves(in.exemplars);
+    tools = jackknife.replicates.size();
     benchmark::DoNotOptimize(design::hold_out_tip(in.exemplars, 0.002).predictions.size());
-    const auto r = design::tip_resolution(in.exemplars, 0.002);
-    resolved = 0;
-    for (std::size_t k = 0; k < r.effect.size(); ++k)
-      resolved += std::abs(r.effect[k]) > 2 * r.effect_se[k];
+    resolved = design::tip_resolution(jackknife, 0.002).effect_resolved_knots();
   }
   state.counters["tools"] = static_cast<double>(tools);
   state.counters["tip_effect_knots_resolved"] = static_cast<double>(resolved);

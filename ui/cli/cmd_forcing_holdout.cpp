@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "model/design/interpolation_check.hpp"
+#include "model/forcing/curve_jackknife.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_inputs.hpp"
@@ -72,27 +73,23 @@ std::string resolution_table(const design::TipResolution& r) {
       r.tools, "dB at Hz");
   for (double f : r.knot_frequencies_hz) out += fmt::format("{:>7g}", f);
   out += "\n";
-  int effect_resolved = 0, deviation_resolved = 0;
   const auto rows = [&](const std::string& label, const std::vector<double>& value,
-                        const std::vector<double>& se, int& resolved) {
+                        const std::vector<double>& se) {
     out += fmt::format("{:<34}", label);
     for (double v : value) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(v));
     out += fmt::format("\n{:<34}", "  ± (SE)");
-    for (std::size_t k = 0; k < se.size(); ++k) {
-      out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(se[k]));
-      resolved += std::abs(value[k]) > 2 * se[k];
-    }
+    for (double e : se) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(e));
     out += "\n";
   };
-  rows(fmt::format("{} − {} (the tip effect)", upper, lower), r.effect, r.effect_se,
-       effect_resolved);
+  rows(fmt::format("{} − {} (the tip effect)", upper, lower), r.effect, r.effect_se);
   rows(fmt::format("{} − the line {}–{}", forcing::tip_label(r.tip_m), lower, upper), r.deviation,
-       r.deviation_se, deviation_resolved);
+       r.deviation_se);
   const std::size_t knots = r.knot_frequencies_hz.size();
   return out + fmt::format(
                    "the tip effect exceeds twice its SE at {} of {} knots; the {} curve departs "
                    "from the interpolation by more than twice its SE at {} of {}\n",
-                   effect_resolved, knots, forcing::tip_label(r.tip_m), deviation_resolved, knots);
+                   r.effect_resolved_knots(), knots, forcing::tip_label(r.tip_m),
+                   r.deviation_resolved_knots(), knots);
 }
 
 void run_holdout(const HoldoutOptions& o) {
@@ -117,8 +114,6 @@ void run_holdout(const HoldoutOptions& o) {
   std::vector<double> sum_by_speed(speeds.size()), lower_by_speed(speeds.size()),
       upper_by_speed(speeds.size());
   std::vector<int> beats_by_speed(speeds.size());
-  int predicted = 0, beats = 0, with_measured = 0, closer = 0;
-  double interpolated_sum = 0, measured_sum = 0;
   for (const auto& r : held.predictions) {
     if (!r.not_predictable.empty()) {
       std::cout << fmt::format("{:<10}{:<11}  not predictable: {}\n", r.tool, r.surface,
@@ -133,8 +128,6 @@ void run_holdout(const HoldoutOptions& o) {
                              r.surface, c.interpolated.rms_db, c.baselines[0].error.rms_db,
                              c.baselines[1].error.rms_db, c.beats_every_baseline() ? "yes" : "no",
                              measured(r.lower_measured_rms_db), measured(r.upper_measured_rms_db));
-    ++predicted;
-    beats += c.beats_every_baseline();
     for (std::size_t s = 0; s < speeds.size(); ++s) {
       const double e = c.interpolated.rms_db_by_speed[s];
       const double l = c.baselines[0].error.rms_db_by_speed[s];
@@ -142,14 +135,9 @@ void run_holdout(const HoldoutOptions& o) {
       sum_by_speed[s] += e, lower_by_speed[s] += l, upper_by_speed[s] += u;
       beats_by_speed[s] += e < l && e < u;
     }
-    for (double m : {r.lower_measured_rms_db, r.upper_measured_rms_db}) {
-      if (m < 0) continue;
-      ++with_measured;
-      closer += c.interpolated.rms_db < m;
-      interpolated_sum += c.interpolated.rms_db;
-      measured_sum += m;
-    }
   }
+  const design::TipHoldOutSummary summary = design::summarize(held);
+  const int predicted = summary.predicted;
   if (predicted == 0) throw std::runtime_error("no held-out tool could be predicted");
 
   std::cout << fmt::format(
@@ -162,15 +150,17 @@ void run_holdout(const HoldoutOptions& o) {
                              fmt::format("{} of {}", beats_by_speed[s], predicted));
   std::cout << fmt::format(
       "interpolation beats both no-interpolation baselines (Fig. 14) on {} of {} held-out tools",
-      beats, predicted);
-  if (with_measured > 0)
+      summary.beats_every_baseline, predicted);
+  if (summary.compared_with_measured > 0)
     std::cout << fmt::format(
         "; the prediction is closer than a measured neighbour in {} of {} comparisons (mean {:.2f} "
         "vs {:.2f} dB)",
-        closer, with_measured, interpolated_sum / with_measured, measured_sum / with_measured);
+        summary.closer_than_measured, summary.compared_with_measured, summary.mean_predicted_db,
+        summary.mean_measured_db);
   std::cout << "\n";
 
-  std::cout << resolution_table(design::tip_resolution(inputs.exemplars, tip_m));
+  std::cout << resolution_table(
+      design::tip_resolution(forcing::jackknife_curves(inputs.exemplars), tip_m));
 
   if (!o.csv.empty()) {
     write_text_file(o.csv, holdout_csv(held, speeds));

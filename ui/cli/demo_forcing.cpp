@@ -66,24 +66,9 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
     worst += fmt::format("{}{} on {} {:.2f} dB", worst.empty() ? "" : ", ", loo.results[k].tool,
                          loo.results[k].surface, loo.results[k].rms_db);
 
-  const auto held = design::hold_out_tip(inputs.exemplars, 0.002);
-  double interpolated = 0, neighbours = 0, widest = 0;
-  int compared = 0, held_predicted = 0, beats = 0;
-  for (const auto& r : held.predictions) {
-    if (!r.not_predictable.empty()) continue;
-    ++held_predicted;
-    beats += r.comparison.beats_every_baseline();
-    const double rms_db = r.comparison.interpolated.rms_db;
-    for (const auto& baseline : r.comparison.baselines)
-      widest = std::max(widest, std::abs(rms_db - baseline.error.rms_db));
-    for (double m : {r.lower_measured_rms_db, r.upper_measured_rms_db})
-      if (m >= 0) interpolated += rms_db, neighbours += m, ++compared;
-  }
-
-  const design::TipResolution resolution = design::tip_resolution(inputs.exemplars, 0.002);
-  int effect_resolved = 0;
-  for (std::size_t k = 0; k < resolution.effect.size(); ++k)
-    effect_resolved += std::abs(resolution.effect[k]) > 2 * resolution.effect_se[k];
+  const design::TipHoldOutSummary held =
+      design::summarize(design::hold_out_tip(inputs.exemplars, 0.002));
+  const design::TipResolution resolution = design::tip_resolution(jackknife, 0.002);
 
   const auto prediction = load_prediction_inputs(options, "", model);
   const design::PredictionSetup& setup = prediction->setup;
@@ -144,10 +129,10 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              options.modes, options.mesh_size * 1e3, model.exemplar_count(),
              model.surface_forcing.size(), model.residual_rms_db, loo.summary.predicted,
              loo.summary.mean_rms_db, loo.summary.median_rms_db, loo.summary.max_rms_db, worst,
-             loo.summary.mean_baseline_rms_db, compared ? interpolated / compared : 0.0,
-             compared ? neighbours / compared : 0.0, beats, held_predicted, widest, effect_resolved,
-             resolution.effect.size(), kInterpolated, predicted.mu,
-             predicted.vibration.weighted_mean) +
+             loo.summary.mean_baseline_rms_db, held.mean_predicted_db, held.mean_measured_db,
+             held.beats_every_baseline, held.predicted, held.widest_baseline_gap_db,
+             resolution.effect_resolved_knots(), resolution.effect.size(), kInterpolated,
+             predicted.mu, predicted.vibration.weighted_mean) +
          search_line +
          fmt::format(
              "  report: {}/ (forcing.json, tip_curves.png, material_curves.png, "

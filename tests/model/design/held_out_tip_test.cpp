@@ -75,6 +75,15 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
   // On average the prediction is closer than a measured neighbour: 2.03 vs 2.37 dB when written.
   EXPECT_LT(interpolated_sum / with_measured, measured_sum / with_measured);
   EXPECT_GT(closer_than_measured, with_measured / 2);
+  // The summary the demo and `forcing holdout` print counts the same as this test does.
+  const TipHoldOutSummary summary = summarize(held);
+  EXPECT_EQ(summary.predicted, predicted);
+  EXPECT_EQ(summary.beats_every_baseline, beaten);
+  EXPECT_EQ(summary.compared_with_measured, with_measured);
+  EXPECT_EQ(summary.closer_than_measured, closer_than_measured);
+  EXPECT_NEAR(summary.mean_predicted_db, interpolated_sum / with_measured, 1e-12);
+  EXPECT_NEAR(summary.mean_measured_db, measured_sum / with_measured, 1e-12);
+  EXPECT_LE(summary.widest_baseline_gap_db, 0.15);  // as the per-tool bound above
 }
 
 }  // namespace

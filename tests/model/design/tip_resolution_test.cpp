@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "model/design/interpolation_check.hpp"
+#include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/hermite_curve.hpp"
 #include "tests/model/forcing/synthetic_exemplars.hpp"
 
@@ -33,7 +34,7 @@ forcing::test::SyntheticTruth interpolable_truth() {
 
 TEST(TipResolution, RecoversAnExactlyInterpolableTipWithoutSpread) {
   const auto truth = interpolable_truth();
-  const TipResolution r = tip_resolution(truth.exemplars, 0.002);
+  const TipResolution r = tip_resolution(forcing::jackknife_curves(truth.exemplars), 0.002);
   EXPECT_DOUBLE_EQ(r.lower_tip_m, 0.001);
   EXPECT_DOUBLE_EQ(r.upper_tip_m, 0.004);
   EXPECT_EQ(r.tools, 9u);
@@ -49,7 +50,7 @@ TEST(TipResolution, RecoversAnExactlyInterpolableTipWithoutSpread) {
 TEST(TipResolution, WithNoiseTheErrorsCoverTheTruth) {
   auto truth = interpolable_truth();
   forcing::test::add_log_noise(truth.exemplars, 0.2, 11);
-  const TipResolution r = tip_resolution(truth.exemplars, 0.002);
+  const TipResolution r = tip_resolution(forcing::jackknife_curves(truth.exemplars), 0.002);
   // The truth within 3 standard errors at (nearly) every knot: 11 knots, two statistics.
   int covered = 0;
   for (std::size_t k = 0; k < truth.knots.size(); ++k) {
@@ -63,8 +64,10 @@ TEST(TipResolution, WithNoiseTheErrorsCoverTheTruth) {
 
 TEST(TipResolution, RefusesATipWithoutNeighboursOnBothSides) {
   const auto truth = forcing::test::make_synthetic_truth();
-  EXPECT_THROW(tip_resolution(truth.exemplars, 0.004), std::invalid_argument);
-  EXPECT_THROW(tip_resolution(truth.exemplars, 0.003), std::invalid_argument);
+  EXPECT_THROW(tip_resolution(forcing::jackknife_curves(truth.exemplars), 0.004),
+               std::invalid_argument);
+  EXPECT_THROW(tip_resolution(forcing::jackknife_curves(truth.exemplars), 0.003),
+               std::invalid_argument);
   // The hold-out itself says why, as `nibrig forcing holdout --tip 4` prints it.
   try {
     hold_out_tip(truth.exemplars, 0.004);
