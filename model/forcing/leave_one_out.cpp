@@ -97,7 +97,8 @@ SpectrumError log_spectrum_error(const io::VelocitySpectrum& predicted,
 }
 
 LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
-                          std::span<const std::size_t> held_out, const ForcingFitOptions& options) {
+                          std::span<const std::size_t> held_out, const ForcingFitOptions& options,
+                          const measure::ThresholdCurve* threshold) {
   LeaveOneOut out;
   for (std::size_t index : held_out) {
     if (index >= exemplars.size())
@@ -124,17 +125,23 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
       result.rms_db_by_speed = error.rms_db_by_speed;
       result.baseline_rms_db =
           log_spectrum_error(surface_mean(held, training), held.measured).rms_db;
+      if (threshold != nullptr)
+        result.descriptor_error =
+            descriptor_error(held.tool, held.surface, predicted, held.measured, *threshold);
     }
     out.results.push_back(std::move(result));
   }
 
   std::vector<double> errors, baselines;
   std::vector<std::size_t> order;
+  double weighted_mean_squares = 0.0;
   for (std::size_t k = 0; k < out.results.size(); ++k) {
     if (!out.results[k].predictable) continue;
     errors.push_back(out.results[k].rms_db);
     baselines.push_back(out.results[k].baseline_rms_db);
     order.push_back(k);
+    if (const auto& d = out.results[k].descriptor_error)
+      weighted_mean_squares += d->log10_weighted_mean * d->log10_weighted_mean;
   }
   auto& summary = out.summary;
   summary.predicted = errors.size();
@@ -144,6 +151,7 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
     summary.mean_rms_db = std::accumulate(errors.begin(), errors.end(), 0.0) / n;
     summary.mean_baseline_rms_db = std::accumulate(baselines.begin(), baselines.end(), 0.0) / n;
     summary.median_rms_db = median_of(errors);
+    summary.weighted_mean_rms_log10 = std::sqrt(weighted_mean_squares / n);
     summary.max_rms_db = *std::max_element(errors.begin(), errors.end());
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return out.results[a].rms_db > out.results[b].rms_db;
@@ -152,6 +160,17 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
     summary.worst = order;
   }
   return out;
+}
+
+std::vector<DescriptorError> held_out_descriptor_errors(std::span<const ForcingExemplar> exemplars,
+                                                        const measure::ThresholdCurve& threshold,
+                                                        const ForcingFitOptions& options) {
+  std::vector<std::size_t> every(exemplars.size());
+  std::iota(every.begin(), every.end(), std::size_t{0});
+  std::vector<DescriptorError> errors;
+  for (auto& result : leave_one_out(exemplars, every, options, &threshold).results)
+    if (result.descriptor_error) errors.push_back(std::move(*result.descriptor_error));
+  return errors;
 }
 
 }  // namespace nibrig::model::forcing

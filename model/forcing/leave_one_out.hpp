@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "model/forcing/descriptor_error.hpp"
 #include "model/forcing/forcing_fit.hpp"
 
 namespace nibrig::model::forcing {
@@ -25,12 +27,18 @@ struct HeldOutResult {
   // sounds like this".
   double baseline_rms_db = 0.0;
   std::size_t training_exemplars = 0;
+  // How far the prediction's perceptual descriptors are from the measured ones, when a threshold
+  // curve was given to weigh them.
+  std::optional<DescriptorError> descriptor_error;
 };
 
 struct LeaveOneOutSummary {
   std::size_t predicted = 0, not_predictable = 0;
   double mean_rms_db = 0.0, median_rms_db = 0.0, max_rms_db = 0.0;
   double mean_baseline_rms_db = 0.0;
+  // RMS over the predicted exemplars of log10(predicted / measured) of the perceptually weighted
+  // mean vibration, when a threshold was given (0 otherwise).
+  double weighted_mean_rms_log10 = 0.0;
   std::vector<std::size_t> worst;  // indices into the results, worst first, at most three
 };
 
@@ -42,10 +50,20 @@ struct LeaveOneOut {
 // Holds out exemplars[held_out[k]] in turn (every other exemplar trains). An exemplar whose
 // surface, tip or material no other exemplar shares, or without which a curve of the training set
 // is not identifiable, is reported as not predictable with the reason (fit_problems), never
-// skipped silently. Throws std::invalid_argument for an index out of range.
+// skipped silently. With a threshold curve, each prediction's descriptor error is computed too.
+// Throws std::invalid_argument for an index out of range.
 LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
                           std::span<const std::size_t> held_out,
-                          const ForcingFitOptions& options = {});
+                          const ForcingFitOptions& options = {},
+                          const measure::ThresholdCurve* threshold = nullptr);
+
+// The descriptor errors of every exemplar that can be held out (all of them in turn; those that
+// cannot be predicted are left out, as leave_one_out says why). What a predicted tool's placement
+// uncertainty is estimated from, computed when the model is fitted because it needs each
+// exemplar's measured spectrum and response.
+std::vector<DescriptorError> held_out_descriptor_errors(std::span<const ForcingExemplar> exemplars,
+                                                        const measure::ThresholdCurve& threshold,
+                                                        const ForcingFitOptions& options = {});
 
 // Error of a predicted against a measured spectrum on the same grid: RMS of 20·log10(p/m) over all
 // bins and speeds, and per speed; bins where either is ≤ 0 are left out. Throws

@@ -1,0 +1,36 @@
+#include "model/forcing/descriptor_error.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "model/measure/descriptors.hpp"
+
+namespace nibrig::model::forcing {
+
+DescriptorError descriptor_error(const std::string& tool, const std::string& surface,
+                                 const io::VelocitySpectrum& predicted,
+                                 const io::VelocitySpectrum& measured,
+                                 const measure::ThresholdCurve& threshold) {
+  const auto p = measure::compute_vibration_descriptors(predicted, threshold, kMaxDescriptorBands);
+  const auto m = measure::compute_vibration_descriptors(measured, threshold, kMaxDescriptorBands);
+  auto ratio = [&](double predicted_value, double measured_value, const std::string& what) {
+    if (!(predicted_value > 0 && measured_value > 0))
+      throw std::invalid_argument("descriptor error of " + tool + " on " + surface + ": the " +
+                                  what + " is not positive (predicted " +
+                                  std::to_string(predicted_value) + ", measured " +
+                                  std::to_string(measured_value) + "), so it has no logarithm");
+    return std::log10(predicted_value / measured_value);
+  };
+  DescriptorError error{
+      tool, surface, ratio(p.weighted_mean, m.weighted_mean, "weighted mean"), {}};
+  for (int k = kMinDescriptorBands; k <= kMaxDescriptorBands; ++k) {
+    auto& bands = error.log10_band_energies[k];
+    for (std::size_t j = 0; j < static_cast<std::size_t>(k); ++j)
+      bands.push_back(
+          ratio(p.band_energies.at(k)[j], m.band_energies.at(k)[j],
+                "energy of band " + std::to_string(j + 1) + " of " + std::to_string(k)));
+  }
+  return error;
+}
+
+}  // namespace nibrig::model::forcing
