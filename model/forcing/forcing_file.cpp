@@ -49,6 +49,48 @@ std::vector<double> curve_at(const json& entry, const std::filesystem::path& fil
   return values;
 }
 
+nlohmann::json descriptor_errors_json(const ForcingModel& model) {
+  json exemplars = json::array();
+  for (const auto& e : model.held_out_descriptor_errors) {
+    json bands = json::object();
+    for (const auto& [k, values] : e.log10_band_energies) bands[std::to_string(k)] = values;
+    exemplars.push_back({{"tool", e.tool},
+                         {"surface", e.surface},
+                         {"log10_weighted_mean", e.log10_weighted_mean},
+                         {"log10_band_energies", bands}});
+  }
+  return {{"threshold_curve", model.descriptor_error_threshold}, {"exemplars", exemplars}};
+}
+
+void read_descriptor_errors(const json& root, const std::filesystem::path& file,
+                            ForcingModel& model) {
+  const std::string key = "held_out_descriptor_errors";
+  const auto& section = jf::as_object(root[key], file, key);
+  model.descriptor_error_threshold = jf::string_member(section, "threshold_curve", file, key);
+  const std::string list = jf::member_path(key, "exemplars");
+  const auto& exemplars = jf::as_array(jf::member(section, "exemplars", file, key), file, list);
+  for (std::size_t i = 0; i < exemplars.size(); ++i) {
+    const std::string at = jf::element_path(list, i);
+    DescriptorError e;
+    e.tool = jf::string_member(exemplars[i], "tool", file, at);
+    e.surface = jf::string_member(exemplars[i], "surface", file, at);
+    e.log10_weighted_mean = jf::number_member(exemplars[i], "log10_weighted_mean", file, at);
+    const std::string bands_at = jf::member_path(at, "log10_band_energies");
+    const auto& bands =
+        jf::as_object(jf::member(exemplars[i], "log10_band_energies", file, at), file, bands_at);
+    for (int k = kMinDescriptorBands; k <= kMaxDescriptorBands; ++k) {
+      const std::string band_at = jf::member_path(bands_at, std::to_string(k));
+      auto values =
+          jf::as_number_array(jf::member(bands, std::to_string(k), file, bands_at), file, band_at);
+      require(
+          values.size() == static_cast<std::size_t>(k), file, band_at,
+          "expected " + std::to_string(k) + " band values, found " + std::to_string(values.size()));
+      e.log10_band_energies[k] = std::move(values);
+    }
+    model.held_out_descriptor_errors.push_back(std::move(e));
+  }
+}
+
 bool all_zero(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0; });
 }
@@ -80,6 +122,8 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
                 {"observations", model.observations},
                 {"skipped_nonpositive", model.skipped_nonpositive},
                 {"exemplars", exemplars}};
+  if (!model.held_out_descriptor_errors.empty())
+    out["held_out_descriptor_errors"] = descriptor_errors_json(model);
   out["notes"] = model.notes;
   io::write_file_atomically(file, out.dump(1) + "\n");
 }
@@ -181,6 +225,7 @@ ForcingModel read_forcing_model(const std::filesystem::path& file) {
                                    jf::string_member(exemplars[i], "surface", file, at),
                                    jf::number_member(exemplars[i], "rms_db", file, at)});
   }
+  if (root.contains("held_out_descriptor_errors")) read_descriptor_errors(root, file, model);
   if (root.contains("notes")) {
     const auto& notes = jf::as_array(root["notes"], file, "notes");
     for (std::size_t i = 0; i < notes.size(); ++i)

@@ -16,14 +16,19 @@ namespace nibrig::model::forcing {
 //  "surfaces": [{"id", "forcing_n": [[one per frequency] per speed]}],
 //  "fit": {"residual_rms_db", "observations", "skipped_nonpositive",
 //          "exemplars": [{"tool", "surface", "rms_db"}]},
+//  "held_out_descriptor_errors": {"threshold_curve", "exemplars": [{"tool", "surface",
+//          "log10_weighted_mean", "log10_band_energies": {"2": [2 values], …, "5": [5 values]}}]},
 //  "notes": [...]}
-// log_gain is the natural log of the gain. Written through a temporary file and a rename.
+// log_gain is the natural log of the gain. held_out_descriptor_errors is optional (files written
+// before it existed lack it; the model's vector is then empty). Written through a temporary file
+// and a rename.
 void write_forcing_model(const std::filesystem::path& file, const ForcingModel& model);
 
 // Throws io::FormatError naming the file and field: wrong format or version, a missing field,
 // knots or frequencies not strictly increasing, frequencies outside the knots, a curve or forcing
 // row of the wrong length, duplicate tips, materials or surfaces, a reference without its curve or
-// with a non-zero one (the gauge), negative or non-finite numbers where they cannot be.
+// with a non-zero one (the gauge), negative or non-finite numbers where they cannot be, a
+// descriptor error without every band count from 2 to 5 or with the wrong number of bands.
 ForcingModel read_forcing_model(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::forcing

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "model/forcing/descriptor_error.hpp"
 #include "model/io/velocity_spectrum.hpp"
 
 namespace nibrig::model::forcing {
@@ -46,6 +47,13 @@ struct ForcingModel {
   std::size_t skipped_nonpositive = 0;
   // Where the data and responses came from and what was assumed, written with the model.
   std::vector<std::string> notes;
+  // How far the descriptors of tools this model predicts were from the measured ones when each
+  // exemplar was held out (held_out_descriptor_errors), weighted by the named threshold curve:
+  // the error a predicted tool's descriptors carry. Empty for a model fitted without them (a file
+  // written before they existed): its predictions are then placed as if their descriptors were
+  // measured.
+  std::vector<DescriptorError> held_out_descriptor_errors;
+  std::string descriptor_error_threshold;
 
   std::size_t exemplar_count() const { return exemplar_fits.size(); }
 

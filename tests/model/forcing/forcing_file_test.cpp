@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/forcing/forcing_fit.hpp"
+#include "model/forcing/leave_one_out.hpp"
 #include "model/io/format_error.hpp"
 #include "tests/model/forcing/synthetic_exemplars.hpp"
 #include "tests/support/test_paths.hpp"
@@ -20,6 +21,9 @@ ForcingModel fitted_model() {
   test::add_log_noise(truth.exemplars, 0.1, 1);
   ForcingModel model = fit_forcing_model(truth.exemplars);
   model.notes = {"synthetic", "second note"};
+  model.held_out_descriptor_errors = held_out_descriptor_errors(
+      truth.exemplars, measure::ThresholdCurve({10.0, 1000.0}, {0.01, 0.1}, "test threshold"));
+  model.descriptor_error_threshold = "test threshold";
   return model;
 }
 
@@ -50,6 +54,27 @@ TEST(ForcingFile, RoundTripKeepsEveryNumber) {
     EXPECT_EQ(back.exemplar_fits[e].rms_db, model.exemplar_fits[e].rms_db);
   }
   EXPECT_EQ(back.notes, model.notes);
+  EXPECT_EQ(back.descriptor_error_threshold, model.descriptor_error_threshold);
+  ASSERT_EQ(back.held_out_descriptor_errors.size(), model.held_out_descriptor_errors.size());
+  ASSERT_FALSE(model.held_out_descriptor_errors.empty());
+  for (std::size_t e = 0; e < model.held_out_descriptor_errors.size(); ++e) {
+    const auto &a = model.held_out_descriptor_errors[e], &b = back.held_out_descriptor_errors[e];
+    EXPECT_EQ(b.tool, a.tool);
+    EXPECT_EQ(b.surface, a.surface);
+    EXPECT_EQ(b.log10_weighted_mean, a.log10_weighted_mean);
+    EXPECT_EQ(b.log10_band_energies, a.log10_band_energies);
+  }
+}
+
+TEST(ForcingFile, AFileWithoutDescriptorErrorsReadsWithNone) {
+  // Files written before the held-out descriptor errors existed.
+  const auto dir = nibrig::test::scratch_dir("forcing_file_old");
+  ForcingModel model = fitted_model();
+  model.held_out_descriptor_errors.clear();
+  write_forcing_model(dir / "forcing.json", model);
+  std::ifstream in(dir / "forcing.json");
+  EXPECT_FALSE(nlohmann::json::parse(in).contains("held_out_descriptor_errors"));
+  EXPECT_TRUE(read_forcing_model(dir / "forcing.json").held_out_descriptor_errors.empty());
 }
 
 class DamagedForcingFile : public ::testing::Test {
@@ -122,6 +147,21 @@ TEST_F(DamagedForcingFile, BadValuesAreNamed) {
   j = good_;
   j["surfaces"][1]["id"] = j["surfaces"][0]["id"];
   expect_refused(j, "surfaces[1].id", "a second entry");
+}
+
+TEST_F(DamagedForcingFile, BadDescriptorErrorsAreNamed) {
+  auto j = good_;
+  j["held_out_descriptor_errors"]["exemplars"][1]["log10_band_energies"]["3"].erase(0);
+  expect_refused(j, "held_out_descriptor_errors.exemplars[1].log10_band_energies.3",
+                 "expected 3 band values, found 2");
+  j = good_;
+  j["held_out_descriptor_errors"]["exemplars"][0]["log10_band_energies"].erase("5");
+  expect_refused(j, "held_out_descriptor_errors.exemplars[0].log10_band_energies.5",
+                 "missing field");
+  j = good_;
+  j["held_out_descriptor_errors"]["exemplars"][0]["log10_weighted_mean"] = "loud";
+  expect_refused(j, "held_out_descriptor_errors.exemplars[0].log10_weighted_mean",
+                 "expected a number");
 }
 
 }  // namespace
