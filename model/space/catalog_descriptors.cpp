@@ -1,5 +1,6 @@
 #include "model/space/catalog_descriptors.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -68,6 +69,14 @@ std::vector<std::string> paper_descriptor_names(std::size_t dims) {
   for (std::size_t b = 1; dims >= 3 && b < dims; ++b)
     names.push_back("log10_band_" + std::to_string(b) + "_of_" + std::to_string(dims - 1) +
                     "_energy");
+  return names;
+}
+
+std::vector<std::string> all_paper_descriptor_names() {
+  std::vector<std::string> names;
+  for (std::size_t dims = 1; dims <= kMaxDims; ++dims)
+    for (auto& name : paper_descriptor_names(dims))
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   return names;
 }
 

@@ -25,6 +25,10 @@ struct DescriptorTable {
 // band energies for up to 5 bands). Throws std::invalid_argument otherwise.
 std::vector<std::string> paper_descriptor_names(std::size_t dims);
 
+// Every name paper_descriptor_names gives for any dimension, each once: μ, the weighted mean, then
+// the band energies by band count (16 names).
+std::vector<std::string> all_paper_descriptor_names();
+
 // The stimulus named "tool/surface" is the catalog pairing of those ids. Throws io::FormatError
 // naming `catalog_file` and the stimulus when a stimulus has no such pairing, or its pairing lacks
 // friction or vibration descriptors, or a value is not positive where a logarithm is taken.
@@ -34,8 +38,7 @@ DescriptorTable descriptors_for_stimuli(const io::Catalog& catalog,
 
 // Every pairing of the catalog that has both friction and vibration, in catalog order.
 DescriptorTable descriptors_of_catalog(const io::Catalog& catalog,
-                                       const std::filesystem::path& catalog_file,
-                                       std::size_t dims);
+                                       const std::filesystem::path& catalog_file, std::size_t dims);
 
 // "tool/surface"
 std::string pairing_name(const io::Pairing& pairing);

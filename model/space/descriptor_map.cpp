@@ -13,8 +13,7 @@ namespace {
 Eigen::VectorXd standardised_row(const DescriptorMap& map, const Eigen::VectorXd& x) {
   Eigen::VectorXd z(x.size() + 1);
   z(0) = 1.0;
-  z.tail(x.size()) =
-      (x - map.descriptor_mean).array() / map.descriptor_scale.array();
+  z.tail(x.size()) = (x - map.descriptor_mean).array() / map.descriptor_scale.array();
   return z;
 }
 
@@ -57,8 +56,9 @@ DescriptorMap fit_descriptor_map(const Eigen::MatrixXd& coordinates,
   map.descriptor_mean = descriptors.colwise().mean().transpose();
   map.descriptor_scale.resize(p);
   for (Eigen::Index j = 0; j < p; ++j) {
-    const double sd = std::sqrt((descriptors.col(j).array() - map.descriptor_mean(j)).square().sum() /
-                                static_cast<double>(n - 1));
+    const double sd =
+        std::sqrt((descriptors.col(j).array() - map.descriptor_mean(j)).square().sum() /
+                  static_cast<double>(n - 1));
     if (!(sd > 0.0))
       throw std::invalid_argument("descriptor '" + names[static_cast<std::size_t>(j)] +
                                   "' is the same for every stimulus: it cannot place anything");
@@ -85,12 +85,35 @@ Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd
                                 " descriptors, got " + std::to_string(descriptors.size()));
   for (Eigen::Index j = 0; j < descriptors.size(); ++j)
     if (!std::isfinite(descriptors(j)))
-      throw std::invalid_argument("descriptor '" + map.descriptor_names[static_cast<std::size_t>(j)] +
-                                  "' is not finite");
+      throw std::invalid_argument(
+          "descriptor '" + map.descriptor_names[static_cast<std::size_t>(j)] + "' is not finite");
   const Eigen::VectorXd z = standardised_row(map, descriptors);
   Placement p;
   p.mean = map.coefficients * z;
   p.covariance = map.residual_covariance * (1.0 + z.dot(map.design_inverse * z));
+  return p;
+}
+
+Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors,
+                                 const Eigen::MatrixXd& descriptor_covariance) {
+  Placement p = place_from_descriptors(map, descriptors);
+  const Eigen::Index n = descriptors.size();
+  if (descriptor_covariance.rows() != n || descriptor_covariance.cols() != n)
+    throw std::invalid_argument("expected a " + std::to_string(n) + " x " + std::to_string(n) +
+                                " descriptor covariance, got " +
+                                std::to_string(descriptor_covariance.rows()) + " x " +
+                                std::to_string(descriptor_covariance.cols()));
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (!(std::isfinite(descriptor_covariance(j, j)) && descriptor_covariance(j, j) >= 0))
+      throw std::invalid_argument("the variance of descriptor '" +
+                                  map.descriptor_names[static_cast<std::size_t>(j)] +
+                                  "' is negative or not finite");
+  const double asymmetry = (descriptor_covariance - descriptor_covariance.transpose()).norm();
+  if (!(asymmetry <= 1e-12 * (1.0 + descriptor_covariance.norm())))
+    throw std::invalid_argument("the descriptor covariance is not symmetric");
+  const Eigen::MatrixXd jacobian =
+      map.coefficients.rightCols(n) * map.descriptor_scale.cwiseInverse().asDiagonal();
+  p.covariance += jacobian * descriptor_covariance * jacobian.transpose();
   return p;
 }
 

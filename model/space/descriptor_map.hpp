@@ -15,7 +15,7 @@ namespace nibrig::model::space {
 struct DescriptorMap {
   std::vector<std::string> descriptor_names;
   Eigen::VectorXd descriptor_mean, descriptor_scale;  // per descriptor
-  Eigen::MatrixXd coefficients;         // dims × (1 + descriptors)
+  Eigen::MatrixXd coefficients;                       // dims × (1 + descriptors)
   Eigen::MatrixXd design_inverse;       // (ZᵀZ)⁻¹ of the design matrix Z = [1, z]
   Eigen::MatrixXd residual_covariance;  // dims × dims, unbiased (n − 1 − descriptors degrees)
   std::vector<double> r_squared;        // per axis
@@ -39,6 +39,14 @@ struct Placement {
 // the map and the uncertainty of the map itself (larger far from the judged descriptors). Throws
 // std::invalid_argument naming the descriptor for a wrong length or a non-finite value.
 Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors);
+
+// The same for descriptors that are themselves uncertain (a predicted tool's): their error
+// covariance (descriptors × descriptors, in the map's descriptor units) carried through the map,
+// J·Σ·Jᵀ with J = ∂coordinates/∂descriptors = B[:, 1:]·diag(1/scale), is added to the prediction
+// covariance. Exact, the map being linear. Throws as above, and for a covariance of the wrong
+// size, not symmetric or with a negative or non-finite diagonal.
+Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors,
+                                 const Eigen::MatrixXd& descriptor_covariance);
 
 // P(a chosen as closer to the reference than b) when any of the three is uncertain: mean and
 // standard deviation over `samples` draws of the uncertain positions (a judged stimulus has a zero

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/io/format_error.hpp"
@@ -15,7 +16,8 @@ const std::filesystem::path& catalog_file() {
   return f;
 }
 
-const io::Pairing& pairing(const io::Catalog& c, const std::string& tool, const std::string& surface) {
+const io::Pairing& pairing(const io::Catalog& c, const std::string& tool,
+                           const std::string& surface) {
   for (const auto& p : c.pairings)
     if (p.tool == tool && p.surface == surface) return p;
   throw std::runtime_error("no pairing " + tool + "/" + surface);
@@ -23,7 +25,8 @@ const io::Pairing& pairing(const io::Catalog& c, const std::string& tool, const 
 
 TEST(SpaceCatalogDescriptors, RowsFollowTheStimuliAndSectionFourFive) {
   const io::Catalog c = io::read_catalog(catalog_file());
-  const DescriptorTable t = descriptors_for_stimuli(c, catalog_file(), {"cryon/office", "stab/stone"}, 2);
+  const DescriptorTable t =
+      descriptors_for_stimuli(c, catalog_file(), {"cryon/office", "stab/stone"}, 2);
   ASSERT_EQ(t.values.rows(), 2);
   EXPECT_EQ(t.names, (std::vector<std::string>{"friction_mu", "log10_weighted_mean_vibration"}));
   const io::Pairing& p = pairing(c, "stab", "stone");
@@ -45,6 +48,15 @@ TEST(SpaceCatalogDescriptors, AStimulusWithoutAPairingIsNamed) {
     EXPECT_NE(what.find("default_catalog.json"), std::string::npos) << what;
   }
   EXPECT_THROW(paper_descriptor_names(7), std::invalid_argument);
+}
+
+TEST(SpaceCatalogDescriptors, AllNamesAreEveryDimensionsNamesOnce) {
+  const auto all = all_paper_descriptor_names();
+  // μ, the weighted mean, and 2 + 3 + 4 + 5 band energies.
+  EXPECT_EQ(all.size(), 1u + 1u + 14u);
+  for (std::size_t dims = 1; dims <= 6; ++dims)
+    for (const auto& name : paper_descriptor_names(dims))
+      EXPECT_EQ(std::count(all.begin(), all.end(), name), 1) << name;
 }
 
 TEST(SpaceCatalogDescriptors, TheWholeCatalogHasEveryCompletePairing) {

@@ -50,8 +50,8 @@ TEST(SpaceDescriptorMap, PredictionRegionsCoverNewToolsAtTheirLevel) {
   const int worlds = 2000;
   for (int k = 0; k < worlds; ++k) {
     const LinearWorld w = linear_world(16, 0.2, generator);
-    const DescriptorMap m = fit_descriptor_map(w.coordinates.leftCols(15),
-                                               w.descriptors.topRows(15), {"x", "y"});
+    const DescriptorMap m =
+        fit_descriptor_map(w.coordinates.leftCols(15), w.descriptors.topRows(15), {"x", "y"});
     const Placement p = place_from_descriptors(m, w.descriptors.row(15).transpose());
     const Eigen::Vector2d d = w.coordinates.col(15) - p.mean;
     inside += d.dot(p.covariance.inverse() * d) <= 1.510 * 1.510;
@@ -85,6 +85,40 @@ TEST(SpaceDescriptorMap, RejectsTablesThatDoNotMatch) {
   EXPECT_THROW(fit_descriptor_map(q, constant, {"x", "y"}), std::invalid_argument);
   const DescriptorMap m = fit_descriptor_map(q, Eigen::MatrixXd::Random(5, 2), {"x", "y"});
   EXPECT_THROW(place_from_descriptors(m, Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
+
+TEST(SpaceDescriptorMap, UncertainDescriptorsAddTheirErrorCarriedThroughTheMap) {
+  // The reference: the map's Jacobian by central differences of the placed means (not from its
+  // coefficients and scales), and J·Σ·Jᵀ added to the covariance of the certain placement. The
+  // map is linear, so the differences are exact up to rounding.
+  std::mt19937_64 generator(11);
+  const LinearWorld w = linear_world(20, 0.3, generator);
+  const DescriptorMap m = fit_descriptor_map(w.coordinates, w.descriptors, {"x", "y"});
+  const Eigen::Vector2d x(0.2, 1.05);
+  Eigen::Matrix2d jacobian;
+  for (Eigen::Index j = 0; j < 2; ++j) {
+    Eigen::Vector2d step = Eigen::Vector2d::Zero();
+    step(j) = 1e-3;
+    jacobian.col(j) =
+        (place_from_descriptors(m, x + step).mean - place_from_descriptors(m, x - step).mean) /
+        2e-3;
+  }
+  const Eigen::Matrix2d sigma{{0.04, 0.01}, {0.01, 0.0025}};
+  const Placement certain = place_from_descriptors(m, x);
+  const Placement uncertain = place_from_descriptors(m, x, sigma);
+  EXPECT_TRUE(uncertain.mean.isApprox(certain.mean, 1e-15));
+  const Eigen::Matrix2d expected = certain.covariance + jacobian * sigma * jacobian.transpose();
+  EXPECT_TRUE(uncertain.covariance.isApprox(expected, 1e-8)) << uncertain.covariance << "\n"
+                                                             << expected;
+  // A zero error changes nothing.
+  EXPECT_TRUE(place_from_descriptors(m, x, Eigen::Matrix2d::Zero())
+                  .covariance.isApprox(certain.covariance, 1e-15));
+  // Bad covariances are refused: wrong size, a negative variance, not symmetric.
+  EXPECT_THROW(place_from_descriptors(m, x, Eigen::Matrix3d::Identity()), std::invalid_argument);
+  EXPECT_THROW(place_from_descriptors(m, x, Eigen::Matrix2d{{-0.1, 0}, {0, 0.1}}),
+               std::invalid_argument);
+  EXPECT_THROW(place_from_descriptors(m, x, Eigen::Matrix2d{{0.1, 0.05}, {0.0, 0.1}}),
+               std::invalid_argument);
 }
 
 TEST(SpaceDescriptorMap, UncertainDistanceMatchesTheClosedFormOfAHalfNormal) {
