@@ -63,7 +63,10 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
     throw std::invalid_argument(
         "the space's descriptor map uses descriptors a prediction does "
         "not provide");
-  return space::place_from_descriptors(map, row.values.row(0).transpose());
+  const Eigen::VectorXd descriptors = row.values.row(0).transpose();
+  if (tool.descriptor_errors.empty()) return space::place_from_descriptors(map, descriptors);
+  return space::place_from_descriptors(map, descriptors,
+                                       tool.descriptor_errors.block(map.descriptor_names));
 }
 
 Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,

@@ -30,8 +30,10 @@ struct Candidate {
 };
 
 // Where a predicted tool lies: its descriptors (those the map was fitted with: μ and the weighted
-// vibration, as space::paper_descriptor_names) through the map. Throws what the descriptor code
-// throws for a tool without a usable descriptor.
+// vibration, as space::paper_descriptor_names) through the map, its uncertainty the map's
+// prediction covariance plus the tool's descriptor error carried through the map
+// (descriptor_uncertainty.hpp). Throws what the descriptor code throws for a tool without a usable
+// descriptor.
 space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool);
 
 using Evaluate = std::function<Candidate(const DesignPoint&)>;

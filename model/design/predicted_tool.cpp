@@ -42,10 +42,11 @@ io::VelocitySpectrum predict_spectrum(const forcing::ForcingModel& model, const 
   return spectrum;
 }
 
-double interpolated_friction(const io::Catalog& catalog, const DesignPoint& point,
-                             const std::string& surface) {
+FrictionPrediction interpolated_friction(const io::Catalog& catalog, const DesignPoint& point,
+                                         const std::string& surface) {
   validate(point);
-  double mu = 0.0;
+  FrictionPrediction friction;
+  friction.measured = point.mix.size() == 1;
   for (const auto& share : point.mix) {
     std::map<double, double> by_tip;  // diameter → μ of the printed tools of this material
     for (const auto& pairing : catalog.pairings) {
@@ -66,9 +67,10 @@ double interpolated_friction(const io::Catalog& catalog, const DesignPoint& poin
       mus.push_back(m);
     }
     const TipBracket b = bracket_tip(tips, point.tip_diameter_m, what);
-    mu += share.fraction * ((1 - b.weight) * mus[b.lower] + b.weight * mus[b.upper]);
+    friction.mu += share.fraction * ((1 - b.weight) * mus[b.lower] + b.weight * mus[b.upper]);
+    if (b.lower != b.upper) friction.measured = false;
   }
-  return mu;
+  return friction;
 }
 
 PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& point,
@@ -88,7 +90,11 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
     throw std::invalid_argument("the forcing model has no surface '" + surface + "' (it has " +
                                 known + ")");
   }
-  tool.mu = interpolated_friction(*setup.catalog, point, surface);
+  const FrictionPrediction friction = interpolated_friction(*setup.catalog, point, surface);
+  tool.mu = friction.mu;
+  if (setup.descriptor_errors != nullptr)
+    tool.descriptor_errors =
+        friction.measured ? setup.descriptor_errors->without_friction() : *setup.descriptor_errors;
 
   MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials}
                                  : mixed_design(point, setup.template_design, setup.materials);

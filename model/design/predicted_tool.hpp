@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_point.hpp"
 #include "model/forcing/forcing_model.hpp"
 #include "model/io/catalog.hpp"
@@ -39,11 +40,17 @@ io::VelocitySpectrum predict_spectrum(const forcing::ForcingModel& model, const 
                                       const std::string& surface,
                                       std::span<const double> response_magnitude);
 
-// μ of the point on `surface` from the catalog's printed tools (not their nail-test variants).
-// Throws std::invalid_argument when a material of the mix has no measured friction on the surface,
-// or the tip lies outside the diameters measured for it there (saying by how far).
-double interpolated_friction(const io::Catalog& catalog, const DesignPoint& point,
-                             const std::string& surface);
+// μ of the point on `surface` from the catalog's printed tools (not their nail-test variants);
+// `measured` when it is one printed tool's measured μ (one material, a measured tip diameter)
+// rather than an interpolation. Throws std::invalid_argument when a material of the mix has no
+// measured friction on the surface, or the tip lies outside the diameters measured for it there
+// (saying by how far).
+struct FrictionPrediction {
+  double mu = 0.0;
+  bool measured = false;
+};
+FrictionPrediction interpolated_friction(const io::Catalog& catalog, const DesignPoint& point,
+                                         const std::string& surface);
 
 struct PredictionSetup {
   const forcing::ForcingModel* model = nullptr;
@@ -51,8 +58,10 @@ struct PredictionSetup {
   mechanics::Design template_design;     // the printed tools' stylus (assets/designs)
   mechanics::MaterialTable materials;
   const measure::ThresholdCurve* threshold = nullptr;  // weights the descriptors, as the catalog
-  double mesh_size = 0.0;                              // m; 0 keeps the template's
-  int modes = 0;                                       // 0 keeps the template's
+  // The predictions' cross-validated descriptor error; null: none known, placed as if measured.
+  const DescriptorErrorCovariance* descriptor_errors = nullptr;
+  double mesh_size = 0.0;  // m; 0 keeps the template's
+  int modes = 0;           // 0 keeps the template's
 };
 
 struct PredictedTool {
@@ -65,6 +74,9 @@ struct PredictedTool {
   io::VelocitySpectrum spectrum;
   double mu = 0.0;
   measure::VibrationDescriptors vibration;
+  // The error its descriptors carry (setup's, without friction when μ was measured); empty when
+  // the setup had none.
+  DescriptorErrorCovariance descriptor_errors;
 };
 
 // Meshes and solves the point's design (mixed_design.hpp), or `own_design` when given (a

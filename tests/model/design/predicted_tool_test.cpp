@@ -81,11 +81,17 @@ io::Catalog friction_catalog() {
 
 TEST(PredictedTool, FrictionIsLinearInTipAndFractions) {
   const auto catalog = friction_catalog();
-  EXPECT_NEAR(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.001}, "office"), 0.10, 1e-12);
-  EXPECT_NEAR(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.002}, "office"), 0.12, 1e-12);
+  EXPECT_NEAR(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.001}, "office").mu, 0.10, 1e-12);
+  EXPECT_NEAR(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.002}, "office").mu, 0.12, 1e-12);
   // 0.25 · μ_DM85(2 mm) + 0.75 · μ_vero(2 mm) = 0.25 · 0.6 + 0.75 · 0.12
-  EXPECT_NEAR(interpolated_friction(catalog, {{{"DM85", 0.25}, {"vero", 0.75}}, 0.002}, "office"),
-              0.25 * 0.6 + 0.75 * 0.12, 1e-12);
+  EXPECT_NEAR(
+      interpolated_friction(catalog, {{{"DM85", 0.25}, {"vero", 0.75}}, 0.002}, "office").mu,
+      0.25 * 0.6 + 0.75 * 0.12, 1e-12);
+  // Measured: one material at a measured tip; anything else is an interpolation.
+  EXPECT_TRUE(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.001}, "office").measured);
+  EXPECT_FALSE(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.0015}, "office").measured);
+  EXPECT_FALSE(
+      interpolated_friction(catalog, {{{"DM85", 0.25}, {"vero", 0.75}}, 0.001}, "office").measured);
   EXPECT_THROW(interpolated_friction(catalog, {{{"DM95", 1.0}}, 0.002}, "office"),
                std::invalid_argument);
   EXPECT_THROW(interpolated_friction(catalog, {{{"vero", 1.0}}, 0.0005}, "office"),
