@@ -5,6 +5,9 @@
 // design_cli_test): its cost does not depend on how the space was fitted.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
+#include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
@@ -86,6 +89,26 @@ void BM_ForcingJackknifeAndHoldout(benchmark::State& state) {
 }
 BENCHMARK(BM_ForcingJackknifeAndHoldout)->Iterations(3)->Unit(benchmark::kMillisecond);
 
+// What a fit adds so that predicted tools carry their error: every exemplar held out in turn and
+// its descriptors compared (54 refits), and the covariance with the catalog's friction errors.
+void BM_ForcingHeldOutDescriptorErrors(benchmark::State& state) {
+  auto& in = inputs(true);
+  const auto threshold = measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds" /
+                                                       "israr2006_pen_hold.csv");
+  double weighted_mean_sd = 0;
+  std::size_t held_out = 0;
+  for (auto _ : state) {
+    const auto errors = forcing::held_out_descriptor_errors(in.exemplars, threshold);
+    const auto covariance = design::descriptor_error_covariance(
+        errors, design::friction_interpolation_errors(in.catalog));
+    held_out = errors.size();
+    weighted_mean_sd = std::sqrt(covariance.block(space::paper_descriptor_names(2))(1, 1));
+  }
+  state.counters["held_out"] = static_cast<double>(held_out);
+  state.counters["weighted_mean_sd_log10"] = weighted_mean_sd;
+}
+BENCHMARK(BM_ForcingHeldOutDescriptorErrors)->Iterations(3)->Unit(benchmark::kMillisecond);
+
 void BM_DesignLineSearch(benchmark::State& state) {
   auto& in = inputs(true);
   const auto model = forcing::fit_forcing_model(in.exemplars);
@@ -105,6 +128,10 @@ void BM_DesignLineSearch(benchmark::State& state) {
   setup.template_design = in.template_design;
   setup.materials = in.materials;
   setup.threshold = &threshold;
+  const auto errors = design::descriptor_error_covariance(
+      forcing::held_out_descriptor_errors(in.exemplars, threshold),
+      design::friction_interpolation_errors(in.catalog));
+  setup.descriptor_errors = &errors;
   std::size_t predictions = 0;
   for (auto _ : state) {
     const auto result = design::line_search(

@@ -19,4 +19,8 @@ std::filesystem::path asset(const std::filesystem::path& relative) {
   return path;
 }
 
+std::filesystem::path default_threshold_curve() {
+  return asset("thresholds/israr2006_pen_hold.csv");
+}
+
 }  // namespace nibrig::ui::cli

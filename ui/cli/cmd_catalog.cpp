@@ -85,7 +85,7 @@ void print_summary(const model::catalog::CatalogBuild& build, std::ostream& out)
 void build(const CatalogOptions& options, unsigned threads) {
   namespace catalog = model::catalog;
   const auto threshold = model::measure::ThresholdCurve::load(
-      options.threshold.empty() ? asset("thresholds/israr2006_pen_hold.csv") : options.threshold);
+      options.threshold.empty() ? default_threshold_curve() : options.threshold);
   const auto found = catalog::find_recordings(options.folder);
   for (const auto& s : found.skipped) spdlog::info("skipped {}", s);
   if (found.files.empty()) {

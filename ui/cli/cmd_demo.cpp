@@ -12,9 +12,9 @@
 #include "model/measure/threshold_curve.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/demo_forcing.hpp"
 #include "ui/cli/demo_mechanics.hpp"
 #include "ui/cli/demo_render.hpp"
-#include "ui/cli/demo_forcing.hpp"
 #include "ui/cli/demo_space.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
@@ -63,8 +63,7 @@ void demo(const DemoOptions& options, unsigned threads) {
   constexpr int max_bands = 5;
   const auto catalog_path =
       options.catalog.empty() ? asset("default_catalog.json") : options.catalog;
-  const auto threshold =
-      model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
+  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
   auto catalog = model::io::read_catalog(catalog_path);
 
   // The descriptor stage of the pipeline, run here on the bundled spectra: weighting by the

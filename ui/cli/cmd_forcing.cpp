@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
+#include "model/measure/threshold_curve.hpp"
+#include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_figures.hpp"
@@ -23,6 +26,9 @@ namespace nibrig::ui::cli {
 namespace {
 
 namespace forcing = model::forcing;
+
+// log10(predicted / measured) as a percentage off: +0.0414 is +10 %.
+double percent_off(double log10_ratio) { return 100.0 * (std::pow(10.0, log10_ratio) - 1.0); }
 
 struct FitCommandOptions {
   ForcingInputOptions inputs;
@@ -70,25 +76,48 @@ std::string curves_table(const forcing::ForcingModel& model,
   return out;
 }
 
+// How far held-out predictions' descriptors were from the measured ones: RMS of the log10 ratio,
+// as a percentage, of the weighted mean and of the band energies, and the worst tool.
+std::string descriptor_error_summary(const forcing::ForcingModel& model) {
+  const auto& errors = model.held_out_descriptor_errors;
+  if (errors.empty()) return "";
+  double squares = 0.0, band_squares = 0.0;
+  std::size_t band_count = 0;
+  const forcing::DescriptorError* worst = &errors.front();
+  for (const auto& e : errors) {
+    squares += e.log10_weighted_mean * e.log10_weighted_mean;
+    if (std::abs(e.log10_weighted_mean) > std::abs(worst->log10_weighted_mean)) worst = &e;
+    for (double b : e.log10_band_energies.at(forcing::kMaxDescriptorBands)) {
+      band_squares += b * b;
+      ++band_count;
+    }
+  }
+  const double rms = std::sqrt(squares / static_cast<double>(errors.size()));
+  const double band_rms = std::sqrt(band_squares / static_cast<double>(band_count));
+  return fmt::format(
+      "predicted descriptors, each of {} exemplars held out: weighted mean vibration off by "
+      "{:.1f} % RMS (worst {} on {}: {:+.1f} %), each of {} band energies by {:.1f} % RMS; "
+      "predicted tools are placed with this error (forcing.json: held_out_descriptor_errors)\n",
+      errors.size(), percent_off(rms), worst->tool, worst->surface,
+      percent_off(worst->log10_weighted_mean), forcing::kMaxDescriptorBands, percent_off(band_rms));
+}
+
 void run_fit(const FitCommandOptions& o) {
   ForcingInputs inputs = load_forcing_inputs(o.inputs);
   std::cout << describe_inputs(inputs);
   const auto start = std::chrono::steady_clock::now();
-  forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
+  const forcing::ForcingModel model = fit_forcing_for_prediction(inputs);
   const double fit_seconds = seconds_since(start);
-  model.notes = inputs.notes;
-  model.notes.push_back(
-      "fit of Eq. 10 in log amplitude; ln t(2 mm) = ln m(vero) = 0 fix the scale, so F_S is the "
-      "forcing the 2 mm VeroClear tool sees (model/forcing/forcing_fit.hpp)");
 
   const auto [best, worst] =
       std::minmax_element(model.exemplar_fits.begin(), model.exemplar_fits.end(),
                           [](const auto& a, const auto& b) { return a.rms_db < b.rms_db; });
   std::cout << fmt::format(
       "fit: {} observations ({} amplitudes <= 0 skipped), residual RMS {:.2f} dB; per exemplar "
-      "{:.2f} ({} on {}) to {:.2f} dB ({} on {}); {:.3f} s\n",
+      "{:.2f} ({} on {}) to {:.2f} dB ({} on {}); {:.3f} s with the leave-one-out fits\n",
       model.observations, model.skipped_nonpositive, model.residual_rms_db, best->rms_db,
       best->tool, best->surface, worst->rms_db, worst->tool, worst->surface, fit_seconds);
+  std::cout << descriptor_error_summary(model);
   const forcing::CurveJackknife jackknife = forcing::jackknife_curves(inputs.exemplars);
   std::cout << curves_table(model, jackknife);
   for (const auto& why : jackknife.not_left_out) spdlog::info("jackknife: not left out: {}", why);
@@ -107,7 +136,7 @@ std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& 
   std::ostringstream csv;
   csv << "tool,surface,predictable,rms_db,baseline_rms_db";
   for (double v : speeds_m_s) csv << fmt::format(",rms_db_{:g}_mm_s", v * 1e3);
-  csv << ",reason\n";
+  csv << ",weighted_mean_error_percent,reason\n";
   for (const auto& r : loo.results) {
     csv << r.tool << ',' << r.surface << ',' << (r.predictable ? "yes" : "no") << ',';
     if (r.predictable)
@@ -116,6 +145,10 @@ std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& 
       csv << ',';
     for (std::size_t s = 0; s < speeds_m_s.size(); ++s)
       csv << ',' << (r.predictable ? fmt::format("{}", r.rms_db_by_speed[s]) : "");
+    csv << ','
+        << (r.descriptor_error
+                ? fmt::format("{}", percent_off(r.descriptor_error->log10_weighted_mean))
+                : "");
     std::string reason = r.reason;
     std::replace(reason.begin(), reason.end(), '"', '\'');
     csv << ",\"" << reason << "\"\n";
@@ -135,7 +168,8 @@ void run_loo(const LooCommandOptions& o) {
         "among the exemplars; --all holds out every exemplar instead");
 
   const auto start = std::chrono::steady_clock::now();
-  const forcing::LeaveOneOut loo = forcing::leave_one_out(inputs.exemplars, held);
+  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+  const forcing::LeaveOneOut loo = forcing::leave_one_out(inputs.exemplars, held, {}, &threshold);
   const double seconds = seconds_since(start);
   const auto& speeds = inputs.exemplars.front().measured.speeds_m_s;
 
@@ -157,9 +191,9 @@ void run_loo(const LooCommandOptions& o) {
   std::cout << fmt::format(
       "held out {} ({} predicted, {} not predictable) in {:.2f} s; RMS dB mean {:.2f}, median "
       "{:.2f}, max {:.2f}; baseline (geometric mean of the other tools on the surface) mean "
-      "{:.2f}\n",
+      "{:.2f}; perceptually weighted mean vibration off by {:.1f} % RMS\n",
       loo.results.size(), s.predicted, s.not_predictable, seconds, s.mean_rms_db, s.median_rms_db,
-      s.max_rms_db, s.mean_baseline_rms_db);
+      s.max_rms_db, s.mean_baseline_rms_db, percent_off(s.weighted_mean_rms_log10));
   if (!s.worst.empty()) {
     std::string worst = "worst:";
     for (std::size_t k = 0; k < s.worst.size(); ++k) {

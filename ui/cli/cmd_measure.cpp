@@ -45,7 +45,7 @@ void write_friction_figures(const model::catalog::FrictionAnalysis& a,
 void measure(const MeasureOptions& options) {
   namespace catalog = model::catalog;
   const auto threshold = model::measure::ThresholdCurve::load(
-      options.threshold.empty() ? asset("thresholds/israr2006_pen_hold.csv") : options.threshold);
+      options.threshold.empty() ? default_threshold_curve() : options.threshold);
   const catalog::AnalysisOptions analysis_options;
   const std::string stem = recording_stem(options.recording);
   const std::filesystem::path plot_dir =

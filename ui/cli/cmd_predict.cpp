@@ -82,11 +82,9 @@ void run_predict(const PredictOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const design::PredictedTool tool =
       design::predict_tool(inputs->setup, point, o.surface, own ? &*own : nullptr);
-  std::cout << fmt::format(
-      "{} on {}: design '{}' (first mode {:.1f} Hz), mu {:.3f}, weighted mean vibration {:.4g}; "
-      "{:.1f} s\n",
-      design::label(point), o.surface, tool.design_name, tool.first_mode_hz, tool.mu,
-      tool.vibration.weighted_mean, seconds_since(start));
+  std::cout << fmt::format("{} on {}: design '{}' (first mode {:.1f} Hz), {}; {:.1f} s\n",
+                           design::label(point), o.surface, tool.design_name, tool.first_mode_hz,
+                           describe_descriptors(tool), seconds_since(start));
 
   nlohmann::json j = prediction_json(tool, threshold.source());
 

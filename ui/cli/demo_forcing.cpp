@@ -51,8 +51,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   options.modes = 32;
   options.mesh_size = 0.004;
   ForcingInputs inputs = load_forcing_inputs(options);
-  forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
-  model.notes = inputs.notes;
+  forcing::ForcingModel model = fit_forcing_for_prediction(inputs);
   forcing::write_forcing_model(dir / "forcing.json", model);
   const forcing::CurveJackknife jackknife = forcing::jackknife_curves(inputs.exemplars);
   plot_scaling_curves(model, dir, &jackknife);
@@ -125,14 +124,15 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              "on {} of {}, all within {:.2f} dB of them (the 1 vs 4 mm tip effect exceeds twice "
              "its "
              "jackknife SE at {} of {} knots)\n"
-             "  predicted {} on office: mu {:.3f}, weighted mean vibration {:.4g}\n",
+             "  predicted {} on office: {} (cross-validated error, carried into its place "
+             "in the space)\n",
              options.modes, options.mesh_size * 1e3, model.exemplar_count(),
              model.surface_forcing.size(), model.residual_rms_db, loo.summary.predicted,
              loo.summary.mean_rms_db, loo.summary.median_rms_db, loo.summary.max_rms_db, worst,
              loo.summary.mean_baseline_rms_db, held.mean_predicted_db, held.mean_measured_db,
              held.beats_every_baseline, held.predicted, held.widest_baseline_gap_db,
              resolution.effect_resolved_knots(), resolution.effect.size(), kInterpolated,
-             predicted.mu, predicted.vibration.weighted_mean) +
+             describe_descriptors(predicted)) +
          search_line +
          fmt::format(
              "  report: {}/ (forcing.json, tip_curves.png, material_curves.png, "

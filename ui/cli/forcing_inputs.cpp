@@ -9,7 +9,10 @@
 #include <memory>
 #include <set>
 
+#include "model/forcing/forcing_fit.hpp"
+#include "model/forcing/leave_one_out.hpp"
 #include "model/io/catalog.hpp"
+#include "model/measure/threshold_curve.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/progress.hpp"
@@ -75,6 +78,24 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
     inputs.notes.push_back("of the paper's 27 tools this catalog lacks: " + list);
   }
   return inputs;
+}
+
+forcing::ForcingModel fit_forcing_for_prediction(const ForcingInputs& inputs) {
+  forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
+  model.notes = inputs.notes;
+  model.notes.push_back(
+      "fit of Eq. 10 in log amplitude; ln t(2 mm) = ln m(vero) = 0 fix the scale, so F_S is the "
+      "forcing the 2 mm VeroClear tool sees (model/forcing/forcing_fit.hpp)");
+  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+  model.held_out_descriptor_errors =
+      forcing::held_out_descriptor_errors(inputs.exemplars, threshold);
+  model.descriptor_error_threshold = threshold.source();
+  model.notes.push_back(fmt::format(
+      "held_out_descriptor_errors: {} of {} exemplars held out of the fit in turn and predicted; "
+      "log10(predicted/measured) of their weighted descriptors, the error a predicted tool's "
+      "placement carries (model/design/descriptor_uncertainty.hpp)",
+      model.held_out_descriptor_errors.size(), inputs.exemplars.size()));
+  return model;
 }
 
 std::string describe_inputs(const ForcingInputs& inputs) {

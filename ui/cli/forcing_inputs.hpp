@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/forcing/catalog_exemplars.hpp"
+#include "model/forcing/forcing_model.hpp"
 
 namespace CLI {
 class App;
@@ -33,6 +34,12 @@ struct ForcingInputs {
 // Reads the catalog first (so a bad catalog fails before any meshing), then the materials and the
 // template, then meshes and solves each distinct design once, with progress on a terminal.
 ForcingInputs load_forcing_inputs(const ForcingInputOptions& options);
+
+// The model every command fits (forcing fit, the on-the-fly fit of predict and design, the demo):
+// Eq. 10 fitted to every exemplar, with the inputs' notes and the descriptor errors of every
+// exemplar held out in turn (weighted by the bundled threshold curve), which predicted tools'
+// placements carry. The leave-one-out fits take about as long again as the fit itself.
+model::forcing::ForcingModel fit_forcing_for_prediction(const ForcingInputs& inputs);
 
 // The options above on a command: the catalog as a positional argument, --design, --materials,
 // --modes and --mesh-size. Files are checked when read, so a bad one fails in one line.

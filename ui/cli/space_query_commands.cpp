@@ -6,14 +6,18 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <random>
 #include <sstream>
 
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
+#include "model/space/catalog_descriptors.hpp"
 #include "model/space/prediction_scores.hpp"
-#include "ui/cli/output.hpp"
-#include "ui/cli/space_commands.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/design_reports.hpp"
+#include "ui/cli/output.hpp"
+#include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
 #include "ui/cli/space_inputs.hpp"
 
@@ -50,8 +54,8 @@ std::vector<Prediction> predict(const SpaceQueryOptions& o, const space::SpaceFi
       q << r.mean, a.mean, b.mean;
       out.push_back({space::probability_first(q, 0, 1, 2, s.scale), 0.0});
     } else {
-      const auto u = space::uncertain_probability_first(r, a, b, s.scale, kUncertaintySamples,
-                                                        generator);
+      const auto u =
+          space::uncertain_probability_first(r, a, b, s.scale, kUncertaintySamples, generator);
       out.push_back({u.mean, u.sd});
     }
   }
@@ -132,13 +136,24 @@ void run_space_embed(const SpaceEmbedOptions& o) {
     throw std::invalid_argument(o.space_file.string() +
                                 " has no descriptor map: fit it with --descriptors catalog.json");
   model::io::Catalog catalog = model::io::read_catalog(o.catalog);
+  // A predicted tool's descriptor error, by its stimulus name, carried into its placement.
+  std::map<std::string, Eigen::MatrixXd> descriptor_errors;
   if (!o.predicted.empty()) {
-    const auto threshold =
-        model::measure::ThresholdCurve::load(asset("thresholds/israr2006_pen_hold.csv"));
+    const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
     for (const auto& file : o.predicted) {
-      auto [tool, pairing] = read_prediction(file, threshold);
-      catalog.tools.push_back(std::move(tool));
-      catalog.pairings.push_back(std::move(pairing));
+      ReadPrediction read = read_prediction(file, threshold);
+      if (read.descriptor_errors.empty())
+        spdlog::warn("{} has no descriptor_error_covariance: placed as if measured", file.string());
+      else
+        try {
+          descriptor_errors[space::pairing_name(read.pairing)] =
+              read.descriptor_errors.block(s.descriptor_map->descriptor_names);
+        } catch (const std::invalid_argument& e) {
+          throw model::io::FormatError(
+              file, model::io::json_fields::place("descriptor_error_covariance.names"), e.what());
+        }
+      catalog.tools.push_back(std::move(read.tool));
+      catalog.pairings.push_back(std::move(read.pairing));
     }
   }
   const space::DescriptorTable table =
@@ -155,8 +170,12 @@ void run_space_embed(const SpaceEmbedOptions& o) {
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const bool judged =
         std::find(s.stimuli.begin(), s.stimuli.end(), table.rows[i]) != s.stimuli.end();
+    const Eigen::VectorXd descriptors = table.values.row(static_cast<Eigen::Index>(i)).transpose();
+    const auto error = descriptor_errors.find(table.rows[i]);
     const space::Placement p =
-        space::place_from_descriptors(*s.descriptor_map, table.values.row(static_cast<Eigen::Index>(i)).transpose());
+        error == descriptor_errors.end()
+            ? space::place_from_descriptors(*s.descriptor_map, descriptors)
+            : space::place_from_descriptors(*s.descriptor_map, descriptors, error->second);
     csv << csv_field(table.rows[i]) << ',' << (judged ? "yes" : "no");
     for (Eigen::Index d = 0; d < dims; ++d)
       csv << ',' << p.mean(d) << ',' << std::sqrt(p.covariance(d, d));

@@ -5,9 +5,11 @@
 // reasoned about.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "model/design/design_point.hpp"
 #include "model/io/catalog.hpp"
@@ -30,8 +32,8 @@ std::filesystem::path write_test_space(const std::filesystem::path& folder) {
   const auto catalog_file = test::assets_dir() / "default_catalog.json";
   const auto catalog = model::io::read_catalog(catalog_file);
   space::SpaceFile s;
-  s.stimuli = {"cryon/office", "stab/office", "vero1/office", "vero4/office", "DM854/office",
-               "vero1/glass",  "DM851/glass", "vero4/glass"};
+  s.stimuli = {"cryon/office", "stab/office", "vero1/office", "vero4/office",
+               "DM854/office", "vero1/glass", "DM851/glass",  "vero4/glass"};
   const auto table = space::descriptors_for_stimuli(catalog, catalog_file, s.stimuli, 2);
   s.descriptor_names = table.names;
   s.descriptors = table.values;
@@ -50,6 +52,74 @@ std::filesystem::path write_test_space(const std::filesystem::path& folder) {
   return file;
 }
 
+// The predicted row of `space embed`'s CSV: its coordinates' standard deviations.
+std::vector<double> predicted_sds(const std::filesystem::path& csv_file) {
+  std::ifstream in(csv_file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("\"pred:", 0) != 0) continue;
+    std::stringstream row(line.substr(line.rfind('"') + 2));
+    std::vector<double> cells;
+    for (std::string cell; std::getline(row, cell, ',');)
+      if (cell != "no") cells.push_back(std::stod(cell));
+    return {cells.at(1), cells.at(3)};  // axis1, axis1_sd, axis2, axis2_sd
+  }
+  ADD_FAILURE() << "no predicted row in " << csv_file;
+  return {0, 0};
+}
+
+// predicted.json carries its descriptor error, and `space embed` places the prediction with it:
+// each axis's variance grows by exactly the error carried through the space's map, J·Σ·Jᵀ, over
+// the same file without the error.
+void expect_placed_with_its_descriptor_error(const std::filesystem::path& out,
+                                             const std::filesystem::path& space_file) {
+  const auto predicted = read_json(out / "predicted.json");
+  ASSERT_TRUE(predicted.contains("descriptor_error_covariance"));
+  const auto& error = predicted["descriptor_error_covariance"];
+  const auto names = error["names"].get<std::vector<std::string>>();
+  EXPECT_EQ(names, space::all_paper_descriptor_names());
+  EXPECT_GT(error["vibration_samples"].get<int>(), 40);  // every exemplar of the bundled catalog
+  EXPECT_GT(error["friction_samples"].get<int>(), 5);    // its middle tips
+  nlohmann::json without = predicted;
+  without.erase("descriptor_error_covariance");
+  std::ofstream(out / "predicted_without_error.json") << without.dump();
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const auto catalog = (test::assets_dir() / "default_catalog.json").string();
+  ASSERT_EQ(run_cli({"space", "embed", space_file.string(), catalog, "--predicted",
+                     (out / "predicted_without_error.json").string(), "-o",
+                     (out / "placed_without_error.csv").string()}),
+            0);
+  testing::internal::GetCapturedStdout();
+  const std::string warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find("placed as if measured"), std::string::npos) << warning;
+  const auto with_error = predicted_sds(out / "placed.csv");
+  const auto without_error = predicted_sds(out / "placed_without_error.csv");
+
+  const auto s = space::read_space_file(space_file);
+  const auto& map = *s.descriptor_map;
+  Eigen::MatrixXd sigma(2, 2);
+  for (Eigen::Index i = 0; i < 2; ++i)
+    for (Eigen::Index j = 0; j < 2; ++j) {
+      const auto at = [&](Eigen::Index k) {
+        const auto& name = map.descriptor_names[static_cast<std::size_t>(k)];
+        return std::find(names.begin(), names.end(), name) - names.begin();
+      };
+      sigma(i, j) = error["matrix"][at(i)][at(j)].get<double>();
+    }
+  EXPECT_GT(sigma(0, 0), 0.0) << "a mix's μ is interpolated: it carries the friction error";
+  const Eigen::MatrixXd jacobian =
+      map.coefficients.rightCols(2) * map.descriptor_scale.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd added = jacobian * sigma * jacobian.transpose();
+  for (Eigen::Index d = 0; d < 2; ++d) {
+    const double grown =
+        with_error[static_cast<std::size_t>(d)] * with_error[static_cast<std::size_t>(d)] -
+        without_error[static_cast<std::size_t>(d)] * without_error[static_cast<std::size_t>(d)];
+    // The CSV holds 8 significant digits.
+    EXPECT_NEAR(grown, added(d, d), 1e-6 * (1 + added(d, d))) << "axis " << d + 1;
+    EXPECT_GT(added(d, d), 0.0);
+  }
+}
+
 TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   const auto out = test::scratch_dir("cli_design");
   const auto space_file = write_test_space(out);
@@ -63,10 +133,21 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   // The target is the measured 4 mm DM85 tool on glass, placed from its descriptors; the line runs
   // from the 1 mm VeroClear design to the 4 mm DM85 one. The model predicts the DM85 end from the
   // same tool's data, so the optimum must lie at or next to that end.
-  std::vector<std::string> args{"design", "--target", "DM854/glass", "--surface", "glass",
-                                "--space", space_file.string(), "--forcing",
-                                (out / "forcing.json").string(), "--between", "vero,tip=1mm",
-                                "DM85,tip=4mm", "-o", (out / "search.json").string(), "--plot",
+  std::vector<std::string> args{"design",
+                                "--target",
+                                "DM854/glass",
+                                "--surface",
+                                "glass",
+                                "--space",
+                                space_file.string(),
+                                "--forcing",
+                                (out / "forcing.json").string(),
+                                "--between",
+                                "vero,tip=1mm",
+                                "DM85,tip=4mm",
+                                "-o",
+                                (out / "search.json").string(),
+                                "--plot",
                                 (out / "path.png").string()};
   args.insert(args.end(), coarse.begin(), coarse.end());
   testing::internal::CaptureStdout();
@@ -82,15 +163,22 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_LE(best, at_dm85);
   EXPECT_LT(at_dm85, at_vero);
   // Within one scan step (1/8 of the line) of the DM85 end.
-  const auto optimum = model::design::parse_design_point(search["optimum"]["design"].get<std::string>());
+  const auto optimum =
+      model::design::parse_design_point(search["optimum"]["design"].get<std::string>());
   EXPECT_GE(optimum.fraction_of("DM85"), 0.875) << search["optimum"]["design"];
   EXPECT_GE(search["runners_up"].size(), 1u);
   EXPECT_TRUE(is_png(out / "path.png"));
   EXPECT_NE(text.find("placed from its descriptors"), std::string::npos) << text;
 
   // A predicted tool is placed in the space beside the catalog's (Fig. 15), hollow, "predicted".
-  std::vector<std::string> predict{"predict", "--design", "DM85:0.5,vero:0.5,tip=2mm", "--surface",
-                                   "glass", "--forcing", (out / "forcing.json").string(), "-o",
+  std::vector<std::string> predict{"predict",
+                                   "--design",
+                                   "DM85:0.5,vero:0.5,tip=2mm",
+                                   "--surface",
+                                   "glass",
+                                   "--forcing",
+                                   (out / "forcing.json").string(),
+                                   "-o",
                                    (out / "predicted.json").string()};
   predict.insert(predict.end(), coarse.begin(), coarse.end());
   testing::internal::CaptureStdout();
@@ -105,6 +193,7 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   const std::string csv((std::istreambuf_iterator<char>(placed)), std::istreambuf_iterator<char>());
   EXPECT_NE(csv.find("\"pred:DM85:0.5,vero:0.5,tip=2mm/glass\",no,"), std::string::npos) << csv;
   EXPECT_TRUE(is_png(out / "placed.png"));
+  expect_placed_with_its_descriptor_error(out, space_file);
   // A file that is not a prediction is refused, naming it and the field.
   testing::internal::CaptureStderr();
   testing::internal::CaptureStdout();

@@ -56,6 +56,15 @@ TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
   EXPECT_NE(text.find("residual RMS"), std::string::npos) << text;
   EXPECT_NE(text.find("SE: delete-one-tool jackknife over 12 printed tools"), std::string::npos)
       << text;
+  // Every exemplar can be held out (each shares its surface, tip and material with others), so
+  // each has a descriptor error, weighted by the bundled threshold.
+  EXPECT_EQ(model.held_out_descriptor_errors.size(), 54u);
+  EXPECT_NE(model.descriptor_error_threshold.find("Israr"), std::string::npos)
+      << model.descriptor_error_threshold;
+  EXPECT_NE(text.find("predicted descriptors, each of 54 exemplars held out: weighted mean "
+                      "vibration off by "),
+            std::string::npos)
+      << text;
 }
 
 TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {

@@ -72,6 +72,10 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
     EXPECT_TRUE(mix.contains(key)) << key;
   EXPECT_EQ(mix["amplitude_m_s2"].size(), mix["speeds_mm_s"].size());
   EXPECT_GT(mix["descriptors"]["weighted_mean"].get<double>(), 0.0);
+  // The descriptors with their cross-validated error: a mix at an interpolated tip has both.
+  EXPECT_NE(text.find(", weighted mean vibration "), std::string::npos) << text;
+  EXPECT_NE(text.find(" %; "), std::string::npos) << text;
+  EXPECT_EQ(mix["descriptor_error_covariance"]["names"].size(), 16u);
   // A quarter DM85 (μ ≈ 0.5-0.8 on office) raises μ above VeroClear's (≈ 0.2-0.3).
   EXPECT_GT(mix["mu"].get<double>(), 0.2);
   EXPECT_LT(mix["mu"].get<double>(), 0.6);
