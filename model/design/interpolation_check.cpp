@@ -39,40 +39,51 @@ TipHoldOut hold_out_tip(std::span<const forcing::ForcingExemplar> exemplars, dou
   out.model = forcing::fit_forcing_model(training, options);
   out.lower_tip_m = lower_tip;
   out.upper_tip_m = upper_tip;
-  const forcing::ForcingModel& model = out.model;
-  auto& results = out.predictions;
   for (const forcing::ForcingExemplar* e : held_out) {
-    InterpolatedPrediction r;
-    r.tool = e->tool;
-    r.surface = e->surface;
-    r.material = e->material;
-    r.tip_diameter_m = e->tip_diameter_m;
-    if (model.surface_forcing.count(e->surface) == 0)
-      r.not_predictable = "no other tool was measured on " + e->surface;
-    else if (model.material_log_gain.count(e->material) == 0)
-      r.not_predictable = "no other tool is of " + e->material;
-    if (!r.not_predictable.empty()) {
-      results.push_back(std::move(r));
-      continue;
-    }
-    r.comparison =
-        compare_with_baselines(model, DesignPoint{{{e->material, 1.0}}, e->tip_diameter_m},
-                               e->surface, e->response_magnitude, e->measured);
-    for (const auto& other : exemplars) {
-      if (other.surface != e->surface || other.material != e->material) continue;
-      if (forcing::same_tip(other.tip_diameter_m, lower_tip))
-        r.lower_measured_rms_db = forcing::log_spectrum_error(other.measured, e->measured).rms_db;
-      if (forcing::same_tip(other.tip_diameter_m, upper_tip))
-        r.upper_measured_rms_db = forcing::log_spectrum_error(other.measured, e->measured).rms_db;
-    }
-    results.push_back(std::move(r));
+    const auto same_material_with_tip = [e](double tip) -> NeighbourTest {
+      return [e, tip](const forcing::ForcingExemplar& x) {
+        return x.material == e->material && forcing::same_tip(x.tip_diameter_m, tip);
+      };
+    };
+    out.predictions.push_back(predict_held_out(
+        out.model, *e, DesignPoint{{{e->material, 1.0}}, e->tip_diameter_m}, exemplars,
+        {same_material_with_tip(lower_tip), same_material_with_tip(upper_tip)}));
   }
   return out;
 }
 
-TipHoldOutSummary summarize(const TipHoldOut& held) {
-  TipHoldOutSummary s;
-  for (const auto& r : held.predictions) {
+InterpolatedPrediction predict_held_out(const forcing::ForcingModel& model,
+                                        const forcing::ForcingExemplar& held,
+                                        const DesignPoint& point,
+                                        std::span<const forcing::ForcingExemplar> all,
+                                        const std::array<NeighbourTest, 2>& is_neighbour) {
+  InterpolatedPrediction r;
+  r.tool = held.tool;
+  r.surface = held.surface;
+  r.material = held.material;
+  r.tip_diameter_m = held.tip_diameter_m;
+  if (model.surface_forcing.count(held.surface) == 0) {
+    r.not_predictable = "no other tool was measured on " + held.surface;
+    return r;
+  }
+  for (const auto& share : point.mix)
+    if (model.material_log_gain.count(share.material) == 0) {
+      r.not_predictable = "no other tool is of " + share.material;
+      return r;
+    }
+  r.comparison =
+      compare_with_baselines(model, point, held.surface, held.response_magnitude, held.measured);
+  for (const auto& other : all)
+    for (std::size_t k = 0; k < 2; ++k)
+      if (other.surface == held.surface && &other != &held && is_neighbour[k](other))
+        r.measured_neighbour_rms_db[k] =
+            forcing::log_spectrum_error(other.measured, held.measured).rms_db;
+  return r;
+}
+
+HoldOutSummary summarize(std::span<const InterpolatedPrediction> predictions) {
+  HoldOutSummary s;
+  for (const auto& r : predictions) {
     if (!r.not_predictable.empty()) continue;
     ++s.predicted;
     s.beats_every_baseline += r.comparison.beats_every_baseline();
@@ -80,7 +91,7 @@ TipHoldOutSummary summarize(const TipHoldOut& held) {
     for (const auto& baseline : r.comparison.baselines)
       s.widest_baseline_gap_db =
           std::max(s.widest_baseline_gap_db, std::abs(rms_db - baseline.error.rms_db));
-    for (double measured : {r.lower_measured_rms_db, r.upper_measured_rms_db}) {
+    for (double measured : r.measured_neighbour_rms_db) {
       if (measured < 0) continue;
       ++s.compared_with_measured;
       s.closer_than_measured += rms_db < measured;
@@ -95,22 +106,19 @@ TipHoldOutSummary summarize(const TipHoldOut& held) {
   return s;
 }
 
-namespace {
-
-std::size_t beyond_two_errors(const std::vector<double>& value, const std::vector<double>& se) {
+std::size_t knots_beyond_two_errors(const std::vector<double>& value,
+                                    const std::vector<double>& se) {
   std::size_t n = 0;
-  for (std::size_t k = 0; k < value.size(); ++k) n += std::abs(value[k]) > 2 * se[k];
+  for (std::size_t k = 0; k < value.size(); ++k) n += std::abs(value[k]) > 2 * se.at(k);
   return n;
 }
 
-}  // namespace
-
 std::size_t TipResolution::effect_resolved_knots() const {
-  return beyond_two_errors(effect, effect_se);
+  return knots_beyond_two_errors(effect, effect_se);
 }
 
 std::size_t TipResolution::deviation_resolved_knots() const {
-  return beyond_two_errors(deviation, deviation_se);
+  return knots_beyond_two_errors(deviation, deviation_se);
 }
 
 TipResolution tip_resolution(const forcing::CurveJackknife& jackknife, double tip_m) {

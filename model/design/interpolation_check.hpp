@@ -8,6 +8,8 @@
 // Beside it, the neighbours' own measurements as predictions (no model at all).
 #pragma once
 
+#include <array>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,10 +30,23 @@ struct InterpolatedPrediction {
   // the larger neighbour's tip curve, in that order) against the measurement, overall and per
   // speed.
   InterpolationComparison comparison;
-  // What a designer without the model would do: take the measured neighbour of the same material
-  // on the same surface as the prediction (negative when that neighbour was not measured).
-  double lower_measured_rms_db = -1.0, upper_measured_rms_db = -1.0;
+  // What a designer without the model would do: take a measured neighbour on the same surface as
+  // the prediction — for a held-out tip the same material's smaller and larger fitted tip, for a
+  // held-out material (material_hold_out.hpp) the same tip in the mix's first and second material
+  // (negative when that neighbour was not measured).
+  std::array<double, 2> measured_neighbour_rms_db{-1.0, -1.0};
 };
+
+// Predicts the held-out exemplar `held` as `point` (its own response and surface) with `model`,
+// against the no-interpolation baselines around the point, and against the exemplars of `all` that
+// `is_neighbour[0]` and `is_neighbour[1]` pick, taken as they are. Not predictable, saying why,
+// when the model lacks its surface.
+using NeighbourTest = std::function<bool(const forcing::ForcingExemplar&)>;
+InterpolatedPrediction predict_held_out(const forcing::ForcingModel& model,
+                                        const forcing::ForcingExemplar& held,
+                                        const DesignPoint& point,
+                                        std::span<const forcing::ForcingExemplar> all,
+                                        const std::array<NeighbourTest, 2>& is_neighbour);
 
 struct TipHoldOut {
   forcing::ForcingModel model;  // fitted without the held-out tip (reference: the smallest tip)
@@ -42,13 +57,14 @@ struct TipHoldOut {
 // The hold-out in a few numbers, over the predictable tools: how many beat both baselines, the
 // largest |RMS error − a baseline's|, and against the measured neighbours (every neighbour that
 // was measured is one comparison) how often the prediction is closer and the mean of each side.
-struct TipHoldOutSummary {
+struct HoldOutSummary {
   int predicted = 0, beats_every_baseline = 0;
   double widest_baseline_gap_db = 0.0;
   int compared_with_measured = 0, closer_than_measured = 0;
   double mean_predicted_db = 0.0, mean_measured_db = 0.0;  // over those comparisons
 };
-TipHoldOutSummary summarize(const TipHoldOut& held);
+HoldOutSummary summarize(std::span<const InterpolatedPrediction> predictions);
+inline HoldOutSummary summarize(const TipHoldOut& held) { return summarize(held.predictions); }
 
 // Exemplars need their responses (forcing::attach_responses). Throws std::invalid_argument when
 // no exemplar has `tip_m`, when it is not strictly between two other fitted tips, or when the
@@ -72,6 +88,10 @@ struct TipResolution {
   std::size_t effect_resolved_knots() const;
   std::size_t deviation_resolved_knots() const;
 };
+
+// How many of the values exceed twice their standard error (value and se of equal length).
+std::size_t knots_beyond_two_errors(const std::vector<double>& value,
+                                    const std::vector<double>& se);
 
 // From a jackknife of every exemplar (forcing::jackknife_curves: its full fit and replicates).
 // Throws std::invalid_argument when `tip_m` has no curve in the full fit or is not strictly

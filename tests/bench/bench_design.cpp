@@ -10,6 +10,7 @@
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/interpolation_check.hpp"
+#include "model/design/material_hold_out.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/leave_one_out.hpp"
@@ -73,8 +74,8 @@ void BM_ForcingFitAndLeaveOneOut(benchmark::State& state) {
 }
 BENCHMARK(BM_ForcingFitAndLeaveOneOut)->Iterations(3)->Unit(benchmark::kMillisecond);
 
-// The curves' standard errors (one refit per printed tool) and the 2 mm hold-out with what the
-// data resolve: what `nibrig forcing fit` and `forcing holdout` add to the fit.
+// The curves' standard errors (one refit per printed tool), the 2 mm and the DM95 hold-outs with
+// what the data resolve: what `nibrig forcing fit` and `forcing holdout` add to the fit.
 void BM_ForcingJackknifeAndHoldout(benchmark::State& state) {
   auto& in = inputs(true);
   std::size_t tools = 0, resolved = 0;
@@ -83,6 +84,11 @@ void BM_ForcingJackknifeAndHoldout(benchmark::State& state) {
     tools = jackknife.replicates.size();
     benchmark::DoNotOptimize(design::hold_out_tip(in.exemplars, 0.002).predictions.size());
     resolved = design::tip_resolution(jackknife, 0.002).effect_resolved_knots();
+    const double f = design::equal_modulus_fraction(in.materials, "DM95", "vero", "DM85");
+    benchmark::DoNotOptimize(
+        design::hold_out_material(in.exemplars, "DM95", "vero", "DM85", f).predictions.size());
+    benchmark::DoNotOptimize(
+        design::material_resolution(jackknife, "DM95", "vero", "DM85", f).fitted_fraction);
   }
   state.counters["tools"] = static_cast<double>(tools);
   state.counters["tip_effect_knots_resolved"] = static_cast<double>(resolved);

@@ -6,6 +6,7 @@
 
 #include "model/design/design_search.hpp"
 #include "model/design/interpolation_check.hpp"
+#include "model/design/material_hold_out.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_file.hpp"
@@ -65,12 +66,20 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
     worst += fmt::format("{}{} on {} {:.2f} dB", worst.empty() ? "" : ", ", loo.results[k].tool,
                          loo.results[k].surface, loo.results[k].rms_db);
 
-  const design::TipHoldOutSummary held =
+  const design::HoldOutSummary held =
       design::summarize(design::hold_out_tip(inputs.exemplars, 0.002));
   const design::TipResolution resolution = design::tip_resolution(jackknife, 0.002);
 
   const auto prediction = load_prediction_inputs(options, "", model);
   const design::PredictionSetup& setup = prediction->setup;
+  // The material axis: DM95 held out and predicted as the VeroClear/DM85 mix of its modulus.
+  const double dm95_fraction =
+      design::equal_modulus_fraction(setup.materials, "DM95", "vero", "DM85");
+  const design::HoldOutSummary held_dm95 = design::summarize(
+      design::hold_out_material(inputs.exemplars, "DM95", "vero", "DM85", dm95_fraction)
+          .predictions);
+  const design::MaterialResolution dm95 =
+      design::material_resolution(jackknife, "DM95", "vero", "DM85", dm95_fraction);
   const auto& threshold = *prediction->threshold;
   const design::PredictedTool predicted =
       design::predict_tool(setup, design::parse_design_point(kInterpolated), "office");
@@ -124,6 +133,10 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              "on {} of {}, all within {:.2f} dB of them (the 1 vs 4 mm tip effect exceeds twice "
              "its "
              "jackknife SE at {} of {} knots)\n"
+             "  DM95 tools predicted as the VeroClear/DM85 mix of DM95's modulus ({:.2f} DM85): "
+             "closer than both baselines on {} of {}; the fitted curves put DM95 at {:.2f} ± "
+             "{:.2f} "
+             "DM85 (the VeroClear-DM85 effect exceeds twice its SE at {} of {} knots)\n"
              "  predicted {} on office: {} (cross-validated error, carried into its place "
              "in the space)\n",
              options.modes, options.mesh_size * 1e3, model.exemplar_count(),
@@ -131,8 +144,10 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              loo.summary.mean_rms_db, loo.summary.median_rms_db, loo.summary.max_rms_db, worst,
              loo.summary.mean_baseline_rms_db, held.mean_predicted_db, held.mean_measured_db,
              held.beats_every_baseline, held.predicted, held.widest_baseline_gap_db,
-             resolution.effect_resolved_knots(), resolution.effect.size(), kInterpolated,
-             describe_descriptors(predicted)) +
+             resolution.effect_resolved_knots(), resolution.effect.size(), dm95_fraction,
+             held_dm95.beats_every_baseline, held_dm95.predicted, dm95.fitted_fraction,
+             dm95.fitted_fraction_se, dm95.effect_resolved_knots(), dm95.effect.size(),
+             kInterpolated, describe_descriptors(predicted)) +
          search_line +
          fmt::format(
              "  report: {}/ (forcing.json, tip_curves.png, material_curves.png, "

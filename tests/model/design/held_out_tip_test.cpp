@@ -48,7 +48,8 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
         "%-7s %-9s interpolated %.2f dB; with the 1 mm curve %.2f dB, with the 4 mm curve "
         "%.2f dB; measured 1 mm tool %.2f dB, 4 mm tool %.2f dB\n",
         r.tool.c_str(), r.surface.c_str(), rms_db, c.baselines[0].error.rms_db,
-        c.baselines[1].error.rms_db, r.lower_measured_rms_db, r.upper_measured_rms_db);
+        c.baselines[1].error.rms_db, r.measured_neighbour_rms_db[0],
+        r.measured_neighbour_rms_db[1]);
     EXPECT_DOUBLE_EQ(c.baselines[0].corner.tip_diameter_m, 0.001);
     EXPECT_DOUBLE_EQ(c.baselines[1].corner.tip_diameter_m, 0.004);
     ++predicted;
@@ -59,7 +60,7 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
     // Within the leave-one-out's worst (3.4 dB, forcing's RealCatalog test): a held-out tip is
     // predicted as well as a held-out tool.
     EXPECT_LT(rms_db, 3.5) << r.tool << " on " << r.surface;
-    for (double measured : {r.lower_measured_rms_db, r.upper_measured_rms_db}) {
+    for (double measured : {r.measured_neighbour_rms_db[0], r.measured_neighbour_rms_db[1]}) {
       if (measured < 0) continue;
       ++with_measured;
       closer_than_measured += rms_db < measured;
@@ -76,7 +77,7 @@ TEST(HeldOutTip, TwoMillimetreToolsPredictedFromOneAndFourComeCloserThanTheirMea
   EXPECT_LT(interpolated_sum / with_measured, measured_sum / with_measured);
   EXPECT_GT(closer_than_measured, with_measured / 2);
   // The summary the demo and `forcing holdout` print counts the same as this test does.
-  const TipHoldOutSummary summary = summarize(held);
+  const HoldOutSummary summary = summarize(held);
   EXPECT_EQ(summary.predicted, predicted);
   EXPECT_EQ(summary.beats_every_baseline, beaten);
   EXPECT_EQ(summary.compared_with_measured, with_measured);

@@ -140,6 +140,7 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   // The forcing model, its validation, a predicted design and a design search in that space.
   EXPECT_NE(text.find("leave-one-out over 23 of the paper's 27 tools"), std::string::npos) << text;
   EXPECT_NE(text.find("2 mm tools predicted from 1 and 4 mm"), std::string::npos) << text;
+  EXPECT_NE(text.find("DM95 tools predicted as the VeroClear/DM85 mix"), std::string::npos) << text;
   EXPECT_NE(text.find("design search on protector for cryon/office"), std::string::npos) << text;
   const auto forcing = out / "demo" / "forcing";
   EXPECT_TRUE(std::filesystem::exists(forcing / "forcing.json"));
@@ -148,6 +149,7 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   EXPECT_TRUE(is_png(forcing / "design_path.png"));
   const auto predicted = test::read_json(forcing / "predicted.json");
   EXPECT_EQ(predicted["amplitude_m_s2"].size(), predicted["speeds_mm_s"].size());
+  EXPECT_TRUE(predicted.contains("descriptor_error_covariance"));  // placed with its error
   const auto search = test::read_json(forcing / "design_search.json");
   EXPECT_GE(search["path"].size(), 9u);
 }

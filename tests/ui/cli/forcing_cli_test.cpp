@@ -135,6 +135,45 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
   EXPECT_TRUE(is_png(out / "plots" / "DM952_glass.png"));
 }
 
+TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
+  const auto out = test::scratch_dir("cli_forcing_holdout_material");
+  testing::internal::CaptureStdout();
+  const int code = run_cli(with_coarse(
+      {"forcing", "holdout", "--material", "DM95", "--csv", (out / "holdout.csv").string()}));
+  const std::string text = testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  // The 14 measured DM95 tools (1 and 4 mm on six surfaces, 2 mm on two), each as the mix of
+  // VeroClear and DM85 with DM95's modulus, beside both materials' curves and measured tools.
+  EXPECT_NE(text.find("held out the DM95 tools (14)"), std::string::npos) << text;
+  EXPECT_NE(text.find("the mix with DM95's Young's modulus"), std::string::npos) << text;
+  EXPECT_NE(text.find("measured vero  measured DM85"), std::string::npos) << text;
+  EXPECT_NE(text.find("interpolation beats both no-interpolation baselines (Fig. 14) on "),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("DM85 − vero (the material effect)"), std::string::npos) << text;
+  EXPECT_NE(text.find("its curve lies at a fraction "), std::string::npos) << text;
+  const auto csv = lines_of(out / "holdout.csv");
+  ASSERT_EQ(csv.size(), 1u + 14u * 7u);
+  EXPECT_EQ(csv[0].rfind("tool,surface,speed_mm_s,interpolated_rms_db,vero_curve_rms_db,"
+                         "DM85_curve_rms_db,measured_vero_rms_db,measured_DM85_rms_db",
+                         0),
+            0u)
+      << csv[0];
+
+  // A tip and a material at once, and a mix the material's modulus is not between, are refused.
+  testing::internal::CaptureStderr();
+  EXPECT_NE(run_cli({"forcing", "holdout", "--material", "DM95", "--tip", "2"}), 0);
+  testing::internal::GetCapturedStderr();
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int bad =
+      run_cli(with_coarse({"forcing", "holdout", "--material", "DM85", "--as", "vero,DM95"}));
+  testing::internal::GetCapturedStdout();
+  const std::string error = testing::internal::GetCapturedStderr();
+  EXPECT_NE(bad, 0);
+  EXPECT_NE(error.find("no mix of vero and DM95"), std::string::npos) << error;
+}
+
 TEST(ForcingCli, AMissingCatalogIsOneClearLine) {
   testing::internal::CaptureStderr();
   const int code = run_cli({"forcing", "fit", "/nonexistent/catalog.json"});
