@@ -132,20 +132,25 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
     out.results.push_back(std::move(result));
   }
 
+  out.summary = summarize(out.results);
+  return out;
+}
+
+LeaveOneOutSummary summarize(std::span<const HeldOutResult> results) {
   std::vector<double> errors, baselines;
   std::vector<std::size_t> order;
   double weighted_mean_squares = 0.0;
-  for (std::size_t k = 0; k < out.results.size(); ++k) {
-    if (!out.results[k].predictable) continue;
-    errors.push_back(out.results[k].rms_db);
-    baselines.push_back(out.results[k].baseline_rms_db);
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    if (!results[k].predictable) continue;
+    errors.push_back(results[k].rms_db);
+    baselines.push_back(results[k].baseline_rms_db);
     order.push_back(k);
-    if (const auto& d = out.results[k].descriptor_error)
+    if (const auto& d = results[k].descriptor_error)
       weighted_mean_squares += d->log10_weighted_mean * d->log10_weighted_mean;
   }
-  auto& summary = out.summary;
+  LeaveOneOutSummary summary;
   summary.predicted = errors.size();
-  summary.not_predictable = out.results.size() - errors.size();
+  summary.not_predictable = results.size() - errors.size();
   if (!errors.empty()) {
     const double n = static_cast<double>(errors.size());
     summary.mean_rms_db = std::accumulate(errors.begin(), errors.end(), 0.0) / n;
@@ -154,23 +159,33 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
     summary.weighted_mean_rms_log10 = std::sqrt(weighted_mean_squares / n);
     summary.max_rms_db = *std::max_element(errors.begin(), errors.end());
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return out.results[a].rms_db > out.results[b].rms_db;
+      return results[a].rms_db > results[b].rms_db;
     });
     order.resize(std::min<std::size_t>(order.size(), 3));
     summary.worst = order;
   }
-  return out;
+  return summary;
+}
+
+std::vector<DescriptorError> descriptor_errors(const LeaveOneOut& loo) {
+  std::vector<DescriptorError> errors;
+  for (const auto& result : loo.results)
+    if (result.descriptor_error) errors.push_back(*result.descriptor_error);
+  return errors;
 }
 
 std::vector<DescriptorError> held_out_descriptor_errors(std::span<const ForcingExemplar> exemplars,
                                                         const measure::ThresholdCurve& threshold,
                                                         const ForcingFitOptions& options) {
+  return descriptor_errors(leave_every_one_out(exemplars, &threshold, options));
+}
+
+LeaveOneOut leave_every_one_out(std::span<const ForcingExemplar> exemplars,
+                                const measure::ThresholdCurve* threshold,
+                                const ForcingFitOptions& options) {
   std::vector<std::size_t> every(exemplars.size());
   std::iota(every.begin(), every.end(), std::size_t{0});
-  std::vector<DescriptorError> errors;
-  for (auto& result : leave_one_out(exemplars, every, options, &threshold).results)
-    if (result.descriptor_error) errors.push_back(std::move(*result.descriptor_error));
-  return errors;
+  return leave_one_out(exemplars, every, options, threshold);
 }
 
 }  // namespace nibrig::model::forcing

@@ -57,6 +57,19 @@ LeaveOneOut leave_one_out(std::span<const ForcingExemplar> exemplars,
                           const ForcingFitOptions& options = {},
                           const measure::ThresholdCurve* threshold = nullptr);
 
+// Every exemplar held out in turn (results[k] is exemplars[k]): the paper's tools or any other
+// subset is then summarize() of their results, without refitting.
+LeaveOneOut leave_every_one_out(std::span<const ForcingExemplar> exemplars,
+                                const measure::ThresholdCurve* threshold = nullptr,
+                                const ForcingFitOptions& options = {});
+
+// The summary of any set of held-out results (worst: indices into `results`), as leave_one_out
+// gives for its own.
+LeaveOneOutSummary summarize(std::span<const HeldOutResult> results);
+
+// The descriptor errors of the predictable results that have one, in order.
+std::vector<DescriptorError> descriptor_errors(const LeaveOneOut& loo);
+
 // The descriptor errors of every exemplar that can be held out (all of them in turn; those that
 // cannot be predicted are left out, as leave_one_out says why). What a predicted tool's placement
 // uncertainty is estimated from, computed when the model is fitted because it needs each

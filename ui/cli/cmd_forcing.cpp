@@ -106,7 +106,7 @@ void run_fit(const FitCommandOptions& o) {
   ForcingInputs inputs = load_forcing_inputs(o.inputs);
   std::cout << describe_inputs(inputs);
   const auto start = std::chrono::steady_clock::now();
-  const forcing::ForcingModel model = fit_forcing_for_prediction(inputs);
+  const forcing::ForcingModel model = fit_forcing_for_prediction(inputs).model;
   const double fit_seconds = seconds_since(start);
 
   const auto [best, worst] =

@@ -52,15 +52,18 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   options.modes = 32;
   options.mesh_size = 0.004;
   ForcingInputs inputs = load_forcing_inputs(options);
-  forcing::ForcingModel model = fit_forcing_for_prediction(inputs);
+  ForcingForPrediction fitted = fit_forcing_for_prediction(inputs);
+  const forcing::ForcingModel& model = fitted.model;
   forcing::write_forcing_model(dir / "forcing.json", model);
   const forcing::CurveJackknife jackknife = forcing::jackknife_curves(inputs.exemplars);
   plot_scaling_curves(model, dir, &jackknife);
 
-  std::vector<std::size_t> paper;
+  // The paper's tools among the exemplars the fit already held out one by one.
+  forcing::LeaveOneOut loo;
   for (std::size_t e = 0; e < inputs.exemplars.size(); ++e)
-    if (forcing::is_paper_tool(inputs.exemplars[e])) paper.push_back(e);
-  const forcing::LeaveOneOut loo = forcing::leave_one_out(inputs.exemplars, paper);
+    if (forcing::is_paper_tool(inputs.exemplars[e]))
+      loo.results.push_back(fitted.every_exemplar_held_out.results[e]);
+  loo.summary = forcing::summarize(loo.results);
   std::string worst;
   for (std::size_t k : loo.summary.worst)
     worst += fmt::format("{}{} on {} {:.2f} dB", worst.empty() ? "" : ", ", loo.results[k].tool,

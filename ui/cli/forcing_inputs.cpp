@@ -80,22 +80,22 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
   return inputs;
 }
 
-forcing::ForcingModel fit_forcing_for_prediction(const ForcingInputs& inputs) {
+ForcingForPrediction fit_forcing_for_prediction(const ForcingInputs& inputs) {
   forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
   model.notes = inputs.notes;
   model.notes.push_back(
       "fit of Eq. 10 in log amplitude; ln t(2 mm) = ln m(vero) = 0 fix the scale, so F_S is the "
       "forcing the 2 mm VeroClear tool sees (model/forcing/forcing_fit.hpp)");
   const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
-  model.held_out_descriptor_errors =
-      forcing::held_out_descriptor_errors(inputs.exemplars, threshold);
+  forcing::LeaveOneOut held_out = forcing::leave_every_one_out(inputs.exemplars, &threshold);
+  model.held_out_descriptor_errors = forcing::descriptor_errors(held_out);
   model.descriptor_error_threshold = threshold.source();
   model.notes.push_back(fmt::format(
       "held_out_descriptor_errors: {} of {} exemplars held out of the fit in turn and predicted; "
       "log10(predicted/measured) of their weighted descriptors, the error a predicted tool's "
       "placement carries (model/design/descriptor_uncertainty.hpp)",
       model.held_out_descriptor_errors.size(), inputs.exemplars.size()));
-  return model;
+  return {std::move(model), std::move(held_out)};
 }
 
 std::string describe_inputs(const ForcingInputs& inputs) {

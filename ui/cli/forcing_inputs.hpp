@@ -8,6 +8,7 @@
 
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/forcing_model.hpp"
+#include "model/forcing/leave_one_out.hpp"
 
 namespace CLI {
 class App;
@@ -38,8 +39,13 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& options);
 // The model every command fits (forcing fit, the on-the-fly fit of predict and design, the demo):
 // Eq. 10 fitted to every exemplar, with the inputs' notes and the descriptor errors of every
 // exemplar held out in turn (weighted by the bundled threshold curve), which predicted tools'
-// placements carry. The leave-one-out fits take about as long again as the fit itself.
-model::forcing::ForcingModel fit_forcing_for_prediction(const ForcingInputs& inputs);
+// placements carry. The leave-one-out fits take about twice as long as the fit itself; they are
+// returned too (results[k] holds out exemplars[k]), so a summary of any subset costs no refit.
+struct ForcingForPrediction {
+  model::forcing::ForcingModel model;
+  model::forcing::LeaveOneOut every_exemplar_held_out;
+};
+ForcingForPrediction fit_forcing_for_prediction(const ForcingInputs& inputs);
 
 // The options above on a command: the catalog as a positional argument, --design, --materials,
 // --modes and --mesh-size. Files are checked when read, so a bad one fails in one line.

@@ -21,7 +21,7 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
     in->model = model::forcing::read_forcing_model(forcing_file);
   } else {
     spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
-    in->model = fit_forcing_for_prediction(load_forcing_inputs(options));
+    in->model = fit_forcing_for_prediction(load_forcing_inputs(options)).model;
   }
   in->threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
   if (in->model.held_out_descriptor_errors.empty()) {
