@@ -92,6 +92,29 @@ void expect_placed_with_its_descriptor_error(const std::filesystem::path& out,
   testing::internal::GetCapturedStdout();
   const std::string warning = testing::internal::GetCapturedStderr();
   EXPECT_NE(warning.find("placed as if measured"), std::string::npos) << warning;
+  // A damaged covariance is refused, naming the file and the field.
+  const auto refused = [&](nlohmann::json damaged, const std::string& field) {
+    std::ofstream(out / "damaged.json") << damaged.dump();
+    testing::internal::CaptureStdout();
+    testing::internal::CaptureStderr();
+    const int code = run_cli({"space", "embed", space_file.string(), catalog, "--predicted",
+                              (out / "damaged.json").string()});
+    testing::internal::GetCapturedStdout();
+    const std::string error = testing::internal::GetCapturedStderr();
+    EXPECT_NE(code, 0) << field;
+    EXPECT_NE(error.find("damaged.json"), std::string::npos) << error;
+    EXPECT_NE(error.find(field), std::string::npos) << error;
+  };
+  nlohmann::json asymmetric = predicted;
+  asymmetric["descriptor_error_covariance"]["matrix"][0][1] = 1.0;
+  refused(asymmetric, "descriptor_error_covariance.matrix");
+  nlohmann::json negative = predicted;
+  negative["descriptor_error_covariance"]["matrix"][1][1] = -0.1;
+  refused(negative, "descriptor_error_covariance.matrix[1]");
+  nlohmann::json unnamed = predicted;  // without the weighted mean the 2-D map needs
+  unnamed["descriptor_error_covariance"]["names"][1] = "loudness";
+  refused(unnamed, "descriptor_error_covariance.names");
+
   const auto with_error = predicted_sds(out / "placed.csv");
   const auto without_error = predicted_sds(out / "placed_without_error.csv");
 
