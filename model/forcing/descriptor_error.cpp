@@ -7,6 +7,8 @@
 
 namespace nibrig::model::forcing {
 
+double percent_off(double log10_ratio) { return 100.0 * (std::pow(10.0, log10_ratio) - 1.0); }
+
 DescriptorError descriptor_error(const std::string& tool, const std::string& surface,
                                  const io::VelocitySpectrum& predicted,
                                  const io::VelocitySpectrum& measured,

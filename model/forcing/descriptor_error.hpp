@@ -29,6 +29,9 @@ struct DescriptorError {
 // band, the total power, is no space's descriptor).
 inline constexpr int kMinDescriptorBands = 2, kMaxDescriptorBands = 5;
 
+// A log10 ratio as a percentage off: log10(1.1) is +10 %.
+double percent_off(double log10_ratio);
+
 // Both spectra weighted by `threshold` (compute_vibration_descriptors). Throws
 // std::invalid_argument naming the tool and surface when a descriptor of either is not positive
 // (no logarithm), and what compute_vibration_descriptors throws for a bad grid.

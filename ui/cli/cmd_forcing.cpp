@@ -18,6 +18,7 @@
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 
@@ -26,9 +27,6 @@ namespace nibrig::ui::cli {
 namespace {
 
 namespace forcing = model::forcing;
-
-// log10(predicted / measured) as a percentage off: +0.0414 is +10 %.
-double percent_off(double log10_ratio) { return 100.0 * (std::pow(10.0, log10_ratio) - 1.0); }
 
 struct FitCommandOptions {
   ForcingInputOptions inputs;
@@ -47,18 +45,11 @@ struct LooCommandOptions {
 std::string curves_table(const forcing::ForcingModel& model,
                          const forcing::CurveJackknife& jackknife) {
   const bool errors = jackknife.replicates.size() >= 2;
-  std::string out = fmt::format("{:<22}", "gain (dB) at Hz");
-  for (double f : model.knot_frequencies_hz) out += fmt::format("{:>7g}", f);
-  out += "\n";
+  constexpr int kLabelWidth = 22;
+  std::string out = knot_table_header("gain (dB) at Hz", model.knot_frequencies_hz, kLabelWidth);
   auto row = [&](const std::string& label, const std::vector<double>& knots,
                  const std::vector<double>& standard_errors) {
-    out += fmt::format("{:<22}", label);
-    for (double k : knots) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(k));
-    out += "\n";
-    if (standard_errors.empty()) return;
-    out += fmt::format("{:<22}", "  ± (SE)");
-    for (double se : standard_errors) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(se));
-    out += "\n";
+    out += knot_table_rows(label, knots, standard_errors, kLabelWidth);
   };
   for (const auto& [d, knots] : model.tip_log_gain)
     row(fmt::format("tip {:g} mm{}", d * 1e3,
@@ -98,8 +89,9 @@ std::string descriptor_error_summary(const forcing::ForcingModel& model) {
       "predicted descriptors, each of {} exemplars held out: weighted mean vibration off by "
       "{:.1f} % RMS (worst {} on {}: {:+.1f} %), each of {} band energies by {:.1f} % RMS; "
       "predicted tools are placed with this error (forcing.json: held_out_descriptor_errors)\n",
-      errors.size(), percent_off(rms), worst->tool, worst->surface,
-      percent_off(worst->log10_weighted_mean), forcing::kMaxDescriptorBands, percent_off(band_rms));
+      errors.size(), forcing::percent_off(rms), worst->tool, worst->surface,
+      forcing::percent_off(worst->log10_weighted_mean), forcing::kMaxDescriptorBands,
+      forcing::percent_off(band_rms));
 }
 
 void run_fit(const FitCommandOptions& o) {
@@ -147,7 +139,7 @@ std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& 
       csv << ',' << (r.predictable ? fmt::format("{}", r.rms_db_by_speed[s]) : "");
     csv << ','
         << (r.descriptor_error
-                ? fmt::format("{}", percent_off(r.descriptor_error->log10_weighted_mean))
+                ? fmt::format("{}", forcing::percent_off(r.descriptor_error->log10_weighted_mean))
                 : "");
     std::string reason = r.reason;
     std::replace(reason.begin(), reason.end(), '"', '\'');
@@ -193,7 +185,7 @@ void run_loo(const LooCommandOptions& o) {
       "{:.2f}, max {:.2f}; baseline (geometric mean of the other tools on the surface) mean "
       "{:.2f}; perceptually weighted mean vibration off by {:.1f} % RMS\n",
       loo.results.size(), s.predicted, s.not_predictable, seconds, s.mean_rms_db, s.median_rms_db,
-      s.max_rms_db, s.mean_baseline_rms_db, percent_off(s.weighted_mean_rms_log10));
+      s.max_rms_db, s.mean_baseline_rms_db, forcing::percent_off(s.weighted_mean_rms_log10));
   if (!s.worst.empty()) {
     std::string worst = "worst:";
     for (std::size_t k = 0; k < s.worst.size(); ++k) {

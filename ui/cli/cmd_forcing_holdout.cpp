@@ -26,6 +26,7 @@
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_inputs.hpp"
 #include "ui/cli/interpolation_report.hpp"
+#include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 
@@ -84,23 +85,20 @@ std::string holdout_csv(const HoldoutView& v) {
   return csv.str();
 }
 
-// A per-knot table in dB: a row of values and under it their standard errors.
+// The per-knot tables of what the data resolve: values over their standard errors, in dB.
+constexpr int kLabelWidth = 34;
+
 std::string knot_rows(const std::string& label, const std::vector<double>& value,
                       const std::vector<double>& se) {
-  std::string out = fmt::format("{:<34}", label);
-  for (double v : value) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(v));
-  out += fmt::format("\n{:<34}", "  ± (SE)");
-  for (double e : se) out += fmt::format("{:>7.2f}", forcing::log_gain_to_db(e));
-  return out + "\n";
+  return knot_table_rows(label, value, se, kLabelWidth);
 }
 
 std::string knot_header(const std::vector<double>& knots, std::size_t tools) {
-  std::string out = fmt::format(
-      "what the data resolve (all tools fitted; SE: delete-one-tool jackknife over {} tools):\n"
-      "{:<34}",
-      tools, "dB at Hz");
-  for (double f : knots) out += fmt::format("{:>7g}", f);
-  return out + "\n";
+  return fmt::format(
+             "what the data resolve (all tools fitted; SE: delete-one-tool jackknife over {} "
+             "tools):\n",
+             tools) +
+         knot_table_header("dB at Hz", knots, kLabelWidth);
 }
 
 // The tip effect and the held-out curve's departure from the interpolation, per knot in dB with

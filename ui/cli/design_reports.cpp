@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/forcing/descriptor_error.hpp"
 #include "model/io/catalog.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
@@ -64,7 +65,7 @@ std::string describe_descriptors(const design::PredictedTool& tool) {
     const auto names = model::space::paper_descriptor_names(2);  // μ, log10 weighted mean
     const Eigen::MatrixXd c = tool.descriptor_errors.block(names);
     if (c(0, 0) > 0) mu += fmt::format(" ± {:.4f}", std::sqrt(c(0, 0)));
-    vibration += fmt::format(" ± {:.1f} %", 100.0 * (std::pow(10.0, std::sqrt(c(1, 1))) - 1.0));
+    vibration += fmt::format(" ± {:.1f} %", model::forcing::percent_off(std::sqrt(c(1, 1))));
   }
   return mu + ", " + vibration;
 }

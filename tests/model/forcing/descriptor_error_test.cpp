@@ -39,6 +39,12 @@ TEST(DescriptorError, AConstantFactorIsItsLogInTheMeanAndTwiceItInEveryBand) {
   }
 }
 
+TEST(DescriptorError, PercentOffIsTheRatioLessOne) {
+  EXPECT_NEAR(percent_off(std::log10(1.1)), 10.0, 1e-12);
+  EXPECT_NEAR(percent_off(std::log10(0.75)), -25.0, 1e-12);
+  EXPECT_EQ(percent_off(0.0), 0.0);
+}
+
 TEST(DescriptorError, ASilentSpectrumHasNoLogarithmAndIsNamed) {
   const auto truth = test::make_synthetic_truth(3);
   const io::VelocitySpectrum& measured = truth.exemplars.front().measured;
