@@ -112,8 +112,8 @@ bool Engine::select(std::size_t slot) {
   return push({CommandKind::select, slot, nullptr, nullptr, 0, 0});
 }
 
-bool Engine::attach(std::unique_ptr<SpeedSource>&& source) {
-  if (!source) throw std::invalid_argument("no speed source to attach");
+bool Engine::attach(std::unique_ptr<StrokeSource>&& source) {
+  if (!source) throw std::invalid_argument("no stroke to attach");
   collect();
   if (!push({CommandKind::attach, 0, nullptr, source.get(), 0, next_sequence_})) return false;
   ++next_sequence_;
@@ -156,7 +156,7 @@ void Engine::collect() {
 
 // ---- audio thread ----
 
-void Engine::retire(Voice* voice, SpeedSource* source, FirFilter* filter) noexcept {
+void Engine::retire(Voice* voice, StrokeSource* source, FirFilter* filter) noexcept {
   // Cannot fail: see the capacity of retired_ in the constructor.
   retired_.try_push({voice, source, filter});
 }
@@ -201,37 +201,25 @@ void Engine::take_commands() noexcept {
     }
   }
   if (auto contact = contacts_.pop_latest()) {
-    target_speed_ = contact->speed;
-    target_force_ = contact->force;
+    live_.aim(contact->speed, contact->force);
     contact_sequence_ = contact->sequence;
   }
   if (source_ && contact_sequence_ > source_sequence_) {  // a newer live value: the stylus took over
-    // Start the live ramp from where the source was, so the switch does not jump.
-    speed_ = source_->speed_at(static_cast<double>(internal_clock_ - source_start_) / internal_rate_);
-    force_ = source_->force_at(static_cast<double>(internal_clock_ - source_start_) / internal_rate_);
+    // Start the live ramp from where the stroke is now, so the switch does not jump.
+    double speed = 0, force = 0;
+    source_->fill(internal_clock_ - source_start_, internal_rate_, &speed, &force, 1);
+    live_.start_from(speed, force);
     retire(nullptr, source_);
     source_ = nullptr;
   }
 }
 
 void Engine::fill_contact(std::size_t count) noexcept {
-  if (source_) {
-    for (std::size_t i = 0; i < count; ++i) {
-      const double t = static_cast<double>(internal_clock_ + i - source_start_) / internal_rate_;
-      speed_buffer_[i] = source_->speed_at(t);
-      force_buffer_[i] = source_->force_at(t);
-    }
-    return;
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    const double u = static_cast<double>(i + 1) / static_cast<double>(count);
-    speed_buffer_[i] = speed_ + u * (target_speed_ - speed_);
-    force_buffer_[i] = force_ + u * (target_force_ - force_);
-  }
-  if (count > 0) {
-    speed_ = target_speed_;
-    force_ = target_force_;
-  }
+  if (source_)
+    source_->fill(internal_clock_ - source_start_, internal_rate_, speed_buffer_.data(),
+                  force_buffer_.data(), count);
+  else
+    live_.fill(0, internal_rate_, speed_buffer_.data(), force_buffer_.data(), count);
 }
 
 void Engine::mix_players(std::size_t count) noexcept {

@@ -13,8 +13,8 @@
 #include "rt/engine_stats.hpp"
 #include "rt/fir_filter.hpp"
 #include "rt/output_stage.hpp"
-#include "rt/speed_source.hpp"
 #include "rt/spsc_queue.hpp"
+#include "rt/stroke_source.hpp"
 #include "rt/upsampler.hpp"
 #include "rt/voice.hpp"
 
@@ -65,13 +65,13 @@ class Engine final : public BlockRenderer {
   bool load(std::size_t slot, std::unique_ptr<Voice>&& voice);
   // Crossfades to slot; the other slots keep running silently so that switching back is instant.
   bool select(std::size_t slot);
-  // Live speed (m/s) and normal force (N), e.g. from a stylus or a panel: each block ramps from
-  // the last value to the newest over its samples (no lag beyond one block). A live value
-  // detaches any speed source.
+  // Live speed (m/s) and normal force (N), e.g. from a stylus, the pad or the rig: each block
+  // ramps from the last value to the newest over its samples (no lag beyond one block; a
+  // LiveStroke). A live value detaches any attached stroke, starting from where it was.
   bool set_contact(double speed_m_s, double normal_force_n);
-  // Speed and force from `source`, evaluated at every internal sample on the engine's own clock
-  // from when it is taken over (deterministic: an offline render and a device hear the same).
-  bool attach(std::unique_ptr<SpeedSource>&& source);
+  // Speed and force from `source`, filled a block at a time on the engine's own clock from when
+  // it is taken over (deterministic: an offline render and a device hear the same).
+  bool attach(std::unique_ptr<StrokeSource>&& source);
   bool set_output_level(double level_per_m_s2);
   // The actuator's inverse filter (playback/actuator_file.hpp), run on the mix at the internal
   // rate: it turns requested m/s² into output level so that the actuator
@@ -97,7 +97,7 @@ class Engine final : public BlockRenderer {
     CommandKind kind;
     std::size_t slot;
     Voice* voice;
-    SpeedSource* source;
+    StrokeSource* source;
     double value;
     std::uint64_t sequence;
     FirFilter* filter = nullptr;
@@ -108,7 +108,7 @@ class Engine final : public BlockRenderer {
   };
   struct Retired {
     Voice* voice;
-    SpeedSource* source;
+    StrokeSource* source;
     FirFilter* filter = nullptr;
   };
   struct Player {
@@ -123,7 +123,7 @@ class Engine final : public BlockRenderer {
   void take_commands() noexcept;
   void fill_contact(std::size_t count) noexcept;
   void mix_players(std::size_t count) noexcept;
-  void retire(Voice* voice, SpeedSource* source, FirFilter* filter = nullptr) noexcept;
+  void retire(Voice* voice, StrokeSource* source, FirFilter* filter = nullptr) noexcept;
 
   EngineSettings settings_;
   double internal_rate_;
@@ -137,13 +137,12 @@ class Engine final : public BlockRenderer {
   // Audio side.
   std::vector<Player> players_;
   std::size_t selected_ = 0;
-  SpeedSource* source_ = nullptr;
+  StrokeSource* source_ = nullptr;  // attached; when none, live_ fills the contact
+  LiveStroke live_;
   FirFilter* calibration_ = nullptr;
   std::uint64_t source_sequence_ = 0, contact_sequence_ = 0;
   std::uint64_t source_start_ = 0;  // internal sample at which the source was taken over
   std::uint64_t internal_clock_ = 0;
-  double speed_ = 0, force_ = 0;                  // last live values reached
-  double target_speed_ = 0, target_force_ = 0;    // newest live values
   double level_, target_level_, level_step_ = 0;
   std::vector<double> speed_buffer_, force_buffer_, voice_buffer_, mix_buffer_;
   Upsampler upsampler_;

@@ -59,7 +59,7 @@ std::unique_ptr<nibrig::rt::Engine> engine_with_voices(std::size_t voices) {
     engine->load(i, nibrig::rt::build_voice("bench", stylus64(), full_spectrum(),
                                             engine->internal_rate(), 1 + i));
   engine->select(0);
-  engine->attach(std::make_unique<nibrig::rt::SweepSpeed>());
+  engine->attach(std::make_unique<nibrig::rt::SweepStroke>());
   return engine;
 }
 

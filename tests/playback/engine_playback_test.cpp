@@ -45,7 +45,7 @@ std::unique_ptr<rt::Engine> sweeping_engine() {
   auto engine = std::make_unique<rt::Engine>(rt::EngineSettings{});
   engine->load(0, voice("cryon", engine->internal_rate(), 7));
   engine->select(0);
-  engine->attach(std::make_unique<rt::SweepSpeed>());
+  engine->attach(std::make_unique<rt::SweepStroke>());
   return engine;
 }
 
@@ -137,7 +137,7 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
         ++swaps;
       }
       if (i % 700 == 0) engine.select(i / 700 % 3);
-      if (i % 5000 == 0) engine.attach(std::make_unique<rt::SweepSpeed>());
+      if (i % 5000 == 0) engine.attach(std::make_unique<rt::SweepStroke>());
       engine.collect();
       std::this_thread::sleep_for(50us);
     }

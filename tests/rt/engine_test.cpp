@@ -26,7 +26,7 @@ std::vector<float> render(Engine& engine, std::size_t frames, std::size_t block)
 }
 
 std::unique_ptr<Engine> engine_with(const std::vector<std::string>& tools, std::size_t selected,
-                                    std::unique_ptr<SpeedSource> source) {
+                                    std::unique_ptr<StrokeSource> source) {
   auto engine = std::make_unique<Engine>(EngineSettings{});
   for (std::size_t i = 0; i < tools.size(); ++i)
     EXPECT_TRUE(engine->load(i, testing::catalog_voice(tools[i], "note", engine->internal_rate(), 100 + i)));
@@ -59,8 +59,8 @@ TEST(Engine, SilentWithoutVoicesOrContact) {
 }
 
 TEST(Engine, OutputDoesNotDependOnTheBlockSizes) {
-  auto a = engine_with({"stab", "cryon"}, 0, std::make_unique<SweepSpeed>());
-  auto b = engine_with({"stab", "cryon"}, 0, std::make_unique<SweepSpeed>());
+  auto a = engine_with({"stab", "cryon"}, 0, std::make_unique<SweepStroke>());
+  auto b = engine_with({"stab", "cryon"}, 0, std::make_unique<SweepStroke>());
   const auto x = render(*a, 48000, 64);
   std::vector<float> y(48000);
   for (std::size_t at = 0, block = 1; at < y.size(); block = block % 500 + 37) {
@@ -73,7 +73,7 @@ TEST(Engine, OutputDoesNotDependOnTheBlockSizes) {
 }
 
 TEST(Engine, SwitchingSlotsCrossfadesWithoutAClick) {
-  auto engine = engine_with({"stab", "cryon", "vero2"}, 0, std::make_unique<ConstantSpeed>(0.11));
+  auto engine = engine_with({"stab", "cryon", "vero2"}, 0, std::make_unique<ConstantStroke>(0.11));
   const auto before = render(*engine, 48000, 64);
   ASSERT_TRUE(engine->select(2));
   const auto after = render(*engine, 48000, 64);
@@ -115,7 +115,7 @@ TEST(Engine, LimiterHoldsWhateverTheVoicesDo) {
   for (auto& row : loud.amplitude_m_s2)
     for (auto& a : row) a *= 1e150;
   ASSERT_TRUE(engine.load(0, build_voice("loud", testing::small_stylus(), loud, engine.internal_rate(), 5)));
-  ASSERT_TRUE(engine.attach(std::make_unique<ConstantSpeed>(0.2)));
+  ASSERT_TRUE(engine.attach(std::make_unique<ConstantStroke>(0.2)));
   ASSERT_TRUE(engine.set_output_level(1e300));
   const auto out = render(engine, 96000, 64);
   for (float x : out) ASSERT_TRUE(std::isfinite(x) && std::abs(x) <= settings.output.limit);
@@ -146,7 +146,7 @@ TEST(Engine, NoAllocationOnTheAudioThreadWhileAnotherThreadFloodsIt) {
         }
         engine.select(i / 50 % 3);
       }
-      if (i % 500 == 0) engine.attach(std::make_unique<SweepSpeed>());
+      if (i % 500 == 0) engine.attach(std::make_unique<SweepStroke>());
       engine.collect();
       ++i;
       std::this_thread::yield();
@@ -185,8 +185,8 @@ namespace nibrig::rt {
 namespace {
 
 TEST(Engine, ACalibrationFilterShapesTheMixBeforeTheDevice) {
-  auto plain = engine_with({"stab"}, 0, std::make_unique<ConstantSpeed>(0.1));
-  auto calibrated = engine_with({"stab"}, 0, std::make_unique<ConstantSpeed>(0.1));
+  auto plain = engine_with({"stab"}, 0, std::make_unique<ConstantStroke>(0.1));
+  auto calibrated = engine_with({"stab"}, 0, std::make_unique<ConstantStroke>(0.1));
   // A one-tap filter of gain 2 (the simplest inverse filter): every output sample doubles, up
   // to float rounding, since everything after the mix is linear below the limiter.
   const std::vector<double> taps{2.0};

@@ -8,17 +8,16 @@
 #include <cstdio>
 #include <thread>
 
-#include "model/design/design_point.hpp"
+#include "model/design/tool_sound.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/actuator_store.hpp"
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
-#include "rt/engine.hpp"
+#include "playback/playback_session.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/stroke_options.hpp"
-#include "ui/cli/tool_voice.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -47,48 +46,33 @@ void devices() {
 void audition(const AuditionOptions& o) {
   if (o.also.size() > 2) throw std::invalid_argument("--also takes at most two more tools (a triplet)");
   const playback::OutputSettings device = output_settings(o.device, "nibrig-audition");
-  const auto catalog = voice_catalog(o.stroke.catalog);
+  model::design::ToolSounds sounds(tool_sound_options(o.stroke));
   std::vector<std::string> tools{o.stroke.tool};
   tools.insert(tools.end(), o.also.begin(), o.also.end());
-  for (const auto& tool : tools)
-    if (names_design_point(tool))
-      model::design::parse_design_point(tool);  // refuses a bad design before any work
-    else
-      pairing_spectrum(catalog, o.stroke.catalog, tool, o.stroke.surface);
-  const StylusModes stylus = stylus_modes(o.stroke.design);
-  DesignPredictor predictor(o.stroke.catalog, o.stroke.forcing_model);
+  for (const auto& tool : tools) sounds.check(tool, o.stroke.surface);  // before any work
+  rt::Stroke stroke = make_stroke(o.stroke);
+  std::vector<model::design::ToolSound> made;
+  for (const auto& tool : tools) made.push_back(sounds.sound(tool, o.stroke.surface));
+  std::vector<playback::SessionVoice> voices;
+  for (const auto& s : made) voices.push_back({s.name, s.modal, s.spectrum});
   rt::EngineSettings settings;
   settings.sample_rate_hz = device.sample_rate;
-  settings.slots = 1 + o.also.size();
-  rt::Engine engine(settings);
-  std::vector<std::string> names;
-  for (std::size_t i = 0; i < tools.size(); ++i) {
-    auto voice = names_design_point(tools[i])
-                     ? predicted_voice(predictor.predict(tools[i], o.stroke.surface),
-                                       engine.internal_rate(), o.stroke.seed + i)
-                     : tool_voice(catalog, o.stroke.catalog, tools[i], o.stroke.surface, stylus,
-                                  engine.internal_rate(), o.stroke.seed + i);
-    names.push_back(voice->name());
-    engine.load(i, std::move(voice));
-  }
-  engine.select(0);
+  playback::PlaybackSession session(settings, voices, std::move(stroke.source), o.stroke.seed);
+  rt::Engine& engine = session.engine();
+  const std::vector<std::string>& names = session.names();
   if (!o.actuator.empty()) {
     const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
-    const auto filter = playback::redesign_for_rate(calibration, engine.internal_rate());
-    engine.set_calibration(std::make_unique<rt::FirFilter>(filter.taps));
-    engine.set_output_level(1.0);  // the filter turns m/s² into output level
+    const auto filter = session.use_actuator(calibration);
     std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
                 calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db,
                 calibration.design.band_low_hz, calibration.design.band_high_hz);
   }
-  Stroke stroke = make_stroke(o.stroke);
-  engine.attach(std::move(stroke.source));
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
 
   playback::AudioOutput output(engine, device);
   const auto info = output.stream_info();
   std::printf("playing %s through %s on %s '%s' channel %u at %u Hz, %u-frame periods; %s\n",
-              names[0].c_str(), stylus.name.c_str(), info.api.c_str(), info.device.c_str(),
+              names[0].c_str(), made[0].modes.c_str(), info.api.c_str(), info.device.c_str(),
               device.output_channel, info.sample_rate, info.period_frames,
               stroke.description.c_str());
   const auto start = std::chrono::steady_clock::now();

@@ -8,7 +8,7 @@
 
 #include "model/catalog/catalog_builder.hpp"
 #include "model/catalog/compact.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
@@ -85,7 +85,7 @@ void print_summary(const model::catalog::CatalogBuild& build, std::ostream& out)
 void build(const CatalogOptions& options, unsigned threads) {
   namespace catalog = model::catalog;
   const auto threshold = model::measure::ThresholdCurve::load(
-      options.threshold.empty() ? default_threshold_curve() : options.threshold);
+      options.threshold.empty() ? model::io::default_threshold_curve() : options.threshold);
   const auto found = catalog::find_recordings(options.folder);
   for (const auto& s : found.skipped) spdlog::info("skipped {}", s);
   if (found.files.empty()) {

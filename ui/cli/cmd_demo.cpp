@@ -10,7 +10,7 @@
 #include "model/io/catalog.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/threshold_curve.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/demo_forcing.hpp"
 #include "ui/cli/demo_mechanics.hpp"
@@ -62,8 +62,8 @@ std::string descriptors_csv(const model::io::Catalog& catalog, int max_bands) {
 void demo(const DemoOptions& options, unsigned threads) {
   constexpr int max_bands = 5;
   const auto catalog_path =
-      options.catalog.empty() ? asset("default_catalog.json") : options.catalog;
-  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+      options.catalog.empty() ? model::io::default_catalog() : options.catalog;
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   auto catalog = model::io::read_catalog(catalog_path);
 
   // The descriptor stage of the pipeline, run here on the bundled spectra: weighting by the

@@ -12,10 +12,10 @@
 #include "model/io/catalog.hpp"
 #include "model/space/space_file.hpp"
 #include "ui/cli/elapsed.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/prediction_inputs.hpp"
+#include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_inputs.hpp"
@@ -42,7 +42,7 @@ struct DesignOptions {
 
 void run_design(const DesignOptions& o) {
   const auto catalog_path =
-      o.inputs.catalog.empty() ? asset("default_catalog.json") : o.inputs.catalog;
+      o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;
   const space::SpaceFile space_file = space::read_space_file(o.space_file);
   if (!space_file.descriptor_map)
     throw std::invalid_argument(o.space_file.string() +
@@ -66,7 +66,7 @@ void run_design(const DesignOptions& o) {
     throw std::invalid_argument("--mix takes two materials, e.g. vero,DM85");
   }
 
-  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model);
+  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& model = inputs->model;
   range.min_tip_m = model.tip_log_gain.begin()->first;
   range.max_tip_m = model.tip_log_gain.rbegin()->first;

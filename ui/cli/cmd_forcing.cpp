@@ -13,11 +13,11 @@
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/measure/threshold_curve.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_figures.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/forcing_options.hpp"
 #include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
@@ -95,7 +95,7 @@ std::string descriptor_error_summary(const forcing::ForcingModel& model) {
 }
 
 void run_fit(const FitCommandOptions& o) {
-  ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   const auto start = std::chrono::steady_clock::now();
   const forcing::ForcingModel model = fit_forcing_for_prediction(inputs).model;
@@ -149,7 +149,7 @@ std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& 
 }
 
 void run_loo(const LooCommandOptions& o) {
-  ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   std::vector<std::size_t> held;
   for (std::size_t e = 0; e < inputs.exemplars.size(); ++e)
@@ -160,7 +160,7 @@ void run_loo(const LooCommandOptions& o) {
         "among the exemplars; --all holds out every exemplar instead");
 
   const auto start = std::chrono::steady_clock::now();
-  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   const forcing::LeaveOneOut loo = forcing::leave_one_out(inputs.exemplars, held, {}, &threshold);
   const double seconds = seconds_since(start);
   const auto& speeds = inputs.exemplars.front().measured.speeds_m_s;

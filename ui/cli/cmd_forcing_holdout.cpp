@@ -21,10 +21,10 @@
 #include "model/design/material_hold_out.hpp"
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/mechanics/material_table.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/elapsed.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/forcing_options.hpp"
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
@@ -214,7 +214,7 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
 }
 
 void run_tip_holdout(const HoldoutOptions& o) {
-  const ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   const double tip_m = o.tip_mm * 1e-3;
   const auto start = std::chrono::steady_clock::now();
@@ -249,14 +249,14 @@ void run_material_holdout(const HoldoutOptions& o) {
   double fraction = o.fraction;
   if (fraction < 0) {
     const auto materials = model::mechanics::read_material_table(
-        o.inputs.materials.empty() ? asset("materials.json") : o.inputs.materials);
+        o.inputs.materials.empty() ? model::io::default_materials() : o.inputs.materials);
     fraction = design::equal_modulus_fraction(materials, o.material, first, second);
     why = fmt::format(
         ", the mix with {}'s Young's modulus by the rule of mixtures the mechanics uses",
         o.material);
   }
   // The fraction first: a mix that cannot be made fails before the designs are meshed.
-  const ForcingInputs inputs = load_forcing_inputs(o.inputs);
+  const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   const auto start = std::chrono::steady_clock::now();
   const design::MaterialHoldOut held =

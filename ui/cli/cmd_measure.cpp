@@ -8,7 +8,7 @@
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/session.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
@@ -45,7 +45,7 @@ void write_friction_figures(const model::catalog::FrictionAnalysis& a,
 void measure(const MeasureOptions& options) {
   namespace catalog = model::catalog;
   const auto threshold = model::measure::ThresholdCurve::load(
-      options.threshold.empty() ? default_threshold_curve() : options.threshold);
+      options.threshold.empty() ? model::io::default_threshold_curve() : options.threshold);
   const catalog::AnalysisOptions analysis_options;
   const std::string stem = recording_stem(options.recording);
   const std::filesystem::path plot_dir =

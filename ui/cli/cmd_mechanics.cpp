@@ -11,7 +11,7 @@
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/frequency_response.hpp"
 #include "model/mechanics/ring_down.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/mechanics_figures.hpp"
@@ -56,7 +56,7 @@ struct RingDownCommandOptions {
 Eigen::Vector3d vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 mech::MaterialTable load_materials(const DesignOptions& o) {
-  return mech::read_material_table(o.materials.empty() ? asset("materials.json") : o.materials);
+  return mech::read_material_table(o.materials.empty() ? model::io::default_materials() : o.materials);
 }
 
 mech::Design design_from(const DesignOptions& o, const mech::MaterialTable& materials) {

@@ -18,14 +18,14 @@
 #include "model/io/catalog.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
-#include "ui/cli/prediction_inputs.hpp"
+#include "ui/cli/forcing_options.hpp"
 #include "ui/report/figures.hpp"
 
 namespace nibrig::ui::cli {
@@ -70,13 +70,13 @@ void run_predict(const PredictOptions& o) {
   design::DesignPoint point;
   if (o.design.ends_with(".json")) {
     own = mech::read_design(
-        o.design, mech::read_material_table(o.inputs.materials.empty() ? asset("materials.json")
+        o.design, mech::read_material_table(o.inputs.materials.empty() ? model::io::default_materials()
                                                                        : o.inputs.materials));
     point = design::design_point_of(*own);
   } else {
     point = design::parse_design_point(o.design);
   }
-  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model);
+  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& catalog = inputs->catalog;
   const auto& threshold = *inputs->threshold;
   const auto start = std::chrono::steady_clock::now();

@@ -5,12 +5,11 @@
 #include <chrono>
 #include <cstdio>
 
-#include "playback/offline_render.hpp"
-#include "rt/engine.hpp"
+#include "model/design/tool_sound.hpp"
+#include "playback/playback_session.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/stroke_options.hpp"
-#include "ui/cli/tool_voice.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -24,42 +23,24 @@ struct RenderOptions {
 };
 
 void render(const RenderOptions& o) {
-  const auto catalog = voice_catalog(o.stroke.catalog);
-  const bool predicted = names_design_point(o.stroke.tool);
-  if (!predicted) pairing_spectrum(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface);
+  model::design::ToolSounds sounds(tool_sound_options(o.stroke));
+  sounds.check(o.stroke.tool, o.stroke.surface);  // before any meshing or fitting
+  rt::Stroke stroke = make_stroke(o.stroke);       // a bad trajectory file too
+  const model::design::ToolSound sound = sounds.sound(o.stroke.tool, o.stroke.surface);
   rt::EngineSettings settings;
   settings.sample_rate_hz = o.rate;
-  rt::Engine engine(settings);
-  std::unique_ptr<rt::Voice> voice;
-  std::string modes;
-  if (predicted) {
-    DesignPredictor predictor(o.stroke.catalog, o.stroke.forcing_model);
-    const auto tool = predictor.predict(o.stroke.tool, o.stroke.surface);
-    voice = predicted_voice(tool, engine.internal_rate(), o.stroke.seed);
-    modes = tool.design_name;
-  } else {
-    const StylusModes stylus = stylus_modes(o.stroke.design);
-    voice = tool_voice(catalog, o.stroke.catalog, o.stroke.tool, o.stroke.surface, stylus,
-                       engine.internal_rate(), o.stroke.seed);
-    modes = stylus.name;
-  }
-  const std::string name = voice->name();
-  engine.load(0, std::move(voice));
-  engine.select(0);
-  Stroke stroke = make_stroke(o.stroke);
-  engine.attach(std::move(stroke.source));
-
-  playback::OfflineRenderSettings render_settings;
-  render_settings.sample_rate_hz = o.rate;
-  render_settings.block_frames = o.period;
-  render_settings.seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
+  playback::PlaybackSession session(settings, {{sound.name, sound.modal, sound.spectrum}},
+                                    std::move(stroke.source), o.stroke.seed);
+  const std::string& name = session.names().front();
+  const std::string& modes = sound.modes;
+  const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
   const auto start = std::chrono::steady_clock::now();
-  const auto result = playback::render_to_wav(engine, o.output, render_settings);
+  const auto result = session.render_to_wav(o.output, seconds, o.period);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const auto stats = engine.stats();
+  const auto stats = session.engine().stats();
   std::printf("%s through %s, %s\n", name.c_str(), modes.c_str(), stroke.description.c_str());
   std::printf("wrote %s: %.2f s at %.0f Hz (%zu frames in %zu-frame blocks)\n", o.output.c_str(),
-              render_settings.seconds, o.rate, result.frames, o.period);
+              seconds, o.rate, result.frames, o.period);
   std::printf("level: peak %.4f, rms %.4f of full scale (%.3g m/s² rms at %.3g per m/s², uncalibrated)\n",
               result.peak, result.rms, result.rms / settings.output_level_per_m_s2,
               settings.output_level_per_m_s2);
@@ -68,7 +49,7 @@ void render(const RenderOptions& o) {
               static_cast<unsigned long long>(stats.non_finite_samples),
               static_cast<unsigned long long>(stats.samples_above_speed_range));
   std::printf("render: %.3f s wall, %.0fx real time; per block median <= %.1f us, 99th percentile <= %.1f us\n",
-              wall, render_settings.seconds / wall, 1e6 * stats.callback_time_quantile(0.5),
+              wall, seconds / wall, 1e6 * stats.callback_time_quantile(0.5),
               1e6 * stats.callback_time_quantile(0.99));
 }
 

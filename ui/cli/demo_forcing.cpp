@@ -13,14 +13,13 @@
 #include "model/forcing/leave_one_out.hpp"
 #include "model/mechanics/design.hpp"
 #include "model/space/space_file.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/forcing_figures.hpp"
-#include "ui/cli/forcing_inputs.hpp"
+#include "ui/cli/forcing_options.hpp"
 #include "ui/cli/output.hpp"
-#include "ui/cli/prediction_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -51,7 +50,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   options.catalog = catalog_file;
   options.modes = 32;
   options.mesh_size = 0.004;
-  ForcingInputs inputs = load_forcing_inputs(options);
+  ForcingInputs inputs = load_forcing_inputs(options, design_progress());
   ForcingForPrediction fitted = fit_forcing_for_prediction(inputs);
   const forcing::ForcingModel& model = fitted.model;
   forcing::write_forcing_model(dir / "forcing.json", model);

@@ -12,7 +12,7 @@
 #include "model/mechanics/beam_theory.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/ring_down.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/mechanics_figures.hpp"
 #include "ui/cli/mechanics_report.hpp"
 #include "ui/cli/output.hpp"
@@ -84,7 +84,7 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
 
 void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesystem::path& dir,
                          std::ostringstream& summary) {
-  mech::Design design = mech::read_design(asset("designs/paper_bar.json"), materials);
+  mech::Design design = mech::read_design(model::io::asset("designs/paper_bar.json"), materials);
   const auto bar = mech::build_design_model(design, materials);
   write_json_file(dir / "paper_bar.json", modes_json(bar));
 
@@ -115,7 +115,7 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
 void stylus_responses(const mech::MaterialTable& materials, const std::filesystem::path& dir,
                       std::ostringstream& summary) {
   std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(asset("designs")))
+  for (const auto& e : std::filesystem::directory_iterator(model::io::asset("designs")))
     if (e.path().filename().string().rfind("stylus_", 0) == 0) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   std::vector<std::pair<std::string, mech::ModalModel>> models;
@@ -140,7 +140,7 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
 std::string run_mechanics_demo(const std::filesystem::path& report) {
   const auto dir = report / "mechanics";
   ensure_folder(dir);
-  const auto materials = mech::read_material_table(asset("materials.json"));
+  const auto materials = mech::read_material_table(model::io::default_materials());
   std::ostringstream summary;
   summary << "mechanics (Sec. 5.1): " << dir.string()
           << "/ (cantilever_convergence.csv, paper_bar*.{json,csv,png}, stylus JSON, "

@@ -10,11 +10,11 @@
 
 #include "playback/audio_devices.hpp"
 #include "playback/audio_output.hpp"
+#include "model/design/tool_sound.hpp"
 #include "playback/offline_render.hpp"
-#include "rt/engine.hpp"
+#include "playback/playback_session.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
-#include "ui/cli/tool_voice.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -48,23 +48,25 @@ std::optional<playback::OutputSettings> available_output() {
   return std::nullopt;
 }
 
+// A tool's sound moved by the rig's sweep, in a session of its own.
+playback::PlaybackSession sweep_session(const model::design::ToolSound& sound, double sample_rate_hz) {
+  rt::EngineSettings settings;
+  settings.sample_rate_hz = sample_rate_hz;
+  return playback::PlaybackSession(settings, {{sound.name, sound.modal, sound.spectrum}},
+                                   std::make_unique<rt::SweepStroke>(), 1);
+}
+
 // Each tool for one sweep through the device, one after another.
-std::string play_all(const model::io::Catalog& catalog, const std::filesystem::path& catalog_file,
-                     const StylusModes& stylus,
+std::string play_all(model::design::ToolSounds& sounds,
                      const std::vector<std::pair<std::string, std::string>>& pairs,
                      const playback::OutputSettings& device) {
   std::uint64_t overruns = 0, underflows = 0;
   for (const auto& [tool, surface] : pairs) {
-    rt::EngineSettings settings;
-    settings.sample_rate_hz = device.sample_rate;
-    rt::Engine engine(settings);
-    engine.load(0, tool_voice(catalog, catalog_file, tool, surface, stylus, engine.internal_rate(), 1));
-    engine.select(0);
-    engine.attach(std::make_unique<rt::SweepSpeed>());
-    playback::AudioOutput output(engine, device);
+    auto session = sweep_session(sounds.sound(tool, surface), device.sample_rate);
+    playback::AudioOutput output(session.engine(), device);
     std::printf("playing %s on %s\n", tool.c_str(), surface.c_str());
-    std::this_thread::sleep_for(std::chrono::duration<double>(rt::SweepSpeed::kPaperPeriod));
-    overruns += engine.stats().overruns;
+    std::this_thread::sleep_for(std::chrono::duration<double>(rt::SweepStroke::kPaperPeriod));
+    overruns += session.engine().stats().overruns;
     underflows += output.stats().output_underflows;
   }
   return "  played every tool through " + device.api + " '" + device.device + "': " +
@@ -79,7 +81,7 @@ std::string run_render_demo(const model::io::Catalog& catalog,
                             const std::filesystem::path& report) {
   const auto folder = report / "render";
   ensure_folder(folder);
-  const StylusModes stylus = stylus_modes("");
+  model::design::ToolSounds sounds({catalog_file, "", "", {}});
   std::vector<std::pair<std::string, std::string>> pairs;
   for (const auto& t : catalog.tools)
     if (auto s = preferred_surface(catalog, t.id); !s.empty()) pairs.emplace_back(t.id, s);
@@ -88,26 +90,25 @@ std::string run_render_demo(const model::io::Catalog& catalog,
   table << "tool,surface,peak_full_scale,rms_m_s2,realtime_factor\n";
   Progress progress("renders", pairs.size());
   double slowest = 1e300, loudest = 0;
-  std::string loudest_name;
+  std::string loudest_name, modes;
   for (const auto& [tool, surface] : pairs) {
-    rt::Engine engine{rt::EngineSettings{}};
-    engine.load(0, tool_voice(catalog, catalog_file, tool, surface, stylus, engine.internal_rate(), 1));
-    engine.select(0);
-    engine.attach(std::make_unique<rt::SweepSpeed>());
-    playback::OfflineRenderSettings settings;
-    settings.seconds = rt::SweepSpeed::kPaperPeriod;
+    const model::design::ToolSound sound = sounds.sound(tool, surface);
+    modes = sound.modes;  // the same stylus for every catalog tool
+    auto session = sweep_session(sound, rt::EngineSettings{}.sample_rate_hz);
+    const double seconds = rt::SweepStroke::kPaperPeriod;
+    const std::size_t block_frames = playback::OfflineRenderSettings{}.block_frames;
     const auto start = std::chrono::steady_clock::now();
-    const auto r = playback::render_to_wav(engine, folder / (tool + "_" + surface + ".wav"), settings);
+    const auto r = session.render_to_wav(folder / (tool + "_" + surface + ".wav"), seconds, block_frames);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double rms_m_s2 = r.rms / rt::EngineSettings{}.output_level_per_m_s2;
-    table << tool << ',' << surface << ',' << r.peak << ',' << rms_m_s2 << ',' << settings.seconds / wall << '\n';
-    slowest = std::min(slowest, settings.seconds / wall);
+    table << tool << ',' << surface << ',' << r.peak << ',' << rms_m_s2 << ',' << seconds / wall << '\n';
+    slowest = std::min(slowest, seconds / wall);
     if (rms_m_s2 > loudest) loudest = rms_m_s2, loudest_name = tool + " on " + surface;
     progress.advance(tool);
   }
   write_text_file(folder / "renders.csv", table.str());
   std::string played = "  no audio device: nothing played (see `nibrig devices`)\n";
-  if (const auto device = available_output()) played = play_all(catalog, catalog_file, stylus, pairs, *device);
+  if (const auto device = available_output()) played = play_all(sounds, pairs, *device);
   const rt::EngineSettings engine_settings;
   char line[500];
   std::snprintf(line, sizeof line,
@@ -115,8 +116,8 @@ std::string run_render_demo(const model::io::Catalog& catalog,
                 "%.0f s) through the modes of '%s' at %.0f Hz, %zu-frame blocks;\n  loudest %s at "
                 "%.2f m/s^2 rms; slowest render %.0fx real time (WAV writing included)\n"
                 "  report: render/*.wav, render/renders.csv\n",
-                pairs.size(), 1e3 * rt::SweepSpeed::kPaperLow, 1e3 * rt::SweepSpeed::kPaperHigh,
-                1e3 * rt::SweepSpeed::kPaperLow, rt::SweepSpeed::kPaperPeriod, stylus.name.c_str(),
+                pairs.size(), 1e3 * rt::SweepStroke::kPaperLow, 1e3 * rt::SweepStroke::kPaperHigh,
+                1e3 * rt::SweepStroke::kPaperLow, rt::SweepStroke::kPaperPeriod, modes.c_str(),
                 engine_settings.sample_rate_hz, playback::OfflineRenderSettings{}.block_frames,
                 loudest_name.c_str(), loudest, slowest);
   return line + played;

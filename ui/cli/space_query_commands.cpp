@@ -14,7 +14,7 @@
 #include "model/io/json_fields.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/prediction_scores.hpp"
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
@@ -139,7 +139,7 @@ void run_space_embed(const SpaceEmbedOptions& o) {
   // A predicted tool's descriptor error, by its stimulus name, carried into its placement.
   std::map<std::string, Eigen::MatrixXd> descriptor_errors;
   if (!o.predicted.empty()) {
-    const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+    const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
     for (const auto& file : o.predicted) {
       ReadPrediction read = read_prediction(file, threshold);
       if (read.descriptor_errors.empty())

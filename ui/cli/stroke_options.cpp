@@ -1,26 +1,8 @@
 #include "ui/cli/stroke_options.hpp"
 
-#include <stdexcept>
-
-#include "model/io/paper_drawing.hpp"
+#include "ui/cli/forcing_options.hpp"
 
 namespace nibrig::ui::cli {
-namespace {
-
-// Owns the inner source and overrides its force.
-class WithForce final : public rt::SpeedSource {
- public:
-  WithForce(std::unique_ptr<rt::SpeedSource> inner, double force)
-      : inner_(std::move(inner)), force_(force) {}
-  double speed_at(double t) const noexcept override { return inner_->speed_at(t); }
-  double force_at(double) const noexcept override { return force_; }
-
- private:
-  std::unique_ptr<rt::SpeedSource> inner_;
-  double force_;
-};
-
-}  // namespace
 
 void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   cmd->add_option("--tool", o.tool,
@@ -46,28 +28,16 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   cmd->add_option("--seed", o.seed, "Seed of the forcing noise (same seed, same samples)");
 }
 
-Stroke make_stroke(const StrokeOptions& o) {
-  Stroke stroke;
-  if (o.speed_mm_s >= 0) {
-    stroke.source = std::make_unique<rt::ConstantSpeed>(o.speed_mm_s / 1000.0);
-    stroke.description = "constant " + std::to_string(o.speed_mm_s).substr(0, 6) + " mm/s";
-    stroke.natural_seconds = 5.0;
-  } else if (!o.trajectory.empty()) {
-    const auto drawing = model::io::read_paper_drawing(o.trajectory);
-    auto source = std::make_unique<rt::TrajectorySpeed>(drawing);
-    stroke.natural_seconds = source->duration();
-    stroke.source = std::move(source);
-    stroke.description = "trajectory " + o.trajectory.filename().string();
-  } else {
-    stroke.source = std::make_unique<rt::SweepSpeed>();
-    stroke.description = "sweep 17-250 mm/s, 3 s period";
-    stroke.natural_seconds = 2 * rt::SweepSpeed::kPaperPeriod;
-  }
-  if (o.force_n >= 0) {
-    stroke.source = std::make_unique<WithForce>(std::move(stroke.source), o.force_n);
-    stroke.description += ", " + std::to_string(o.force_n).substr(0, 5) + " N";
-  }
-  return stroke;
+rt::Stroke make_stroke(const StrokeOptions& o) {
+  rt::StrokeRequest request;
+  if (o.speed_mm_s >= 0) request.speed_m_s = o.speed_mm_s / 1000.0;
+  request.trajectory = o.trajectory;
+  if (o.force_n >= 0) request.force_n = o.force_n;
+  return rt::make_stroke(request);
+}
+
+model::design::ToolSoundOptions tool_sound_options(const StrokeOptions& o) {
+  return {o.catalog, o.design, o.forcing_model, design_progress()};
 }
 
 }  // namespace nibrig::ui::cli

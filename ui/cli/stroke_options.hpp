@@ -7,12 +7,14 @@
 #include <memory>
 #include <string>
 
-#include "rt/speed_source.hpp"
+#include "model/design/tool_sound.hpp"
+#include "rt/stroke_request.hpp"
 
 namespace nibrig::ui::cli {
 
 struct StrokeOptions {
-  // A catalog tool id, or a design point ("DM85:0.5,vero:0.5,tip=2mm") to predict (tool_voice.hpp).
+  // A catalog tool id, or a design point ("DM85:0.5,vero:0.5,tip=2mm") to predict
+  // (model/design/tool_sound.hpp).
   std::string tool, surface;
   std::filesystem::path catalog, design;
   std::filesystem::path forcing_model;  // for design points; empty: fit the catalog first
@@ -25,13 +27,10 @@ struct StrokeOptions {
 
 void add_stroke_options(CLI::App* cmd, StrokeOptions& o);
 
-// The source the options describe (exactly one of --speed, --sweep, --trajectory; none = --sweep),
-// and a line saying what it is, for the summary.
-struct Stroke {
-  std::unique_ptr<rt::SpeedSource> source;
-  std::string description;
-  double natural_seconds;  // one sweep period ×2, the trajectory's length, or 5 s
-};
-Stroke make_stroke(const StrokeOptions& o);
+// The stroke the options describe (exactly one of --speed, --sweep, --trajectory; none = --sweep).
+rt::Stroke make_stroke(const StrokeOptions& o);
+
+// Where the tools' sounds come from: --catalog, --design and --forcing.
+model::design::ToolSoundOptions tool_sound_options(const StrokeOptions& o);
 
 }  // namespace nibrig::ui::cli

@@ -1,29 +1,29 @@
-#include "ui/cli/prediction_inputs.hpp"
+#include "model/design/prediction_inputs.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include "model/forcing/forcing_file.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
-#include "ui/cli/assets.hpp"
 
-namespace nibrig::ui::cli {
+namespace nibrig::model::design {
 
 std::unique_ptr<PredictionInputs> load_prediction_inputs(
-    const ForcingInputOptions& options, const std::filesystem::path& forcing_file,
-    std::optional<model::forcing::ForcingModel> fitted) {
+    const forcing::ForcingInputOptions& options, const std::filesystem::path& forcing_file,
+    std::optional<forcing::ForcingModel> fitted, const forcing::DesignProgress& progress) {
   auto in = std::make_unique<PredictionInputs>();
-  in->catalog_file = options.catalog.empty() ? asset("default_catalog.json") : options.catalog;
-  in->catalog = model::io::read_catalog(in->catalog_file);
+  in->catalog_file = io::or_default(options.catalog, io::default_catalog);
+  in->catalog = io::read_catalog(in->catalog_file);
   if (fitted) {
     in->model = std::move(*fitted);
   } else if (!forcing_file.empty()) {
-    in->model = model::forcing::read_forcing_model(forcing_file);
+    in->model = forcing::read_forcing_model(forcing_file);
   } else {
-    spdlog::info("no --forcing given: fitting the forcing model to the catalog first");
-    in->model = fit_forcing_for_prediction(load_forcing_inputs(options)).model;
+    spdlog::info("no forcing model given: fitting one to the catalog first");
+    in->model = forcing::fit_forcing_for_prediction(forcing::load_forcing_inputs(options, progress)).model;
   }
-  in->threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
+  in->threshold = measure::ThresholdCurve::load(io::default_threshold_curve());
   if (in->model.held_out_descriptor_errors.empty()) {
     spdlog::warn(
         "the forcing model has no held-out descriptor errors (a file written before they "
@@ -34,9 +34,9 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
       spdlog::warn(
           "the forcing model's descriptor errors were weighted by '{}', predictions by '{}'",
           in->model.descriptor_error_threshold, in->threshold->source());
-    in->descriptor_errors = model::design::descriptor_error_covariance(
+    in->descriptor_errors = descriptor_error_covariance(
         in->model.held_out_descriptor_errors,
-        model::design::friction_interpolation_errors(in->catalog));
+        friction_interpolation_errors(in->catalog));
     if (in->descriptor_errors->friction_samples == 0)
       spdlog::warn(
           "{} has no printed tool between two others of its material on a surface: the "
@@ -44,12 +44,10 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
           in->catalog_file.string());
   }
   auto& setup = in->setup;
-  setup.materials = model::mechanics::read_material_table(
-      options.materials.empty() ? asset("materials.json") : options.materials);
-  setup.template_design = model::mechanics::read_design(
-      options.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json")
-                                      : options.design_template,
-      setup.materials);
+  setup.materials = mechanics::read_material_table(
+      io::or_default(options.materials, io::default_materials));
+  setup.template_design = mechanics::read_design(
+      io::or_default(options.design_template, io::default_stylus_design), setup.materials);
   setup.model = &in->model;
   setup.catalog = &in->catalog;
   setup.threshold = &*in->threshold;
@@ -59,4 +57,4 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
   return in;
 }
 
-}  // namespace nibrig::ui::cli
+}  // namespace nibrig::model::design

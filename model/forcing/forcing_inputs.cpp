@@ -1,41 +1,36 @@
-#include "ui/cli/forcing_inputs.hpp"
+#include "model/forcing/forcing_inputs.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <set>
+#include <stdexcept>
 
 #include "model/forcing/forcing_fit.hpp"
-#include "model/forcing/leave_one_out.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "model/io/catalog.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/mechanics/material_table.hpp"
-#include "ui/cli/assets.hpp"
-#include "ui/cli/progress.hpp"
 
-namespace nibrig::ui::cli {
+namespace nibrig::model::forcing {
 
-namespace forcing = model::forcing;
-namespace mech = model::mechanics;
+namespace mech = mechanics;
 
-ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
-  const auto catalog_path = o.catalog.empty() ? asset("default_catalog.json") : o.catalog;
-  const auto template_path =
-      o.design_template.empty() ? asset("designs/stylus_vero_tip2mm.json") : o.design_template;
-  const auto materials_path = o.materials.empty() ? asset("materials.json") : o.materials;
+ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProgress& progress) {
+  const auto catalog_path = io::or_default(o.catalog, io::default_catalog);
+  const auto template_path = io::or_default(o.design_template, io::default_stylus_design);
+  const auto materials_path = io::or_default(o.materials, io::default_materials);
 
   for (const auto& [path, what] : {std::pair{catalog_path, "a tool catalog JSON"},
                                    std::pair{template_path, "a stylus design JSON"},
                                    std::pair{materials_path, "a material table JSON"}})
     if (!std::filesystem::exists(path))
       throw std::runtime_error(path.string() + ": no such file (expected " + what + ")");
-  const model::io::Catalog catalog = model::io::read_catalog(catalog_path);
+  const io::Catalog catalog = io::read_catalog(catalog_path);
   ForcingInputs inputs;
-  inputs.selection = forcing::select_printed_exemplars(catalog);
+  inputs.selection = select_printed_exemplars(catalog);
   inputs.exemplars = std::move(inputs.selection.exemplars);
   inputs.selection.exemplars.clear();
   for (const auto& excluded : inputs.selection.excluded) spdlog::info("left out: {}", excluded);
@@ -46,20 +41,17 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
 
   const mech::MaterialTable materials = mech::read_material_table(materials_path);
   const mech::Design template_design = mech::read_design(template_path, materials);
-  forcing::ResponseOptions response_options;
+  ResponseOptions response_options;
   response_options.modes = o.modes;
   response_options.mesh_size = o.mesh_size;
-  std::unique_ptr<Progress> progress;
   const auto start = std::chrono::steady_clock::now();
-  inputs.designs = forcing::attach_responses(
+  inputs.designs = attach_responses(
       inputs.exemplars, template_design, materials, response_options,
-      [&](const forcing::DesignResponse& r, std::size_t, std::size_t total) {
-        if (!progress) progress = std::make_unique<Progress>("simulating designs", total);
-        progress->advance(r.design);
+      [&](const DesignResponse& r, std::size_t done, std::size_t total) {
         spdlog::info("{}: {} modes, first at {:.1f} Hz, {:.2f} s", r.design, r.modes,
                      r.first_mode_hz, r.seconds);
+        if (progress) progress(r, done, total);
       });
-  progress.reset();
   inputs.response_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -71,7 +63,7 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
       "('{}') with the tool's tip diameter and tip insert (model/forcing/printed_tool_design.hpp), "
       "materials {}, {} modes, {:.2f} mm quadratic tetrahedra",
       template_path.string(), template_design.name, materials_path.string(), modes, mesh * 1e3));
-  const auto missing = forcing::missing_paper_tools(inputs.exemplars);
+  const auto missing = missing_paper_tools(inputs.exemplars);
   if (!missing.empty()) {
     std::string list;
     for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
@@ -81,14 +73,14 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o) {
 }
 
 ForcingForPrediction fit_forcing_for_prediction(const ForcingInputs& inputs) {
-  forcing::ForcingModel model = forcing::fit_forcing_model(inputs.exemplars);
+  ForcingModel model = fit_forcing_model(inputs.exemplars);
   model.notes = inputs.notes;
   model.notes.push_back(
       "fit of Eq. 10 in log amplitude; ln t(2 mm) = ln m(vero) = 0 fix the scale, so F_S is the "
       "forcing the 2 mm VeroClear tool sees (model/forcing/forcing_fit.hpp)");
-  const auto threshold = model::measure::ThresholdCurve::load(default_threshold_curve());
-  forcing::LeaveOneOut held_out = forcing::leave_every_one_out(inputs.exemplars, &threshold);
-  model.held_out_descriptor_errors = forcing::descriptor_errors(held_out);
+  const auto threshold = measure::ThresholdCurve::load(io::default_threshold_curve());
+  LeaveOneOut held_out = leave_every_one_out(inputs.exemplars, &threshold);
+  model.held_out_descriptor_errors = descriptor_errors(held_out);
   model.descriptor_error_threshold = threshold.source();
   model.notes.push_back(fmt::format(
       "held_out_descriptor_errors: {} of {} exemplars held out of the fit in turn and predicted; "
@@ -103,12 +95,12 @@ std::string describe_inputs(const ForcingInputs& inputs) {
   std::size_t paper = 0;
   for (const auto& e : inputs.exemplars) {
     surfaces.insert(e.surface);
-    paper += forcing::is_paper_tool(e) ? 1 : 0;
+    paper += is_paper_tool(e) ? 1 : 0;
   }
   std::string out =
       fmt::format("{} exemplars of printed tools on {} surfaces; {} of the paper's 27 tools\n",
                   inputs.exemplars.size(), surfaces.size(), paper);
-  const auto missing = forcing::missing_paper_tools(inputs.exemplars);
+  const auto missing = missing_paper_tools(inputs.exemplars);
   if (!missing.empty()) {
     std::string list;
     for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
@@ -130,17 +122,4 @@ std::string describe_inputs(const ForcingInputs& inputs) {
   return out;
 }
 
-void add_forcing_input_options(CLI::App* cmd, ForcingInputOptions& o) {
-  // Files are checked when read, so that a bad one is reported in one line like every other error.
-  cmd->add_option("catalog", o.catalog, "Tool catalog JSON (default: the bundled one)");
-  cmd->add_option("--design", o.design_template,
-                  "Stylus design every printed tool is derived from (default: "
-                  "assets/designs/stylus_vero_tip2mm.json)");
-  cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
-  cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
-      ->check(CLI::PositiveNumber);
-}
-
-}  // namespace nibrig::ui::cli
+}  // namespace nibrig::model::forcing

@@ -1,9 +1,9 @@
-#include "ui/cli/assets.hpp"
+#include "model/io/bundled_assets.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
 
-namespace nibrig::ui::cli {
+namespace nibrig::model::io {
 
 std::filesystem::path assets_dir() {
   if (const char* env = std::getenv("NIBRIG_ASSETS"); env != nullptr && *env != '\0') return env;
@@ -19,8 +19,16 @@ std::filesystem::path asset(const std::filesystem::path& relative) {
   return path;
 }
 
+std::filesystem::path default_catalog() { return asset("default_catalog.json"); }
+std::filesystem::path default_materials() { return asset("materials.json"); }
+std::filesystem::path default_stylus_design() { return asset("designs/stylus_vero_tip2mm.json"); }
 std::filesystem::path default_threshold_curve() {
   return asset("thresholds/israr2006_pen_hold.csv");
 }
 
-}  // namespace nibrig::ui::cli
+std::filesystem::path or_default(const std::filesystem::path& path,
+                                 std::filesystem::path (*fallback)()) {
+  return path.empty() ? fallback() : path;
+}
+
+}  // namespace nibrig::model::io

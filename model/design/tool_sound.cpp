@@ -1,0 +1,97 @@
+#include "model/design/tool_sound.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <numbers>
+#include <stdexcept>
+
+#include "model/design/design_point.hpp"
+#include "model/design/prediction_inputs.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/mechanics/design.hpp"
+#include "model/mechanics/design_model.hpp"
+#include "model/mechanics/material_table.hpp"
+
+namespace nibrig::model::design {
+
+bool names_design_point(const std::string& tool) { return tool.find("tip=") != std::string::npos; }
+
+const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
+                                             const std::filesystem::path& catalog_file,
+                                             const std::string& tool, const std::string& surface) {
+  const std::string where = catalog_file.empty() ? "the bundled catalog" : catalog_file.string();
+  std::string surfaces;
+  for (const auto& p : catalog.pairings) {
+    if (p.tool != tool || !p.vibration) continue;
+    if (p.surface == surface) return p.vibration->spectrum;
+    surfaces += (surfaces.empty() ? "" : ", ") + p.surface;
+  }
+  if (!surfaces.empty())
+    throw std::invalid_argument(where + " has no vibration spectrum of '" + tool + "' on '" +
+                                surface + "'; it has one on: " + surfaces);
+  std::string tools;
+  for (const auto& t : catalog.tools) {
+    bool has = false;
+    for (const auto& p : catalog.pairings) has |= p.tool == t.id && p.vibration.has_value();
+    if (has) tools += (tools.empty() ? "" : ", ") + t.id;
+  }
+  throw std::invalid_argument(where + " has no vibration spectrum of tool '" + tool +
+                              "'; tools with one: " + tools);
+}
+
+struct ToolSounds::State {
+  ToolSoundOptions options;
+  io::Catalog catalog;
+  std::optional<ToolSound> stylus;                   // name and modes; meshed on first need
+  std::unique_ptr<PredictionInputs> prediction;      // loaded on the first design point
+};
+
+ToolSounds::ToolSounds(ToolSoundOptions options) : state_(new State{std::move(options), {}, {}, {}}) {
+  state_->catalog = io::read_catalog(io::or_default(state_->options.catalog, io::default_catalog));
+}
+
+ToolSounds::~ToolSounds() = default;
+
+const io::Catalog& ToolSounds::catalog() const { return state_->catalog; }
+
+void ToolSounds::check(const std::string& tool, const std::string& surface) const {
+  if (names_design_point(tool))
+    parse_design_point(tool);
+  else
+    pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
+}
+
+PredictedTool ToolSounds::predict(const std::string& point, const std::string& surface) {
+  const DesignPoint design = parse_design_point(point);  // refuses a bad point before any work
+  if (!state_->prediction) {
+    forcing::ForcingInputOptions options;
+    options.catalog = state_->options.catalog;
+    options.design_template = io::default_stylus_design();
+    state_->prediction = load_prediction_inputs(options, state_->options.forcing_model, std::nullopt,
+                                                state_->options.progress);
+  }
+  return predict_tool(state_->prediction->setup, design, surface);
+}
+
+ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {
+  if (names_design_point(tool)) {
+    PredictedTool p = predict(tool, surface);
+    return {"predicted " + label(p.point) + " on " + p.surface, p.design_name, std::move(p.modal),
+            std::move(p.spectrum)};
+  }
+  const io::VelocitySpectrum& spectrum =
+      pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
+  if (!state_->stylus) {
+    const auto materials = mechanics::read_material_table(io::default_materials());
+    const auto file = io::or_default(state_->options.stylus_design, io::default_stylus_design);
+    const mechanics::Design d = mechanics::read_design(file, materials);
+    const mechanics::DesignModel model = mechanics::build_design_model(d, materials);
+    spdlog::info("{}: {} modes, first at {:.1f} Hz (meshing and modes {:.2f} s)", d.name,
+                 model.modal.size(), model.modal.omega.front() / (2 * std::numbers::pi),
+                 model.seconds.meshing_s + model.seconds.assembly_s + model.seconds.modes_s);
+    state_->stylus = ToolSound{"", d.name, model.modal, {}};
+  }
+  return {tool + " on " + surface, state_->stylus->modes, state_->stylus->modal, spectrum};
+}
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,68 @@
+// "Tool X on surface Y" made into what a real-time voice plays: the modes of a stylus and the
+// acceleration spectrum it is driven with. A catalog tool is its measured spectrum through the
+// modes of a stylus design (by default the bundled printed stylus with a 2 mm tip); a design point
+// ("DM85:0.5,vero:0.5,tip=2mm") is predicted (Sec. 5.3) with its own modes. Every face that plays
+// a tool (render, audition, the demo, next the rig, the panel and the experiment runner) asks here.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "model/design/predicted_tool.hpp"
+#include "model/forcing/forcing_inputs.hpp"
+#include "model/io/catalog.hpp"
+#include "model/io/velocity_spectrum.hpp"
+#include "model/mechanics/modal_model.hpp"
+
+namespace nibrig::model::design {
+
+struct ToolSound {
+  std::string name;   // "cryon on office", "predicted DM85:0.5,vero:0.5,tip=2mm on office"
+  std::string modes;  // the design whose modes shape it
+  mechanics::ModalModel modal;
+  io::VelocitySpectrum spectrum;
+};
+
+// Whether `tool` is a design point to predict ("...tip=2mm") rather than a catalog id.
+bool names_design_point(const std::string& tool);
+
+// The measured acceleration spectrum of tool on surface. Throws std::invalid_argument naming the
+// catalog (`catalog_file`; empty: "the bundled catalog") and listing the surfaces the tool has (or
+// the tools there are) when there is none; cheap, so faces check their pairings before meshing.
+const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
+                                             const std::filesystem::path& catalog_file,
+                                             const std::string& tool, const std::string& surface);
+
+struct ToolSoundOptions {
+  std::filesystem::path catalog;        // empty: the bundled one
+  std::filesystem::path stylus_design;  // modes of catalog tools; empty: the bundled 2 mm stylus
+  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog (~8 s) first
+  forcing::DesignProgress progress;     // of that fit's simulated designs
+};
+
+// Makes the sounds of any number of tools with one set of inputs, each loaded the first time a
+// tool needs it: the stylus is meshed once for all catalog tools, the forcing model read (or
+// fitted) once for all design points.
+class ToolSounds {
+ public:
+  explicit ToolSounds(ToolSoundOptions options);  // reads the catalog; throws naming a bad one
+  ~ToolSounds();
+  ToolSounds(const ToolSounds&) = delete;
+  ToolSounds& operator=(const ToolSounds&) = delete;
+
+  // Refuses, before any meshing or fitting, a tool the catalog does not have on the surface or a
+  // malformed design point (std::invalid_argument saying which and what there is).
+  void check(const std::string& tool, const std::string& surface) const;
+  ToolSound sound(const std::string& tool, const std::string& surface);
+  // A design point's full prediction (its descriptors, μ, response), for faces that show them.
+  PredictedTool predict(const std::string& point, const std::string& surface);
+  const io::Catalog& catalog() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,64 @@
+// Making "tool X on surface Y" into what a voice plays: catalog tools through the bundled stylus's
+// modes, bad requests refused before any meshing, and the stylus meshed once for every tool.
+#include "model/design/tool_sound.hpp"
+
+#include <gtest/gtest.h>
+#include <gmock/gmock.h>
+
+#include <stdexcept>
+
+#include "model/io/catalog.hpp"
+#include "model/mechanics/design.hpp"
+#include "model/mechanics/material_table.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::design {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string refusal(const ToolSounds& sounds, const std::string& tool, const std::string& surface) {
+  try {
+    sounds.check(tool, surface);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ToolSound, ADesignPointIsToldFromACatalogToolByItsTip) {
+  EXPECT_TRUE(names_design_point("DM85:0.5,vero:0.5,tip=2mm"));
+  EXPECT_FALSE(names_design_point("vero2"));
+}
+
+TEST(ToolSound, RefusesWhatItCannotPlayBeforeAnyMeshing) {
+  const ToolSounds sounds({});
+  // The tool exists but not on that surface: say where it does.
+  EXPECT_THAT(refusal(sounds, "cryon", "moon"), HasSubstr("it has one on: "));
+  EXPECT_THAT(refusal(sounds, "cryon", "moon"), HasSubstr("office"));
+  // No such tool: list the tools there are.
+  EXPECT_THAT(refusal(sounds, "crayon", "office"), HasSubstr("tools with one: "));
+  // A design point with fractions that do not add up.
+  EXPECT_THAT(refusal(sounds, "DM85:0.5,vero:0.6,tip=2mm", "office"), HasSubstr("1.1"));
+  EXPECT_EQ(refusal(sounds, "cryon", "office"), "");
+}
+
+TEST(ToolSound, ACatalogToolIsItsMeasuredSpectrumThroughTheBundledStylus) {
+  ToolSounds sounds({});
+  const ToolSound cryon = sounds.sound("cryon", "office");
+  const ToolSound stab = sounds.sound("stab", "note");
+  const auto catalog = io::read_catalog(test::assets_dir() / "default_catalog.json");
+  EXPECT_EQ(cryon.spectrum.amplitude_m_s2,
+            pairing_spectrum(catalog, "", "cryon", "office").amplitude_m_s2);
+  EXPECT_EQ(cryon.name, "cryon on office");
+  // The bundled stylus, meshed once: both tools run the same modes.
+  const auto materials = mechanics::read_material_table(test::assets_dir() / "materials.json");
+  const auto stylus =
+      mechanics::read_design(test::assets_dir() / "designs" / "stylus_vero_tip2mm.json", materials);
+  EXPECT_EQ(cryon.modes, stylus.name);
+  EXPECT_EQ(static_cast<int>(cryon.modal.size()), stylus.modes);
+  EXPECT_EQ(cryon.modal.omega, stab.modal.omega);
+}
+
+}  // namespace
+}  // namespace nibrig::model::design
