@@ -9,6 +9,7 @@
 
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -27,7 +28,7 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   app.add_flag("-v,--verbose", global->verbosity, "More log output on stderr (-v info, -vv debug)");
   app.add_option("-j,--threads", global->threads, "Worker threads (default: one per core)")
-      ->check(CLI::Range(1u, 256u));
+      ->check(whole_in_range(1, 256, "a number of threads"));
   app.parse_complete_callback([global] { configure_logging(global->verbosity); });
 
   add_measure_command(app, global);
