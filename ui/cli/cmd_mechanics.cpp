@@ -247,7 +247,9 @@ void add_design_options(CLI::App* cmd, DesignOptions& o, bool positional) {
                   "Plain bar inline instead of a design: LENGTH,WIDTH,THICKNESS in metres")
       ->expected(3)
       ->delimiter(',')
-      ->check(stylus_metres("a bar dimension"));
+      ->check(stylus_metres("a bar length").application_index(0))
+      ->check(stylus_metres("a bar width").application_index(1))
+      ->check(stylus_metres("a bar thickness").application_index(2));
   cmd->add_option("--clamp", o.clamp, "With --bar: clamped length in metres (default 0.03)")
       ->check(stylus_metres("a clamped length"));
   cmd->add_flag("--no-cutout", o.no_cutout,

@@ -58,7 +58,6 @@ int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
   if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
   const std::string hint = suggestion(app);
   std::fprintf(stderr, "nibrig: error: %s\n", hint.empty() ? e.what() : hint.c_str());
-  std::fprintf(stderr, "Run with --help for more information.\n");
   return kUsageErrorExitCode;
 }
 

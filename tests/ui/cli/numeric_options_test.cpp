@@ -133,6 +133,16 @@ TEST(NumericOptions, RefusalSaysTheExpectedRangeAndUnit) {
       << err;
 }
 
+TEST(NumericOptions, AUnitSlipInABarNamesTheDimension) {
+  ::testing::internal::CaptureStderr();
+  const int code = run_cli({"mechanics", "modes", "--bar", "210,20,2"});
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(code, 0);
+  // Which of the three numbers is wrong, and the likely slip, so the fix is obvious.
+  EXPECT_NE(err.find("--bar: 210: expected a bar length in metres"), std::string::npos) << err;
+  EXPECT_NE(err.find("millimetres given as metres?"), std::string::npos) << err;
+}
+
 // Renders 0.05 s (a few blocks) so that the run is cheap; the point is what stderr says.
 std::string render_warnings(const std::vector<std::string>& extra) {
   const auto dir = test::scratch_dir("cli_numeric_warn");

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,8 @@ TEST(CliUsageErrors, MisspeltCommandSuggestsTheNearest) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(r.err.rfind("nibrig: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("did you mean 'measure'?"), std::string::npos) << r.err;
+  // One line, as every error of the command line (DESIGN.md, "Conventions").
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST(CliUsageErrors, MisspeltSubcommandSuggestsFromItsOwnCommand) {
