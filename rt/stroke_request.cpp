@@ -1,5 +1,7 @@
 #include "rt/stroke_request.hpp"
 
+#include <fmt/format.h>
+
 #include "model/io/paper_drawing.hpp"
 
 namespace nibrig::rt {
@@ -9,7 +11,8 @@ Stroke make_stroke(const StrokeRequest& r) {
   const double force = r.force_n.value_or(kReferenceNormalForce);
   if (r.speed_m_s) {
     stroke.source = std::make_unique<ConstantStroke>(*r.speed_m_s, force);
-    stroke.description = "constant " + std::to_string(*r.speed_m_s * 1000.0).substr(0, 6) + " mm/s";
+    // Not to_string().substr(), which cut 1e9 mm/s down to "100000".
+    stroke.description = fmt::format("constant {:.2f} mm/s", *r.speed_m_s * 1000.0);
     stroke.natural_seconds = 5.0;
   } else if (!r.trajectory.empty()) {
     const auto drawing = model::io::read_paper_drawing(r.trajectory);
@@ -24,7 +27,7 @@ Stroke make_stroke(const StrokeRequest& r) {
     stroke.description = "sweep 17-250 mm/s, 3 s period";
     stroke.natural_seconds = 2 * SweepStroke::kPaperPeriod;
   }
-  if (r.force_n) stroke.description += ", " + std::to_string(*r.force_n).substr(0, 5) + " N";
+  if (r.force_n) stroke.description += fmt::format(", {:.3f} N", *r.force_n);
   return stroke;
 }
 

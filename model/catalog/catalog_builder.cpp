@@ -10,6 +10,7 @@
 
 #include "model/catalog/tool_names.hpp"
 #include "model/io/paper_friction.hpp"
+#include "model/io/paper_recording.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/session.hpp"
 
@@ -54,6 +55,17 @@ RecordingKind classify_recording(const std::filesystem::path& path) {
                            ": not a recording nibrig knows (expected a rig session folder, a paper "
                            "friction file <tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz] or an "
                            "accelerometer file arm_<tool>_<surface>.csv[.gz])");
+}
+
+RecordingKind classify_recording_by_content(const std::filesystem::path& path) {
+  try {
+    return classify_recording(path);
+  } catch (const std::runtime_error&) {
+    if (!is_csv(path) || !std::filesystem::is_regular_file(path)) throw;
+  }
+  return io::paper_format_from_header(path) == io::PaperFormat::friction
+             ? RecordingKind::paper_friction
+             : RecordingKind::paper_vibration;
 }
 
 FoundRecordings find_recordings(const std::filesystem::path& folder) {

@@ -29,6 +29,10 @@ FoundRecordings find_recordings(const std::filesystem::path& folder);
 
 // Which kind of recording a single path is; throws std::runtime_error naming the path if none.
 RecordingKind classify_recording(const std::filesystem::path& path);
+// The same for one file named on purpose (nibrig measure), so named anything: a CSV file whose
+// name says neither kind is judged by its header line. Not for a folder walk, where every CSV
+// file would then be taken for a recording.
+RecordingKind classify_recording_by_content(const std::filesystem::path& path);
 
 struct CatalogBuild {
   io::Catalog catalog;

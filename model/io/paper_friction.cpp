@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
@@ -122,8 +123,19 @@ FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
 }
 
 FrictionRecording read_paper_friction(const std::filesystem::path& file) {
+  return read_paper_friction(file, parse_friction_file_name(file));
+}
+
+FrictionRecording read_paper_friction(const std::filesystem::path& file, FrictionFileName name) {
+  if (name.tool.empty() || name.surface.empty())
+    throw std::invalid_argument(file.string() + ": a recording needs a tool and a surface id");
+  // Both divide the counts: a zero, negative or NaN one would make every force meaningless.
+  if (!(name.normal_load_N > 0) || !std::isfinite(name.normal_load_N) ||
+      !(name.lever_factor > 0) || !std::isfinite(name.lever_factor))
+    throw std::invalid_argument(file.string() +
+                                ": the normal load and the lever factor must be > 0 and finite");
   FrictionRecording recording;
-  recording.name = parse_friction_file_name(file);
+  recording.name = std::move(name);
   recording.source = file;
 
   CsvReader csv(file, kExpectedHeader);

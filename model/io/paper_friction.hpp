@@ -51,5 +51,9 @@ struct FrictionRecording {
 // time_s is uniform (with a warning). Throws FormatError "expected about 1000 Hz ..." for another
 // rate.
 FrictionRecording read_paper_friction(const std::filesystem::path& file);
+// The same with the name's parts given instead of parsed, for a file named anything (see
+// paper_recording.hpp). Throws std::invalid_argument for an empty tool or surface, or a load or
+// lever factor that is not > 0 and finite.
+FrictionRecording read_paper_friction(const std::filesystem::path& file, FrictionFileName name);
 
 }  // namespace nibrig::model::io

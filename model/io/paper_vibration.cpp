@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <stdexcept>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
@@ -107,8 +108,14 @@ VibrationFileName parse_vibration_file_name(const std::filesystem::path& file) {
 }
 
 VibrationRecording read_paper_vibration(const std::filesystem::path& file) {
+  return read_paper_vibration(file, parse_vibration_file_name(file));
+}
+
+VibrationRecording read_paper_vibration(const std::filesystem::path& file, VibrationFileName name) {
+  if (name.tool.empty() || name.surface.empty())
+    throw std::invalid_argument(file.string() + ": a recording needs a tool and a surface id");
   VibrationRecording recording;
-  recording.name = parse_vibration_file_name(file);
+  recording.name = std::move(name);
   recording.source = file;
 
   CsvReader csv(file, kExpectedHeader);

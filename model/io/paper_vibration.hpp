@@ -53,5 +53,8 @@ struct VibrationRecording {
 // positions. Throws FormatError "expected 1000 Hz, found ..." when the timestamps show another
 // rate.
 VibrationRecording read_paper_vibration(const std::filesystem::path& file);
+// The same with the name's parts given instead of parsed, for a file named anything (see
+// paper_recording.hpp). Throws std::invalid_argument for an empty tool or surface.
+VibrationRecording read_paper_vibration(const std::filesystem::path& file, VibrationFileName name);
 
 }  // namespace nibrig::model::io

@@ -9,6 +9,8 @@
 
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
+#include "ui/cli/usage_errors.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -25,9 +27,13 @@ int run(int argc, char** argv) {
       "descriptors, and reports them. Implements Piovarci et al., SIGGRAPH 2018."};
   app.set_version_flag("--version", "nibrig 0.1.0");
   app.require_subcommand(1);
-  app.add_flag("-v,--verbose", global->verbosity, "More log output on stderr (-v info, -vv debug)");
+  auto* verbose =
+      app.add_flag("-v,--verbose", global->verbosity, "More log output on stderr (-v info, -vv debug)");
+  app.add_flag_callback("-q,--quiet", [global] { global->verbosity = kQuiet; },
+                        "Errors only on stderr: no warnings, no progress")
+      ->excludes(verbose);
   app.add_option("-j,--threads", global->threads, "Worker threads (default: one per core)")
-      ->check(CLI::Range(1u, 256u));
+      ->check(whole_in_range(1, 256, "a number of threads"));
   app.parse_complete_callback([global] { configure_logging(global->verbosity); });
 
   add_measure_command(app, global);
@@ -44,7 +50,7 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return report_parse_error(app, e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "nibrig: error: %s\n", e.what());
     return 1;

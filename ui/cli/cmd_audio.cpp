@@ -17,6 +17,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/stroke_options.hpp"
 
 namespace nibrig::ui::cli {
@@ -146,12 +147,14 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
                    "One or two more tools on the same surface: the engine switches between them "
                    "(A/B or triplet) every --switch-every seconds");
   play->add_option("--switch-every", a->switch_every, "Seconds between switches")
-      ->check(CLI::PositiveNumber);
-  play->add_option("--seconds", a->seconds, "How long to play (default: the stroke's length)");
+      ->check(positive("a time in seconds"));
+  play->add_option("--seconds", a->seconds, "How long to play (default: the stroke's length)")
+      ->check(positive("a length in seconds"));
   play->add_option("--actuator", a->actuator,
                    "Actuator calibration from `nibrig calibrate`: its name, or a file");
   play->callback([a, global] {
     configure_logging(global->verbosity);
+    for (const auto& note : outside_measured_range(a->stroke)) spdlog::warn("{}", note);
     audition(*a);
   });
 
@@ -161,10 +164,10 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cal->add_option("--name", c->name, "The actuator's name")->required();
   add_device_options(cal, c->device);
   cal->add_option("--input-channel", c->input_channel, "Input channel of the accelerometer (1-based)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_in_range(1, 1024, "a channel number"));
   cal->add_option("--accelerometer", c->accelerometer,
                   "m/s² per unit of input level (accelerometer sensitivity and input gain)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive("a sensitivity in m/s² per unit of input"));
   cal->add_option("-o,--output", c->output,
                   "Actuator file to write (default: the actuator store, see `nibrig calibrate "
                   "--help`)");

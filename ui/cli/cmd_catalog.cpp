@@ -12,6 +12,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 
@@ -144,9 +145,10 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       ->check(CLI::ExistingFile);
   cmd->add_option("--compact", options->compact_step_hz,
                   "Resample spectra to this frequency step (Hz), round them and write one-line "
-                  "JSON, for bundling");
+                  "JSON, for bundling")
+      ->check(positive("a frequency step in Hz"));
   cmd->add_option("--digits", options->compact_digits, "Significant digits kept with --compact")
-      ->check(CLI::Range(2, 17))
+      ->check(whole_in_range(2, 17, "a number of significant digits"))
       ->capture_default_str();
   cmd->callback([options, global] {
     configure_logging(global->verbosity);

@@ -16,6 +16,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/forcing_options.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_inputs.hpp"
@@ -152,11 +153,12 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
                   "Stylus the designs are built on (default: assets/designs/stylus_vero_tip2mm.json)");
   cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
   cmd->add_option("--modes", o->inputs.modes, "Modes of each design (default: the template's)")
-      ->check(CLI::Range(1, 1000));
+      ->check(whole_in_range(1, 1000, "a number of modes"));
   cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres")
-      ->check(CLI::PositiveNumber);
+      ->check(stylus_metres("an element size"));
   cmd->add_option("--runners-up", o->runners_up, "How many runners-up to report")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_in_range(0, 1000, "a number of runners-up"));
   cmd->add_option("-o,--output", o->output, "Search JSON to write")->capture_default_str();
   cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)");
   cmd->callback([o, global] {

@@ -28,6 +28,7 @@
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {
@@ -308,7 +309,7 @@ void add_forcing_holdout_command(CLI::App* forcing_cmd,
   add_forcing_input_options(cmd, o->inputs);
   auto* tip = cmd->add_option("--tip", o->tip_mm, "Tip diameter to hold out, mm")
                   ->capture_default_str()
-                  ->check(CLI::PositiveNumber);
+                  ->check(positive("a tip diameter in mm"));
   auto* material = cmd->add_option(
       "--material", o->material, "Hold out this material instead (e.g. DM95), predicted as a mix");
   material->excludes(tip);
@@ -320,7 +321,7 @@ void add_forcing_holdout_command(CLI::App* forcing_cmd,
   cmd->add_option("--fraction", o->fraction,
                   "Fraction of the second material (default: the mix with the held-out "
                   "material's Young's modulus)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(in_range(0, 1, "a fraction"))
       ->needs(material);
   cmd->add_option("--csv", o->csv, "Also write the errors per tool and speed as CSV");
   cmd->add_option("--plots", o->plots, "Also write a figure like Fig. 14 per held-out tool here");

@@ -3,15 +3,16 @@
 
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 #include "model/catalog/catalog_builder.hpp"
-#include "model/io/paper_friction.hpp"
-#include "model/io/paper_vibration.hpp"
+#include "model/io/paper_recording.hpp"
 #include "model/io/session.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {
@@ -24,7 +25,18 @@ struct MeasureOptions {
   std::filesystem::path plots;
   bool no_plots = false;
   std::filesystem::path threshold;
+  // Replace what the file name would say (a recording named anything); the kind, when not given,
+  // comes from the name or else from the file's header.
+  model::io::StatedRecording stated;
+  std::string kind;  // "accelerometer", "friction" or empty
 };
+
+model::catalog::RecordingKind kind_of(const MeasureOptions& o) {
+  using model::catalog::RecordingKind;
+  if (o.kind == "accelerometer") return RecordingKind::paper_vibration;
+  if (o.kind == "friction") return RecordingKind::paper_friction;
+  return model::catalog::classify_recording_by_content(o.recording);
+}
 
 void write_vibration_figures(const model::catalog::VibrationAnalysis& a,
                              const std::filesystem::path& dir, const std::string& stem) {
@@ -53,10 +65,17 @@ void measure(const MeasureOptions& options) {
           ? (options.output.empty() ? std::filesystem::path(".") : options.output.parent_path())
           : options.plots;
   nlohmann::json result;
-  switch (catalog::classify_recording(options.recording)) {
+  const auto kind = kind_of(options);
+  const auto& stated = options.stated;
+  if (kind == catalog::RecordingKind::session &&
+      (stated.tool || stated.surface || stated.normal_load_N || stated.lever_factor))
+    throw std::invalid_argument(options.recording.string() +
+                                ": a rig session names its own tool, surface and load; --tool, "
+                                "--surface, --load and --lever are for single CSV recordings");
+  switch (kind) {
     case catalog::RecordingKind::paper_friction: {
-      const auto a = catalog::analyze_friction(model::io::read_paper_friction(options.recording),
-                                               analysis_options);
+      const auto a = catalog::analyze_friction(
+          model::io::read_paper_friction(options.recording, stated), analysis_options);
       result = catalog::to_json(a);
       if (!options.no_plots) {
         ensure_folder(plot_dir);
@@ -65,8 +84,9 @@ void measure(const MeasureOptions& options) {
       break;
     }
     case catalog::RecordingKind::paper_vibration: {
-      const auto a = catalog::analyze_vibration(model::io::read_paper_vibration(options.recording),
-                                                threshold, analysis_options);
+      const auto a = catalog::analyze_vibration(
+          model::io::read_paper_vibration(options.recording, stated), threshold,
+          analysis_options);
       result = catalog::to_json(a, threshold);
       if (!options.no_plots) {
         ensure_folder(plot_dir);
@@ -110,7 +130,9 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "coefficient `mu` with a 95 % interval and mu per speed; an accelerometer file\n"
       "(arm_<tool>_<surface>.csv[.gz]) gives the velocity-binned spectrum (`frequencies_hz`,\n"
       "`speeds_mm_s`, `amplitude_m_s2`) and the perceptually weighted descriptors; a rig session\n"
-      "folder gives both. PNG figures go beside the output (or --plots).");
+      "folder gives both. PNG figures go beside the output (or --plots).\n"
+      "A file named otherwise is read with --tool and --surface (and for friction --load and\n"
+      "--lever); its kind comes from its header, or --kind.");
   cmd->add_option("recording", options->recording, "Recording file or session folder")->required();
   cmd->add_option("-o,--output", options->output, "JSON output file (default: standard output)");
   cmd->add_option("--plots", options->plots,
@@ -119,6 +141,25 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--threshold", options->threshold,
                   "Detection-threshold curve CSV (default: the bundled Israr et al. 2006 curve)")
       ->check(CLI::ExistingFile);
+  auto& stated = options->stated;
+  cmd->add_option_function<std::string>(
+      "--tool", [&stated](const std::string& v) { stated.tool = v; },
+      "Tool id, instead of the one in the file name (e.g. mixA)");
+  cmd->add_option_function<std::string>(
+      "--surface", [&stated](const std::string& v) { stated.surface = v; },
+      "Surface id, instead of the one in the file name (e.g. note)");
+  cmd->add_option_function<double>(
+         "--load", [&stated](const double& v) { stated.normal_load_N = v; },
+         "Friction files: normal load in N, instead of the file name's (the paper's: 2.2)")
+      ->check(positive("a normal load in N"));
+  cmd->add_option_function<double>(
+         "--lever", [&stated](const double& v) { stated.lever_factor = v; },
+         "Friction files: the arm's lever factor, instead of the file name's (13.3-14.1 in the "
+         "paper's files)")
+      ->check(positive("a lever factor"));
+  cmd->add_option("--kind", options->kind,
+                  "accelerometer or friction (default: from the file name, else its header)")
+      ->check(CLI::IsMember({"accelerometer", "friction"}));
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
     measure(*options);

@@ -16,6 +16,7 @@
 #include "ui/cli/logging.hpp"
 #include "ui/cli/mechanics_figures.hpp"
 #include "ui/cli/mechanics_report.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {
@@ -54,6 +55,15 @@ struct RingDownCommandOptions {
 };
 
 Eigen::Vector3d vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+// Eigen leaves a zero vector as it is when normalising: the force or sensor would then point
+// nowhere and every participation would read 0.
+Eigen::Vector3d direction(const std::vector<double>& v, const char* option) {
+  const Eigen::Vector3d d = vector3(v);
+  if (!(d.norm() > 0))
+    throw std::invalid_argument(std::string(option) + " 0,0,0: expected a direction, not zero");
+  return d.normalized();
+}
 
 mech::MaterialTable load_materials(const DesignOptions& o) {
   return mech::read_material_table(o.materials.empty() ? model::io::default_materials() : o.materials);
@@ -102,8 +112,8 @@ mech::Design design_from(const DesignOptions& o, const mech::MaterialTable& mate
         materials.find(o.material.empty() ? kDefaultMaterial : o.material).name;
     design.tip.point = vector3(o.tip);
     design.sensor.point = vector3(o.sensor);
-    if (!o.tip_direction.empty()) design.tip.direction = vector3(o.tip_direction).normalized();
-    if (!o.sensor_axis.empty()) design.sensor.direction = vector3(o.sensor_axis).normalized();
+    if (!o.tip_direction.empty()) design.tip.direction = direction(o.tip_direction, "--tip-direction");
+    if (!o.sensor_axis.empty()) design.sensor.direction = direction(o.sensor_axis, "--sensor-axis");
   }
   if (o.modes > 0) design.modes = o.modes;
   if (o.mesh_size > 0) design.mesh_size = o.mesh_size;
@@ -236,8 +246,12 @@ void add_design_options(CLI::App* cmd, DesignOptions& o, bool positional) {
   cmd->add_option("--bar", o.bar,
                   "Plain bar inline instead of a design: LENGTH,WIDTH,THICKNESS in metres")
       ->expected(3)
-      ->delimiter(',');
-  cmd->add_option("--clamp", o.clamp, "With --bar: clamped length in metres (default 0.03)");
+      ->delimiter(',')
+      ->check(stylus_metres("a bar length").application_index(0))
+      ->check(stylus_metres("a bar width").application_index(1))
+      ->check(stylus_metres("a bar thickness").application_index(2));
+  cmd->add_option("--clamp", o.clamp, "With --bar: clamped length in metres (default 0.03)")
+      ->check(stylus_metres("a clamped length"));
   cmd->add_flag("--no-cutout", o.no_cutout,
                 "With --bar: no hole (default: the paper's R5 hole 10 mm from the end)");
   cmd->add_option(
@@ -245,32 +259,40 @@ void add_design_options(CLI::App* cmd, DesignOptions& o, bool positional) {
       "Material of every region (a name in the material table; default for --bar and meshes: "
       "VeroClear-Piovarci2018)");
   cmd->add_option("--modes", o.modes, "Number of modes (default: the design's; 12 for --bar)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the design's)");
+      ->check(whole_in_range(1, 1000, "a number of modes"));
+  cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the design's)")
+      ->check(stylus_metres("an element size"));
   cmd->add_option("--materials", o.materials,
                   "Material table (default: the bundled assets/materials.json)")
       ->check(CLI::ExistingFile);
+  // A file unit above a metre is no CAD unit; 1000 is mm-per-m typed the wrong way round.
   cmd->add_option("--unit-scale", o.unit_scale,
-                  "Mesh files: metres per file unit (default 0.001, millimetres)");
+                  "Mesh files: metres per file unit (default 0.001, millimetres)")
+      ->check(stylus_metres("a file unit"));
   cmd->add_option("--tip", o.tip, "Mesh files: tip point X,Y,Z in metres")
       ->expected(3)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number("a coordinate in metres"));
   cmd->add_option("--tip-direction", o.tip_direction,
                   "Mesh files: tip force direction (default 0,0,1)")
       ->expected(3)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number("a direction component"));
   cmd->add_option("--sensor", o.sensor, "Mesh files: sensor point X,Y,Z in metres")
       ->expected(3)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number("a coordinate in metres"));
   cmd->add_option("--sensor-axis", o.sensor_axis, "Mesh files: sensor axis (default 0,0,1)")
       ->expected(3)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number("a direction component"));
   cmd->add_option("--clamp-box", o.clamp_box,
                   "Mesh files: clamp every node in XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX (metres); .msh "
                   "files may instead "
                   "carry a physical group \"clamp\"")
       ->expected(6)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number("a coordinate in metres"));
 }
 
 }  // namespace
@@ -325,7 +347,8 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
   ring_cmd->add_option("design", ring->design.design, "design.json or mesh file");
   add_design_options(ring_cmd, ring->design, false);
   ring_cmd->add_option("--preload", ring->preload,
-                       "Tip displacement before release, metres (default 0.05)");
+                       "Tip displacement before release, metres (default 0.05)")
+      ->check(stylus_metres("a tip displacement"));
   ring_cmd->add_flag("--calibrated", ring->calibrated,
                      "The trace is m/s^2 along the sensor axis: do not fit a gain");
   ring_cmd->add_option("--json", ring->json, "Write the fit as JSON");

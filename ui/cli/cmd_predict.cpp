@@ -24,6 +24,7 @@
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/report/figures.hpp"
@@ -161,9 +162,9 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--materials", o->inputs.materials,
                   "Material table (default: assets/materials.json)");
   cmd->add_option("--modes", o->inputs.modes, "Modes of the design (default: the template's)")
-      ->check(CLI::Range(1, 1000));
+      ->check(whole_in_range(1, 1000, "a number of modes"));
   cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres")
-      ->check(CLI::PositiveNumber);
+      ->check(stylus_metres("an element size"));
   cmd->add_option("-o,--output", o->output, "Prediction JSON to write")->capture_default_str();
   auto* measured = cmd->add_option("--measured", o->measured,
                                    "A `nibrig measure` JSON of a real recording to compare with");

@@ -9,6 +9,7 @@
 #include "playback/playback_session.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/stroke_options.hpp"
 
 namespace nibrig::ui::cli {
@@ -62,12 +63,16 @@ void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   add_stroke_options(cmd, options->stroke);
   cmd->add_option("-o,--output", options->output, "WAV file to write (mono, float)")->required();
   cmd->add_option("--seconds", options->seconds,
-                  "Length (default: two sweep periods, the trajectory's length, or 5 s)");
-  cmd->add_option("--rate", options->rate, "Sample rate in Hz")->check(CLI::PositiveNumber);
+                  "Length (default: two sweep periods, the trajectory's length, or 5 s)")
+      ->check(positive("a length in seconds"));
+  // The voices run at about 8 kHz (rt/engine.hpp): a device rate below that cannot carry them.
+  cmd->add_option("--rate", options->rate, "Sample rate in Hz")
+      ->check(in_range(8000, 384000, "a sample rate in Hz"));
   cmd->add_option("--period", options->period, "Block size in frames, as a device period")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_in_range(1, 1 << 16, "a block size in frames"));
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
+    for (const auto& note : outside_measured_range(options->stroke)) spdlog::warn("{}", note);
     render(*options);
   });
 }

@@ -3,6 +3,7 @@
 // space_design_commands.cpp.
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/space_commands.hpp"
 
 namespace nibrig::ui::cli {
@@ -21,13 +22,16 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("judgments", o->judgments, "Judgments file")->required()->check(CLI::ExistingFile);
   fit->add_option("--descriptors", o->descriptors, "Catalog with the stimuli's descriptors")
       ->check(CLI::ExistingFile);
-  fit->add_option("--dims", o->dims, "Dimensions (default 2)")->check(CLI::Range(1, 10));
-  fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)");
-  fit->add_option("--starts", o->starts, "Random starts (default 16)")->check(CLI::Range(1, 10000));
-  fit->add_option("--seed", o->seed, "Seed of the first start (default 1)");
+  fit->add_option("--dims", o->dims, "Dimensions (default 2)")
+      ->check(whole_in_range(1, 10, "a number of dimensions"));
+  fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)")
+      ->check(non_negative("a weight"));
+  fit->add_option("--starts", o->starts, "Random starts (default 16)")
+      ->check(whole_in_range(1, 10000, "a number of starts"));
+  fit->add_option("--seed", o->seed, "Seed of the first start (default 1)")->check(any_seed());
   fit->add_option("--bootstrap", o->bootstrap,
                   "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
-      ->check(CLI::Range(0, 100000));
+      ->check(whole_in_range(0, 100000, "a number of resamples"));
   fit->add_option("--plot", o->plot, "PNG of the space (first two axes)");
   fit->add_option("-o,--output", o->output, "Output space file (default space.json)");
   fit->callback([o, global] {
@@ -49,16 +53,17 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
   v->add_option("judgments", o->judgments, "Judgments file")->required()->check(CLI::ExistingFile);
   v->add_option("--descriptors", o->descriptors, "Catalog (needed for lambdas above 0)")
       ->check(CLI::ExistingFile);
-  v->add_option("--folds", o->folds, "Folds (default 5)")->check(CLI::Range(2, 100));
+  v->add_option("--folds", o->folds, "Folds (default 5)")
+      ->check(whole_in_range(2, 100, "a number of folds"));
   v->add_option("--dims", o->dims, "Dimensions to try (default 1,2,3)")
       ->delimiter(',')
-      ->check(CLI::Range(1, 10));
+      ->check(whole_in_range(1, 10, "a number of dimensions"));
   v->add_option("--lambdas", o->lambdas, "Lambdas to try (default 0)")
       ->delimiter(',')
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative("a weight"));
   v->add_option("--starts", o->starts, "Random starts per fit (default 8)")
-      ->check(CLI::Range(1, 10000));
-  v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)");
+      ->check(whole_in_range(1, 10000, "a number of starts"));
+  v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)")->check(any_seed());
   v->add_option("--json", o->json, "Write the results as JSON");
   v->add_option("--report", o->report, "Folder for validation.json and the sweep plot");
   v->callback([o, global] {
@@ -135,19 +140,22 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
       "adaptive design (expected information gain) against two-stage at equal numbers of trials.");
   synth->add_option("--dims", s->dims, "Dimensions (default 1,2,3,4,5)")
       ->delimiter(',')
-      ->check(CLI::Range(1, 10));
+      ->check(whole_in_range(1, 10, "a number of dimensions"));
   synth->add_option("--trials", s->trials, "Random truths per dimension (default 100)")
-      ->check(CLI::Range(1, 100000));
-  synth->add_option("--stimuli", s->stimuli, "Stimuli (default 15)")->check(CLI::Range(3, 200));
-  synth->add_option("--starts", s->starts, "Fit starts (default 4)")->check(CLI::Range(1, 1000));
-  synth->add_option("--seed", s->seed, "Seed (default 1)");
+      ->check(whole_in_range(1, 100000, "a number of trials"));
+  synth->add_option("--stimuli", s->stimuli, "Stimuli (default 15)")
+      ->check(whole_in_range(3, 200, "a number of stimuli"));
+  synth->add_option("--starts", s->starts, "Fit starts (default 4)")
+      ->check(whole_in_range(1, 1000, "a number of starts"));
+  synth->add_option("--seed", s->seed, "Seed (default 1)")->check(any_seed());
   synth->add_flag("--all-judgments", s->all_judgments,
                   "Fit every answer, not the paper's selection (stage 2 + non-tied stage 1)");
   synth->add_flag("--compare", s->compare, "Also compare adaptive and two-stage designs");
   synth->add_option("--budgets", s->budgets, "Trial budgets compared (default 500,1000,1966)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(whole_in_range(1, 1000000, "a number of trials"));
   synth->add_option("--compare-trials", s->compare_trials, "Truths per budget (default 20)")
-      ->check(CLI::Range(1, 100000));
+      ->check(whole_in_range(1, 100000, "a number of trials"));
   synth->add_option("--json", s->json, "Write the results as JSON");
   synth->add_option("--report", s->report, "Folder for synthetic.json and a chart");
   synth->callback([s, global] {
@@ -166,13 +174,15 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
   plan->add_option("input", p->input, "Stimulus list (stage 1) or answered stage-1 list")
       ->required()
       ->check(CLI::ExistingFile);
-  plan->add_option("--stage", p->stage, "1 or 2 (default 1)")->check(CLI::Range(1, 2));
+  plan->add_option("--stage", p->stage, "1 or 2 (default 1)")
+      ->check(whole_in_range(1, 2, "a stage"));
   plan->add_option("--repetitions", p->repetitions, "Presentations per triplet")
-      ->check(CLI::Range(1, 1000));
+      ->check(whole_in_range(1, 1000, "a number of repetitions"));
   plan->add_option("--fraction", p->fraction, "Share of all triplets in stage 1 (default 0.5)")
-      ->check(CLI::Range(1e-9, 1.0));
-  plan->add_option("--max-triplets", p->max_triplets, "Ties repeated in stage 2 (default 60)");
-  plan->add_option("--seed", p->seed, "Seed (default 1)");
+      ->check(in_range(1e-9, 1.0, "a fraction"));
+  plan->add_option("--max-triplets", p->max_triplets, "Ties repeated in stage 2 (default 60)")
+      ->check(whole_in_range(1, 1000000, "a number of triplets"));
+  plan->add_option("--seed", p->seed, "Seed (default 1)")->check(any_seed());
   plan->add_option("-o,--output", p->output, "Trial list to write")->required();
   plan->callback([p, global] {
     configure_logging(global->verbosity);

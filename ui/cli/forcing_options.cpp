@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/progress.hpp"
 
 namespace nibrig::ui::cli {
@@ -26,9 +27,9 @@ void add_forcing_input_options(CLI::App* cmd, ForcingInputOptions& o) {
                   "assets/designs/stylus_vero_tip2mm.json)");
   cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
   cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
-      ->check(CLI::Range(1, 1000));
+      ->check(whole_in_range(1, 1000, "a number of modes"));
   cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
-      ->check(CLI::PositiveNumber);
+      ->check(stylus_metres("an element size"));
 }
 
 }  // namespace nibrig::ui::cli

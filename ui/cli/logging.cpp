@@ -10,6 +10,9 @@ void configure_logging(int verbosity) {
   if (!logger) logger = spdlog::stderr_color_mt("nibrig");
   logger->set_pattern("%^%l%$: %v");
   switch (verbosity) {
+    case kQuiet:
+      logger->set_level(spdlog::level::err);
+      break;
     case 0:
       logger->set_level(spdlog::level::warn);
       break;
@@ -21,6 +24,11 @@ void configure_logging(int verbosity) {
       break;
   }
   spdlog::set_default_logger(logger);
+}
+
+bool warnings_shown() {
+  const auto logger = spdlog::get("nibrig");
+  return !logger || logger->should_log(spdlog::level::warn);
 }
 
 }  // namespace nibrig::ui::cli

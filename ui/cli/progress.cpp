@@ -4,10 +4,14 @@
 
 #include <cstdio>
 
+#include "ui/cli/logging.hpp"
+
 namespace nibrig::ui::cli {
 
 Progress::Progress(std::string label, std::size_t total)
-    : label_(std::move(label)), total_(total), enabled_(isatty(STDERR_FILENO) == 1) {}
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(isatty(STDERR_FILENO) == 1 && warnings_shown()) {}
 
 Progress::~Progress() {
   if (enabled_ && done_ > 0) std::fputs("\n", stderr);

@@ -5,7 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "model/design/tool_sound.hpp"
 #include "rt/stroke_request.hpp"
@@ -18,14 +20,19 @@ struct StrokeOptions {
   std::string tool, surface;
   std::filesystem::path catalog, design;
   std::filesystem::path forcing_model;  // for design points; empty: fit the catalog first
-  double speed_mm_s = -1;  // constant speed; < 0 = not given
+  std::optional<double> speed_mm_s;  // constant speed
   bool sweep = false;
   std::filesystem::path trajectory;
-  double force_n = -1;  // constant normal force; < 0 = the paper's 2.2 N (or the trajectory's)
+  std::optional<double> force_n;  // constant normal force; none: 2.2 N (or the trajectory's)
   unsigned seed = 1;
 };
 
 void add_stroke_options(CLI::App* cmd, StrokeOptions& o);
+
+// What the engine will do with a --speed or --force outside what the paper measured (17-250 mm/s
+// at 2.2 N), one line each: the values are played, but clamped or extrapolated, and the user is
+// told so before any work starts. Empty when both are inside or not given.
+std::vector<std::string> outside_measured_range(const StrokeOptions& o);
 
 // The stroke the options describe (exactly one of --speed, --sweep, --trajectory; none = --sweep).
 rt::Stroke make_stroke(const StrokeOptions& o);

@@ -1,0 +1,98 @@
+// A command line nibrig cannot use exits 2 with one "nibrig: error:" line (as git and cmake do),
+// the program's own failures exit 1, and -q leaves only errors on stderr.
+#include "ui/cli/usage_errors.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::ui::cli {
+namespace {
+
+using test::run_cli;
+
+struct Outcome {
+  int code;
+  std::string err;
+};
+
+Outcome run_quietly(const std::vector<std::string>& args) {
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const int code = run_cli(args);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  return {code, err};
+}
+
+TEST(CliUsageErrors, MisspeltCommandSuggestsTheNearest) {
+  const Outcome r = run_quietly({"mesure", "x"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("nibrig: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("did you mean 'measure'?"), std::string::npos) << r.err;
+  // One line, as every error of the command line (DESIGN.md, "Conventions").
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(CliUsageErrors, MisspeltSubcommandSuggestsFromItsOwnCommand) {
+  // The suggestion comes from the level the typo is at: `space`'s fit, not a top-level command.
+  const Outcome r = run_quietly({"space", "fitt", "judgments.csv"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("did you mean 'fit'?"), std::string::npos) << r.err;
+}
+
+TEST(CliUsageErrors, UnknownOptionAndBadNumberAreUsageErrors) {
+  const Outcome unknown =
+      run_quietly({"render", "--tool", "cryon", "--surface", "office", "--bogus"});
+  EXPECT_EQ(unknown.code, 2) << unknown.err;
+  EXPECT_EQ(unknown.err.rfind("nibrig: error: ", 0), 0u) << unknown.err;
+  const Outcome number = run_quietly(
+      {"render", "--tool", "cryon", "--surface", "office", "--speed=-5", "-o", "x.wav"});
+  EXPECT_EQ(number.code, 2) << number.err;
+  EXPECT_EQ(number.err.rfind("nibrig: error: --speed: -5: expected", 0), 0u) << number.err;
+}
+
+TEST(CliUsageErrors, TheProgramsOwnFailuresStayExitCodeOne) {
+  // A well-formed command whose file is missing is not a usage error.
+  const Outcome r = run_quietly({"measure", "/nonexistent/arm_x_y.csv.gz", "--no-plots"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("nibrig: error: ", 0), 0u) << r.err;
+}
+
+TEST(CliUsageErrors, HelpAndVersionAreNotErrors) {
+  EXPECT_EQ(run_quietly({"--help"}).code, 0);
+  EXPECT_EQ(run_quietly({"--version"}).code, 0);
+}
+
+TEST(CliUsageErrors, NearestNameOnlyForSlips) {
+  const std::vector<std::string> names{"measure", "mechanics", "render", "demo"};
+  EXPECT_EQ(nearest_name("mesure", names), "measure");
+  EXPECT_EQ(nearest_name("rendr", names), "render");
+  // Three letters off, or a short word mostly changed, is not a slip: no guess.
+  EXPECT_EQ(nearest_name("plot", names), "");
+  EXPECT_EQ(nearest_name("xyz", names), "");
+}
+
+TEST(CliQuiet, SilencesWarningsButNotErrors) {
+  const auto dir = test::scratch_dir("cli_quiet");
+  const std::vector<std::string> render{
+      "render",      "--tool",    "cryon", "--surface", "office",
+      "--speed=1e9", "--seconds", "0.05",  "-o",        (dir / "x.wav").string()};
+  std::vector<std::string> quiet{"-q"};
+  quiet.insert(quiet.end(), render.begin(), render.end());
+  // The same run warns without -q (so the assertion below can fail) and is silent with it.
+  EXPECT_NE(run_quietly(render).err.find("above the measured"), std::string::npos);
+  const Outcome r = run_quietly(quiet);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const Outcome failing = run_quietly({"-q", "measure", "/nonexistent/arm_x_y.csv.gz"});
+  EXPECT_NE(failing.err.find("nibrig: error:"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace nibrig::ui::cli

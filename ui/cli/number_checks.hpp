@@ -1,0 +1,29 @@
+// Checks for the numbers typed on the command line, shared by every command. Each check knows what
+// the number means and its unit, so a refusal names the option, the value and what was expected:
+// "--speed: -5: expected a speed in mm/s, >= 0 and finite". (CLI11's own Range lets NaN through.)
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace nibrig::ui::cli {
+
+// `what` names the quantity with its unit ("a speed in mm/s", "a length in metres"). All of these
+// refuse NaN, infinities and text; the checks run while the command line is parsed, before any
+// command starts its work.
+CLI::Validator finite_number(const std::string& what);
+CLI::Validator non_negative(const std::string& what);
+CLI::Validator positive(const std::string& what);
+// low <= value <= high.
+CLI::Validator in_range(double low, double high, const std::string& what);
+// A length on a stylus or its test bar, in metres: > 0 and at most 1 m. Refused above, not warned
+// about: the usual slip is millimetres typed where metres are meant, which is 1000 times too long
+// and still gives plausible-looking modes (a 21 m "bar" rings at 0.004 Hz) that would be written to
+// JSON and plots; every real stylus dimension is centimetres or less.
+CLI::Validator stylus_metres(const std::string& what);
+// A whole number in [low, high]: counts, indices, seeds (a fraction or exponent is refused too).
+CLI::Validator whole_in_range(long long low, long long high, const std::string& what);
+// Any seed an unsigned option holds (CLI11 would wrap "-1" around into a seed silently).
+CLI::Validator any_seed();
+
+}  // namespace nibrig::ui::cli
