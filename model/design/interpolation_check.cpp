@@ -86,6 +86,28 @@ HoldOutSummary summarize(std::span<const InterpolatedPrediction> predictions) {
   for (const auto& r : predictions) {
     if (!r.not_predictable.empty()) continue;
     ++s.predicted;
+    const auto& c = r.comparison;
+    const std::size_t speeds = c.interpolated.rms_db_by_speed.size();
+    if (s.mean_predicted_db_by_speed.empty()) {
+      s.mean_predicted_db_by_speed.assign(speeds, 0.0);
+      s.mean_baseline_db_by_speed.assign(c.baselines.size(), std::vector<double>(speeds, 0.0));
+      s.beats_every_baseline_by_speed.assign(speeds, 0);
+    }
+    if (s.mean_baseline_db_by_speed.size() != c.baselines.size() ||
+        s.mean_predicted_db_by_speed.size() != speeds)
+      throw std::invalid_argument(r.tool + " on " + r.surface +
+                                  ": its comparison has other baselines or speeds than the first");
+    for (std::size_t v = 0; v < speeds; ++v) {
+      const double e = c.interpolated.rms_db_by_speed[v];
+      s.mean_predicted_db_by_speed[v] += e;
+      bool beats = !c.baselines.empty();
+      for (std::size_t b = 0; b < c.baselines.size(); ++b) {
+        const double baseline = c.baselines[b].error.rms_db_by_speed.at(v);
+        s.mean_baseline_db_by_speed[b][v] += baseline;
+        beats = beats && e < baseline;
+      }
+      s.beats_every_baseline_by_speed[v] += beats;
+    }
     s.beats_every_baseline += r.comparison.beats_every_baseline();
     const double rms_db = r.comparison.interpolated.rms_db;
     for (const auto& baseline : r.comparison.baselines)
@@ -103,6 +125,9 @@ HoldOutSummary summarize(std::span<const InterpolatedPrediction> predictions) {
     s.mean_predicted_db /= s.compared_with_measured;
     s.mean_measured_db /= s.compared_with_measured;
   }
+  for (auto& m : s.mean_predicted_db_by_speed) m /= s.predicted;
+  for (auto& baseline : s.mean_baseline_db_by_speed)
+    for (auto& m : baseline) m /= s.predicted;
   return s;
 }
 

@@ -57,11 +57,17 @@ struct TipHoldOut {
 // The hold-out in a few numbers, over the predictable tools: how many beat both baselines, the
 // largest |RMS error − a baseline's|, and against the measured neighbours (every neighbour that
 // was measured is one comparison) how often the prediction is closer and the mean of each side.
+// Per speed (the model's speeds), the mean RMS error of the predictions and of each baseline
+// (in the order of no_interpolation_corners; the hold-outs have two) over the predicted tools, and
+// on how many the prediction beats every baseline at that speed.
 struct HoldOutSummary {
   int predicted = 0, beats_every_baseline = 0;
   double widest_baseline_gap_db = 0.0;
   int compared_with_measured = 0, closer_than_measured = 0;
   double mean_predicted_db = 0.0, mean_measured_db = 0.0;  // over those comparisons
+  std::vector<double> mean_predicted_db_by_speed;
+  std::vector<std::vector<double>> mean_baseline_db_by_speed;  // [baseline][speed]
+  std::vector<int> beats_every_baseline_by_speed;
 };
 HoldOutSummary summarize(std::span<const InterpolatedPrediction> predictions);
 inline HoldOutSummary summarize(const TipHoldOut& held) { return summarize(held.predictions); }

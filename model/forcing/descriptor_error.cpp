@@ -35,4 +35,24 @@ DescriptorError descriptor_error(const std::string& tool, const std::string& sur
   return error;
 }
 
+DescriptorErrorSummary summarize(const std::vector<DescriptorError>& errors) {
+  DescriptorErrorSummary summary;
+  summary.errors = errors.size();
+  if (errors.empty()) return summary;
+  double squares = 0.0, band_squares = 0.0;
+  std::size_t band_count = 0;
+  summary.worst = &errors.front();
+  for (const auto& e : errors) {
+    squares += e.log10_weighted_mean * e.log10_weighted_mean;
+    if (std::abs(e.log10_weighted_mean) > std::abs(summary.worst->log10_weighted_mean)) summary.worst = &e;
+    for (double b : e.log10_band_energies.at(kMaxDescriptorBands)) {
+      band_squares += b * b;
+      ++band_count;
+    }
+  }
+  summary.rms_log10_weighted_mean = std::sqrt(squares / static_cast<double>(errors.size()));
+  summary.rms_log10_band_energy = std::sqrt(band_squares / static_cast<double>(band_count));
+  return summary;
+}
+
 }  // namespace nibrig::model::forcing

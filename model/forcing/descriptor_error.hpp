@@ -40,4 +40,14 @@ DescriptorError descriptor_error(const std::string& tool, const std::string& sur
                                  const io::VelocitySpectrum& measured,
                                  const measure::ThresholdCurve& threshold);
 
+// How far held-out predictions' descriptors were from the measured ones: the RMS of the log10
+// ratio of the weighted mean over the errors, of every band energy at kMaxDescriptorBands, and the
+// error with the largest |weighted mean| (null for no errors).
+struct DescriptorErrorSummary {
+  std::size_t errors = 0;
+  double rms_log10_weighted_mean = 0.0, rms_log10_band_energy = 0.0;
+  const DescriptorError* worst = nullptr;  // points into the summarised errors
+};
+DescriptorErrorSummary summarize(const std::vector<DescriptorError>& errors);
+
 }  // namespace nibrig::model::forcing

@@ -19,7 +19,7 @@
 #include "ui/cli/number_checks.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
-#include "ui/cli/space_inputs.hpp"
+#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -49,7 +49,7 @@ void run_design(const DesignOptions& o) {
     throw std::invalid_argument(o.space_file.string() +
                                 " has no descriptor map (fit it with --descriptors): designs are "
                                 "placed from their predicted descriptors");
-  SpaceLocator locator(space_file, o.space_file, catalog_path);
+  model::space::StimulusLocator locator(space_file, o.space_file, catalog_path);
   const space::Placement target = locator.locate(o.target, o.space_file);
 
   std::optional<design::DesignPoint> a, b;

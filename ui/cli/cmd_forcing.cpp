@@ -70,28 +70,15 @@ std::string curves_table(const forcing::ForcingModel& model,
 // How far held-out predictions' descriptors were from the measured ones: RMS of the log10 ratio,
 // as a percentage, of the weighted mean and of the band energies, and the worst tool.
 std::string descriptor_error_summary(const forcing::ForcingModel& model) {
-  const auto& errors = model.held_out_descriptor_errors;
-  if (errors.empty()) return "";
-  double squares = 0.0, band_squares = 0.0;
-  std::size_t band_count = 0;
-  const forcing::DescriptorError* worst = &errors.front();
-  for (const auto& e : errors) {
-    squares += e.log10_weighted_mean * e.log10_weighted_mean;
-    if (std::abs(e.log10_weighted_mean) > std::abs(worst->log10_weighted_mean)) worst = &e;
-    for (double b : e.log10_band_energies.at(forcing::kMaxDescriptorBands)) {
-      band_squares += b * b;
-      ++band_count;
-    }
-  }
-  const double rms = std::sqrt(squares / static_cast<double>(errors.size()));
-  const double band_rms = std::sqrt(band_squares / static_cast<double>(band_count));
+  const forcing::DescriptorErrorSummary s = forcing::summarize(model.held_out_descriptor_errors);
+  if (s.errors == 0) return "";
   return fmt::format(
       "predicted descriptors, each of {} exemplars held out: weighted mean vibration off by "
       "{:.1f} % RMS (worst {} on {}: {:+.1f} %), each of {} band energies by {:.1f} % RMS; "
       "predicted tools are placed with this error (forcing.json: held_out_descriptor_errors)\n",
-      errors.size(), forcing::percent_off(rms), worst->tool, worst->surface,
-      forcing::percent_off(worst->log10_weighted_mean), forcing::kMaxDescriptorBands,
-      forcing::percent_off(band_rms));
+      s.errors, forcing::percent_off(s.rms_log10_weighted_mean), s.worst->tool, s.worst->surface,
+      forcing::percent_off(s.worst->log10_weighted_mean), forcing::kMaxDescriptorBands,
+      forcing::percent_off(s.rms_log10_band_energy));
 }
 
 void run_fit(const FitCommandOptions& o) {

@@ -146,9 +146,6 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
                            "interpolated", first_curve, second_curve, "beats both",
                            "measured " + v.neighbour[0], "measured " + v.neighbour[1]);
   const auto& speeds = v.model->speeds_m_s;
-  std::vector<double> sum_by_speed(speeds.size()), first_by_speed(speeds.size()),
-      second_by_speed(speeds.size());
-  std::vector<int> beats_by_speed(speeds.size());
   for (const auto& r : v.predictions) {
     if (!r.not_predictable.empty()) {
       std::cout << fmt::format("{:<10}{:<11}  not predictable: {}\n", r.tool, r.surface,
@@ -164,13 +161,6 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
                              c.baselines[1].error.rms_db, c.beats_every_baseline() ? "yes" : "no",
                              measured(r.measured_neighbour_rms_db[0]),
                              measured(r.measured_neighbour_rms_db[1]));
-    for (std::size_t s = 0; s < speeds.size(); ++s) {
-      const double e = c.interpolated.rms_db_by_speed[s];
-      const double a = c.baselines[0].error.rms_db_by_speed[s];
-      const double b = c.baselines[1].error.rms_db_by_speed[s];
-      sum_by_speed[s] += e, first_by_speed[s] += a, second_by_speed[s] += b;
-      beats_by_speed[s] += e < a && e < b;
-    }
   }
   const design::HoldOutSummary summary = design::summarize(v.predictions);
   const int predicted = summary.predicted;
@@ -181,9 +171,10 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
       "speed (mm/s)", "interpolated", first_curve, second_curve, "beats both");
   for (std::size_t s = 0; s < speeds.size(); ++s)
     std::cout << fmt::format("{:>14.1f}{:>13.2f}{:>13.2f}{:>13.2f}{:>12}\n", speeds[s] * 1e3,
-                             sum_by_speed[s] / predicted, first_by_speed[s] / predicted,
-                             second_by_speed[s] / predicted,
-                             fmt::format("{} of {}", beats_by_speed[s], predicted));
+                             summary.mean_predicted_db_by_speed[s],
+                             summary.mean_baseline_db_by_speed[0][s],
+                             summary.mean_baseline_db_by_speed[1][s],
+                             fmt::format("{} of {}", summary.beats_every_baseline_by_speed[s], predicted));
   std::cout << fmt::format(
       "interpolation beats both no-interpolation baselines (Fig. 14) on {} of {} held-out tools",
       summary.beats_every_baseline, predicted);

@@ -12,7 +12,7 @@
 #include "model/space/statistics.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
-#include "ui/cli/space_inputs.hpp"
+#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -34,7 +34,7 @@ void report_axis_correlations(const space::SpaceFile& file) {
 }  // namespace
 
 void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
-  const SpaceInputs in = read_space_inputs(o.judgments, o.descriptors, o.dims, o.lambda);
+  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, o.descriptors, o.dims, o.lambda);
   space::FitOptions options;
   options.starts = o.starts;
   options.seed = o.seed;

@@ -19,15 +19,13 @@
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
-#include "ui/cli/space_inputs.hpp"
+#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
 namespace space = model::space;
 
 namespace {
-
-constexpr int kUncertaintySamples = 2000;  // sd of p to about ±2 % of itself
 
 // A name as one CSV field: quoted when it holds a comma, a quote or a line break.
 std::string csv_field(const std::string& s) {
@@ -37,38 +35,13 @@ std::string csv_field(const std::string& s) {
   return q + "\"";
 }
 
-struct Prediction {
-  double p = 0.0, sd = 0.0;
-};
-
-std::vector<Prediction> predict(const SpaceQueryOptions& o, const space::SpaceFile& s,
-                                const model::io::TripletSet& queries, SpaceLocator& locator) {
-  std::mt19937_64 generator(1);
-  std::vector<Prediction> out;
-  for (const auto& t : queries.triplets) {
-    const auto& r = locator.locate(queries.stimuli[t.reference], o.queries);
-    const auto& a = locator.locate(queries.stimuli[t.a], o.queries);
-    const auto& b = locator.locate(queries.stimuli[t.b], o.queries);
-    if (r.covariance.isZero(0.0) && a.covariance.isZero(0.0) && b.covariance.isZero(0.0)) {
-      Eigen::MatrixXd q(r.mean.size(), 3);
-      q << r.mean, a.mean, b.mean;
-      out.push_back({space::probability_first(q, 0, 1, 2, s.scale), 0.0});
-    } else {
-      const auto u =
-          space::uncertain_probability_first(r, a, b, s.scale, kUncertaintySamples, generator);
-      out.push_back({u.mean, u.sd});
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 void run_space_predict(const SpaceQueryOptions& o) {
   const space::SpaceFile s = space::read_space_file(o.space_file);
   const model::io::TripletSet queries = model::io::read_triplet_queries(o.queries);
-  SpaceLocator locator(s, o.space_file, o.catalog);
-  const std::vector<Prediction> p = predict(o, s, queries, locator);
+  space::StimulusLocator locator(s, o.space_file, o.catalog);
+  const std::vector<space::QueryPrediction> p = space::predict_queries(s, queries, locator, o.queries);
   std::ostringstream csv;
   csv << "reference,a,b,p_first" << (o.catalog.empty() ? "" : ",p_first_sd") << '\n'
       << std::setprecision(10);
@@ -90,8 +63,8 @@ void run_space_predict(const SpaceQueryOptions& o) {
 void run_space_evaluate(const SpaceQueryOptions& o) {
   const space::SpaceFile s = space::read_space_file(o.space_file);
   const model::io::TripletSet judged = model::io::read_triplets(o.queries);
-  SpaceLocator locator(s, o.space_file, o.catalog);
-  const std::vector<Prediction> p = predict(o, s, judged, locator);
+  space::StimulusLocator locator(s, o.space_file, o.catalog);
+  const std::vector<space::QueryPrediction> p = space::predict_queries(s, judged, locator, o.queries);
   std::vector<double> mean;
   for (const auto& x : p) mean.push_back(x.p);
   const space::PredictionScores scores = space::score_predictions(mean, judged.triplets);

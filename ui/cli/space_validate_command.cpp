@@ -15,7 +15,7 @@
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
-#include "ui/cli/space_inputs.hpp"
+#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -40,7 +40,7 @@ std::optional<std::vector<double>> numbers_in_names(const std::vector<std::strin
 void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   const double max_lambda = *std::max_element(o.lambdas.begin(), o.lambdas.end());
   const std::size_t max_dims = *std::max_element(o.dims.begin(), o.dims.end());
-  const SpaceInputs in = read_space_inputs(o.judgments, {}, max_dims, 0.0);
+  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, {}, max_dims, 0.0);
   if (max_lambda > 0 && o.descriptors.empty())
     throw std::invalid_argument("--lambdas above 0 need --descriptors catalog.json");
   std::optional<model::io::Catalog> catalog;

@@ -94,5 +94,23 @@ TEST(DescriptorError, TheSummaryIsTheRmsOfTheHeldOutErrors) {
   EXPECT_NEAR(loo.summary.weighted_mean_rms_log10, rms, 1e-15);
 }
 
+TEST(DescriptorError, TheSummaryIsTheRmsOverExemplarsAndTheWorstByMagnitude) {
+  // Hand-made errors: weighted means 0.1, -0.3, 0.2; five band energies each, all ±0.1 or 0.
+  std::vector<DescriptorError> errors(3);
+  const double means[] = {0.1, -0.3, 0.2};
+  for (int i = 0; i < 3; ++i) {
+    errors[i].tool = "t" + std::to_string(i);
+    errors[i].log10_weighted_mean = means[i];
+    errors[i].log10_band_energies[kMaxDescriptorBands] = {0.1, -0.1, 0.0, 0.1, -0.1};
+  }
+  const DescriptorErrorSummary s = summarize(errors);
+  EXPECT_EQ(s.errors, 3u);
+  EXPECT_NEAR(s.rms_log10_weighted_mean, std::sqrt((0.01 + 0.09 + 0.04) / 3), 1e-15);
+  EXPECT_NEAR(s.rms_log10_band_energy, std::sqrt(4 * 0.01 / 5), 1e-15);  // 12 of 15 are ±0.1
+  ASSERT_NE(s.worst, nullptr);
+  EXPECT_EQ(s.worst->tool, "t1");  // |-0.3| is the largest
+  EXPECT_EQ(summarize(std::vector<DescriptorError>{}).worst, nullptr);
+}
+
 }  // namespace
 }  // namespace nibrig::model::forcing

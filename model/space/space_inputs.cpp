@@ -1,38 +1,37 @@
-#include "ui/cli/space_inputs.hpp"
+#include "model/space/space_inputs.hpp"
 
+#include <random>
 #include <stdexcept>
 
 #include "model/io/catalog.hpp"
 
-namespace nibrig::ui::cli {
-
-namespace space = model::space;
+namespace nibrig::model::space {
 
 SpaceInputs read_space_inputs(const std::filesystem::path& judgments,
                               const std::filesystem::path& catalog, std::size_t dims,
                               double lambda) {
   if (lambda > 0 && catalog.empty())
     throw std::invalid_argument(
-        "--lambda > 0 ties the axes to physical descriptors: give them with --descriptors "
-        "catalog.json");
-  if (lambda < 0) throw std::invalid_argument("--lambda must not be negative");
+        "lambda > 0 ties the axes to physical descriptors: give them with a catalog "
+        "(--descriptors catalog.json)");
+  if (lambda < 0) throw std::invalid_argument("lambda must not be negative");
   SpaceInputs in;
-  in.judgments = model::io::read_triplets(judgments);
+  in.judgments = io::read_triplets(judgments);
   in.problem.dims = dims;
   in.problem.stimuli = in.judgments.stimuli.size();
   in.problem.triplets = in.judgments.triplets;
   in.problem.lambda = lambda;
   if (!catalog.empty()) {
     in.catalog_file = catalog;
-    in.descriptors = space::descriptors_for_stimuli(model::io::read_catalog(catalog), catalog,
+    in.descriptors = descriptors_for_stimuli(io::read_catalog(catalog), catalog,
                                                     in.judgments.stimuli, dims);
     if (lambda > 0) in.problem.descriptors = in.descriptors->values;
   }
-  space::validate(in.problem);
+  validate(in.problem);
   return in;
 }
 
-SpaceLocator::SpaceLocator(const space::SpaceFile& space, const std::filesystem::path& space_file,
+StimulusLocator::StimulusLocator(const SpaceFile& space, const std::filesystem::path& space_file,
                            const std::filesystem::path& catalog_file)
     : space_(space), space_file_(space_file), catalog_file_(catalog_file) {
   const auto dims = space.coordinates.rows();
@@ -46,11 +45,11 @@ SpaceLocator::SpaceLocator(const space::SpaceFile& space, const std::filesystem:
       throw std::invalid_argument(space_file.string() +
                                   " has no descriptor map (fit it with --descriptors) to place "
                                   "tools from " + catalog_file.string());
-    catalog_ = model::io::read_catalog(catalog_file);
+    catalog_ = io::read_catalog(catalog_file);
   }
 }
 
-const space::Placement& SpaceLocator::locate(const std::string& stimulus,
+const Placement& StimulusLocator::locate(const std::string& stimulus,
                                              const std::filesystem::path& query_file) {
   const auto it = known_.find(stimulus);
   if (it != known_.end()) return it->second;
@@ -60,19 +59,40 @@ const space::Placement& SpaceLocator::locate(const std::string& stimulus,
                                 " (a tool named \"tool/surface\" can be placed from its "
                                 "descriptors with --catalog catalog.json)");
   const auto& map = *space_.descriptor_map;
-  const space::DescriptorTable row = space::descriptors_for_stimuli(
+  const DescriptorTable row = descriptors_for_stimuli(
       *catalog_, catalog_file_, {stimulus}, map.descriptor_names.size());
   if (row.names != map.descriptor_names)
     throw std::invalid_argument(space_file_.string() + ": its descriptor map uses descriptors " +
                                 "that " + catalog_file_.string() + " does not provide");
   placed_[stimulus] = true;
   return known_[stimulus] =
-             space::place_from_descriptors(map, row.values.row(0).transpose());
+             place_from_descriptors(map, row.values.row(0).transpose());
 }
 
-bool SpaceLocator::placed(const std::string& stimulus) const {
+bool StimulusLocator::placed(const std::string& stimulus) const {
   const auto it = placed_.find(stimulus);
   return it != placed_.end() && it->second;
 }
 
-}  // namespace nibrig::ui::cli
+std::vector<QueryPrediction> predict_queries(const SpaceFile& space, const io::TripletSet& queries,
+                                             StimulusLocator& locator,
+                                             const std::filesystem::path& query_file) {
+  std::mt19937_64 generator(1);
+  std::vector<QueryPrediction> out;
+  for (const auto& t : queries.triplets) {
+    const auto& r = locator.locate(queries.stimuli[t.reference], query_file);
+    const auto& a = locator.locate(queries.stimuli[t.a], query_file);
+    const auto& b = locator.locate(queries.stimuli[t.b], query_file);
+    if (r.covariance.isZero(0.0) && a.covariance.isZero(0.0) && b.covariance.isZero(0.0)) {
+      Eigen::MatrixXd q(r.mean.size(), 3);
+      q << r.mean, a.mean, b.mean;
+      out.push_back({probability_first(q, 0, 1, 2, space.scale), 0.0});
+    } else {
+      const auto u = uncertain_probability_first(r, a, b, space.scale, kUncertaintySamples, generator);
+      out.push_back({u.mean, u.sd});
+    }
+  }
+  return out;
+}
+
+}  // namespace nibrig::model::space
