@@ -9,7 +9,7 @@
 #include "model/mechanics/fem_assembly.hpp"
 #include "model/mechanics/isotropic_material.hpp"
 #include "model/mechanics/modal_analysis.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::mechanics {
 
@@ -21,7 +21,7 @@ struct DesignModel {
   std::string damping_source;  // "the design", "material 'X'", or "none (undamped)"
   Eigen::Index free_dofs = 0;
   ModalResult modes;
-  ModalModel modal;
+  modal::ModalModel modal;
   struct {
     double meshing_s = 0, assembly_s = 0, modes_s = 0;
   } seconds;

@@ -10,7 +10,7 @@
 
 #include "model/design/predicted_tool.hpp"
 #include "model/io/catalog.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 #include "rt/voice.hpp"
 
 namespace nibrig::ui::cli {
@@ -20,7 +20,7 @@ inline constexpr const char* kDefaultVoiceDesign = "designs/stylus_vero_tip2mm.j
 
 struct StylusModes {
   std::string name;
-  model::mechanics::ModalModel modal;
+  model::modal::ModalModel modal;
 };
 
 // Meshes the design (a nibrig-design JSON; empty = kDefaultVoiceDesign) and solves for its modes.
