@@ -19,11 +19,11 @@
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_point.hpp"
 #include "model/forcing/forcing_model.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/threshold_curve.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::design {

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "playback/audio_output.hpp"
 #include "rt/engine.hpp"
 #include "rt/voice_builder.hpp"

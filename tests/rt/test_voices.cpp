@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::rt::testing {

@@ -9,15 +9,15 @@
 #include <nlohmann/json.hpp>
 
 #include "model/design/design_search.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
-#include "ui/cli/elapsed.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/prediction_inputs.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/prediction_inputs.hpp"
 #include "ui/cli/space_inputs.hpp"
 
 namespace nibrig::ui::cli {

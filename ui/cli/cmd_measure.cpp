@@ -10,8 +10,8 @@
 #include "model/io/session.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/commands.hpp"
-#include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/measurement_figures.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {

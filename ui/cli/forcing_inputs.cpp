@@ -11,7 +11,7 @@
 
 #include "model/forcing/forcing_fit.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "ui/cli/assets.hpp"

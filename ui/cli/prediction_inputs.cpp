@@ -3,8 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include "model/forcing/forcing_file.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "ui/cli/assets.hpp"
 
 namespace nibrig::ui::cli {

@@ -10,7 +10,7 @@
 
 #include "model/design/predicted_tool.hpp"
 #include "model/forcing/forcing_model.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "ui/cli/forcing_inputs.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::ui::cli {
 

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "model/design/design_point.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "rt/voice_builder.hpp"
 #include "ui/cli/assets.hpp"
 #include "ui/cli/prediction_inputs.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "model/design/predicted_tool.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/modal/modal_model.hpp"
 #include "rt/voice.hpp"
 

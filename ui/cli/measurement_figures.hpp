@@ -6,7 +6,7 @@
 #include <string>
 
 #include "model/catalog/analysis.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::ui::cli {
 

@@ -1,4 +1,4 @@
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 #include <gtest/gtest.h>
 

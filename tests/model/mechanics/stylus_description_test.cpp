@@ -1,4 +1,4 @@
-#include "model/mechanics/design.hpp"
+#include "model/mechanics/stylus_description.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "ui/cli/figures.hpp"
+#include "ui/cli/measurement_figures.hpp"
 
 #include <algorithm>
 #include <cstdio>
