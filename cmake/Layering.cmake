@@ -1,31 +1,48 @@
 # Enforces the module layering of DESIGN.md at configure time: a module may include and link only
 # the modules below it. Linking is checked by CMake itself (targets only link downward); includes are
 # checked here because the include root is the repository root and a header-only upward include
-# would otherwise slip through.
+# would otherwise slip through. An allowed entry is a folder: "model" allows all of model/,
+# "model/io" only that submodule (model/'s own order is checked part by part in model/CMakeLists.txt).
 #   model    -> (nothing of ours)
-#   rt       -> model
-#   playback -> rt, model
+#   rt       -> model/numeric, model/io, model/modal (what a voice needs; never the FEM)
+#   playback -> rt and what rt uses
 #   rig      -> rt, model
-#   ui       -> everything
-function(nibrig_check_layering module)
-  set(allowed_model "model")
-  set(allowed_rt "model;rt")
-  set(allowed_playback "model;rt;playback")
-  set(allowed_rig "model;rt;rig")
-  set(allowed_ui "model;rt;playback;rig;ui")
-  set(allowed ${allowed_${module}})
+#   ui       -> everything; ui/report -> nothing but itself (a leaf, checked in ui/CMakeLists.txt)
+
+# Fails the configure when a file below `folder` includes one of our headers outside the folders
+# named after it. `folder` and the allowed folders are relative to the repository root.
+function(nibrig_check_includes folder)
+  set(allowed ${ARGN})
   file(GLOB_RECURSE files CONFIGURE_DEPENDS
-       "${CMAKE_SOURCE_DIR}/${module}/*.hpp" "${CMAKE_SOURCE_DIR}/${module}/*.cpp")
+       "${CMAKE_SOURCE_DIR}/${folder}/*.hpp" "${CMAKE_SOURCE_DIR}/${folder}/*.cpp")
   foreach(file IN LISTS files)
     file(STRINGS "${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]+\"(model|rt|playback|rig|ui)/")
     foreach(line IN LISTS includes)
-      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]+\"([a-z]+)/.*" "\\1" target_module "${line}")
-      if(NOT target_module IN_LIST allowed)
-        message(FATAL_ERROR "Layering violation: ${file} includes ${target_module}/, "
-                            "but ${module}/ may only use: ${allowed}")
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]+\"([^\"]+)\".*" "\\1" included "${line}")
+      set(ok FALSE)
+      foreach(root IN LISTS allowed)
+        string(FIND "${included}" "${root}/" at)
+        if(at EQUAL 0)
+          set(ok TRUE)
+        endif()
+      endforeach()
+      if(NOT ok)
+        file(RELATIVE_PATH shown "${CMAKE_SOURCE_DIR}" "${file}")
+        list(JOIN allowed ", " allowed_text)
+        message(FATAL_ERROR "Layering violation: ${shown} includes ${included}, "
+                            "but ${folder}/ may only use: ${allowed_text}")
       endif()
     endforeach()
   endforeach()
+endfunction()
+
+function(nibrig_check_layering module)
+  set(allowed_model "model")
+  set(allowed_rt "model/numeric;model/io;model/modal;rt")
+  set(allowed_playback "model/numeric;model/io;model/modal;rt;playback")
+  set(allowed_rig "model;rt;rig")
+  set(allowed_ui "model;rt;playback;rig;ui")
+  nibrig_check_includes(${module} ${allowed_${module}})
 endfunction()
 
 # Adds the library of a module from every .cpp below its folder. Modules without sources yet are

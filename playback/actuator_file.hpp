@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "playback/frequency_response.hpp"
 #include "playback/inverse_filter.hpp"
+#include "playback/measured_response.hpp"
 #include "playback/sweep.hpp"
 
 namespace nibrig::playback {

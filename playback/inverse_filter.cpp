@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -73,7 +73,7 @@ std::size_t design_size(std::size_t taps) {
 // The minimum-phase sequence with magnitude `magnitude` (M/2 + 1 bins of an M-point grid), by the
 // real cepstrum: fold the cepstrum onto positive quefrencies, exponentiate, transform back.
 std::vector<double> minimum_phase(const std::vector<double>& magnitude, std::size_t m) {
-  model::measure::RealFft fft(m, model::measure::RealFft::Plans::forward_and_backward);
+  model::numeric::RealFft fft(m, model::numeric::RealFft::Plans::forward_and_backward);
   auto spectrum = fft.spectrum();
   for (std::size_t k = 0; k < spectrum.size(); ++k) spectrum[k] = std::log(magnitude[k]);
   fft.backward();
@@ -93,7 +93,7 @@ std::vector<double> minimum_phase(const std::vector<double>& magnitude, std::siz
 
 // |H| of the taps on the M-point grid, by one zero-padded FFT.
 std::vector<double> fir_magnitude(const std::vector<double>& taps, std::size_t m) {
-  model::measure::RealFft fft(m, model::measure::RealFft::Plans::forward);
+  model::numeric::RealFft fft(m, model::numeric::RealFft::Plans::forward);
   std::fill(fft.real().begin(), fft.real().end(), 0.0);
   std::copy(taps.begin(), taps.end(), fft.real().begin());
   fft.forward();

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "model/io/velocity_spectrum.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 #include "playback/actuator_file.hpp"
 #include "playback/offline_render.hpp"
 #include "rt/engine.hpp"
@@ -23,7 +23,7 @@ namespace nibrig::playback {
 // The session builds the voice, so the references need to live only through its constructor.
 struct SessionVoice {
   std::string name;
-  const model::mechanics::ModalModel& modal;
+  const model::modal::ModalModel& modal;
   const model::io::VelocitySpectrum& spectrum;
 };
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -141,7 +141,7 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
 
   // Circular deconvolution by one sweep period: the recording of R back-to-back periods becomes R
   // copies of the impulse response, one per period, each preceded by its harmonics' products.
-  model::measure::RealFft fft(n, model::measure::RealFft::Plans::forward_and_backward);
+  model::numeric::RealFft fft(n, model::numeric::RealFft::Plans::forward_and_backward);
   std::fill(fft.real().begin(), fft.real().end(), 0.0);
   std::copy(played.begin(), played.begin() + static_cast<std::ptrdiff_t>(period),
             fft.real().begin());

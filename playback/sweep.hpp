@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "playback/frequency_response.hpp"
+#include "playback/measured_response.hpp"
 
 namespace nibrig::playback {
 

@@ -31,7 +31,8 @@ constexpr std::size_t kNoiseChunks = 8;
 ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
     : table_(std::move(table)),
       noise_(seed),
-      fft_(table_ ? table_->frame_length() : 2, model::measure::RealFft::Plans::forward_and_backward),
+      fft_(table_ ? table_->frame_length() : 2,
+           model::numeric::RealFft::Plans::forward_and_backward),
       frame_(table_ ? table_->frame_length() : 2),
       hop_(frame_ / 2) {
   if (!table_) throw std::invalid_argument("a forcing generator needs a table");

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 #include "rt/forcing_table.hpp"
 #include "rt/gaussian_noise.hpp"
 #include "rt/reference_load.hpp"
@@ -52,7 +52,7 @@ class ForcingGenerator {
 
   std::shared_ptr<const ForcingTable> table_;
   GaussianNoise noise_;
-  model::measure::RealFft fft_;
+  model::numeric::RealFft fft_;
   std::size_t frame_, hop_;
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins

@@ -63,7 +63,7 @@ ForcingTable::ForcingTable(const model::io::VelocitySpectrum& target, double sam
     for (std::size_t k = 1; k + 1 < bins(); ++k) {  // no DC, no Nyquist bin
       const double f = static_cast<double>(k) * sample_rate_hz / n;
       const double a = amplitude_at(target.frequencies_hz, target.amplitude_m_s2[s], f);
-      const double psd = model::measure::noise_psd_from_mean_amplitude(a, window_seconds);
+      const double psd = model::numeric::noise_psd_from_mean_amplitude(a, window_seconds);
       // A bin k of a real frame carries 2E|X_k|²/N² of the variance; the band it stands for,
       // fs/N, should carry S·fs/N: E|X_k|² = S·fs·N/2 for unit complex noise (E|Z|² = 1).
       magnitudes_[s * bins() + k] = std::sqrt(psd * sample_rate_hz * n / 2.0);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "model/io/velocity_spectrum.hpp"
-#include "model/measure/amplitude_convention.hpp"
+#include "model/numeric/amplitude_convention.hpp"
 
 namespace nibrig::rt {
 
@@ -25,7 +25,7 @@ class ForcingTable {
   // amplitudes, speeds that are not positive and increasing, a non-positive rate or window, or a
   // last frequency at or above the Nyquist frequency.
   ForcingTable(const model::io::VelocitySpectrum& target, double sample_rate_hz,
-               double window_seconds = model::measure::kCatalogWindowSeconds);
+               double window_seconds = model::numeric::kCatalogWindowSeconds);
 
   double sample_rate() const noexcept { return sample_rate_; }
   std::size_t frame_length() const noexcept { return frame_length_; }

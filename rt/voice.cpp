@@ -4,7 +4,7 @@
 
 namespace nibrig::rt {
 
-Voice::Voice(std::string name, const model::mechanics::ModalModel& modal,
+Voice::Voice(std::string name, const model::modal::ModalModel& modal,
              std::shared_ptr<const ForcingTable> forcing, std::uint64_t seed)
     : name_(std::move(name)),
       generator_(forcing, seed),

@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "model/mechanics/linear_forcing_integrator.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/linear_forcing_integrator.hpp"
+#include "model/modal/modal_model.hpp"
 #include "rt/forcing_generator.hpp"
 #include "rt/forcing_table.hpp"
 
@@ -18,7 +18,7 @@ class Voice {
  public:
   // The integrator runs at forcing->sample_rate(). Throws std::invalid_argument for a bad model
   // or a missing table.
-  Voice(std::string name, const model::mechanics::ModalModel& modal,
+  Voice(std::string name, const model::modal::ModalModel& modal,
         std::shared_ptr<const ForcingTable> forcing, std::uint64_t seed);
 
   const std::string& name() const noexcept { return name_; }
@@ -37,7 +37,7 @@ class Voice {
  private:
   std::string name_;
   ForcingGenerator generator_;
-  model::mechanics::LinearForcingIntegrator integrator_;
+  model::modal::LinearForcingIntegrator integrator_;
 };
 
 }  // namespace nibrig::rt

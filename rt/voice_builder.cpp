@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "model/mechanics/discrete_frequency_response.hpp"
+#include "model/modal/discrete_frequency_response.hpp"
 
 namespace nibrig::rt {
 
-std::unique_ptr<Voice> build_voice(std::string name, const model::mechanics::ModalModel& modal,
+std::unique_ptr<Voice> build_voice(std::string name, const model::modal::ModalModel& modal,
                                    const model::io::VelocitySpectrum& acceleration,
                                    double internal_rate_hz, std::uint64_t seed,
                                    double regularisation) {
-  const auto h = model::mechanics::discrete_frequency_response(modal, internal_rate_hz,
-                                                               acceleration.frequencies_hz);
+  const auto h = model::modal::discrete_frequency_response(modal, internal_rate_hz,
+                                                           acceleration.frequencies_hz);
   double peak = 0;
   for (const auto& x : h) peak = std::max(peak, std::abs(x));
   const double floor = regularisation * peak;

@@ -8,18 +8,18 @@
 #include <string>
 
 #include "model/io/velocity_spectrum.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 #include "rt/voice.hpp"
 
 namespace nibrig::rt {
 
 // The forcing generator is given A·|H_d| / (|H_d|² + (ε·max|H_d|)²), H_d the modal model's
 // response as the voice's integrator computes it at internal_rate_hz
-// (model/mechanics/discrete_frequency_response.hpp), so that the voice's output has the spectrum
+// (model/modal/discrete_frequency_response.hpp), so that the voice's output has the spectrum
 // A exactly wherever |H_d| is well above ε of its peak, straight-line joins and folding included;
 // where the stylus barely responds the force stays bounded (see model/forcing/measured_forcing.hpp
 // for the same regularisation against the continuous response). Equal seeds give equal voices.
-std::unique_ptr<Voice> build_voice(std::string name, const model::mechanics::ModalModel& modal,
+std::unique_ptr<Voice> build_voice(std::string name, const model::modal::ModalModel& modal,
                                    const model::io::VelocitySpectrum& acceleration,
                                    double internal_rate_hz, std::uint64_t seed,
                                    double regularisation = 1e-3);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/session.hpp"

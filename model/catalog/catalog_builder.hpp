@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "model/catalog/analysis.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::catalog {
 

@@ -3,7 +3,7 @@
 // compact spectra by whoever loads them, so the file stays self-consistent.
 #pragma once
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::catalog {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::catalog {
 

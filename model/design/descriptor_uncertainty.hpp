@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "model/forcing/descriptor_error.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::design {
 

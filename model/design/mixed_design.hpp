@@ -7,8 +7,8 @@
 #pragma once
 
 #include "model/design/design_point.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 
 namespace nibrig::model::design {
 

@@ -8,7 +8,7 @@
 #include "model/design/mixed_design.hpp"
 #include "model/design/tip_bracket.hpp"
 #include "model/mechanics/design_model.hpp"
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 
 namespace nibrig::model::design {
 
@@ -104,7 +104,7 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
   tool.design_name = mixed.design.name;
   tool.first_mode_hz = built.modal.omega.front() / (2 * M_PI);
   tool.modal = built.modal;
-  for (const auto& h : mechanics::frequency_response(built.modal, model.frequencies_hz))
+  for (const auto& h : modal::frequency_response(built.modal, model.frequencies_hz))
     tool.response_magnitude.push_back(std::abs(h));
   tool.spectrum = predict_spectrum(model, point, surface, tool.response_magnitude);
   tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);

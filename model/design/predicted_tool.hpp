@@ -19,12 +19,12 @@
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_point.hpp"
 #include "model/forcing/forcing_model.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/threshold_curve.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/mechanics/stylus_description.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::design {
 
@@ -69,7 +69,7 @@ struct PredictedTool {
   std::string surface;
   std::string design_name;
   double first_mode_hz = 0.0;
-  mechanics::ModalModel modal;             // the design's modes: what a real-time voice runs
+  modal::ModalModel modal;                 // the design's modes: what a real-time voice runs
   std::vector<double> response_magnitude;  // |H| at the model's frequencies
   io::VelocitySpectrum spectrum;
   double mu = 0.0;

@@ -4,8 +4,8 @@
 
 #include "model/forcing/forcing_file.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 
 namespace nibrig::model::design {
 

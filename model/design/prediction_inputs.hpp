@@ -11,7 +11,7 @@
 #include "model/design/predicted_tool.hpp"
 #include "model/forcing/forcing_inputs.hpp"
 #include "model/forcing/forcing_model.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 
 namespace nibrig::model::design {

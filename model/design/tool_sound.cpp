@@ -8,7 +8,7 @@
 #include "model/design/design_point.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/material_table.hpp"
 

@@ -12,16 +12,16 @@
 
 #include "model/design/predicted_tool.hpp"
 #include "model/forcing/forcing_inputs.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/io/velocity_spectrum.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::design {
 
 struct ToolSound {
   std::string name;   // "cryon on office", "predicted DM85:0.5,vero:0.5,tip=2mm on office"
   std::string modes;  // the design whose modes shape it
-  mechanics::ModalModel modal;
+  modal::ModalModel modal;
   io::VelocitySpectrum spectrum;
 };
 

@@ -10,7 +10,7 @@
 
 #include "model/forcing/printed_tool_design.hpp"
 #include "model/mechanics/design_model.hpp"
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -118,7 +118,7 @@ std::vector<DesignResponse> attach_responses(
       auto& magnitude = by_grid[exemplar.measured.frequencies_hz];
       if (magnitude.empty())
         for (const auto& h :
-             mechanics::frequency_response(model.modal, exemplar.measured.frequencies_hz))
+             modal::frequency_response(model.modal, exemplar.measured.frequencies_hz))
           magnitude.push_back(std::abs(h));
       exemplar.response_magnitude = magnitude;
       const std::string user = exemplar.material + " " + tip_label(exemplar.tip_diameter_m);

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "model/forcing/forcing_fit.hpp"
-#include "model/io/catalog.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/mechanics/stylus_description.hpp"
 
 namespace nibrig::model::forcing {
 

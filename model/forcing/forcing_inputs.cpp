@@ -9,8 +9,9 @@
 #include <stdexcept>
 
 #include "model/forcing/forcing_fit.hpp"
+#include "model/forcing/leave_one_out.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/mechanics/material_table.hpp"
 

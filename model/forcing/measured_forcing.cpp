@@ -4,16 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 
 namespace nibrig::model::forcing {
 
 io::VelocitySpectrum forcing_from_acceleration(const io::VelocitySpectrum& acceleration,
-                                               const mechanics::ModalModel& model,
+                                               const modal::ModalModel& model,
                                                double regularisation) {
   if (!(regularisation >= 0) || !std::isfinite(regularisation))
     throw std::invalid_argument("the regularisation must be finite and >= 0");
-  const auto h = mechanics::frequency_response(model, acceleration.frequencies_hz);
+  const auto h = modal::frequency_response(model, acceleration.frequencies_hz);
   double peak = 0;
   for (const auto& x : h) peak = std::max(peak, std::abs(x));
   const double floor = regularisation * peak;

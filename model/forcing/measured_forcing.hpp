@@ -5,7 +5,7 @@
 #pragma once
 
 #include "model/io/velocity_spectrum.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -16,7 +16,7 @@ namespace nibrig::model::forcing {
 // `acceleration`; the amplitudes become N. Throws std::invalid_argument for ε < 0, a bad model
 // or a frequency where H is infinite (an undamped resonance).
 io::VelocitySpectrum forcing_from_acceleration(const io::VelocitySpectrum& acceleration,
-                                               const mechanics::ModalModel& model,
+                                               const modal::ModalModel& model,
                                                double regularisation = 1e-3);
 
 }  // namespace nibrig::model::forcing

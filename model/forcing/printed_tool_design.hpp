@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "model/mechanics/design.hpp"
+#include "model/mechanics/stylus_description.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -35,11 +35,11 @@ PrintedTip printed_tip_of(const std::string& catalog_material);
 
 // `template_design` must be a parametric stylus ("kind": "stylus"): its body (length, diameter,
 // taper, grip), body material, mesh size, mode count and sensor are kept (assumptions stated in
-// that file and in mechanics/design.hpp: 10 mm × 120 mm body, 15 mm taper, 30 mm grip, sensor on
-// the surface 10 mm in front of the grip). The tip diameter becomes `tip_diameter_m`, the tip
-// insert becomes `tip` (no insert when its material is the body's), the tip probe moves to the new
-// apex with the template's force direction, and the damping is fixed to the template's (its own,
-// else its body material's): Rayleigh damping must be one for the whole body to keep modes
+// that file and in mechanics/stylus_description.hpp: 10 mm × 120 mm body, 15 mm taper, 30 mm grip,
+// sensor on the surface 10 mm in front of the grip). The tip diameter becomes `tip_diameter_m`, the
+// tip insert becomes `tip` (no insert when its material is the body's), the tip probe moves to the
+// new apex with the template's force direction, and the damping is fixed to the template's (its
+// own, else its body material's): Rayleigh damping must be one for the whole body to keep modes
 // uncoupled, and the soft materials' own damping is not known. Throws std::invalid_argument for a
 // template that is not a stylus or has no "body" material, and for a non-positive diameter.
 mechanics::Design printed_tool_design(const PrintedTip& tip, double tip_diameter_m,

@@ -11,7 +11,7 @@ namespace nibrig::model::io {
 
 // amplitude_m_s2[s][f] is the single-sided amplitude (peak, m/s^2) at frequencies_hz[f] while the
 // tip moves at speeds_m_s[s]. In JSON files the speeds are written as `speeds_mm_s` (mm/s), see
-// catalog.hpp.
+// catalog_file.hpp.
 struct VelocitySpectrum {
   std::vector<double> frequencies_hz;
   std::vector<double> speeds_m_s;

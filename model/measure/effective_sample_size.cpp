@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::model::measure {
 
@@ -18,7 +18,7 @@ std::vector<double> autocovariance(std::span<const double> x, double mean) {
   const std::size_t n = x.size();
   std::size_t padded = 1;
   while (padded < 2 * n) padded *= 2;
-  RealFft fft(padded, RealFft::Plans::forward_and_backward);
+  numeric::RealFft fft(padded, numeric::RealFft::Plans::forward_and_backward);
   const std::span<double> real = fft.real();
   for (std::size_t i = 0; i < padded; ++i) real[i] = i < n ? x[i] - mean : 0.0;
   fft.forward();

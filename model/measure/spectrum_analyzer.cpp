@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::model::measure {
 
@@ -50,14 +50,14 @@ struct SpectrumAnalyzer::Impl {
         sum_w(std::accumulate(coefficients.begin(), coefficients.end(), 0.0)),
         sum_w2(std::inner_product(coefficients.begin(), coefficients.end(), coefficients.begin(),
                                   0.0)),
-        fft(segment_length, RealFft::Plans::forward) {}
+        fft(segment_length, numeric::RealFft::Plans::forward) {}
 
   std::size_t length;
   Window window;
   std::vector<double> coefficients;
   double sum_w;
   double sum_w2;
-  RealFft fft;
+  numeric::RealFft fft;
 };
 
 SpectrumAnalyzer::SpectrumAnalyzer(std::size_t segment_length, Window window)

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/measure/real_fft.hpp"
 #include "model/measure/spectrum_analyzer.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::model::measure {
 
@@ -151,7 +151,7 @@ Envelope band_envelope(std::span<const double> x, double fs, const StepProtocol&
 std::vector<double> band_power_per_sample(std::span<const double> x, double fs, double low,
                                           double high) {
   const std::size_t n = x.size();
-  RealFft fft(n, RealFft::Plans::forward_and_backward);
+  numeric::RealFft fft(n, numeric::RealFft::Plans::forward_and_backward);
   const std::span<double> real = fft.real();
   std::copy(x.begin(), x.end(), real.begin());
   fft.forward();

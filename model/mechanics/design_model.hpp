@@ -5,11 +5,11 @@
 
 #include <vector>
 
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/fem_assembly.hpp"
 #include "model/mechanics/isotropic_material.hpp"
 #include "model/mechanics/modal_analysis.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/mechanics/stylus_description.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::mechanics {
 
@@ -21,7 +21,7 @@ struct DesignModel {
   std::string damping_source;  // "the design", "material 'X'", or "none (undamped)"
   Eigen::Index free_dofs = 0;
   ModalResult modes;
-  ModalModel modal;
+  modal::ModalModel modal;
   struct {
     double meshing_s = 0, assembly_s = 0, modes_s = 0;
   } seconds;
@@ -32,9 +32,9 @@ struct DesignModel {
 std::pair<RayleighDamping, std::string> design_damping(const Design& design,
                                                        const MaterialTable& materials);
 
-// Regions get their materials by material_of_region (design.hpp). Throws what the stages throw (bad shape, no clamp, unknown
-// material, an unnamed region when the design names several materials, tip or sensor outside the
-// body, modal solver failure), each naming the design.
+// Regions get their materials by material_of_region (stylus_description.hpp). Throws what the
+// stages throw (bad shape, no clamp, unknown material, an unnamed region when the design names
+// several materials, tip or sensor outside the body, modal solver failure), each naming the design.
 DesignModel build_design_model(const Design& design, const MaterialTable& materials);
 
 }  // namespace nibrig::model::mechanics

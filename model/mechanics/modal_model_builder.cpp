@@ -27,9 +27,9 @@ void check_coefficient(double value, const char* what) {
 
 }  // namespace
 
-ModalModel build_modal_model(const PointLocator& locator, const ModalResult& modes,
-                             double mass_damping, double stiffness_damping,
-                             const ModalProbe& probe) {
+modal::ModalModel build_modal_model(const PointLocator& locator, const ModalResult& modes,
+                                    double mass_damping, double stiffness_damping,
+                                    const ModalProbe& probe) {
   check_coefficient(mass_damping, "mass damping coefficient alpha (1/s)");
   check_coefficient(stiffness_damping, "stiffness damping coefficient lambda (s)");
   check_unit(probe.tip_direction, "tip direction");
@@ -48,10 +48,11 @@ ModalModel build_modal_model(const PointLocator& locator, const ModalResult& mod
   const Eigen::VectorXd b = evaluate_along(mesh, tip, modes.shapes, probe.tip_direction);
   const Eigen::VectorXd c = evaluate_along(mesh, sensor, modes.shapes, probe.sensor_axis);
 
-  ModalModel model;
+  modal::ModalModel model;
   for (Eigen::Index i = 0; i < modes.omega.size(); ++i) {
     model.omega.push_back(modes.omega(i));
-    model.zeta.push_back(rayleigh_damping_ratio(modes.omega(i), mass_damping, stiffness_damping));
+    model.zeta.push_back(
+        modal::rayleigh_damping_ratio(modes.omega(i), mass_damping, stiffness_damping));
     model.input.push_back(b(i));
     model.output.push_back(c(i));
   }

@@ -6,8 +6,8 @@
 #include <Eigen/Core>
 
 #include "model/mechanics/modal_analysis.hpp"
-#include "model/mechanics/modal_model.hpp"
 #include "model/mechanics/point_probe.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::mechanics {
 
@@ -23,8 +23,8 @@ struct ModalProbe {
 // finite, when a direction is not a unit vector (to 1e-6: a non-unit direction would silently scale
 // b_i or c_i), when the shapes do not match the mesh, or when tip or sensor is outside the body
 // (see PointLocator::locate).
-ModalModel build_modal_model(const PointLocator& locator, const ModalResult& modes,
-                             double mass_damping, double stiffness_damping,
-                             const ModalProbe& probe);
+modal::ModalModel build_modal_model(const PointLocator& locator, const ModalResult& modes,
+                                    double mass_damping, double stiffness_damping,
+                                    const ModalProbe& probe);
 
 }  // namespace nibrig::model::mechanics

@@ -10,8 +10,8 @@
 #include <unsupported/Eigen/LevenbergMarquardt>
 #include <unsupported/Eigen/NumericalDiff>
 
-#include "model/measure/real_fft.hpp"
-#include "model/mechanics/modal_oscillator.hpp"
+#include "model/modal/modal_oscillator.hpp"
+#include "model/numeric/real_fft.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -33,7 +33,7 @@ std::size_t fft_size_for(std::size_t samples) {
 }
 
 // |FFT| of a trace zero-padded to the transform's size.
-std::vector<double> magnitude_spectrum(measure::RealFft& fft, const std::vector<double>& signal) {
+std::vector<double> magnitude_spectrum(numeric::RealFft& fft, const std::vector<double>& signal) {
   auto real = fft.real();
   std::fill(real.begin(), real.end(), 0.0);
   std::copy(signal.begin(), signal.end(), real.begin());
@@ -50,7 +50,7 @@ double normalised_correlation(const std::vector<double>& a, const std::vector<do
 
 // The lag (s, ≥ 0) by which `released_at_zero` must be delayed to line up with `measured`: the
 // peak of their cross-correlation, refined between samples by a parabola through its neighbours.
-double release_time_by_correlation(measure::RealFft& fft, const std::vector<double>& measured,
+double release_time_by_correlation(numeric::RealFft& fft, const std::vector<double>& measured,
                                    const std::vector<double>& released_at_zero,
                                    double sample_rate) {
   const std::size_t n = fft.size();
@@ -90,7 +90,7 @@ struct RingDownResiduals {
   using QRSolver = Eigen::ColPivHouseholderQR<JacobianType>;
   enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
 
-  const ModalModel* reference;
+  const modal::ModalModel* reference;
   const RingDownOptions* options;
   const io::AccelerationTrace* trace;
   int* evaluations;
@@ -105,7 +105,7 @@ struct RingDownResiduals {
 
   std::vector<double> simulate(const Eigen::VectorXd& theta, double* gain) const {
     const RayleighDamping damping{options->mass_damping, stiffness_damping(theta)};
-    const ModalModel model = rescale_modulus(*reference, std::exp(theta[0]), damping);
+    const modal::ModalModel model = rescale_modulus(*reference, std::exp(theta[0]), damping);
     const auto& measured = trace->acceleration_m_s2;
     std::vector<double> simulated = simulate_release(model, options->preload, trace->sample_rate_hz,
                                                      measured.size(), release_time);
@@ -126,8 +126,8 @@ struct RingDownResiduals {
 
 }  // namespace
 
-std::vector<double> simulate_release(const ModalModel& model, double preload, double sample_rate,
-                                     std::size_t samples, double release_time) {
+std::vector<double> simulate_release(const modal::ModalModel& model, double preload,
+                                     double sample_rate, std::size_t samples, double release_time) {
   if (model.size() == 0)
     throw std::invalid_argument("release simulation: the modal model has no modes");
   if (!(sample_rate > 0) || !std::isfinite(sample_rate))
@@ -150,32 +150,33 @@ std::vector<double> simulate_release(const ModalModel& model, double preload, do
       static_cast<double>(first) * step - release_time;  // release to first sample
   for (std::size_t i = 0; i < model.size(); ++i) {
     const double omega = model.omega[i], zeta = model.zeta[i];
-    ModeState state{model.input[i] * force / (omega * omega), 0.0};
-    if (lead_in > 0) state = mode_transition(omega, zeta, lead_in).apply(state);
-    const Transition transition = mode_transition(omega, zeta, step);
+    modal::ModeState state{model.input[i] * force / (omega * omega), 0.0};
+    if (lead_in > 0) state = modal::mode_transition(omega, zeta, lead_in).apply(state);
+    const modal::Transition transition = modal::mode_transition(omega, zeta, step);
     const double c = model.output[i];
     for (std::size_t k = first; k < samples; ++k) {
-      acceleration[k] += c * modal_acceleration(omega, zeta, state, 0.0);
+      acceleration[k] += c * modal::modal_acceleration(omega, zeta, state, 0.0);
       state = transition.apply(state);
     }
   }
   return acceleration;
 }
 
-ModalModel rescale_modulus(const ModalModel& reference, double modulus_ratio,
-                           const RayleighDamping& damping) {
+modal::ModalModel rescale_modulus(const modal::ModalModel& reference, double modulus_ratio,
+                                  const RayleighDamping& damping) {
   if (!(modulus_ratio > 0) || !std::isfinite(modulus_ratio))
     throw std::invalid_argument("modulus ratio must be positive and finite");
-  ModalModel scaled = reference;
+  modal::ModalModel scaled = reference;
   const double frequency_ratio = std::sqrt(modulus_ratio);
   for (std::size_t i = 0; i < scaled.size(); ++i) {
     scaled.omega[i] *= frequency_ratio;
-    scaled.zeta[i] = rayleigh_damping_ratio(scaled.omega[i], damping.mass, damping.stiffness);
+    scaled.zeta[i] =
+        modal::rayleigh_damping_ratio(scaled.omega[i], damping.mass, damping.stiffness);
   }
   return scaled;
 }
 
-RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& options,
+RingDownFit fit_ring_down(const modal::ModalModel& reference, const RingDownOptions& options,
                           const io::AccelerationTrace& trace) {
   if (reference.size() == 0)
     throw std::invalid_argument("ring-down fit: the modal model has no modes");
@@ -189,8 +190,8 @@ RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& op
 
   int evaluations = 0;
   RingDownResiduals residuals{&reference, &options, &trace, &evaluations};
-  measure::RealFft fft(fft_size_for(measured.size()),
-                       measure::RealFft::Plans::forward_and_backward);
+  numeric::RealFft fft(fft_size_for(measured.size()),
+                       numeric::RealFft::Plans::forward_and_backward);
   const std::vector<double> measured_magnitude = magnitude_spectrum(fft, measured);
 
   // 1. Modulus and first-mode damping ratio on a grid, scored on magnitude spectra. 5 % steps in
@@ -261,8 +262,8 @@ RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& op
     misfit += (measured[i] - fit.fitted[i]) * (measured[i] - fit.fitted[i]);
   }
   fit.relative_residual = std::sqrt(misfit / dot(measured, measured));
-  const ModalModel fitted = rescale_modulus(reference, std::exp(theta[0]),
-                                            {options.mass_damping, fit.rayleigh_stiffness});
+  const modal::ModalModel fitted = rescale_modulus(reference, std::exp(theta[0]),
+                                                   {options.mass_damping, fit.rayleigh_stiffness});
   fit.first_mode_hz = fitted.omega.front() / (2 * M_PI);
   fit.first_mode_damping_ratio = fitted.zeta.front();
   fit.evaluations = evaluations;

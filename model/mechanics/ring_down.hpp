@@ -9,7 +9,7 @@
 
 #include "model/io/acceleration_trace.hpp"
 #include "model/mechanics/material_table.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::mechanics {
 
@@ -18,8 +18,9 @@ namespace nibrig::model::mechanics {
 // of a force at the tip along the tip direction, scaled so that the tip moves by `preload` metres:
 // in modes, q_i(0) = b_i P / ω_i² with P = preload / Σ b_j²/ω_j², the modal truncation of K⁻¹f.
 // Each mode then evolves by its exact free transition, whatever its damping.
-std::vector<double> simulate_release(const ModalModel& model, double preload, double sample_rate,
-                                     std::size_t samples, double release_time = 0.0);
+std::vector<double> simulate_release(const modal::ModalModel& model, double preload,
+                                     double sample_rate, std::size_t samples,
+                                     double release_time = 0.0);
 
 // Adds Gaussian sensor noise of `relative_rms` times the trace's RMS (seeded): how a simulated trace
 // stands in for a measured one where the paper publishes values but not its recording.
@@ -28,8 +29,8 @@ void add_relative_noise(std::vector<double>& trace, double relative_rms, unsigne
 // The same body at another stiffness: K scales with E and M does not, so ω_i scales with
 // √(modulus_ratio) while the mass-normalised shapes (b_i, c_i) stay; the damping ratios follow
 // from `damping`. For a body of several materials every modulus is scaled by the same ratio.
-ModalModel rescale_modulus(const ModalModel& reference, double modulus_ratio,
-                           const RayleighDamping& damping);
+modal::ModalModel rescale_modulus(const modal::ModalModel& reference, double modulus_ratio,
+                                  const RayleighDamping& damping);
 
 struct RingDownOptions {
   double reference_modulus = 0.0;  // Pa: the E at which the reference ModalModel was computed
@@ -57,7 +58,7 @@ struct RingDownFit {
 // (ln E, ln λ, release time) with the gain solved in closed form at every step. Throws
 // std::invalid_argument for an empty model, a non-positive reference modulus or preload, or a trace
 // without signal.
-RingDownFit fit_ring_down(const ModalModel& reference, const RingDownOptions& options,
+RingDownFit fit_ring_down(const modal::ModalModel& reference, const RingDownOptions& options,
                           const io::AccelerationTrace& trace);
 
 }  // namespace nibrig::model::mechanics

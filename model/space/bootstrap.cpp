@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/numeric/parallel_for.hpp"
 #include "model/space/fit.hpp"
-#include "model/space/parallel_for.hpp"
 #include "model/space/procrustes.hpp"
 
 namespace nibrig::model::space {
@@ -115,7 +115,7 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
   result.levels = options.levels;
   result.aligned.resize(static_cast<std::size_t>(options.resamples));
   result.refit_objectives.resize(result.aligned.size());
-  parallel_for(result.aligned.size(), options.threads, [&](std::size_t k) {
+  numeric::parallel_for(result.aligned.size(), options.threads, [&](std::size_t k) {
     std::mt19937_64 generator(options.seed + static_cast<unsigned>(k));
     const SpaceProblem resampled = resample(problem, responses, generator);
     FitOptions fit_options;

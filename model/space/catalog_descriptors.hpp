@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::space {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/space/parallel_for.hpp"
+#include "model/numeric/parallel_for.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -119,7 +119,7 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options) {
                                 std::to_string(problem.stimuli));
 
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
-  parallel_for(results.size(), options.threads, [&](std::size_t s) {
+  numeric::parallel_for(results.size(), options.threads, [&](std::size_t s) {
     results[s] = run_start(problem, options, static_cast<int>(s));
   });
 

@@ -3,7 +3,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::model::space {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/numeric/parallel_for.hpp"
 #include "model/space/fit.hpp"
-#include "model/space/parallel_for.hpp"
 #include "model/space/procrustes.hpp"
 
 namespace nibrig::model::space {
@@ -132,7 +132,7 @@ std::vector<DimensionRecovery> run_synthetic_study(const SyntheticStudyOptions& 
   };
   const std::size_t jobs = options.dims.size() * options.trials;
   std::vector<Outcome> outcomes(jobs);
-  parallel_for(jobs, options.threads, [&](std::size_t job) {
+  numeric::parallel_for(jobs, options.threads, [&](std::size_t job) {
     const std::size_t dims = options.dims[job / options.trials];
     const std::size_t trial = job % options.trials;
     std::mt19937_64 generator(job_seed(options.seed, dims, trial));
@@ -187,7 +187,7 @@ std::vector<BudgetComparison> compare_designs(const DesignComparisonOptions& opt
     RecoveryError two_stage, adaptive;
   };
   std::vector<Outcome> outcomes(options.trials * budgets);
-  parallel_for(options.trials, options.threads, [&](std::size_t trial) {
+  numeric::parallel_for(options.trials, options.threads, [&](std::size_t trial) {
     std::mt19937_64 generator(job_seed(options.seed, options.dims, trial));
     const SimulatedObserver observer(
         random_space(options.dims, options.stimuli, generator, options.truth_difference));

@@ -14,8 +14,8 @@
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "model/io/catalog.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "tests/support/test_paths.hpp"
 

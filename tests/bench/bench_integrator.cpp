@@ -13,13 +13,13 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
-#include "model/mechanics/linear_forcing_integrator.hpp"
+#include "model/modal/linear_forcing_integrator.hpp"
 #include "tests/bench/naive_modal_step.hpp"
 
 namespace {
 
-using nibrig::model::mechanics::LinearForcingIntegrator;
-using nibrig::model::mechanics::ModalModel;
+using nibrig::model::modal::LinearForcingIntegrator;
+using nibrig::model::modal::ModalModel;
 
 constexpr double kRate = 48000.0;
 
@@ -30,7 +30,7 @@ ModalModel stylus(std::size_t modes) {
     const double f = 80.0 * std::pow(250.0, static_cast<double>(i) / static_cast<double>(modes));
     const double w = 2.0 * std::numbers::pi * f;
     m.omega.push_back(w);
-    m.zeta.push_back(nibrig::model::mechanics::rayleigh_damping_ratio(w, 0.0, 1.25e-3));
+    m.zeta.push_back(nibrig::model::modal::rayleigh_damping_ratio(w, 0.0, 1.25e-3));
     m.input.push_back(i % 2 ? 0.8 : -1.1);
     m.output.push_back(i % 3 ? 0.5 : 1.3);
   }

@@ -9,11 +9,11 @@
 #include <map>
 #include <random>
 
-#include "model/mechanics/design.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/fem_assembly.hpp"
 #include "model/mechanics/modal_analysis.hpp"
 #include "model/mechanics/point_probe.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace {

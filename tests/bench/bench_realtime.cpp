@@ -20,7 +20,7 @@
 
 namespace {
 
-using nibrig::model::mechanics::ModalModel;
+using nibrig::model::modal::ModalModel;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kRate = 48000.0;

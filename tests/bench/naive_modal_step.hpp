@@ -7,15 +7,15 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::bench {
 
 // Advances every mode's (q, q̇) in x over h with the force going linearly from f0 to f1, and
 // returns the sensor acceleration at the end: exp of h·[[0, 1, 0, 0], [−ω², −2ζω, b, 0],
 // [0, 0, 0, 1], [0, 0, 0, 0]] on [q, q̇, f, f'].
-inline double naive_modal_step(const model::mechanics::ModalModel& m,
-                               std::vector<Eigen::Vector2d>& x, double f0, double f1, double h) {
+inline double naive_modal_step(const model::modal::ModalModel& m, std::vector<Eigen::Vector2d>& x,
+                               double f0, double f1, double h) {
   double a = 0.0;
   for (std::size_t i = 0; i < m.size(); ++i) {
     const double w = m.omega[i], z = m.zeta[i];

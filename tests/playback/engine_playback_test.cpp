@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "playback/audio_output.hpp"
 #include "rt/engine.hpp"
 #include "rt/voice_builder.hpp"
@@ -28,7 +28,7 @@ namespace {
 using namespace std::chrono_literals;
 
 // Three modes like a printed stylus's first ones (as tests/rt/test_voices.cpp).
-model::mechanics::ModalModel small_stylus() {
+model::modal::ModalModel small_stylus() {
   const double tau = 2 * 3.141592653589793;
   return {{tau * 92.7, tau * 250.0, tau * 1457.5}, {0.36, 0.05, 0.3}, {23.3, 10.0, 33.1}, {0.40, 0.30, 5.1}};
 }

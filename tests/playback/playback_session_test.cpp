@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "rt/voice_builder.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -18,7 +18,7 @@ namespace nibrig::playback {
 namespace {
 
 // Three modes like a printed stylus's first ones (as tests/rt/test_voices.cpp).
-model::mechanics::ModalModel small_stylus() {
+model::modal::ModalModel small_stylus() {
   const double tau = 2 * 3.141592653589793;
   return {{tau * 92.7, tau * 250.0, tau * 1457.5}, {0.36, 0.05, 0.3}, {23.3, 10.0, 33.1}, {0.40, 0.30, 5.1}};
 }

@@ -12,7 +12,7 @@
 #include <numeric>
 #include <vector>
 
-#include "model/measure/real_fft.hpp"
+#include "model/numeric/real_fft.hpp"
 #include "tests/rt/spectrum_check.hpp"
 #include "tests/rt/test_voices.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -83,7 +83,7 @@ TEST(ForcingGenerator, LongRunSpectrumMatchesTheTargetAtSeveralSpeeds) {
 std::vector<double> autocorrelation(const std::vector<double>& x, std::size_t max_lag) {
   std::size_t n = 1;
   while (n < 2 * x.size()) n *= 2;
-  model::measure::RealFft fft(n, model::measure::RealFft::Plans::forward_and_backward);
+  model::numeric::RealFft fft(n, model::numeric::RealFft::Plans::forward_and_backward);
   std::fill(fft.real().begin(), fft.real().end(), 0.0);
   std::copy(x.begin(), x.end(), fft.real().begin());
   fft.forward();

@@ -4,15 +4,15 @@
 #include <cmath>
 #include <span>
 
-#include "model/measure/amplitude_convention.hpp"
 #include "model/measure/spectrum_analyzer.hpp"
 #include "model/measure/velocity_binning.hpp"
+#include "model/numeric/amplitude_convention.hpp"
 
 namespace nibrig::rt::testing {
 
 std::vector<double> catalog_analysis(const std::vector<double>& x, double fs,
                                      const std::vector<double>& frequencies) {
-  const auto n = static_cast<std::size_t>(model::measure::kCatalogWindowSeconds * fs);
+  const auto n = static_cast<std::size_t>(model::numeric::kCatalogWindowSeconds * fs);
   model::measure::SpectrumAnalyzer analyzer(n, model::measure::Window::rectangular);
   std::vector<double> mean(analyzer.bins(), 0.0), a(analyzer.bins());
   const std::size_t windows = x.size() / n;

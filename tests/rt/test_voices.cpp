@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::rt::testing {
@@ -16,7 +16,7 @@ model::io::VelocitySpectrum catalog_spectrum(const std::string& tool, const std:
   throw std::runtime_error("the bundled catalog has no spectrum for " + tool + "/" + surface);
 }
 
-model::mechanics::ModalModel small_stylus() {
+model::modal::ModalModel small_stylus() {
   const double two_pi = 2 * 3.141592653589793;
   return {{two_pi * 92.7, two_pi * 250.0, two_pi * 1457.5},
           {0.36, 0.05, 0.3},

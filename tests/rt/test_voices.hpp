@@ -7,7 +7,7 @@
 #include <string>
 
 #include "model/io/velocity_spectrum.hpp"
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 #include "rt/voice.hpp"
 
 namespace nibrig::rt::testing {
@@ -18,7 +18,7 @@ model::io::VelocitySpectrum catalog_spectrum(const std::string& tool, const std:
 // Three modes like a printed stylus's first ones (a heavily damped bending pair at 92 Hz becomes
 // one mode here, a lightly damped one at 250 Hz to give the spectrum a sharp feature, and a stiff
 // one at 1.46 kHz).
-model::mechanics::ModalModel small_stylus();
+model::modal::ModalModel small_stylus();
 
 // A voice at internal_rate that reproduces the catalog's acceleration spectrum of tool/surface
 // through small_stylus() (rt/voice_builder.hpp).

@@ -9,7 +9,7 @@
 #include <complex>
 #include <vector>
 
-#include "model/mechanics/discrete_frequency_response.hpp"
+#include "model/modal/discrete_frequency_response.hpp"
 #include "tests/rt/spectrum_check.hpp"
 #include "tests/rt/test_voices.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -21,8 +21,8 @@ constexpr double kRate = 8000.0;  // the engine's internal rate at 48 kHz
 
 TEST(Voice, OutputReadsAsTheMeasuredAccelerationSpectrum) {
   const auto measured = testing::catalog_spectrum("stab", "note");
-  const auto response = model::mechanics::discrete_frequency_response(
-      testing::small_stylus(), kRate, measured.frequencies_hz);
+  const auto response = model::modal::discrete_frequency_response(testing::small_stylus(), kRate,
+                                                                  measured.frequencies_hz);
   double peak = 0;
   for (const auto& h : response) peak = std::max(peak, std::abs(h));
   for (std::size_t s : {0u, 3u, 5u}) {

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/io/bundled_assets.hpp"
@@ -16,8 +16,8 @@
 #include "ui/cli/demo_mechanics.hpp"
 #include "ui/cli/demo_render.hpp"
 #include "ui/cli/demo_space.hpp"
-#include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/measurement_figures.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 

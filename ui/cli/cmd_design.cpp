@@ -9,17 +9,17 @@
 #include <nlohmann/json.hpp>
 
 #include "model/design/design_search.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
-#include "ui/cli/elapsed.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/space/space_inputs.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
+#include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_options.hpp"
-#include "ui/cli/number_checks.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
-#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 

@@ -10,8 +10,8 @@
 #include "model/io/session.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
-#include "ui/cli/figures.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/measurement_figures.hpp"
 #include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
 

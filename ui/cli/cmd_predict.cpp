@@ -15,7 +15,7 @@
 #include "model/design/predicted_tool.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/bundled_assets.hpp"

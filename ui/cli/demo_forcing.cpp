@@ -11,14 +11,14 @@
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "model/space/space_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
-#include "ui/cli/figures.hpp"
 #include "ui/cli/forcing_figures.hpp"
 #include "ui/cli/forcing_options.hpp"
+#include "ui/cli/measurement_figures.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {

@@ -25,7 +25,7 @@ namespace mech = model::mechanics;
 
 // Bending modes in the thickness direction are the ones a force along z at the tip drives; the
 // in-plane and torsion modes of a symmetric bar have (numerically) no tip participation along z.
-std::vector<double> bending_frequencies(const mech::ModalModel& modal, std::size_t n) {
+std::vector<double> bending_frequencies(const model::modal::ModalModel& modal, std::size_t n) {
   double largest = 0;
   for (double b : modal.input) largest = std::max(largest, std::abs(b));
   std::vector<double> f;
@@ -118,7 +118,7 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
   for (const auto& e : std::filesystem::directory_iterator(model::io::asset("designs")))
     if (e.path().filename().string().rfind("stylus_", 0) == 0) files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  std::vector<std::pair<std::string, mech::ModalModel>> models;
+  std::vector<std::pair<std::string, model::modal::ModalModel>> models;
   Progress progress("stylus designs", files.size());
   for (const auto& file : files) {
     const auto design = mech::read_design(file, materials);

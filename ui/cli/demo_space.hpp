@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 
 namespace nibrig::ui::cli {
 

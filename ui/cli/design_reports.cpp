@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "model/forcing/descriptor_error.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/space/catalog_descriptors.hpp"

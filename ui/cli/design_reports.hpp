@@ -9,7 +9,7 @@
 
 #include "model/design/design_search.hpp"
 #include "model/design/predicted_tool.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/space/space_file.hpp"
 

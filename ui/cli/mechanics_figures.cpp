@@ -2,15 +2,15 @@
 
 #include <complex>
 
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 #include "ui/report/figures.hpp"
 
 namespace nibrig::ui::cli {
 
 void plot_frequency_responses(
-    const std::vector<std::pair<std::string, model::mechanics::ModalModel>>& models,
+    const std::vector<std::pair<std::string, model::modal::ModalModel>>& models,
     const std::string& title, const std::filesystem::path& png) {
-  const std::vector<double> frequencies = model::mechanics::default_frequency_grid();
+  const std::vector<double> frequencies = model::modal::default_frequency_grid();
   report::LinePlot plot;
   plot.title = title;
   plot.x_label = "Frequency (Hz)";
@@ -20,7 +20,7 @@ void plot_frequency_responses(
     report::LineSeries series;
     series.label = label;
     series.x = frequencies;
-    for (const auto& h : model::mechanics::frequency_response(model, frequencies))
+    for (const auto& h : model::modal::frequency_response(model, frequencies))
       series.y.push_back(std::abs(h));
     plot.series.push_back(std::move(series));
   }

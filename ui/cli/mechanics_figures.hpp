@@ -7,13 +7,13 @@
 #include <utility>
 #include <vector>
 
-#include "model/mechanics/modal_model.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::ui::cli {
 
 // |H(f)| over 1-500 Hz on a log scale, one curve per (label, model).
 void plot_frequency_responses(
-    const std::vector<std::pair<std::string, model::mechanics::ModalModel>>& models,
+    const std::vector<std::pair<std::string, model::modal::ModalModel>>& models,
     const std::string& title, const std::filesystem::path& png);
 
 // Acceleration over time: the trace that was fitted (labelled `trace_label`: "measured", or what

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "model/mechanics/beam_theory.hpp"
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -83,8 +83,8 @@ nlohmann::json modes_json(const mech::DesignModel& m) {
                      {"sensor_participation", m.modal.output[i]},
                      {"displacement_fractions", displacement_fractions(m, i)}});
   j["modes"] = modes;
-  const auto frequencies = mech::default_frequency_grid();
-  const auto response = mech::frequency_response(m.modal, frequencies);
+  const auto frequencies = model::modal::default_frequency_grid();
+  const auto response = model::modal::frequency_response(m.modal, frequencies);
   nlohmann::json magnitude = nlohmann::json::array(), phase = nlohmann::json::array();
   for (const auto& h : response) magnitude.push_back(std::abs(h)), phase.push_back(std::arg(h));
   j["frequency_response"] = {

@@ -15,9 +15,9 @@
 
 #include "model/design/interpolation_check.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
-#include "model/io/catalog.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::design {

@@ -7,8 +7,8 @@
 
 #include <stdexcept>
 
-#include "model/io/catalog.hpp"
-#include "model/mechanics/design.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/mechanics/stylus_description.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "tests/support/test_paths.hpp"
 

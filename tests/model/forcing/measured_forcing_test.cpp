@@ -4,13 +4,13 @@
 
 #include <cmath>
 
-#include "model/mechanics/frequency_response.hpp"
+#include "model/modal/frequency_response.hpp"
 
 namespace nibrig::model::forcing {
 namespace {
 
 // One mode, so H has a closed form to check against: H(f) = c·b·(−Ω²)/(ω² − Ω² + 2jζωΩ).
-mechanics::ModalModel one_mode() { return {{2 * M_PI * 150}, {0.1}, {2.0}, {0.5}}; }
+modal::ModalModel one_mode() { return {{2 * M_PI * 150}, {0.1}, {2.0}, {0.5}}; }
 
 TEST(MeasuredForcing, DividesByTheResponseWhereItIsWellConditioned) {
   io::VelocitySpectrum a{{50, 150, 400}, {0.05, 0.1}, {{1, 2, 3}, {4, 5, 6}}};
@@ -29,7 +29,7 @@ TEST(MeasuredForcing, RegularisationBoundsTheForceWhereTheStylusBarelyResponds) 
   // multiply by 2e4; with ε = 1e-3 the gain is at most 1/(2ε·max|H|).
   io::VelocitySpectrum a{{1, 150}, {0.1}, {{1, 1}}};
   const auto f = forcing_from_acceleration(a, one_mode(), 1e-3);
-  const auto h = mechanics::frequency_response(one_mode(), a.frequencies_hz);
+  const auto h = modal::frequency_response(one_mode(), a.frequencies_hz);
   const double peak = std::max(std::abs(h[0]), std::abs(h[1]));
   EXPECT_LE(f.amplitude_m_s2[0][0], 1.0 / (2 * 1e-3 * peak) * (1 + 1e-12));
   EXPECT_NEAR(f.amplitude_m_s2[0][1], 1 / std::abs(h[1]), 1e-5 / std::abs(h[1]));

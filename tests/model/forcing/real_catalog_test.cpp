@@ -11,7 +11,7 @@
 
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/leave_one_out.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/measure/descriptors.hpp"
 #include "tests/support/test_paths.hpp"
 

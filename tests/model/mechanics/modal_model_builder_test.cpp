@@ -44,7 +44,7 @@ TEST_F(CantileverModel, ModalSumsGiveTheBeamsStaticCompliances) {
   probe.sensor = {kLength / 2, kWidth / 2, kThickness};  // mid-span, on the top face
   probe.sensor_axis = Eigen::Vector3d::UnitZ();
   const double alpha = 0.5, lambda = 1.25e-3;  // 1/s and s; the paper's fitted λ
-  const ModalModel model = build_modal_model(locator_, modes_, alpha, lambda, probe);
+  const modal::ModalModel model = build_modal_model(locator_, modes_, alpha, lambda, probe);
   ASSERT_EQ(model.size(), 12u);
 
   // A static force F at the tip along z deflects the tip by F Σ b_i²/ω_i² and mid-span by

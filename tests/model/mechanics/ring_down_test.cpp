@@ -13,10 +13,10 @@ constexpr double kTwoPi = 2 * M_PI;
 
 // Three bending-like modes of a clamped bar with the paper's damping: the first two underdamped,
 // the third overdamped (ζ = λω/2 > 1 above ~255 Hz at λ = 1.25e-3 s).
-ModalModel three_modes(double lambda) {
-  ModalModel m;
+modal::ModalModel three_modes(double lambda) {
+  modal::ModalModel m;
   m.omega = {kTwoPi * 6.2, kTwoPi * 38.5, kTwoPi * 300.0};
-  for (double w : m.omega) m.zeta.push_back(rayleigh_damping_ratio(w, 0.0, lambda));
+  for (double w : m.omega) m.zeta.push_back(modal::rayleigh_damping_ratio(w, 0.0, lambda));
   m.input = {2.1, -1.7, 1.3};
   m.output = {1.4, 0.9, -0.6};
   return m;
@@ -32,7 +32,7 @@ double released_mode_acceleration(double omega, double zeta, double q0, double t
 }
 
 TEST(RingDown, OneModeReleaseMatchesTheClosedForm) {
-  ModalModel m;
+  modal::ModalModel m;
   m.omega = {kTwoPi * 11.0};
   m.zeta = {0.03};
   m.input = {2.0};
@@ -55,8 +55,8 @@ TEST(RingDown, OneModeReleaseMatchesTheClosedForm) {
 }
 
 TEST(RingDown, RescalingTheModulusScalesFrequenciesBySquareRoot) {
-  const ModalModel m = three_modes(1.25e-3);
-  const ModalModel scaled = rescale_modulus(m, 0.25, {0.0, 2e-3});
+  const modal::ModalModel m = three_modes(1.25e-3);
+  const modal::ModalModel scaled = rescale_modulus(m, 0.25, {0.0, 2e-3});
   for (std::size_t i = 0; i < m.size(); ++i) {
     EXPECT_DOUBLE_EQ(scaled.omega[i], 0.5 * m.omega[i]);
     EXPECT_DOUBLE_EQ(scaled.zeta[i], 2e-3 * scaled.omega[i] / 2);
@@ -69,8 +69,8 @@ TEST(RingDown, FitRecoversModulusDampingAndReleaseFromANoisyTrace) {
   // The fit starts from a model computed at 1 GPa.
   const double reference_modulus = 1e9, true_modulus = 0.45e9, true_lambda = 1.25e-3,
                true_release = 0.3137;
-  const ModalModel reference = three_modes(0.0);
-  const ModalModel truth =
+  const modal::ModalModel reference = three_modes(0.0);
+  const modal::ModalModel truth =
       rescale_modulus(reference, true_modulus / reference_modulus, {0.0, true_lambda});
   io::AccelerationTrace trace{2000.0, simulate_release(truth, 0.05, 2000.0, 8000, true_release)};
   double rms = 0;
@@ -96,8 +96,8 @@ TEST(RingDown, FitRecoversModulusDampingAndReleaseFromANoisyTrace) {
 }
 
 TEST(RingDown, BadInputIsRefused) {
-  const ModalModel m = three_modes(1e-3);
-  EXPECT_THROW(simulate_release(ModalModel{}, 0.05, 1000, 10), std::invalid_argument);
+  const modal::ModalModel m = three_modes(1e-3);
+  EXPECT_THROW(simulate_release(modal::ModalModel{}, 0.05, 1000, 10), std::invalid_argument);
   EXPECT_THROW(simulate_release(m, 0.05, 0, 10), std::invalid_argument);
   EXPECT_THROW(simulate_release(m, 0.05, 1000, 10, -1), std::invalid_argument);
   RingDownOptions options;

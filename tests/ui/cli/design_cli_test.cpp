@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "model/design/design_point.hpp"
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"

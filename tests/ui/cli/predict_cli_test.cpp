@@ -10,7 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "model/measure/amplitude_convention.hpp"
+#include "model/numeric/amplitude_convention.hpp"
 #include "rt/engine.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -164,8 +164,8 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   const auto amplitude = full["amplitude_m_s2"][row].get<std::vector<double>>();
   double power = 0;
   for (std::size_t j = 0; j < amplitude.size(); ++j)
-    power += model::measure::noise_psd_from_mean_amplitude(amplitude[j],
-                                                           model::measure::kCatalogWindowSeconds) *
+    power += model::numeric::noise_psd_from_mean_amplitude(amplitude[j],
+                                                           model::numeric::kCatalogWindowSeconds) *
              (frequencies[1] - frequencies[0]);
   const double expected_rms = std::sqrt(power) * rt::EngineSettings{}.output_level_per_m_s2;
   const double level_db = 20 * std::log10(wav_rms(out / "design.wav", 48000) / expected_rms);

@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-#include "model/io/catalog.hpp"
+#include "model/io/catalog_file.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/objective.hpp"

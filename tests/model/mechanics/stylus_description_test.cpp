@@ -1,0 +1,122 @@
+#include "model/mechanics/stylus_description.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "model/io/format_error.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::mechanics {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+const MaterialTable& bundled_materials() {
+  static const MaterialTable table = read_material_table(test::assets_dir() / "materials.json");
+  return table;
+}
+
+std::filesystem::path write_design(const std::string& name, const std::string& body) {
+  const auto file = test::scratch_dir("design") / name;
+  std::ofstream(file) << R"({"format": "nibrig-design", "version": 1, )" << body << "}";
+  return file;
+}
+
+TEST(Design, BundledDesignsReadAndMesh) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::assets_dir() / "designs")) {
+    const Design design = read_design(entry.path(), bundled_materials());
+    EXPECT_FALSE(design.name.empty()) << entry.path();
+    EXPECT_NEAR(design.tip.direction.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(design.sensor.direction.norm(), 1.0, 1e-12);
+  }
+  const Design bar =
+      read_design(test::assets_dir() / "designs" / "paper_bar.json", bundled_materials());
+  const auto& shape = std::get<BarGeometry>(bar.shape);
+  EXPECT_DOUBLE_EQ(shape.free_length(), 0.180);  // 210 mm clamped over 30 mm
+  const TetMesh mesh = mesh_design(bar);
+  EXPECT_FALSE(mesh.node_sets.at("clamp").empty());
+}
+
+TEST(Design, DefaultsPutTheTipAtTheApexAndTheSensorOnTheBody) {
+  const Design d =
+      read_design(write_design("stylus.json", R"("shape": {"kind": "stylus", "tip_diameter": 0.001},
+      "materials": {"body": "VeroClear"})"),
+                  bundled_materials());
+  const auto& s = std::get<StylusGeometry>(d.shape);
+  EXPECT_TRUE(d.tip.point.isApprox(s.apex()));
+  EXPECT_DOUBLE_EQ(d.sensor.point.y(), s.body_diameter / 2);  // on the surface
+  EXPECT_GT(d.sensor.point.x(), s.grip_length);               // outside the holder
+  EXPECT_FALSE(d.damping.has_value());
+}
+
+TEST(Design, ExplicitProbesAreNormalised) {
+  const Design d =
+      read_design(write_design("probes.json", R"("shape": {"kind": "bar", "cutout": false},
+      "materials": {"body": "steel"}, "tip": {"point": [0.17, 0, 0], "direction": [0, 0, -2]},
+      "sensor": {"point": [0.1, 0, 0.001], "axis": [0, 3, 4]}, "damping": {"rayleigh_stiffness": 1e-6})"),
+                  bundled_materials());
+  EXPECT_TRUE(d.tip.direction.isApprox(Eigen::Vector3d(0, 0, -1)));
+  EXPECT_TRUE(d.sensor.direction.isApprox(Eigen::Vector3d(0, 0.6, 0.8)));
+  ASSERT_TRUE(d.damping.has_value());
+  EXPECT_DOUBLE_EQ(d.damping->stiffness, 1e-6);
+}
+
+TEST(Design, BadDesignsNameTheFieldAndWhatWasExpected) {
+  const auto& materials = bundled_materials();
+  auto fails_with = [&](const std::string& name, const std::string& body, const std::string& field,
+                        const std::string& expected) {
+    EXPECT_THAT([&] { read_design(write_design(name, body), materials); },
+                ::testing::ThrowsMessage<io::FormatError>(
+                    AllOf(HasSubstr(name), HasSubstr(field), HasSubstr(expected))))
+        << name;
+  };
+  fails_with("kind.json", R"("shape": {"kind": "pencil"}, "materials": {"body": "steel"})",
+             "shape.kind", "expected \"bar\", \"stylus\" or \"file\"");
+  fails_with("typo.json",
+             R"("shape": {"kind": "stylus", "tip_diamter": 0.001}, "materials": {"body": "steel"})",
+             "shape.tip_diamter", "unknown field");
+  fails_with("material.json", R"("shape": {"kind": "bar"}, "materials": {"body": "kryptonite"})",
+             "materials.body", "unknown material 'kryptonite'");
+  fails_with("negative.json",
+             R"("shape": {"kind": "bar", "thickness": -0.002}, "materials": {"body": "steel"})",
+             "shape", "thickness");
+  fails_with(
+      "direction.json",
+      R"("shape": {"kind": "bar"}, "materials": {"body": "steel"}, "tip": {"direction": [0, 0, 0]})",
+      "tip.direction", "non-zero");
+  fails_with("file.json",
+             R"("shape": {"kind": "file", "path": "nib.stl"}, "materials": {"body": "steel"})",
+             "tip", "must say where its tip and sensor are");
+}
+
+TEST(Design, MeshWithoutClampIsRefused) {
+  // A mesh file whose clamp box holds no node: the design would float freely.
+  const auto dir = test::scratch_dir("design_clamp");
+  {
+    std::ofstream stl(dir / "cube.stl");
+    const double v[8][3] = {{0, 0, 0},  {10, 0, 0},  {10, 10, 0},  {0, 10, 0},
+                            {0, 0, 10}, {10, 0, 10}, {10, 10, 10}, {0, 10, 10}};
+    const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                          {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+    stl << "solid c\n";
+    for (const auto& t : f) {
+      stl << "facet normal 0 0 0\nouter loop\n";
+      for (int k : t) stl << "vertex " << v[k][0] << " " << v[k][1] << " " << v[k][2] << "\n";
+      stl << "endloop\nendfacet\n";
+    }
+    stl << "endsolid c\n";
+  }
+  std::ofstream(dir / "floating.json") << R"({"format": "nibrig-design", "version": 1,
+    "shape": {"kind": "file", "path": "cube.stl", "clamp_box": {"min": [1, 1, 1], "max": [2, 2, 2]}},
+    "materials": {"body": "steel"}, "tip": {"point": [0.005, 0.005, 0.01]}, "sensor": {"point": [0.005, 0.005, 0]},
+    "mesh_size": 0.004})";
+  const Design d = read_design(dir / "floating.json", bundled_materials());
+  EXPECT_THAT([&] { mesh_design(d); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("no clamped region")));
+}
+
+}  // namespace
+}  // namespace nibrig::model::mechanics
