@@ -1,4 +1,4 @@
-# Enforces the module layering of DESIGN.md at configure time: a module may include and link only
+# Enforces the module layering of ARCHITECTURE.md at configure time: a module may include and link only
 # the modules below it. Linking is checked by CMake itself (targets only link downward); includes are
 # checked here because the include root is the repository root and a header-only upward include
 # would otherwise slip through. An allowed entry is a folder: "model" allows all of model/,

@@ -36,7 +36,7 @@ class ForcingGenerator {
                 std::size_t count) noexcept;
 
   const ForcingTable& table() const noexcept { return *table_; }
-  // Samples generated above the table's highest speed (the clamp of DESIGN.md, "Velocity").
+  // Samples generated above the table's highest speed (the clamp of ARCHITECTURE.md, "Science notes").
   std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
 
  private:

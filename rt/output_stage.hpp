@@ -1,4 +1,4 @@
-// The last stage before the actuator (DESIGN.md, real-time rules): a DC blocker, a guard that turns
+// The last stage before the actuator (ARCHITECTURE.md, "Real-time rules"): a DC blocker, a guard that turns
 // NaN and infinity into silence, and a peak limiter, so that a voice-coil actuator never receives a
 // full-scale step, a DC offset or a non-finite sample whatever a voice computes. Runs on the audio
 // thread: process() never allocates, locks or throws.

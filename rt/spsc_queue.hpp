@@ -1,5 +1,5 @@
 // A bounded single-producer single-consumer queue: how control threads hand speed and force updates
-// and voice swaps to the audio thread (DESIGN.md, real-time rules). Storage is allocated once at
+// and voice swaps to the audio thread (ARCHITECTURE.md, "Real-time rules"). Storage is allocated once at
 // construction; push and pop never allocate, lock or throw, and each touches one atomic the other
 // side writes.
 #pragma once

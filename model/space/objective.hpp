@@ -12,7 +12,7 @@
 namespace nibrig::model::space {
 
 // s = 2/3 makes one unit of distance difference 75 % preference (Φ(2/3) = 0.748), the scale of the
-// authors' released code; the paper's Eq. 2 is a garbled fast approximation of Φ (DESIGN.md).
+// authors' released code; the paper's Eq. 2 is a garbled fast approximation of Φ (ARCHITECTURE.md, "Science notes").
 inline constexpr double kThurstoneScale = 2.0 / 3.0;
 
 struct SpaceProblem {

@@ -1,5 +1,5 @@
 // Every entry point rejects what it cannot integrate with std::invalid_argument, and the message
-// names the caller, the field (with its index) and the offending value, as DESIGN.md asks of API
+// names the caller, the field (with its index) and the offending value, as ARCHITECTURE.md ("Conventions") asks of API
 // boundaries.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -35,7 +35,7 @@ TEST(CliUsageErrors, MisspeltCommandSuggestsTheNearest) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(r.err.rfind("nibrig: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("did you mean 'measure'?"), std::string::npos) << r.err;
-  // One line, as every error of the command line (DESIGN.md, "Conventions").
+  // One line, as every error of the command line (ARCHITECTURE.md, "Conventions").
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
