@@ -1,21 +1,43 @@
-// Running the `nibrig` command in-process from tests, and reading what it wrote.
+// Running the `nibrig` executable from tests, as a user would, and reading what it wrote. The
+// command runs in a child process that inherits the test's standard output and error, so gtest's
+// CaptureStdout/CaptureStderr see what it printed; the tests link no CLI code (ARCHITECTURE.md:
+// nothing links nibrig_cli but the executable).
 #pragma once
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "ui/cli/app.hpp"
+extern char** environ;
 
 namespace nibrig::test {
 
+// The exit code of `nibrig args...`; 128 + the signal when it was killed by one.
 inline int run_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "nibrig");
+  args.insert(args.begin(), NIBRIG_CLI_BINARY);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
-  return ui::cli::run(static_cast<int>(argv.size()), argv.data());
+  argv.push_back(nullptr);
+  // What this process printed so far goes first, in order with the child's output.
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = 0;
+  if (const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, nullptr, nullptr, argv.data(), environ))
+    throw std::runtime_error(std::string("cannot start ") + NIBRIG_CLI_BINARY + ": error " +
+                             std::to_string(e));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error("waitpid failed for " + std::string(NIBRIG_CLI_BINARY));
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + WTERMSIG(status);
 }
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {

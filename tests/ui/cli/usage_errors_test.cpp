@@ -1,7 +1,5 @@
 // A command line nibrig cannot use exits 2 with one "nibrig: error:" line (as git and cmake do),
 // the program's own failures exit 1, and -q leaves only errors on stderr.
-#include "ui/cli/usage_errors.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,13 +67,15 @@ TEST(CliUsageErrors, HelpAndVersionAreNotErrors) {
   EXPECT_EQ(run_quietly({"--version"}).code, 0);
 }
 
-TEST(CliUsageErrors, NearestNameOnlyForSlips) {
-  const std::vector<std::string> names{"measure", "mechanics", "render", "demo"};
-  EXPECT_EQ(nearest_name("mesure", names), "measure");
-  EXPECT_EQ(nearest_name("rendr", names), "render");
-  // Three letters off, or a short word mostly changed, is not a slip: no guess.
-  EXPECT_EQ(nearest_name("plot", names), "");
-  EXPECT_EQ(nearest_name("xyz", names), "");
+TEST(CliUsageErrors, NoGuessWhenTheWordIsNotASlip) {
+  // "rendr" is one letter off "render"; "plot" (three letters off every command) and "xyz" are not
+  // slips, and a guess there would mislead.
+  EXPECT_NE(run_quietly({"rendr"}).err.find("did you mean 'render'?"), std::string::npos);
+  for (const std::string word : {"plot", "xyz"}) {
+    const Outcome r = run_quietly({word});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.err.find("did you mean"), std::string::npos) << word << ": " << r.err;
+  }
 }
 
 TEST(CliQuiet, SilencesWarningsButNotErrors) {
