@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "model/catalog/catalog_builder.hpp"
+#include "model/catalog/friction_comparison.hpp"
 #include "model/catalog/compact.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
@@ -62,24 +63,12 @@ void print_summary(const model::catalog::CatalogBuild& build, std::ostream& out)
   if (!build.skipped.empty()) out << "; skipped " << build.skipped.size() << " other files";
   out << "\n";
   if (build.friction.empty()) return;
-  std::vector<double> mu, upstream;
-  double sum_abs_diff = 0.0;
-  for (const auto& f : build.friction) {
-    mu.push_back(f.fit.mu);
-    upstream.push_back(f.upstream_mu);
-    sum_abs_diff += std::fabs(f.fit.mu - f.upstream_mu);
-  }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  const auto [mu_min, mu_max] = std::minmax_element(mu.begin(), mu.end());
-  const auto [up_min, up_max] = std::minmax_element(upstream.begin(), upstream.end());
-  out << "mu (contact-detected fit): " << *mu_min << " .. " << *mu_max << ", median " << median(mu)
-      << "\n";
-  out << "mu (upstream recipe, rows 5000-20000): " << *up_min << " .. " << *up_max << ", median "
-      << median(upstream) << "\n";
-  out << "mean |fit - upstream|: " << sum_abs_diff / static_cast<double>(mu.size())
+  const auto c = model::catalog::compare_with_upstream(build.friction);
+  out << "mu (contact-detected fit): " << c.fit_min << " .. " << c.fit_max << ", median "
+      << c.fit_median << "\n";
+  out << "mu (upstream recipe, rows 5000-20000): " << c.upstream_min << " .. " << c.upstream_max
+      << ", median " << c.upstream_median << "\n";
+  out << "mean |fit - upstream|: " << c.mean_abs_difference
       << "; paper's stated range: 0.13 .. 0.33\n";
 }
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "model/mechanics/mode_direction.hpp"
 #include "model/mechanics/beam_theory.hpp"
 #include "model/modal/frequency_response.hpp"
 
@@ -22,18 +23,6 @@ nlohmann::json material_json(const mech::Material& m) {
           {"poisson_ratio", m.poisson_ratio},
           {"density", m.density},
           {"source", m.source}};
-}
-
-// Share of the mode shape's squared nodal displacement along x, y and z: tells bending in the
-// thickness direction (z) of a bar from its in-plane (y) and axial (x) modes without a picture.
-std::vector<double> displacement_fractions(const mech::DesignModel& m, std::size_t mode) {
-  const auto shape = m.modes.shapes.col(static_cast<Eigen::Index>(mode));
-  std::vector<double> sums(3, 0.0);
-  for (Eigen::Index dof = 0; dof < shape.size(); ++dof)
-    sums[static_cast<std::size_t>(dof % 3)] += shape[dof] * shape[dof];
-  const double total = sums[0] + sums[1] + sums[2];
-  for (double& v : sums) v = total > 0 ? v / total : 0.0;
-  return sums;
 }
 
 nlohmann::json modes_json(const mech::DesignModel& m) {
@@ -81,7 +70,8 @@ nlohmann::json modes_json(const mech::DesignModel& m) {
                      {"damping_ratio", m.modal.zeta[i]},
                      {"tip_participation", m.modal.input[i]},
                      {"sensor_participation", m.modal.output[i]},
-                     {"displacement_fractions", displacement_fractions(m, i)}});
+                     {"displacement_fractions",
+                      mech::displacement_fractions(m.modes.shapes.col(static_cast<Eigen::Index>(i)))}});
   j["modes"] = modes;
   const auto frequencies = model::modal::default_frequency_grid();
   const auto response = model::modal::frequency_response(m.modal, frequencies);
