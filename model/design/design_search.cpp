@@ -38,6 +38,28 @@ bool same_design(const DesignPoint& a, const DesignPoint& b) {
          std::abs(a.tip_diameter_m - b.tip_diameter_m) < kSameDesignTip;
 }
 
+// The golden-section refinement shrinks its bracket by the golden ratio per evaluation until it is
+// no wider than the tolerance; the widest bracket is two scan steps (the best point inside).
+std::size_t line_search_budget(const LineSearchOptions& o) {
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  double width = std::min(1.0, 2.0 / (o.scan_points - 1));
+  std::size_t refinements = 2;  // the two interior points of the first bracket
+  // The search compares widths it computed step by step; the margin keeps this a bound when its
+  // rounding lands a hair above the tolerance.
+  while (width > o.refine_tolerance * (1 - 1e-9)) {
+    width *= golden;
+    ++refinements;
+  }
+  return static_cast<std::size_t>(o.scan_points) + refinements;
+}
+
+// The first grid, then per refinement the 8 neighbours of the best point (the point itself is
+// known); neighbours outside the range or already evaluated are skipped.
+std::size_t range_search_budget(const RangeSearchOptions& o) {
+  return static_cast<std::size_t>(o.fraction_points) * static_cast<std::size_t>(o.tip_points) +
+         8 * static_cast<std::size_t>(std::max(0, o.refinements));
+}
+
 }  // namespace
 
 std::vector<std::size_t> SearchResult::runners_up(std::size_t count) const {
@@ -89,16 +111,18 @@ Evaluate distance_to_target(const PredictionSetup& setup, const std::string& sur
 }
 
 SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
-                         const LineSearchOptions& options) {
+                         const LineSearchOptions& options, const SearchProgress& progress) {
   if (options.scan_points < 2)
     throw std::invalid_argument("line search: at least 2 scan points (the two designs)");
   if (!(options.refine_tolerance > 0 && options.refine_tolerance < 1))
     throw std::invalid_argument("line search: the refinement tolerance is a fraction in (0, 1)");
   SearchResult result;
+  const std::size_t budget = line_search_budget(options);
   std::vector<double> lambdas;
   auto at = [&](double lambda) {
     lambdas.push_back(lambda);
     result.evaluated.push_back(evaluate(interpolate(a, b, lambda)));
+    if (progress) progress(result.evaluated.back(), result.evaluated.size(), budget);
     return result.evaluated.back().distance;
   };
   const int n = options.scan_points;
@@ -133,7 +157,8 @@ SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evalu
   return result;
 }
 
-SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o) {
+SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o,
+                          const SearchProgress& progress) {
   if (o.fraction_points < 2 || o.tip_points < 2)
     throw std::invalid_argument("range search: at least 2 grid points per axis");
   if (o.first_material == o.second_material)
@@ -141,12 +166,14 @@ SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o)
   if (!(o.min_tip_m > 0 && o.max_tip_m > o.min_tip_m))
     throw std::invalid_argument("range search: the tip range must be a positive interval");
   SearchResult result;
+  const std::size_t budget = range_search_budget(o);
   std::vector<std::pair<double, double>> done;  // (fraction, tip) evaluated
   auto at = [&](double fraction, double tip) {
     for (const auto& [f, t] : done)
       if (std::abs(f - fraction) < 1e-9 && std::abs(t - tip) < 1e-12) return;
     done.emplace_back(fraction, tip);
     result.evaluated.push_back(evaluate(mix_point(o, fraction, tip)));
+    if (progress) progress(result.evaluated.back(), result.evaluated.size(), budget);
   };
   double fraction_step = 1.0 / (o.fraction_points - 1);
   double tip_step = (o.max_tip_m - o.min_tip_m) / (o.tip_points - 1);

@@ -38,6 +38,14 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
 
 using Evaluate = std::function<Candidate(const DesignPoint&)>;
 
+// Called after each candidate is evaluated (each is an FEM prediction, about a second), with
+// done = 1, 2, ... and a total fixed for the whole search: the most candidates it can evaluate,
+// known from its options before the first. The count reaches the total unless the optimum lies at
+// the edge of the range, where fewer candidates remain to refine: a face ends its bar when the
+// search returns.
+using SearchProgress =
+    std::function<void(const Candidate& evaluated, std::size_t done, std::size_t total)>;
+
 // The evaluation a search uses: predict, place, measure the distance to `target`.
 Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,
                             const space::DescriptorMap& map, const space::Placement& target,
@@ -67,7 +75,8 @@ struct LineSearchOptions {
 // The point interpolate(a, b, λ) with λ in [0, 1] nearest to the target. Throws
 // std::invalid_argument for fewer than 2 scan points or a tolerance outside (0, 1).
 SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
-                         const LineSearchOptions& options = {});
+                         const LineSearchOptions& options = {},
+                         const SearchProgress& progress = {});
 
 struct RangeSearchOptions {
   std::string first_material = "vero", second_material = "DM85";  // mix = second's fraction
@@ -79,6 +88,7 @@ struct RangeSearchOptions {
 // The mix of the two materials (the second's fraction from 0 to 1) × tip diameter nearest to the
 // target. Throws std::invalid_argument for a grid of fewer than 2 points per axis, equal
 // materials or an empty tip range.
-SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& options = {});
+SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& options = {},
+                          const SearchProgress& progress = {});
 
 }  // namespace nibrig::model::design

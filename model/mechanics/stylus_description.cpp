@@ -139,6 +139,23 @@ Probe default_tip(const BarGeometry& bar) {
 Probe default_sensor(const BarGeometry& bar) {
   return {{bar.free_length() - 0.020, 0, bar.thickness / 2}, Eigen::Vector3d::UnitZ()};
 }
+Design bar_design(const BarGeometry& bar, const std::string& material) {
+  validate(bar);
+  Design design;
+  design.name = "bar " + std::to_string(bar.length * 1e3).substr(0, 5) + " mm";
+  design.shape = bar;
+  design.tip = default_tip(bar);
+  design.sensor = default_sensor(bar);
+  design.mesh_size = bar_mesh_size(bar);
+  design.modes = 12;
+  design.region_materials["body"] = material;
+  return design;
+}
+
+double bar_mesh_size(const BarGeometry& bar) {
+  return std::max(bar.thickness, bar.free_length() / 100);
+}
+
 Probe default_tip(const StylusGeometry& s) { return {s.apex(), Eigen::Vector3d::UnitY()}; }
 Probe default_sensor(const StylusGeometry& s) {
   return {{s.grip_length + 0.010, s.body_diameter / 2, 0}, Eigen::Vector3d::UnitY()};

@@ -97,7 +97,8 @@ PlaneEllipse plane_ellipse(const ConfidenceRegion& region, std::size_t level, Ei
 }
 
 BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::MatrixXd& reference,
-                                const BootstrapOptions& options) {
+                                const BootstrapOptions& options,
+                                const numeric::Progress& progress) {
   validate(problem);
   if (options.resamples < 2) throw std::invalid_argument("the bootstrap needs at least 2 resamples");
   if (reference.rows() != static_cast<Eigen::Index>(problem.dims) ||
@@ -115,6 +116,7 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
   result.levels = options.levels;
   result.aligned.resize(static_cast<std::size_t>(options.resamples));
   result.refit_objectives.resize(result.aligned.size());
+  numeric::ProgressCounter counter(progress, result.aligned.size());
   numeric::parallel_for(result.aligned.size(), options.threads, [&](std::size_t k) {
     std::mt19937_64 generator(options.seed + static_cast<unsigned>(k));
     const SpaceProblem resampled = resample(problem, responses, generator);
@@ -126,6 +128,7 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
     const FitResult fit = fit_space(resampled, fit_options);
     result.aligned[k] = procrustes_align(fit.coordinates, reference);
     result.refit_objectives[k] = fit.objective;
+    counter.finished();
   });
   for (Eigen::Index s = 0; s < reference.cols(); ++s)
     result.regions.push_back(summarise(result.aligned, s, options.levels));

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "model/numeric/progress_counter.hpp"
 #include "model/space/objective.hpp"
 
 namespace nibrig::model::space {
@@ -47,8 +48,10 @@ PlaneEllipse plane_ellipse(const ConfidenceRegion& region, std::size_t level, Ei
 // Responses are resampled as a whole: the multiset of all (triplet, answer) pairs is drawn with
 // replacement to its own size, so triplets with more responses keep their weight. Throws what
 // fit_space throws, and std::invalid_argument for resamples < 2, a reference of the wrong shape or
-// a level outside (0, 1).
+// a level outside (0, 1). `progress` is called as each refit finishes (done 1..resamples), from
+// the worker threads but never two at once.
 BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::MatrixXd& reference,
-                                const BootstrapOptions& options = {});
+                                const BootstrapOptions& options = {},
+                                const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

@@ -25,7 +25,8 @@ std::vector<int> assign_folds(std::size_t triplets, int folds, unsigned seed) {
 }
 
 CrossValidationResult cross_validate(const SpaceProblem& problem,
-                                     const CrossValidationOptions& options) {
+                                     const CrossValidationOptions& options,
+                                     const numeric::Progress& progress) {
   validate(problem);
   const std::vector<int> fold = assign_folds(problem.triplets.size(), options.folds, options.seed);
   CrossValidationResult result;
@@ -50,6 +51,8 @@ CrossValidationResult cross_validate(const SpaceProblem& problem,
     result.folds.push_back(scores);
     all_predicted.insert(all_predicted.end(), predicted.begin(), predicted.end());
     all_held_out.insert(all_held_out.end(), held_out.begin(), held_out.end());
+    if (progress)
+      progress(static_cast<std::size_t>(f) + 1, static_cast<std::size_t>(options.folds));
   }
   result.pooled = score_predictions(all_predicted, all_held_out);
   double sum = 0.0, sum_sq = 0.0;

@@ -31,9 +31,10 @@ struct CrossValidationResult {
 };
 
 // Throws what fit_space throws, and std::invalid_argument for fewer than 2 folds or more folds than
-// triplets.
+// triplets. `progress` is called as each fold's fit finishes (done 1..folds).
 CrossValidationResult cross_validate(const SpaceProblem& problem,
-                                     const CrossValidationOptions& options = {});
+                                     const CrossValidationOptions& options = {},
+                                     const numeric::Progress& progress = {});
 
 // The fold of every triplet: a seeded shuffle dealt round-robin, so fold sizes differ by at most 1.
 std::vector<int> assign_folds(std::size_t triplets, int folds, unsigned seed);

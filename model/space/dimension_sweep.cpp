@@ -1,15 +1,18 @@
 #include "model/space/dimension_sweep.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace nibrig::model::space {
 
 std::vector<SweepPoint> sweep_dimensions(
     const SpaceProblem& base, const std::function<Eigen::MatrixXd(std::size_t)>& descriptors,
-    const SweepOptions& options) {
+    const SweepOptions& options, const numeric::Progress& progress) {
   if (options.dims.empty() || options.lambdas.empty())
     throw std::invalid_argument("the sweep needs at least one dimension and one λ");
   std::vector<SweepPoint> points;
+  const std::size_t folds = static_cast<std::size_t>(std::max(0, options.cross_validation.folds));
+  const std::size_t total = options.dims.size() * options.lambdas.size() * folds;
   for (std::size_t dims : options.dims) {
     for (double lambda : options.lambdas) {
       SpaceProblem problem = base;
@@ -21,7 +24,13 @@ std::vector<SweepPoint> sweep_dimensions(
           throw std::invalid_argument("λ > 0 ties the axes to descriptors, and none were given");
         problem.descriptors = descriptors(dims);
       }
-      const CrossValidationResult cv = cross_validate(problem, options.cross_validation);
+      // Folds of this point continue the count of the points before it.
+      const std::size_t before = points.size() * folds;
+      numeric::Progress fold_progress;
+      if (progress)
+        fold_progress = [&](std::size_t done, std::size_t) { progress(before + done, total); };
+      const CrossValidationResult cv =
+          cross_validate(problem, options.cross_validation, fold_progress);
       SweepPoint p;
       p.dims = dims;
       p.lambda = lambda;

@@ -26,9 +26,10 @@ struct SweepPoint {
 
 // `descriptors(D)` gives the stimuli × D table that the axes of a D-dimensional space are tied to;
 // it is only called for λ > 0. Throws std::invalid_argument for an empty list, or λ > 0 without a
-// descriptor source; otherwise what cross_validate throws.
+// descriptor source; otherwise what cross_validate throws. `progress` counts fold fits over the
+// whole sweep (done 1..dims × lambdas × folds), the unit of work that takes seconds.
 std::vector<SweepPoint> sweep_dimensions(
     const SpaceProblem& base, const std::function<Eigen::MatrixXd(std::size_t)>& descriptors,
-    const SweepOptions& options = {});
+    const SweepOptions& options = {}, const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

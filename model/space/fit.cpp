@@ -105,7 +105,8 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
 
 }  // namespace
 
-FitResult fit_space(const SpaceProblem& problem, const FitOptions& options) {
+FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
+                    const numeric::Progress& progress) {
   validate(problem);
   if (options.starts < 1) throw std::invalid_argument("fit needs at least one start");
   if (options.pinned >= problem.stimuli)
@@ -119,8 +120,10 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options) {
                                 std::to_string(problem.stimuli));
 
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
+  numeric::ProgressCounter counter(progress, results.size());
   numeric::parallel_for(results.size(), options.threads, [&](std::size_t s) {
     results[s] = run_start(problem, options, static_cast<int>(s));
+    counter.finished();
   });
 
   FitResult fit;

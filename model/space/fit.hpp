@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "model/numeric/progress_counter.hpp"
 #include "model/space/objective.hpp"
 
 namespace nibrig::model::space {
@@ -34,7 +35,9 @@ struct FitResult {
 };
 
 // Throws what validate(problem) throws, and std::invalid_argument for starts < 1, a pinned
-// stimulus out of range or an initial space of the wrong shape.
-FitResult fit_space(const SpaceProblem& problem, const FitOptions& options = {});
+// stimulus out of range or an initial space of the wrong shape. `progress` is called as each start
+// finishes (done 1..starts), from the worker threads but never two at once.
+FitResult fit_space(const SpaceProblem& problem, const FitOptions& options = {},
+                    const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "model/design/design_search.hpp"
 #include "model/io/catalog_file.hpp"
@@ -20,6 +21,7 @@
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/progress.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -84,8 +86,15 @@ void run_design(const DesignOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const design::LineSearchOptions line;
   const auto last_of_scan = static_cast<std::size_t>(line.scan_points - 1);
-  const design::SearchResult result =
-      a ? design::line_search(*a, *b, counted, line) : design::range_search(counted, range);
+  std::optional<Progress> bar;  // made with the first candidate, when the search's total is known
+  const design::SearchProgress progress = [&](const design::Candidate& c, std::size_t,
+                                              std::size_t total) {
+    if (!bar) bar.emplace("predicting designs", total);
+    bar->advance(design::to_string(c.point));
+  };
+  const design::SearchResult result = a ? design::line_search(*a, *b, counted, line, progress)
+                                        : design::range_search(counted, range, progress);
+  bar.reset();  // ends the bar's line before the results, also when it stopped short of its total
   const double seconds = seconds_since(start);
 
   const std::string how =

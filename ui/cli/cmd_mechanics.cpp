@@ -79,17 +79,8 @@ mech::Design design_from(const DesignOptions& o, const mech::MaterialTable& mate
     bar.clamp_length = o.clamp;
     bar.end_radius = 0.0;  // an inline bar is plain: square end
     bar.cutout = !o.no_cutout;
-    mech::validate(bar);
-    design.name = "bar " + std::to_string(bar.length * 1e3).substr(0, 5) + " mm";
-    design.shape = bar;
-    design.tip = mech::default_tip(bar);
-    design.sensor = mech::default_sensor(bar);
-    // Elements of the bar's thickness: the first three bending frequencies are then within 0.1 %
-    // of the converged ones (demo: cantilever_convergence.csv) at about 2 s for a 180 mm bar.
-    design.mesh_size = std::max(bar.thickness, bar.free_length() / 100);
-    design.modes = 12;
-    design.region_materials["body"] =
-        materials.find(o.material.empty() ? kDefaultMaterial : o.material).name;
+    design = mech::bar_design(
+        bar, materials.find(o.material.empty() ? kDefaultMaterial : o.material).name);
   } else if (o.design.empty()) {
     throw std::invalid_argument(
         "give a design file (design.json or a mesh) or --bar LENGTH,WIDTH,THICKNESS");

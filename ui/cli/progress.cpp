@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <memory>
 
 #include "ui/cli/logging.hpp"
 
@@ -29,6 +30,15 @@ void Progress::advance(const std::string& item) {
   std::fprintf(stderr, "\r%s [%s] %zu/%zu %-40s", label_.c_str(), bar.c_str(), done_, total_,
                shown.c_str());
   std::fflush(stderr);
+}
+
+std::function<void(std::size_t, std::size_t)> progress_bar(std::string label) {
+  auto bar = std::make_shared<std::unique_ptr<Progress>>();
+  return [bar, label = std::move(label)](std::size_t done, std::size_t total) {
+    if (!*bar) *bar = std::make_unique<Progress>(label, total);
+    (*bar)->advance("");
+    if (done == total) bar->reset();
+  };
 }
 
 }  // namespace nibrig::ui::cli

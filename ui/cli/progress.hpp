@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -25,5 +26,10 @@ class Progress {
   bool enabled_;
   std::mutex mutex_;
 };
+
+// A model progress callback (model::numeric::Progress: done, total) that draws a Progress bar
+// labelled `label`: the bar appears with the first unit, when the total is known, and ends its
+// line with the last. Copies share one bar.
+std::function<void(std::size_t done, std::size_t total)> progress_bar(std::string label);
 
 }  // namespace nibrig::ui::cli

@@ -10,6 +10,7 @@
 #include "model/space/fit.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/statistics.hpp"
+#include "ui/cli/progress.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
 #include "model/space/space_inputs.hpp"
@@ -43,7 +44,8 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
                o.judgments.string(), in.judgments.stimuli.size(), in.judgments.triplets.size(),
                model::io::response_count(in.judgments), o.dims, o.starts, o.lambda);
   const auto start = std::chrono::steady_clock::now();
-  const space::FitResult fit = space::fit_space(in.problem, options);
+  const space::FitResult fit =
+      space::fit_space(in.problem, options, progress_bar("fitting starts"));
   space::SpaceFile file;
   file.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   file.stimuli = in.judgments.stimuli;
@@ -84,7 +86,8 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
     b.seed = o.seed;
     b.threads = threads;
     const auto b_start = std::chrono::steady_clock::now();
-    const space::BootstrapResult regions = space::bootstrap_space(in.problem, fit.coordinates, b);
+    const space::BootstrapResult regions =
+        space::bootstrap_space(in.problem, fit.coordinates, b, progress_bar("bootstrap refits"));
     file.regions = regions.regions;
     file.region_levels = regions.levels;
     file.bootstrap_resamples = o.bootstrap;

@@ -13,6 +13,7 @@
 #include "model/space/dimension_sweep.hpp"
 #include "model/space/statistics.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/progress.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
 #include "model/space/space_inputs.hpp"
@@ -63,7 +64,7 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
                o.judgments.string(), in.problem.stimuli, in.problem.triplets.size(), o.folds,
                o.dims.size() * o.lambdas.size());
   const std::vector<space::SweepPoint> points =
-      space::sweep_dimensions(in.problem, descriptors, sweep);
+      space::sweep_dimensions(in.problem, descriptors, sweep, progress_bar("fitting folds"));
 
   nlohmann::json json = {{"judgments", o.judgments.string()},
                          {"folds", o.folds},

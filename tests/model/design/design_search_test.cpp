@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace nibrig::model::design {
 namespace {
@@ -60,6 +61,70 @@ TEST(DesignSearch, TheRangeSearchFindsTheMinimumOfTheWholeRange) {
     EXPECT_GE(c.point.tip_diameter_m, 0.001 - 1e-12);
     EXPECT_LE(c.point.tip_diameter_m, 0.004 + 1e-12);
   }
+}
+
+// Every progress call, and a check that its candidate is the one the search just kept.
+struct ProgressLog {
+  std::vector<std::size_t> done, totals;
+  std::vector<double> distances;
+  SearchProgress callback() {
+    return [this](const Candidate& c, std::size_t d, std::size_t total) {
+      done.push_back(d);
+      totals.push_back(total);
+      distances.push_back(c.distance);
+    };
+  }
+  // One call per candidate evaluated, in order, with a total fixed before the first.
+  void expect_one_call_per_candidate(const SearchResult& result) const {
+    ASSERT_EQ(done.size(), result.evaluated.size());
+    for (std::size_t k = 0; k < done.size(); ++k) {
+      EXPECT_EQ(done[k], k + 1);  // the searches are sequential: counts arrive in order
+      EXPECT_EQ(totals[k], totals.front());
+      EXPECT_EQ(distances[k], result.evaluated[k].distance);
+    }
+    EXPECT_LE(done.size(), totals.front());  // the total is a bound the search never exceeds
+  }
+};
+
+bool same_search(const SearchResult& a, const SearchResult& b) {
+  if (a.ranked != b.ranked || a.evaluated.size() != b.evaluated.size()) return false;
+  for (std::size_t k = 0; k < a.evaluated.size(); ++k)
+    if (a.evaluated[k].distance != b.evaluated[k].distance) return false;
+  return true;
+}
+
+TEST(DesignSearch, TheLineSearchReportsEachCandidateAndReachesItsTotal) {
+  // The deeper dip at λ = 0.62 lies inside the line: the golden section brackets two full scan
+  // steps, the widest bracket, so the search evaluates exactly its announced total.
+  const auto f = objective([](double fraction, double) {
+    return std::min(0.5 + 4 * std::pow(fraction - 0.15, 2), 0.2 + 3 * std::pow(fraction - 0.62, 2));
+  });
+  const auto a = parse_design_point("vero,tip=1mm"), b = parse_design_point("DM85,tip=4mm");
+  ProgressLog log;
+  const auto watched = line_search(a, b, f, {}, log.callback());
+  log.expect_one_call_per_candidate(watched);
+  EXPECT_EQ(log.done.back(), log.totals.back());
+  EXPECT_TRUE(same_search(watched, line_search(a, b, f)));  // watching changes nothing
+}
+
+TEST(DesignSearch, TheRangeSearchReportsEachCandidateAndStopsShortAtAnEdge) {
+  // An interior optimum: every refinement evaluates all 8 neighbours, 5 × 4 + 2 × 8 = 36.
+  const auto inside = objective([](double fraction, double tip_mm) {
+    return std::hypot(fraction - 0.6, 0.4 * (tip_mm - 2.7));
+  });
+  ProgressLog log;
+  const auto watched = range_search(inside, {}, log.callback());
+  log.expect_one_call_per_candidate(watched);
+  EXPECT_EQ(log.totals.front(), 36u);
+  EXPECT_EQ(log.done.back(), 36u);
+  EXPECT_TRUE(same_search(watched, range_search(inside)));
+  // The optimum in a corner (pure vero, 1 mm): neighbours outside the range are skipped, so the
+  // count ends below the announced total, which stays fixed.
+  const auto corner = objective([](double fraction, double tip_mm) { return fraction + tip_mm; });
+  ProgressLog edge;
+  const auto at_edge = range_search(corner, {}, edge.callback());
+  edge.expect_one_call_per_candidate(at_edge);
+  EXPECT_LT(edge.done.back(), 36u);
 }
 
 TEST(DesignSearch, RefusesSearchesThatCannotBeMade) {

@@ -92,6 +92,30 @@ TEST(Design, BadDesignsNameTheFieldAndWhatWasExpected) {
              "tip", "must say where its tip and sensor are");
 }
 
+TEST(Design, AnInlineBarMeshesAtItsThicknessButNoFinerThanAHundredthOfItsLength) {
+  BarGeometry bar;  // the paper's bar: 210 mm, 30 mm clamped, 2 mm thick
+  // Hand computation: free length 180 mm / 100 = 1.8 mm < 2 mm thick, so the thickness rules.
+  EXPECT_DOUBLE_EQ(bar_mesh_size(bar), 0.002);
+  bar.thickness = 0.0005;  // 0.5 mm < 1.8 mm: the hundredth of the free length rules
+  EXPECT_DOUBLE_EQ(bar_mesh_size(bar), 0.0018);
+  bar.length = 0.090;  // free 60 mm → 0.6 mm, now above the 0.5 mm thickness
+  EXPECT_DOUBLE_EQ(bar_mesh_size(bar), 0.0006);
+
+  const Design d = bar_design(bar, "VeroClear-Piovarci2018");
+  EXPECT_EQ(d.name, "bar 90.00 mm");
+  EXPECT_DOUBLE_EQ(d.mesh_size, bar_mesh_size(bar));
+  EXPECT_EQ(d.modes, 12);
+  EXPECT_EQ(d.region_materials.at("body"), "VeroClear-Piovarci2018");
+  // The probes are the bar's stated defaults: tip at the middle of the free end, sensor 20 mm in.
+  EXPECT_TRUE(d.tip.point.isApprox(default_tip(bar).point));
+  EXPECT_TRUE(d.sensor.point.isApprox(default_sensor(bar).point));
+  ASSERT_TRUE(std::holds_alternative<BarGeometry>(d.shape));
+  EXPECT_DOUBLE_EQ(std::get<BarGeometry>(d.shape).thickness, 0.0005);
+
+  bar.thickness = 0;  // impossible shapes are refused before anything is meshed
+  EXPECT_THROW(bar_design(bar, "VeroClear-Piovarci2018"), std::invalid_argument);
+}
+
 TEST(Design, MeshWithoutClampIsRefused) {
   // A mesh file whose clamp box holds no node: the design would float freely.
   const auto dir = test::scratch_dir("design_clamp");
