@@ -135,4 +135,12 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
   return result;
 }
 
+double mean_per_axis_sd(const BootstrapResult& result) {
+  if (result.regions.empty()) return 0.0;
+  double sum = 0.0;
+  for (const auto& r : result.regions)
+    sum += std::sqrt(r.covariance.trace() / static_cast<double>(r.covariance.rows()));
+  return sum / static_cast<double>(result.regions.size());
+}
+
 }  // namespace nibrig::model::space

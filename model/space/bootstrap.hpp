@@ -37,6 +37,10 @@ struct BootstrapResult {
   std::vector<double> refit_objectives;
 };
 
+// How uncertain a stimulus's place is, in one number: the mean over stimuli of the per-axis sd,
+// sqrt(trace(covariance) / dims) of its region (0 for no regions).
+double mean_per_axis_sd(const BootstrapResult& result);
+
 // The ellipse of axes (a, b) of a region in the plane of two axes at one level: semi-axes and the
 // angle of the first semi-axis from the first axis.
 struct PlaneEllipse {

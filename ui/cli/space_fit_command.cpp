@@ -91,14 +91,11 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
     file.regions = regions.regions;
     file.region_levels = regions.levels;
     file.bootstrap_resamples = o.bootstrap;
-    double mean_axis = 0.0;
-    for (const auto& r : regions.regions)
-      mean_axis += std::sqrt(r.covariance.trace() / static_cast<double>(o.dims));
     std::cout << fmt::format(
         "bootstrap: {} refits in {:.1f} s; mean per-axis sd of a stimulus {:.3f} units\n",
         o.bootstrap,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - b_start).count(),
-        mean_axis / static_cast<double>(regions.regions.size()));
+        space::mean_per_axis_sd(regions));
   }
   space::write_space_file(o.output, file);
   std::cout << "-> " << o.output.string() << "\n";

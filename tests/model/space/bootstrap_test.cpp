@@ -62,6 +62,16 @@ TEST(SpaceBootstrap, PlaneEllipseOfADiagonalCovariance) {
   EXPECT_NEAR(std::abs(std::cos(e.angle_rad)), 0.0, 1e-12);
 }
 
+TEST(SpaceBootstrap, MeanPerAxisSdOfHandMadeRegions) {
+  // sd per axis sqrt(trace / dims): sqrt((0.04 + 0.16) / 2) = sqrt(0.1) and sqrt(2 / 2) = 1.
+  BootstrapResult result;
+  result.regions.resize(2);
+  result.regions[0].covariance = Eigen::Matrix2d{{0.04, 0.0}, {0.0, 0.16}};
+  result.regions[1].covariance = Eigen::Matrix2d{{1.0, 0.3}, {0.3, 1.0}};
+  EXPECT_NEAR(mean_per_axis_sd(result), 0.5 * (std::sqrt(0.1) + 1.0), 1e-15);
+  EXPECT_EQ(mean_per_axis_sd(BootstrapResult{}), 0.0);
+}
+
 TEST(SpaceBootstrap, RejectsBadOptions) {
   const SpaceProblem study = testing::every_triplet_judged(testing::random_truth(2, 5, 1), 2, 1);
   const Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(2, 5);
