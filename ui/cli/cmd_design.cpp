@@ -115,13 +115,14 @@ void run_design(const DesignOptions& o) {
   nlohmann::json j = search_json(result, o.target, o.surface, how, seconds, o.runners_up);
   j["space"] = o.space_file.string();
   write_json_file(o.output, j);
-  std::cout << "wrote " << o.output.string() << "\n";
+  say_wrote(o.output);
   if (!o.plot.empty()) {
+    ensure_folder(o.plot.parent_path());
     std::vector<std::size_t> ends;
     if (a) ends = {0, last_of_scan};
     write_search_plot(space_file, o.target, locator.placed(o.target) ? &target : nullptr, result,
                       ends, o.surface, o.plot);
-    std::cout << "wrote " << o.plot.string() << "\n";
+    say_wrote(o.plot);
   }
 }
 
@@ -159,8 +160,11 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--runners-up", o->runners_up, "How many runners-up to report")
       ->capture_default_str()
       ->check(whole_in_range(0, 1000, "a number of runners-up"));
-  cmd->add_option("-o,--output", o->output, "Search JSON to write")->capture_default_str();
-  cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)");
+  cmd->add_option("-o,--output", o->output, "Search JSON to write")
+      ->capture_default_str()
+      ->check(file_to_write());
+  cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)")
+      ->check(file_to_write());
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_design(*o);

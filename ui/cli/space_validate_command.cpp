@@ -104,13 +104,15 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
         rho.r, rho.p_value, rho.n);
     json["rank_correlation_with_names"] = {{"rho", rho.r}, {"p_value", rho.p_value}, {"n", rho.n}};
   }
-  if (!o.json.empty()) write_json_file(o.json, json);
-  if (!o.report.empty()) {
-    ensure_folder(o.report);
+  if (!o.output.empty()) {
+    write_json_file(o.output, json);
+    say_wrote(o.output);
+  }
+  if (!o.plots.empty()) {
+    ensure_folder(o.plots);
     write_sweep_plot(points, "Cross-validated error of " + o.judgments.filename().string(),
-                     o.report / "dimension_sweep.png");
-    write_json_file(o.report / "validation.json", json);
-    std::cout << "-> " << (o.report / "dimension_sweep.png").string() << "\n";
+                     o.plots / "dimension_sweep.png");
+    say_wrote(o.plots / "dimension_sweep.png");
   }
 }
 
