@@ -46,7 +46,7 @@ void devices() {
 }
 
 void audition(const AuditionOptions& o) {
-  if (o.also.size() > 2) throw std::invalid_argument("--also takes at most two more tools (a triplet)");
+  if (o.also.size() > 2) throw CLI::ValidationError("--also", "takes at most two more tools (a triplet)");
   const playback::OutputSettings device = output_settings(o.device, "nibrig-audition");
   model::design::ToolSounds sounds(tool_sound_options(o.stroke));
   std::vector<std::string> tools{o.stroke.tool};

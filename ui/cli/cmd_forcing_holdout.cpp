@@ -235,7 +235,7 @@ void run_tip_holdout(const HoldoutOptions& o) {
 
 void run_material_holdout(const HoldoutOptions& o) {
   if (o.mix_of.size() != 2)
-    throw std::invalid_argument("--as takes two materials, the mix's first and second");
+    throw CLI::ValidationError("--as", "takes two materials, the mix's first and second");
   const std::string &first = o.mix_of[0], &second = o.mix_of[1];
   std::string why;
   double fraction = o.fraction;

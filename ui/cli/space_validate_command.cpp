@@ -40,9 +40,10 @@ std::optional<std::vector<double>> numbers_in_names(const std::vector<std::strin
 void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   const double max_lambda = *std::max_element(o.lambdas.begin(), o.lambdas.end());
   const std::size_t max_dims = *std::max_element(o.dims.begin(), o.dims.end());
-  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, {}, max_dims, 0.0);
+  // An option missing is a usage error, found before the judgments are read.
   if (max_lambda > 0 && o.descriptors.empty())
-    throw std::invalid_argument("--lambdas above 0 need --descriptors catalog.json");
+    throw CLI::ValidationError("--lambdas", "above 0 need --descriptors catalog.json");
+  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, {}, max_dims, 0.0);
   std::optional<model::io::Catalog> catalog;
   if (!o.descriptors.empty()) catalog = model::io::read_catalog(o.descriptors);
   std::function<Eigen::MatrixXd(std::size_t)> descriptors;

@@ -51,6 +51,27 @@ std::pair<int, std::string> failing(std::vector<std::string> args) {
   return {code, testing::internal::GetCapturedStderr()};
 }
 
+TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
+  // Without --forcing the command would fit a model for seconds and print the prediction before
+  // finding --plot unusable; refused while parsing, it prints and writes nothing.
+  const auto out = test::scratch_dir("cli_predict_plot_alone");
+  std::filesystem::remove(out / "p.png");
+  std::filesystem::remove(out / "p.json");
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int code = run_cli({"predict", "--design", "vero,tip=2mm", "--surface", "office", "--plot",
+                            (out / "p.png").string(), "-o", (out / "p.json").string()});
+  const std::string printed = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(code, 2) << "a usage error: " << err;
+  EXPECT_NE(err.find("--plot"), std::string::npos) << err;
+  EXPECT_NE(err.find("--measured"), std::string::npos) << err;
+  EXPECT_EQ(printed, "") << "nothing predicted before the refusal";
+  EXPECT_EQ(err.find("fitting"), std::string::npos) << "no fit started: " << err;
+  EXPECT_FALSE(std::filesystem::exists(out / "p.json"));
+  EXPECT_FALSE(std::filesystem::exists(out / "p.png"));
+}
+
 TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   const auto out = test::scratch_dir("cli_predict");
   const std::string forcing = (out / "forcing.json").string();
