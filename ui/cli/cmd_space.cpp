@@ -82,7 +82,9 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
   predict->footer(
       "Writes reference,a,b,p_first, one row per query in input order; queries in any judgment "
       "format\n"
-      "(counts ignored; for Salmon the first candidate is Left, for Lagunas answers[i][1]). With\n"
+      "(counts ignored, and a CSV may leave them out: reference,a,b is enough; for Salmon the "
+      "first\n"
+      "candidate is Left, for Lagunas answers[i][1]). With\n"
       "--catalog, tools not in the space are placed from their descriptors and a column p_first_sd\n"
       "gives the spread of p over their placement uncertainty.");
   predict->add_option("space", p->space_file, "space.json from `space fit`")

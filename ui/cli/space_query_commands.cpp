@@ -85,6 +85,9 @@ void run_space_evaluate(const SpaceQueryOptions& o) {
     std::cout << fmt::format("Pearson r (predicted vs observed p) = {:.3f}, p = {:.2g}\n",
                              scores.probability_correlation->r,
                              scores.probability_correlation->p_value);
+  else
+    std::cout << "Pearson r (predicted vs observed p): not defined: "
+              << scores.no_correlation_because << "\n";
   if (!o.output.empty()) {
     nlohmann::json j = {{"triplets", scores.triplets},
                         {"responses", scores.responses},
