@@ -50,12 +50,25 @@ void run_design(const DesignOptions& o) {
                                 " has no descriptor map (fit it with --descriptors): designs are "
                                 "placed from their predicted descriptors");
   model::space::StimulusLocator locator(space_file, o.space_file, catalog_path);
-  const space::Placement target = locator.locate(o.target, o.space_file);
+  // An unknown --target is a usage error that names the option and the choices, as other options'
+  // refusals do; the locator's own reason (which file lacks it) is kept in the message.
+  const space::Placement target = [&] {
+    try {
+      return locator.locate(o.target, o.space_file);
+    } catch (const std::exception& e) {  // FormatError from the catalog, invalid_argument here
+      std::string judged;
+      for (const auto& s : space_file.stimuli) judged += (judged.empty() ? "" : ", ") + s;
+      throw CLI::ValidationError(
+          "--target", "'" + o.target + "' cannot be placed: " + e.what() +
+                          "; choices: a stimulus judged in the space (" + judged +
+                          ") or a tool/surface pairing of " + catalog_path.string());
+    }
+  }();
 
   std::optional<design::DesignPoint> a, b;
   if (!o.between.empty()) {
     if (o.between.size() != 2)
-      throw std::invalid_argument("--between takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
+      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
     a = design::parse_design_point(o.between[0]);
     b = design::parse_design_point(o.between[1]);
   }
@@ -96,13 +109,13 @@ void run_design(const DesignOptions& o) {
                            o.target, locator.placed(o.target) ? "placed from its descriptors" : "judged",
                            o.surface, how, evaluations, seconds);
   const auto& best = result.best();
-  std::cout << fmt::format("optimum {}: distance {:.3f} +- {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
+  std::cout << fmt::format("optimum {}: distance {:.3f} ± {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
                            design::label(best.point), best.distance, best.distance_sd, best.mu,
                            best.weighted_mean);
   const auto runners = result.runners_up(static_cast<std::size_t>(o.runners_up));
   for (std::size_t k = 0; k < runners.size(); ++k) {
     const auto& c = result.evaluated[runners[k]];
-    std::cout << fmt::format("  runner-up {}: {} distance {:.3f} +- {:.3f}\n", k + 1,
+    std::cout << fmt::format("  runner-up {}: {} distance {:.3f} ± {:.3f}\n", k + 1,
                              design::label(c.point), c.distance, c.distance_sd);
   }
   if (a) {
