@@ -77,9 +77,11 @@ void run_design(const DesignOptions& o) {
     range.first_material = o.mix.substr(0, comma);
     range.second_material = o.mix.substr(comma + 1);
   } else {
-    throw std::invalid_argument("--mix takes two materials, e.g. vero,DM85");
+    throw CLI::ValidationError("--mix", "takes two materials, e.g. vero,DM85");
   }
 
+  if (o.forcing_model.empty() && warnings_shown())  // seconds of silence otherwise, as in predict
+    std::cerr << "fitting the forcing model to the catalog (no --forcing given)...\n";
   const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& model = inputs->model;
   range.min_tip_m = model.tip_log_gain.begin()->first;

@@ -5,6 +5,7 @@
 #include <sndfile.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -70,6 +71,30 @@ TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
   EXPECT_EQ(err.find("fitting"), std::string::npos) << "no fit started: " << err;
   EXPECT_FALSE(std::filesystem::exists(out / "p.json"));
   EXPECT_FALSE(std::filesystem::exists(out / "p.png"));
+}
+
+TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
+  // The fit is most of the wait; before, it was silent and left out of the reported time.
+  const auto out = test::scratch_dir("cli_predict_fits");
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const auto start = std::chrono::steady_clock::now();
+  const int code = run_cli(with_coarse({"predict", "--design", "vero,tip=2mm", "--surface",
+                                        "office", "-o", (out / "p.json").string()}));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_NE(err.find("fitting the forcing model to the catalog (no --forcing given)"),
+            std::string::npos)
+      << err;
+  // "...; 4.2 s" at the end of the first line: the command's own time, fit included, so at least
+  // half the wall time the test measured around it (the rest is reading the catalog and output).
+  const auto line_end = text.find('\n');
+  const auto semicolon = text.rfind("; ", line_end);
+  ASSERT_NE(semicolon, std::string::npos) << text;
+  const double reported = std::stod(text.substr(semicolon + 2));
+  EXPECT_GE(reported, 0.5 * wall) << text << "wall " << wall << " s";
 }
 
 TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
