@@ -22,6 +22,16 @@ OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesy
   if (!(settings.sample_rate_hz > 0) || settings.block_frames == 0 || !(settings.seconds > 0))
     throw std::invalid_argument("an offline render needs a positive rate, block and duration");
   const std::filesystem::path partial = wav.string() + ".partial";
+  // Whatever stops the render (a full disk, a renderer that throws, a failed rename) removes the
+  // half file: only a finished render is left behind, under its own name.
+  struct RemoveUnlessDone {
+    const std::filesystem::path& path;
+    bool done = false;
+    ~RemoveUnlessDone() {
+      std::error_code ignored;  // nothing more to do if it cannot be removed: the throw names it
+      if (!done) std::filesystem::remove(path, ignored);
+    }
+  } cleanup{partial};
   SF_INFO format{};
   format.samplerate = static_cast<int>(std::lround(settings.sample_rate_hz));
   format.channels = 1;
@@ -52,6 +62,7 @@ OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesy
   std::error_code error;
   std::filesystem::rename(partial, wav, error);
   if (error) throw std::runtime_error("cannot rename " + partial.string() + " to " + wav.string() + ": " + error.message());
+  cleanup.done = true;
   return result;
 }
 

@@ -23,8 +23,9 @@ struct OfflineRenderResult {
 };
 
 // Writes `seconds` of renderer output to `wav` (mono, float). The file is written as
-// "<wav>.partial" with its header kept current, so a render cut short still leaves a readable
-// file, and renamed to `wav` when complete. Throws std::runtime_error naming the file on an I/O
+// "<wav>.partial" with its header kept current, so a process killed mid-render still leaves a
+// readable file, and renamed to `wav` when complete; on any error the ".partial" is removed before
+// the exception leaves, so a failed render leaves no file. The folder must exist. Throws std::runtime_error naming the file on an I/O
 // failure, std::invalid_argument for a non-positive rate, block or duration.
 OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesystem::path& wav,
                                   const OfflineRenderSettings& settings);

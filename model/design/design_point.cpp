@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace nibrig::model::design {
 
@@ -93,7 +95,7 @@ DesignPoint parse_design_point(std::string_view text) {
     }
     MaterialShare share;
     const std::size_t colon = entry.find(':');
-    share.material = std::string(trimmed(entry.substr(0, colon)));
+    share.material = catalog_material_name(trimmed(entry.substr(0, colon)));
     if (colon != std::string_view::npos && !read_number(entry.substr(colon + 1), share.fraction))
       refuse(text, "the fraction of '" + share.material + "' is not a number");
     if (share.fraction != 0.0) point.mix.push_back(std::move(share));
@@ -101,6 +103,22 @@ DesignPoint parse_design_point(std::string_view text) {
   if (!tip_seen) refuse(text, "no tip diameter (add tip=<number>mm)");
   validate(point);
   return point;
+}
+
+std::string catalog_material_name(std::string_view typed) {
+  // The material table's full names are aliases: a user who read `mechanics --material` help or
+  // assets/materials.json types those, and "VeroClear" (datasheet) and the fitted
+  // "VeroClear-Piovarci2018" are both the catalog's printed "vero".
+  static const std::pair<const char*, const char*> kNames[] = {
+      {"vero", "vero"},          {"veroclear", "vero"},    {"veroclear-piovarci2018", "vero"},
+      {"dm95", "DM95"},          {"dm85", "DM85"},         {"teflon", "teflon"},
+      {"teflon-taped", "teflon"}};
+  std::string lower(typed);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const auto& [name, catalog] : kNames)
+    if (lower == name) return catalog;
+  return std::string(typed);
 }
 
 std::string to_string(const DesignPoint& point) { return written(point, 6); }

@@ -32,6 +32,12 @@ inline constexpr double kMixSumTolerance = 1e-6;
 // positive length. Entries with fraction 0 are dropped.
 DesignPoint parse_design_point(std::string_view text);
 
+// The catalog's name of a printed material (vero, DM95, DM85, teflon) for a name typed in any case
+// or as the material table's full name ("dm85" -> "DM85", "VeroClear-Piovarci2018" -> "vero"); any
+// other name is returned as typed, for the forcing model to refuse naming the materials it has.
+// parse_design_point applies it to every material.
+std::string catalog_material_name(std::string_view typed);
+
 // The same checks on a point built in code.
 void validate(const DesignPoint& point);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <optional>
 #include <unordered_map>
 
 #include "model/io/atomic_file.hpp"
@@ -68,11 +69,18 @@ TripletSet read_triplet_csv(const std::filesystem::path& file, Responses respons
   const std::size_t columns[] = {csv.header().column("reference"), csv.header().column("a"),
                                  csv.header().column("b")};
   const char* column_names[] = {"reference", "a", "b"};
-  const std::size_t c_count_a = csv.header().column("count_a");
-  const std::size_t c_count_b = csv.header().column("count_b");
+  // Triplets to predict (Responses::optional) need no answers, so a file of reference,a,b alone is
+  // read with both counts 0; judgments must have both columns (column() throws naming the file).
+  const auto count_column = [&](const char* name) -> std::optional<std::size_t> {
+    if (responses == Responses::optional) return csv.header().find(name);
+    return csv.header().column(name);
+  };
+  const std::optional<std::size_t> c_count_a = count_column("count_a");
+  const std::optional<std::size_t> c_count_b = count_column("count_b");
   const auto c_observer = csv.header().find("observer");
-  std::size_t needed = std::max({columns[0], columns[1], columns[2], c_count_a, c_count_b}) + 1;
-  if (c_observer) needed = std::max(needed, *c_observer + 1);
+  std::size_t needed = std::max({columns[0], columns[1], columns[2]}) + 1;
+  for (const auto& c : {c_count_a, c_count_b, c_observer})
+    if (c) needed = std::max(needed, *c + 1);
 
   TripletSet set;
   set.source = file;
@@ -96,8 +104,8 @@ TripletSet read_triplet_csv(const std::filesystem::path& file, Responses respons
     triplet.reference = indices[0];
     triplet.a = indices[1];
     triplet.b = indices[2];
-    const long long count_a = parse_integer(fields[c_count_a], file, line, "count_a");
-    const long long count_b = parse_integer(fields[c_count_b], file, line, "count_b");
+    const long long count_a = c_count_a ? parse_integer(fields[*c_count_a], file, line, "count_a") : 0;
+    const long long count_b = c_count_b ? parse_integer(fields[*c_count_b], file, line, "count_b") : 0;
     for (const auto& [count, column] :
          {std::pair{count_a, "count_a"}, std::pair{count_b, "count_b"}}) {
       if (count < 0 || count > INT_MAX) {

@@ -50,7 +50,8 @@ TripletSet read_salmon_csv(const std::filesystem::path& file);
 TripletSet read_triplets(const std::filesystem::path& file);
 
 // The same formats read as triplets to predict (`nibrig space predict`): counts are not used, so a
-// triplet with no response (both counts 0) is accepted; everything else is checked as above.
+// triplet with no response (both counts 0) is accepted and our CSV may leave out count_a and
+// count_b (read as 0); everything else is checked as above.
 TripletSet read_triplet_queries(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::io

@@ -1,6 +1,8 @@
 #include "model/space/prediction_scores.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +15,12 @@ namespace {
 double agreement(double p_first, bool first_won) {
   if (p_first == 0.5) return 0.5;
   return (p_first > 0.5) == first_won ? 1.0 : 0.0;
+}
+
+std::string shortest(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
 }
 
 }  // namespace
@@ -49,11 +57,19 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
   if (majority_n > 0) s.majority = agreement_test(majority_agree, majority_n);
   s.individual = agreement_test(individual_agree, static_cast<double>(s.responses));
   s.mean_absolute_error = error_sum / static_cast<double>(s.triplets);
-  try {
+  const auto constant = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [&](double x) { return x == v.front(); });
+  };
+  if (p_predicted.size() < 3)
+    s.no_correlation_because =
+        std::to_string(p_predicted.size()) + " answered triplets (a correlation needs 3)";
+  else if (constant(p_observed))
+    s.no_correlation_because = "every observed probability is " + shortest(p_observed.front()) +
+                               " (the answers do not vary between triplets)";
+  else if (constant(p_predicted))
+    s.no_correlation_because = "every predicted probability is the same";
+  else
     s.probability_correlation = pearson(p_predicted, p_observed);
-  } catch (const std::invalid_argument&) {
-    // Fewer than 3 triplets or a constant series: no correlation to report.
-  }
   return s;
 }
 

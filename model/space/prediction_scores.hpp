@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "model/io/triplets.hpp"
@@ -28,6 +29,9 @@ struct PredictionScores {
   // response per triplet, as in Salmon's data, leaves observed probabilities of 0 or 1 only, which
   // is still a valid correlation; a single triplet is not).
   std::optional<Correlation> probability_correlation;
+  // Why there is none, when there is none ("every observed probability is 1"), so a report can say
+  // so instead of leaving the promised number out.
+  std::string no_correlation_because;
 };
 
 // predicted[t] is P(a chosen) for triplets[t]. Throws std::invalid_argument when the lengths

@@ -5,6 +5,7 @@
 #include <sndfile.h>
 
 #include <cmath>
+#include <fstream>
 #include <vector>
 
 #include "tests/support/test_paths.hpp"
@@ -52,6 +53,18 @@ TEST(OfflineRender, NamesTheFileItCannotWrite) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/out.wav.partial"), std::string::npos);
   }
+}
+
+TEST(OfflineRender, AFailedRenderLeavesNoHalfFile) {
+  // The rename fails when the WAV's name is taken by a folder that is not empty: the render itself
+  // has succeeded by then, so this is the last point a ".partial" could be left behind.
+  const auto dir = test::scratch_dir("offline_render_failed");
+  std::filesystem::create_directories(dir / "out.wav");
+  std::ofstream(dir / "out.wav" / "keep") << "x";
+  Ramp renderer;
+  EXPECT_THROW(render_to_wav(renderer, dir / "out.wav", {48000, 64, 0.1}), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.wav.partial"))
+      << "a failed render must not leave its half file";
 }
 
 }  // namespace

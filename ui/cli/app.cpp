@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <thread>
@@ -19,6 +21,33 @@ unsigned worker_threads(const GlobalOptions& global) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
+namespace {
+
+// -v, -q and -j mean the same before or after the command (`nibrig devices -q`): every app in
+// the tree gets the three options, all writing the one GlobalOptions the commands read when they
+// run. CLI11's fallthrough() would do it with less code, but it also hands a misspelt subcommand
+// to the root, where the "did you mean" hint (usage_errors.cpp) no longer finds it.
+void add_global_options(CLI::App& app, const std::shared_ptr<GlobalOptions>& global) {
+  auto* verbose = app.add_flag_function(
+                         "-v,--verbose",
+                         [global](std::int64_t times) {
+                           global->verbosity = std::max(global->verbosity, 0) +
+                                               static_cast<int>(times);
+                         },
+                         "More log output on stderr (-v info, -vv debug)")
+                      ->group("Global options");
+  app.add_flag_callback("-q,--quiet", [global] { global->verbosity = kQuiet; },
+                        "Errors only on stderr: no warnings, no progress")
+      ->excludes(verbose)
+      ->group("Global options");
+  app.add_option("-j,--threads", global->threads, "Worker threads (default: one per core)")
+      ->check(whole_in_range(1, 256, "a number of threads"))
+      ->group("Global options");
+  for (CLI::App* sub : app.get_subcommands({})) add_global_options(*sub, global);
+}
+
+}  // namespace
+
 int run(int argc, char** argv) {
   auto global = std::make_shared<GlobalOptions>();
   CLI::App app{
@@ -27,13 +56,6 @@ int run(int argc, char** argv) {
       "descriptors, and reports them. Implements Piovarci et al., SIGGRAPH 2018."};
   app.set_version_flag("--version", "nibrig 0.1.0");
   app.require_subcommand(1);
-  auto* verbose =
-      app.add_flag("-v,--verbose", global->verbosity, "More log output on stderr (-v info, -vv debug)");
-  app.add_flag_callback("-q,--quiet", [global] { global->verbosity = kQuiet; },
-                        "Errors only on stderr: no warnings, no progress")
-      ->excludes(verbose);
-  app.add_option("-j,--threads", global->threads, "Worker threads (default: one per core)")
-      ->check(whole_in_range(1, 256, "a number of threads"));
   app.parse_complete_callback([global] { configure_logging(global->verbosity); });
 
   add_measure_command(app, global);
@@ -46,6 +68,7 @@ int run(int argc, char** argv) {
   add_render_command(app, global);
   add_audio_commands(app, global);
   add_demo_command(app, global);
+  add_global_options(app, global);
 
   try {
     app.parse(argc, argv);

@@ -18,6 +18,7 @@
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/cli/stroke_options.hpp"
 
 namespace nibrig::ui::cli {
@@ -45,7 +46,7 @@ void devices() {
 }
 
 void audition(const AuditionOptions& o) {
-  if (o.also.size() > 2) throw std::invalid_argument("--also takes at most two more tools (a triplet)");
+  if (o.also.size() > 2) throw CLI::ValidationError("--also", "takes at most two more tools (a triplet)");
   const playback::OutputSettings device = output_settings(o.device, "nibrig-audition");
   model::design::ToolSounds sounds(tool_sound_options(o.stroke));
   std::vector<std::string> tools{o.stroke.tool};
@@ -122,11 +123,11 @@ void calibrate(const CalibrateOptions& o) {
   std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
   playback::write_actuator_file(file, c);
   std::printf("actuator '%s': chain delay %.2f ms; inverse filter (%zu taps at %.0f Hz) flat to "
-              "%.2f dB over %.0f-%.0f Hz (rms %.2f dB), largest boost %.1f dB%s; wrote %s\n",
+              "%.2f dB over %.0f-%.0f Hz (rms %.2f dB), largest boost %.1f dB%s\n",
               c.name.c_str(), 1e3 * c.delay_s, c.filter.taps.size(), c.filter.sample_rate_hz,
               c.filter.max_deviation_db, c.design.band_low_hz, c.design.band_high_hz, c.filter.rms_deviation_db, c.filter.max_boost_db,
-              c.filter.boost_limited.empty() ? "" : " (capped in places: not flattened there)",
-              file.c_str());
+              c.filter.boost_limited.empty() ? "" : " (capped in places: not flattened there)");
+  say_wrote(file);
 }
 
 }  // namespace
@@ -170,7 +171,8 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(positive("a sensitivity in m/s² per unit of input"));
   cal->add_option("-o,--output", c->output,
                   "Actuator file to write (default: the actuator store, see `nibrig calibrate "
-                  "--help`)");
+                  "--help`)")
+      ->check(file_to_write());
   cal->footer("Calibrations are stored per actuator name in $NIBRIG_ACTUATORS, else\n"
               "$XDG_DATA_HOME/nibrig/actuators, else ~/.local/share/nibrig/actuators;\n"
               "`nibrig audition --actuator NAME` finds them there.");

@@ -127,7 +127,9 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("folder", options->folder, "Folder to search recursively")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("-o,--output", options->output, "Catalog JSON to write")->capture_default_str();
+  cmd->add_option("-o,--output", options->output, "Catalog JSON to write")
+      ->capture_default_str()
+      ->check(file_to_write());
   cmd->add_option("--report", options->report,
                   "Also write friction.csv, vibration.csv and PNG figures to this folder");
   cmd->add_option("--threshold", options->threshold, "Detection-threshold curve CSV")

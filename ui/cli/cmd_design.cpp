@@ -52,12 +52,25 @@ void run_design(const DesignOptions& o) {
                                 " has no descriptor map (fit it with --descriptors): designs are "
                                 "placed from their predicted descriptors");
   model::space::StimulusLocator locator(space_file, o.space_file, catalog_path);
-  const space::Placement target = locator.locate(o.target, o.space_file);
+  // An unknown --target is a usage error that names the option and the choices, as other options'
+  // refusals do; the locator's own reason (which file lacks it) is kept in the message.
+  const space::Placement target = [&] {
+    try {
+      return locator.locate(o.target, o.space_file);
+    } catch (const std::exception& e) {  // FormatError from the catalog, invalid_argument here
+      std::string judged;
+      for (const auto& s : space_file.stimuli) judged += (judged.empty() ? "" : ", ") + s;
+      throw CLI::ValidationError(
+          "--target", "'" + o.target + "' cannot be placed: " + e.what() +
+                          "; choices: a stimulus judged in the space (" + judged +
+                          ") or a tool/surface pairing of " + catalog_path.string());
+    }
+  }();
 
   std::optional<design::DesignPoint> a, b;
   if (!o.between.empty()) {
     if (o.between.size() != 2)
-      throw std::invalid_argument("--between takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
+      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
     a = design::parse_design_point(o.between[0]);
     b = design::parse_design_point(o.between[1]);
   }
@@ -66,9 +79,11 @@ void run_design(const DesignOptions& o) {
     range.first_material = o.mix.substr(0, comma);
     range.second_material = o.mix.substr(comma + 1);
   } else {
-    throw std::invalid_argument("--mix takes two materials, e.g. vero,DM85");
+    throw CLI::ValidationError("--mix", "takes two materials, e.g. vero,DM85");
   }
 
+  if (o.forcing_model.empty() && warnings_shown())  // seconds of silence otherwise, as in predict
+    std::cerr << "fitting the forcing model to the catalog (no --forcing given)...\n";
   const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& model = inputs->model;
   range.min_tip_m = model.tip_log_gain.begin()->first;
@@ -105,13 +120,13 @@ void run_design(const DesignOptions& o) {
                            o.target, locator.placed(o.target) ? "placed from its descriptors" : "judged",
                            o.surface, how, evaluations, seconds);
   const auto& best = result.best();
-  std::cout << fmt::format("optimum {}: distance {:.3f} +- {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
+  std::cout << fmt::format("optimum {}: distance {:.3f} ± {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
                            design::label(best.point), best.distance, best.distance_sd, best.mu,
                            best.weighted_mean);
   const auto runners = result.runners_up(static_cast<std::size_t>(o.runners_up));
   for (std::size_t k = 0; k < runners.size(); ++k) {
     const auto& c = result.evaluated[runners[k]];
-    std::cout << fmt::format("  runner-up {}: {} distance {:.3f} +- {:.3f}\n", k + 1,
+    std::cout << fmt::format("  runner-up {}: {} distance {:.3f} ± {:.3f}\n", k + 1,
                              design::label(c.point), c.distance, c.distance_sd);
   }
   if (a) {
@@ -124,13 +139,14 @@ void run_design(const DesignOptions& o) {
   nlohmann::json j = search_json(result, o.target, o.surface, how, seconds, o.runners_up);
   j["space"] = o.space_file.string();
   write_json_file(o.output, j);
-  std::cout << "wrote " << o.output.string() << "\n";
+  say_wrote(o.output);
   if (!o.plot.empty()) {
+    ensure_folder(o.plot.parent_path());
     std::vector<std::size_t> ends;
     if (a) ends = {0, last_of_scan};
     write_search_plot(space_file, o.target, locator.placed(o.target) ? &target : nullptr, result,
                       ends, o.surface, o.plot);
-    std::cout << "wrote " << o.plot.string() << "\n";
+    say_wrote(o.plot);
   }
 }
 
@@ -168,8 +184,11 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--runners-up", o->runners_up, "How many runners-up to report")
       ->capture_default_str()
       ->check(whole_in_range(0, 1000, "a number of runners-up"));
-  cmd->add_option("-o,--output", o->output, "Search JSON to write")->capture_default_str();
-  cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)");
+  cmd->add_option("-o,--output", o->output, "Search JSON to write")
+      ->capture_default_str()
+      ->check(file_to_write());
+  cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)")
+      ->check(file_to_write());
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_design(*o);

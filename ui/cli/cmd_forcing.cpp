@@ -36,7 +36,7 @@ struct FitCommandOptions {
 
 struct LooCommandOptions {
   ForcingInputOptions inputs;
-  std::filesystem::path csv;
+  std::filesystem::path output;  // the table as CSV
   bool all = false;  // hold out every exemplar, not only the paper's tools
 };
 
@@ -102,12 +102,12 @@ void run_fit(const FitCommandOptions& o) {
   for (const auto& why : jackknife.not_left_out) spdlog::info("jackknife: not left out: {}", why);
   ensure_folder(o.output.parent_path());
   forcing::write_forcing_model(o.output, model);
-  std::cout << "wrote " << o.output.string() << "\n";
+  say_wrote(o.output);
   if (!o.plots.empty()) {
     ensure_folder(o.plots);
     plot_scaling_curves(model, o.plots, &jackknife);
-    std::cout << "wrote " << (o.plots / "tip_curves.png").string() << " and "
-              << (o.plots / "material_curves.png").string() << "\n";
+    say_wrote(o.plots / "tip_curves.png");
+    say_wrote(o.plots / "material_curves.png");
   }
 }
 
@@ -181,9 +181,9 @@ void run_loo(const LooCommandOptions& o) {
     }
     std::cout << worst << "\n";
   }
-  if (!o.csv.empty()) {
-    write_text_file(o.csv, loo_csv(loo, speeds));
-    std::cout << "wrote " << o.csv.string() << "\n";
+  if (!o.output.empty()) {
+    write_text_file(o.output, loo_csv(loo, speeds));
+    say_wrote(o.output);
   }
 }
 
@@ -222,7 +222,8 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "on\n"
       "the same surface).");
   add_forcing_input_options(loo, loo_options->inputs);
-  loo->add_option("--csv", loo_options->csv, "Also write the table as CSV");
+  loo->add_option("-o,--output", loo_options->output, "Write the table as CSV")
+      ->check(file_to_write());
   loo->add_flag("--all", loo_options->all, "Hold out every exemplar, not only the paper's tools");
   loo->callback([loo_options, global] {
     configure_logging(global->verbosity);

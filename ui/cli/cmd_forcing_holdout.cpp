@@ -44,7 +44,7 @@ struct HoldoutOptions {
   std::string material;  // set: hold out this material instead of a tip
   std::vector<std::string> mix_of{"vero", "DM85"};
   double fraction = -1.0;  // of the mix's second material; < 0: equal modulus
-  std::filesystem::path csv;
+  std::filesystem::path output;  // errors per tool and speed as CSV
   std::filesystem::path plots;
 };
 
@@ -186,9 +186,9 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
         summary.mean_measured_db);
   std::cout << "\n";
 
-  if (!o.csv.empty()) {
-    write_text_file(o.csv, holdout_csv(v));
-    std::cout << "wrote " << o.csv.string() << "\n";
+  if (!o.output.empty()) {
+    write_text_file(o.output, holdout_csv(v));
+    say_wrote(o.output);
   }
   if (!o.plots.empty()) {
     ensure_folder(o.plots);
@@ -235,7 +235,7 @@ void run_tip_holdout(const HoldoutOptions& o) {
 
 void run_material_holdout(const HoldoutOptions& o) {
   if (o.mix_of.size() != 2)
-    throw std::invalid_argument("--as takes two materials, the mix's first and second");
+    throw CLI::ValidationError("--as", "takes two materials, the mix's first and second");
   const std::string &first = o.mix_of[0], &second = o.mix_of[1];
   std::string why;
   double fraction = o.fraction;
@@ -314,7 +314,8 @@ void add_forcing_holdout_command(CLI::App* forcing_cmd,
                   "material's Young's modulus)")
       ->check(in_range(0, 1, "a fraction"))
       ->needs(material);
-  cmd->add_option("--csv", o->csv, "Also write the errors per tool and speed as CSV");
+  cmd->add_option("-o,--output", o->output, "Write the errors per tool and speed as CSV")
+      ->check(file_to_write());
   cmd->add_option("--plots", o->plots, "Also write a figure like Fig. 14 per held-out tool here");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);

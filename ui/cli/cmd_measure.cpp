@@ -114,7 +114,7 @@ void measure(const MeasureOptions& options) {
     std::cout << result.dump(2) << "\n";
   } else {
     write_json_file(options.output, result);
-    spdlog::info("wrote {}", options.output.string());
+    say_wrote(options.output);
   }
 }
 
@@ -134,7 +134,8 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "A file named otherwise is read with --tool and --surface (and for friction --load and\n"
       "--lever); its kind comes from its header, or --kind.");
   cmd->add_option("recording", options->recording, "Recording file or session folder")->required();
-  cmd->add_option("-o,--output", options->output, "JSON output file (default: standard output)");
+  cmd->add_option("-o,--output", options->output, "JSON output file (default: standard output)")
+      ->check(file_to_write());
   cmd->add_option("--plots", options->plots,
                   "Folder for the PNG figures (default: beside -o, or .)");
   cmd->add_flag("--no-plots", options->no_plots, "Do not write figures");

@@ -41,7 +41,7 @@ struct DesignOptions {
 
 struct ModesOptions {
   DesignOptions design;
-  std::filesystem::path json, plots;
+  std::filesystem::path output, plots;
   bool no_plots = false;
 };
 
@@ -50,7 +50,7 @@ struct RingDownCommandOptions {
   DesignOptions design;
   double preload = 0.05;
   bool calibrated = false;
-  std::filesystem::path json, plots;
+  std::filesystem::path output, plots;
   bool no_plots = false;
 };
 
@@ -158,10 +158,10 @@ std::string modes_table(const mech::DesignModel& m) {
 }
 
 std::filesystem::path plot_folder(const std::filesystem::path& plots,
-                                  const std::filesystem::path& json) {
+                                  const std::filesystem::path& output) {
   if (!plots.empty()) return plots;
-  if (!json.empty())
-    return json.parent_path().empty() ? std::filesystem::path(".") : json.parent_path();
+  if (!output.empty())
+    return output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
   return ".";
 }
 
@@ -169,17 +169,17 @@ void run_modes(const ModesOptions& o) {
   const auto materials = load_materials(o.design);
   const mech::DesignModel model = build(design_from(o.design, materials), materials);
   std::cout << modes_table(model);
-  if (!o.json.empty()) {
-    write_json_file(o.json, modes_json(model));
-    spdlog::info("wrote {}", o.json.string());
+  if (!o.output.empty()) {
+    write_json_file(o.output, modes_json(model));
+    say_wrote(o.output);
   }
   if (!o.no_plots) {
     const auto png =
-        plot_folder(o.plots, o.json) / (file_stem(model.design.name) + "_frequency_response.png");
+        plot_folder(o.plots, o.output) / (file_stem(model.design.name) + "_frequency_response.png");
     ensure_folder(png.parent_path());
     plot_frequency_responses({{model.design.name, model.modal}},
                              "Frequency response: " + model.design.name, png);
-    spdlog::info("wrote {}", png.string());
+    say_wrote(png);
   }
 }
 
@@ -204,8 +204,8 @@ void run_ring_down(const RingDownCommandOptions& o) {
   std::printf("residual            %.2f %% of the trace's RMS (%d simulations)\n",
               100 * fit.relative_residual, fit.evaluations);
   const std::string stem = file_stem(o.trace.stem().string());
-  if (!o.json.empty()) {
-    write_json_file(o.json, {{"design", model.design.name},
+  if (!o.output.empty()) {
+    write_json_file(o.output, {{"design", model.design.name},
                              {"trace", o.trace.string()},
                              {"sample_rate_hz", trace.sample_rate_hz},
                              {"preload", o.preload},
@@ -218,16 +218,16 @@ void run_ring_down(const RingDownCommandOptions& o) {
                              {"first_mode_hz", fit.first_mode_hz},
                              {"first_mode_damping_ratio", fit.first_mode_damping_ratio},
                              {"reference_modulus", fit_options.reference_modulus}});
-    spdlog::info("wrote {}", o.json.string());
+    say_wrote(o.output);
   }
   if (!o.no_plots) {
-    const auto png = plot_folder(o.plots, o.json) / (stem + "_ring_down.png");
+    const auto png = plot_folder(o.plots, o.output) / (stem + "_ring_down.png");
     ensure_folder(png.parent_path());
     plot_ring_down(trace.acceleration_m_s2, "measured", fit.fitted, trace.sample_rate_hz,
                    "Ring-down: " + model.design.name + ", E " +
                        std::to_string(fit.youngs_modulus / 1e9).substr(0, 5) + " GPa",
                    png);
-    spdlog::info("wrote {}", png.string());
+    say_wrote(png);
   }
 }
 
@@ -307,15 +307,15 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
       "sensor)\n"
       "and writes a PNG of the frequency response from tip force to sensor acceleration (1-500 "
       "Hz).\n"
-      "--json FILE writes material.youngs_modulus, material.density, free_length, width, "
+      "-o FILE writes material.youngs_modulus, material.density, free_length, width, "
       "thickness\n"
       "(bars), modes[].frequency (Hz) and modes[].damping_ratio, and the frequency response.\n"
       "Example: nibrig mechanics modes --bar 0.21,0.02,0.002 --clamp 0.03 --no-cutout --material "
       "steel");
   add_design_options(modes_cmd, modes->design, true);
-  modes_cmd->add_option("--json", modes->json, "Write the results as JSON");
-  modes_cmd->add_option("--plots", modes->plots,
-                        "Folder for the PNG (default: beside --json, or .)");
+  modes_cmd->add_option("-o,--output", modes->output, "Write the results as JSON")
+      ->check(file_to_write());
+  modes_cmd->add_option("--plots", modes->plots, "Folder for the PNG (default: beside -o, or .)");
   modes_cmd->add_flag("--no-plots", modes->no_plots, "Do not write the PNG");
   modes_cmd->callback([modes, global] {
     configure_logging(global->verbosity);
@@ -342,8 +342,9 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
       ->check(stylus_metres("a tip displacement"));
   ring_cmd->add_flag("--calibrated", ring->calibrated,
                      "The trace is m/s^2 along the sensor axis: do not fit a gain");
-  ring_cmd->add_option("--json", ring->json, "Write the fit as JSON");
-  ring_cmd->add_option("--plots", ring->plots, "Folder for the PNG (default: beside --json, or .)");
+  ring_cmd->add_option("-o,--output", ring->output, "Write the fit as JSON")
+      ->check(file_to_write());
+  ring_cmd->add_option("--plots", ring->plots, "Folder for the PNG (default: beside -o, or .)");
   ring_cmd->add_flag("--no-plots", ring->no_plots, "Do not write the PNG");
   ring_cmd->callback([ring, global] {
     configure_logging(global->verbosity);

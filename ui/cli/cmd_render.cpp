@@ -10,6 +10,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/cli/stroke_options.hpp"
 
 namespace nibrig::ui::cli {
@@ -35,13 +36,14 @@ void render(const RenderOptions& o) {
   const std::string& name = session.names().front();
   const std::string& modes = sound.modes;
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
+  ensure_folder(o.output.parent_path());  // like every command: a missing folder is created
   const auto start = std::chrono::steady_clock::now();
   const auto result = session.render_to_wav(o.output, seconds, o.period);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto stats = session.engine().stats();
   std::printf("%s through %s, %s\n", name.c_str(), modes.c_str(), stroke.description.c_str());
-  std::printf("wrote %s: %.2f s at %.0f Hz (%zu frames in %zu-frame blocks)\n", o.output.c_str(),
-              seconds, o.rate, result.frames, o.period);
+  std::printf("%.2f s at %.0f Hz (%zu frames in %zu-frame blocks)\n", seconds, o.rate,
+              result.frames, o.period);
   std::printf("level: peak %.4f, rms %.4f of full scale (%.3g m/s² rms at %.3g per m/s², uncalibrated)\n",
               result.peak, result.rms, result.rms / settings.output_level_per_m_s2,
               settings.output_level_per_m_s2);
@@ -52,6 +54,8 @@ void render(const RenderOptions& o) {
   std::printf("render: %.3f s wall, %.0fx real time; per block median <= %.1f us, 99th percentile <= %.1f us\n",
               wall, seconds / wall, 1e6 * stats.callback_time_quantile(0.5),
               1e6 * stats.callback_time_quantile(0.99));
+  std::fflush(stdout);  // printf and std::cout share stdout: keep the lines in order
+  say_wrote(o.output);
 }
 
 }  // namespace
@@ -61,7 +65,9 @@ void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   auto* cmd = app.add_subcommand(
       "render", "Render a tool on a surface through the real-time engine into a WAV file");
   add_stroke_options(cmd, options->stroke);
-  cmd->add_option("-o,--output", options->output, "WAV file to write (mono, float)")->required();
+  cmd->add_option("-o,--output", options->output, "WAV file to write (mono, float)")
+      ->required()
+      ->check(file_to_write());
   cmd->add_option("--seconds", options->seconds,
                   "Length (default: two sweep periods, the trajectory's length, or 5 s)")
       ->check(positive("a length in seconds"));

@@ -4,6 +4,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 
 namespace nibrig::ui::cli {
@@ -32,8 +33,10 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--bootstrap", o->bootstrap,
                   "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
       ->check(whole_in_range(0, 100000, "a number of resamples"));
-  fit->add_option("--plot", o->plot, "PNG of the space (first two axes)");
-  fit->add_option("-o,--output", o->output, "Output space file (default space.json)");
+  fit->add_option("--plot", o->plot, "PNG of the space (first two axes)")
+      ->check(file_to_write());
+  fit->add_option("-o,--output", o->output, "Output space file (default space.json)")
+      ->check(file_to_write());
   fit->callback([o, global] {
     configure_logging(global->verbosity);
     if (o->bootstrap == 1) throw CLI::ValidationError("--bootstrap", "needs at least 2 resamples");
@@ -64,8 +67,8 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
   v->add_option("--starts", o->starts, "Random starts per fit (default 8)")
       ->check(whole_in_range(1, 10000, "a number of starts"));
   v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)")->check(any_seed());
-  v->add_option("--json", o->json, "Write the results as JSON");
-  v->add_option("--report", o->report, "Folder for validation.json and the sweep plot");
+  v->add_option("-o,--output", o->output, "Write the results as JSON")->check(file_to_write());
+  v->add_option("--plots", o->plots, "Folder for the sweep plot (dimension_sweep.png)");
   v->callback([o, global] {
     configure_logging(global->verbosity);
     run_space_validate(*o, worker_threads(*global));
@@ -79,7 +82,9 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
   predict->footer(
       "Writes reference,a,b,p_first, one row per query in input order; queries in any judgment "
       "format\n"
-      "(counts ignored; for Salmon the first candidate is Left, for Lagunas answers[i][1]). With\n"
+      "(counts ignored, and a CSV may leave them out: reference,a,b is enough; for Salmon the "
+      "first\n"
+      "candidate is Left, for Lagunas answers[i][1]). With\n"
       "--catalog, tools not in the space are placed from their descriptors and a column p_first_sd\n"
       "gives the spread of p over their placement uncertainty.");
   predict->add_option("space", p->space_file, "space.json from `space fit`")
@@ -90,7 +95,8 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
       ->check(CLI::ExistingFile);
   predict->add_option("--catalog", p->catalog, "Place unjudged tools from this catalog")
       ->check(CLI::ExistingFile);
-  predict->add_option("-o,--output", p->output, "Output CSV (default: standard output)");
+  predict->add_option("-o,--output", p->output, "Output CSV (default: standard output)")
+      ->check(file_to_write());
   predict->callback([p, global] {
     configure_logging(global->verbosity);
     run_space_predict(*p);
@@ -105,7 +111,8 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
       ->check(CLI::ExistingFile);
   evaluate->add_option("--catalog", e->catalog, "Place unjudged tools from this catalog")
       ->check(CLI::ExistingFile);
-  evaluate->add_option("-o,--output", e->output, "Write the scores as JSON");
+  evaluate->add_option("-o,--output", e->output, "Write the scores as JSON")
+      ->check(file_to_write());
   evaluate->callback([e, global] {
     configure_logging(global->verbosity);
     run_space_evaluate(*e);
@@ -118,8 +125,10 @@ void add_queries(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glob
       ->required()
       ->check(CLI::ExistingFile);
   embed->add_option("catalog", m->catalog, "Catalog")->required()->check(CLI::ExistingFile);
-  embed->add_option("-o,--output", m->output, "Output CSV (default: standard output)");
-  embed->add_option("--plot", m->plot, "PNG of the space with the placed tools");
+  embed->add_option("-o,--output", m->output, "Output CSV (default: standard output)")
+      ->check(file_to_write());
+  embed->add_option("--plot", m->plot, "PNG of the space with the placed tools")
+      ->check(file_to_write());
   embed->add_option("--predicted", m->predicted,
                     "Predictions (`nibrig predict -o`) to place beside the catalog's tools")
       ->check(CLI::ExistingFile);
@@ -156,8 +165,9 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
       ->check(whole_in_range(1, 1000000, "a number of trials"));
   synth->add_option("--compare-trials", s->compare_trials, "Truths per budget (default 20)")
       ->check(whole_in_range(1, 100000, "a number of trials"));
-  synth->add_option("--json", s->json, "Write the results as JSON");
-  synth->add_option("--report", s->report, "Folder for synthetic.json and a chart");
+  synth->add_option("-o,--output", s->output, "Write the results as JSON")
+      ->check(file_to_write());
+  synth->add_option("--plots", s->plots, "Folder for the recovery chart (synthetic_recovery.png)");
   synth->callback([s, global] {
     configure_logging(global->verbosity);
     run_space_synth(*s, worker_threads(*global));
@@ -183,7 +193,9 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
   plan->add_option("--max-triplets", p->max_triplets, "Ties repeated in stage 2 (default 60)")
       ->check(whole_in_range(1, 1000000, "a number of triplets"));
   plan->add_option("--seed", p->seed, "Seed (default 1)")->check(any_seed());
-  plan->add_option("-o,--output", p->output, "Trial list to write")->required();
+  plan->add_option("-o,--output", p->output, "Trial list to write")
+      ->required()
+      ->check(file_to_write());
   plan->callback([p, global] {
     configure_logging(global->verbosity);
     run_space_plan(*p);
@@ -197,7 +209,9 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
       ->check(CLI::ExistingFile);
   merge->add_flag("--all-judgments", m->all_judgments,
                   "Keep every answer (default: stage 2 and the stage-1 triplets that were no tie)");
-  merge->add_option("-o,--output", m->output, "Judgments CSV to write")->required();
+  merge->add_option("-o,--output", m->output, "Judgments CSV to write")
+      ->required()
+      ->check(file_to_write());
   merge->callback([m, global] {
     configure_logging(global->verbosity);
     run_space_merge(*m);

@@ -114,7 +114,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
                         dir / "design_path.png");
       const auto& best = result.best();
       search_line = fmt::format(
-          "  design search on {} for {} {}: optimum {} at distance {:.2f} +- {:.2f} (the two "
+          "  design search on {} for {} {}: optimum {} at distance {:.2f} ± {:.2f} (the two "
           "designs: {:.2f}, {:.2f}; {} predictions, {:.1f} s)\n",
           kSearchSurface, kTarget, how, design::label(best.point), best.distance, best.distance_sd,
           result.evaluated.front().distance, result.evaluated[last].distance,

@@ -1,5 +1,6 @@
 #include "ui/cli/output.hpp"
 
+#include <iostream>
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
@@ -22,6 +23,21 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json) {
   write_text_file(path, json.dump(2) + "\n");
+}
+
+void say_wrote(const std::filesystem::path& path) {
+  std::cout << "wrote " << path.string() << "\n";
+}
+
+CLI::Validator file_to_write() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::error_code error;
+        if (std::filesystem::is_directory(text, error))
+          return text + ": is a folder; expected a file to write";
+        return {};
+      },
+      "FILE");
 }
 
 std::string recording_stem(const std::filesystem::path& recording) {

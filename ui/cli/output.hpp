@@ -1,6 +1,7 @@
 // Small file-output helpers shared by the commands: folders, files written atomically, file stems.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -14,6 +15,15 @@ void ensure_folder(const std::filesystem::path& folder);
 // never leaves half a file.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json);
+
+// The one confirmation every command prints after writing a file, on stdout: "wrote <path>", so a
+// script or a reader finds what was written the same way whichever command wrote it.
+void say_wrote(const std::filesystem::path& path);
+
+// Check for an option naming a file to write (-o, --plot, --csv): an existing folder is refused
+// while the command line is parsed, naming the option, instead of failing after the work at the
+// rename (or writing "<folder>/.partial").
+CLI::Validator file_to_write();
 
 // "arm_vero_1_office.csv.gz" -> "arm_vero_1_office"; a session folder -> its name.
 std::string recording_stem(const std::filesystem::path& recording);

@@ -17,7 +17,7 @@ struct SpaceFitOptions {
 void run_space_fit(const SpaceFitOptions& options, unsigned threads);
 
 struct SpaceValidateOptions {
-  std::filesystem::path judgments, descriptors, json, report;
+  std::filesystem::path judgments, descriptors, output, plots;
   int folds = 5;
   std::vector<std::size_t> dims{1, 2, 3};
   std::vector<double> lambdas{0.0};
@@ -53,7 +53,7 @@ struct SpaceSynthOptions {
   bool compare = false;        // adaptive vs two-stage at several budgets
   std::vector<std::size_t> budgets{500, 1000, 1966};
   std::size_t compare_trials = 20;
-  std::filesystem::path json, report;
+  std::filesystem::path output, plots;
 };
 void run_space_synth(const SpaceSynthOptions& options, unsigned threads);
 

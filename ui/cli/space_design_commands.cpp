@@ -133,12 +133,14 @@ void run_space_synth(const SpaceSynthOptions& o, unsigned threads) {
            {"adaptive_probability_error", summary_json(b.adaptive_probabilities)}});
     }
   }
-  if (!o.json.empty()) write_json_file(o.json, json);
-  if (!o.report.empty()) {
-    ensure_folder(o.report);
-    write_json_file(o.report / "synthetic.json", json);
-    write_recovery_chart(rows, o.report / "synthetic_recovery.png");
-    std::cout << "-> " << (o.report / "synthetic_recovery.png").string() << "\n";
+  if (!o.output.empty()) {
+    write_json_file(o.output, json);
+    say_wrote(o.output);
+  }
+  if (!o.plots.empty()) {
+    ensure_folder(o.plots);
+    write_recovery_chart(rows, o.plots / "synthetic_recovery.png");
+    say_wrote(o.plots / "synthetic_recovery.png");
   }
 }
 
@@ -160,9 +162,11 @@ void run_space_plan(const SpacePlanOptions& o) {
     std::cout << fmt::format("{} of {} answered stage-1 triplets are ties; ", ties.size(),
                              counts.size());
   }
+  ensure_folder(o.output.parent_path());
   space::write_trial_csv(o.output, list);
-  std::cout << fmt::format("stage {}: {} trials over {} stimuli -> {}\n", o.stage,
-                           list.trials.size(), list.stimuli.size(), o.output.string());
+  std::cout << fmt::format("stage {}: {} trials over {} stimuli\n", o.stage, list.trials.size(),
+                           list.stimuli.size());
+  say_wrote(o.output);
 }
 
 void run_space_merge(const SpaceMergeOptions& o) {
@@ -181,13 +185,14 @@ void run_space_merge(const SpaceMergeOptions& o) {
                      ? space::merge_trials(trials, choices)
                      : space::two_stage_counts(space::merge_trials(trials, choices, 1),
                                                space::merge_trials(trials, choices, 2));
+  ensure_folder(o.output.parent_path());
   model::io::write_triplet_csv(o.output, set);
-  std::cout << fmt::format("{} triplets with {} answers ({}) -> {}\n", set.triplets.size(),
+  std::cout << fmt::format("{} triplets with {} answers ({})\n", set.triplets.size(),
                            model::io::response_count(set),
                            o.all_judgments ? "every answer"
                                            : "the paper's selection: stage 2 and the stage-1 "
-                                             "triplets that were not ties",
-                           o.output.string());
+                                             "triplets that were not ties");
+  say_wrote(o.output);
 }
 
 }  // namespace nibrig::ui::cli

@@ -10,6 +10,7 @@
 #include "model/space/fit.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/statistics.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
@@ -97,11 +98,13 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - b_start).count(),
         space::mean_per_axis_sd(regions));
   }
+  ensure_folder(o.output.parent_path());
   space::write_space_file(o.output, file);
-  std::cout << "-> " << o.output.string() << "\n";
+  say_wrote(o.output);
   if (!o.plot.empty()) {
+    ensure_folder(o.plot.parent_path());
     write_space_plot(file, {}, "Perceptual space of " + o.judgments.filename().string(), o.plot);
-    std::cout << "-> " << o.plot.string() << "\n";
+    say_wrote(o.plot);
   }
 }
 

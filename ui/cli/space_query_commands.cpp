@@ -56,7 +56,7 @@ void run_space_predict(const SpaceQueryOptions& o) {
     std::cout << csv.str();
   } else {
     write_text_file(o.output, csv.str());
-    spdlog::info("wrote {} predictions to {}", p.size(), o.output.string());
+    say_wrote(o.output);
   }
 }
 
@@ -85,6 +85,9 @@ void run_space_evaluate(const SpaceQueryOptions& o) {
     std::cout << fmt::format("Pearson r (predicted vs observed p) = {:.3f}, p = {:.2g}\n",
                              scores.probability_correlation->r,
                              scores.probability_correlation->p_value);
+  else
+    std::cout << "Pearson r (predicted vs observed p): not defined: "
+              << scores.no_correlation_because << "\n";
   if (!o.output.empty()) {
     nlohmann::json j = {{"triplets", scores.triplets},
                         {"responses", scores.responses},
@@ -100,6 +103,7 @@ void run_space_evaluate(const SpaceQueryOptions& o) {
       j["pearson_p_value"] = scores.probability_correlation->p_value;
     }
     write_json_file(o.output, j);
+    say_wrote(o.output);
   }
 }
 
@@ -163,11 +167,12 @@ void run_space_embed(const SpaceEmbedOptions& o) {
     std::cout << csv.str();
   } else {
     write_text_file(o.output, csv.str());
-    std::cout << "-> " << o.output.string() << "\n";
+    say_wrote(o.output);
   }
   if (!o.plot.empty()) {
+    ensure_folder(o.plot.parent_path());
     write_space_plot(s, placed, "Tools placed from their descriptors", o.plot);
-    std::cout << "-> " << o.plot.string() << "\n";
+    say_wrote(o.plot);
   }
 }
 

@@ -41,9 +41,10 @@ std::optional<std::vector<double>> numbers_in_names(const std::vector<std::strin
 void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   const double max_lambda = *std::max_element(o.lambdas.begin(), o.lambdas.end());
   const std::size_t max_dims = *std::max_element(o.dims.begin(), o.dims.end());
-  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, {}, max_dims, 0.0);
+  // An option missing is a usage error, found before the judgments are read.
   if (max_lambda > 0 && o.descriptors.empty())
-    throw std::invalid_argument("--lambdas above 0 need --descriptors catalog.json");
+    throw CLI::ValidationError("--lambdas", "above 0 need --descriptors catalog.json");
+  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, {}, max_dims, 0.0);
   std::optional<model::io::Catalog> catalog;
   if (!o.descriptors.empty()) catalog = model::io::read_catalog(o.descriptors);
   std::function<Eigen::MatrixXd(std::size_t)> descriptors;
@@ -105,13 +106,15 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
         rho.r, rho.p_value, rho.n);
     json["rank_correlation_with_names"] = {{"rho", rho.r}, {"p_value", rho.p_value}, {"n", rho.n}};
   }
-  if (!o.json.empty()) write_json_file(o.json, json);
-  if (!o.report.empty()) {
-    ensure_folder(o.report);
+  if (!o.output.empty()) {
+    write_json_file(o.output, json);
+    say_wrote(o.output);
+  }
+  if (!o.plots.empty()) {
+    ensure_folder(o.plots);
     write_sweep_plot(points, "Cross-validated error of " + o.judgments.filename().string(),
-                     o.report / "dimension_sweep.png");
-    write_json_file(o.report / "validation.json", json);
-    std::cout << "-> " << (o.report / "dimension_sweep.png").string() << "\n";
+                     o.plots / "dimension_sweep.png");
+    say_wrote(o.plots / "dimension_sweep.png");
   }
 }
 

@@ -41,6 +41,21 @@ TEST(DesignPoint, OneMaterialNeedsNoFractionAndSpacesAreAllowed) {
   EXPECT_DOUBLE_EQ(p.tip_diameter_m, 0.0025);
 }
 
+TEST(DesignPoint, MaterialNamesInAnyCaseAndTheMaterialTablesFullNames) {
+  // `mechanics --material Steel` is accepted; a design point should be as forgiving, and the
+  // material table's names should reach the catalog's: the forcing model knows only vero, DM95,
+  // DM85 and teflon.
+  const DesignPoint p = parse_design_point("dm85:0.5,VeroClear-Piovarci2018:0.5,tip=2mm");
+  ASSERT_EQ(p.mix.size(), 2u);
+  EXPECT_EQ(p.mix[0].material, "DM85");
+  EXPECT_EQ(p.mix[1].material, "vero");
+  EXPECT_EQ(parse_design_point("VeroClear,tip=2mm").mix[0].material, "vero");
+  EXPECT_EQ(parse_design_point("TEFLON-taped,tip=2mm").mix[0].material, "teflon");
+  EXPECT_EQ(catalog_material_name("unobtainium"), "unobtainium") << "left for the model to refuse";
+  // Two spellings of one material are one material named twice.
+  EXPECT_THROW(parse_design_point("vero:0.5,VEROCLEAR:0.5,tip=2mm"), std::invalid_argument);
+}
+
 TEST(DesignPoint, RefusesWhatIsNotADesignSayingWhy) {
   EXPECT_THAT(error_of("DM85:0.3,vero:0.6,tip=1mm"), HasSubstr("add up to 0.9, expected 1"));
   EXPECT_THAT(error_of("DM85:1.5,tip=1mm"), HasSubstr("fraction of 'DM85' is 1.5"));

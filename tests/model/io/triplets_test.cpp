@@ -85,6 +85,15 @@ TEST(Triplets, QueriesNeedNoResponsesJudgmentsDo) {
                        {"q.csv", "line 2", "at least one response"});
   test::write_text(dir / "q.json", R"({"answers": [[0, 1, 2]], "agreement": [[0, 0]]})");
   EXPECT_EQ(read_triplet_queries(dir / "q.json").triplets.size(), 1u);
+  // `space predict --help` promises counts are ignored: a query file may leave them out, while a
+  // judgment file without them is still refused.
+  test::write_text(dir / "bare.csv", "reference,a,b\nx,y,z\ny,z,x\n");
+  const TripletSet bare = read_triplet_queries(dir / "bare.csv");
+  ASSERT_EQ(bare.triplets.size(), 2u);
+  EXPECT_EQ(bare.stimuli[bare.triplets[1].a], "z");
+  EXPECT_EQ(bare.triplets[1].count_a + bare.triplets[1].count_b, 0) << "no answers were given";
+  expect_message_names(format_error_of([&] { read_triplets(dir / "bare.csv"); }),
+                       {"bare.csv", "missing column 'count_a'"});
   // Everything but the counts is still checked.
   test::write_text(dir / "self.csv", "reference,a,b,count_a,count_b\nx,x,z,0,0\n");
   expect_message_names(format_error_of([&] { read_triplet_queries(dir / "self.csv"); }),

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace nibrig::model::space {
@@ -27,7 +28,25 @@ TEST(SpacePredictionScores, CountsMajorityIndividualAgreementAndError) {
   EXPECT_DOUBLE_EQ(s.individual.agreements, 14.0);
   // |0.8−0.7| + |0.6−0.2| + |0.5−0.5| over 3.
   EXPECT_NEAR(s.mean_absolute_error, 0.5 / 3.0, 1e-12);
-  ASSERT_TRUE(s.probability_correlation.has_value());
+  // Pearson r of predicted (0.8, 0.6, 0.5) against observed (0.7, 0.2, 0.5), by hand: the
+  // deviations' sums are Sxy = 13/300, Sxx = 14/300, Syy = 38/300, so r = 13 / sqrt(14 * 38).
+  ASSERT_TRUE(s.probability_correlation.has_value()) << s.no_correlation_because;
+  EXPECT_NEAR(s.probability_correlation->r, 13.0 / std::sqrt(14.0 * 38.0), 1e-12);
+  EXPECT_EQ(s.probability_correlation->n, 3u);
+  EXPECT_TRUE(s.no_correlation_because.empty());
+}
+
+TEST(SpacePredictionScores, SaysWhyThereIsNoCorrelation) {
+  // One answer per triplet, always for a (as Salmon lists the answer first): every observed
+  // probability is 1, so r is undefined, and the scores say so instead of leaving it out silently.
+  const PredictionScores s =
+      score_predictions({0.9, 0.6, 0.7}, {triplet(1, 0), triplet(1, 0), triplet(1, 0)});
+  EXPECT_FALSE(s.probability_correlation.has_value());
+  EXPECT_NE(s.no_correlation_because.find("every observed probability is 1"), std::string::npos)
+      << s.no_correlation_because;
+  const PredictionScores two = score_predictions({0.9, 0.6}, {triplet(1, 0), triplet(0, 1)});
+  EXPECT_NE(two.no_correlation_because.find("needs 3"), std::string::npos)
+      << two.no_correlation_because;
 }
 
 TEST(SpacePredictionScores, AnExactHalfIsHalfRightWhicheverSideWon) {

@@ -36,6 +36,32 @@ TEST(AudioCli, RenderWritesTheToolOverTheSweepToAWav) {
   EXPECT_GT(std::sqrt(sum / 48000), 1e-3);
 }
 
+TEST(AudioCli, RenderCreatesAMissingFolderAndRefusesAFolderAsOutput) {
+  const auto out = test::scratch_dir("cli_render_folders");
+  std::filesystem::remove_all(out / "new");
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"render", "--tool", "cryon", "--surface", "office", "--speed", "100",
+                            "--seconds", "0.2", "-o", (out / "new" / "a.wav").string()});
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << "a missing output folder is created, not an error: " << text;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out / "new" / "a.wav"));
+  EXPECT_NE(text.find("wrote " + (out / "new" / "a.wav").string() + "\n"), std::string::npos)
+      << "the confirmation every command prints: " << text;
+
+  // An existing folder as -o is refused while parsing (exit 2, naming the option), and nothing is
+  // written into or beside it.
+  std::filesystem::create_directories(out / "taken");
+  ::testing::internal::CaptureStderr();
+  const int refused =
+      run_cli({"render", "--tool", "cryon", "--surface", "office", "-o", (out / "taken").string()});
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(refused, 2) << err;
+  EXPECT_NE(err.find("--output"), std::string::npos) << err;
+  EXPECT_NE(err.find("is a folder"), std::string::npos) << err;
+  EXPECT_TRUE(std::filesystem::is_empty(out / "taken"));
+  EXPECT_FALSE(std::filesystem::exists(out / "taken.partial"));
+}
+
 TEST(AudioCli, RenderNamesWhatTheCatalogHasWhenAPairingIsMissing) {
   ::testing::internal::CaptureStderr();
   const int code = run_cli({"render", "--tool", "cryon", "--surface", "moon", "-o", "/tmp/x.wav"});

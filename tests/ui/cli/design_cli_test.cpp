@@ -236,8 +236,10 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
                            space_file.string(), "--forcing", (out / "forcing.json").string()});
   testing::internal::GetCapturedStdout();
   const std::string error = testing::internal::GetCapturedStderr();
-  EXPECT_NE(bad, 0);
+  EXPECT_EQ(bad, 2) << "an unknown --target is a usage error: " << error;
+  EXPECT_NE(error.find("--target"), std::string::npos) << "names the option: " << error;
   EXPECT_NE(error.find("nothing/glass"), std::string::npos) << error;
+  EXPECT_NE(error.find("choices: "), std::string::npos) << "lists what it accepts: " << error;
 }
 
 }  // namespace

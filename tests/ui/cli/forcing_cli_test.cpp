@@ -70,7 +70,7 @@ TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
 TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
   const auto out = test::scratch_dir("cli_forcing_loo");
   testing::internal::CaptureStdout();
-  const int code = run_cli({"forcing", "loo", "--csv", (out / "loo.csv").string(), "--modes", "32",
+  const int code = run_cli({"forcing", "loo", "-o", (out / "loo.csv").string(), "--modes", "32",
                             "--mesh-size", "0.004"});
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
@@ -97,7 +97,7 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
   const auto out = test::scratch_dir("cli_forcing_holdout");
   testing::internal::CaptureStdout();
   const int code =
-      run_cli(with_coarse({"forcing", "holdout", "--tip", "2", "--csv",
+      run_cli(with_coarse({"forcing", "holdout", "--tip", "2", "-o",
                            (out / "holdout.csv").string(), "--plots", (out / "plots").string()}));
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
@@ -139,7 +139,7 @@ TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
   const auto out = test::scratch_dir("cli_forcing_holdout_material");
   testing::internal::CaptureStdout();
   const int code = run_cli(with_coarse(
-      {"forcing", "holdout", "--material", "DM95", "--csv", (out / "holdout.csv").string()}));
+      {"forcing", "holdout", "--material", "DM95", "-o", (out / "holdout.csv").string()}));
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   // The 14 measured DM95 tools (1 and 4 mm on six surfaces, 2 mm on two), each as the mix of

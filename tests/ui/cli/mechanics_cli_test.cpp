@@ -23,7 +23,7 @@ TEST(MechanicsCli, InlinePlainBarReportsTheKeysScriptsUseAndMatchesBeamTheory) {
   testing::internal::CaptureStdout();
   const int code =
       run_cli({"mechanics", "modes", "--bar", "0.21,0.02,0.002", "--clamp", "0.03", "--no-cutout",
-               "--material", "steel", "--modes", "8", "--json", (out / "bar.json").string()});
+               "--material", "steel", "--modes", "8", "-o", (out / "bar.json").string()});
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto j = read_json(out / "bar.json");
@@ -57,7 +57,7 @@ TEST(MechanicsCli, BundledStylusDesignWithTwoMaterials) {
   const int code =
       run_cli({"mechanics", "modes",
                (test::assets_dir() / "designs" / "stylus_vero_dm85tip_4mm.json").string(),
-               "--modes", "6", "--json", (out / "s.json").string(), "--no-plots"});
+               "--modes", "6", "-o", (out / "s.json").string(), "--no-plots"});
   testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0);
   const auto j = read_json(out / "s.json");
@@ -92,7 +92,7 @@ TEST(MechanicsCli, RingDownFitsATraceAndDrawsIt) {
     "mesh_size": 0.004, "modes": 6})";
   testing::internal::CaptureStdout();
   const int code = run_cli({"mechanics", "ringdown", (out / "ring.csv").string(),
-                            design_file.string(), "--json", (out / "fit.json").string()});
+                            design_file.string(), "-o", (out / "fit.json").string()});
   const std::string text = testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto fit = read_json(out / "fit.json");

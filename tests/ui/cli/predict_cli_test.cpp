@@ -5,6 +5,7 @@
 #include <sndfile.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -49,6 +50,51 @@ std::pair<int, std::string> failing(std::vector<std::string> args) {
   const int code = run_cli(std::move(args));
   testing::internal::GetCapturedStdout();
   return {code, testing::internal::GetCapturedStderr()};
+}
+
+TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
+  // Without --forcing the command would fit a model for seconds and print the prediction before
+  // finding --plot unusable; refused while parsing, it prints and writes nothing.
+  const auto out = test::scratch_dir("cli_predict_plot_alone");
+  std::filesystem::remove(out / "p.png");
+  std::filesystem::remove(out / "p.json");
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const int code = run_cli({"predict", "--design", "vero,tip=2mm", "--surface", "office", "--plot",
+                            (out / "p.png").string(), "-o", (out / "p.json").string()});
+  const std::string printed = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(code, 2) << "a usage error: " << err;
+  EXPECT_NE(err.find("--plot"), std::string::npos) << err;
+  EXPECT_NE(err.find("--measured"), std::string::npos) << err;
+  EXPECT_EQ(printed, "") << "nothing predicted before the refusal";
+  EXPECT_EQ(err.find("fitting"), std::string::npos) << "no fit started: " << err;
+  EXPECT_FALSE(std::filesystem::exists(out / "p.json"));
+  EXPECT_FALSE(std::filesystem::exists(out / "p.png"));
+}
+
+TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
+  // The fit is most of the wait; before, it was silent and left out of the reported time.
+  const auto out = test::scratch_dir("cli_predict_fits");
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  const auto start = std::chrono::steady_clock::now();
+  const int code = run_cli(with_coarse({"predict", "--design", "vero,tip=2mm", "--surface",
+                                        "office", "-o", (out / "p.json").string()}));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_NE(err.find("fitting the forcing model to the catalog (no --forcing given)"),
+            std::string::npos)
+      << err;
+  // "...; 4.2 s" at the end of the first line: the command's own time, fit included, so at least
+  // half the wall time the test measured around it (the rest is reading the catalog and output).
+  const auto line_end = text.find('\n');
+  const auto semicolon = text.rfind("; ", line_end);
+  ASSERT_NE(semicolon, std::string::npos) << text;
+  const double reported = std::stod(text.substr(semicolon + 2));
+  EXPECT_GE(reported, 0.5 * wall) << text << "wall " << wall << " s";
 }
 
 TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {

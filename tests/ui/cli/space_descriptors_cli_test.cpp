@@ -128,7 +128,8 @@ TEST(SpaceCliDescriptors, ValidateSweepsDimensionsAndLambdas) {
   testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "validate", s.judgments.string(), "--descriptors",
                      s.catalog.string(), "--dims", "1,2", "--lambdas", "0,1", "--folds", "3",
-                     "--starts", "2", "--report", (dir / "report").string()}),
+                     "--starts", "2", "-o", (dir / "report" / "validation.json").string(),
+                     "--plots", (dir / "report").string()}),
             0);
   const std::string out = testing::internal::GetCapturedStdout();
   const auto v = test::read_json(dir / "report" / "validation.json");

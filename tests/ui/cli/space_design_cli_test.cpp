@@ -69,7 +69,8 @@ TEST(SpaceDesignCli, SynthReportsRecoveryPerDimension) {
   const auto dir = test::scratch_dir("cli_space_synth");
   testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "synth", "--dims", "1,2", "--trials", "3", "--starts", "2",
-                     "--report", (dir / "report").string()}),
+                     "-o", (dir / "report" / "synthetic.json").string(), "--plots",
+                     (dir / "report").string()}),
             0);
   testing::internal::GetCapturedStdout();
   const auto j = test::read_json(dir / "report" / "synthetic.json");

@@ -94,5 +94,23 @@ TEST(CliQuiet, SilencesWarningsButNotErrors) {
   EXPECT_NE(failing.err.find("nibrig: error:"), std::string::npos);
 }
 
+TEST(CliGlobalOptions, AreAcceptedAfterTheCommandToo) {
+  const auto dir = test::scratch_dir("cli_global_after");
+  // The render warns above the measured speeds without -q (checked in CliQuiet above); -q after
+  // the command, even after a nested one's options, silences it the same as before the command.
+  std::vector<std::string> render{
+      "render",      "--tool",    "cryon", "--surface", "office",
+      "--speed=1e9", "--seconds", "0.05",  "-o",        (dir / "x.wav").string(), "-q"};
+  const Outcome quiet = run_quietly(render);
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "") << "-q after the command must silence the warning";
+  // -j after a nested subcommand is parsed and checked like the global one.
+  const Outcome threads = run_quietly({"space", "synth", "-j", "0"});
+  EXPECT_EQ(threads.code, 2) << threads.err;
+  EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  // -v and -q together are still refused after the command.
+  EXPECT_EQ(run_quietly({"devices", "-v", "-q"}).code, 2);
+}
+
 }  // namespace
 }  // namespace nibrig::ui::cli
