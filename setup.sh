@@ -48,7 +48,7 @@ build_fuzzers() {  # libFuzzer needs clang; the readers are built again into eac
   for target in "$root"/tests/fuzz/fuzz_*.cpp; do
     local name
     name=$(basename "$target" .cpp)
-    clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -I"$root" \
+    clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -I"$root" -DNIBRIG_SOURCE_DIR="\"$root\"" \
       "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib) -o "$out/$name"
   done
 }

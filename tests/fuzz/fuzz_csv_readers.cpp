@@ -16,6 +16,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/paper_drawing.hpp"
 #include "model/io/paper_friction.hpp"
+#include "model/io/paper_recording.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/triplets.hpp"
 #include "tests/fuzz/scratch_folder.hpp"
@@ -54,8 +55,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const fs::path* file : {&friction, &vibration, &drawing, &triplets, &lagunas}) {
     write_file(*file, data, size);
   }
-  expect_only_format_errors(friction, io::read_paper_friction);
-  expect_only_format_errors(vibration, io::read_paper_vibration);
+  // The readers are overloaded (by name, or with what the caller states): lambdas pick one each.
+  expect_only_format_errors(friction, [](const fs::path& f) { return io::read_paper_friction(f); });
+  expect_only_format_errors(vibration, [](const fs::path& f) { return io::read_paper_vibration(f); });
+  // Any file name: the format from the header, the tool and surface stated (nibrig measure --tool).
+  const fs::path unnamed = dir / "recording.csv";
+  write_file(unnamed, data, size);
+  expect_only_format_errors(unnamed, io::paper_format_from_header);
+  const io::StatedRecording stated{"mixA", "note", 2.2, 13.7};
+  expect_only_format_errors(unnamed, [&](const fs::path& f) { return io::read_paper_vibration(f, stated); });
+  expect_only_format_errors(unnamed, [&](const fs::path& f) { return io::read_paper_friction(f, stated); });
   expect_only_format_errors(drawing, io::read_paper_drawing);
   expect_only_format_errors(triplets, io::read_triplets);
   expect_only_format_errors(triplets, io::read_triplet_csv);
