@@ -35,4 +35,14 @@ inline bool same_grid(const VelocitySpectrum& a, const VelocitySpectrum& b,
          same(a.speeds_m_s, b.speeds_m_s, speed_tolerance_m_s);
 }
 
+// The row of `spectrum` whose speed is nearest to v (the first of equally near ones); 0 for a
+// spectrum without speeds.
+inline std::size_t nearest_speed_row(const VelocitySpectrum& spectrum, double v) {
+  std::size_t nearest = 0;
+  for (std::size_t m = 0; m < spectrum.speeds_m_s.size(); ++m)
+    if (std::abs(spectrum.speeds_m_s[m] - v) < std::abs(spectrum.speeds_m_s[nearest] - v))
+      nearest = m;
+  return nearest;
+}
+
 }  // namespace nibrig::model::io

@@ -1,5 +1,7 @@
 #include "model/space/bootstrap.hpp"
 
+#include <boost/math/distributions/chi_squared.hpp>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
@@ -84,6 +86,8 @@ ConfidenceRegion summarise(const std::vector<Eigen::MatrixXd>& aligned, Eigen::I
 
 PlaneEllipse plane_ellipse(const ConfidenceRegion& region, std::size_t level, Eigen::Index axis_x,
                            Eigen::Index axis_y) {
+  if (region.covariance.rows() < 2)
+    return {region.radius.at(level) * std::sqrt(region.covariance(axis_x, axis_x)), 0.0, 0.0};
   Eigen::Matrix2d c;
   c << region.covariance(axis_x, axis_x), region.covariance(axis_x, axis_y),
       region.covariance(axis_y, axis_x), region.covariance(axis_y, axis_y);
@@ -141,6 +145,14 @@ double mean_per_axis_sd(const BootstrapResult& result) {
   for (const auto& r : result.regions)
     sum += std::sqrt(r.covariance.trace() / static_cast<double>(r.covariance.rows()));
   return sum / static_cast<double>(result.regions.size());
+}
+
+ConfidenceRegion gaussian_region(const Eigen::VectorXd& mean, const Eigen::MatrixXd& covariance,
+                                 const std::vector<double>& levels) {
+  ConfidenceRegion region{mean, covariance, {}};
+  const boost::math::chi_squared chi2(static_cast<double>(covariance.rows()));
+  for (double l : levels) region.radius.push_back(std::sqrt(boost::math::quantile(chi2, l)));
+  return region;
 }
 
 }  // namespace nibrig::model::space

@@ -46,8 +46,14 @@ double mean_per_axis_sd(const BootstrapResult& result);
 struct PlaneEllipse {
   double semi_axis_1 = 0.0, semi_axis_2 = 0.0, angle_rad = 0.0;
 };
+// A 1-D region gives its interval as a flat ellipse along the axis (semi-axis 2 and angle 0).
 PlaneEllipse plane_ellipse(const ConfidenceRegion& region, std::size_t level, Eigen::Index axis_x = 0,
                            Eigen::Index axis_y = 1);
+
+// The region of a Gaussian placement (descriptor_map.hpp) at each level: its covariance with the
+// χ² radius of its dimensions, so that its ellipses compare with the bootstrap's.
+ConfidenceRegion gaussian_region(const Eigen::VectorXd& mean, const Eigen::MatrixXd& covariance,
+                                 const std::vector<double>& levels);
 
 // Responses are resampled as a whole: the multiset of all (triplet, answer) pairs is drawn with
 // replacement to its own size, so triplets with more responses keep their weight. Throws what

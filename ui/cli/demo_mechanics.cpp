@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 
+#include "model/modal/tip_driven_modes.hpp"
 #include "model/io/acceleration_trace.hpp"
 #include "model/mechanics/beam_theory.hpp"
 #include "model/mechanics/design_model.hpp"
@@ -22,17 +23,6 @@ namespace nibrig::ui::cli {
 namespace {
 
 namespace mech = model::mechanics;
-
-// Bending modes in the thickness direction are the ones a force along z at the tip drives; the
-// in-plane and torsion modes of a symmetric bar have (numerically) no tip participation along z.
-std::vector<double> bending_frequencies(const model::modal::ModalModel& modal, std::size_t n) {
-  double largest = 0;
-  for (double b : modal.input) largest = std::max(largest, std::abs(b));
-  std::vector<double> f;
-  for (std::size_t i = 0; i < modal.size() && f.size() < n; ++i)
-    if (std::abs(modal.input[i]) > 1e-3 * largest) f.push_back(modal.omega[i] / (2 * M_PI));
-  return f;
-}
 
 void bar_against_beam_theory(const mech::MaterialTable& materials, const std::filesystem::path& dir,
                              std::ostringstream& summary) {
@@ -66,7 +56,7 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
     for (double size : {0.008, 0.004, 0.002}) {
       design.mesh_size = size;
       const auto model = mech::build_design_model(design, table);
-      const auto f = bending_frequencies(model.modal, 3);
+      const auto f = model::modal::tip_driven_frequencies_hz(model.modal, 3);
       csv << material->poisson_ratio << ',' << size * 1e3 << ',' << model.mesh.nodes.cols() << ','
           << model.free_dofs;
       for (double x : f) csv << ',' << x;

@@ -16,15 +16,6 @@ namespace {
 namespace design = model::design;
 namespace forcing = model::forcing;
 
-// The measured row nearest in speed to v.
-std::size_t nearest_speed(const model::io::VelocitySpectrum& spectrum, double v) {
-  std::size_t nearest = 0;
-  for (std::size_t m = 0; m < spectrum.speeds_m_s.size(); ++m)
-    if (std::abs(spectrum.speeds_m_s[m] - v) < std::abs(spectrum.speeds_m_s[nearest] - v))
-      nearest = m;
-  return nearest;
-}
-
 }  // namespace
 
 std::string corner_name(const design::DesignPoint& corner) {
@@ -62,7 +53,7 @@ void write_interpolation_figure(const forcing::ForcingModel& model,
   figure.title = fmt::format("{} on {}: predicted vs {}", design::label(point), surface, label);
   for (std::size_t s = 0; s < predicted.speeds_m_s.size(); ++s) {
     const double v = predicted.speeds_m_s[s];
-    const std::size_t m = nearest_speed(measured, v);
+    const std::size_t m = model::io::nearest_speed_row(measured, v);
     report::LinePlot panel;
     panel.title = std::abs(measured.speeds_m_s[m] - v) < 5e-4
                       ? fmt::format("{:.0f} mm/s", v * 1e3)

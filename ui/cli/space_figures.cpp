@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <map>
 
@@ -27,12 +26,6 @@ report::Ellipse ellipse_at(const Eigen::VectorXd& centre, const space::PlaneElli
   return out;
 }
 
-// The plane ellipse of a region; a 1-D region becomes an interval drawn as a flat ellipse.
-space::PlaneEllipse plane_of(const space::ConfidenceRegion& r, std::size_t level) {
-  if (r.covariance.rows() >= 2) return space::plane_ellipse(r, level);
-  return {r.radius.at(level) * std::sqrt(r.covariance(0, 0)), 0.0, 0.0};
-}
-
 }  // namespace
 
 void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& placed,
@@ -53,10 +46,9 @@ void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& 
     report::ScatterPoint p{s.stimuli[i], q(0), one_d ? 0.0 : q(1), group_of(s.stimuli[i]), {}, false};
     if (!s.regions.empty())
       for (std::size_t k = 0; k < s.region_levels.size(); ++k)
-        p.regions.push_back(ellipse_at(q, plane_of(s.regions[i], k), one_d));
+        p.regions.push_back(ellipse_at(q, space::plane_ellipse(s.regions[i], k), one_d));
     plot.points.push_back(p);
   }
-  const auto dims = static_cast<double>(s.coordinates.rows());
   for (const auto& t : placed) {
     report::ScatterPoint p{t.name, t.placement.mean(0), one_d ? 0.0 : t.placement.mean(1),
                            t.group.empty() ? group_of(t.name) : t.group, {}, true};
@@ -64,13 +56,10 @@ void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& 
       plot.points.push_back(p);
       continue;
     }
-    // A Gaussian placement: the level-k ellipse has the χ² radius of the space's dimensions.
-    space::ConfidenceRegion region{t.placement.mean, t.placement.covariance, {}};
-    for (double l : levels)
-      region.radius.push_back(
-          std::sqrt(boost::math::quantile(boost::math::chi_squared(dims), l)));
+    const space::ConfidenceRegion region =
+        space::gaussian_region(t.placement.mean, t.placement.covariance, levels);
     for (std::size_t k = 0; k < levels.size(); ++k)
-      p.regions.push_back(ellipse_at(t.placement.mean, plane_of(region, k), one_d));
+      p.regions.push_back(ellipse_at(t.placement.mean, space::plane_ellipse(region, k), one_d));
     plot.points.push_back(p);
   }
   report::write_scatter_plot(plot, png);

@@ -72,6 +72,23 @@ TEST(SpaceBootstrap, MeanPerAxisSdOfHandMadeRegions) {
   EXPECT_EQ(mean_per_axis_sd(BootstrapResult{}), 0.0);
 }
 
+TEST(SpaceBootstrap, AGaussianPlacementsRegionHasTheChiSquaredRadius) {
+  // With 2 degrees of freedom the χ² quantile has a closed form, -2 ln(1 - p).
+  const ConfidenceRegion r =
+      gaussian_region(Eigen::Vector2d(1, 2), Eigen::Matrix2d{{0.25, 0.0}, {0.0, 1.0}}, {0.68, 0.95});
+  ASSERT_EQ(r.radius.size(), 2u);
+  EXPECT_NEAR(r.radius[0], std::sqrt(-2 * std::log(1 - 0.68)), 1e-9);
+  EXPECT_NEAR(r.radius[1], std::sqrt(-2 * std::log(1 - 0.95)), 1e-9);
+  EXPECT_NEAR(plane_ellipse(r, 1).semi_axis_1, r.radius[1] * 1.0, 1e-12);  // along y, sd 1
+  EXPECT_NEAR(plane_ellipse(r, 1).semi_axis_2, r.radius[1] * 0.5, 1e-12);
+  // In one dimension the 95 % interval is ±1.96 sd: a flat ellipse along the axis.
+  const ConfidenceRegion line = gaussian_region(Eigen::VectorXd::Constant(1, 0.0),
+                                                Eigen::MatrixXd::Constant(1, 1, 4.0), {0.95});
+  const PlaneEllipse e = plane_ellipse(line, 0);
+  EXPECT_NEAR(e.semi_axis_1, 1.959964 * 2.0, 1e-5);
+  EXPECT_EQ(e.semi_axis_2, 0.0);
+}
+
 TEST(SpaceBootstrap, RejectsBadOptions) {
   const SpaceProblem study = testing::every_triplet_judged(testing::random_truth(2, 5, 1), 2, 1);
   const Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(2, 5);
