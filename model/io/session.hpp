@@ -6,11 +6,27 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace nibrig::model::io {
+
+// How a capture went: which rig recorded it and what went wrong on the way. The capture keeps it
+// current in session.json while recording (SessionWriter::update_capture), so a capture cut short
+// still says how much it kept and why it ended.
+struct CaptureRecord {
+  std::string rig;                    // "simulated rig, seed 1", "USB rig controller NR-0001"
+  double seconds = 0.0;               // acceleration recorded, in seconds
+  std::uint64_t frames = 0;           // sensor frames received
+  std::uint64_t dropped_frames = 0;   // lost on the way (gaps in the sequence numbers)
+  std::uint64_t saturated_frames = 0; // a force channel at its converter's end
+  std::uint64_t fault_frames = 0;     // encoder or motor fault, watchdog stop
+  double alignment_error_ms = 0.0;    // sensor frames against acceleration, after the time base
+  std::string ended_because;          // empty while recording
+};
 
 struct SessionInfo {
   std::string tool, surface;
@@ -30,6 +46,7 @@ struct SessionInfo {
   std::string speed_profile;  // e.g. "sweep 17-250 mm/s, 3 s period"
   std::string notes;
   std::string created_utc;  // ISO 8601; the writer fills it in when empty
+  std::optional<CaptureRecord> capture;  // key "capture"; absent in sessions not from a capture
 };
 
 // The files inside a session folder.
@@ -58,6 +75,10 @@ class SessionWriter {
   void append_speed(std::span<const float> samples_m_s);
   void append_normal_force(std::span<const float> samples_N);
   void append_tangential_force(std::span<const float> samples_N);
+
+  // Rewrites session.json (atomically) with `record` as its "capture": how the capture is going.
+  // Throws std::runtime_error on a write failure and std::logic_error after finish().
+  void update_capture(const CaptureRecord& record);
 
   // Closes the streams, records the frame counts in session.json and renames <folder>.partial to
   // <folder> atomically; fails (std::runtime_error) without replacing anything if <folder> exists.

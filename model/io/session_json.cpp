@@ -82,6 +82,17 @@ nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4
       {"notes", info.notes},
       {"created_utc", info.created_utc},
   };
+  if (info.capture) {
+    const CaptureRecord& c = *info.capture;
+    json["capture"] = {{"rig", c.rig},
+                       {"seconds", c.seconds},
+                       {"frames", c.frames},
+                       {"dropped_frames", c.dropped_frames},
+                       {"saturated_frames", c.saturated_frames},
+                       {"fault_frames", c.fault_frames},
+                       {"alignment_error_ms", c.alignment_error_ms},
+                       {"ended_because", c.ended_because}};
+  }
   if (frames != nullptr) {
     nlohmann::json counts = nlohmann::json::object();
     for (std::size_t k = 0; k < kStreams.size(); ++k) counts[kStreams[k]] = (*frames)[k];
@@ -116,6 +127,24 @@ Parsed from_json(const nlohmann::json& json, const std::filesystem::path& file) 
   info.notes = string_member(json, "notes", file, "");
   info.created_utc = string_member(json, "created_utc", file, "");
   if (auto problem = check(info)) throw FormatError(file, place(problem->field), problem->what);
+  if (const auto it = json.find("capture"); it != json.end()) {
+    as_object(*it, file, "capture");
+    CaptureRecord c;
+    const auto count = [&](const char* key) {
+      return static_cast<std::uint64_t>(
+          as_integer(member(*it, key, file, "capture"), file, member_path("capture", key), 0,
+                     INT64_MAX));
+    };
+    c.rig = string_member(*it, "rig", file, "capture");
+    c.seconds = number_member(*it, "seconds", file, "capture");
+    c.frames = count("frames");
+    c.dropped_frames = count("dropped_frames");
+    c.saturated_frames = count("saturated_frames");
+    c.fault_frames = count("fault_frames");
+    c.alignment_error_ms = number_member(*it, "alignment_error_ms", file, "capture");
+    c.ended_because = string_member(*it, "ended_because", file, "capture");
+    info.capture = c;
+  }
 
   if (const auto it = json.find("frames"); it != json.end()) {
     as_object(*it, file, "frames");

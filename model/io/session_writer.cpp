@@ -170,6 +170,12 @@ void SessionWriter::append_tangential_force(std::span<const float> samples_N) {
   append(*streams_[3], samples_N);
 }
 
+void SessionWriter::update_capture(const CaptureRecord& record) {
+  if (finished_) throw std::logic_error(partial_.string() + ": update_capture after finish()");
+  info_.capture = record;
+  write_file_atomically(partial_ / kSessionJson, dump_json(session_json::to_json(info_, nullptr)));
+}
+
 void SessionWriter::finish() {
   if (finished_) throw std::logic_error(folder_.string() + ": finish() called twice");
   finished_ = true;

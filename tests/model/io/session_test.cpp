@@ -121,6 +121,54 @@ TEST(Session, WriteFinishReadRoundTrip) {
   expect_stream(session.tangential_force_N, 3, kSlowBlock, 25);
 }
 
+// A capture keeps its record current while recording: a .partial folder says how far it got, and the
+// finished session keeps the last record. A session without one reads with none.
+TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
+  const auto dir = test::scratch_dir("session_capture_record");
+  const auto folder = dir / "rig";
+  CaptureRecord record;
+  record.rig = "simulated rig, seed 3";
+  record.seconds = 0.25;
+  record.frames = 250;
+  record.dropped_frames = 2;
+  record.saturated_frames = 7;
+  record.fault_frames = 1;
+  record.alignment_error_ms = 0.125;
+  {
+    SessionWriter writer(folder, rig_info());
+    for (std::size_t b = 0; b < 3; ++b) write_blocks(writer, b);
+    writer.update_capture(record);
+    const Session partial = read_session(dir / "rig.partial");
+    ASSERT_TRUE(partial.info.capture.has_value());
+    EXPECT_EQ(partial.info.capture->frames, 250u);
+    EXPECT_EQ(partial.info.capture->ended_because, "");  // still recording when it was written
+    record.ended_because = "profile finished";
+    record.frames = 300;
+    writer.update_capture(record);
+    writer.finish();
+    EXPECT_THROW(writer.update_capture(record), std::logic_error);
+  }
+  const Session session = read_session(folder);
+  ASSERT_TRUE(session.info.capture.has_value());
+  const CaptureRecord& read = *session.info.capture;
+  EXPECT_EQ(read.rig, "simulated rig, seed 3");
+  EXPECT_EQ(read.seconds, 0.25);
+  EXPECT_EQ(read.frames, 300u);
+  EXPECT_EQ(read.dropped_frames, 2u);
+  EXPECT_EQ(read.saturated_frames, 7u);
+  EXPECT_EQ(read.fault_frames, 1u);
+  EXPECT_EQ(read.alignment_error_ms, 0.125);
+  EXPECT_EQ(read.ended_because, "profile finished");
+
+  const auto plain = dir / "plain";
+  {
+    SessionWriter writer(plain, rig_info());
+    write_blocks(writer, 0);
+    writer.finish();
+  }
+  EXPECT_FALSE(read_session(plain).info.capture.has_value());
+}
+
 // The real thing: a capture process killed with SIGKILL while it writes. Everything it reported as
 // written before the kill must be readable from the .partial folder, with no partial block.
 TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
