@@ -77,6 +77,18 @@ FrictionAnalysis analyze_friction(const io::FrictionRecording& recording,
   return analysis;
 }
 
+namespace {
+// Mean of a speed signal (sample i at i / rate) over [begin_s, end_s); 0 when none falls inside.
+double mean_speed_over(const std::vector<double>& speed, double rate, double begin_s, double end_s) {
+  const auto first = static_cast<std::size_t>(std::max(0.0, std::ceil(begin_s * rate)));
+  const auto last = std::min(speed.size(), static_cast<std::size_t>(std::max(0.0, std::ceil(end_s * rate))));
+  if (first >= last) return 0.0;
+  double sum = 0.0;
+  for (std::size_t i = first; i < last; ++i) sum += speed[i];
+  return sum / static_cast<double>(last - first);
+}
+}  // namespace
+
 VibrationAnalysis analyze_vibration(const io::VibrationRecording& recording,
                                     const measure::ThresholdCurve& threshold,
                                     const AnalysisOptions& options) {
@@ -154,9 +166,35 @@ SessionAnalysis analyze_session(const io::Session& session,
     acceleration.reserve(session.acceleration.size());
     for (float a : session.acceleration) acceleration.push_back(static_cast<double>(a) * to_m_s2);
     const std::vector<double> speed(session.speed_m_s.begin(), session.speed_m_s.end());
-    vibration.spectrum = measure::spectrum_by_speed(
-        acceleration, session.info.acceleration_rate_hz, speed, session.info.speed_rate_hz,
-        options.session_speed_edges_m_s, options.spectrogram, options.binning);
+    // A capture that held speeds as the paper's protocol does is analysed as the paper analysed its
+    // steps (the catalog's method, so the two compare bin for bin); anything else is binned by the
+    // measured speed.
+    const auto steps = measure::steps_from_profile(
+        session.info.profile_time_s, session.info.profile_speed_m_s,
+        session.info.acceleration_rate_hz, acceleration.size(), options.steps);
+    if (!steps.steps.empty()) {
+      for (const auto& step : steps.steps) {
+        const double measured = mean_speed_over(speed, session.info.speed_rate_hz,
+                                                step.begin / session.info.acceleration_rate_hz,
+                                                step.end / session.info.acceleration_rate_hz);
+        if (std::abs(measured - step.speed_m_s) > 0.05 * step.speed_m_s + 0.001) {
+          vibration.warnings.push_back(
+              "the hold at " + std::to_string(step.speed_m_s * 1e3) + " mm/s (block " +
+              std::to_string(step.block + 1) + ") measured " + std::to_string(measured * 1e3) +
+              " mm/s on the encoder: the motor did not follow the profile");
+        }
+      }
+      for (const auto& warning : vibration.warnings)
+        spdlog::warn("{}: {}", session.folder.string(), warning);
+      vibration.contact_begin = steps.contact_begin;
+      vibration.steps = steps.steps;
+      vibration.spectrum = measure::spectrum_per_step(
+          acceleration, session.info.acceleration_rate_hz, steps, options.binning);
+    } else {
+      vibration.spectrum = measure::spectrum_by_speed(
+          acceleration, session.info.acceleration_rate_hz, speed, session.info.speed_rate_hz,
+          options.session_speed_edges_m_s, options.spectrogram, options.binning);
+    }
     vibration.descriptors =
         measure::compute_vibration_descriptors(vibration.spectrum, threshold, options.max_bands);
     vibration.spectrogram = measure::compute_spectrogram(

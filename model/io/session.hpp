@@ -44,6 +44,10 @@ struct SessionInfo {
     double lever_factor = 1.0;
   } calibration;
   std::string speed_profile;  // e.g. "sweep 17-250 mm/s, 3 s period"
+  // What the motor was asked to do, as breakpoints joined by straight lines (a step: two points at
+  // one time); empty when unknown. Key "speed_profile_points": {"time_s": [...], "speed_mm_s": [...]}.
+  // Holds of one speed let a measurement analyse a capture step by step as the paper did.
+  std::vector<double> profile_time_s, profile_speed_m_s;
   std::string notes;
   std::string created_utc;  // ISO 8601; the writer fills it in when empty
   std::optional<CaptureRecord> capture;  // key "capture"; absent in sessions not from a capture

@@ -49,6 +49,20 @@ std::optional<Problem> check(const SessionInfo& info) {
     return p;
   }
   if (auto p = check_positive(info.calibration.lever_factor, "calibration.lever_factor")) return p;
+  if (info.profile_time_s.size() != info.profile_speed_m_s.size()) {
+    return Problem{"speed_profile_points", "expected as many speeds as times, found " +
+                                               std::to_string(info.profile_speed_m_s.size()) +
+                                               " and " + std::to_string(info.profile_time_s.size())};
+  }
+  for (std::size_t i = 0; i < info.profile_time_s.size(); ++i) {
+    const double t = info.profile_time_s[i], v = info.profile_speed_m_s[i];
+    if (!std::isfinite(t) || !std::isfinite(v) || v < 0.0 ||
+        (i > 0 && t < info.profile_time_s[i - 1]) || (i == 0 && t != 0.0)) {
+      return Problem{"speed_profile_points",
+                     "point " + std::to_string(i + 1) +
+                         ": expected times from 0 that never decrease and speeds >= 0"};
+    }
+  }
   return std::nullopt;
 }
 
@@ -82,6 +96,11 @@ nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4
       {"notes", info.notes},
       {"created_utc", info.created_utc},
   };
+  if (!info.profile_time_s.empty()) {
+    std::vector<double> mm_s;
+    for (double v : info.profile_speed_m_s) mm_s.push_back(v * 1e3);
+    json["speed_profile_points"] = {{"time_s", info.profile_time_s}, {"speed_mm_s", mm_s}};
+  }
   if (info.capture) {
     const CaptureRecord& c = *info.capture;
     json["capture"] = {{"rig", c.rig},
@@ -127,6 +146,15 @@ Parsed from_json(const nlohmann::json& json, const std::filesystem::path& file) 
   info.notes = string_member(json, "notes", file, "");
   info.created_utc = string_member(json, "created_utc", file, "");
   if (auto problem = check(info)) throw FormatError(file, place(problem->field), problem->what);
+  if (const auto it = json.find("speed_profile_points"); it != json.end()) {
+    as_object(*it, file, "speed_profile_points");
+    info.profile_time_s = as_number_array(member(*it, "time_s", file, "speed_profile_points"), file,
+                                          "speed_profile_points.time_s");
+    info.profile_speed_m_s = as_number_array(
+        member(*it, "speed_mm_s", file, "speed_profile_points"), file, "speed_profile_points.speed_mm_s");
+    for (double& v : info.profile_speed_m_s) v *= 1e-3;
+    if (auto problem = check(info)) throw FormatError(file, place(problem->field), problem->what);
+  }
   if (const auto it = json.find("capture"); it != json.end()) {
     as_object(*it, file, "capture");
     CaptureRecord c;

@@ -420,3 +420,40 @@ StepSegmentation segment_speed_steps(std::span<const double> x, double fs, const
 }
 
 }  // namespace nibrig::model::measure
+
+namespace nibrig::model::measure {
+
+StepSegmentation steps_from_profile(std::span<const double> time_s, std::span<const double> speed_m_s,
+                                    double sample_rate_hz, std::size_t signal_length,
+                                    const StepProtocol& protocol) {
+  if (time_s.size() != speed_m_s.size())
+    throw std::invalid_argument("a speed profile needs one speed per time");
+  if (!(sample_rate_hz > 0.0) || !std::isfinite(sample_rate_hz))
+    throw std::invalid_argument("the sample rate must be positive");
+  StepSegmentation result;
+  const auto window = static_cast<std::size_t>(std::llround(protocol.window_length_s * sample_rate_hz));
+  std::vector<double> seen;  // speeds so far, to count sweeps
+  std::size_t block = 0;
+  for (std::size_t i = 0; i + 1 < time_s.size(); ++i) {
+    const double v = speed_m_s[i];
+    if (!(v > 0.0) || speed_m_s[i + 1] != v) continue;
+    if (time_s[i + 1] - time_s[i] < protocol.window_offset_s + protocol.window_length_s) continue;
+    const auto begin =
+        static_cast<std::size_t>(std::llround((time_s[i] + protocol.window_offset_s) * sample_rate_hz));
+    const std::size_t this_block = block++;
+    if (begin + window > signal_length) continue;
+    SpeedStep step;
+    step.begin = begin;
+    step.end = begin + window;
+    step.speed_m_s = v;
+    step.block = this_block;
+    step.sweep = static_cast<std::size_t>(std::count(seen.begin(), seen.end(), v));
+    seen.push_back(v);
+    if (result.steps.empty())
+      result.contact_begin = static_cast<std::size_t>(std::llround(time_s[i] * sample_rate_hz));
+    result.steps.push_back(step);
+  }
+  return result;
+}
+
+}  // namespace nibrig::model::measure

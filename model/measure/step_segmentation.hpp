@@ -75,4 +75,16 @@ struct StepSegmentation {
 StepSegmentation segment_speed_steps(std::span<const double> acceleration, double sample_rate_hz,
                                      const StepProtocol& protocol);
 
+// The steps of a recording whose speed profile is known (a rig capture stores what the motor was
+// asked to do: breakpoints joined by straight lines, a step being two points at one time). Every
+// hold of one positive speed at least window_offset_s + window_length_s long gives a step whose
+// window starts window_offset_s into the hold (the motor has settled by then) and lasts
+// window_length_s; `sweep` counts the holds of the same speed, `block` numbers the holds. Windows
+// that do not fit in the `signal_length` samples recorded (a capture cut short) are left out. No
+// step is an empty result, not an error. Throws std::invalid_argument for arrays of different
+// lengths or a non-positive rate.
+StepSegmentation steps_from_profile(std::span<const double> time_s, std::span<const double> speed_m_s,
+                                    double sample_rate_hz, std::size_t signal_length,
+                                    const StepProtocol& protocol);
+
 }  // namespace nibrig::model::measure
