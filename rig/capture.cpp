@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
@@ -81,7 +82,7 @@ CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const Captu
   const RigDescription& d = rig.description();
   if (profile.max_speed_m_s() > d.max_speed_m_s) {
     throw std::invalid_argument("the profile asks for " + mm_s(profile.max_speed_m_s()) +
-                                " mm/s; the motor follows 0-" + mm_s(d.max_speed_m_s) + " mm/s");
+                                " mm/s; the motor follows 0-" + std::to_string(std::lround(d.max_speed_m_s * 1e3)) + " mm/s");
   }
   model::io::SessionWriter writer(options.folder, session_info_for(d, profile, options));
   model::io::CaptureRecord record = model::io::CaptureRecord{};

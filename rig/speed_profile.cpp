@@ -71,7 +71,7 @@ SpeedProfile fit_to_duration(const SpeedProfile& profile, double seconds) {
     for (const auto& p : profile.points()) {
       const double t = start + p.time_s;
       if (t > seconds) {
-        points.push_back({seconds, profile.speed_at(seconds - start)});
+        if (points.back().time_s < seconds) points.push_back({seconds, profile.speed_at(seconds - start)});
         break;
       }
       // Where one repetition ends and the next begins at the same speed, one point suffices.

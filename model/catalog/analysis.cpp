@@ -148,10 +148,18 @@ SessionAnalysis analyze_session(const io::Session& session,
       load = sum / static_cast<double>(session.normal_force_N.size());
     }
     friction.normal_load_N = load;
-    friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N,
-                                                 friction.sample_rate_hz, load, options.sweep);
-    friction.upstream_mu = std::nan("");
-    analysis.friction = std::move(friction);
+    // The Coulomb fit finds sliding as a step of the tangential force out of rest. A capture that
+    // slides from its first instant (a sweep) has no such step: the session is still measured for
+    // its vibration, and the reason friction was not is said.
+    try {
+      friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N,
+                                                   friction.sample_rate_hz, load, options.sweep);
+      friction.upstream_mu = std::nan("");
+      analysis.friction = std::move(friction);
+    } catch (const std::runtime_error& e) {
+      analysis.warnings.push_back(std::string("friction not measured: ") + e.what());
+      spdlog::warn("{}: friction not measured: {}", session.folder.string(), e.what());
+    }
   }
 
   if (!session.acceleration.empty() && !session.speed_m_s.empty()) {

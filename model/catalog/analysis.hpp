@@ -68,6 +68,7 @@ struct SessionAnalysis {
   bool complete = true;
   std::optional<FrictionAnalysis> friction;
   std::optional<VibrationAnalysis> vibration;
+  std::vector<std::string> warnings;  // what could not be measured, and why
 };
 
 SessionAnalysis analyze_session(const io::Session& session,

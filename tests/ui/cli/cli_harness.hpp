@@ -20,8 +20,9 @@ extern char** environ;
 
 namespace nibrig::test {
 
-// The exit code of `nibrig args...`; 128 + the signal when it was killed by one.
-inline int run_cli(std::vector<std::string> args) {
+// Starts `nibrig args...` without waiting: its process id, for a test that signals it, then
+// wait_cli(pid).
+inline pid_t start_cli(std::vector<std::string> args) {
   args.insert(args.begin(), NIBRIG_CLI_BINARY);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -33,12 +34,20 @@ inline int run_cli(std::vector<std::string> args) {
   if (const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, nullptr, nullptr, argv.data(), environ))
     throw std::runtime_error(std::string("cannot start ") + NIBRIG_CLI_BINARY + ": error " +
                              std::to_string(e));
+  return pid;
+}
+
+// The exit code of a started `nibrig`; 128 + the signal when it was killed by one.
+inline int wait_cli(pid_t pid) {
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) throw std::runtime_error("waitpid failed for " + std::string(NIBRIG_CLI_BINARY));
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return 128 + WTERMSIG(status);
 }
+
+// The exit code of `nibrig args...`; 128 + the signal when it was killed by one.
+inline int run_cli(std::vector<std::string> args) { return wait_cli(start_cli(std::move(args))); }
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {
   std::ifstream in(path);

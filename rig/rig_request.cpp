@@ -1,0 +1,64 @@
+#include "rig/rig_request.hpp"
+
+#include <stdexcept>
+
+#include "model/design/tool_sound.hpp"
+#include "rig/simulated_rig.hpp"
+
+namespace nibrig::rig {
+namespace {
+
+// The sliding friction the simulated arm feels: the catalog's μ for the pairing, or (for a design
+// point, or a pairing measured without friction) the mean μ of the catalog's tools on that
+// surface, or 0.3 when the surface has none.
+double friction_for(const model::io::Catalog& catalog, const std::string& tool,
+                    const std::string& surface) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& p : catalog.pairings) {
+    if (p.surface != surface || !p.friction) continue;
+    if (p.tool == tool) return p.friction->mu;
+    sum += p.friction->mu;
+    ++count;
+  }
+  return count > 0 ? sum / count : 0.3;
+}
+
+}  // namespace
+
+std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSounds& sounds) {
+  switch (request.kind) {
+    case RigKind::simulated: {
+      if (request.tool.empty() || request.surface.empty())
+        throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
+      sounds.check(request.tool, request.surface);
+      SimulatedRigSettings settings;
+      settings.normal_load_N = request.load_N;
+      settings.seed = request.seed;
+      settings.speedup = request.speedup;
+      settings.mu = friction_for(sounds.catalog(), request.tool, request.surface);
+      return std::make_unique<SimulatedRig>(settings, sounds.sound(request.tool, request.surface),
+                                            request.tool, request.surface);
+    }
+    case RigKind::replay:
+      throw std::invalid_argument("the replay rig is not built yet");
+    case RigKind::usb:
+      throw std::invalid_argument("the USB rig is not built yet");
+  }
+  throw std::logic_error("unknown rig kind");
+}
+
+SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds) {
+  if (seconds && !(*seconds > 0.0))
+    throw std::invalid_argument("a capture lasts a positive number of seconds");
+  if (name_or_file == "steps") return paper_steps(seconds.value_or(42.0));
+  if (name_or_file == "sweep") return study_sweep(seconds.value_or(6.0));
+  const std::filesystem::path file(name_or_file);
+  if (!std::filesystem::exists(file))
+    throw std::invalid_argument("--profile " + name_or_file +
+                                ": expected steps, sweep or a CSV file (time_s,speed_mm_s); no such file");
+  const SpeedProfile profile = read_speed_profile(file);
+  return seconds ? fit_to_duration(profile, *seconds) : profile;
+}
+
+}  // namespace nibrig::rig

@@ -1,0 +1,50 @@
+// A rig as a person asks for it — "the simulated rig with vero2 on office", "the USB controller
+// NR-0001 with the accelerometer on input 1 of Scarlett", "replay this session" — opened for every
+// face alike (the CLI, the panel, the experiment runner), with its speed profile.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "rig/rig.hpp"
+#include "rig/speed_profile.hpp"
+
+namespace nibrig::model::design {
+class ToolSounds;
+}
+
+namespace nibrig::rig {
+
+enum class RigKind { simulated, usb, replay };
+
+struct RigRequest {
+  RigKind kind = RigKind::simulated;
+  // What is mounted: required for the simulated rig (it simulates it); for the others, what the
+  // session will say (a replayed session knows its own).
+  std::string tool, surface;
+  double load_N = 2.2;
+  std::uint64_t seed = 1;  // the simulated rig's noise
+  // 1 = real time; k > 1 = k times faster; 0 = as fast as it computes (simulated and replay rigs).
+  double speedup = 1.0;
+  std::filesystem::path replay;  // a session folder, or a paper recording (replay rig)
+  std::string usb_serial;        // empty: the only controller on the bus
+  std::string input_device;      // the accelerometer's audio input (USB rig)
+  unsigned input_channel = 1;    // 1-based
+  double accelerometer_m_s2_per_full_scale = 49.05;
+};
+
+// Opens the rig. `sounds` makes the simulated tool (a catalog pairing or a design point) and gives
+// the catalog's μ for it; it is used only by the simulated rig. Throws std::invalid_argument for a
+// request that cannot be met (naming what: an unknown tool, a missing session) and
+// std::runtime_error when a device is missing (naming what was found instead).
+std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSounds& sounds);
+
+// "steps" (the paper's protocol: 3 sweeps of six 2 s steps over 17-250 mm/s, 42 s), "sweep" (the
+// user study's 3 s sweep, two periods) or a CSV file (rig/speed_profile.hpp); `seconds` cuts or
+// repeats it. Throws std::invalid_argument / FormatError naming the profile.
+SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds);
+
+}  // namespace nibrig::rig

@@ -1,0 +1,157 @@
+// `nibrig rig`: the exact commands of issue 16, a capture killed with SIGKILL and one stopped with
+// Ctrl-C, and the clear lines bad requests get.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "model/io/session.hpp"
+#include "tests/support/test_paths.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::test {
+namespace {
+
+// Waits (up to 60 s) until the capture record of a .partial session says `seconds` are recorded.
+bool wait_for_recorded(const std::filesystem::path& partial, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      const auto json = read_json(partial / "session.json");
+      if (json.contains("capture") && json["capture"]["seconds"].get<double>() >= seconds) return true;
+    } catch (const std::exception&) {
+      // Not written yet: the writer replaces the file atomically, so it is whole or absent.
+    }
+  }
+  return false;
+}
+
+// The command as the issue writes it, then measured as any session.
+TEST(RigCli, SimulatedCaptureOfTheIssueIsASessionThatMeasureReads) {
+  const auto dir = scratch_dir("rig_cli_capture");
+  const auto session = dir / "vero2_office";
+  ASSERT_EQ(run_cli({"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office",
+                     "--profile", "sweep", "--seconds", "6", "-o", session.string()}),
+            0);
+  const model::io::Session read = model::io::read_session(session);
+  EXPECT_TRUE(read.complete);
+  EXPECT_EQ(read.speed_m_s.size(), 6000u);
+  EXPECT_EQ(read.acceleration.size(), 6u * 48000u);
+  ASSERT_TRUE(read.info.capture.has_value());
+  EXPECT_EQ(read.info.capture->ended_because, "profile finished");
+  EXPECT_EQ(read.info.capture->dropped_frames, 0u);
+  EXPECT_EQ(read.info.tool, "vero2");
+  ASSERT_EQ(run_cli({"measure", session.string(), "-o", (dir / "measured.json").string()}), 0);
+  const auto measured = read_json(dir / "measured.json");
+  ASSERT_TRUE(measured.contains("speeds_mm_s")) << measured.dump().substr(0, 300);
+  EXPECT_GE(measured["speeds_mm_s"].size(), 5u);  // the sweep covers 17-250 mm/s in 6 bins
+}
+
+// The real thing: a capture process killed with SIGKILL keeps everything up to its last block, and
+// the .partial folder is measured like any session.
+TEST(RigCli, CaptureKilledWithSigkillLeavesAReadableSession) {
+  const auto dir = scratch_dir("rig_cli_killed");
+  const auto session = dir / "killed";
+  const pid_t pid = start_cli({"rig", "capture", "--simulated", "--tool", "vero2", "--surface",
+                               "office", "--seconds", "60", "-o", session.string()});
+  const auto partial = model::io::partial_folder_of(session);
+  const bool recorded = wait_for_recorded(partial, 3.0);
+  ::kill(pid, SIGKILL);
+  EXPECT_EQ(wait_cli(pid), 128 + SIGKILL);
+  ASSERT_TRUE(recorded) << "the capture never reported 3 s recorded";
+  const model::io::Session read = model::io::read_session(partial);
+  EXPECT_FALSE(read.complete);
+  EXPECT_GE(read.acceleration.size(), 3u * 48000u);
+  // The streams were written block by block together: at most one 100 ms batch apart.
+  const double accel_s = static_cast<double>(read.acceleration.size()) / 48000.0;
+  const double speed_s = static_cast<double>(read.speed_m_s.size()) / 1000.0;
+  EXPECT_NEAR(accel_s, speed_s, 0.1);
+  EXPECT_EQ(read.normal_force_N.size(), read.speed_m_s.size());
+  ASSERT_TRUE(read.info.capture.has_value());
+  EXPECT_EQ(read.info.capture->ended_because, "");  // it never got to say
+  // Past the first 2 s at rest the paper's steps begin: the kept part holds the first steps.
+  EXPECT_EQ(run_cli({"measure", partial.string(), "-o", (dir / "partial.json").string()}), 0);
+}
+
+// Ctrl-C stops the motor and finishes the session with what it holds.
+TEST(RigCli, CaptureInterruptedFinishesItsSession) {
+  const auto dir = scratch_dir("rig_cli_interrupted");
+  const auto session = dir / "stopped";
+  const pid_t pid = start_cli({"rig", "capture", "--simulated", "--tool", "vero2", "--surface",
+                               "office", "--profile", "sweep", "--seconds", "60", "-o",
+                               session.string()});
+  ASSERT_TRUE(wait_for_recorded(model::io::partial_folder_of(session), 1.0));
+  ::kill(pid, SIGINT);
+  EXPECT_EQ(wait_cli(pid), 0);
+  const model::io::Session read = model::io::read_session(session);
+  EXPECT_TRUE(read.complete);  // a finished folder, not a .partial one
+  ASSERT_TRUE(read.info.capture.has_value());
+  EXPECT_EQ(read.info.capture->ended_because, "interrupted");
+  EXPECT_GE(read.acceleration.size(), 48000u);
+  EXPECT_LT(read.acceleration.size(), 30u * 48000u);
+}
+
+TEST(RigCli, AProfileBeyondTheMotorIsRefusedWithItsRangeBeforeAnyFolder) {
+  const auto dir = scratch_dir("rig_cli_too_fast");
+  {
+    std::ofstream profile(dir / "fast.csv");
+    profile << "time_s,speed_mm_s\n0,0\n1,600\n2,600\n";
+  }
+  ::testing::internal::CaptureStderr();
+  const int code = run_cli({"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office",
+                            "--profile", (dir / "fast.csv").string(), "-o", (dir / "s").string()});
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(err.find("the profile asks for 600.0 mm/s; the motor follows 0-400 mm/s"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.partial"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "s"));
+}
+
+TEST(RigCli, BadRequestsGetOneClearLine) {
+  const auto dir = scratch_dir("rig_cli_bad");
+  const auto out = (dir / "s").string();
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"rig", "capture", "--tool", "vero2", "--surface", "office", "-o", out}, 2,
+       "say which rig: --simulated, --usb [SERIAL] or --replay SESSION"},
+      {{"rig", "capture", "--simulated", "--tool", "vero2", "-o", out}, 2,
+       "the simulated rig needs --tool and --surface"},
+      {{"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--profile",
+        "zigzag", "-o", out},
+       1, "--profile zigzag: expected steps, sweep or a CSV file"},
+      {{"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--seconds",
+        "-3", "-o", out},
+       2, "--seconds"},
+      {{"rig", "capture", "--simulated", "--tool", "nope", "--surface", "office", "-o", out}, 1,
+       "no vibration spectrum of tool 'nope'"},
+  };
+  for (const auto& c : cases) {
+    ::testing::internal::CaptureStderr();
+    const int code = run_cli(c.args);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(code, c.code) << c.args[3] << ": " << err;
+    EXPECT_NE(err.find(c.says), std::string::npos) << err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.partial"));
+}
+
+TEST(RigCli, DevicesListsRigControllersAndAudioInputs) {
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"rig", "devices"});
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(code, 0);
+  EXPECT_NE(out.find("rig controllers (USB)"), std::string::npos) << out;
+  EXPECT_NE(out.find("audio inputs"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace nibrig::test
