@@ -68,6 +68,8 @@ class Rig {
   // Stops the motor (idempotent); read() then returns what is left and false.
   virtual void stop() = 0;
   virtual RigHealth health() const = 0;
+  // A rig that plays a recording (the replay rig) runs the profile that was recorded; others none.
+  virtual const SpeedProfile* own_profile() const { return nullptr; }
 };
 
 }  // namespace nibrig::rig

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "model/design/tool_sound.hpp"
+#include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
 
 namespace nibrig::rig {
@@ -41,7 +42,7 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
                                             request.tool, request.surface);
     }
     case RigKind::replay:
-      throw std::invalid_argument("the replay rig is not built yet");
+      return std::make_unique<ReplayRig>(request.replay, request.speedup);
     case RigKind::usb:
       throw std::invalid_argument("the USB rig is not built yet");
   }

@@ -6,7 +6,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "playback/playback_session.hpp"
@@ -130,7 +129,7 @@ struct SimulatedRig::Simulation {
 SimulatedRig::SimulatedRig(const SimulatedRigSettings& settings,
                            const model::design::ToolSound& sound, const std::string& tool,
                            const std::string& surface)
-    : settings_(settings), sound_(sound) {
+    : settings_(settings), sound_(sound), pacer_(settings.speedup, settings.frame_rate_hz) {
   const auto& s = settings_;
   const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
   const auto non_negative = [](double x) { return std::isfinite(x) && x >= 0.0; };
@@ -181,7 +180,7 @@ void SimulatedRig::start(const SpeedProfile& profile) {
   profile_.emplace(profile);
   simulation_ = std::make_unique<Simulation>(settings_, sound_, *profile_);
   frames_total_ = static_cast<std::uint64_t>(std::llround(profile_->duration_s() * settings_.frame_rate_hz));
-  started_ = std::chrono::steady_clock::now();
+  pacer_.start();
 }
 
 // One block of 10 frames (10 ms at 1 kHz) and the acceleration samples of the same span.
@@ -243,24 +242,8 @@ bool SimulatedRig::read(RigData& into, std::chrono::milliseconds wait) {
     if (health_.ended_because.empty()) health_.ended_because = "profile finished";
     return false;
   }
-  std::uint64_t due = frames_total_;
-  if (settings_.speedup > 0.0) {
-    const auto frames_due_at = [&](std::chrono::steady_clock::time_point when) {
-      const double elapsed = std::chrono::duration<double>(when - started_).count();
-      return static_cast<std::uint64_t>(elapsed * settings_.speedup * settings_.frame_rate_hz);
-    };
-    due = std::min(frames_total_, frames_due_at(std::chrono::steady_clock::now()));
-    if (due < frames_made_ + 10 && due < frames_total_) {  // nothing whole yet: wait for a block
-      const double next_s = static_cast<double>(frames_made_ + 10) /
-                            (settings_.speedup * settings_.frame_rate_hz);
-      const auto next = started_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                       std::chrono::duration<double>(next_s));
-      std::this_thread::sleep_until(std::min(next, std::chrono::steady_clock::now() + wait));
-      due = std::min(frames_total_, frames_due_at(std::chrono::steady_clock::now()));
-    }
-  } else {
-    due = std::min(frames_total_, frames_made_ + static_cast<std::uint64_t>(settings_.frame_rate_hz / 10));
-  }
+  const std::uint64_t due = pacer_.due(frames_made_, frames_total_, 10,
+                                       static_cast<std::uint64_t>(settings_.frame_rate_hz / 10), wait);
   while (frames_made_ + 10 <= due || (due == frames_total_ && frames_made_ < due)) produce_block(into);
   if (frames_made_ >= frames_total_) {
     health_.ended_because = "profile finished";

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "model/design/tool_sound.hpp"
+#include "rig/pacer.hpp"
 #include "rig/rig.hpp"
 
 namespace nibrig::rig {
@@ -65,7 +66,7 @@ class SimulatedRig final : public Rig {
   std::optional<SpeedProfile> profile_;
   RigHealth health_;
   std::uint64_t frames_made_ = 0, frames_total_ = 0, samples_made_ = 0;
-  std::chrono::steady_clock::time_point started_;
+  Pacer pacer_;
   bool stopped_ = false;
 };
 

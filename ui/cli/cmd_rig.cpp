@@ -103,9 +103,14 @@ void capture(const RigOptions& o) {
   const rig::RigRequest request = rig_request(o);
   if (request.kind == rig::RigKind::simulated && (o.tool.empty() || o.surface.empty()))
     throw CLI::ValidationError("--simulated", "the simulated rig needs --tool and --surface");
-  const rig::SpeedProfile profile = rig::profile_named(o.profile, o.seconds);
   model::design::ToolSounds sounds({o.catalog, o.design, o.forcing_model, design_progress()});
+  std::optional<rig::SpeedProfile> asked;
+  if (request.kind != rig::RigKind::replay) asked = rig::profile_named(o.profile, o.seconds);
   const auto rig = rig::open_rig(request, sounds);
+  // A replay runs what was recorded, cut to --seconds when given.
+  const rig::SpeedProfile profile =
+      asked ? *asked
+            : (o.seconds ? rig::fit_to_duration(*rig->own_profile(), *o.seconds) : *rig->own_profile());
   const auto& d = rig->description();
   std::printf("%s\n", d.name.c_str());
   std::printf("profile: %s, %.1f s\n", profile.description().c_str(), profile.duration_s());
@@ -167,9 +172,10 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
   auto* cap = rig_cmd->add_subcommand(
       "capture", "Run a speed profile on a rig and record a session (measure it with `nibrig measure`)");
   add_rig_source_options(cap, *options);
-  cap->add_option("--profile", options->profile,
+  auto* profile = cap->add_option("--profile", options->profile,
                   "steps (the paper's: 3 sweeps of six 2 s steps over 17-250 mm/s), sweep (the "
                   "study's 3 s sweep) or a CSV file time_s,speed_mm_s");
+  profile->excludes(cap->get_option("--replay"));
   cap->add_option_function<double>(
          "--seconds", [o = options.get()](const double& s) { o->seconds = s; },
          "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
