@@ -8,18 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "playback/playback_session.hpp"
+#include "rig/acceleration_engine.hpp"
 #include "rt/gaussian_noise.hpp"
 #include "rt/stroke_source.hpp"
 
 namespace nibrig::rig {
 namespace {
-
-// The engine's output is acceleration times its output level; the rig wants m/s² back, so the level
-// is 1 / this: the output stage's limiter (0.9 of full scale) then sits at 450 m/s², far above
-// any drawing tool (a few m/s²), and only its 5 Hz DC blocker acts — as an accelerometer's own
-// AC coupling would.
-constexpr double kEngineHeadroom_m_s2 = 500.0;
 
 // The motor's speed, frame by frame, computed as far ahead as anyone asks: the engine (which
 // interpolates it at its internal rate) and the encoder read the same track. The ring holds the
@@ -94,17 +88,9 @@ struct SimulatedRig::Simulation {
   Simulation(const SimulatedRigSettings& s, const model::design::ToolSound& sound,
              const SpeedProfile& profile)
       : track(profile, s.frame_rate_hz, s.motor_time_constant_s),
-        session(engine_settings(s), {{sound.name, sound.modal, sound.spectrum}},
-                std::make_unique<MotorStroke>(track, s.normal_load_N), s.seed),
+        session(acceleration_session(sound, s.acceleration_rate_hz,
+                                     std::make_unique<MotorStroke>(track, s.normal_load_N), s.seed)),
         sensor_noise(s.seed ^ 0x5eed5eedULL) {}
-
-  static rt::EngineSettings engine_settings(const SimulatedRigSettings& s) {
-    rt::EngineSettings e;
-    e.sample_rate_hz = s.acceleration_rate_hz;
-    e.slots = 1;
-    e.output_level_per_m_s2 = 1.0 / kEngineHeadroom_m_s2;
-    return e;
-  }
 
   double noise() noexcept {
     if (spare_ready) {
@@ -118,7 +104,7 @@ struct SimulatedRig::Simulation {
   }
 
   MotorTrack track;
-  playback::PlaybackSession session;
+  std::unique_ptr<playback::PlaybackSession> session;
   rt::GaussianNoise sensor_noise;
   double spare = 0.0;
   bool spare_ready = false;
@@ -218,7 +204,7 @@ void SimulatedRig::produce_block(RigData& into) {
       std::floor(static_cast<double>(k1) * s.acceleration_rate_hz / s.frame_rate_hz));
   const std::size_t count = samples_end - samples_made_;
   sim.rendered.resize(count);
-  sim.session.engine().render(sim.rendered.data(), count);
+  sim.session->engine().render(sim.rendered.data(), count);
   const double dt = 1.0 / s.acceleration_rate_hz;
   for (std::size_t i = 0; i < count; ++i) {
     const double t = static_cast<double>(samples_made_ + i) * dt;
