@@ -43,6 +43,7 @@ struct AudioOutput::Impl {
   std::string device;  // resolved exact name: what a reopen looks for
   RtAudio::Api api_id = RtAudio::UNSPECIFIED;
   std::unique_ptr<SampleRing> ring;
+  std::unique_ptr<rt::SpscQueue<CaptureStamp>> stamps;
   OutputCallbackState state;
 
   // Owned by the constructing thread until the supervisor starts, then by the supervisor alone:
@@ -339,6 +340,8 @@ AudioOutput::AudioOutput(rt::BlockRenderer& renderer, OutputSettings settings)
   if (m.settings.input_channel) {
     m.ring = std::make_unique<SampleRing>(m.settings.capture_capacity);
     m.state.capture = m.ring.get();
+    m.stamps = std::make_unique<rt::SpscQueue<CaptureStamp>>(4096);  // seconds of callbacks
+    m.state.stamps = m.stamps.get();
   }
   m.rt = m.open();
   const StreamInfo opened = stream_info();
@@ -384,6 +387,17 @@ std::string AudioOutput::last_problem() const {
 
 std::size_t AudioOutput::read_captured(float* out, std::size_t max) noexcept {
   return impl_->ring ? impl_->ring->pop(out, max) : 0;
+}
+
+std::size_t AudioOutput::read_capture_stamps(CaptureStamp* out, std::size_t max) noexcept {
+  std::size_t n = 0;
+  if (!impl_->stamps) return 0;
+  while (n < max) {
+    const auto stamp = impl_->stamps->try_pop();
+    if (!stamp) break;
+    out[n++] = *stamp;
+  }
+  return n;
 }
 
 std::size_t AudioOutput::captured_available() const noexcept {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "playback/capture_stamp.hpp"
 #include "rt/block_renderer.hpp"
 
 namespace nibrig::playback {
@@ -75,6 +76,9 @@ class AudioOutput {
   // thread only (the ring has a single consumer). Nothing is captured without input_channel.
   std::size_t read_captured(float* out, std::size_t max) noexcept;
   std::size_t captured_available() const noexcept;
+  // When the captured samples arrived (output_callback.hpp), oldest first: up to `max` into
+  // `out`; returns how many. The same single consumer as read_captured.
+  std::size_t read_capture_stamps(CaptureStamp* out, std::size_t max) noexcept;
 
  private:
   struct Impl;

@@ -1,5 +1,7 @@
 #include "playback/output_callback.hpp"
 
+#include <chrono>
+
 #include <algorithm>
 
 namespace nibrig::playback {
@@ -15,6 +17,10 @@ int output_callback(void* output, void* input, unsigned int frames, double /*str
                     RtAudioStreamStatus status, void* user) noexcept {
   auto& s = *static_cast<OutputCallbackState*>(user);
   auto& c = s.counters;
+  // First, before rendering: the closest the callback comes to when its input was handed over.
+  const std::int64_t entered_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                      std::chrono::steady_clock::now().time_since_epoch())
+                                      .count();
   if (status & RTAUDIO_OUTPUT_UNDERFLOW)
     c.output_underflows.fetch_add(1, std::memory_order_relaxed);
   if (status & RTAUDIO_INPUT_OVERFLOW) c.input_overflows.fetch_add(1, std::memory_order_relaxed);
@@ -40,6 +46,8 @@ int output_callback(void* output, void* input, unsigned int frames, double /*str
     const auto* in = static_cast<const float*>(input) + std::size_t{s.input_index} * frames;
     const std::size_t stored = s.capture->push(in, frames);
     if (stored < frames) c.capture_dropped.fetch_add(frames - stored, std::memory_order_relaxed);
+    if (s.stamps != nullptr) s.stamps->try_push({s.captured_samples, entered_ns});
+    s.captured_samples += frames;
   }
 
   c.frames.fetch_add(frames, std::memory_order_relaxed);

@@ -10,8 +10,10 @@
 #include <cstdint>
 #include <memory>
 
+#include "playback/capture_stamp.hpp"
 #include "playback/sample_ring.hpp"
 #include "rt/block_renderer.hpp"
+#include "rt/spsc_queue.hpp"
 
 namespace nibrig::playback {
 
@@ -36,6 +38,8 @@ struct OutputCallbackState {
   unsigned input_channels = 0;   // 0: no input stream
   unsigned input_index = 0;      // 0-based channel that is captured
   SampleRing* capture = nullptr;
+  rt::SpscQueue<CaptureStamp>* stamps = nullptr;  // one per callback with input; full: dropped
+  std::uint64_t captured_samples = 0;             // audio thread only
   CallbackCounters counters;
 
   // Sizes the mono buffer for blocks of `period_frames` (allocates: control thread only).

@@ -1,0 +1,77 @@
+#include "rig/accelerometer_input.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace nibrig::rig {
+namespace {
+
+// The fitted clock (drift and scatter, reported) follows the last 2 s: 20 windows of 0.1 s.
+constexpr double kClockWindow_s = 0.1;
+constexpr std::size_t kClockWindows = 20;
+
+}  // namespace
+
+AccelerometerInput::AccelerometerInput(const AccelerometerSettings& settings)
+    : settings_(settings), clock_(kClockWindow_s, kClockWindows) {
+  if (!(settings.m_s2_per_full_scale > 0.0) || !std::isfinite(settings.m_s2_per_full_scale))
+    throw std::invalid_argument("the accelerometer's m/s² per full scale must be positive");
+  playback::OutputSettings out;
+  out.api = settings.api;
+  out.device = settings.device;
+  out.sample_rate = settings.sample_rate;
+  out.period_frames = settings.period_frames;
+  out.input_channel = settings.channel;
+  out.stream_name = settings.stream_name;
+  out.connect_ports = settings.connect_ports;
+  stream_ = std::make_unique<playback::AudioOutput>(silence_, out);
+  const playback::StreamInfo info = stream_->stream_info();
+  rate_ = info.sample_rate;
+  // The callback sees input one period after its last sample was taken, and the back end reports
+  // its own input latency on top (RtAudio: the port latency under JACK).
+  buffering_s_ = static_cast<double>(info.period_frames) / rate_;
+  device_latency_s_ = static_cast<double>(std::max(0L, info.latency_frames)) / rate_;
+  buffer_.resize(8192);
+  stamps_.resize(1024);
+}
+
+AccelerometerInput::~AccelerometerInput() = default;
+
+std::size_t AccelerometerInput::read(std::vector<float>& into) {
+  for (;;) {
+    const std::size_t n = stream_->read_capture_stamps(stamps_.data(), stamps_.size());
+    for (std::size_t i = 0; i < n; ++i) recent_.push_back(stamps_[i]);
+    if (recent_.size() > 512) recent_.erase(recent_.begin(), recent_.end() - 256);
+    for (std::size_t i = 0; i < n; ++i)
+      clock_.add(static_cast<double>(stamps_[i].first_sample) / rate_,
+                 static_cast<double>(stamps_[i].host_ns) * 1e-9);
+    if (n < stamps_.size()) break;
+  }
+  std::size_t total = 0;
+  for (;;) {
+    const std::size_t n = stream_->read_captured(buffer_.data(), buffer_.size());
+    into.insert(into.end(), buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(n));
+    total += n;
+    if (n < buffer_.size()) break;
+  }
+  return total;
+}
+
+// A callback's stamp is when the block starting at first_sample was handed to us: one period after
+// JACK's cycle carried it (RtAudio buffers a period), and that cycle carried what the converter
+// took the device's capture latency earlier.
+double AccelerometerInput::host_time_of(double index) const {
+  for (auto it = recent_.rbegin(); it != recent_.rend(); ++it)
+    if (static_cast<double>(it->first_sample) <= index)
+      return static_cast<double>(it->host_ns) * 1e-9 +
+             (index - static_cast<double>(it->first_sample)) / rate_ - buffering_s_ - device_latency_s_;
+  // Older than every stamp kept: the fitted clock.
+  return clock_.host_time(index / rate_) - buffering_s_ - device_latency_s_;
+}
+
+std::string AccelerometerInput::device_name() const {
+  const auto info = stream_->stream_info();
+  return info.api + " " + info.device + ", input " + std::to_string(settings_.channel);
+}
+
+}  // namespace nibrig::rig
