@@ -150,6 +150,14 @@ void EmulatedRig::reorder_next_packet() {
   std::lock_guard lock(mutex_);
   reorder_ = true;
 }
+void EmulatedRig::duplicate_next_packet() {
+  std::lock_guard lock(mutex_);
+  duplicate_ = true;
+}
+unsigned EmulatedRig::frames_duplicated() const {
+  std::lock_guard lock(mutex_);
+  return duplicated_;
+}
 void EmulatedRig::hold_stream(bool hold) {
   std::lock_guard lock(mutex_);
   hold_ = hold;
@@ -512,6 +520,11 @@ void EmulatedRig::send_packets(std::uint64_t now_us) {
     const std::size_t n = std::min<std::size_t>({fifo_.size(), config_.frames_per_packet, kMaxFramesPerPacket});
     std::vector<SensorFrame> frames(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(n));
     fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(n));
+    if (duplicate_) {  // the same frames again at the head of the queue: the next packet repeats them
+      fifo_.insert(fifo_.begin(), frames.begin(), frames.end());
+      duplicated_ += static_cast<unsigned>(frames.size());
+      duplicate_ = false;
+    }
     if (reorder_ && frames.size() >= 2) {
       std::swap(frames[0], frames[1]);
       reorder_ = false;

@@ -47,6 +47,7 @@ class EmulatedRig {
   void replug(int new_address);        // the same device (serial, clock, sequence) at a new address
   void drop_frames(unsigned count);    // the next `count` frames sampled are never sent
   void reorder_next_packet();          // the next packet's first two frames are swapped
+  void duplicate_next_packet();        // the next packet's frames are sent again in the one after
   void hold_stream(bool hold);         // no packet is sent while held: bulk transfers time out
   void refuse_next(Request request, Refusal why);  // the next such request STALLs
   void ignore_next_control();          // the next control request is never answered
@@ -59,6 +60,7 @@ class EmulatedRig {
   std::uint32_t first_streamed_sequence() const;
   std::uint32_t last_sent_sequence() const;
   unsigned control_requests() const;
+  unsigned frames_duplicated() const;  // sent a second time on request
 
  private:
   struct Urb {
@@ -126,6 +128,8 @@ class EmulatedRig {
   // Faults.
   unsigned drop_ = 0;
   bool reorder_ = false;
+  bool duplicate_ = false;
+  unsigned duplicated_ = 0;
   bool hold_ = false;
   std::optional<std::pair<std::uint8_t, Refusal>> refuse_next_;
   bool ignore_next_ = false;

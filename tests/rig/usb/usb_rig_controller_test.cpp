@@ -259,7 +259,7 @@ TEST(UsbRigController, ASilentStreamTimesOutAndLosesNothing) {
   for (std::size_t i = 1; i < frames.size(); ++i) ASSERT_EQ(frames[i].sequence, frames[i - 1].sequence + 1);
 }
 
-TEST(UsbRigController, CountsDroppedAndReorderedFramesAndDeliversNoneTwice) {
+TEST(UsbRigController, CountsDroppedReorderedAndDuplicatedFramesAndDeliversNoneTwice) {
   Testbed testbed;
   EmulatedRig device(testbed.get(), EmulatedRigConfig{});
   UsbRigController rig;
@@ -268,12 +268,16 @@ TEST(UsbRigController, CountsDroppedAndReorderedFramesAndDeliversNoneTwice) {
   auto more = drain_for(rig, 100ms);
   frames.insert(frames.end(), more.begin(), more.end());
   device.reorder_next_packet();
-  more = drain_for(rig, 200ms);
+  more = drain_for(rig, 100ms);
+  frames.insert(frames.end(), more.begin(), more.end());
+  device.duplicate_next_packet();
+  more = drain_for(rig, 100ms);
   frames.insert(frames.end(), more.begin(), more.end());
   const UsbRigStatus s = rig.status();
   EXPECT_EQ(s.frames_dropped, 5u);
   EXPECT_EQ(s.frames_reordered, 1u);  // the late one of the swapped pair
-  EXPECT_EQ(s.frames_duplicated, 0u);
+  ASSERT_GT(device.frames_duplicated(), 0u);
+  EXPECT_EQ(s.frames_duplicated, device.frames_duplicated());
   ASSERT_GE(frames.size(), 2u);
   // Delivered frames rise strictly: none twice, none out of order; every number between the first
   // and the last is delivered, dropped or late.
