@@ -20,8 +20,10 @@
 #include "rig/sensor_frame.hpp"
 #include "rig/speed_profile.hpp"
 #include "rig/usb/sequence_tracker.hpp"
+#include "rig/usb/usb_control.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
+#include "rig/usb/usb_rig_error.hpp"
 #include "rt/spsc_queue.hpp"
 
 namespace nibrig::rig::usb {
@@ -93,8 +95,18 @@ class UsbRigController {
 
  private:
   struct Transfer;
+  // Runs `f` with the open device's control channel, under the device lock so that the event
+  // thread cannot close the handle meanwhile.
   template <typename F>
-  auto with_channel(F&& f);
+  auto with_channel(F&& f) {
+    std::lock_guard lock(device_mutex_);
+    if (handle_ == nullptr || lost_) {
+      throw UsbRigError("the rig controller " + serial_ +
+                        " is unplugged; the driver reconnects when it comes back");
+    }
+    ControlChannel channel(handle_, "the rig controller " + serial_, options_.control_timeout_ms);
+    return f(channel);
+  }
   void event_loop();
   void start_streaming();  // event thread or constructor: claim, SET_STREAMING(1), submit the pool
   void close_device();     // event thread: after every transfer is back

@@ -63,6 +63,9 @@ class EmulatedRig {
   unsigned frames_duplicated() const;  // sent a second time on request
 
  private:
+  static constexpr double kLoadN = 2.2;  // the arm's load: the paper's normal force
+  static constexpr double kForceFullScaleN = 20.0;
+
   struct Urb {
     UMockdevIoctlData* data = nullptr;  // the client's usbdevfs_urb, resolved (our reference)
   };

@@ -218,7 +218,7 @@ TEST(UsbRigController, AStalledRequestSaysWhichAndWhy) {
   device.refuse_next(Request::kZeroForce, Refusal::kOrder);
   EXPECT_EQ(error_of([&] { rig.zero_force(); }),
             "the rig controller NIB-0001 refused ZERO_FORCE (0x30) (STALL): out of order");
-  // The device's own range check, past the host's (a profile the host cannot check: no profile).
+  // A refusal of the device's own (PROTOCOL.md: START_PROFILE without a profile), not injected.
   EXPECT_EQ(error_of([&] { rig.start_profile(); }),
             "the rig controller NIB-0001 refused START_PROFILE (0x11) (STALL): out of order");
   // Streaming went on through the refusals.
