@@ -315,6 +315,22 @@ TEST(UsbRigController, UnplugKeepsTheFramesAndReplugResumesStreaming) {
   EXPECT_EQ(rig.identify().serial, "NIB-0001");  // requests reach it again
 }
 
+TEST(UsbRigController, ReconnectsOnlyToTheSameSerial) {
+  Testbed testbed;
+  EmulatedRig ours(testbed.get(), EmulatedRigConfig{"NIB-OURS", 2});
+  UsbRigController rig;
+  ours.unplug();
+  ASSERT_TRUE(eventually([&] { return !rig.status().connected; }));
+  // Another controller arrives: the rescan (every 200 ms) and its hotplug event must pass it by.
+  EmulatedRig other(testbed.get(), EmulatedRigConfig{"NIB-OTHER", 3});
+  std::this_thread::sleep_for(600ms);
+  EXPECT_FALSE(rig.status().connected);
+  EXPECT_EQ(rig.status().reconnects, 0u);
+  ours.replug(4);
+  ASSERT_TRUE(eventually([&] { return rig.status().connected; }));
+  EXPECT_EQ(rig.identify().serial, "NIB-OURS");
+}
+
 TEST(UsbRigController, TheWatchdogStopsTheMotorWhenTheHostIsSilent) {
   Testbed testbed;
   EmulatedRig device(testbed.get(), EmulatedRigConfig{});
