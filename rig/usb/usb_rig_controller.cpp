@@ -226,9 +226,9 @@ void UsbRigController::try_reconnect() {
     close_device();
     return;
   }
+  // The unplug stays the last fault: a capture reports it even though streaming resumed.
   ++reconnects_;
   connected_ = true;
-  set_fault("");
 }
 
 void UsbRigController::submit_keep_alive() {

@@ -66,6 +66,8 @@ class UsbRigController {
   // (naming what was found), ambiguous, or speaks another major protocol version.
   explicit UsbRigController(Options options);
   UsbRigController() : UsbRigController(Options{}) {}
+  // Stops the motor and the stream (a host that leaves should not leave the turntable running
+  // until the watchdog notices), then closes the device.
   ~UsbRigController();
   UsbRigController(const UsbRigController&) = delete;
   UsbRigController& operator=(const UsbRigController&) = delete;

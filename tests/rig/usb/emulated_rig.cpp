@@ -152,6 +152,10 @@ void EmulatedRig::duplicate_next_packet() {
   std::lock_guard lock(mutex_);
   duplicate_ = true;
 }
+bool EmulatedRig::streaming() const {
+  std::lock_guard lock(mutex_);
+  return streaming_;
+}
 unsigned EmulatedRig::frames_duplicated() const {
   std::lock_guard lock(mutex_);
   return duplicated_;

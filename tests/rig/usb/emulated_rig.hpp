@@ -61,6 +61,7 @@ class EmulatedRig {
   std::uint32_t last_sent_sequence() const;
   unsigned control_requests() const;
   unsigned frames_duplicated() const;  // sent a second time on request
+  bool streaming() const;               // SET_STREAMING's state
 
  private:
   static constexpr double kLoadN = 2.2;  // the arm's load: the paper's normal force

@@ -307,6 +307,7 @@ TEST(UsbRigController, UnplugKeepsTheFramesAndReplugResumesStreaming) {
   device.replug(5);
   ASSERT_TRUE(eventually([&] { return rig.status().connected; }));
   EXPECT_EQ(rig.status().reconnects, 1u);
+  EXPECT_NE(rig.status().last_fault.find("was unplugged"), std::string::npos);  // still told
   const auto after = drain_for(rig, 300ms);
   ASSERT_GT(after.size(), 100u);
   // The same device, its clock running on: the frames continue later in device time.
@@ -361,6 +362,20 @@ TEST(UsbRigController, TheKeepAliveHoldsTheWatchdogOff) {
   EXPECT_TRUE(frames.back().flags & kProfileRunning);
   // The motor followed its speed loop to the target (5 time constants of 50 ms and more).
   EXPECT_NEAR(frames.back().speed_m_s, 0.1f, 1e-3f);
+}
+
+TEST(UsbRigController, ClosingStopsTheMotorAndTheStream) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  {
+    UsbRigController rig;
+    rig.set_speed(0.2);
+    EXPECT_EQ(device.status().mode, Mode::kSpeed);
+    EXPECT_TRUE(device.streaming());
+  }
+  // At once, not after the watchdog's 500 ms.
+  EXPECT_EQ(device.status().mode, Mode::kIdle);
+  EXPECT_FALSE(device.streaming());
 }
 
 }  // namespace
