@@ -18,6 +18,7 @@ packages=(
   libplplot-dev plplot-driver-cairo
   librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libusb-1.0-0-dev umockdev libumockdev-dev  # the rig's USB controller and its emulated device
   libstb-dev  # the report tests read their PNGs back with stb_image
   clang libclang-rt-14-dev
   python3-numpy python3-scipy

@@ -14,6 +14,10 @@ pkg_check_modules(SNDFILE REQUIRED IMPORTED_TARGET sndfile)
 pkg_check_modules(RTAUDIO REQUIRED IMPORTED_TARGET rtaudio)
 pkg_check_modules(JACK REQUIRED IMPORTED_TARGET jack)
 pkg_check_modules(ALSA REQUIRED IMPORTED_TARGET alsa)  # only to quiet alsa-lib's stderr
+# The rig's USB controller (rig/usb) talks libusb 1.0.26 (Debian 12: no libusb_init_context); its tests
+# emulate the device in-process with umockdev, which nothing but those tests links.
+pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
+pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)
 pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot plplot-c++)
 find_package(Spectra 1.0 REQUIRED PATHS /usr/share/spectra/cmake)
 # Gmsh ships only a header and a shared library in Debian (no CMake or pkg-config file).

@@ -1,0 +1,158 @@
+// A rig controller that exists only in the test process: umockdev shows libusb a USB device
+// (1209:000a) and hands every usbfs ioctl on its node to this object, which answers as a device
+// built from rig/PROTOCOL.md would — control requests, a bulk stream sampled on its own microsecond
+// clock, the watchdog — and misbehaves on demand (STALL, silence, lost and reordered frames,
+// unplug and replug). Run the test binary under umockdev-wrapper.
+#pragma once
+
+#include <umockdev.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rig/sensor_frame.hpp"
+#include "rig/speed_profile.hpp"
+#include "rig/usb/usb_protocol.hpp"
+
+namespace nibrig::rig::usb::testing {
+
+struct EmulatedRigConfig {
+  std::string serial = "NIB-0001";
+  int address = 2;  // on bus 1
+  double max_speed_m_s = 0.3;
+  std::uint16_t max_profile_points = 64;
+  unsigned frame_rate_hz = 1000;
+  unsigned frames_per_packet = 8;
+  std::uint16_t protocol_version = kProtocolVersion;
+};
+
+class EmulatedRig {
+ public:
+  // Adds the device to the testbed (which must outlive this object) and starts its firmware.
+  EmulatedRig(UMockdevTestbed* testbed, EmulatedRigConfig config);
+  ~EmulatedRig();
+  EmulatedRig(const EmulatedRig&) = delete;
+  EmulatedRig& operator=(const EmulatedRig&) = delete;
+
+  // Faults on demand.
+  void unplug();                       // pending transfers fail, the node and sysfs entry go away
+  void replug(int new_address);        // the same device (serial, clock, sequence) at a new address
+  void drop_frames(unsigned count);    // the next `count` frames sampled are never sent
+  void reorder_next_packet();          // the next packet's first two frames are swapped
+  void duplicate_next_packet();        // the next packet's frames are sent again in the one after
+  void hold_stream(bool hold);         // no packet is sent while held: bulk transfers time out
+  void refuse_next(Request request, Refusal why);  // the next such request STALLs
+  void ignore_next_control();          // the next control request is never answered
+
+  // What the device saw and holds.
+  DeviceStatus status() const;
+  std::vector<ProfilePoint> held_profile() const;  // as the device stores it (ms, f32 mm/s)
+  ForceCalibration calibration() const;
+  std::uint32_t frames_sampled() const;  // the next sequence number
+  std::uint32_t first_streamed_sequence() const;
+  std::uint32_t last_sent_sequence() const;
+  unsigned control_requests() const;
+  unsigned frames_duplicated() const;  // sent a second time on request
+  bool streaming() const;               // SET_STREAMING's state
+
+ private:
+  static constexpr double kLoadN = 2.2;  // the arm's load: the paper's normal force
+  static constexpr double kForceFullScaleN = 20.0;
+
+  struct Urb {
+    UMockdevIoctlData* data = nullptr;  // the client's usbdevfs_urb, resolved (our reference)
+  };
+  struct Port {  // one opened device node: its URBs in the device and done
+    bool alive = true;
+    std::deque<Urb> pending_in;       // bulk IN waiting for a packet
+    std::deque<Urb> pending_control;  // control requests the device leaves unanswered
+    std::deque<Urb> done;        // to be reaped
+    std::deque<Urb> discarded;
+  };
+  struct Reply {
+    bool stall = false;
+    bool ignore = false;
+    std::vector<std::uint8_t> data;
+  };
+
+  static gboolean on_ioctl(UMockdevIoctlBase* base, UMockdevIoctlClient* client, gpointer self);
+  gboolean handle_ioctl(UMockdevIoctlClient* client);
+  Reply control(const std::uint8_t* setup, const std::uint8_t* data);
+  Reply refuse(std::uint8_t request, Refusal why);
+  void add_to_testbed();
+  std::string devnode() const;
+  std::string syspath() const;
+  void firmware_loop();
+  void sample_until(std::uint64_t now_us);
+  void send_packets(std::uint64_t now_us);
+  std::uint64_t clock_us() const;
+
+  UMockdevTestbed* testbed_;
+  EmulatedRigConfig config_;
+  UMockdevIoctlBase* handler_ = nullptr;
+  std::chrono::steady_clock::time_point power_up_;
+  std::vector<std::string> attached_;
+
+  mutable std::mutex mutex_;  // the ioctl thread, the firmware thread and the test's own
+  std::map<std::string, Port> ports_;
+  std::string current_devnode_;
+  bool plugged_ = true;
+  // Device state (PROTOCOL.md).
+  bool streaming_ = false;
+  Mode mode_ = Mode::kIdle;
+  Fault fault_ = Fault::kNone;
+  std::uint16_t flags_ = 0;
+  double target_m_s_ = 0.0;
+  double speed_m_s_ = 0.0;
+  unsigned frame_rate_hz_;
+  std::uint64_t next_sample_us_ = 0;
+  std::uint64_t last_control_us_ = 0;
+  std::uint64_t profile_start_us_ = 0;
+  std::uint32_t sequence_ = 0;
+  std::uint32_t first_streamed_ = 0;
+  bool any_streamed_ = false;
+  std::uint32_t last_sent_ = 0;
+  std::deque<SensorFrame> fifo_;
+  std::uint16_t upload_expected_ = 0;
+  std::vector<ProfilePoint> upload_;
+  std::optional<SpeedProfile> profile_;
+  ForceCalibration calibration_{1000.0, 1000.0, 1.0};
+  double force_zero_N_ = 0.0;
+  std::uint8_t refused_request_ = 0;
+  std::uint8_t refusal_ = 0;
+  unsigned control_requests_ = 0;
+  // Faults.
+  unsigned drop_ = 0;
+  bool reorder_ = false;
+  bool duplicate_ = false;
+  unsigned duplicated_ = 0;
+  bool hold_ = false;
+  std::optional<std::pair<std::uint8_t, Refusal>> refuse_next_;
+  bool ignore_next_ = false;
+
+  std::atomic<bool> running_{true};
+  std::thread firmware_;
+};
+
+// A fresh umockdev testbed for one test (its own /sys and /dev), released at the end.
+class Testbed {
+ public:
+  Testbed() : testbed_(umockdev_testbed_new()) {}
+  ~Testbed() { g_object_unref(testbed_); }
+  Testbed(const Testbed&) = delete;
+  Testbed& operator=(const Testbed&) = delete;
+  UMockdevTestbed* get() const { return testbed_; }
+
+ private:
+  UMockdevTestbed* testbed_;
+};
+
+}  // namespace nibrig::rig::usb::testing

@@ -1,0 +1,382 @@
+// The libusb driver against the emulated rig controller (emulated_rig.hpp): real libusb, real usbfs
+// ioctls answered by a device that follows PROTOCOL.md, faults on demand.
+#include "rig/usb/usb_rig_controller.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rig/usb/usb_rig_error.hpp"
+#include "tests/rig/usb/emulated_rig.hpp"
+
+namespace nibrig::rig::usb {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::EmulatedRig;
+using testing::EmulatedRigConfig;
+using testing::Testbed;
+
+// Drains the controller for `duration`, as a consumer thread would.
+std::vector<SensorFrame> drain_for(UsbRigController& rig, std::chrono::milliseconds duration) {
+  std::vector<SensorFrame> frames;
+  std::vector<SensorFrame> block(256);
+  const auto end = std::chrono::steady_clock::now() + duration;
+  while (std::chrono::steady_clock::now() < end) {
+    const std::size_t n = rig.read_frames(block);
+    frames.insert(frames.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(n));
+    std::this_thread::sleep_for(2ms);
+  }
+  return frames;
+}
+
+// Waits until `condition` holds or `limit` passes; true when it held.
+template <typename F>
+bool eventually(F condition, std::chrono::milliseconds limit = 3000ms) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (condition()) return true;
+    std::this_thread::sleep_for(5ms);
+  }
+  return condition();
+}
+
+TEST(UsbRigController, IdentifiesTheEmulatedDevice) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  const Identity id = rig.identify();
+  EXPECT_EQ(id.serial, "NIB-0001");
+  EXPECT_EQ(id.protocol_version, kProtocolVersion);
+  EXPECT_NEAR(id.max_speed_m_s, 0.3, 1e-6);  // f32 of 300 mm/s
+  EXPECT_EQ(id.frame_rate_hz, 1000u);
+  EXPECT_EQ(id.watchdog_timeout_ms, 500u);
+  EXPECT_TRUE(rig.status().connected);
+}
+
+TEST(UsbRigController, StreamsEverySequenceNumberAtOneKilohertz) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  const auto frames = drain_for(rig, 1000ms);
+  // ~1000 frames in 1 s; at least 800 allows a loaded 2-core machine's scheduling slack.
+  ASSERT_GE(frames.size(), 800u);
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    ASSERT_EQ(frames[i].sequence, frames[i - 1].sequence + 1) << "at frame " << i;
+    // The device clock ticks 1000 us a frame at 1 kHz.
+    ASSERT_EQ(frames[i].device_time_us - frames[i - 1].device_time_us, 1000u) << "at frame " << i;
+  }
+  const UsbRigStatus s = rig.status();
+  EXPECT_EQ(s.frames_dropped, 0u);
+  EXPECT_EQ(s.frames_reordered, 0u);
+  // The stream runs on while we look: the count lies between what was drained before the snapshot
+  // and that plus what is still queued after it.
+  const std::size_t drained = frames.size();
+  const auto rest = drain_for(rig, 20ms);
+  EXPECT_GE(s.frames_received, drained);
+  EXPECT_LE(s.frames_received, drained + rest.size());
+  EXPECT_EQ(frames.front().sequence, device.first_streamed_sequence());
+}
+
+
+// The message of a UsbRigError thrown by `f`, or "" when nothing was thrown.
+template <typename F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const UsbRigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(UsbRigController, ListsEveryControllerWithSerialBusAndVersion) {
+  Testbed testbed;
+  EmulatedRig a(testbed.get(), EmulatedRigConfig{"NIB-A", 2});
+  EmulatedRig b(testbed.get(), EmulatedRigConfig{"NIB-B", 3});
+  auto found = list_rig_controllers();
+  ASSERT_EQ(found.size(), 2u);
+  std::sort(found.begin(), found.end(), [](auto& x, auto& y) { return x.address < y.address; });
+  EXPECT_EQ(found[0].serial, "NIB-A");
+  EXPECT_EQ(found[0].bus, 1);
+  EXPECT_EQ(found[0].address, 2);
+  EXPECT_EQ(found[0].protocol_version, kProtocolVersion);
+  EXPECT_EQ(found[0].problem, "");
+  EXPECT_EQ(found[1].serial, "NIB-B");
+  EXPECT_EQ(found[1].address, 3);
+  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.0, firmware emulated-1.0)");
+}
+
+TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
+  {
+    Testbed testbed;
+    EXPECT_EQ(error_of([] { UsbRigController rig; }),
+              "no nibrig rig controller (USB 1209:000a) on the bus");
+  }
+  Testbed testbed;
+  EmulatedRig a(testbed.get(), EmulatedRigConfig{"NIB-A", 2});
+  const std::string message = error_of([] { UsbRigController rig({.serial = "NIB-X"}); });
+  EXPECT_EQ(message,
+            "no nibrig rig controller (USB 1209:000a) with serial NIB-X; found: NIB-A (bus 1, "
+            "address 2, protocol 1.0, firmware emulated-1.0)");
+}
+
+TEST(UsbRigController, OpensTheOneWithTheSerialAskedFor) {
+  Testbed testbed;
+  EmulatedRig a(testbed.get(), EmulatedRigConfig{"NIB-A", 2});
+  EmulatedRig b(testbed.get(), EmulatedRigConfig{"NIB-B", 3});
+  {
+    UsbRigController rig({.serial = "NIB-B"});
+    EXPECT_EQ(rig.identity().serial, "NIB-B");
+    rig.set_speed(0.1);
+    // The request went to B, not A.
+    EXPECT_NEAR(b.status().speed_target_m_s, 0.1, 1e-6);
+    EXPECT_EQ(a.status().speed_target_m_s, 0.0);
+  }
+  // Two and no serial: which one is meant cannot be guessed.
+  const std::string message = error_of([] { UsbRigController rig; });
+  EXPECT_NE(message.find("several nibrig rig controllers are plugged in"), std::string::npos) << message;
+  EXPECT_NE(message.find("NIB-A"), std::string::npos) << message;
+  EXPECT_NE(message.find("NIB-B"), std::string::npos) << message;
+}
+
+TEST(UsbRigController, RefusesAnotherMajorProtocolVersionNamingBoth) {
+  Testbed testbed;
+  EmulatedRigConfig config;
+  config.protocol_version = 0x0203;
+  EmulatedRig device(testbed.get(), config);
+  const std::string message = error_of([] { UsbRigController rig; });
+  EXPECT_NE(message.find("speaks protocol 2.3; this nibrig speaks 1.x"), std::string::npos) << message;
+}
+
+TEST(UsbRigController, UploadsAProfileInChunksAndReadsItBack) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  const SpeedProfile steps = paper_steps();  // 13 points per sweep: two chunks of 8
+  ASSERT_GT(steps.points().size(), kMaxPointsPerRequest);
+  rig.upload_profile(steps);
+  const auto back = rig.read_profile();
+  const auto held = device.held_profile();
+  ASSERT_EQ(back.size(), steps.points().size());
+  ASSERT_EQ(held.size(), steps.points().size());
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    // Times travel in whole milliseconds, speeds as f32 mm/s (PROTOCOL.md "Points").
+    EXPECT_NEAR(back[i].time_s, steps.points()[i].time_s, 0.0005) << i;
+    EXPECT_NEAR(back[i].speed_m_s, steps.points()[i].speed_m_s, 1e-7) << i;
+    EXPECT_EQ(held[i].time_s, back[i].time_s) << i;
+  }
+  rig.start_profile();
+  EXPECT_EQ(device.status().mode, Mode::kProfile);
+  rig.stop();
+  EXPECT_EQ(device.status().mode, Mode::kIdle);
+}
+
+TEST(UsbRigController, RefusesAProfileBeyondTheMotorStatingTheRange) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  const SpeedProfile fast("too fast", {{0.0, 0.0}, {1.0, 0.4}});
+  EXPECT_EQ(error_of([&] { rig.upload_profile(fast); }),
+            "profile 'too fast' reaches 400.0 mm/s; the rig controller NIB-0001 runs 0 to 300.0 mm/s");
+  EXPECT_EQ(device.status().profile_points, 0);  // nothing was sent
+  EXPECT_EQ(error_of([&] { rig.set_speed(0.5); }),
+            "speed 500.0 mm/s is outside what the rig controller NIB-0001 runs: 0 to 300.0 mm/s");
+}
+
+TEST(UsbRigController, CalibrationFrameRateAndZeroReachTheDevice) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  rig.set_calibration({2048.0, 1024.0, 1.5});
+  const ForceCalibration c = rig.calibration();
+  EXPECT_EQ(c.normal_counts_per_N, 2048.0);  // exact in f32
+  EXPECT_EQ(c.tangential_counts_per_N, 1024.0);
+  EXPECT_EQ(c.lever_factor, 1.5);
+  EXPECT_EQ(device.calibration().lever_factor, 1.5);
+
+  rig.set_frame_rate(2000);
+  EXPECT_EQ(rig.identify().frame_rate_hz, 2000u);
+  EXPECT_NE(error_of([&] { rig.set_frame_rate(100); }).find("500 to 4000 Hz"), std::string::npos);
+
+  // Zeroing takes the arm's load as the zero: frames read ~0 N afterwards.
+  rig.zero_force();
+  drain_for(rig, 50ms);  // frames sampled before the zero
+  const auto frames = drain_for(rig, 100ms);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_NEAR(frames.back().normal_force_N, 0.0f, 1e-6f);
+}
+
+TEST(UsbRigController, AStalledRequestSaysWhichAndWhy) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  device.refuse_next(Request::kZeroForce, Refusal::kOrder);
+  EXPECT_EQ(error_of([&] { rig.zero_force(); }),
+            "the rig controller NIB-0001 refused ZERO_FORCE (0x30) (STALL): out of order");
+  // A refusal of the device's own (PROTOCOL.md: START_PROFILE without a profile), not injected.
+  EXPECT_EQ(error_of([&] { rig.start_profile(); }),
+            "the rig controller NIB-0001 refused START_PROFILE (0x11) (STALL): out of order");
+  // Streaming went on through the refusals.
+  EXPECT_TRUE(rig.status().connected);
+  EXPECT_FALSE(drain_for(rig, 50ms).empty());
+}
+
+TEST(UsbRigController, AControlRequestWithoutAnswerTimesOut) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController::Options options;
+  options.control_timeout_ms = 200;
+  UsbRigController rig(options);
+  device.ignore_next_control();
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = error_of([&] { rig.stop(); });
+  const auto waited = std::chrono::steady_clock::now() - start;
+  EXPECT_EQ(message, "the rig controller NIB-0001 did not answer STOP (0x12) within 200 ms");
+  // It gave up at its timeout, not much later (1 s allows a loaded machine).
+  EXPECT_LT(waited, 1200ms);
+  EXPECT_NO_THROW(rig.stop());  // the next one is answered
+}
+
+TEST(UsbRigController, ASilentStreamTimesOutAndLosesNothing) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  drain_for(rig, 100ms);
+  device.hold_stream(true);
+  std::this_thread::sleep_for(400ms);  // transfers time out every 100 ms and go out again
+  device.hold_stream(false);
+  const auto frames = drain_for(rig, 300ms);
+  const UsbRigStatus s = rig.status();
+  EXPECT_GE(s.transfer_timeouts, 1u);
+  // The device kept the frames sampled meanwhile (its buffer holds 8 s): none is lost.
+  EXPECT_EQ(s.frames_dropped, 0u);
+  ASSERT_FALSE(frames.empty());
+  for (std::size_t i = 1; i < frames.size(); ++i) ASSERT_EQ(frames[i].sequence, frames[i - 1].sequence + 1);
+}
+
+TEST(UsbRigController, CountsDroppedReorderedAndDuplicatedFramesAndDeliversNoneTwice) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  auto frames = drain_for(rig, 100ms);
+  device.drop_frames(5);
+  auto more = drain_for(rig, 100ms);
+  frames.insert(frames.end(), more.begin(), more.end());
+  device.reorder_next_packet();
+  more = drain_for(rig, 100ms);
+  frames.insert(frames.end(), more.begin(), more.end());
+  device.duplicate_next_packet();
+  more = drain_for(rig, 100ms);
+  frames.insert(frames.end(), more.begin(), more.end());
+  const UsbRigStatus s = rig.status();
+  EXPECT_EQ(s.frames_dropped, 5u);
+  EXPECT_EQ(s.frames_reordered, 1u);  // the late one of the swapped pair
+  ASSERT_GT(device.frames_duplicated(), 0u);
+  EXPECT_EQ(s.frames_duplicated, device.frames_duplicated());
+  ASSERT_GE(frames.size(), 2u);
+  // Delivered frames rise strictly: none twice, none out of order; every number between the first
+  // and the last is delivered, dropped or late.
+  for (std::size_t i = 1; i < frames.size(); ++i) ASSERT_GT(frames[i].sequence, frames[i - 1].sequence);
+  const std::uint64_t span = frames.back().sequence - frames.front().sequence + 1;
+  EXPECT_EQ(span, frames.size() + s.frames_dropped + s.frames_reordered);
+}
+
+TEST(UsbRigController, UnplugKeepsTheFramesAndReplugResumesStreaming) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  auto before = drain_for(rig, 200ms);
+  ASSERT_GT(before.size(), 100u);
+
+  device.unplug();
+  ASSERT_TRUE(eventually([&] { return !rig.status().connected; }));
+  const UsbRigStatus gone = rig.status();
+  EXPECT_EQ(gone.disconnects, 1u);
+  EXPECT_NE(gone.last_fault.find("was unplugged"), std::string::npos) << gone.last_fault;
+  EXPECT_NE(error_of([&] { rig.stop(); }).find("is unplugged"), std::string::npos);
+  // Every frame received before the unplug is still there for the consumer.
+  const auto rest = drain_for(rig, 50ms);
+  before.insert(before.end(), rest.begin(), rest.end());
+  EXPECT_EQ(before.size(), gone.frames_received);
+
+  device.replug(5);
+  ASSERT_TRUE(eventually([&] { return rig.status().connected; }));
+  EXPECT_EQ(rig.status().reconnects, 1u);
+  EXPECT_NE(rig.status().last_fault.find("was unplugged"), std::string::npos);  // still told
+  const auto after = drain_for(rig, 300ms);
+  ASSERT_GT(after.size(), 100u);
+  // The same device, its clock running on: the frames continue later in device time.
+  EXPECT_GT(after.front().device_time_us, before.back().device_time_us);
+  for (std::size_t i = 1; i < after.size(); ++i) ASSERT_EQ(after[i].sequence, after[i - 1].sequence + 1);
+  EXPECT_EQ(rig.identify().serial, "NIB-0001");  // requests reach it again
+}
+
+TEST(UsbRigController, ReconnectsOnlyToTheSameSerial) {
+  Testbed testbed;
+  EmulatedRig ours(testbed.get(), EmulatedRigConfig{"NIB-OURS", 2});
+  UsbRigController rig;
+  ours.unplug();
+  ASSERT_TRUE(eventually([&] { return !rig.status().connected; }));
+  // Another controller arrives: the rescan (every 200 ms) and its hotplug event must pass it by.
+  EmulatedRig other(testbed.get(), EmulatedRigConfig{"NIB-OTHER", 3});
+  std::this_thread::sleep_for(600ms);
+  EXPECT_FALSE(rig.status().connected);
+  EXPECT_EQ(rig.status().reconnects, 0u);
+  ours.replug(4);
+  ASSERT_TRUE(eventually([&] { return rig.status().connected; }));
+  EXPECT_EQ(rig.identify().serial, "NIB-OURS");
+}
+
+TEST(UsbRigController, TheWatchdogStopsTheMotorWhenTheHostIsSilent) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController::Options options;
+  options.keep_alive = false;  // the host falls silent
+  UsbRigController rig(options);
+  rig.set_speed(0.1);
+  std::this_thread::sleep_for(800ms);  // silence beyond the 500 ms watchdog
+  EXPECT_EQ(device.status().mode, Mode::kIdle);
+  const auto frames = drain_for(rig, 50ms);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_TRUE(frames.back().flags & kWatchdogStopped);
+  const DeviceStatus s = rig.device_status();
+  EXPECT_EQ(s.fault, Fault::kWatchdog);
+}
+
+TEST(UsbRigController, TheKeepAliveHoldsTheWatchdogOff) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  UsbRigController rig;
+  rig.set_speed(0.1);
+  std::this_thread::sleep_for(1200ms);  // over twice the watchdog's timeout, no call of ours
+  EXPECT_EQ(device.status().mode, Mode::kSpeed);
+  EXPECT_EQ(device.status().fault, Fault::kNone);
+  const auto frames = drain_for(rig, 50ms);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_FALSE(frames.back().flags & kWatchdogStopped);
+  EXPECT_TRUE(frames.back().flags & kProfileRunning);
+  // The motor followed its speed loop to the target (5 time constants of 50 ms and more).
+  EXPECT_NEAR(frames.back().speed_m_s, 0.1f, 1e-3f);
+}
+
+TEST(UsbRigController, ClosingStopsTheMotorAndTheStream) {
+  Testbed testbed;
+  EmulatedRig device(testbed.get(), EmulatedRigConfig{});
+  {
+    UsbRigController rig;
+    rig.set_speed(0.2);
+    EXPECT_EQ(device.status().mode, Mode::kSpeed);
+    EXPECT_TRUE(device.streaming());
+  }
+  // At once, not after the watchdog's 500 ms.
+  EXPECT_EQ(device.status().mode, Mode::kIdle);
+  EXPECT_FALSE(device.streaming());
+}
+
+}  // namespace
+}  // namespace nibrig::rig::usb
