@@ -13,6 +13,8 @@
 #include "playback/audio_devices.hpp"
 #include "rig/capture.hpp"
 #include "rig/rig_request.hpp"
+#include "rig/usb/usb_device_list.hpp"
+#include "rig/usb/usb_protocol.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
@@ -149,7 +151,10 @@ void capture(const RigOptions& o) {
 }
 
 void devices() {
-  std::printf("rig controllers (USB): none found (the USB driver is not built yet)\n");
+  const auto controllers = rig::usb::list_rig_controllers();
+  std::printf("rig controllers (USB %04x:%04x):%s\n", rig::usb::kVendorId, rig::usb::kProductId,
+              controllers.empty() ? " none found" : "");
+  for (const auto& c : controllers) std::printf("  %s\n", rig::usb::describe(c).c_str());
   std::printf("audio inputs (an accelerometer on an input channel):\n");
   for (const auto& api : playback::list_devices())
     std::printf("%s\n", playback::describe_devices(api).c_str());
