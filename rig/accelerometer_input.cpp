@@ -16,6 +16,9 @@ AccelerometerInput::AccelerometerInput(const AccelerometerSettings& settings)
     : settings_(settings), clock_(kClockWindow_s, kClockWindows) {
   if (!(settings.m_s2_per_full_scale > 0.0) || !std::isfinite(settings.m_s2_per_full_scale))
     throw std::invalid_argument("the accelerometer's m/s² per full scale must be positive");
+  if (settings.device_latency_s &&
+      (!(*settings.device_latency_s >= 0.0) || !std::isfinite(*settings.device_latency_s)))
+    throw std::invalid_argument("the accelerometer's converter latency must be >= 0 s");
   playback::OutputSettings out;
   out.api = settings.api;
   out.device = settings.device;
@@ -30,7 +33,9 @@ AccelerometerInput::AccelerometerInput(const AccelerometerSettings& settings)
   // The callback sees input one period after its last sample was taken, and the back end reports
   // its own input latency on top (RtAudio: the port latency under JACK).
   buffering_s_ = static_cast<double>(info.period_frames) / rate_;
-  device_latency_s_ = static_cast<double>(std::max(0L, info.latency_frames)) / rate_;
+  device_latency_s_ = settings.device_latency_s
+                          ? *settings.device_latency_s
+                          : static_cast<double>(std::max(0L, info.latency_frames)) / rate_;
   buffer_.resize(8192);
   stamps_.resize(1024);
 }
@@ -54,6 +59,7 @@ std::size_t AccelerometerInput::read(std::vector<float>& into) {
     total += n;
     if (n < buffer_.size()) break;
   }
+  samples_read_ += total;
   return total;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct AccelerometerSettings {
   unsigned period_frames = 256;
   double m_s2_per_full_scale = 49.05;
   std::string stream_name = "nibrig-rig-input";
+  // The converter's latency, from the sample's instant to the audio graph; unset: what the back end
+  // reports for the device's capture port. Set it from a measurement, or to 0 for a source patched
+  // straight into the stream's port (a JACK client, as in the tests), which no converter delays.
+  std::optional<double> device_latency_s;
   bool connect_ports = true;  // JACK: connect to the device's ports
 };
 
@@ -37,6 +42,8 @@ class AccelerometerInput {
   // Appends the samples captured since the last call (full-scale units) and takes their stamps
   // into the clock. Capture thread only.
   std::size_t read(std::vector<float>& into);
+  // Samples read so far: the index the next one has in host_time_of.
+  std::uint64_t samples_read() const { return samples_read_; }
   // Host time (s, steady clock) at which sample `index` (counted from the stream's first) was
   // captured: the stamp of the callback that delivered it, less the latency the stamps do not
   // include. Call it as samples are read (it knows the last few hundred callbacks). The stamp of
@@ -68,6 +75,7 @@ class AccelerometerInput {
   Silence silence_;
   std::unique_ptr<playback::AudioOutput> stream_;
   ClockFit clock_;
+  std::uint64_t samples_read_ = 0;
   double rate_ = 0.0, buffering_s_ = 0.0, device_latency_s_ = 0.0;
   std::vector<float> buffer_;
   std::vector<playback::CaptureStamp> stamps_;

@@ -66,6 +66,12 @@ double ClockFit::host_time(double device_s) const {
   return device_s + intercept_ + slope_ * (device_s - reference_);
 }
 
+// host = device + intercept + slope·(device − reference), solved for device.
+double ClockFit::device_time(double host_s) const {
+  if (minima_.empty()) return open_ ? host_s - current_.offset_s : host_s;
+  return (host_s - intercept_ + slope_ * reference_) / (1.0 + slope_);
+}
+
 // host = device·(1 + slope) + c, so the device's clock runs at 1 / (1 + slope) of the host's.
 double ClockFit::drift_ppm() const { return 1e6 * (1.0 / (1.0 + slope_) - 1.0); }
 

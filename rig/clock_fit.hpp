@@ -29,6 +29,8 @@ class ClockFit {
   std::size_t windows() const { return minima_.size(); }
   // Host time of device time `device_s` (ready() only; otherwise the newest offset, or device_s).
   double host_time(double device_s) const;
+  // The inverse: the device time that maps to `host_s`.
+  double device_time(double host_s) const;
   // (device rate − host rate) / host rate, in parts per million: positive when the device's clock
   // runs fast.
   double drift_ppm() const;

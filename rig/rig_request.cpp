@@ -5,6 +5,7 @@
 #include "model/design/tool_sound.hpp"
 #include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
+#include "rig/usb_rig.hpp"
 
 namespace nibrig::rig {
 namespace {
@@ -43,8 +44,17 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
     }
     case RigKind::replay:
       return std::make_unique<ReplayRig>(request.replay, request.speedup);
-    case RigKind::usb:
-      throw std::invalid_argument("the USB rig is not built yet");
+    case RigKind::usb: {
+      UsbRigSettings settings;
+      settings.controller.serial = request.usb_serial;
+      settings.accelerometer.api = request.input_api;
+      settings.accelerometer.device = request.input_device;
+      settings.accelerometer.channel = request.input_channel;
+      settings.accelerometer.m_s2_per_full_scale = request.accelerometer_m_s2_per_full_scale;
+      settings.normal_load_N = request.load_N;
+      auto rig = std::make_unique<UsbRig>(settings);
+      return rig;
+    }
   }
   throw std::logic_error("unknown rig kind");
 }

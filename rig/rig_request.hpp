@@ -31,6 +31,7 @@ struct RigRequest {
   double speedup = 1.0;
   std::filesystem::path replay;  // a session folder, or a paper recording (replay rig)
   std::string usb_serial;        // empty: the only controller on the bus
+  std::string input_api;         // the accelerometer's audio back end (USB rig); empty: any
   std::string input_device;      // the accelerometer's audio input (USB rig)
   unsigned input_channel = 1;    // 1-based
   double accelerometer_m_s2_per_full_scale = 49.05;

@@ -26,6 +26,10 @@ struct SensorFrame {
   float normal_force_N = 0.0f;       // calibrated on the device: counts / (counts per N) × lever
   float tangential_force_N = 0.0f;
   std::uint16_t flags = 0;  // SensorFlag bits
+  // When the host received it, on its steady clock (ns): the USB driver stamps each packet as its
+  // transfer completes, for the time base (rig/clock_fit.hpp). 0 where no host received it (the
+  // simulated and replay rigs, whose frames are on the capture's timeline already).
+  std::int64_t host_ns = 0;
 };
 
 }  // namespace nibrig::rig

@@ -297,6 +297,10 @@ void LIBUSB_CALL UsbRigController::on_bulk(libusb_transfer* transfer) {
 }
 
 void UsbRigController::handle_packet(const libusb_transfer* transfer) {
+  // The packet's arrival, for the time base: the callback runs as the transfer is reaped.
+  const std::int64_t arrived_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                      std::chrono::steady_clock::now().time_since_epoch())
+                                      .count();
   std::array<SensorFrame, kMaxFramesPerPacket> frames;
   const PacketDecode decoded = decode_frame_packet(
       std::span<const std::uint8_t>(transfer->buffer, static_cast<std::size_t>(transfer->actual_length)),
@@ -308,6 +312,7 @@ void UsbRigController::handle_packet(const libusb_transfer* transfer) {
     return;
   }
   for (std::size_t i = 0; i < decoded.frames; ++i) {
+    frames[i].host_ns = arrived_ns;
     switch (tracker_.observe(frames[i].sequence)) {
       case SequenceTracker::Verdict::kDeliver:
         if (queue_.try_push(frames[i])) {

@@ -28,6 +28,8 @@ TEST(ClockFit, RecoversOffsetAndDriftFromJitteredArrivals) {
     worst = std::max(worst, std::abs(fit.host_time(device) - (true_host(device) + latency)));
   EXPECT_LT(worst, 1e-4);
   EXPECT_LT(fit.residual_s(), 1e-4);
+  for (double device = 1.0; device < 29.0; device += 7.0)
+    EXPECT_NEAR(fit.device_time(fit.host_time(device)), device, 1e-9);  // the inverse
 }
 
 // A clock without drift and without jitter: exact.

@@ -46,6 +46,12 @@ int JackFeeder::process(jack_nframes_t frames, void* self) noexcept {
     f.phase_ += f.phase_step_;
     if (f.phase_ > 2.0 * std::numbers::pi) f.phase_ -= 2.0 * std::numbers::pi;
   }
+  const std::int64_t entered_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(entered).count();
+  const std::int64_t due = f.impulse_due_ns_.load();
+  if (due != 0 && entered_ns >= due) {
+    f.impulse_due_ns_.store(0);
+    f.impulse_requested_.store(true);
+  }
   if (f.impulse_requested_.exchange(false)) {
     out[0] = 1.0f;
     f.impulse_frame_.store(jack_last_frame_time(f.client_));

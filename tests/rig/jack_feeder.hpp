@@ -24,6 +24,8 @@ class JackFeeder {
   bool connect(const std::string& destination);
   // The next cycle starts with an impulse of 1.0 instead of the sine's sample.
   void impulse() { impulse_requested_.store(true); }
+  // The first cycle processed at or after host time `host_s` (steady clock) starts with an impulse.
+  void impulse_at(double host_s) { impulse_due_ns_.store(static_cast<std::int64_t>(host_s * 1e9)); }
   // The JACK frame time of the cycle that carried the impulse (0 until then).
   jack_nframes_t impulse_frame() const { return impulse_frame_.load(); }
   // The host's steady clock (s) when the cycle carrying the impulse was processed: when the
@@ -41,6 +43,7 @@ class JackFeeder {
   jack_port_t* port_ = nullptr;
   double amplitude_, phase_step_, phase_ = 0.0;
   std::atomic<bool> impulse_requested_{false};
+  std::atomic<std::int64_t> impulse_due_ns_{0};
   std::atomic<jack_nframes_t> impulse_frame_{0};
   std::atomic<std::int64_t> impulse_host_ns_{0};
 };

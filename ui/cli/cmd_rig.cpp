@@ -35,7 +35,7 @@ struct RigOptions {
   double load = 2.2;
   unsigned seed = 1;
   double speedup = 1.0;
-  std::string input;
+  std::string input_api, input;
   unsigned input_channel = 1;
   double accelerometer = 49.05;
   std::filesystem::path output;
@@ -70,6 +70,7 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
                   "it computes")
       ->check(in_range(0, 1e6, "a speed-up factor"));
   cmd->add_option("--input", o.input, "USB rig: the audio input the accelerometer is on (by name)");
+  cmd->add_option("--input-api", o.input_api, "USB rig: the audio back end of --input (jack, alsa, pulse)");
   cmd->add_option("--input-channel", o.input_channel, "USB rig: the accelerometer's input channel (1-based)")
       ->check(whole_in_range(1, 64, "a channel number"));
   cmd->add_option("--accelerometer", o.accelerometer,
@@ -95,6 +96,7 @@ rig::RigRequest rig_request(const RigOptions& o) {
   r.load_N = o.load;
   r.seed = o.seed;
   r.speedup = o.speedup;
+  r.input_api = o.input_api;
   r.input_device = o.input;
   r.input_channel = o.input_channel;
   r.accelerometer_m_s2_per_full_scale = o.accelerometer;

@@ -160,6 +160,16 @@ unsigned EmulatedRig::frames_duplicated() const {
   std::lock_guard lock(mutex_);
   return duplicated_;
 }
+void EmulatedRig::tap(std::uint64_t device_us, double extra_N) {
+  std::lock_guard lock(mutex_);
+  tap_ = std::make_pair(device_us, extra_N);
+}
+
+std::uint64_t EmulatedRig::tapped_at_us() const {
+  std::lock_guard lock(mutex_);
+  return tapped_at_us_;
+}
+
 void EmulatedRig::hold_stream(bool hold) {
   std::lock_guard lock(mutex_);
   hold_ = hold;
@@ -203,10 +213,11 @@ unsigned EmulatedRig::control_requests() const {
   return control_requests_;
 }
 
-std::uint64_t EmulatedRig::clock_us() const {
-  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
-                                        std::chrono::steady_clock::now() - power_up_)
-                                        .count());
+std::uint64_t EmulatedRig::clock_us() const { return device_us_at(std::chrono::steady_clock::now()); }
+
+std::uint64_t EmulatedRig::device_us_at(std::chrono::steady_clock::time_point host) const {
+  const double elapsed_us = std::chrono::duration<double, std::micro>(host - power_up_).count();
+  return static_cast<std::uint64_t>(elapsed_us * (1.0 + config_.clock_ppm * 1e-6));
 }
 
 gboolean EmulatedRig::on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
@@ -355,6 +366,11 @@ void EmulatedRig::sample_until(std::uint64_t now_us) {
     f.normal_force_N = static_cast<float>(kLoadN - force_zero_N_);
     f.tangential_force_N = static_cast<float>(0.3 * (kLoadN - force_zero_N_));
     f.flags = flags_;
+    if (tap_ && next_sample_us_ >= tap_->first) {
+      f.normal_force_N += static_cast<float>(tap_->second);
+      tapped_at_us_ = next_sample_us_;
+      tap_.reset();
+    }
     next_sample_us_ += period_us;
     if (!streaming_ || !plugged_) continue;
     if (drop_ > 0) {  // sampled, never sent: a gap in the sequence

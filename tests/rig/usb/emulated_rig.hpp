@@ -32,6 +32,8 @@ struct EmulatedRigConfig {
   unsigned frame_rate_hz = 1000;
   unsigned frames_per_packet = 8;
   std::uint16_t protocol_version = kProtocolVersion;
+  // The device's crystal against the host's: its microsecond clock runs this many ppm fast.
+  double clock_ppm = 0.0;
 };
 
 class EmulatedRig {
@@ -51,6 +53,15 @@ class EmulatedRig {
   void hold_stream(bool hold);         // no packet is sent while held: bulk transfers time out
   void refuse_next(Request request, Refusal why);  // the next such request STALLs
   void ignore_next_control();          // the next control request is never answered
+  // A tap on the arm: the first frame sampled at or after device time `device_us` reads
+  // `extra_N` more normal force (a sharp event the time-base tests find in both streams).
+  void tap(std::uint64_t device_us, double extra_N);
+  // The device time of the frame the last tap went into (0 until then).
+  std::uint64_t tapped_at_us() const;
+  // The host's steady clock at device time 0, and the device time at a host instant: the truth the
+  // time-base tests compare with (device = (host - power_up) · (1 + ppm)).
+  std::chrono::steady_clock::time_point power_up() const { return power_up_; }
+  std::uint64_t device_us_at(std::chrono::steady_clock::time_point host) const;
 
   // What the device saw and holds.
   DeviceStatus status() const;
@@ -135,6 +146,8 @@ class EmulatedRig {
   bool duplicate_ = false;
   unsigned duplicated_ = 0;
   bool hold_ = false;
+  std::optional<std::pair<std::uint64_t, double>> tap_;  // device time, extra newtons
+  std::uint64_t tapped_at_us_ = 0;
   std::optional<std::pair<std::uint8_t, Refusal>> refuse_next_;
   bool ignore_next_ = false;
 

@@ -133,6 +133,9 @@ TEST(RigCli, BadRequestsGetOneClearLine) {
        2, "--seconds"},
       {{"rig", "capture", "--simulated", "--tool", "nope", "--surface", "office", "-o", out}, 1,
        "no vibration spectrum of tool 'nope'"},
+      // No controller on this machine's bus: the line says what was looked for and what was found.
+      {{"rig", "capture", "--usb", "--tool", "cryon", "--surface", "office", "-o", out}, 1,
+       "no nibrig rig controller (USB 1209:000a) on the bus"},
   };
   for (const auto& c : cases) {
     ::testing::internal::CaptureStderr();

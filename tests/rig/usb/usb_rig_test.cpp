@@ -1,0 +1,136 @@
+// The whole rig at once: the USB controller emulated through umockdev and the accelerometer through
+// a real JACK server, captured together. A tap on the arm (a one-frame force pulse in the device's
+// stream, on the device's own clock, running 80 ppm fast) and an impulse into the accelerometer
+// input at the same host instant must land together on the capture's timeline: the time base's
+// alignment error, measured.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <thread>
+
+#include "model/io/session.hpp"
+#include "rig/capture.hpp"
+#include "rig/usb_rig.hpp"
+#include "tests/rig/jack_feeder.hpp"
+#include "tests/rig/usb/emulated_rig.hpp"
+#include "tests/support/jack_server.hpp"
+
+namespace nibrig::rig {
+namespace {
+
+using namespace std::chrono_literals;
+
+TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
+  nibrig::testing::JackServer server;
+  usb::testing::Testbed testbed;
+  usb::testing::EmulatedRigConfig config;
+  config.clock_ppm = 80.0;  // a crystal within the usual ±100 ppm
+  usb::testing::EmulatedRig device(testbed.get(), config);
+  testing::JackFeeder feeder("tap-feeder", 0.01, 440.0);
+
+  UsbRigSettings settings;
+  settings.accelerometer.api = "jack";
+  settings.accelerometer.stream_name = "usb-rig-accel";
+  settings.accelerometer.connect_ports = false;
+  settings.accelerometer.period_frames = 64;
+  settings.accelerometer.device_latency_s = 0.0;  // the feeder is patched straight in: no converter
+  UsbRig rig(settings);
+  ASSERT_TRUE(feeder.connect("usb-rig-accel:inport 0"));
+  EXPECT_EQ(rig.description().kind, "usb");
+  EXPECT_NE(rig.description().name.find("NIB-0001"), std::string::npos);
+
+  rig.start(SpeedProfile("hold", {{0.0, 0.05}, {3.0, 0.05}}));
+  RigData all, batch;
+  bool more = true, tapped = false;
+  double tap_host_s = 0.0;
+  const auto started = std::chrono::steady_clock::now();
+  while (more) {
+    batch.clear();
+    more = rig.read(batch, 50ms);
+    all.frames.insert(all.frames.end(), batch.frames.begin(), batch.frames.end());
+    all.acceleration.insert(all.acceleration.end(), batch.acceleration.begin(), batch.acceleration.end());
+    if (!tapped && std::chrono::steady_clock::now() - started > 1500ms) {
+      // Both at one host instant 200 ms ahead: the device taps its first frame from that device
+      // time on, the feeder its first JACK cycle from that host time on.
+      tapped = true;
+      const auto when = std::chrono::steady_clock::now() + 200ms;
+      tap_host_s = std::chrono::duration<double>(when.time_since_epoch()).count();
+      device.tap(device.device_us_at(when), 5.0);
+      feeder.impulse_at(tap_host_s);
+    }
+  }
+  EXPECT_EQ(rig.health().ended_because, "profile finished");
+  ASSERT_EQ(all.frames.size(), 3000u);
+  ASSERT_EQ(all.acceleration.size(), 3000u * 48u);
+
+  // Where the tap landed among the frames: the centroid of the force above the load (a one-frame
+  // pulse interpolated onto the session's frames spreads over two).
+  double weight = 0.0, moment = 0.0;
+  for (std::size_t k = 0; k < all.frames.size(); ++k) {
+    const double excess = all.frames[k].normal_force_N - 2.2;
+    if (excess > 0.05) weight += excess, moment += excess * static_cast<double>(k);
+  }
+  ASSERT_GT(weight, 4.0) << "the tap was not found in the frames";
+  EXPECT_NEAR(weight, 5.0, 0.1);  // interpolation keeps the pulse's area
+  const double tap_on_timeline_s = moment / weight / 1000.0;
+  std::size_t impulse = 0;
+  for (std::size_t n = 0; n < all.acceleration.size(); ++n)
+    if (all.acceleration[n] > 0.9f) impulse = n;
+  ASSERT_GT(impulse, 0u) << "the impulse was not found in the acceleration";
+  const double impulse_on_timeline_s = static_cast<double>(impulse) / 48000.0;
+
+  // The truth: the device time the tap went into, as the host saw it, and the feeder's cycle.
+  const double tapped_host_s =
+      std::chrono::duration<double>(device.power_up().time_since_epoch()).count() +
+      static_cast<double>(device.tapped_at_us()) * 1e-6 / (1.0 + config.clock_ppm * 1e-6);
+  const double truth = feeder.impulse_host_s() - tapped_host_s;
+  const double measured = impulse_on_timeline_s - tap_on_timeline_s;
+  const double error_ms = (measured - truth) * 1e3;
+  RecordProperty("alignment_error_ms", std::to_string(error_ms));
+  RecordProperty("reported_alignment_error_ms", std::to_string(rig.health().alignment_error_ms));
+  EXPECT_LT(std::abs(error_ms), 2.0);
+  EXPECT_NEAR(tap_host_s, tapped_host_s, 0.0015);  // the device tapped the frame due then
+  EXPECT_TRUE(std::isfinite(rig.health().alignment_error_ms));
+}
+
+// Unplugged in the middle of a capture: the capture ends, the session is finished with everything
+// received, and its record says why and how much.
+TEST(UsbRig, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
+  nibrig::testing::JackServer server;
+  usb::testing::Testbed testbed;
+  usb::testing::EmulatedRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
+  testing::JackFeeder feeder("unplug-feeder", 0.1, 440.0);
+  UsbRigSettings settings;
+  settings.accelerometer.api = "jack";
+  settings.accelerometer.stream_name = "unplug-accel";
+  settings.accelerometer.connect_ports = false;
+  settings.accelerometer.period_frames = 64;
+  UsbRig rig(settings);
+  ASSERT_TRUE(feeder.connect("unplug-accel:inport 0"));
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "usb_rig_unplugged";
+  std::filesystem::remove_all(dir);
+  CaptureOptions options;
+  options.folder = dir / "session";
+  options.tool = "cryon";
+  options.surface = "office";
+  std::thread unplug([&] {
+    std::this_thread::sleep_for(1500ms);
+    device.unplug();
+  });
+  const CaptureResult result = capture_session(rig, SpeedProfile("hold", {{0, 0.05}, {10.0, 0.05}}), options);
+  unplug.join();
+  EXPECT_FALSE(result.complete);
+  EXPECT_NE(result.record.ended_because.find("unplugged"), std::string::npos) << result.record.ended_because;
+  EXPECT_GT(result.record.seconds, 1.0);
+  EXPECT_LT(result.record.seconds, 3.0);
+  const model::io::Session session = model::io::read_session(result.folder);
+  EXPECT_TRUE(session.complete);  // finished (renamed), though the profile was not
+  EXPECT_EQ(session.info.capture->ended_because, result.record.ended_because);
+  EXPECT_NEAR(static_cast<double>(session.acceleration.size()) / 48.0,
+              static_cast<double>(session.speed_m_s.size()), 48.0);  // the streams end together
+}
+
+}  // namespace
+}  // namespace nibrig::rig
