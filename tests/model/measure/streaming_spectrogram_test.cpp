@@ -75,6 +75,14 @@ TEST(StreamingSpectrogram, GivesTheOfflineRowsForAnyBlockSizes) {
   expect_same_as_offline(x, fs, s, {30000});
 }
 
+TEST(StreamingSpectrogram, GivesTheOfflineRowsOfASignalLongEnoughToBeSplitOverThreads) {
+  // 1 + (300000 - 1024) / 256 = 1168 segments: compute_spectrogram hands them to two threads, each
+  // with its own analyzer; a row at the seam computed from the wrong run would differ here.
+  const double fs = 48000.0;
+  const auto x = noisy_tones(300000, fs, 7);
+  expect_same_as_offline(x, fs, {1024, 256, Window::hann, true}, {480});
+}
+
 TEST(StreamingSpectrogram, GivesTheOfflineRowsForHopsLongerThanASegment) {
   const double fs = 1000.0;
   const auto x = noisy_tones(20000, fs, 2);
