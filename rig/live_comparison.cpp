@@ -194,26 +194,32 @@ void LiveComparison::run() {
     ++an.completed;
   };
 
-  // Completes rows in order while both spectra and (unless at the end) all their speed samples are
-  // in; at the end, a row takes the speed samples of its span that did arrive.
+  // Completes the oldest waiting row if all its speed samples are in, or regardless when `now`
+  // (the capture ended, or the row's slot is needed): then it takes the speed samples of its span
+  // that did arrive, and goes without a speed if none did. False when it must wait.
+  const auto complete_next = [&](bool now) {
+    const auto range = measure::speed_samples_of_span(
+        an.completed * settings_.spectrogram.hop, length, settings_.acceleration_rate_hz,
+        settings_.speed_rate_hz);
+    if (an.speed_total < range.end && !now) return false;
+    const std::uint64_t oldest =
+        an.speed_total > an.speeds.size() ? an.speed_total - an.speeds.size() : 0;
+    const std::uint64_t begin = std::max(range.begin, oldest);
+    const std::uint64_t end = std::min(range.end, an.speed_total);
+    double speed = std::numeric_limits<double>::quiet_NaN();
+    if (end > begin) {
+      double sum = 0.0;
+      for (std::uint64_t i = begin; i < end; ++i) sum += an.speeds[i % an.speeds.size()];
+      speed = sum / static_cast<double>(end - begin);
+    }
+    complete_row(speed);
+    return true;
+  };
+
+  // Completes rows in order while both spectra are in and complete_next lets them go.
   const auto complete_ready = [&](bool at_end) {
     const std::uint64_t ready = std::min(an.measured.rows(), an.simulated.rows());
-    while (an.completed < ready) {
-      const auto range = measure::speed_samples_of_span(
-          an.completed * settings_.spectrogram.hop, length, settings_.acceleration_rate_hz,
-          settings_.speed_rate_hz);
-      if (an.speed_total < range.end && !at_end) return;
-      const std::uint64_t oldest =
-          an.speed_total > an.speeds.size() ? an.speed_total - an.speeds.size() : 0;
-      const std::uint64_t begin = std::max(range.begin, oldest);
-      const std::uint64_t end = std::min(range.end, an.speed_total);
-      double speed = std::numeric_limits<double>::quiet_NaN();
-      if (end > begin) {
-        double sum = 0.0;
-        for (std::uint64_t i = begin; i < end; ++i) sum += an.speeds[i % an.speeds.size()];
-        speed = sum / static_cast<double>(end - begin);
-      }
-      complete_row(speed);
+    while (an.completed < ready && complete_next(at_end)) {
     }
   };
 
@@ -224,9 +230,8 @@ void LiveComparison::run() {
     const std::span<const float> s(block.simulated.data(), block.acceleration_count);
     an.measured.push(m, [&](const measure::SpectrogramRow& row) {
       // A row that would overwrite one still waiting for its speed: the speed is not coming in
-      // time (the producer sends none), so the waiting one goes without.
-      while (row.index - an.completed >= an.pending_capacity)
-        complete_row(std::numeric_limits<double>::quiet_NaN());
+      // time (the producer stopped sending it), so the waiting one goes with what has come.
+      while (row.index - an.completed >= an.pending_capacity) complete_next(true);
       const std::size_t slot = static_cast<std::size_t>(row.index % an.pending_capacity) * an.bins;
       std::copy(row.amplitude.begin(), row.amplitude.end(), an.pending_measured.begin() + slot);
     });

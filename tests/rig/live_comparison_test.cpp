@@ -176,6 +176,29 @@ TEST(LiveComparison, TheUiTakesContiguousRowsWhileTheCaptureRuns) {
   EXPECT_GE(takes_with_rows, 3u) << "rows arrived while the capture ran, not only at the end";
 }
 
+TEST(LiveComparison, RowsWhoseSpeedNeverComesReachTheWaterfallButNotTheTable) {
+  // A capture whose speed stream stops after one second: later rows wait for their speed until the
+  // waiting room is full or the capture ends, then go to the waterfall without a speed.
+  const Capture c = make_capture(8.0, 4);
+  Capture cut = c;
+  cut.speed.resize(1000);
+  LiveComparison live(LiveComparisonSettings{}, threshold());
+  produce(live, cut, 480);
+  live.finish();
+  const auto table = live.table();
+  const std::uint64_t rows = 1 + (c.measured.size() - 4096) / 1024;
+  EXPECT_EQ(table.rows_analysed, rows);
+  // Rows that start before 1 s (r · 1024 < 48000: rows 0-46) have at least some of their speed
+  // samples, the last ones only those up to sample 999 that came; from row 47 on none came.
+  EXPECT_EQ(table.summary.rows, 47u);
+  EXPECT_EQ(table.rows_without_speed, rows - 47);
+  WaterfallRows w;
+  live.take_new_rows(w);
+  EXPECT_EQ(w.rows(), rows);
+  EXPECT_TRUE(std::isnan(w.speeds_m_s.back())) << "a row without speed says so";
+  EXPECT_FALSE(std::isnan(w.speeds_m_s.front()));
+}
+
 TEST(LiveComparison, TheProducersPushNeverAllocatesEvenWhenTheQueueIsFull) {
   const Capture c = make_capture(2.0, 3);
   LiveComparisonSettings settings;
