@@ -36,15 +36,15 @@ nlohmann::json comparison_json(const std::string& tool, const std::string& surfa
       "threshold-weighted mean vibration";
   nlohmann::json bins = nlohmann::json::array();
   for (const auto& b : table.bins) {
-    bins.push_back({{"min_speed_mm_s", b.min_speed_m_s * kMmPerM},
-                    {"max_speed_mm_s", b.max_speed_m_s * kMmPerM},
-                    {"mean_speed_mm_s", number_or_null(b.mean_speed_m_s * kMmPerM)},
-                    {"rows", b.rows},
-                    {"lsd_db", number_or_null(b.lsd_db)},
-                    {"measured_weighted_mean", number_or_null(b.measured_weighted_mean)},
-                    {"simulated_weighted_mean", number_or_null(b.simulated_weighted_mean)},
-                    {"weighted_mean_log10_difference",
-                     number_or_null(b.weighted_mean_log10_difference)}});
+    bins.push_back(
+        {{"min_speed_mm_s", b.min_speed_m_s * kMmPerM},
+         {"max_speed_mm_s", b.max_speed_m_s * kMmPerM},
+         {"mean_speed_mm_s", number_or_null(b.mean_speed_m_s * kMmPerM)},
+         {"rows", b.rows},
+         {"lsd_db", number_or_null(b.lsd_db)},
+         {"measured_weighted_mean", number_or_null(b.measured_weighted_mean)},
+         {"simulated_weighted_mean", number_or_null(b.simulated_weighted_mean)},
+         {"weighted_mean_log10_difference", number_or_null(b.weighted_mean_log10_difference)}});
   }
   j["speed_bins"] = std::move(bins);
   const auto& s = table.summary;

@@ -198,9 +198,9 @@ void LiveComparison::run() {
   // (the capture ended, or the row's slot is needed): then it takes the speed samples of its span
   // that did arrive, and goes without a speed if none did. False when it must wait.
   const auto complete_next = [&](bool now) {
-    const auto range = measure::speed_samples_of_span(
-        an.completed * settings_.spectrogram.hop, length, settings_.acceleration_rate_hz,
-        settings_.speed_rate_hz);
+    const auto range =
+        measure::speed_samples_of_span(an.completed * settings_.spectrogram.hop, length,
+                                       settings_.acceleration_rate_hz, settings_.speed_rate_hz);
     if (an.speed_total < range.end && !now) return false;
     const std::uint64_t oldest =
         an.speed_total > an.speeds.size() ? an.speed_total - an.speeds.size() : 0;
@@ -300,8 +300,7 @@ void LiveComparison::publish(bool finished) {
   rows_.simulated_db.insert(rows_.simulated_db.end(), batch.simulated_db.begin(),
                             batch.simulated_db.end());
   rows_.times_s.insert(rows_.times_s.end(), batch.times_s.begin(), batch.times_s.end());
-  rows_.speeds_m_s.insert(rows_.speeds_m_s.end(), batch.speeds_m_s.begin(),
-                          batch.speeds_m_s.end());
+  rows_.speeds_m_s.insert(rows_.speeds_m_s.end(), batch.speeds_m_s.begin(), batch.speeds_m_s.end());
   if (rows_.rows() > settings_.max_waterfall_rows) {
     const std::size_t excess = rows_.rows() - settings_.max_waterfall_rows;
     drop_oldest(rows_, excess);

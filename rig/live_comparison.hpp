@@ -1,9 +1,9 @@
 // The live comparison of a rig capture (issue 16): the capture thread hands measured and simulated
-// acceleration and the measured speed over a lock-free queue, an analysis thread of its own runs the
-// two streaming spectrograms and the speed-binned comparison, and a UI takes the new waterfall rows
-// and the per-bin table whenever it draws. Neither the capture thread nor the UI ever waits for the
-// analysis: the capture thread only copies into a queue slot, and the UI and the analysis thread
-// share nothing but a snapshot behind a mutex that the capture thread never touches.
+// acceleration and the measured speed over a lock-free queue, an analysis thread of its own runs
+// the two streaming spectrograms and the speed-binned comparison, and a UI takes the new waterfall
+// rows and the per-bin table whenever it draws. Neither the capture thread nor the UI ever waits
+// for the analysis: the capture thread only copies into a queue slot, and the UI and the analysis
+// thread share nothing but a snapshot behind a mutex that the capture thread never touches.
 #pragma once
 
 #include <array>
@@ -17,8 +17,8 @@
 #include <thread>
 #include <vector>
 
-#include "model/measure/speed_binned_comparison.hpp"
 #include "model/measure/spectrogram.hpp"
+#include "model/measure/speed_binned_comparison.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "rt/spsc_queue.hpp"
 

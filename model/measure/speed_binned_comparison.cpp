@@ -36,8 +36,8 @@ std::vector<double> geometric_speed_edges(double min_speed_m_s, double max_speed
   std::vector<double> edges(speed_bins + 1);
   const double ratio = max_speed_m_s / min_speed_m_s;
   for (std::size_t b = 0; b <= speed_bins; ++b)
-    edges[b] = min_speed_m_s *
-               std::pow(ratio, static_cast<double>(b) / static_cast<double>(speed_bins));
+    edges[b] =
+        min_speed_m_s * std::pow(ratio, static_cast<double>(b) / static_cast<double>(speed_bins));
   edges.front() = min_speed_m_s;  // exact ends, whatever pow rounds to
   edges.back() = max_speed_m_s;
   return edges;
@@ -112,10 +112,9 @@ bool SpeedBinnedComparison::add(double speed_m_s, std::span<const double> measur
                                 std::span<const double> simulated) {
   const std::size_t n = frequencies_.size();
   if (measured.size() != n || simulated.size() != n)
-    throw std::invalid_argument("speed-binned comparison: a row has " +
-                                std::to_string(measured.size()) + " and " +
-                                std::to_string(simulated.size()) + " values, expected " +
-                                std::to_string(n));
+    throw std::invalid_argument(
+        "speed-binned comparison: a row has " + std::to_string(measured.size()) + " and " +
+        std::to_string(simulated.size()) + " values, expected " + std::to_string(n));
   const std::size_t b = bin_of(speed_m_s);
   if (b == speed_bins()) {
     ++outside_;

@@ -58,8 +58,8 @@ struct ComparisonSummary {
 class SpeedBinnedComparison {
  public:
   // frequencies_hz: the spectrograms' frequencies (both streams share them). Throws
-  // std::invalid_argument for no speed bin, speeds that are not 0 < min < max and finite, fewer than
-  // two frequencies, or a band holding fewer than two of them (the descriptor needs two).
+  // std::invalid_argument for no speed bin, speeds that are not 0 < min < max and finite, fewer
+  // than two frequencies, or a band holding fewer than two of them (the descriptor needs two).
   SpeedBinnedComparison(std::vector<double> frequencies_hz,
                         const SpeedBinnedComparisonSettings& settings, ThresholdCurve threshold);
 

@@ -12,7 +12,8 @@ namespace {
 const SpectrogramSettings& checked(const SpectrogramSettings& s, double rate) {
   if (s.segment_length < 2)
     throw std::invalid_argument("streaming spectrogram: segment length must be at least 2 samples");
-  if (s.hop == 0) throw std::invalid_argument("streaming spectrogram: hop must be at least 1 sample");
+  if (s.hop == 0)
+    throw std::invalid_argument("streaming spectrogram: hop must be at least 1 sample");
   if (!(rate > 0.0) || !std::isfinite(rate))
     throw std::invalid_argument("streaming spectrogram: sample rate must be positive and finite");
   return s;
@@ -52,8 +53,8 @@ void StreamingSpectrogram::push_impl(std::span<const T> samples, void* sink, Emi
     if (buffered_ == buffer_.size()) {
       // Full: drop what precedes the next segment. Fewer than a segment's samples from next_start
       // on are ever left unanalysed, so at least a segment's room comes free.
-      const auto drop = static_cast<std::size_t>(
-          std::min<std::uint64_t>(buffered_, next_start - buffer_start_));
+      const auto drop =
+          static_cast<std::size_t>(std::min<std::uint64_t>(buffered_, next_start - buffer_start_));
       std::copy(buffer_.begin() + static_cast<std::ptrdiff_t>(drop),
                 buffer_.begin() + static_cast<std::ptrdiff_t>(buffered_), buffer_.begin());
       buffered_ -= drop;
@@ -61,8 +62,8 @@ void StreamingSpectrogram::push_impl(std::span<const T> samples, void* sink, Emi
     }
     if (buffered_ == 0 && total_ < next_start) {
       // A hop longer than a segment leaves samples no segment covers: skip them unstored.
-      const auto skip = static_cast<std::size_t>(
-          std::min<std::uint64_t>(samples.size(), next_start - total_));
+      const auto skip =
+          static_cast<std::size_t>(std::min<std::uint64_t>(samples.size(), next_start - total_));
       samples = samples.subspan(skip);
       total_ += skip;
       buffer_start_ = total_;

@@ -1,7 +1,7 @@
-// The spectrogram of a signal that arrives in pieces (a live rig's acceleration): samples are pushed
-// in blocks of any size and every complete segment becomes a row as soon as its last sample is in.
-// Rows are exactly compute_spectrogram's rows for the concatenated signal (same analyzer, window,
-// mean removal and amplitude convention), so a live waterfall and the offline report agree.
+// The spectrogram of a signal that arrives in pieces (a live rig's acceleration): samples are
+// pushed in blocks of any size and every complete segment becomes a row as soon as its last sample
+// is in. Rows are exactly compute_spectrogram's rows for the concatenated signal (same analyzer,
+// window, mean removal and amplitude convention), so a live waterfall and the offline report agree.
 #pragma once
 
 #include <cstddef>
@@ -67,8 +67,8 @@ class StreamingSpectrogram {
   double rate_;
   SpectrumAnalyzer analyzer_;
   std::vector<double> frequencies_;
-  // Samples [buffer_start_, buffer_start_ + buffered_) of the stream; twice a segment, so that after
-  // dropping what no later segment needs there is always room for at least one more segment.
+  // Samples [buffer_start_, buffer_start_ + buffered_) of the stream; twice a segment, so that
+  // after dropping what no later segment needs there is always room for at least one more segment.
   std::vector<double> buffer_;
   std::size_t buffered_ = 0;
   std::uint64_t buffer_start_ = 0;

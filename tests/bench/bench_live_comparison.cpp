@@ -43,7 +43,8 @@ void BM_LiveComparisonAnalysis(benchmark::State& state) {
   for (std::size_t n = 0; n < measured.size(); ++n) {
     const double t = static_cast<double>(n) / kRate;
     measured[n] = static_cast<float>(std::sin(2 * std::numbers::pi * 180.0 * t) + noise(rng));
-    simulated[n] = static_cast<float>(0.8 * std::sin(2 * std::numbers::pi * 190.0 * t) + noise(rng));
+    simulated[n] =
+        static_cast<float>(0.8 * std::sin(2 * std::numbers::pi * 190.0 * t) + noise(rng));
   }
   measure::StreamingSpectrogram a(kRate, settings), b(kRate, settings);
   measure::SpeedBinnedComparison comparison(a.frequencies_hz(), {}, threshold());
@@ -72,8 +73,7 @@ void BM_LiveComparisonAnalysis(benchmark::State& state) {
   }
   const double cpu = thread_cpu_seconds() - cpu_start;
   state.counters["lsd_db"] = lsd;
-  state.counters["core_percent"] =
-      100.0 * cpu / static_cast<double>(state.iterations() * kSeconds);
+  state.counters["core_percent"] = 100.0 * cpu / static_cast<double>(state.iterations() * kSeconds);
 }
 
 BENCHMARK(BM_LiveComparisonAnalysis)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "model/measure/speed_binned_comparison.hpp"
 #include "model/measure/spectrogram.hpp"
+#include "model/measure/speed_binned_comparison.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 namespace nibrig::rig {
@@ -41,7 +41,8 @@ Capture make_capture(double seconds, unsigned seed) {
         (0.3 + t / seconds) * std::sin(2 * M_PI * (100.0 + 40.0 * t) * t) + noise(rng)));
   }
   for (std::size_t i = 0; i < static_cast<std::size_t>(seconds * 1000.0); ++i)
-    c.speed.push_back(static_cast<float>(0.017 + 0.23 * static_cast<double>(i) / (seconds * 1000.0)));
+    c.speed.push_back(
+        static_cast<float>(0.017 + 0.23 * static_cast<double>(i) / (seconds * 1000.0)));
   return c;
 }
 
@@ -79,9 +80,9 @@ TEST(LiveComparison, GivesTheOfflineComparisonOfTheSameSignals) {
   measure::SpeedBinnedComparison offline(sm.frequencies_hz, settings.comparison, threshold());
   std::vector<double> row_m(sm.frequencies_hz.size()), row_s(row_m.size());
   for (Eigen::Index r = 0; r < sm.amplitude.rows(); ++r) {
-    const auto span = measure::speed_samples_of_span(
-        static_cast<std::uint64_t>(r) * settings.spectrogram.hop,
-        settings.spectrogram.segment_length, 48000.0, 1000.0);
+    const auto span =
+        measure::speed_samples_of_span(static_cast<std::uint64_t>(r) * settings.spectrogram.hop,
+                                       settings.spectrogram.segment_length, 48000.0, 1000.0);
     double sum = 0.0;
     for (auto i = span.begin; i < span.end; ++i) sum += v[i];
     for (std::size_t k = 0; k < row_m.size(); ++k) {
@@ -123,11 +124,10 @@ TEST(LiveComparison, GivesTheOfflineComparisonOfTheSameSignals) {
     EXPECT_DOUBLE_EQ(rows.times_s[r], sm.times_s[r]);
     for (std::size_t k = 0; k < rows.bins; ++k) {
       const auto i = static_cast<Eigen::Index>(r), j = static_cast<Eigen::Index>(k);
-      worst_db = std::max({worst_db,
-                           std::abs(rows.measured_db[r * rows.bins + k] -
-                                    20.0 * std::log10(sm.amplitude(i, j))),
-                           std::abs(rows.simulated_db[r * rows.bins + k] -
-                                    20.0 * std::log10(ss.amplitude(i, j)))});
+      worst_db = std::max(
+          {worst_db,
+           std::abs(rows.measured_db[r * rows.bins + k] - 20.0 * std::log10(sm.amplitude(i, j))),
+           std::abs(rows.simulated_db[r * rows.bins + k] - 20.0 * std::log10(ss.amplitude(i, j)))});
     }
   }
   // Float dB: 24-bit mantissa on values up to ~200 dB is ~1e-5 dB.

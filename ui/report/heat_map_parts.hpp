@@ -23,7 +23,7 @@ struct ColourRange {
 // Draws map's cells, axes, axis titles and colour bar inside `area` (page pixels), leaving `top`
 // px free above the plot for a title the caller draws; map.title and map.size are not used.
 // Returns the plot box.
-Box draw_heat_map(PlotPage& page, const HeatMap& map, const Box& area, double top,
-                  const Style& st, std::optional<ColourRange> range = std::nullopt);
+Box draw_heat_map(PlotPage& page, const HeatMap& map, const Box& area, double top, const Style& st,
+                  std::optional<ColourRange> range = std::nullopt);
 
 }  // namespace nibrig::ui::report::detail

@@ -41,8 +41,8 @@ TEST(GeometricSpeedEdges, SpanTheRangeWithAConstantRatio) {
 
 TEST(SpeedBinnedComparison, TheBandIsTheCatalogsHalfOpenOne) {
   SpeedBinnedComparison c(frequencies(), {}, test_threshold());
-  EXPECT_EQ(c.band_first(), 1u);   // 10 Hz, the first >= 6 Hz
-  EXPECT_EQ(c.band_last(), 50u);   // 500 Hz itself is out
+  EXPECT_EQ(c.band_first(), 1u);  // 10 Hz, the first >= 6 Hz
+  EXPECT_EQ(c.band_last(), 50u);  // 500 Hz itself is out
   // 1024-sample segments at 48 kHz are 46.9 Hz apart: ten bins in the band, accepted; a band of
   // 6-40 Hz holds none and is refused rather than compared on nothing.
   std::vector<double> coarse(513);
@@ -156,7 +156,8 @@ TEST(LogSpectralDistance, SkipsBinsWhereEitherIsZero) {
   const std::vector<double> m{1.0, 0.0, 1.0, 1.0}, s{10.0, 3.0, 0.0, 1.0};
   // Bins 0 and 3 count: 20 dB and 0 dB, RMS √(400/2).
   EXPECT_NEAR(log_spectral_distance_db(m, s), std::sqrt(200.0), 1e-12);
-  EXPECT_TRUE(std::isnan(log_spectral_distance_db(std::vector<double>{0.0}, std::vector<double>{1.0})));
+  EXPECT_TRUE(
+      std::isnan(log_spectral_distance_db(std::vector<double>{0.0}, std::vector<double>{1.0})));
 }
 
 }  // namespace

@@ -57,8 +57,9 @@ void expect_same_as_offline(const std::vector<double>& x, double fs, const Spect
     EXPECT_EQ(c.first_samples[i], i * s.hop);
     EXPECT_DOUBLE_EQ(streaming.row_time_s(i), offline.times_s[i]);
     for (std::size_t k = 0; k < c.rows[i].size(); ++k)
-      worst = std::max(worst, std::abs(c.rows[i][k] - offline.amplitude(static_cast<Eigen::Index>(i),
-                                                                        static_cast<Eigen::Index>(k))));
+      worst =
+          std::max(worst, std::abs(c.rows[i][k] - offline.amplitude(static_cast<Eigen::Index>(i),
+                                                                    static_cast<Eigen::Index>(k))));
   }
   // The same analyzer on the same samples: any difference beyond rounding means a segment was
   // assembled from the wrong samples.
@@ -107,7 +108,8 @@ TEST(StreamingSpectrogram, FloatSamplesGiveTheRowsOfTheirDoubleValues) {
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(offline.amplitude.rows()));
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t k = 0; k < rows[i].size(); ++k)
-      ASSERT_NEAR(rows[i][k], offline.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)),
+      ASSERT_NEAR(rows[i][k],
+                  offline.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)),
                   1e-9)
           << "a float stream is analysed as its exact double values";
 }

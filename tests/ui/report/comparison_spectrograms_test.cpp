@@ -85,7 +85,8 @@ TEST(ReportComparisonSpectrograms, ThreePanelsShowMeasuredSimulatedAndTheirDiffe
   // as the bottom where measured is, and 0 dB in the middle colour elsewhere.
   EXPECT_NEAR(colour_height(img, centre(2), 255), 0.65, 0.02);
   EXPECT_NEAR(colour_height(img, centre(2), 0), 0.25, 0.02);
-  const double middle = std::max(colour_height(img, centre(2), 127), colour_height(img, centre(2), 128));
+  const double middle =
+      std::max(colour_height(img, centre(2), 127), colour_height(img, centre(2), 128));
   EXPECT_GT(middle, 0.0) << "equal levels show as the middle colour";
 }
 
