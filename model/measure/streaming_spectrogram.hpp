@@ -1,7 +1,8 @@
 // The spectrogram of a signal that arrives in pieces (a live rig's acceleration): samples are
 // pushed in blocks of any size and every complete segment becomes a row as soon as its last sample
-// is in. Rows are exactly compute_spectrogram's rows for the concatenated signal (same analyzer,
-// window, mean removal and amplitude convention), so a live waterfall and the offline report agree.
+// is in. Rows are compute_spectrogram's rows for the concatenated signal (same analyzer, window,
+// mean removal and amplitude convention; equal to a few units in the last place, as the offline
+// one takes its square roots in vectors), so a live waterfall and the offline report agree.
 #pragma once
 
 #include <cstddef>
