@@ -169,6 +169,11 @@ void drop_oldest(WaterfallRows& rows, std::size_t n) {
   rows.rows_lost += n;
 }
 
+// Drops the oldest rows down to `max` once half as many again are waiting.
+void trim(WaterfallRows& rows, std::size_t max) {
+  if (rows.rows() > max + max / 2) drop_oldest(rows, rows.rows() - max);
+}
+
 }  // namespace
 
 void LiveComparison::run() {
@@ -186,12 +191,16 @@ void LiveComparison::run() {
       an.comparison.add(speed, m, s);
     else
       ++an.rows_without_speed;
+    ++an.completed;
+    if (settings_.max_waterfall_rows == 0) {
+      ++an.batch.first_row;  // nobody wants rows: the next one would be the first
+      return;
+    }
     append_db(an.batch.measured_db, m, settings_.floor_db);
     append_db(an.batch.simulated_db, s, settings_.floor_db);
     an.batch.times_s.push_back(an.measured.row_time_s(r));
     an.batch.speeds_m_s.push_back(speed);
-    if (an.batch.rows() > settings_.max_waterfall_rows) drop_oldest(an.batch, 1);
-    ++an.completed;
+    trim(an.batch, settings_.max_waterfall_rows);
   };
 
   // Completes the oldest waiting row if all its speed samples are in, or regardless when `now`
@@ -301,10 +310,7 @@ void LiveComparison::publish(bool finished) {
                             batch.simulated_db.end());
   rows_.times_s.insert(rows_.times_s.end(), batch.times_s.begin(), batch.times_s.end());
   rows_.speeds_m_s.insert(rows_.speeds_m_s.end(), batch.speeds_m_s.begin(), batch.speeds_m_s.end());
-  if (rows_.rows() > settings_.max_waterfall_rows) {
-    const std::size_t excess = rows_.rows() - settings_.max_waterfall_rows;
-    drop_oldest(rows_, excess);
-  }
+  trim(rows_, settings_.max_waterfall_rows);
   // The batch restarts after the rows just handed over, keeping its buffers.
   batch.first_row += batch.rows();
   batch.rows_lost = 0;

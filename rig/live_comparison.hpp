@@ -46,7 +46,10 @@ struct LiveComparisonSettings {
   // Blocks the queue holds: 1024 × 512 samples is 10.9 s of 48 kHz audio that the analysis may fall
   // behind by (a UI stall, a slow disk) before the capture loses any.
   std::size_t queue_blocks = 1024;
-  // Waterfall rows kept for a UI that has not taken them; older ones are dropped and counted.
+  // Waterfall rows kept for a UI that has not taken them. When half as many again are waiting, the
+  // oldest are dropped down to this many and counted (dropping now and then, not a row at a time,
+  // keeps a capture without a UI from moving the whole waterfall up each time). 0: no waterfall is
+  // kept at all (a command line that only wants the table).
   std::size_t max_waterfall_rows = 2048;
   // How often the table is recomputed and published while blocks arrive.
   std::chrono::milliseconds publish_interval{100};

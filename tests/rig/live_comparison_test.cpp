@@ -199,6 +199,32 @@ TEST(LiveComparison, RowsWhoseSpeedNeverComesReachTheWaterfallButNotTheTable) {
   EXPECT_FALSE(std::isnan(w.speeds_m_s.front()));
 }
 
+TEST(LiveComparison, AWaterfallNobodyTakesKeepsItsNewestRowsAndCountsTheRest) {
+  const Capture c = make_capture(6.0, 5);
+  const std::uint64_t rows = 1 + (c.measured.size() - 4096) / 1024;  // 278
+  for (const std::size_t max : {std::size_t{100}, std::size_t{0}}) {
+    SCOPED_TRACE("max_waterfall_rows " + std::to_string(max));
+    LiveComparisonSettings settings;
+    settings.max_waterfall_rows = max;
+    settings.publish_interval = std::chrono::milliseconds(1);
+    LiveComparison live(settings, threshold());
+    produce(live, c, 256);
+    live.finish();
+    EXPECT_EQ(live.table().rows_analysed, rows) << "the table does not depend on the waterfall";
+    WaterfallRows w;
+    live.take_new_rows(w);
+    if (max == 0) {
+      EXPECT_EQ(w.rows(), 0u) << "no waterfall asked for, none kept";
+      continue;
+    }
+    // Between max and 1.5 max rows are kept, the newest, contiguous up to the last row.
+    EXPECT_GE(w.rows(), max);
+    EXPECT_LE(w.rows(), max + max / 2);
+    EXPECT_EQ(w.first_row + w.rows(), rows);
+    EXPECT_EQ(w.rows_lost, w.first_row) << "every row not handed over is counted";
+  }
+}
+
 TEST(LiveComparison, TheProducersPushNeverAllocatesEvenWhenTheQueueIsFull) {
   const Capture c = make_capture(2.0, 3);
   LiveComparisonSettings settings;
