@@ -277,6 +277,14 @@ void LiveComparison::run() {
       if (!any) std::this_thread::sleep_for(settings_.idle_sleep);
       publish_if_due();
     }
+  } catch (const std::exception& error) {
+    an.failure = std::current_exception();
+    try {
+      std::lock_guard lock(snapshot_mutex_);
+      table_.failure = std::string("live comparison: the analysis stopped: ") + error.what();
+    } catch (...) {
+      // No memory even for the message: finish() still rethrows the failure itself.
+    }
   } catch (...) {
     an.failure = std::current_exception();
   }

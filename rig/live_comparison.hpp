@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <span>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -82,6 +83,9 @@ struct ComparisonTable {
   std::uint64_t blocks_dropped = 0;      // the queue was full: that audio was never analysed
   std::uint64_t pushes_refused = 0;      // measured and simulated of different lengths
   bool finished = false;                 // finish() has analysed everything
+  // Why the analysis stopped, when it failed (finish() rethrows it): a UI shows it instead of a
+  // table that silently stopped changing.
+  std::string failure;
 };
 
 class LiveComparison {
@@ -108,7 +112,7 @@ class LiveComparison {
   // --- A control thread ------------------------------------------------------------------------
   // After the producer's last push and flush: the analysis thread analyses what is queued (rows
   // whose speed never came are put in the waterfall only), publishes a final table and ends.
-  // Idempotent.
+  // Rethrows what stopped the analysis thread, if anything did. Idempotent.
   void finish();
 
   // --- The UI ----------------------------------------------------------------------------------
