@@ -305,6 +305,7 @@ void LiveComparison::publish(bool finished) {
 
   std::lock_guard lock(snapshot_mutex_);
   table_ = std::move(table);
+  version_.fetch_add(1, std::memory_order_release);
   WaterfallRows& batch = an.batch;
   // Rows the batch itself dropped leave a gap: the UI's rows must stay contiguous, so the older
   // ones go too (only when the analysis fell a whole waterfall behind between publications).

@@ -116,7 +116,11 @@ class LiveComparison {
   void finish();
 
   // --- The UI ----------------------------------------------------------------------------------
+  // A copy of the last table (a few hundred kB with 4096-sample segments).
   ComparisonTable table() const;
+  // How many tables have been published: a UI drawing every frame copies the table only when this
+  // has changed. Lock-free.
+  std::uint64_t table_version() const noexcept { return version_.load(std::memory_order_acquire); }
   // Moves the rows added since the last call into `out` (replacing its content); empty when none.
   void take_new_rows(WaterfallRows& out);
 
@@ -144,6 +148,7 @@ class LiveComparison {
   ComparisonTable table_;
   WaterfallRows rows_;
 
+  std::atomic<std::uint64_t> version_{0};
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -154,8 +154,8 @@ TEST(LiveComparison, TheUiTakesContiguousRowsWhileTheCaptureRuns) {
     live.flush();
     produced = true;
   });
-  std::uint64_t next = 0;
-  std::size_t takes_with_rows = 0;
+  std::uint64_t next = 0, version = live.table_version();
+  std::size_t takes_with_rows = 0, new_versions = 0;
   WaterfallRows rows;
   const auto take = [&] {
     live.take_new_rows(rows);
@@ -167,6 +167,7 @@ TEST(LiveComparison, TheUiTakesContiguousRowsWhileTheCaptureRuns) {
   };
   while (!produced) {
     take();
+    if (live.table_version() != version) version = live.table_version(), ++new_versions;
     std::this_thread::sleep_for(std::chrono::milliseconds(15));
   }
   producer.join();
@@ -174,6 +175,8 @@ TEST(LiveComparison, TheUiTakesContiguousRowsWhileTheCaptureRuns) {
   take();
   EXPECT_EQ(next, 1 + (c.measured.size() - 4096) / 1024) << "every row reached the UI";
   EXPECT_GE(takes_with_rows, 3u) << "rows arrived while the capture ran, not only at the end";
+  EXPECT_GE(new_versions, 3u) << "the table's version tells the UI a new table is there";
+  EXPECT_GT(live.table_version(), version) << "finish() publishes a last table";
 }
 
 TEST(LiveComparison, RowsWhoseSpeedNeverComesReachTheWaterfallButNotTheTable) {
