@@ -34,6 +34,23 @@ struct HeatMap {
   ImageSize size{};
 };
 
+// A live comparison's spectrograms side by side: measured | simulated | difference (simulated −
+// measured). x is time (s) or speed, strictly increasing; y the frequencies (Hz). Values are dB,
+// z[iy][ix] as in HeatMap. The first two panels share one colour scale running
+// dynamic_range_db down from the louder one's maximum (quieter cells show as its bottom colour), so
+// that equal colours are equal levels; the difference has its own scale, symmetric about 0 and
+// clamped at ±difference_range_db.
+struct ComparisonSpectrograms {
+  std::vector<double> x, y;
+  std::vector<std::vector<double>> measured_db, simulated_db;
+  std::string title, x_label, y_label;
+  std::string measured_title = "measured", simulated_title = "simulated",
+              difference_title = "simulated - measured";
+  double dynamic_range_db = 60.0;
+  double difference_range_db = 20.0;
+  ImageSize size{2100, 700};
+};
+
 // One point estimate with its interval (e.g. μ of a tool–surface pair with its 95 % interval). Bars
 // of the same non-empty group share a colour and a legend entry.
 struct IntervalBar {
@@ -132,5 +149,7 @@ void write_interval_chart(const IntervalChart& chart, const std::filesystem::pat
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png);
 void write_line_panels(const LinePanels& figure, const std::filesystem::path& png);
 void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png);
+void write_comparison_spectrograms(const ComparisonSpectrograms& figure,
+                                   const std::filesystem::path& png);
 
 }  // namespace nibrig::ui::report

@@ -5,17 +5,18 @@
 
 #include "ui/report/chart_parts.hpp"
 #include "ui/report/figures.hpp"
+#include "ui/report/heat_map_parts.hpp"
 
 namespace nibrig::ui::report {
 
+namespace detail {
+
 namespace {
 
-using namespace detail;
-
-constexpr const char* kind = "heat map";
 constexpr double floor_db = -60.0;
 
-void check_axis(const HeatMap& map, const std::vector<double>& v, const char* name) {
+void check_axis(const HeatMap& map, const std::vector<double>& v, const char* name,
+                const char* kind) {
   if (v.empty()) reject(kind, map.title, std::string(name) + " is empty");
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (!std::isfinite(v[i])) {
@@ -29,10 +30,12 @@ void check_axis(const HeatMap& map, const std::vector<double>& v, const char* na
   }
 }
 
-void validate(const HeatMap& map) {
+}  // namespace
+
+void validate_heat_map(const HeatMap& map, const char* kind) {
   check_size(map.size, kind, map.title);
-  check_axis(map, map.x, "x");
-  check_axis(map, map.y, "y");
+  check_axis(map, map.x, "x", kind);
+  check_axis(map, map.y, "y", kind);
   if (map.z.size() != map.y.size()) {
     reject(kind, map.title,
            "z has " + std::to_string(map.z.size()) + " rows but y has " +
@@ -61,6 +64,8 @@ void validate(const HeatMap& map) {
     reject(kind, map.title, "a dB colour scale needs at least one positive z, and all are zero");
   }
 }
+
+namespace {
 
 // Cell edges half-way between centres; the outer cells as wide outward as inward.
 std::vector<double> edges_of(const std::vector<double>& centres) {
@@ -114,10 +119,9 @@ void merge_rows(std::vector<double>& edges, std::vector<std::vector<double>>& t,
 
 }  // namespace
 
-void write_heat_map(const HeatMap& map, const std::filesystem::path& png) {
-  validate(map);
-  const auto st = Style::for_size(map.size);
-  const double width = map.size.width_px, height = map.size.height_px;
+Box draw_heat_map(PlotPage& page, const HeatMap& map, const Box& area, double top_room,
+                  const Style& st, std::optional<ColourRange> range) {
+  const double width = area.width(), height = area.height();
 
   // Colour coordinate t in [0, 1] of every cell, and the range the colour bar shows.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -136,6 +140,10 @@ void write_heat_map(const HeatMap& map, const std::filesystem::path& png) {
     lo = floor_db;
     hi = 0.0;
   } else {
+    if (range) {
+      lo = range->lo;
+      hi = range->hi;
+    }
     if (hi <= lo) {  // a constant field: centre it in a range around its value
       const double half = std::max(std::abs(lo) * 0.1, 0.5);
       lo -= half;
@@ -150,29 +158,27 @@ void write_heat_map(const HeatMap& map, const std::filesystem::path& png) {
 
   // The colour bar: a strip right of the plot, its ticks and labels, and its title turned upwards.
   const double bar_gap = 22 * st.scale, bar_width = 26 * st.scale;
-  const double rough_height = height - 2 * st.pad - title_room(map.title, st) - 4 * st.label_cap;
+  const double rough_height = height - st.pad - top_room - 4 * st.label_cap;
   const auto bar_ticks_rough = linear_ticks(
       lo, hi, rough_height, [&](const std::string&) { return st.tick_cap; }, 4.0 * st.tick_cap);
   const double bar_labels = widest_label(bar_ticks_rough, st.tick_cap, st);
   const double right = bar_gap + bar_width + st.tick_major + st.tick_gap + bar_labels +
                        (map.colour_label.empty() ? 0.0 : 0.5 * st.label_gap + 1.9 * st.label_cap) +
                        st.pad;
-  const double top = st.pad + title_room(map.title, st);
-  const auto axes =
-      layout_axes(st, width, height, top, map.x_label, map.y_label, right,
-                  {x_edges.front(), x_edges.back()}, {y_edges.front(), y_edges.back()});
+  auto axes = layout_axes(st, width, height, top_room, map.x_label, map.y_label, right,
+                          {x_edges.front(), x_edges.back()}, {y_edges.front(), y_edges.back()});
+  axes.box = Box{axes.box.x0 + area.x0, axes.box.y0 + area.y0, axes.box.x1 + area.x0,
+                 axes.box.y1 + area.y0};
   const Mapping m{axes.box, x_edges.front(), x_edges.back(), y_edges.front(), y_edges.back()};
 
   merge_columns(x_edges, t, axes.box.width());
   merge_rows(y_edges, t, axes.box.height());
 
-  detail::PlotPage page(map.title, png, map.size.width_px, map.size.height_px);
   page.cells(axes.box.x0, axes.box.y0, axes.box.x1, axes.box.y1, x_edges, y_edges, t);
   draw_frame(page, axes.box, st);
   draw_x_axis(page, m, axes.x, st);
   draw_y_axis(page, m, axes.y, st);
-  draw_axis_titles(page, axes.box, map.x_label, map.y_label, st);
-  draw_title(page, map.title, st);
+  draw_axis_titles(page, axes.box, map.x_label, map.y_label, st, area);
 
   const Box bar{axes.box.x1 + bar_gap, axes.box.y0, axes.box.x1 + bar_gap + bar_width, axes.box.y1};
   constexpr int steps = 256;  // one row per colour-map entry
@@ -195,6 +201,19 @@ void write_heat_map(const HeatMap& map, const std::filesystem::path& png) {
     page.text(x, 0.5 * (bar.y0 + bar.y1), 90.0, 0.5,
               st.fit(map.colour_label, st.label_cap, bar.height() + st.pad), map.colour_label);
   }
+  return axes.box;
+}
+
+}  // namespace detail
+
+void write_heat_map(const HeatMap& map, const std::filesystem::path& png) {
+  detail::validate_heat_map(map, "heat map");
+  const auto st = detail::Style::for_size(map.size);
+  const double width = map.size.width_px, height = map.size.height_px;
+  detail::PlotPage page(map.title, png, map.size.width_px, map.size.height_px);
+  detail::draw_heat_map(page, map, detail::Box{0.0, 0.0, width, height},
+                        st.pad + detail::title_room(map.title, st), st);
+  detail::draw_title(page, map.title, st);
   page.commit();
 }
 
