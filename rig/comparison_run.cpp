@@ -37,6 +37,7 @@ ComparisonRun run_comparison(Rig& rig, const SpeedProfile& profile,
 
   ComparisonRun run;
   run.simulated = simulated.name;
+  run.settings = settings;
   std::vector<float> measured, simulated_m_s2, speed;
   WaterfallRows taken;
   auto last_update = std::chrono::steady_clock::now();

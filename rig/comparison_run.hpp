@@ -35,6 +35,7 @@ struct ComparisonRun {
   ComparisonTable table;  // the final one
   WaterfallRows rows;     // every row of the run, for the report's figure (unless on_update took them)
   std::string simulated;  // the simulated tool's name
+  LiveComparisonSettings settings;  // as run (rates from the rig)
 };
 
 // Runs the comparison to the end of the profile (or a cancel, an unplug). Throws what

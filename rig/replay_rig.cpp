@@ -162,6 +162,7 @@ bool ReplayRig::read(RigData& into, std::chrono::milliseconds wait) {
   const std::uint64_t block = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(description_.frame_rate_hz / 100));
   const std::uint64_t due = pacer_.due(frames_made_, frames_total_, block, 10 * block, wait);
   if (due <= frames_made_) return true;
+  const std::size_t before = into.frames.size();
   into.frames.insert(into.frames.end(), frames_.begin() + static_cast<std::ptrdiff_t>(frames_made_),
                      frames_.begin() + static_cast<std::ptrdiff_t>(due));
   const auto samples_end = static_cast<std::uint64_t>(std::floor(
@@ -169,6 +170,7 @@ bool ReplayRig::read(RigData& into, std::chrono::milliseconds wait) {
   into.acceleration.insert(into.acceleration.end(),
                            acceleration_.begin() + static_cast<std::ptrdiff_t>(samples_made_),
                            acceleration_.begin() + static_cast<std::ptrdiff_t>(samples_end));
+  tell_listener(into.frames, before);
   health_.frames += due - frames_made_;
   health_.acceleration_samples += samples_end - samples_made_;
   frames_made_ = due;

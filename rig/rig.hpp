@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,8 @@ struct RigHealth {
   std::string ended_because;  // empty while running
 };
 
+using FrameListener = std::function<void(const SensorFrame&)>;
+
 class Rig {
  public:
   virtual ~Rig() = default;
@@ -68,8 +71,21 @@ class Rig {
   // Stops the motor (idempotent); read() then returns what is left and false.
   virtual void stop() = 0;
   virtual RigHealth health() const = 0;
+  // Called with each frame as soon as the rig has it, before any time base: for the actuator to
+  // follow the turntable with the least delay (rig/contact_follower.hpp). On the USB rig it runs
+  // on the driver's event thread, elsewhere in read(); it must not block. Set before start(); the
+  // listener must outlive the run.
+  virtual void set_frame_listener(const FrameListener* listener) { listener_ = listener; }
+
   // A rig that plays a recording (the replay rig) runs the profile that was recorded; others none.
   virtual const SpeedProfile* own_profile() const { return nullptr; }
+
+ protected:
+  // For rigs that make their frames in read(): tells the listener about the newest of a batch.
+  void tell_listener(const std::vector<SensorFrame>& frames, std::size_t from) const {
+    if (listener_ != nullptr && frames.size() > from) (*listener_)(frames.back());
+  }
+  const FrameListener* listener_ = nullptr;
 };
 
 }  // namespace nibrig::rig

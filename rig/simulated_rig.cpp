@@ -89,7 +89,8 @@ struct SimulatedRig::Simulation {
              const SpeedProfile& profile)
       : track(profile, s.frame_rate_hz, s.motor_time_constant_s),
         session(acceleration_session(sound, s.acceleration_rate_hz,
-                                     std::make_unique<MotorStroke>(track, s.normal_load_N), s.seed)),
+                                     std::make_unique<MotorStroke>(track, s.normal_load_N),
+                                     SimulatedRig::tool_seed(s.seed))),
         sensor_noise(s.seed ^ 0x5eed5eedULL) {}
 
   double noise() noexcept {
@@ -230,7 +231,9 @@ bool SimulatedRig::read(RigData& into, std::chrono::milliseconds wait) {
   }
   const std::uint64_t due = pacer_.due(frames_made_, frames_total_, 10,
                                        static_cast<std::uint64_t>(settings_.frame_rate_hz / 10), wait);
+  const std::size_t before = into.frames.size();
   while (frames_made_ + 10 <= due || (due == frames_total_ && frames_made_ < due)) produce_block(into);
+  tell_listener(into.frames, before);
   if (frames_made_ >= frames_total_) {
     health_.ended_because = "profile finished";
     return false;

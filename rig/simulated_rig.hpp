@@ -49,6 +49,11 @@ class SimulatedRig final : public Rig {
                const std::string& tool, const std::string& surface);
   ~SimulatedRig() override;
 
+  // The seed of the simulated tool's forcing noise for a rig seeded `seed`: not `seed` itself, so
+  // that a comparison's simulation seeded alike (rig compare --seed) does not replay the very noise
+  // the rig's tool made — a real tool never would.
+  static std::uint64_t tool_seed(std::uint64_t seed) { return seed ^ 0x7001'5eedULL; }
+
   const RigDescription& description() const override { return description_; }
   void start(const SpeedProfile& profile) override;
   bool read(RigData& into, std::chrono::milliseconds wait) override;

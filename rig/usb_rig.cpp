@@ -28,7 +28,7 @@ UsbRig::UsbRig(const UsbRigSettings& settings)
   samples_per_frame_ = d.acceleration_rate_hz / d.frame_rate_hz;
 }
 
-UsbRig::~UsbRig() = default;
+UsbRig::~UsbRig() { controller_->set_frame_listener(nullptr); }
 
 void UsbRig::start(const SpeedProfile& profile) {
   if (started_) throw std::logic_error("USB rig: already started");

@@ -31,7 +31,7 @@ class UsbRig final : public Rig {
   // Opens the controller and the accelerometer input. Throws usb::UsbRigError (a missing controller
   // names what is on the bus) or playback::DeviceError (a missing audio device names what exists).
   explicit UsbRig(const UsbRigSettings& settings);
-  ~UsbRig() override;
+  ~UsbRig() override;  // removes the frame listener before the controller goes
 
   const RigDescription& description() const override { return description_; }
   // Uploads the profile (refused beyond the motor, with its range) and starts it.
@@ -39,6 +39,9 @@ class UsbRig final : public Rig {
   bool read(RigData& into, std::chrono::milliseconds wait) override;
   void stop() override;
   RigHealth health() const override;
+  void set_frame_listener(const FrameListener* listener) override {
+    controller_->set_frame_listener(listener);
+  }
 
  private:
   struct AudioBlock {

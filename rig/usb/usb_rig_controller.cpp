@@ -317,6 +317,7 @@ void UsbRigController::handle_packet(const libusb_transfer* transfer) {
       case SequenceTracker::Verdict::kDeliver:
         if (queue_.try_push(frames[i])) {
           ++received_;
+          if (const auto* listener = listener_.load(std::memory_order_acquire)) (*listener)(frames[i]);
         } else {
           ++overflows_;
         }

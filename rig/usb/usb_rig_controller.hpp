@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -95,6 +96,13 @@ class UsbRigController {
 
   UsbRigStatus status() const;
 
+  // Called on the event thread with each frame delivered, right after it is queued (the actuator
+  // following the turntable). It must not block. nullptr: none. The listener must outlive the
+  // controller or be removed first.
+  void set_frame_listener(const std::function<void(const SensorFrame&)>* listener) noexcept {
+    listener_.store(listener, std::memory_order_release);
+  }
+
  private:
   struct Transfer;
   // Runs `f` with the open device's control channel, under the device lock so that the event
@@ -144,6 +152,7 @@ class UsbRigController {
   std::atomic<bool> arrival_seen_{false};  // hotplug said a controller arrived
 
   rt::SpscQueue<SensorFrame> queue_;
+  std::atomic<const std::function<void(const SensorFrame&)>*> listener_{nullptr};
 
   // The snapshot's counters: written by callbacks, read by status().
   std::atomic<bool> connected_{false};

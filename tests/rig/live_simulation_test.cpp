@@ -61,7 +61,7 @@ TEST(LiveSimulation, RunsSampleForSampleBesideASimulatedRigOfTheSameTool) {
   settings.seed = 5;
   SimulatedRig rig(settings, cryon_office(), "cryon", "office");
   rig.start(study_sweep(3.0));
-  LiveSimulation live(cryon_office(), 48000.0, 1000.0, 5);
+  LiveSimulation live(cryon_office(), 48000.0, 1000.0, SimulatedRig::tool_seed(5));
   std::vector<float> measured, simulated;
   RigData batch;
   bool more = true;

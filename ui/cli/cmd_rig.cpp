@@ -1,5 +1,6 @@
-// `nibrig rig devices` and `nibrig rig capture`: the turntable rig from the command line. The rig,
-// its profile and the capture are library calls (rig/); this file holds options and presentation.
+// `nibrig rig devices`, `nibrig rig capture` and `nibrig rig compare`: the turntable rig from the
+// command line. The rig, its profile, the capture, the comparison and the actuator following the
+// turntable are library calls (rig/); this file holds options and presentation.
 #include <spdlog/spdlog.h>
 
 #include <atomic>
@@ -10,16 +11,27 @@
 #include <string>
 
 #include "model/design/tool_sound.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/io/comparison_file.hpp"
+#include "playback/actuator_store.hpp"
 #include "playback/audio_devices.hpp"
+#include "playback/audio_output.hpp"
+#include "playback/playback_session.hpp"
 #include "rig/capture.hpp"
+#include "rig/comparison_report.hpp"
+#include "rig/comparison_run.hpp"
+#include "rig/contact_follower.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
+#include "rt/stroke_source.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/device_options.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/rig_figures.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -29,8 +41,9 @@ struct RigOptions {
   std::optional<std::string> usb;  // given: the USB rig ("" = the only controller)
   std::filesystem::path replay;
   std::string tool, surface;
-  std::filesystem::path catalog, design, forcing_model;
-  std::string profile = "steps";
+  std::string design;  // what to simulate instead of the mounted tool: a design point or a tool id
+  std::filesystem::path catalog, stylus, forcing_model;
+  std::string profile;  // empty: the command's default
   std::optional<double> seconds;
   double load = 2.2;
   unsigned seed = 1;
@@ -38,12 +51,25 @@ struct RigOptions {
   std::string input_api, input;
   unsigned input_channel = 1;
   double accelerometer = 49.05;
-  std::filesystem::path output;
+  bool play = false;
+  DeviceOptions device;
+  std::string actuator;
+  std::filesystem::path output;  // capture: the session; compare: the report folder
 };
 
-// Ctrl-C during a capture: the motor stops and the session is finished with what it holds.
+// Ctrl-C during a run: the motor stops and the session is finished with what it holds.
 std::atomic<bool> interrupted{false};
 extern "C" void on_interrupt(int) { interrupted.store(true); }
+
+// SIGINT goes to `interrupted` while this lives.
+class InterruptScope {
+ public:
+  InterruptScope() : previous_(std::signal(SIGINT, on_interrupt)) { interrupted.store(false); }
+  ~InterruptScope() { std::signal(SIGINT, previous_); }
+
+ private:
+  void (*previous_)(int);
+};
 
 void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
   auto* simulated = cmd->add_flag("--simulated", o.simulated,
@@ -60,8 +86,17 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
                   "The tool mounted (catalog id or design point); the simulated rig simulates it");
   cmd->add_option("--surface", o.surface, "The surface on the turntable (e.g. office)");
   cmd->add_option("--catalog", o.catalog, "Catalog JSON (default: the bundled one)");
-  cmd->add_option("--design", o.design, "Stylus design whose modes shape catalog tools");
+  cmd->add_option("--stylus", o.stylus,
+                  "Stylus design JSON whose modes shape catalog tools (default: the bundled 2 mm one)");
   cmd->add_option("--forcing", o.forcing_model, "Forcing model for design points");
+  cmd->add_option("--profile", o.profile,
+                  "steps (the paper's: 3 sweeps of six 2 s steps over 17-250 mm/s), sweep (the "
+                  "study's 3 s sweep) or a CSV file time_s,speed_mm_s")
+      ->excludes(replay);
+  cmd->add_option_function<double>(
+         "--seconds", [&o](const double& s) { o.seconds = s; },
+         "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
+      ->check(positive("a length in seconds"));
   cmd->add_option("--load", o.load, "The arm's normal load in N (default 2.2, the paper's)")
       ->check(in_range(0, 50, "a load in N"));
   cmd->add_option("--seed", o.seed, "Seed of the simulated rig's noise")->check(any_seed());
@@ -76,6 +111,12 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
   cmd->add_option("--accelerometer", o.accelerometer,
                   "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")
       ->check(positive("m/s² per full scale"));
+  auto* play = cmd->add_flag("--play", o.play,
+                             "Play the simulated tool on the actuator, following the turntable");
+  add_device_options(cmd, o.device);
+  cmd->add_option("--actuator", o.actuator,
+                  "With --play: the actuator calibration from `nibrig calibrate` (name or file)")
+      ->needs(play);
 }
 
 rig::RigRequest rig_request(const RigOptions& o) {
@@ -88,6 +129,8 @@ rig::RigRequest rig_request(const RigOptions& o) {
     r.replay = o.replay;
   } else if (o.simulated) {
     r.kind = rig::RigKind::simulated;
+    if (o.tool.empty() || o.surface.empty())
+      throw CLI::ValidationError("--simulated", "the simulated rig needs --tool and --surface");
   } else {
     throw CLI::ValidationError("rig", "say which rig: --simulated, --usb [SERIAL] or --replay SESSION");
   }
@@ -103,42 +146,83 @@ rig::RigRequest rig_request(const RigOptions& o) {
   return r;
 }
 
-void capture(const RigOptions& o) {
-  const rig::RigRequest request = rig_request(o);
-  if (request.kind == rig::RigKind::simulated && (o.tool.empty() || o.surface.empty()))
-    throw CLI::ValidationError("--simulated", "the simulated rig needs --tool and --surface");
-  model::design::ToolSounds sounds({o.catalog, o.design, o.forcing_model, design_progress()});
-  std::optional<rig::SpeedProfile> asked;
-  if (request.kind != rig::RigKind::replay) asked = rig::profile_named(o.profile, o.seconds);
-  const auto rig = rig::open_rig(request, sounds);
-  // A replay runs what was recorded, cut to --seconds when given.
-  const rig::SpeedProfile profile =
-      asked ? *asked
-            : (o.seconds ? rig::fit_to_duration(*rig->own_profile(), *o.seconds) : *rig->own_profile());
-  const auto& d = rig->description();
-  std::printf("%s\n", d.name.c_str());
-  std::printf("profile: %s, %.1f s\n", profile.description().c_str(), profile.duration_s());
-  std::fflush(stdout);
+// The rig opened and its profile: a replay runs what was recorded (cut to --seconds), others the
+// profile asked for (checked before anything is opened).
+struct OpenedRig {
+  std::unique_ptr<rig::Rig> rig;
+  std::optional<rig::SpeedProfile> profile;
+};
 
-  rig::CaptureOptions options;
-  options.folder = o.output;
-  options.tool = o.tool;
-  options.surface = o.surface;
-  options.cancel = &interrupted;
-  options.on_progress = [](const rig::CaptureProgress& p) {
-    spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s{}", p.seconds, p.duration_s, p.speed_m_s * 1e3,
-                 p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
-  };
-  interrupted.store(false);
-  const auto previous = std::signal(SIGINT, on_interrupt);
-  rig::CaptureResult result;
-  try {
-    result = rig::capture_session(*rig, profile, options);
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    throw;
+OpenedRig open_rig(const RigOptions& o, model::design::ToolSounds& sounds,
+                   const std::string& default_profile) {
+  const rig::RigRequest request = rig_request(o);
+  std::optional<rig::SpeedProfile> asked;
+  if (request.kind != rig::RigKind::replay)
+    asked = rig::profile_named(o.profile.empty() ? default_profile : o.profile, o.seconds);
+  OpenedRig opened;
+  opened.rig = rig::open_rig(request, sounds);
+  const rig::SpeedProfile* own = opened.rig->own_profile();
+  opened.profile = asked ? *asked : (o.seconds ? rig::fit_to_duration(*own, *o.seconds) : *own);
+  return opened;
+}
+
+// What the actuator plays with --play: the simulated tool's engine on the device, following the
+// turntable frame by frame.
+class Player {
+ public:
+  Player(const RigOptions& o, const model::design::ToolSound& sound, rig::Rig& rig) : rig_(rig) {
+    const playback::OutputSettings device = output_settings(o.device, "nibrig-rig-play");
+    rt::EngineSettings settings;
+    settings.sample_rate_hz = device.sample_rate;
+    settings.slots = 1;
+    session_ = std::make_unique<playback::PlaybackSession>(
+        settings, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
+        std::make_unique<rt::ConstantStroke>(0.0, 0.0), o.seed);
+    if (!o.actuator.empty()) {
+      const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
+      const auto filter = session_->use_actuator(calibration);
+      std::printf("actuator '%s': inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
+                  calibration.name.c_str(), filter.max_deviation_db, calibration.design.band_low_hz,
+                  calibration.design.band_high_hz);
+    }
+    follower_ = std::make_unique<rig::ContactFollower>(session_->engine());
+    output_ = std::make_unique<playback::AudioOutput>(*follower_, device);
+    listener_ = [this](const rig::SensorFrame& f) { follower_->follow(f); };
+    rig_.set_frame_listener(&listener_);
+    const auto info = output_->stream_info();
+    std::printf("playing %s on %s '%s' channel %u, %u-frame periods, following the turntable\n",
+                sound.name.c_str(), info.api.c_str(), info.device.c_str(), device.output_channel,
+                info.period_frames);
   }
-  std::signal(SIGINT, previous);
+  ~Player() { rig_.set_frame_listener(nullptr); }
+
+  void report() const {
+    const rig::FollowLatency l = follower_->latency();
+    const auto info = output_->stream_info();
+    std::printf("actuator followed %llu contacts: from frame to engine mean %.2f ms, max %.2f ms "
+                "(one period is %.2f ms)\n",
+                static_cast<unsigned long long>(l.contacts), l.mean_s * 1e3, l.max_s * 1e3,
+                1e3 * info.period_frames / info.sample_rate);
+  }
+
+ private:
+  rig::Rig& rig_;
+  std::unique_ptr<playback::PlaybackSession> session_;
+  std::unique_ptr<rig::ContactFollower> follower_;
+  std::unique_ptr<playback::AudioOutput> output_;
+  rig::FrameListener listener_;
+};
+
+// The tool the simulation plays: --design when given, else what is mounted.
+std::string simulated_tool(const RigOptions& o, const rig::Rig& rig) {
+  if (!o.design.empty()) return o.design;
+  return o.tool.empty() ? rig.description().tool : o.tool;
+}
+std::string mounted_surface(const RigOptions& o, const rig::Rig& rig) {
+  return o.surface.empty() ? rig.description().surface : o.surface;
+}
+
+void print_record(const rig::CaptureResult& result, const rig::RigDescription& d) {
   const auto& r = result.record;
   std::printf("captured %.2f s: %llu sensor frames at %.0f Hz, acceleration at %.0f Hz\n", r.seconds,
               static_cast<unsigned long long>(r.frames), d.frame_rate_hz, d.acceleration_rate_hz);
@@ -148,8 +232,85 @@ void capture(const RigOptions& o) {
               static_cast<unsigned long long>(r.fault_frames), r.alignment_error_ms);
   if (!result.complete)
     std::printf("ended early (%s): the session keeps everything received\n", r.ended_because.c_str());
+}
+
+model::design::ToolSoundOptions sound_options(const RigOptions& o) {
+  return {o.catalog, o.stylus, o.forcing_model, design_progress()};
+}
+
+void capture(const RigOptions& o) {
+  model::design::ToolSounds sounds(sound_options(o));
+  OpenedRig opened = open_rig(o, sounds, "steps");
+  rig::Rig& rig = *opened.rig;
+  std::printf("%s\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
+              opened.profile->description().c_str(), opened.profile->duration_s());
+  std::fflush(stdout);
+  std::unique_ptr<Player> player;
+  if (o.play) {
+    const std::string tool = simulated_tool(o, rig), surface = mounted_surface(o, rig);
+    sounds.check(tool, surface);
+    player = std::make_unique<Player>(o, sounds.sound(tool, surface), rig);
+  }
+  rig::CaptureOptions options;
+  options.folder = o.output;
+  options.tool = o.tool;
+  options.surface = o.surface;
+  options.cancel = &interrupted;
+  options.on_progress = [](const rig::CaptureProgress& p) {
+    spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s{}", p.seconds, p.duration_s, p.speed_m_s * 1e3,
+                 p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
+  };
+  InterruptScope scope;
+  const rig::CaptureResult result = rig::capture_session(rig, *opened.profile, options);
+  print_record(result, rig.description());
+  if (player) player->report();
   std::fflush(stdout);
   say_wrote(result.folder);
+}
+
+void compare(const RigOptions& o) {
+  model::design::ToolSounds sounds(sound_options(o));
+  OpenedRig opened = open_rig(o, sounds, "sweep");
+  rig::Rig& rig = *opened.rig;
+  const std::string tool = simulated_tool(o, rig), surface = mounted_surface(o, rig);
+  if (tool.empty() || surface.empty())
+    throw CLI::ValidationError("--tool", "say which tool to simulate (--tool or --design) and on which --surface");
+  sounds.check(tool, surface);
+  const model::design::ToolSound simulated = sounds.sound(tool, surface);
+  std::printf("%s\nsimulated: %s (modes of %s)\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
+              simulated.name.c_str(), simulated.modes.c_str(), opened.profile->description().c_str(),
+              opened.profile->duration_s());
+  std::fflush(stdout);
+  std::unique_ptr<Player> player;
+  if (o.play) player = std::make_unique<Player>(o, simulated, rig);
+
+  ensure_folder(o.output);
+  rig::ComparisonRunOptions options;
+  options.capture.folder = o.output / "session";
+  options.capture.tool = o.tool;
+  options.capture.surface = o.surface;
+  options.capture.cancel = &interrupted;
+  options.seed = o.seed;
+  options.capture.on_progress = [](const rig::CaptureProgress& p) {
+    spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s", p.seconds, p.duration_s, p.speed_m_s * 1e3);
+  };
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+  InterruptScope scope;
+  const rig::ComparisonRun run = rig::run_comparison(rig, *opened.profile, simulated, threshold, options);
+  print_record(run.capture, rig.description());
+  if (player) player->report();
+  print_comparison_table(run.table);
+  std::fflush(stdout);
+
+  const std::string measured_tool = o.tool.empty() ? rig.description().tool : o.tool;
+  auto report = rig::comparison_report(measured_tool, surface, run.table, run.settings);
+  const auto json = o.output / "comparison.json";
+  model::io::write_comparison_file(report, json);
+  const auto png = o.output / "comparison.png";
+  write_comparison_figure(run, measured_tool + " on " + surface + " against " + simulated.name, png);
+  say_wrote(run.capture.folder);
+  say_wrote(json);
+  say_wrote(png);
 }
 
 void devices() {
@@ -175,24 +336,34 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
     devices();
   });
 
-  auto options = std::make_shared<RigOptions>();
+  auto capture_options = std::make_shared<RigOptions>();
   auto* cap = rig_cmd->add_subcommand(
       "capture", "Run a speed profile on a rig and record a session (measure it with `nibrig measure`)");
-  add_rig_source_options(cap, *options);
-  auto* profile = cap->add_option("--profile", options->profile,
-                  "steps (the paper's: 3 sweeps of six 2 s steps over 17-250 mm/s), sweep (the "
-                  "study's 3 s sweep) or a CSV file time_s,speed_mm_s");
-  profile->excludes(cap->get_option("--replay"));
-  cap->add_option_function<double>(
-         "--seconds", [o = options.get()](const double& s) { o->seconds = s; },
-         "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
-      ->check(positive("a length in seconds"));
-  cap->add_option("-o,--output", options->output,
+  add_rig_source_options(cap, *capture_options);
+  cap->add_option("--design", capture_options->design,
+                  "With --play: simulate this (a design point or tool id) instead of --tool");
+  cap->add_option("-o,--output", capture_options->output,
                   "Session folder to write (<folder>.partial while recording)")
       ->required();
-  cap->callback([options, global] {
+  cap->callback([capture_options, global] {
     configure_logging(global->verbosity);
-    capture(*options);
+    capture(*capture_options);
+  });
+
+  auto compare_options = std::make_shared<RigOptions>();
+  auto* cmp = rig_cmd->add_subcommand(
+      "compare",
+      "Capture on a rig while simulating the same tool driven by the measured speed; compare their "
+      "spectrograms per speed (default profile: the study's sweep)");
+  add_rig_source_options(cmp, *compare_options);
+  cmp->add_option("--design", compare_options->design,
+                  "Simulate this instead of --tool: a design point (\"DM85:0.5,vero:0.5,tip=2mm\") or a tool id");
+  cmp->add_option("--report", compare_options->output,
+                  "Folder for the report: comparison.json, comparison.png and the captured session")
+      ->required();
+  cmp->callback([compare_options, global] {
+    configure_logging(global->verbosity);
+    compare(*compare_options);
   });
 }
 

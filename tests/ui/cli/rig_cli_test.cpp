@@ -5,9 +5,13 @@
 
 #include <chrono>
 #include <fstream>
+#include <cmath>
 #include <thread>
 
+#include "model/io/comparison_file.hpp"
 #include "model/io/session.hpp"
+#include "tests/playback/jack_recorder.hpp"
+#include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -145,6 +149,75 @@ TEST(RigCli, BadRequestsGetOneClearLine) {
     EXPECT_NE(err.find(c.says), std::string::npos) << err;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "s.partial"));
+}
+
+// The comparison as the issue writes it: a report with the distance per speed, its figure, and the
+// session it was measured on.
+TEST(RigCli, CompareOfTheIssueWritesTheDistancePerSpeed) {
+  const auto dir = scratch_dir("rig_cli_compare") / "report";
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"rig", "compare", "--simulated", "--tool", "vero2", "--surface", "office",
+                            "--seconds", "6", "--report", dir.string()});
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("mean distance"), std::string::npos) << out;
+  const auto report = model::io::read_comparison_file(dir / "comparison.json");
+  EXPECT_EQ(report.tool, "vero2");
+  EXPECT_EQ(report.surface, "office");
+  std::size_t with_rows = 0;
+  for (const auto& bin : report.bins) {
+    if (bin.rows == 0) continue;
+    ++with_rows;
+    // The same tool measured and simulated: each bin within a few dB. A bin of one or two rows is
+    // a single periodogram of noise (~5.6 dB RMS by itself): only bins of 5 rows or more are held
+    // to it.
+    if (bin.rows >= 5) EXPECT_LT(bin.lsd_db, 6.0) << bin.mean_speed_m_s;
+  }
+  EXPECT_GE(with_rows, 10u);  // the sweep crosses the 12 bins over 17-250 mm/s
+  EXPECT_LT(report.mean_lsd_db, 4.0);
+  EXPECT_TRUE(is_png(dir / "comparison.png"));
+  EXPECT_TRUE(model::io::read_session(dir / "session").complete);
+}
+
+// A design point simulated against the tool on the rig (its prediction needs the forcing model,
+// fitted on the fly here) — the comparison's simulation is any tool the engine can play.
+TEST(RigCli, CompareSimulatesADesignPointAgainstTheMountedTool) {
+  const auto dir = scratch_dir("rig_cli_compare_design") / "report";
+  ASSERT_EQ(run_cli({"rig", "compare", "--simulated", "--tool", "vero2", "--surface", "office",
+                     "--design", "DM85:0.5,vero:0.5,tip=2mm", "--seconds", "3", "--speedup", "0",
+                     "--report", dir.string()}),
+            0);
+  const auto report = model::io::read_comparison_file(dir / "comparison.json");
+  EXPECT_GE(report.bins_with_rows, 6u);
+  EXPECT_TRUE(std::isfinite(report.mean_lsd_db));
+}
+
+// --play: the simulated tool on an actuator (a JACK port here, recorded by an independent client)
+// follows the turntable while the comparison runs.
+TEST(RigCli, ComparePlaysTheSimulationOnTheActuatorThroughJack) {
+  nibrig::testing::JackServer server;
+  const auto dir = scratch_dir("rig_cli_compare_play") / "report";
+  playback::testing::JackRecorder ear("ear", 1, 48000);
+  ::testing::internal::CaptureStdout();
+  const pid_t pid = start_cli({"rig", "compare", "--simulated", "--tool", "cryon", "--surface",
+                               "office", "--seconds", "3", "--play", "--api", "jack", "--report",
+                               dir.string()});
+  // The command's output port appears once its stream is open.
+  bool connected = false;
+  for (int i = 0; i < 300 && !connected; ++i) {
+    connected = ear.connect("nibrig-rig-play:outport 0", 0);
+    if (!connected) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ear.start();
+  const int code = wait_cli(pid);
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << out;
+  ASSERT_TRUE(connected) << "the command's JACK port never appeared";
+  EXPECT_NE(out.find("actuator followed"), std::string::npos) << out;
+  float peak = 0.0f;
+  for (std::size_t i = 0; i < ear.recorded(); ++i) peak = std::max(peak, std::abs(ear.samples(0)[i]));
+  EXPECT_GT(ear.recorded(), 24000u);  // at least half a second of the run was heard
+  EXPECT_GT(peak, 1e-3f);             // and it was the tool, not silence
 }
 
 TEST(RigCli, DevicesListsRigControllersAndAudioInputs) {
