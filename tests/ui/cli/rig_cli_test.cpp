@@ -171,7 +171,9 @@ TEST(RigCli, CompareOfTheIssueWritesTheDistancePerSpeed) {
     // The same tool measured and simulated: each bin within a few dB. A bin of one or two rows is
     // a single periodogram of noise (~5.6 dB RMS by itself): only bins of 5 rows or more are held
     // to it.
-    if (bin.rows >= 5) EXPECT_LT(bin.lsd_db, 6.0) << bin.mean_speed_m_s;
+    if (bin.rows >= 5) {
+      EXPECT_LT(bin.lsd_db, 6.0) << bin.mean_speed_m_s;
+    }
   }
   EXPECT_GE(with_rows, 10u);  // the sweep crosses the 12 bins over 17-250 mm/s
   EXPECT_LT(report.mean_lsd_db, 4.0);
