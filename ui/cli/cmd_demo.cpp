@@ -15,6 +15,7 @@
 #include "ui/cli/demo_forcing.hpp"
 #include "ui/cli/demo_mechanics.hpp"
 #include "ui/cli/demo_render.hpp"
+#include "ui/cli/demo_rig.hpp"
 #include "ui/cli/demo_space.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/measurement_figures.hpp"
@@ -133,6 +134,7 @@ void demo(const DemoOptions& options, unsigned threads) {
   summary << run_space_demo(catalog, catalog_path, options.output, threads);
   summary << run_forcing_demo(catalog_path, options.output);
   summary << run_render_demo(catalog, options.catalog, options.output);
+  summary << run_rig_demo(options.catalog, options.output);
   write_text_file(options.output / "SUMMARY.txt", summary.str());
   std::cout << summary.str();
 }
