@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "model/io/comparison_file.hpp"
+#include "model/io/session.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
@@ -152,6 +154,12 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   EXPECT_TRUE(predicted.contains("descriptor_error_covariance"));  // placed with its error
   const auto search = test::read_json(forcing / "design_search.json");
   EXPECT_GE(search["path"].size(), 9u);
+  // The rig: the simulated turntable's capture measured against the catalog, and the comparison.
+  EXPECT_NE(text.find("captured and measured as a session"), std::string::npos) << text;
+  const auto rig = out / "demo" / "rig";
+  EXPECT_TRUE(model::io::read_session(rig / "steps").complete);
+  EXPECT_GE(model::io::read_comparison_file(rig / "compare" / "comparison.json").bins_with_rows, 10u);
+  EXPECT_TRUE(is_png(rig / "compare" / "comparison.png"));
 }
 
 }  // namespace
