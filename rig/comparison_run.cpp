@@ -1,5 +1,6 @@
 #include "rig/comparison_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "rig/live_simulation.hpp"
@@ -32,6 +33,20 @@ ComparisonRun run_comparison(Rig& rig, const SpeedProfile& profile,
   LiveComparisonSettings settings = options.analysis;
   settings.acceleration_rate_hz = d.acceleration_rate_hz;
   settings.speed_rate_hz = d.frame_rate_hz;
+  // The settings' segment is meant for 48 kHz (4096 samples: 85 ms, 11.7 Hz bins); a rig at
+  // another rate (a replayed paper recording at 1 kHz) keeps about the same resolution in time and
+  // frequency — the power of two nearest the same duration — rather than the same sample count
+  // (4 s at 1 kHz, a row per second).
+  if (d.acceleration_rate_hz != 48000.0) {
+    const double wanted = static_cast<double>(settings.spectrogram.segment_length) *
+                          d.acceleration_rate_hz / 48000.0;
+    std::size_t length = 16;
+    while (static_cast<double>(length) * 1.5 < wanted) length *= 2;
+    const double overlap = static_cast<double>(settings.spectrogram.hop) /
+                            static_cast<double>(settings.spectrogram.segment_length);
+    settings.spectrogram.segment_length = length;
+    settings.spectrogram.hop = std::max<std::size_t>(1, static_cast<std::size_t>(overlap * static_cast<double>(length)));
+  }
   LiveComparison comparison(settings, threshold);
   LiveSimulation simulation(simulated, d.acceleration_rate_hz, d.frame_rate_hz, options.seed);
 

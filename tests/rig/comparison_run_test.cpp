@@ -7,6 +7,7 @@
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/session.hpp"
+#include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -53,6 +54,24 @@ TEST(ComparisonRun, TellsTheSameToolFromAnotherAndKeepsTheSession) {
   // Every row of the run is kept for the figure, in step with the table.
   EXPECT_EQ(same.rows.rows() + same.rows.rows_lost, same.table.rows_analysed + same.table.rows_without_speed);
   EXPECT_EQ(same.rows.measured_db.size(), same.rows.rows() * same.rows.bins);
+}
+
+// A rig at 1 kHz (the paper's recording replayed) is analysed at about the resolution a 48 kHz rig
+// gets (4096 samples there: 85 ms, 11.7 Hz), not with 4 s segments: the power of two nearest 85
+// samples, 64 (64 ms, 15.6 Hz), a row every 16 ms, so each 2 s step holds a hundred rows.
+TEST(ComparisonRun, KeepsItsResolutionAtAnotherRate) {
+  const auto dir = test::scratch_dir("comparison_run_1khz");
+  ReplayRig rig(test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_2_office.csv.gz", 0.0);
+  model::design::ToolSounds sounds({});
+  ComparisonRunOptions options;
+  options.capture.folder = dir / "session";
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+  const ComparisonRun run = run_comparison(rig, fit_to_duration(rig.recorded_profile(), 14.0),
+                                           sounds.sound("vero2", "office"), threshold, options);
+  EXPECT_EQ(run.settings.spectrogram.segment_length, 64u);
+  EXPECT_EQ(run.settings.spectrogram.hop, 16u);
+  EXPECT_EQ(run.settings.acceleration_rate_hz, 1000.0);
+  EXPECT_GT(run.table.rows_analysed, 800u);  // 14 s at a row per 16 ms, less the first segment
 }
 
 }  // namespace
