@@ -204,9 +204,10 @@ TEST(RigCli, ComparePlaysTheSimulationOnTheActuatorThroughJack) {
   const pid_t pid = start_cli({"rig", "compare", "--simulated", "--tool", "cryon", "--surface",
                                "office", "--seconds", "3", "--play", "--api", "jack", "--report",
                                dir.string()});
-  // The command's output port appears once its stream is open.
+  // The command's output port appears once its stream is open: after the stylus is meshed, which
+  // takes seconds under the sanitizers.
   bool connected = false;
-  for (int i = 0; i < 300 && !connected; ++i) {
+  for (int i = 0; i < 3000 && !connected; ++i) {
     connected = ear.connect("nibrig-rig-play:outport 0", 0);
     if (!connected) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
