@@ -10,12 +10,6 @@
 namespace nibrig::rig {
 namespace {
 
-std::string mm_s(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f", v * 1e3);
-  return text;
-}
-
 // The slow streams of a batch, with frames lost on the way (sequence gaps) filled by holding the
 // last value, so that every stream keeps its constant rate and its timeline.
 struct SlowStreams {
@@ -30,8 +24,9 @@ struct SlowStreams {
     for (const SensorFrame& f : frames) {
       if (have_last) {
         const std::uint32_t gap = f.sequence - last_sequence - 1;  // wraps like the counter
-        // A frame older than the last (reordered, duplicated) is not written twice; a gap larger
-        // than a second's worth is a restart of the device clock, not a loss to fill.
+        // A frame older than the last (reordered, duplicated) is not written twice; a gap is
+        // filled with at most 100 000 frames (100 s at 1 kHz): a longer one is the device's
+        // counter starting again, not a loss to fill.
         if (gap >= 0x80000000u) continue;
         for (std::uint32_t g = 0; g < gap && g < 100000; ++g) push(last), ++filled;
       }
@@ -80,10 +75,7 @@ model::io::SessionInfo session_info_for(const RigDescription& rig, const SpeedPr
 
 CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const CaptureOptions& options) {
   const RigDescription& d = rig.description();
-  if (profile.max_speed_m_s() > d.max_speed_m_s) {
-    throw std::invalid_argument("the profile asks for " + mm_s(profile.max_speed_m_s()) +
-                                " mm/s; the motor follows 0-" + std::to_string(std::lround(d.max_speed_m_s * 1e3)) + " mm/s");
-  }
+  check_within_motor(profile, d.max_speed_m_s);  // before any folder exists
   model::io::SessionWriter writer(options.folder, session_info_for(d, profile, options));
   model::io::CaptureRecord record = model::io::CaptureRecord{};
   record.rig = d.name;

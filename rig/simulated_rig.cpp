@@ -157,11 +157,7 @@ SimulatedRig::~SimulatedRig() = default;
 
 void SimulatedRig::start(const SpeedProfile& profile) {
   if (profile_) throw std::logic_error("simulated rig: already started");
-  if (profile.max_speed_m_s() > settings_.max_speed_m_s) {
-    throw std::invalid_argument("the profile asks for " + fixed(profile.max_speed_m_s() * 1e3, 1) +
-                                " mm/s; the motor follows 0-" +
-                                fixed(settings_.max_speed_m_s * 1e3, 0) + " mm/s");
-  }
+  check_within_motor(profile, settings_.max_speed_m_s);
   if (!(profile.duration_s() > 0.0))
     throw std::invalid_argument("the profile lasts no time: give it a length");
   profile_.emplace(profile);

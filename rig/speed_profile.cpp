@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "model/io/format_error.hpp"
@@ -56,6 +57,14 @@ double SpeedProfile::speed_at(double t) const {
   if (b.time_s == a.time_s) return b.speed_m_s;
   const double u = (t - a.time_s) / (b.time_s - a.time_s);
   return a.speed_m_s + u * (b.speed_m_s - a.speed_m_s);
+}
+
+void check_within_motor(const SpeedProfile& profile, double max_speed_m_s) {
+  if (profile.max_speed_m_s() <= max_speed_m_s) return;
+  char text[160];
+  std::snprintf(text, sizeof text, "the profile asks for %.1f mm/s; the motor follows 0-%.0f mm/s",
+                profile.max_speed_m_s() * 1e3, max_speed_m_s * 1e3);
+  throw std::invalid_argument(text);
 }
 
 SpeedProfile fit_to_duration(const SpeedProfile& profile, double seconds) {

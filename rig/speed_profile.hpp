@@ -35,6 +35,11 @@ class SpeedProfile {
   std::vector<ProfilePoint> points_;
 };
 
+// Throws std::invalid_argument "the profile asks for X mm/s; the motor follows 0-Y mm/s" when the
+// profile is faster than a motor whose top speed is `max_speed_m_s`: the one line every rig and
+// the capture give for it.
+void check_within_motor(const SpeedProfile& profile, double max_speed_m_s);
+
 // The paper's measurement protocol (Sec. 3; model/measure/step_segmentation.hpp): per sweep 2 s at
 // rest, then six 2 s steps rising over 17-250 mm/s, sweeps repeated back to back; `seconds` cuts or
 // extends the whole (whole sweeps: 14 s each) and is rounded up to at least one sweep when zero.

@@ -9,16 +9,14 @@
 #include "model/design/tool_sound.hpp"
 #include "playback/playback_session.hpp"
 #include "rt/stroke_source.hpp"
+#include "tests/rig/bundled_sound.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 namespace nibrig::rig {
 namespace {
 
 std::unique_ptr<playback::PlaybackSession> cryon_session() {
-  static const model::design::ToolSound sound = [] {
-    model::design::ToolSounds sounds({});
-    return sounds.sound("cryon", "office");
-  }();
+  const model::design::ToolSound& sound = testing::bundled_sound("cryon", "office");
   rt::EngineSettings settings;
   settings.slots = 1;
   return std::make_unique<playback::PlaybackSession>(

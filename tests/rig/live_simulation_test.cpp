@@ -6,17 +6,10 @@
 
 #include "model/design/tool_sound.hpp"
 #include "rig/simulated_rig.hpp"
+#include "tests/rig/bundled_sound.hpp"
 
 namespace nibrig::rig {
 namespace {
-
-const model::design::ToolSound& cryon_office() {
-  static const model::design::ToolSound sound = [] {
-    model::design::ToolSounds sounds({});
-    return sounds.sound("cryon", "office");
-  }();
-  return sound;
-}
 
 double rms(const std::vector<float>& x, std::size_t begin, std::size_t end) {
   double sum = 0.0;
@@ -27,7 +20,7 @@ double rms(const std::vector<float>& x, std::size_t begin, std::size_t end) {
 // Frames at rest, then sliding from frame 500 on: the simulation is silent while the tip rests and
 // sounds within the first frame after it moves (the contact acts within one frame: 48 samples).
 TEST(LiveSimulation, FollowsTheMeasuredContactWithinOneFrame) {
-  LiveSimulation live(cryon_office(), 48000.0, 1000.0, 1);
+  LiveSimulation live(testing::bundled_sound("cryon", "office"), 48000.0, 1000.0, 1);
   std::vector<float> simulated;
   for (std::uint32_t k = 0; k < 1000; k += 10) {  // batches of 10 frames, as a rig delivers
     RigData batch;
@@ -59,9 +52,9 @@ TEST(LiveSimulation, RunsSampleForSampleBesideASimulatedRigOfTheSameTool) {
   SimulatedRigSettings settings;
   settings.speedup = 0.0;
   settings.seed = 5;
-  SimulatedRig rig(settings, cryon_office(), "cryon", "office");
+  SimulatedRig rig(settings, testing::bundled_sound("cryon", "office"), "cryon", "office");
   rig.start(study_sweep(3.0));
-  LiveSimulation live(cryon_office(), 48000.0, 1000.0, SimulatedRig::tool_seed(5));
+  LiveSimulation live(testing::bundled_sound("cryon", "office"), 48000.0, 1000.0, SimulatedRig::tool_seed(5));
   std::vector<float> measured, simulated;
   RigData batch;
   bool more = true;

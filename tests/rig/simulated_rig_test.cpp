@@ -14,19 +14,11 @@
 #include "model/io/session.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "rig/capture.hpp"
+#include "tests/rig/bundled_sound.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::rig {
 namespace {
-
-// The bundled catalog's vero2 on office through the bundled stylus, made once for every test.
-const model::design::ToolSound& vero2_office() {
-  static const model::design::ToolSound sound = [] {
-    model::design::ToolSounds sounds({});
-    return sounds.sound("vero2", "office");
-  }();
-  return sound;
-}
 
 SimulatedRigSettings fast(std::uint64_t seed = 1) {
   SimulatedRigSettings s;
@@ -50,9 +42,9 @@ RigData run(Rig& rig, const SpeedProfile& profile) {
 
 TEST(SimulatedRig, IsDeterministicForASeedAndDeliversBothStreamsOnOneTimeline) {
   const SpeedProfile profile = study_sweep(1.0);
-  SimulatedRig a(fast(7), vero2_office(), "vero2", "office");
-  SimulatedRig b(fast(7), vero2_office(), "vero2", "office");
-  SimulatedRig c(fast(8), vero2_office(), "vero2", "office");
+  SimulatedRig a(fast(7), testing::bundled_sound("vero2", "office"), "vero2", "office");
+  SimulatedRig b(fast(7), testing::bundled_sound("vero2", "office"), "vero2", "office");
+  SimulatedRig c(fast(8), testing::bundled_sound("vero2", "office"), "vero2", "office");
   const RigData da = run(a, profile), db = run(b, profile), dc = run(c, profile);
   // 1 s at 1 kHz and 48 kHz, exactly: both streams cover the profile and nothing more.
   ASSERT_EQ(da.frames.size(), 1000u);
@@ -75,7 +67,7 @@ TEST(SimulatedRig, IsDeterministicForASeedAndDeliversBothStreamsOnOneTimeline) {
 TEST(SimulatedRig, MotorFollowsAStepWithItsTimeConstantAndForcesFollowTheLoad) {
   SimulatedRigSettings s = fast();
   const double target = 0.1;
-  SimulatedRig rig(s, vero2_office(), "vero2", "office");
+  SimulatedRig rig(s, testing::bundled_sound("vero2", "office"), "vero2", "office");
   const RigData d = run(rig, SpeedProfile("step", {{0, target}, {1.0, target}}));
   const auto tau_frame = static_cast<std::size_t>(s.motor_time_constant_s * s.frame_rate_hz);
   double near_tau = 0.0;
@@ -96,7 +88,7 @@ TEST(SimulatedRig, MotorFollowsAStepWithItsTimeConstantAndForcesFollowTheLoad) {
 }
 
 TEST(SimulatedRig, RefusesAProfileBeyondTheMotorSayingItsRange) {
-  SimulatedRig rig(fast(), vero2_office(), "vero2", "office");
+  SimulatedRig rig(fast(), testing::bundled_sound("vero2", "office"), "vero2", "office");
   try {
     rig.start(SpeedProfile("too fast", {{0, 0.0}, {1.0, 0.6}}));
     FAIL() << "a 600 mm/s profile was accepted by a 400 mm/s motor";
@@ -108,7 +100,7 @@ TEST(SimulatedRig, RefusesAProfileBeyondTheMotorSayingItsRange) {
 TEST(SimulatedRig, SaturatedForceChannelsAreClippedAndFlagged) {
   SimulatedRigSettings s = fast();
   s.normal_load_N = 12.0;  // beyond the 10 N full scale
-  SimulatedRig rig(s, vero2_office(), "vero2", "office");
+  SimulatedRig rig(s, testing::bundled_sound("vero2", "office"), "vero2", "office");
   const RigData d = run(rig, SpeedProfile("hold", {{0, 0.05}, {0.2, 0.05}}));
   for (const SensorFrame& f : d.frames) {
     ASSERT_EQ(f.normal_force_N, 10.0f);
@@ -121,7 +113,7 @@ TEST(SimulatedRig, SaturatedForceChannelsAreClippedAndFlagged) {
 TEST(SimulatedRig, RealTimePacingFollowsTheClock) {
   SimulatedRigSettings s = fast();
   s.speedup = 1.0;
-  SimulatedRig rig(s, vero2_office(), "vero2", "office");
+  SimulatedRig rig(s, testing::bundled_sound("vero2", "office"), "vero2", "office");
   const auto start = std::chrono::steady_clock::now();
   const RigData d = run(rig, study_sweep(0.5));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -135,7 +127,7 @@ TEST(SimulatedRig, RealTimePacingFollowsTheClock) {
 // tool, issue 16); what remains is the engine's forcing noise and the rig's added noise and motor line.
 TEST(SimulatedRig, CaptureOfACatalogToolMeasuresAsItsCatalogSpectrum) {
   const auto dir = test::scratch_dir("simulated_capture_measured");
-  SimulatedRig rig(fast(3), vero2_office(), "vero2", "office");
+  SimulatedRig rig(fast(3), testing::bundled_sound("vero2", "office"), "vero2", "office");
   CaptureOptions options;
   options.folder = dir / "vero2_office";
   const CaptureResult result = capture_session(rig, paper_steps(42.0), options);

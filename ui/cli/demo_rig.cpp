@@ -72,7 +72,7 @@ std::string run_rig_demo(const std::filesystem::path& catalog_file, const std::f
   std::snprintf(text, sizeof text,
                 "rig (simulated turntable, %s on %s):\n"
                 "  paper steps, 3 sweeps (42 s), captured and measured as a session: %.2f dB RMS from "
-                "the catalog spectrum (the tools' repeatability: about 2.3 dB)\n"
+                "the catalog spectrum\n"
                 "  live comparison over the study's sweep (6 s): mean distance %.2f dB over %zu speed "
                 "bins, weighted mean %+.1f %%, %llu blocks dropped\n"
                 "  report: %s/ (steps/, compare/comparison.json, compare/comparison.png)\n",

@@ -23,6 +23,18 @@ namespace {
 
 using namespace std::chrono_literals;
 
+// The emulated controller, with the accelerometer input on JACK stream `stream`, which the test
+// patches a feeder client into (no converter delays it: its latency is 0, not system:capture's).
+UsbRigSettings fed_by_jack(const std::string& stream) {
+  UsbRigSettings settings;
+  settings.accelerometer.api = "jack";
+  settings.accelerometer.stream_name = stream;
+  settings.accelerometer.connect_ports = false;
+  settings.accelerometer.period_frames = 64;
+  settings.accelerometer.device_latency_s = 0.0;
+  return settings;
+}
+
 TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   nibrig::testing::JackServer server;
   usb::testing::Testbed testbed;
@@ -31,12 +43,7 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   usb::testing::EmulatedRig device(testbed.get(), config);
   testing::JackFeeder feeder("tap-feeder", 0.01, 440.0);
 
-  UsbRigSettings settings;
-  settings.accelerometer.api = "jack";
-  settings.accelerometer.stream_name = "usb-rig-accel";
-  settings.accelerometer.connect_ports = false;
-  settings.accelerometer.period_frames = 64;
-  settings.accelerometer.device_latency_s = 0.0;  // the feeder is patched straight in: no converter
+  const UsbRigSettings settings = fed_by_jack("usb-rig-accel");
   UsbRig rig(settings);
   ASSERT_TRUE(feeder.connect("usb-rig-accel:inport 0"));
   EXPECT_EQ(rig.description().kind, "usb");
@@ -106,11 +113,7 @@ TEST(UsbRig, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
   usb::testing::Testbed testbed;
   usb::testing::EmulatedRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
   testing::JackFeeder feeder("unplug-feeder", 0.1, 440.0);
-  UsbRigSettings settings;
-  settings.accelerometer.api = "jack";
-  settings.accelerometer.stream_name = "unplug-accel";
-  settings.accelerometer.connect_ports = false;
-  settings.accelerometer.period_frames = 64;
+  const UsbRigSettings settings = fed_by_jack("unplug-accel");
   UsbRig rig(settings);
   ASSERT_TRUE(feeder.connect("unplug-accel:inport 0"));
   const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "usb_rig_unplugged";
