@@ -1,0 +1,58 @@
+#include "model/io/user_cache.hpp"
+
+#include <bit>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace nibrig::model::io {
+
+std::filesystem::path user_cache_dir() {
+  if (const char* d = std::getenv("NIBRIG_CACHE"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "nibrig";
+  const char* home = std::getenv("HOME");
+  return std::filesystem::path(home && *home ? home : ".") / ".cache" / "nibrig";
+}
+
+void CacheKey::mix(const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) {
+    hash_ ^= bytes[i];
+    hash_ *= 0x100000001b3ull;
+  }
+}
+
+CacheKey& CacheKey::add(std::string_view part) {
+  const std::uint64_t size = part.size();
+  mix(&size, sizeof size);
+  mix(part.data(), part.size());
+  return *this;
+}
+
+CacheKey& CacheKey::add(double value) {
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  mix(&bits, sizeof bits);
+  return *this;
+}
+
+CacheKey& CacheKey::add(std::int64_t value) {
+  mix(&value, sizeof value);
+  return *this;
+}
+
+CacheKey& CacheKey::add_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot be read to key a cached result");
+  const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return add(content);
+}
+
+std::string CacheKey::hex() const {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash_));
+  return text;
+}
+
+}  // namespace nibrig::model::io
