@@ -19,7 +19,8 @@ packages=(
   librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libusb-1.0-0-dev umockdev libumockdev-dev  # the rig's USB controller and its emulated device
-  libstb-dev  # the report tests read their PNGs back with stb_image
+  libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
+  libimgui-dev libglfw3-dev libgl1-mesa-dri xvfb xauth  # the panel: ImGui 1.86 + GLFW + OpenGL 3, under Xvfb in tests
   clang libclang-rt-14-dev
   python3-numpy python3-scipy
 )

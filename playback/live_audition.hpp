@@ -1,0 +1,70 @@
+// A player that keeps running while a person works: one engine with a voice per slot (a tool, or
+// the two or three of an A/B or triplet comparison), a stroke or a live contact, on a device by
+// name or on none at all (a screenshot, a machine without audio). The panel plays what is clicked,
+// dragged and drawn here; a test reaches all of it without a window.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "playback/audio_output.hpp"
+#include "playback/playback_session.hpp"
+#include "rt/engine.hpp"
+#include "rt/stroke_source.hpp"
+
+namespace nibrig::playback {
+
+class LiveAudition {
+ public:
+  // An engine with settings.slots slots (at least one), silent until a voice is loaded and a stroke
+  // or contact moves it. Throws what rt::Engine throws for bad settings.
+  explicit LiveAudition(rt::EngineSettings settings);
+  ~LiveAudition();
+  LiveAudition(const LiveAudition&) = delete;
+  LiveAudition& operator=(const LiveAudition&) = delete;
+
+  // Plays on that device from now on (closing any other first). Throws DeviceError naming what was
+  // asked; the audition then plays nowhere, as before open.
+  void open(const OutputSettings& output);
+  void close();
+  bool playing_on_a_device() const noexcept { return output_ != nullptr; }
+  // Of the open device; nullopt when none is open.
+  std::optional<StreamInfo> stream_info() const;
+  std::optional<OutputStats> output_stats() const;
+  std::optional<OutputStatus> output_status() const;
+  std::string last_problem() const;
+
+  // The voice of `voice` (built here, on the calling thread: milliseconds) into `slot`, crossfaded
+  // in when `slot` is the one selected. Throws std::invalid_argument for a slot out of range and
+  // what rt::build_voice throws.
+  void load(std::size_t slot, const SessionVoice& voice, std::uint64_t seed);
+  void select(std::size_t slot);
+  std::size_t selected() const noexcept { return selected_; }
+  // The name of the voice in each slot ("" for none yet).
+  const std::vector<std::string>& names() const noexcept { return names_; }
+  // A stroke to follow (constant, sweep, trajectory: rt/stroke_request.hpp), or a live contact
+  // (the pad, the rig): each replaces the other.
+  void attach(std::unique_ptr<rt::StrokeSource> stroke);
+  void set_contact(double speed_m_s, double normal_force_n);
+  rt::EngineStats engine_stats() const { return engine_->stats(); }
+  double sample_rate() const noexcept { return engine_->sample_rate(); }
+
+ private:
+  // Hands a command to the engine: with a device open its callback drains the queue every block
+  // (waits up to a second for room, then throws naming the device's state); with none, this
+  // thread renders a block into scratch to drain it, as nothing else calls the engine.
+  template <typename Command>
+  void deliver(const char* what, Command&& command);
+
+  rt::EngineSettings settings_;
+  std::unique_ptr<rt::Engine> engine_;
+  std::unique_ptr<AudioOutput> output_;
+  std::vector<std::string> names_;
+  std::size_t selected_ = 0;
+  std::vector<float> scratch_;
+};
+
+}  // namespace nibrig::playback

@@ -1,0 +1,108 @@
+// The panel's player on a real JACK server: silent until a tool is loaded and moved, the tool's
+// signal once it is, the other slot's on a switch, and silence again when the contact stops; with
+// no device at all every command still goes through (the engine is drained by the caller).
+#include "playback/live_audition.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "model/io/catalog_file.hpp"
+#include "tests/playback/jack_recorder.hpp"
+#include "tests/playback/jack_stream_settings.hpp"
+#include "tests/support/jack_server.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::playback {
+namespace {
+
+using namespace std::chrono_literals;
+
+model::modal::ModalModel small_stylus() {
+  const double tau = 2 * 3.141592653589793;
+  return {{tau * 92.7, tau * 250.0, tau * 1457.5}, {0.36, 0.05, 0.3}, {23.3, 10.0, 33.1}, {0.40, 0.30, 5.1}};
+}
+
+const model::io::VelocitySpectrum& spectrum(const std::string& tool) {
+  static const auto catalog = model::io::read_catalog(test::assets_dir() / "default_catalog.json");
+  for (const auto& p : catalog.pairings)
+    if (p.tool == tool && p.surface == "note" && p.vibration) return p.vibration->spectrum;
+  throw std::runtime_error("no " + tool + "/note in the bundled catalog");
+}
+
+// The same tool four times as strong: slot 1 then plays 12 dB louder, which tells a switch apart
+// from two tools whose levels happen to be close.
+model::io::VelocitySpectrum four_times(model::io::VelocitySpectrum s) {
+  for (auto& row : s.amplitude_m_s2)
+    for (double& a : row) a *= 4.0;
+  return s;
+}
+
+double rms_of_last(const std::vector<float>& samples, std::size_t end, std::size_t count) {
+  double sum = 0.0;
+  for (std::size_t i = end - count; i < end; ++i) sum += double(samples[i]) * samples[i];
+  return std::sqrt(sum / static_cast<double>(count));
+}
+
+// Records `frames` of the audition's output with an independent libjack client.
+std::vector<float> record(const std::string& port, std::size_t frames) {
+  testing::JackRecorder ear("ear", 1, frames);
+  EXPECT_TRUE(ear.connect(port, 0));
+  ear.start();
+  EXPECT_TRUE(ear.wait_full(20s)) << "recorded " << ear.recorded() << " frames";
+  return ear.samples(0);
+}
+
+TEST(LiveAudition, PlaysTheLoadedToolSwitchesSlotsAndFallsSilentWhenTheContactStops) {
+  nibrig::testing::JackServer server;
+  LiveAudition audition(rt::EngineSettings{});
+  audition.open(testing::jack_settings("audition"));
+  ASSERT_TRUE(audition.playing_on_a_device());
+  EXPECT_EQ(audition.stream_info()->api, "jack");
+
+  // Nothing loaded: exact silence (the engine's output stage adds nothing of its own).
+  const auto before = record("audition:outport 0", 9600);
+  EXPECT_EQ(rms_of_last(before, before.size(), before.size()), 0.0);
+
+  audition.load(0, {"cryon", small_stylus(), spectrum("cryon")}, 7);
+  const auto louder = four_times(spectrum("cryon"));
+  audition.load(1, {"cryon x4", small_stylus(), louder}, 8);
+  audition.set_contact(0.1, 2.2);
+  EXPECT_EQ(audition.names()[0], "cryon");
+  const auto cryon = record("audition:outport 0", 24000);
+  // Half a second at 100 mm/s: the crayon's vibration is well above the output stage's noise floor
+  // (a sensor-acceleration of about 1 m/s² at the default gain of 0.05 per m/s²).
+  const double cryon_rms = rms_of_last(cryon, cryon.size(), 12000);
+  EXPECT_GT(cryon_rms, 1e-3);
+
+  audition.select(1);
+  EXPECT_EQ(audition.selected(), 1u);
+  const auto loud = record("audition:outport 0", 24000);
+  const double loud_rms = rms_of_last(loud, loud.size(), 12000);
+  // 12 dB, within the ±1.5 dB that two quarter-second estimates of narrow-band noise scatter by.
+  EXPECT_NEAR(20 * std::log10(loud_rms / cryon_rms), 12.04, 1.5) << "cryon " << cryon_rms << ", x4 " << loud_rms;
+
+  audition.set_contact(0.0, 0.0);
+  const auto stopped = record("audition:outport 0", 24000);
+  EXPECT_LT(rms_of_last(stopped, stopped.size(), 12000), cryon_rms * 1e-2);
+  EXPECT_EQ(audition.output_stats()->losses, 0u);
+}
+
+TEST(LiveAudition, WithoutADeviceEveryCommandStillGoesThrough) {
+  LiveAudition audition(rt::EngineSettings{});
+  EXPECT_FALSE(audition.playing_on_a_device());
+  EXPECT_FALSE(audition.output_stats().has_value());
+  // More commands than the engine's queue holds: each is drained by the caller.
+  for (int i = 0; i < 600; ++i) audition.set_contact(0.05 + 1e-4 * i, 2.2);
+  audition.load(2, {"cryon", small_stylus(), spectrum("cryon")}, 1);
+  audition.select(2);
+  EXPECT_EQ(audition.selected(), 2u);
+  EXPECT_EQ(audition.names()[2], "cryon");
+  EXPECT_THROW(audition.select(3), std::invalid_argument);
+  EXPECT_THROW(audition.load(3, {"cryon", small_stylus(), spectrum("cryon")}, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace nibrig::playback
