@@ -26,3 +26,9 @@ find_library(GMSH_LIBRARY gmsh REQUIRED)
 add_library(nibrig_gmsh INTERFACE)
 target_include_directories(nibrig_gmsh SYSTEM INTERFACE ${GMSH_INCLUDE_DIR})
 target_link_libraries(nibrig_gmsh INTERFACE ${GMSH_LIBRARY})
+# The panel (ui/panel): Dear ImGui 1.86, whose static library already holds the GLFW and OpenGL 3
+# back ends, a GLFW 3.3 window, and stb_image_write (compiled into libstb) for its screenshots.
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+find_package(glfw3 3.3 REQUIRED)
+find_package(OpenGL REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)

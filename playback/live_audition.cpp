@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "rt/fir_filter.hpp"
 #include "rt/voice_builder.hpp"
 
 namespace nibrig::playback {
@@ -84,6 +85,15 @@ void LiveAudition::select(std::size_t slot) {
 void LiveAudition::attach(std::unique_ptr<rt::StrokeSource> stroke) {
   if (!stroke) throw std::invalid_argument("no stroke to attach");
   deliver("stroke", [&] { return engine_->attach(std::move(stroke)); });
+}
+
+InverseFilter LiveAudition::use_actuator(const ActuatorCalibration& calibration, std::string name) {
+  InverseFilter filter = redesign_for_rate(calibration, engine_->internal_rate());
+  auto fir = std::make_unique<rt::FirFilter>(filter.taps);
+  deliver("actuator filter", [&] { return engine_->set_calibration(std::move(fir)); });
+  deliver("output level", [&] { return engine_->set_output_level(1.0); });
+  actuator_ = std::move(name);
+  return filter;
 }
 
 void LiveAudition::set_contact(double speed_m_s, double normal_force_n) {

@@ -49,6 +49,11 @@ class LiveAudition {
   // (the pad, the rig): each replaces the other.
   void attach(std::unique_ptr<rt::StrokeSource> stroke);
   void set_contact(double speed_m_s, double normal_force_n);
+  // Through the actuator's inverse filter from now on (the output level becomes a trim), as
+  // PlaybackSession::use_actuator; returns the filter, whose flatness a face shows. `name` says
+  // which calibration is in use (actuator()).
+  InverseFilter use_actuator(const ActuatorCalibration& calibration, std::string name);
+  const std::string& actuator() const noexcept { return actuator_; }
   rt::EngineStats engine_stats() const { return engine_->stats(); }
   double sample_rate() const noexcept { return engine_->sample_rate(); }
 
@@ -63,6 +68,7 @@ class LiveAudition {
   std::unique_ptr<rt::Engine> engine_;
   std::unique_ptr<AudioOutput> output_;
   std::vector<std::string> names_;
+  std::string actuator_;
   std::size_t selected_ = 0;
   std::vector<float> scratch_;
 };

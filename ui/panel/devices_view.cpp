@@ -1,0 +1,122 @@
+#include "ui/panel/devices_view.hpp"
+
+#include <cstdio>
+
+#include "ui/panel/widgets.hpp"
+
+namespace nibrig::ui::panel {
+
+DevicesView::DevicesView(PanelAudio& audio) : audio_(audio) {}
+
+void DevicesView::refresh() {
+  if (job_) return;
+  job_ = std::make_unique<BackgroundJob<DeviceListing>>("listing devices", [](JobControl& control) {
+    DeviceListing listing;
+    control.message("audio devices");
+    listing.apis = playback::list_devices();
+    control.message("USB rig controllers");
+    try {
+      listing.controllers = rig::usb::list_rig_controllers();
+    } catch (const std::exception& e) {
+      listing.usb_problem = e.what();
+    }
+    return listing;
+  });
+}
+
+void DevicesView::open() {
+  request_.api = api_;
+  request_.device = device_;
+  error_ = audio_.open(request_);
+}
+
+void DevicesView::draw() {
+  if (job_ && job_->done()) {
+    if (auto listing = job_->take_result()) listing_ = std::move(listing);
+    if (!job_->error().empty()) error_ = job_->error();
+    job_.reset();
+  }
+  if (!listing_ && !job_) refresh();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  ImGui::BeginChild("devices-choice", {avail.x * 0.5f, avail.y});
+  section("Output to the actuator");
+  ImGui::InputText("api (jack, alsa, pulse)", api_, sizeof api_);
+  ImGui::InputText("device (by name)", device_, sizeof device_);
+  int channel = static_cast<int>(request_.output_channel), period = static_cast<int>(request_.period_frames);
+  if (ImGui::InputInt("output channel", &channel)) request_.output_channel = static_cast<unsigned>(std::max(1, channel));
+  if (ImGui::InputInt("period frames", &period)) request_.period_frames = static_cast<unsigned>(std::clamp(period, 16, 8192));
+  if (ImGui::Button("Open")) open();
+  ImGui::SameLine();
+  if (ImGui::Button("Close")) audio_.close();
+  if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+  draw_stream();
+  section("Actuator calibration");
+  ImGui::InputText("name or file", actuator_, sizeof actuator_);
+  ImGui::SameLine();
+  if (ImGui::Button("Use")) {
+    error_ = audio_.use_actuator(actuator_);
+  }
+  ImGui::Text("in use: %s", audio_.audition().actuator().empty() ? "none (the output is the requested m/s2 times a plain gain)"
+                                                                : audio_.audition().actuator().c_str());
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("devices-listing", {0.0f, avail.y});
+  draw_listing();
+  ImGui::EndChild();
+}
+
+void DevicesView::draw_stream() {
+  section("Stream");
+  const auto& a = audio_.audition();
+  const auto info = a.stream_info();
+  if (!info) {
+    ImGui::TextWrapped("No device open: the panel plays nowhere (choose one and press Open).");
+    return;
+  }
+  ImGui::Text("%s: %s, %u Hz, period %u, latency %ld frames", info->api.c_str(), info->device.c_str(), info->sample_rate,
+              info->period_frames, info->latency_frames);
+  const auto stats = *a.output_stats();
+  const auto engine = a.engine_stats();
+  const double period_s = info->sample_rate ? static_cast<double>(info->period_frames) / info->sample_rate : 0.0;
+  const double p99 = engine.callback_time_quantile(0.99);
+  ImGui::Text("status: %s", *a.output_status() == playback::OutputStatus::running ? "running" : "LOST, looking for it");
+  if (!a.last_problem().empty()) ImGui::TextWrapped("last problem: %s", a.last_problem().c_str());
+  ImGui::Text("callback load: 99%% of blocks within %.0f%% of the period (max %.0f%%)",
+              period_s > 0 ? 100.0 * p99 / period_s : 0.0, period_s > 0 ? 100.0 * engine.max_callback_s / period_s : 0.0);
+  ImGui::Text("xruns: %llu underflows, %llu overruns of our own",
+              static_cast<unsigned long long>(stats.output_underflows), static_cast<unsigned long long>(engine.overruns));
+  ImGui::Text("device losses: %llu, reconnects: %llu", static_cast<unsigned long long>(stats.losses),
+              static_cast<unsigned long long>(stats.reconnects));
+  ImGui::Text("peak output %.2f of full scale, %llu samples limited", engine.peak_output,
+              static_cast<unsigned long long>(engine.limited_samples));
+}
+
+void DevicesView::draw_listing() {
+  section("Audio back ends and devices");
+  if (ImGui::Button(job_ ? "Listing..." : "Refresh")) refresh();
+  if (!listing_) return;
+  for (const auto& api : listing_->apis) {
+    if (!api.available) {
+      ImGui::TextDisabled("%s: %s", api.display_name.c_str(), api.unavailable_reason.c_str());
+      continue;
+    }
+    ImGui::Text("%s", api.display_name.c_str());
+    for (const auto& d : api.devices) {
+      ImGui::BulletText("%s (%u out, %u in)%s", d.name.c_str(), d.output_channels, d.input_channels,
+                        d.default_output ? ", default" : "");
+      ImGui::SameLine();
+      ImGui::PushID(&d);
+      if (ImGui::SmallButton("choose")) {
+        std::snprintf(api_, sizeof api_, "%s", api.api.c_str());
+        std::snprintf(device_, sizeof device_, "%s", d.name.c_str());
+      }
+      ImGui::PopID();
+    }
+  }
+  section("USB rig controllers");
+  if (!listing_->usb_problem.empty()) ImGui::TextWrapped("%s", listing_->usb_problem.c_str());
+  else if (listing_->controllers.empty()) ImGui::TextWrapped("none on the bus (VID 0x1209, PID 0x000A)");
+  for (const auto& c : listing_->controllers) ImGui::BulletText("%s", rig::usb::describe(c).c_str());
+}
+
+}  // namespace nibrig::ui::panel

@@ -1,0 +1,164 @@
+#include "ui/panel/panel.hpp"
+
+#include <cstdio>
+
+#include "model/io/bundled_assets.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/io/user_cache.hpp"
+#include "ui/panel/devices_view.hpp"
+#include "ui/panel/pad_view.hpp"
+#include "ui/panel/rig_view.hpp"
+#include "ui/panel/space_scene.hpp"
+#include "ui/panel/widgets.hpp"
+
+namespace nibrig::ui::panel {
+
+namespace {
+
+constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices};
+
+std::filesystem::path sessions_folder() {
+  const char* data = std::getenv("XDG_DATA_HOME");
+  const char* home = std::getenv("HOME");
+  const std::filesystem::path base = data && *data ? std::filesystem::path(data)
+                                                   : std::filesystem::path(home && *home ? home : ".") / ".local" / "share";
+  return base / "nibrig" / "sessions";
+}
+
+}  // namespace
+
+std::optional<View> view_named(std::string_view name) {
+  for (View v : kViews)
+    if (name == view_name(v)) return v;
+  return std::nullopt;
+}
+
+const char* view_name(View view) {
+  switch (view) {
+    case View::space: return "space";
+    case View::design: return "design";
+    case View::rig: return "rig";
+    case View::pad: return "pad";
+    case View::devices: return "devices";
+  }
+  return "space";
+}
+
+Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
+  model::design::ToolSoundOptions sounds;
+  sounds.catalog = setup_.catalog;
+  sounds.forcing_model = setup_.forcing;
+  audio_ = std::make_unique<PanelAudio>(sounds);
+  space_view_ = std::make_unique<SpaceView>(SpaceScene{}, [this](const std::vector<ToolChoice>& tools,
+                                                                  const rt::StrokeRequest& stroke) {
+    audio_->play(tools, stroke);
+  });
+  rig_view_ = std::make_unique<RigView>(setup_.catalog, setup_.forcing, sessions_folder());
+  pad_view_ = std::make_unique<PadView>(*audio_);
+  devices_view_ = std::make_unique<DevicesView>(*audio_);
+  if (setup_.device) {
+    devices_view_->request() = *setup_.device;
+    if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
+  }
+  if (!setup_.space.empty()) load_space(setup_.space);
+}
+
+Panel::~Panel() = default;
+
+void Panel::load_space(const std::filesystem::path& file) {
+  const auto catalog_file = model::io::or_default(setup_.catalog, model::io::default_catalog);
+  space_job_ = std::make_unique<BackgroundJob<SpaceScene>>(
+      "loading the space", [file, catalog_file](JobControl& control) {
+        control.message("reading " + file.string());
+        const auto catalog = model::io::read_catalog(catalog_file);
+        const auto space = model::space::read_space_file(file);
+        return scene_of(space, catalog, catalog_file, "space " + file.string());
+      });
+}
+
+void Panel::show(View view) { requested_ = view; }
+
+bool Panel::settled() const {
+  if (current_ == View::space) return !space_job_ && !audio_->making_sounds();
+  return true;
+}
+
+void Panel::poll_jobs() {
+  audio_->poll();
+  if (space_job_ && space_job_->done()) {
+    if (auto scene = space_job_->take_result()) space_view_->set_scene(std::move(*scene));
+    else error_ = space_job_->error();
+    space_job_.reset();
+  }
+}
+
+void Panel::draw_menu() {
+  if (!ImGui::BeginMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    ImGui::InputText("path", open_path_, sizeof open_path_);
+    if (ImGui::MenuItem("Open space")) load_space(open_path_);
+    ImGui::EndMenu();
+  }
+  ImGui::EndMenuBar();
+}
+
+void Panel::draw_status() {
+  ImGui::Separator();
+  if (space_job_) {
+    if (progress_with_cancel("space-job", static_cast<float>(space_job_->progress()), space_job_->message().c_str()))
+      space_job_.reset();
+  }
+  if (audio_->making_sounds())
+    ImGui::ProgressBar(static_cast<float>(audio_->making_progress()), {-1.0f, 0.0f}, audio_->making_message().c_str());
+  const std::string& problem = !error_.empty() ? error_ : audio_->error();
+  if (!problem.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", problem.c_str());
+  const auto& names = audio_->names();
+  std::string playing;
+  for (std::size_t i = 0; i < audio_->playing().size(); ++i)
+    playing += (i ? ", " : "") + std::string(1, static_cast<char>('A' + i)) + ": " + names[i];
+  ImGui::Text("%s | %s | %s", audio_->audition().playing_on_a_device() ? audio_->audition().stream_info()->device.c_str() : "no device",
+              playing.empty() ? "nothing playing" : playing.c_str(), audio_->stroke_description().c_str());
+  if (audio_->playing().size() > 1) {
+    for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
+      ImGui::SameLine();
+      const char label[2] = {static_cast<char>('A' + i), 0};
+      if (ImGui::SmallButton(label)) audio_->select(i);
+    }
+  }
+}
+
+void Panel::draw() {
+  poll_jobs();
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(viewport->WorkPos);
+  ImGui::SetNextWindowSize(viewport->WorkSize);
+  ImGui::Begin("nibrig-panel", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_MenuBar |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  draw_menu();
+  const float status_height = ImGui::GetFrameHeightWithSpacing() * 3.0f;
+  if (ImGui::BeginTabBar("views")) {
+    for (View v : kViews) {
+      const bool select = requested_ && *requested_ == v;
+      if (ImGui::BeginTabItem(view_name(v), nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) {
+        current_ = v;
+        ImGui::BeginChild("view", {0.0f, -status_height});
+        switch (v) {
+          case View::space: space_view_->draw(); break;
+          case View::design: ImGui::TextWrapped("The design view is being built."); break;
+          case View::rig: rig_view_->draw(); break;
+          case View::pad: pad_view_->draw(); break;
+          case View::devices: devices_view_->draw(); break;
+        }
+        ImGui::EndChild();
+        ImGui::EndTabItem();
+      }
+    }
+    ImGui::EndTabBar();
+  }
+  if (requested_ && current_ == *requested_) requested_.reset();
+  draw_status();
+  ImGui::End();
+}
+
+}  // namespace nibrig::ui::panel

@@ -1,0 +1,73 @@
+// nibrig-panel's contents: the five views as tabs of one full-window ImGui window, an error line
+// that shows what went wrong in a file or a device (never a crash), and the files a person opens.
+// Everything here runs on the UI thread and only draws and dispatches: loading, fitting, making
+// sounds and the rig run on worker threads (background_job.hpp), the sound on the audio thread.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "ui/panel/background_job.hpp"
+#include "ui/panel/panel_audio.hpp"
+#include "ui/panel/space_view.hpp"
+
+namespace nibrig::ui::panel {
+
+class RigView;
+class PadView;
+class DevicesView;
+class DesignView;
+
+enum class View { space, design, rig, pad, devices };
+std::optional<View> view_named(std::string_view name);
+const char* view_name(View view);
+
+struct PanelSetup {
+  std::filesystem::path catalog;  // empty: the bundled one
+  std::filesystem::path space;    // empty: the default (computed on first start, then cached)
+  std::filesystem::path forcing;  // empty: the default
+  std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
+};
+
+class Panel {
+ public:
+  explicit Panel(PanelSetup setup);
+  ~Panel();
+
+  // One frame's widgets, filling the display.
+  void draw();
+  void show(View view);
+  View current() const { return current_; }
+  // True once nothing is loading in the background for the view shown (screenshots wait for it).
+  bool settled() const;
+  const std::string& error() const { return error_; }
+
+  SpaceView& space_view() { return *space_view_; }
+  PanelAudio& audio() { return *audio_; }
+  RigView& rig_view() { return *rig_view_; }
+  PadView& pad_view() { return *pad_view_; }
+  DevicesView& devices_view() { return *devices_view_; }
+
+ private:
+  void load_space(const std::filesystem::path& file);
+  void poll_jobs();
+  void draw_menu();
+  void draw_status();
+
+  PanelSetup setup_;
+  std::unique_ptr<PanelAudio> audio_;
+  std::unique_ptr<SpaceView> space_view_;
+  std::unique_ptr<RigView> rig_view_;
+  std::unique_ptr<PadView> pad_view_;
+  std::unique_ptr<DevicesView> devices_view_;
+  std::unique_ptr<BackgroundJob<SpaceScene>> space_job_;
+  View current_ = View::space;
+  std::optional<View> requested_;
+  std::string error_;
+  char open_path_[512] = {};
+};
+
+}  // namespace nibrig::ui::panel

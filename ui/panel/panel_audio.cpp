@@ -1,0 +1,130 @@
+#include "ui/panel/panel_audio.hpp"
+
+#include <stdexcept>
+
+#include "playback/actuator_file.hpp"
+#include "playback/actuator_store.hpp"
+
+namespace nibrig::ui::panel {
+
+PanelAudio::PanelAudio(model::design::ToolSoundOptions sounds)
+    : audition_(rt::EngineSettings{}),
+      sounds_(std::make_shared<model::design::ToolSounds>(std::move(sounds))) {}
+
+PanelAudio::~PanelAudio() {
+  job_.reset();  // stops and joins the job before the sounds it uses go
+}
+
+std::string PanelAudio::open(const DeviceRequest& device) {
+  playback::OutputSettings settings;
+  settings.api = device.api;
+  settings.device = device.device;
+  settings.output_channel = device.output_channel;
+  settings.period_frames = device.period_frames;
+  settings.stream_name = "nibrig-panel";
+  try {
+    audition_.open(settings);
+    return {};
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    return error_;
+  }
+}
+
+void PanelAudio::close() { audition_.close(); }
+
+std::string PanelAudio::use_actuator(const std::string& name_or_file) {
+  try {
+    const auto file = playback::find_actuator(name_or_file);
+    audition_.use_actuator(playback::read_actuator_file(file), file.string());
+    return {};
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+void PanelAudio::play(const std::vector<ToolChoice>& tools, const rt::StrokeRequest& stroke) {
+  if (tools.empty() || tools.size() > audition_.names().size()) {
+    error_ = "choose one to " + std::to_string(audition_.names().size()) + " tools to play";
+    return;
+  }
+  error_.clear();
+  try {  // refused before any meshing: a pairing the catalog lacks, a malformed design point
+    for (const auto& t : tools) sounds_->check(t.tool, t.surface);
+    rt::make_stroke(stroke);  // a bad trajectory file or speed, said now
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    return;
+  }
+  // One job at a time (ToolSounds loads its stylus and forcing model lazily, on one thread): a
+  // request made while sounds are being made waits for them, and only the newest waiting one runs.
+  pending_ = Request{tools, stroke};
+  start_pending();
+}
+
+void PanelAudio::start_pending() {
+  if (job_ || !pending_) return;
+  requested_ = pending_->tools;
+  stroke_ = pending_->stroke;
+  const auto tools = pending_->tools;
+  pending_.reset();
+  auto sounds = sounds_;
+  job_ = std::make_unique<BackgroundJob<Sounds>>(
+      "making the tools' sounds", [sounds, tools](JobControl& control) {
+        Sounds made;
+        for (std::size_t i = 0; i < tools.size() && !control.stop_requested(); ++i) {
+          control.message("making " + tools[i].tool + " on " + tools[i].surface);
+          made.push_back(sounds->sound(tools[i].tool, tools[i].surface));
+          control.progress(static_cast<double>(i + 1) / static_cast<double>(tools.size()));
+        }
+        return made;
+      });
+}
+
+void PanelAudio::poll() {
+  if (!job_ || !job_->done()) return;
+  const std::string failed = job_->error();
+  auto made = job_->take_result();
+  job_.reset();
+  if (pending_) {  // superseded while it was being made: make the newest instead
+    start_pending();
+    return;
+  }
+  if (!failed.empty() || !made || made->size() != requested_.size()) {
+    error_ = failed.empty() ? "making the sounds was cancelled" : failed;
+    return;
+  }
+  try {
+    for (std::size_t i = 0; i < made->size(); ++i)
+      audition_.load(i, {(*made)[i].name, (*made)[i].modal, (*made)[i].spectrum}, seed_ + i);
+    audition_.select(0);
+    rt::Stroke stroke = rt::make_stroke(stroke_);
+    stroke_description_ = stroke.description;
+    audition_.attach(std::move(stroke.source));
+    playing_ = requested_;
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+void PanelAudio::select(std::size_t slot) {
+  if (slot >= playing_.size()) return;
+  try {
+    audition_.select(slot);
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+void PanelAudio::contact(double speed_m_s, double force_n) {
+  try {
+    audition_.set_contact(speed_m_s, force_n);
+    stroke_description_ = "the pad";
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+void PanelAudio::stop() { contact(0.0, 0.0); }
+
+}  // namespace nibrig::ui::panel

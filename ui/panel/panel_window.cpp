@@ -1,0 +1,114 @@
+#include "ui/panel/panel_window.hpp"
+
+#define GL_GLEXT_PROTOTYPES
+#include <GLFW/glfw3.h>
+#include <GL/glext.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include "backends/imgui_impl_glfw.h"
+#include "backends/imgui_impl_opengl3.h"
+#include "imgui.h"
+
+namespace nibrig::ui::panel {
+
+namespace {
+
+std::string glfw_error() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "no reason given";
+}
+
+}  // namespace
+
+PanelWindow::PanelWindow(const WindowSettings& settings) {
+  if (!glfwInit()) {
+    const char* display = std::getenv("DISPLAY");
+    throw std::runtime_error("the panel cannot open a window: " + glfw_error() +
+                             (display && *display ? std::string()
+                                                  : " (no DISPLAY: on a machine without a screen run it "
+                                                    "under `xvfb-run -a`)"));
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_VISIBLE, settings.visible ? GLFW_TRUE : GLFW_FALSE);
+  window_ = glfwCreateWindow(settings.width, settings.height, settings.title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    const std::string why = glfw_error();
+    glfwTerminate();
+    throw std::runtime_error("the panel cannot open an OpenGL 3.3 core window: " + why);
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(settings.vsync ? 1 : 0);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  ini_file_ = settings.ini_file.string();
+  io.IniFilename = ini_file_.empty() ? nullptr : ini_file_.c_str();
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+PanelWindow::~PanelWindow() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool PanelWindow::should_close() const { return glfwWindowShouldClose(window_); }
+
+void PanelWindow::begin_frame() {
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void PanelWindow::end_frame(const std::filesystem::path& screenshot) {
+  ImGui::Render();
+  const int width = framebuffer_width(), height = framebuffer_height();
+  glViewport(0, 0, width, height);
+  glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (!screenshot.empty()) write_framebuffer_png(screenshot, width, height);
+  glfwSwapBuffers(window_);
+}
+
+int PanelWindow::framebuffer_width() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return w;
+}
+
+int PanelWindow::framebuffer_height() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return h;
+}
+
+void write_framebuffer_png(const std::filesystem::path& file, int width, int height) {
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  std::vector<unsigned char> flipped(pixels.size());
+  const std::size_t row = static_cast<std::size_t>(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row,
+                flipped.data() + static_cast<std::size_t>(y) * row);
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  if (!stbi_write_png(file.c_str(), width, height, 3, flipped.data(), static_cast<int>(row)))
+    throw std::runtime_error(file.string() + ": the screenshot cannot be written there");
+}
+
+}  // namespace nibrig::ui::panel

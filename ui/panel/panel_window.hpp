@@ -1,0 +1,48 @@
+// The panel's one window: GLFW, an OpenGL 3.3 core context and Dear ImGui with its GLFW and OpenGL 3
+// back ends. A frame is begin_frame(), the views' ImGui calls, end_frame(); end_frame can read the
+// frame back as a PNG before it is shown (`--screenshot`, the tests, the README's pictures).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+struct GLFWwindow;
+
+namespace nibrig::ui::panel {
+
+struct WindowSettings {
+  std::string title = "nibrig-panel";
+  int width = 1280;
+  int height = 800;
+  bool visible = true;  // a hidden window still renders (screenshots)
+  bool vsync = true;
+  std::filesystem::path ini_file;  // ImGui's window layout; empty: none kept
+};
+
+class PanelWindow {
+ public:
+  // Throws std::runtime_error saying what is missing: no display ("run it under xvfb-run -a"), no
+  // OpenGL 3.3 core context.
+  explicit PanelWindow(const WindowSettings& settings);
+  ~PanelWindow();
+  PanelWindow(const PanelWindow&) = delete;
+  PanelWindow& operator=(const PanelWindow&) = delete;
+
+  bool should_close() const;
+  // Polls events and starts an ImGui frame.
+  void begin_frame();
+  // Renders the frame; with `screenshot` non-empty, writes it there as a PNG first (throws naming
+  // the file when it cannot be written). Then shows it.
+  void end_frame(const std::filesystem::path& screenshot = {});
+  int framebuffer_width() const;
+  int framebuffer_height() const;
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  std::string ini_file_;  // ImGui keeps the pointer
+};
+
+// Reads the current framebuffer (bottom-up in GL) and writes it top-down as an RGB PNG.
+void write_framebuffer_png(const std::filesystem::path& file, int width, int height);
+
+}  // namespace nibrig::ui::panel

@@ -1,0 +1,88 @@
+// View 3, the rig: measured | simulated | difference spectrograms scrolling while a rig runs its
+// profile (the simulated rig, a replayed session, or the USB controller when one is plugged in),
+// the speed and force traces, and the live comparison's distance per speed. The run is
+// rig::run_comparison on a worker thread; the analysis thread's rows reach the UI through a feed
+// that the worker fills and the UI empties each frame (neither ever waits on the audio thread).
+#pragma once
+
+#include <atomic>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rig/comparison_run.hpp"
+#include "rig/rig_request.hpp"
+#include "ui/panel/background_job.hpp"
+#include "ui/panel/waterfall.hpp"
+
+namespace nibrig::ui::panel {
+
+struct RigChoice {
+  int kind = 0;  // 0 simulated, 1 replay, 2 USB
+  std::string tool = "vero2", surface = "office";  // mounted (simulated rig) and simulated
+  std::string simulated_tool;                      // empty: the mounted one
+  std::string profile = "sweep";                   // steps | sweep | a CSV file
+  float seconds = 12.0f;                           // 0: the profile's own length
+  std::string replay;                              // a session folder or paper recording
+  std::string usb_serial;
+  std::string input_api, input_device;
+  int input_channel = 1;
+  float speedup = 1.0f;  // the simulated and replay rigs: 1 = real time
+};
+
+// What the worker hands the UI, under a mutex held only to copy.
+struct RigFeed {
+  std::mutex mutex;
+  std::vector<double> frequencies_hz;
+  std::vector<float> measured_db, simulated_db;  // new rows × all bins
+  std::size_t bins = 0;
+  std::deque<float> speed_mm_s, force_n;  // the newest frames, decimated to 100 Hz
+  std::optional<rig::ComparisonTable> table;
+  rig::CaptureProgress progress;
+  std::string rig_name, simulated_name;
+};
+
+class RigView {
+ public:
+  RigView(std::filesystem::path catalog, std::filesystem::path forcing, std::filesystem::path sessions);
+  ~RigView();
+
+  void draw();
+  void start();
+  void stop();
+  bool running() const { return job_ && !job_->done(); }
+  RigChoice& choice() { return choice_; }
+  const std::string& error() const { return error_; }
+  // For tests: the waterfalls (null before the first rows) and the last table.
+  const Waterfall* measured() const { return measured_.get(); }
+  const Waterfall* simulated() const { return simulated_.get(); }
+  const Waterfall* difference() const { return difference_.get(); }
+  const std::optional<rig::ComparisonTable>& table() const { return table_; }
+  const std::vector<double>& shown_frequencies() const { return shown_hz_; }
+  // Takes what the worker fed since the last frame (draw() calls it).
+  void take_feed();
+
+ private:
+  void draw_controls();
+  void draw_waterfalls();
+  void draw_traces();
+  void draw_table();
+
+  std::filesystem::path catalog_, forcing_, sessions_;
+  RigChoice choice_;
+  std::shared_ptr<RigFeed> feed_ = std::make_shared<RigFeed>();
+  std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
+  std::unique_ptr<BackgroundJob<rig::ComparisonRun>> job_;
+  std::unique_ptr<Waterfall> measured_, simulated_, difference_;
+  std::vector<double> shown_hz_;  // the frequencies the waterfalls show (≤ 1 kHz)
+  std::vector<float> speed_mm_s_, force_n_;
+  std::optional<rig::ComparisonTable> table_;
+  rig::CaptureProgress progress_;
+  std::string rig_name_, simulated_name_, error_, finished_;
+};
+
+}  // namespace nibrig::ui::panel

@@ -1,0 +1,84 @@
+// View 1, the space: every tool where people perceive it (Fig. 9, 15), with its 68 % and 95 %
+// regions, coloured by surface and marked by kind; a choice of axes for spaces of more than two
+// dimensions; hover for the tool, its μ and descriptors; click to play it, shift-click to add it
+// to an A/B or triplet comparison of up to three.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/space/bootstrap.hpp"
+#include "rt/stroke_request.hpp"
+#include "ui/panel/panel_audio.hpp"
+#include "ui/panel/plot_frame.hpp"
+
+namespace nibrig::ui::panel {
+
+// One tool as the view draws it.
+struct SceneTool {
+  ToolChoice choice;        // what plays when it is clicked
+  std::string label;        // "Crayon on office paper"
+  std::string kind;         // real | printed | commercial | predicted
+  bool judged = false;      // a stimulus of the judgments (else placed from its descriptors)
+  model::space::ConfidenceRegion region;  // mean = its place; no radii: no region known
+  std::vector<double> region_levels;      // the levels of region.radius
+  std::optional<double> mu;
+  std::vector<std::pair<std::string, double>> descriptors;
+};
+
+struct SpaceScene {
+  std::string title;  // where the space comes from, e.g. "SIMULATED observer" when it is
+  std::vector<std::string> axis_names;  // one per dimension
+  std::vector<SceneTool> tools;
+  std::vector<std::string> surfaces;  // the colour order
+};
+
+// How a stroke is chosen in the views that play tools.
+struct StrokeChoice {
+  int kind = 1;  // 0 constant speed, 1 the rig's sweep, 2 an artist's trajectory
+  float speed_mm_s = 100.0f;
+  float force_n = 2.2f;
+  std::string trajectory;
+  rt::StrokeRequest request() const;
+};
+// Its widgets; true when it changed.
+bool stroke_widgets(StrokeChoice& choice);
+
+class SpaceView {
+ public:
+  // `play` is called with one to three tools and the stroke when a person asks to hear them.
+  using Play = std::function<void(const std::vector<ToolChoice>&, const rt::StrokeRequest&)>;
+  SpaceView(SpaceScene scene, Play play);
+
+  void draw();
+  void set_scene(SpaceScene scene);
+  const SpaceScene& scene() const { return scene_; }
+  // For tests and the status line: the tool under the mouse, the chosen ones, the plot's mapping.
+  std::optional<std::size_t> hovered() const { return hovered_; }
+  const std::vector<std::size_t>& chosen() const { return chosen_; }
+  const std::optional<PlotFrame>& frame() const { return frame_; }
+  int axis_x() const { return axis_x_; }
+  int axis_y() const { return axis_y_; }
+  void set_axes(int x, int y);
+  StrokeChoice& stroke() { return stroke_; }
+  // Where tool i is drawn on the screen (after a draw()).
+  std::optional<ImVec2> screen_position(std::size_t tool) const;
+
+ private:
+  void draw_plot(ImVec2 size);
+  void draw_side();
+  void draw_tooltip(const SceneTool& tool) const;
+  ImU32 surface_colour(const std::string& surface, int alpha) const;
+
+  SpaceScene scene_;
+  Play play_;
+  int axis_x_ = 0, axis_y_ = 1;
+  std::optional<std::size_t> hovered_;
+  std::vector<std::size_t> chosen_;
+  std::optional<PlotFrame> frame_;
+  StrokeChoice stroke_;
+};
+
+}  // namespace nibrig::ui::panel
