@@ -61,6 +61,10 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
   }
   if (!setup_.space.empty()) load_space(setup_.space);
+  if (setup_.start_rig) {
+    rig_view_->choice().speedup = 8.0f;
+    rig_view_->start();
+  }
 }
 
 Panel::~Panel() = default;
@@ -79,8 +83,12 @@ void Panel::load_space(const std::filesystem::path& file) {
 void Panel::show(View view) { requested_ = view; }
 
 bool Panel::settled() const {
-  if (current_ == View::space) return !space_job_ && !audio_->making_sounds();
-  return true;
+  switch (current_) {
+    case View::space: return !space_job_ && !audio_->making_sounds();
+    case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
+    case View::devices: return devices_view_->listing().has_value();
+    default: return true;
+  }
 }
 
 void Panel::poll_jobs() {
@@ -102,6 +110,20 @@ void Panel::draw_menu() {
   ImGui::EndMenuBar();
 }
 
+std::string Panel::status_line() const {
+  const auto& audition = audio_->audition();
+  std::string device = "no device";
+  if (const auto info = audition.stream_info()) {
+    device = info->api + " " + info->device;
+    if (audition.output_status() == playback::OutputStatus::lost)
+      device += ": LOST (" + audition.last_problem() + "), looking for it";
+  }
+  std::string playing;
+  for (std::size_t i = 0; i < audio_->playing().size(); ++i)
+    playing += (i ? ", " : "") + std::string(1, static_cast<char>('A' + i)) + ": " + audio_->names()[i];
+  return device + " | " + (playing.empty() ? "nothing playing" : playing) + " | " + audio_->stroke_description();
+}
+
 void Panel::draw_status() {
   ImGui::Separator();
   if (space_job_) {
@@ -112,12 +134,7 @@ void Panel::draw_status() {
     ImGui::ProgressBar(static_cast<float>(audio_->making_progress()), {-1.0f, 0.0f}, audio_->making_message().c_str());
   const std::string& problem = !error_.empty() ? error_ : audio_->error();
   if (!problem.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", problem.c_str());
-  const auto& names = audio_->names();
-  std::string playing;
-  for (std::size_t i = 0; i < audio_->playing().size(); ++i)
-    playing += (i ? ", " : "") + std::string(1, static_cast<char>('A' + i)) + ": " + names[i];
-  ImGui::Text("%s | %s | %s", audio_->audition().playing_on_a_device() ? audio_->audition().stream_info()->device.c_str() : "no device",
-              playing.empty() ? "nothing playing" : playing.c_str(), audio_->stroke_description().c_str());
+  ImGui::TextUnformatted(status_line().c_str());
   if (audio_->playing().size() > 1) {
     for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
       ImGui::SameLine();

@@ -30,6 +30,7 @@ struct PanelSetup {
   std::filesystem::path space;    // empty: the default (computed on first start, then cached)
   std::filesystem::path forcing;  // empty: the default
   std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
+  bool start_rig = false;               // the rig view's run starts at once
 };
 
 class Panel {
@@ -44,6 +45,8 @@ class Panel {
   // True once nothing is loading in the background for the view shown (screenshots wait for it).
   bool settled() const;
   const std::string& error() const { return error_; }
+  // The status line under the views: the device and its state, what plays, the stroke.
+  std::string status_line() const;
 
   SpaceView& space_view() { return *space_view_; }
   PanelAudio& audio() { return *audio_; }

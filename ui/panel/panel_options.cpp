@@ -25,6 +25,9 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
   app.add_option("--height", o.height, "window height in pixels")->check(CLI::Range(240, 8192));
   app.add_option("--api", o.device_api, "audio API of the actuator (jack, alsa, pulse)");
   app.add_option("--device", o.device, "audio device of the actuator, by name");
+  app.add_flag("--start-rig", o.start_rig,
+               "start the rig view's live comparison at once (the simulated rig, 8 times real time); a "
+               "screenshot of the rig view is then taken half way through");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -36,6 +39,7 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
     return std::nullopt;
   }
   o.view = *view_named(view);
+  o.setup.start_rig = o.start_rig;
   if (!o.device_api.empty() || !o.device.empty()) o.setup.device = DeviceRequest{o.device_api, o.device, 1, 256};
   exit_code = 0;
   return o;

@@ -66,10 +66,11 @@ PanelWindow::~PanelWindow() {
 
 bool PanelWindow::should_close() const { return glfwWindowShouldClose(window_); }
 
-void PanelWindow::begin_frame() {
+void PanelWindow::begin_frame(const std::function<void(ImGuiIO&)>& input) {
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (input) input(ImGui::GetIO());
   ImGui::NewFrame();
 }
 

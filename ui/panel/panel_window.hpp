@@ -4,9 +4,11 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 struct GLFWwindow;
+struct ImGuiIO;
 
 namespace nibrig::ui::panel {
 
@@ -29,8 +31,10 @@ class PanelWindow {
   PanelWindow& operator=(const PanelWindow&) = delete;
 
   bool should_close() const;
-  // Polls events and starts an ImGui frame.
-  void begin_frame();
+  // Polls events and starts an ImGui frame. `input`, when given, may then change what the back end
+  // read from the window (mouse, keys) before ImGui sees it: scripted sessions and tests click
+  // through the real window this way.
+  void begin_frame(const std::function<void(ImGuiIO&)>& input = {});
   // Renders the frame; with `screenshot` non-empty, writes it there as a PNG first (throws naming
   // the file when it cannot be written). Then shows it.
   void end_frame(const std::filesystem::path& screenshot = {});

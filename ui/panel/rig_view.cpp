@@ -15,7 +15,9 @@ namespace nibrig::ui::panel {
 
 namespace {
 
-constexpr double kShownMaxHz = 1000.0;   // the waterfalls show the band people feel, up to 1 kHz
+// The waterfalls show the comparison's band (SpeedBinnedComparisonSettings: up to 500 Hz, where the
+// catalog's spectra end): above it the measured tool has nothing and the difference says nothing.
+constexpr double kShownMaxHz = 500.0;
 constexpr std::size_t kWaterfallRows = 480;  // 10 s at the analysis's 21 ms per row
 constexpr std::size_t kTraceFrames = 1000;   // 10 s of traces at 100 Hz
 constexpr float kLowDb = -60.0f, kHighDb = 20.0f;  // peak amplitude re 1 m/s²
@@ -233,7 +235,7 @@ void RigView::draw_waterfalls() {
   const float w = (avail.x - 40.0f) / 3.0f, h = std::max(120.0f, avail.y * 0.5f);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 at = ImGui::GetCursorScreenPos();
-  const char* titles[] = {"measured", "simulated", "simulated - measured (dB)"};
+  const char* titles[] = {"measured (time runs down)", "simulated", "simulated - measured, +-20 dB"};
   Waterfall* falls[] = {measured_.get(), simulated_.get(), difference_.get()};
   for (int i = 0; i < 3; ++i) {
     const ImVec2 min{at.x + i * (w + 20.0f), at.y + 18.0f}, max{min.x + w, min.y + h};
@@ -241,9 +243,11 @@ void RigView::draw_waterfalls() {
     if (falls[i]) falls[i]->draw(draw, min, max);
     else draw->AddRectFilled(min, max, IM_COL32(30, 30, 34, 255));
     draw->AddRect(min, max, IM_COL32(255, 255, 255, 90));
-    char label[48];
-    std::snprintf(label, sizeof label, "0 Hz%*s%.0f Hz", 10, "", shown_hz_.empty() ? kShownMaxHz : shown_hz_.back());
-    draw->AddText({min.x, max.y + 2.0f}, IM_COL32(200, 200, 200, 255), label);
+    char label[32];
+    std::snprintf(label, sizeof label, "%.0f Hz", shown_hz_.empty() ? kShownMaxHz : shown_hz_.back());
+    draw->AddText({min.x, max.y + 2.0f}, IM_COL32(200, 200, 200, 255), "0 Hz");
+    draw->AddText({max.x - ImGui::CalcTextSize(label).x, max.y + 2.0f}, IM_COL32(200, 200, 200, 255), label);
+    rects_[i] = {min, max};
   }
   ImGui::Dummy({avail.x, h + 40.0f});
 }

@@ -55,6 +55,8 @@ class RigView {
   void start();
   void stop();
   bool running() const { return job_ && !job_->done(); }
+  // Of the run going on (0 before the capture starts), or 1 after it.
+  double progress() const { return job_ ? job_->progress() : 1.0; }
   RigChoice& choice() { return choice_; }
   const std::string& error() const { return error_; }
   // For tests: the waterfalls (null before the first rows) and the last table.
@@ -63,6 +65,8 @@ class RigView {
   const Waterfall* difference() const { return difference_.get(); }
   const std::optional<rig::ComparisonTable>& table() const { return table_; }
   const std::vector<double>& shown_frequencies() const { return shown_hz_; }
+  // Where waterfall i (measured, simulated, difference) was last drawn on the screen.
+  std::pair<ImVec2, ImVec2> waterfall_rect(int i) const { return rects_[i]; }
   // Takes what the worker fed since the last frame (draw() calls it).
   void take_feed();
 
@@ -78,6 +82,7 @@ class RigView {
   std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
   std::unique_ptr<BackgroundJob<rig::ComparisonRun>> job_;
   std::unique_ptr<Waterfall> measured_, simulated_, difference_;
+  std::pair<ImVec2, ImVec2> rects_[3];
   std::vector<double> shown_hz_;  // the frequencies the waterfalls show (≤ 1 kHz)
   std::vector<float> speed_mm_s_, force_n_;
   std::optional<rig::ComparisonTable> table_;

@@ -63,6 +63,8 @@ class SpaceView {
   int axis_y() const { return axis_y_; }
   void set_axes(int x, int y);
   StrokeChoice& stroke() { return stroke_; }
+  // The colour tools on that surface are drawn in (alpha 0-255).
+  ImU32 surface_colour(const std::string& surface, int alpha) const;
   // Where tool i is drawn on the screen (after a draw()).
   std::optional<ImVec2> screen_position(std::size_t tool) const;
 
@@ -70,7 +72,6 @@ class SpaceView {
   void draw_plot(ImVec2 size);
   void draw_side();
   void draw_tooltip(const SceneTool& tool) const;
-  ImU32 surface_colour(const std::string& surface, int alpha) const;
 
   SpaceScene scene_;
   Play play_;

@@ -100,11 +100,13 @@ void Waterfall::upload() {
 }
 
 void Waterfall::draw(ImDrawList* draw, ImVec2 min, ImVec2 max) {
+  if (!glfwGetCurrentContext()) return;  // no window (the headless tests): nothing to draw into
   upload();
   // Row r spans v in [r, r+1) / rows; the newest (head − 1) ends at v = head / rows, drawn at the top.
   const float top = static_cast<float>(head_) / static_cast<float>(rows_);
+  // The bottom edge stops half a texel short of wrapping round to the newest row again.
   draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), min, max, {0.0f, top},
-                 {1.0f, top - 1.0f});
+                 {1.0f, top - 1.0f + 0.5f / static_cast<float>(rows_)});
 }
 
 }  // namespace nibrig::ui::panel

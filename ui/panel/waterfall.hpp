@@ -38,8 +38,8 @@ class Waterfall {
   // The colour of a bin in the row `age` rows older than the newest (0: the newest).
   Rgba colour_at(std::size_t age, std::size_t bin) const;
 
-  // Needs the window's OpenGL context: uploads what changed since the last draw, then draws the
-  // waterfall into [min, max] (newest row at the top).
+  // With the window's OpenGL context current: uploads what changed since the last draw, then draws
+  // the waterfall into [min, max] (newest row at the top). Without one, draws nothing.
   void draw(ImDrawList* draw, ImVec2 min, ImVec2 max);
 
  private:
