@@ -1,0 +1,100 @@
+// A scripted session in a real window with a real JACK server: the panel opens on the server's
+// device, a click on a tool's point makes its sound and plays it (an independent libjack client
+// records it), and when the server dies the panel says so and plays again once it is back.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+#include "tests/playback/jack_recorder.hpp"
+#include "tests/support/jack_server.hpp"
+#include "tests/ui/panel/test_space.hpp"
+#include "ui/panel/panel.hpp"
+#include "ui/panel/panel_window.hpp"
+
+namespace nibrig::ui::panel {
+namespace {
+
+using namespace std::chrono_literals;
+
+struct Session {
+  PanelWindow window;
+  Panel panel;
+  Session(const PanelSetup& setup) : window(hidden()), panel(setup) {}
+  static WindowSettings hidden() {
+    WindowSettings w;
+    w.visible = false;
+    w.vsync = false;
+    return w;
+  }
+  void frame(const std::function<void(ImGuiIO&)>& input = {}) {
+    window.begin_frame(input);
+    panel.draw();
+    window.end_frame();
+    std::this_thread::sleep_for(2ms);
+  }
+  // Frames until `done` (true) or the timeout (false).
+  bool frames_until(const std::function<bool()>& done, std::chrono::seconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (!done()) {
+      if (std::chrono::steady_clock::now() > deadline) return false;
+      frame();
+    }
+    return true;
+  }
+  void click(ImVec2 at) {
+    frame([&](ImGuiIO& io) { io.MousePos = at; });
+    frame([&](ImGuiIO& io) { io.MousePos = at, io.MouseDown[0] = true; });
+    frame([&](ImGuiIO& io) { io.MousePos = at, io.MouseDown[0] = false; });
+  }
+  // RMS of `frames` of the panel's output recorded by a bare libjack client, the panel drawing on.
+  double recorded_rms(std::size_t frames) {
+    playback::testing::JackRecorder ear("ear", 1, frames);
+    EXPECT_TRUE(ear.connect("nibrig-panel:outport 0", 0));
+    ear.start();
+    EXPECT_TRUE(frames_until([&] { return ear.recorded() >= frames; }, 30s)) << ear.recorded() << " recorded";
+    double sum = 0.0;
+    for (float s : ear.samples(0)) sum += double(s) * s;
+    return std::sqrt(sum / static_cast<double>(frames));
+  }
+};
+
+TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameBack) {
+  nibrig::testing::JackServer server;
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_playback";
+  std::filesystem::remove_all(dir);
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  setup.device = DeviceRequest{"jack", "system", 1, 64};
+  Session s(setup);
+  ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
+  ASSERT_TRUE(s.frames_until([&] { return s.panel.settled(); }, 60s));
+  EXPECT_EQ(s.panel.status_line().rfind("jack system | nothing playing", 0), 0u) << s.panel.status_line();
+  EXPECT_EQ(s.recorded_rms(4800), 0.0);  // nothing loaded: exact silence
+
+  // A click on cryon on office paper: its sound is made (the stylus meshed) and it plays the sweep.
+  s.click(*s.panel.space_view().screen_position(0));
+  ASSERT_TRUE(s.frames_until([&] { return !s.panel.audio().playing().empty(); }, 300s)) << s.panel.audio().error();
+  EXPECT_EQ(s.panel.audio().playing()[0], (ToolChoice{"cryon", "office"}));
+  EXPECT_NE(s.panel.status_line().find("A: cryon"), std::string::npos) << s.panel.status_line();
+  // The crayon's sweep at the default gain: well above 1e-3 of full scale (LiveAudition's test).
+  const double playing = s.recorded_rms(24000);
+  EXPECT_GT(playing, 1e-3);
+
+  // The server dies: the panel says the device is lost, and plays again when it is back.
+  server.kill();
+  ASSERT_TRUE(s.frames_until([&] { return s.panel.status_line().find("LOST") != std::string::npos; }, 20s))
+      << s.panel.status_line();
+  server.start();
+  ASSERT_TRUE(s.frames_until(
+      [&] { return s.panel.audio().audition().output_stats()->reconnects >= 1 &&
+                   s.panel.status_line().find("LOST") == std::string::npos; },
+      30s))
+      << s.panel.status_line();
+  EXPECT_GT(s.recorded_rms(24000), 1e-3);
+}
+
+}  // namespace
+}  // namespace nibrig::ui::panel
