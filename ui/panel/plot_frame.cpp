@@ -46,21 +46,31 @@ std::vector<double> nice_ticks(DataRange range, int target) {
   return ticks;
 }
 
-void draw_axes(ImDrawList* draw, const PlotFrame& frame, const std::string& x_name,
-               const std::string& y_name) {
-  const ImU32 grid = IM_COL32(255, 255, 255, 28), edge = IM_COL32(255, 255, 255, 110),
-              text = IM_COL32(220, 220, 220, 255);
+void draw_grid(ImDrawList* draw, const PlotFrame& frame) {
+  const ImU32 grid = IM_COL32(255, 255, 255, 28);
+  const ImVec2 o = frame.origin(), s = frame.size();
+  for (double t : nice_ticks(frame.x())) {
+    const float x = frame.to_screen(t, frame.y().min).x;
+    draw->AddLine({x, o.y}, {x, o.y + s.y}, grid);
+  }
+  for (double t : nice_ticks(frame.y())) {
+    const float y = frame.to_screen(frame.x().min, t).y;
+    draw->AddLine({o.x, y}, {o.x + s.x, y}, grid);
+  }
+}
+
+void draw_axis_labels(ImDrawList* draw, const PlotFrame& frame, const std::string& x_name,
+                      const std::string& y_name) {
+  const ImU32 edge = IM_COL32(255, 255, 255, 110), text = IM_COL32(220, 220, 220, 255);
   const ImVec2 o = frame.origin(), s = frame.size();
   char label[32];
   for (double t : nice_ticks(frame.x())) {
     const float x = frame.to_screen(t, frame.y().min).x;
-    draw->AddLine({x, o.y}, {x, o.y + s.y}, grid);
     std::snprintf(label, sizeof label, "%g", t);
     draw->AddText({x - 8.0f, o.y + s.y + 3.0f}, text, label);
   }
   for (double t : nice_ticks(frame.y())) {
     const float y = frame.to_screen(frame.x().min, t).y;
-    draw->AddLine({o.x, y}, {o.x + s.x, y}, grid);
     std::snprintf(label, sizeof label, "%g", t);
     draw->AddText({o.x - 8.0f * static_cast<float>(std::strlen(label)) - 6.0f, y - 7.0f}, text, label);
   }
@@ -68,6 +78,12 @@ void draw_axes(ImDrawList* draw, const PlotFrame& frame, const std::string& x_na
   draw->AddText({o.x + s.x * 0.5f - 4.0f * static_cast<float>(x_name.size()), o.y + s.y + 20.0f}, text,
                 x_name.c_str());
   draw->AddText({o.x + 4.0f, o.y - 18.0f}, text, y_name.c_str());
+}
+
+void draw_axes(ImDrawList* draw, const PlotFrame& frame, const std::string& x_name,
+               const std::string& y_name) {
+  draw_grid(draw, frame);
+  draw_axis_labels(draw, frame, x_name, y_name);
 }
 
 void draw_marker(ImDrawList* draw, ImVec2 at, Marker marker, float r, ImU32 colour, bool filled) {

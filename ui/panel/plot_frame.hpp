@@ -38,9 +38,13 @@ DataRange padded(double lo, double hi, double margin = 0.08);
 // Round tick values (1, 2, 5 × 10^k) inside the range, about `target` of them.
 std::vector<double> nice_ticks(DataRange range, int target = 6);
 
-// The frame, grid lines at the ticks, tick labels and the axis names.
+// The frame, grid lines at the ticks, tick labels and the axis names: draw_grid (inside the frame)
+// then draw_axis_labels (its outline and what is outside it).
 void draw_axes(ImDrawList* draw, const PlotFrame& frame, const std::string& x_name,
                const std::string& y_name);
+void draw_grid(ImDrawList* draw, const PlotFrame& frame);
+void draw_axis_labels(ImDrawList* draw, const PlotFrame& frame, const std::string& x_name,
+                      const std::string& y_name);
 
 enum class Marker { circle, square, triangle, diamond };
 void draw_marker(ImDrawList* draw, ImVec2 at, Marker marker, float radius, ImU32 colour, bool filled);
@@ -48,7 +52,7 @@ void draw_marker(ImDrawList* draw, ImVec2 at, Marker marker, float radius, ImU32
 // The ellipse of semi-axes a, b (data units) turned by `angle_rad` about (cx, cy), as a closed
 // polyline of `segments` points.
 void draw_ellipse(ImDrawList* draw, const PlotFrame& frame, double cx, double cy, double a, double b,
-                  double angle_rad, ImU32 colour, float thickness, int segments = 64);
+                  double angle_rad, ImU32 colour, float thickness, int segments = 32);
 
 // A polyline of (x[i], y[i]) clipped to the frame.
 void draw_trace(ImDrawList* draw, const PlotFrame& frame, const std::vector<double>& x,

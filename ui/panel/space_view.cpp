@@ -17,6 +17,8 @@ constexpr ImU32 kPalette[] = {IM_COL32(86, 180, 233, 255), IM_COL32(230, 159, 0,
                               IM_COL32(240, 228, 66, 255), IM_COL32(213, 94, 0, 255),
                               IM_COL32(0, 114, 178, 255),  IM_COL32(200, 200, 200, 255)};
 
+constexpr ImU32 kPlotBackground = IM_COL32(20, 20, 24, 255);
+
 Marker marker_of(const std::string& kind) {
   if (kind == "printed") return Marker::square;
   if (kind == "commercial") return Marker::triangle;
@@ -59,6 +61,7 @@ SpaceView::SpaceView(SpaceScene scene, Play play) : play_(std::move(play)) { set
 
 void SpaceView::set_scene(SpaceScene scene) {
   scene_ = std::move(scene);
+  ++generation_;
   const int dims = static_cast<int>(scene_.axis_names.size());
   axis_x_ = 0;
   axis_y_ = dims > 1 ? 1 : 0;
@@ -68,6 +71,7 @@ void SpaceView::set_scene(SpaceScene scene) {
 
 void SpaceView::set_axes(int x, int y) {
   const int dims = static_cast<int>(scene_.axis_names.size());
+  ++generation_;
   axis_x_ = std::clamp(x, 0, std::max(0, dims - 1));
   axis_y_ = std::clamp(y, 0, std::max(0, dims - 1));
 }
@@ -130,21 +134,26 @@ void SpaceView::draw_plot(ImVec2 size) {
     yr = {cy - per_px * plot.y / 2, cy + per_px * plot.y / 2};
   }
   frame_.emplace(origin, plot, xr, yr);
-  draw_axes(draw, *frame_, scene_.axis_names.empty() ? "" : scene_.axis_names[axis_x_],
-            one_d ? "" : scene_.axis_names[axis_y_]);
-
-  // The regions first (under every point), 95 % fainter than 68 %.
-  draw->PushClipRect(origin, {origin.x + plot.x, origin.y + plot.y}, true);
-  for (const auto& t : scene_.tools) {
-    if (t.region.radius.empty() || t.region.covariance.size() == 0) continue;
-    for (std::size_t k = 0; k < t.region.radius.size(); ++k) {
-      const auto e = model::space::plane_ellipse(t.region, k, axis_x_, one_d ? axis_x_ : axis_y_);
-      const int alpha = k == 0 ? 150 : 70;
-      draw_ellipse(draw, *frame_, coordinate(t, axis_x_), one_d ? 0.0 : coordinate(t, axis_y_), e.semi_axis_1,
-                   one_d ? 0.0 : e.semi_axis_2, e.angle_rad, surface_colour(t.choice.surface, alpha), 1.0f);
-    }
+  // The grid and the regions change only with the scene, the axes and the frame: painted once into
+  // a layer (cached_layer.hpp) when there is a window, else live.
+  const auto paint = [&](ImDrawList* layer) {
+    layer->AddRectFilled(origin, {origin.x + plot.x, origin.y + plot.y}, kPlotBackground);
+    draw_grid(layer, *frame_);
+    draw_regions(layer, one_d);
+  };
+  if (CachedLayer::available()) {
+    char inputs[160];
+    std::snprintf(inputs, sizeof inputs, "%llu %d %d %.17g %.17g %.17g %.17g",
+                  static_cast<unsigned long long>(generation_), axis_x_, axis_y_, xr.min, xr.max, yr.min, yr.max);
+    regions_.update(std::hash<std::string>{}(inputs), origin, plot, kPlotBackground, paint);
+    regions_.draw(draw);
+  } else {
+    draw->PushClipRect(origin, {origin.x + plot.x, origin.y + plot.y}, true);
+    paint(draw);
+    draw->PopClipRect();
   }
-  draw->PopClipRect();
+  draw_axis_labels(draw, *frame_, scene_.axis_names.empty() ? "" : scene_.axis_names[axis_x_],
+                   one_d ? "" : scene_.axis_names[axis_y_]);
 
   // Hover: the nearest point within 9 px.
   const ImVec2 mouse = ImGui::GetIO().MousePos;
@@ -197,6 +206,19 @@ void SpaceView::draw_plot(ImVec2 size) {
         for (std::size_t c : chosen_) tools.push_back(scene_.tools[c].choice);
         play_(tools, stroke_.request());
       }
+    }
+  }
+}
+
+void SpaceView::draw_regions(ImDrawList* draw, bool one_d) const {
+  // 95 % fainter than 68 %, under every point.
+  for (const auto& t : scene_.tools) {
+    if (t.region.radius.empty() || t.region.covariance.size() == 0) continue;
+    for (std::size_t k = 0; k < t.region.radius.size(); ++k) {
+      const auto e = model::space::plane_ellipse(t.region, k, axis_x_, one_d ? axis_x_ : axis_y_);
+      const int alpha = k == 0 ? 150 : 70;
+      draw_ellipse(draw, *frame_, coordinate(t, axis_x_), one_d ? 0.0 : coordinate(t, axis_y_), e.semi_axis_1,
+                   one_d ? 0.0 : e.semi_axis_2, e.angle_rad, surface_colour(t.choice.surface, alpha), 1.0f);
     }
   }
 }

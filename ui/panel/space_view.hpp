@@ -12,6 +12,7 @@
 #include "model/space/bootstrap.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/panel/panel_audio.hpp"
+#include "ui/panel/cached_layer.hpp"
 #include "ui/panel/plot_frame.hpp"
 
 namespace nibrig::ui::panel {
@@ -72,6 +73,7 @@ class SpaceView {
   void draw_plot(ImVec2 size);
   void draw_side();
   void draw_tooltip(const SceneTool& tool) const;
+  void draw_regions(ImDrawList* draw, bool one_d) const;
 
   SpaceScene scene_;
   Play play_;
@@ -80,6 +82,8 @@ class SpaceView {
   std::vector<std::size_t> chosen_;
   std::optional<PlotFrame> frame_;
   StrokeChoice stroke_;
+  CachedLayer regions_;
+  std::uint64_t generation_ = 0;  // bumped when the scene or the axes change
 };
 
 }  // namespace nibrig::ui::panel
