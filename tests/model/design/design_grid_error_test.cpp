@@ -1,8 +1,8 @@
 // The design-response grid against the real FEM, on the bundled catalog's forcing model: predict_tool
 // split in two gives what it gave whole, and the interpolation's error at cell centres is small
 // and shrinks when the grid is refined. The designs use 32 modes on a 4 mm mesh (as the held-out
-// tip test: |H| within ~1 % of the full template's) so that the 27 solves (0.3 s each here in Release, 12 s in all) stay well under a minute
-// under ASan; the grid's error at the panel's full resolution and default density is measured by
+// tip test: |H| within ~1 % of the full template's) so that the 27 solves (12 s in all in Release)
+// stay well under a minute under ASan; the grid's error at the panel's full resolution and default density is measured by
 // the benchmark DesignGridError (tests/bench/bench_design_grid.cpp).
 //
 // The space is the catalog's descriptors themselves (coordinates = μ and log10 weighted mean, as
