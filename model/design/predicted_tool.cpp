@@ -73,15 +73,19 @@ FrictionPrediction interpolated_friction(const io::Catalog& catalog, const Desig
   return friction;
 }
 
-PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& point,
-                           const std::string& surface, const mechanics::Design* own_design) {
+namespace {
+
+void require_setup(const PredictionSetup& setup) {
   if (setup.model == nullptr || setup.catalog == nullptr || setup.threshold == nullptr)
     throw std::invalid_argument("predict_tool: the setup needs a model, a catalog and a threshold");
+}
+
+// The cheap checks (a tip out of range, an unknown surface, no friction) and μ: run before the FEM
+// so that a bad request fails in milliseconds, not after a second of meshing.
+FrictionPrediction checked_friction(const PredictionSetup& setup, const DesignPoint& point,
+                                    const std::string& surface) {
+  require_setup(setup);
   const forcing::ForcingModel& model = *setup.model;
-  PredictedTool tool;
-  tool.point = point;
-  tool.surface = surface;
-  // The cheap checks first: a tip out of range or an unknown surface fails before the FEM.
   interpolated_log_gain(model, point, model.frequencies_hz);
   if (model.surface_forcing.count(surface) == 0) {
     std::string known;
@@ -90,25 +94,59 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
     throw std::invalid_argument("the forcing model has no surface '" + surface + "' (it has " +
                                 known + ")");
   }
-  const FrictionPrediction friction = interpolated_friction(*setup.catalog, point, surface);
+  return interpolated_friction(*setup.catalog, point, surface);
+}
+
+PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
+                       const std::string& surface, const FrictionPrediction& friction,
+                       SimulatedResponse response) {
+  PredictedTool tool;
+  tool.point = point;
+  tool.surface = surface;
   tool.mu = friction.mu;
   if (setup.descriptor_errors != nullptr)
     tool.descriptor_errors =
         friction.measured ? setup.descriptor_errors->without_friction() : *setup.descriptor_errors;
+  tool.design_name = std::move(response.design_name);
+  if (response.modal.size() == 0)
+    throw std::invalid_argument("predict_tool: the response of '" + tool.design_name +
+                                "' has no modes");
+  tool.first_mode_hz = response.modal.omega.front() / (2 * M_PI);
+  tool.modal = std::move(response.modal);
+  tool.response_magnitude = std::move(response.response_magnitude);
+  tool.spectrum = predict_spectrum(*setup.model, point, surface, tool.response_magnitude);
+  tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
+  return tool;
+}
 
+}  // namespace
+
+SimulatedResponse simulate_response(const PredictionSetup& setup, const DesignPoint& point,
+                                    const mechanics::Design* own_design) {
+  require_setup(setup);
   MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials}
                                  : mixed_design(point, setup.template_design, setup.materials);
   if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
   if (setup.modes > 0) mixed.design.modes = setup.modes;
   const mechanics::DesignModel built = mechanics::build_design_model(mixed.design, mixed.materials);
-  tool.design_name = mixed.design.name;
-  tool.first_mode_hz = built.modal.omega.front() / (2 * M_PI);
-  tool.modal = built.modal;
-  for (const auto& h : modal::frequency_response(built.modal, model.frequencies_hz))
-    tool.response_magnitude.push_back(std::abs(h));
-  tool.spectrum = predict_spectrum(model, point, surface, tool.response_magnitude);
-  tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
-  return tool;
+  SimulatedResponse response;
+  response.design_name = mixed.design.name;
+  response.modal = built.modal;
+  for (const auto& h : modal::frequency_response(built.modal, setup.model->frequencies_hz))
+    response.response_magnitude.push_back(std::abs(h));
+  return response;
+}
+
+PredictedTool predict_from_response(const PredictionSetup& setup, const DesignPoint& point,
+                                    const std::string& surface, SimulatedResponse response) {
+  const FrictionPrediction friction = checked_friction(setup, point, surface);
+  return assemble(setup, point, surface, friction, std::move(response));
+}
+
+PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& point,
+                           const std::string& surface, const mechanics::Design* own_design) {
+  const FrictionPrediction friction = checked_friction(setup, point, surface);
+  return assemble(setup, point, surface, friction, simulate_response(setup, point, own_design));
 }
 
 io::ToolEntry predicted_tool_entry(const PredictedTool& tool) {

@@ -85,6 +85,23 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
                            const std::string& surface,
                            const mechanics::Design* own_design = nullptr);
 
+// predict_tool in its two steps, for callers that get the stylus's response elsewhere (the
+// design-response grid interpolates it): the FEM step, about a second, and everything after it,
+// milliseconds. predict_tool(setup, p, s) equals predict_from_response(setup, p, s,
+// simulate_response(setup, p)) exactly.
+struct SimulatedResponse {
+  std::string design_name;
+  modal::ModalModel modal;                 // the design's modes
+  std::vector<double> response_magnitude;  // |H| at the model's frequencies
+};
+// Throws what mixed_design and build_design_model throw.
+SimulatedResponse simulate_response(const PredictionSetup& setup, const DesignPoint& point,
+                                    const mechanics::Design* own_design = nullptr);
+// Throws like predict_tool's cheap checks (tip out of range, unknown surface or material, no
+// friction) and for a response of the wrong length.
+PredictedTool predict_from_response(const PredictionSetup& setup, const DesignPoint& point,
+                                    const std::string& surface, SimulatedResponse response);
+
 // The catalog entries of a predicted tool (kind "predicted", id "pred:<point>"), so that it is
 // described and placed like any measured tool.
 io::ToolEntry predicted_tool_entry(const PredictedTool& tool);

@@ -44,10 +44,10 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
           in->catalog_file.string());
   }
   auto& setup = in->setup;
-  setup.materials = mechanics::read_material_table(
-      io::or_default(options.materials, io::default_materials));
-  setup.template_design = mechanics::read_design(
-      io::or_default(options.design_template, io::default_stylus_design), setup.materials);
+  in->materials_file = io::or_default(options.materials, io::default_materials);
+  in->design_template_file = io::or_default(options.design_template, io::default_stylus_design);
+  setup.materials = mechanics::read_material_table(in->materials_file);
+  setup.template_design = mechanics::read_design(in->design_template_file, setup.materials);
   setup.model = &in->model;
   setup.catalog = &in->catalog;
   setup.threshold = &*in->threshold;

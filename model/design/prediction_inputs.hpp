@@ -18,6 +18,9 @@ namespace nibrig::model::design {
 
 struct PredictionInputs {
   std::filesystem::path catalog_file;
+  // The files setup's template and materials were read from: a cached result that depends on them
+  // (the design-response grid) is keyed by their content.
+  std::filesystem::path design_template_file, materials_file;
   io::Catalog catalog;
   forcing::ForcingModel model;
   std::optional<measure::ThresholdCurve> threshold;

@@ -73,12 +73,13 @@ PredictedTool ToolSounds::predict(const std::string& point, const std::string& s
   return predict_tool(state_->prediction->setup, design, surface);
 }
 
+ToolSound predicted_sound(PredictedTool p) {
+  return {"predicted " + label(p.point) + " on " + p.surface, p.design_name, std::move(p.modal),
+          std::move(p.spectrum)};
+}
+
 ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {
-  if (names_design_point(tool)) {
-    PredictedTool p = predict(tool, surface);
-    return {"predicted " + label(p.point) + " on " + p.surface, p.design_name, std::move(p.modal),
-            std::move(p.spectrum)};
-  }
+  if (names_design_point(tool)) return predicted_sound(predict(tool, surface));
   const io::VelocitySpectrum& spectrum =
       pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
   if (!state_->stylus) {

@@ -25,6 +25,10 @@ struct ToolSound {
   io::VelocitySpectrum spectrum;
 };
 
+// What a voice plays for a predicted design: its modes and predicted spectrum, named "predicted
+// <point> on <surface>". The one naming for a full prediction and for one from the design grid.
+ToolSound predicted_sound(PredictedTool tool);
+
 // Whether `tool` is a design point to predict ("...tip=2mm") rather than a catalog id.
 bool names_design_point(const std::string& tool);
 

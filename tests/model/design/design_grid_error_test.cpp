@@ -1,0 +1,170 @@
+// The design-response grid against the real FEM, on the bundled catalog's forcing model: predict_tool
+// split in two gives what it gave whole, and the interpolation's error at cell centres is small
+// and shrinks when the grid is refined. The designs use 32 modes on a 4 mm mesh (as the held-out
+// tip test: |H| within ~1 % of the full template's) so that the 27 solves (12 s in all in Release)
+// stay well under a minute under ASan; the grid's error at the panel's full resolution and default density is measured by
+// the benchmark DesignGridError (tests/bench/bench_design_grid.cpp).
+//
+// The space is the catalog's descriptors themselves (coordinates = μ and log10 weighted mean, as
+// in bench_design): a placement error in it is a descriptor error in descriptor units, so the
+// bound on it is the same argument as on the descriptors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "model/design/descriptor_uncertainty.hpp"
+#include "model/design/design_grid_error.hpp"
+#include "model/design/design_response_grid.hpp"
+#include "model/forcing/catalog_exemplars.hpp"
+#include "model/forcing/leave_one_out.hpp"
+#include "model/forcing/forcing_fit.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/mechanics/material_table.hpp"
+#include "model/mechanics/stylus_description.hpp"
+#include "model/space/catalog_descriptors.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::design {
+namespace {
+
+constexpr double kMeshSize = 0.004;
+constexpr int kModes = 32;
+
+struct RealSetup {
+  io::Catalog catalog;
+  forcing::ForcingModel model;
+  measure::ThresholdCurve threshold;
+  DescriptorErrorCovariance errors;
+  PredictionSetup setup;
+};
+
+const RealSetup& real() {
+  static const RealSetup r = [] {
+    const auto assets = test::assets_dir();
+    RealSetup s{io::read_catalog(assets / "default_catalog.json"),
+                {},
+                measure::ThresholdCurve::load(assets / "thresholds" / "israr2006_pen_hold.csv"),
+                {},
+                {}};
+    s.setup.materials = mechanics::read_material_table(assets / "materials.json");
+    s.setup.template_design =
+        mechanics::read_design(assets / "designs" / "stylus_vero_tip2mm.json", s.setup.materials);
+    auto exemplars = forcing::select_printed_exemplars(s.catalog).exemplars;
+    forcing::attach_responses(exemplars, s.setup.template_design, s.setup.materials,
+                              {kMeshSize, kModes});
+    s.model = forcing::fit_forcing_model(exemplars);
+    s.errors = descriptor_error_covariance(
+        forcing::held_out_descriptor_errors(exemplars, s.threshold),
+        friction_interpolation_errors(s.catalog));
+    s.setup.mesh_size = kMeshSize;
+    s.setup.modes = kModes;
+    return s;
+  }();
+  return r;
+}
+
+// The setup's pointers are set here, into the static RealSetup, which never moves.
+PredictionSetup setup_of(const RealSetup& r) {
+  PredictionSetup setup = r.setup;
+  setup.model = &r.model;
+  setup.catalog = &r.catalog;
+  setup.threshold = &r.threshold;
+  setup.descriptor_errors = &r.errors;
+  return setup;
+}
+
+// vero–DM85, λ ∈ {0, 0.5, 1} × tip ∈ {1, 2.5, 4} mm.
+const DesignResponseGrid& real_grid() {
+  static const DesignResponseGrid grid = [] {
+    std::size_t calls = 0, last_total = 0;
+    auto g = compute_design_response_grid(
+        setup_of(real()), GridAxes{"vero", "DM85", {0.0, 0.5, 1.0}, {0.001, 0.0025, 0.004}},
+        [&](std::size_t done, std::size_t total) {
+          ++calls;
+          EXPECT_EQ(done, calls);
+          last_total = total;
+        });
+    EXPECT_EQ(calls, 9u);  // one call per node, counted in order
+    EXPECT_EQ(last_total, 9u);
+    return *g;
+  }();
+  return grid;
+}
+
+space::DescriptorMap descriptor_space(const io::Catalog& catalog) {
+  const auto table = space::descriptors_of_catalog(catalog, "bundled catalog", 2);
+  Eigen::MatrixXd coordinates = table.values.transpose();
+  // A little scatter so that the map's residual covariance is not singular.
+  for (Eigen::Index i = 0; i < coordinates.cols(); ++i) coordinates(0, i) += 0.01 * (i % 3);
+  return space::fit_descriptor_map(coordinates, table.values, table.names);
+}
+
+TEST(DesignGridFem, PredictToolInTwoStepsIsPredictToolWhole) {
+  const PredictionSetup setup = setup_of(real());
+  const DesignPoint point = grid_point(real_grid().axes, 0.5, 0.0025);
+  const PredictedTool whole = predict_tool(setup, point, "office");
+  // The grid's node at this point was solved by simulate_response: the same FEM, deterministic.
+  const PredictedTool split =
+      predict_from_response(setup, point, "office", real_grid().node(1, 1));
+  EXPECT_EQ(split.response_magnitude, whole.response_magnitude);
+  EXPECT_EQ(split.modal.omega, whole.modal.omega);
+  EXPECT_EQ(split.spectrum.amplitude_m_s2, whole.spectrum.amplitude_m_s2);
+  EXPECT_EQ(split.vibration.weighted_mean, whole.vibration.weighted_mean);
+  EXPECT_EQ(split.mu, whole.mu);
+  EXPECT_EQ(split.design_name, whole.design_name);
+  EXPECT_EQ(split.descriptor_errors.covariance, whole.descriptor_errors.covariance);
+}
+
+TEST(DesignGridFem, InterpolationErrorAtCellCentresIsSmallAndShrinksAsTheGridRefines) {
+  const PredictionSetup setup = setup_of(real());
+  const DesignResponseGrid& fine = real_grid();
+  const space::DescriptorMap map = descriptor_space(real().catalog);
+  const GridError error = measure_grid_error(setup, fine, "office", 2, &map);
+  ASSERT_EQ(error.cells.size(), 4u);
+  for (const auto& c : error.cells)
+    std::printf(
+        "cell centre λ %.2f tip %.2f mm: |H| %.3f dB rms (%.2f max), modes' |H| %.3f dB rms, "
+        "ω1 %+.2e, Δμ %+.1e Δlog10 wm %+.1e, placement %.2e (sd %.3f)\n",
+        c.fraction, c.tip_m * 1e3, c.response_rms_db, c.response_max_db, c.modal_response_rms_db,
+        c.first_mode_error, c.descriptor_error[0], c.descriptor_error[1], c.placement_distance,
+        c.placement_sd);
+  ASSERT_EQ(error.cross_validated_sd.size(), 2u);
+  std::printf("worst: |H| %.3f dB rms, log10 wm %.2e against a cross-validated sd of %.3f\n",
+              error.response_rms_db, error.descriptor_error[1], error.cross_validated_sd[1]);
+
+  // μ is not interpolated through the grid at all: both paths take it from the catalog.
+  EXPECT_EQ(error.descriptor_error[0], 0.0);
+  // The bound: a tenth of the predictions' own cross-validated error of the weighted mean (the
+  // descriptor the 2-D space follows). An interpolation error that small adds 0.5 % to the
+  // prediction's variance: no listener could tell the grid's point from the FEM's.
+  EXPECT_LT(error.descriptor_error[1], 0.1 * error.cross_validated_sd[1]);
+  // In the space the same tenth, of the placement's own uncertainty.
+  EXPECT_LT(error.placement_distance, 0.1 * error.placement_sd);
+  // |H|: under 1 dB rms, less than half the 2.3 dB by which two measurements of one print differ.
+  EXPECT_LT(error.response_rms_db, 1.0);
+
+  // The coarse grid of the fine one's corners (steps twice as long), at the same cell centres: the
+  // error must shrink where the response is smooth in (λ, tip), bilinear interpolation's error
+  // going as the step squared. Compared on the mean over the four centres, in dB rms of |H|.
+  DesignResponseGrid coarse = fine;
+  coarse.axes.fractions = {0.0, 1.0};
+  coarse.axes.tips_m = {0.001, 0.004};
+  coarse.nodes = {fine.node(0, 0), fine.node(0, 2), fine.node(2, 0), fine.node(2, 2)};
+  std::vector<std::pair<double, double>> centres;
+  for (const auto& c : error.cells) centres.emplace_back(c.fraction, c.tip_m);
+  const GridError coarse_error = measure_grid_error_at(setup, coarse, centres, "office", 2, &map);
+  double fine_mean = 0, coarse_mean = 0;
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    fine_mean += error.cells[k].response_rms_db / centres.size();
+    coarse_mean += coarse_error.cells[k].response_rms_db / centres.size();
+  }
+  std::printf("mean |H| error at the 3×3 grid's cell centres: %.3f dB rms; from its corners alone "
+              "(2×2): %.3f dB rms; weighted mean %.2e vs %.2e\n",
+              fine_mean, coarse_mean, error.descriptor_error[1], coarse_error.descriptor_error[1]);
+  EXPECT_LT(fine_mean, coarse_mean);
+  EXPECT_LT(error.descriptor_error[1], coarse_error.descriptor_error[1]);
+}
+
+}  // namespace
+}  // namespace nibrig::model::design
