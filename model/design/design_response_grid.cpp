@@ -291,4 +291,16 @@ PredictedTool predict_from_grid(const PredictionSetup& setup, const DesignRespon
   return predict_from_response(setup, point, surface, std::move(response));
 }
 
+std::function<PredictedTool(const DesignPoint&)> grid_predictor(const PredictionSetup& setup,
+                                                                const DesignResponseGrid& grid,
+                                                                const std::string& surface) {
+  return [&setup, &grid, surface](const DesignPoint& point) {
+    for (const auto& share : point.mix)
+      if (share.fraction > 0 && share.material != grid.axes.material_a && share.material != grid.axes.material_b)
+        throw std::invalid_argument("design " + to_string(point) + ": the grid mixes only " + grid.axes.material_a +
+                                    " and " + grid.axes.material_b + ", not " + share.material);
+    return predict_from_grid(setup, grid, point.fraction_of(grid.axes.material_b), point.tip_diameter_m, surface);
+  };
+}
+
 }  // namespace nibrig::model::design

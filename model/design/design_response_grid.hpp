@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -110,5 +111,12 @@ SimulatedResponse interpolate_response(const DesignResponseGrid& grid, double fr
 // frequencies are not the setup's forcing model's (a grid of another model).
 PredictedTool predict_from_grid(const PredictionSetup& setup, const DesignResponseGrid& grid,
                                 double fraction, double tip_m, const std::string& surface);
+
+// predict_from_grid as a predictor of design points (design_search.hpp's Predict): the point's
+// fraction of the grid's material_b and its tip. Throws std::invalid_argument for a point with a
+// material the grid does not mix (naming it), and as predict_from_grid does.
+std::function<PredictedTool(const DesignPoint&)> grid_predictor(const PredictionSetup& setup,
+                                                                const DesignResponseGrid& grid,
+                                                                const std::string& surface);
 
 }  // namespace nibrig::model::design

@@ -94,8 +94,15 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
 Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,
                             const space::DescriptorMap& map, const space::Placement& target,
                             int samples, std::uint64_t seed) {
-  return [setup, surface, map, target, samples, seed](const DesignPoint& point) {
-    const PredictedTool tool = predict_tool(setup, point, surface);
+  return distance_to_target(
+      [setup, surface](const DesignPoint& point) { return predict_tool(setup, point, surface); }, map,
+      target, samples, seed);
+}
+
+Evaluate distance_to_target(Predict predict, const space::DescriptorMap& map,
+                            const space::Placement& target, int samples, std::uint64_t seed) {
+  return [predict = std::move(predict), map, target, samples, seed](const DesignPoint& point) {
+    const PredictedTool tool = predict(point);
     Candidate c;
     c.point = point;
     c.placement = place_predicted(map, tool);

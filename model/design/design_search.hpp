@@ -50,6 +50,12 @@ using SearchProgress =
 Evaluate distance_to_target(const PredictionSetup& setup, const std::string& surface,
                             const space::DescriptorMap& map, const space::Placement& target,
                             int samples = 2000, std::uint64_t seed = 1);
+// The same with another predictor: a design-response grid's interpolation (grid_predictor in
+// design_response_grid.hpp, milliseconds a candidate) where the above solves the FEM (a second).
+using Predict = std::function<PredictedTool(const DesignPoint&)>;
+Evaluate distance_to_target(Predict predict, const space::DescriptorMap& map,
+                            const space::Placement& target, int samples = 2000,
+                            std::uint64_t seed = 1);
 
 struct SearchResult {
   std::vector<Candidate> evaluated;  // in the order evaluated: the path

@@ -10,11 +10,13 @@
 // bound on it is the same argument as on the descriptors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_grid_error.hpp"
+#include "model/design/design_search.hpp"
 #include "model/design/design_response_grid.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
 #include "model/forcing/leave_one_out.hpp"
@@ -164,6 +166,42 @@ TEST(DesignGridFem, InterpolationErrorAtCellCentresIsSmallAndShrinksAsTheGridRef
               fine_mean, coarse_mean, error.descriptor_error[1], coarse_error.descriptor_error[1]);
   EXPECT_LT(fine_mean, coarse_mean);
   EXPECT_LT(error.descriptor_error[1], coarse_error.descriptor_error[1]);
+}
+
+}  // namespace
+}  // namespace nibrig::model::design
+
+namespace nibrig::model::design {
+namespace {
+
+// A search through the grid's predictor: at the grid's nodes (FEM-solved) a candidate is the FEM
+// search's candidate; between them it is within the interpolation's error of it. The target is
+// the catalog's vero4 on office, placed in the descriptor space.
+TEST(DesignGridFem, ASearchThroughTheGridEvaluatesNodesAsTheFemSearchDoes) {
+  const PredictionSetup setup = setup_of(real());
+  const space::DescriptorMap map = descriptor_space(real().catalog);
+  const auto table = space::descriptors_of_catalog(real().catalog, "bundled catalog", 2);
+  const auto row = std::find(table.rows.begin(), table.rows.end(), "vero4/office") - table.rows.begin();
+  ASSERT_LT(static_cast<std::size_t>(row), table.rows.size());
+  const space::Placement target = space::place_from_descriptors(map, table.values.row(row).transpose());
+  const Evaluate on_grid = distance_to_target(grid_predictor(setup, real_grid(), "office"), map, target, 500);
+  const Evaluate by_fem = distance_to_target(setup, "office", map, target, 500);
+  const DesignPoint node = grid_point(real_grid().axes, 0.5, 0.0025);
+  const Candidate a = on_grid(node), b = by_fem(node);
+  EXPECT_NEAR(a.distance, b.distance, 1e-12);  // the same FEM response at a node
+  EXPECT_NEAR(a.mu, b.mu, 1e-12);
+  // A design mixing a material the grid does not hold is refused by name.
+  try {
+    on_grid(parse_design_point("vero:0.5,steel:0.5,tip=2mm"));
+    FAIL() << "a material outside the grid was predicted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("steel"), std::string::npos) << e.what();
+  }
+  // The whole line search along the mix at 2.5 mm through the grid, milliseconds a candidate.
+  const SearchResult line = line_search(grid_point(real_grid().axes, 0.0, 0.0025),
+                                        grid_point(real_grid().axes, 1.0, 0.0025), on_grid);
+  EXPECT_GE(line.evaluated.size(), 9u);
+  EXPECT_TRUE(std::isfinite(line.best().distance));
 }
 
 }  // namespace
