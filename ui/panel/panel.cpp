@@ -55,6 +55,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   });
   rig_view_ = std::make_unique<RigView>(setup_.catalog, setup_.forcing, sessions_folder());
   pad_view_ = std::make_unique<PadView>(*audio_);
+  design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);
   if (setup_.device) {
     devices_view_->request() = *setup_.device;
@@ -67,16 +68,20 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   }
 }
 
-Panel::~Panel() = default;
+Panel::~Panel() {
+  // The views that play stop using the audio before it goes.
+  design_view_.reset();
+  pad_view_.reset();
+}
 
 void Panel::load_space(const std::filesystem::path& file) {
   const auto catalog_file = model::io::or_default(setup_.catalog, model::io::default_catalog);
-  space_job_ = std::make_unique<BackgroundJob<SpaceScene>>(
+  space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "loading the space", [file, catalog_file](JobControl& control) {
         control.message("reading " + file.string());
         const auto catalog = model::io::read_catalog(catalog_file);
         const auto space = model::space::read_space_file(file);
-        return scene_of(space, catalog, catalog_file, "space " + file.string());
+        return LoadedSpace{scene_of(space, catalog, catalog_file, "space " + file.string()), space.descriptor_map};
       });
 }
 
@@ -87,6 +92,7 @@ bool Panel::settled() const {
     case View::space: return !space_job_ && !audio_->making_sounds();
     case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
     case View::devices: return devices_view_->listing().has_value();
+    case View::design: return !space_job_ && design_view_->ready() && !design_view_->measuring_error();
     default: return true;
   }
 }
@@ -94,8 +100,12 @@ bool Panel::settled() const {
 void Panel::poll_jobs() {
   audio_->poll();
   if (space_job_ && space_job_->done()) {
-    if (auto scene = space_job_->take_result()) space_view_->set_scene(std::move(*scene));
-    else error_ = space_job_->error();
+    if (auto loaded = space_job_->take_result()) {
+      design_view_->set_space(loaded->scene, loaded->map);
+      space_view_->set_scene(std::move(loaded->scene));
+    } else {
+      error_ = space_job_->error();
+    }
     space_job_.reset();
   }
 }
@@ -162,7 +172,7 @@ void Panel::draw() {
         ImGui::BeginChild("view", {0.0f, -status_height});
         switch (v) {
           case View::space: space_view_->draw(); break;
-          case View::design: ImGui::TextWrapped("The design view is being built."); break;
+          case View::design: design_view_->draw(); break;
           case View::rig: rig_view_->draw(); break;
           case View::pad: pad_view_->draw(); break;
           case View::devices: devices_view_->draw(); break;

@@ -10,7 +10,9 @@
 #include <string>
 #include <string_view>
 
+#include "model/space/descriptor_map.hpp"
 #include "ui/panel/background_job.hpp"
+#include "ui/panel/design_view.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/space_view.hpp"
 
@@ -19,7 +21,6 @@ namespace nibrig::ui::panel {
 class RigView;
 class PadView;
 class DevicesView;
-class DesignView;
 
 enum class View { space, design, rig, pad, devices };
 std::optional<View> view_named(std::string_view name);
@@ -31,6 +32,7 @@ struct PanelSetup {
   std::filesystem::path forcing;  // empty: the default
   std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
   bool start_rig = false;               // the rig view's run starts at once
+  DesignSettings design;                // how finely the design view solves its grid
 };
 
 class Panel {
@@ -51,6 +53,7 @@ class Panel {
   SpaceView& space_view() { return *space_view_; }
   PanelAudio& audio() { return *audio_; }
   RigView& rig_view() { return *rig_view_; }
+  DesignView& design_view() { return *design_view_; }
   PadView& pad_view() { return *pad_view_; }
   DevicesView& devices_view() { return *devices_view_; }
 
@@ -66,7 +69,12 @@ class Panel {
   std::unique_ptr<RigView> rig_view_;
   std::unique_ptr<PadView> pad_view_;
   std::unique_ptr<DevicesView> devices_view_;
-  std::unique_ptr<BackgroundJob<SpaceScene>> space_job_;
+  struct LoadedSpace {
+    SpaceScene scene;
+    std::optional<model::space::DescriptorMap> map;
+  };
+  std::unique_ptr<BackgroundJob<LoadedSpace>> space_job_;
+  std::unique_ptr<DesignView> design_view_;
   View current_ = View::space;
   std::optional<View> requested_;
   std::string error_;

@@ -107,6 +107,23 @@ void PanelAudio::poll() {
   }
 }
 
+void PanelAudio::play_now(const model::design::ToolSound& sound, const rt::StrokeRequest& stroke) {
+  try {
+    const bool moving = !playing_.empty() || stroke_description_ == "the pad";
+    audition_.load(0, {sound.name, sound.modal, sound.spectrum}, seed_);
+    if (audition_.selected() != 0) audition_.select(0);
+    if (!moving) {
+      rt::Stroke s = rt::make_stroke(stroke);
+      stroke_description_ = s.description;
+      audition_.attach(std::move(s.source));
+    }
+    playing_ = {ToolChoice{sound.name, ""}};
+    error_.clear();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
 void PanelAudio::select(std::size_t slot) {
   if (slot >= playing_.size()) return;
   try {

@@ -46,6 +46,10 @@ class PanelAudio {
   // Plays these one to three tools (slot i = tools[i], the first selected) with `stroke`: their
   // sounds are made in the background and loaded when ready (poll()).
   void play(const std::vector<ToolChoice>& tools, const rt::StrokeRequest& stroke);
+  // Plays `sound` at once in slot 0 (built here: about a millisecond), crossfaded from what played;
+  // the stroke keeps running, or `stroke` starts when nothing was moving the engine. The design
+  // view's path: its sounds come from the design-response grid, not from ToolSounds.
+  void play_now(const model::design::ToolSound& sound, const rt::StrokeRequest& stroke);
   // Switches to slot i of what is playing (A/B, triplet).
   void select(std::size_t slot);
   // A live contact (the pad): replaces the stroke until play() attaches one again.

@@ -3,6 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <vector>
+
+#include "ui/cli/number_checks.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -20,9 +23,25 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
   app.add_option("--view", view, "the view shown first (space, design, rig, pad, devices)")
       ->check(CLI::IsMember({"space", "design", "rig", "pad", "devices"}));
   app.add_option("--frames", o.frames, "frames drawn before the screenshot, once the view has loaded")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--size", o.width, "window width in pixels")->check(CLI::Range(320, 8192));
-  app.add_option("--height", o.height, "window height in pixels")->check(CLI::Range(240, 8192));
+      ->check(cli::whole_in_range(1, 100000, "frames"));
+  app.add_option("--settle-timeout", o.settle_timeout_s,
+                 "longest wait, in seconds, for the view's background work before the screenshot "
+                 "(the design grid solves for about 30 s the first time); 0: do not wait")
+      ->check(cli::in_range(0.0, 86400.0, "seconds"));
+  std::vector<long long> grid;
+  app.add_option("--design-grid", grid,
+                 "designs the design view solves: mix points and tip points (default 5,7); fewer solve "
+                 "faster, with a larger interpolation error (the view measures it)")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(cli::whole_in_range(2, 50, "points"));
+  app.add_option("--design-mesh", o.setup.design.mesh_size_m,
+                 "element size the design view meshes its styli with, in metres (default: the bundled stylus's)")
+      ->check(cli::in_range(0.0005, 0.01, "metres"));
+  app.add_option("--design-modes", o.setup.design.modes, "modes the design view solves (default: the bundled stylus's)")
+      ->check(cli::whole_in_range(4, 256, "modes"));
+  app.add_option("--size", o.width, "window width in pixels")->check(cli::whole_in_range(320, 8192, "pixels"));
+  app.add_option("--height", o.height, "window height in pixels")->check(cli::whole_in_range(240, 8192, "pixels"));
   app.add_option("--api", o.device_api, "audio API of the actuator (jack, alsa, pulse)");
   app.add_option("--device", o.device, "audio device of the actuator, by name");
   app.add_flag("--start-rig", o.start_rig,
@@ -39,6 +58,10 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
     return std::nullopt;
   }
   o.view = *view_named(view);
+  if (grid.size() == 2) {
+    o.setup.design.fraction_points = static_cast<std::size_t>(grid[0]);
+    o.setup.design.tip_points = static_cast<std::size_t>(grid[1]);
+  }
   o.setup.start_rig = o.start_rig;
   if (!o.device_api.empty() || !o.device.empty()) o.setup.device = DeviceRequest{o.device_api, o.device, 1, 256};
   exit_code = 0;

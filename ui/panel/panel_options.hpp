@@ -16,7 +16,7 @@ struct PanelOptions {
   std::filesystem::path screenshot;  // non-empty: render, write, exit
   View view = View::space;
   int frames = 10;          // frames drawn (after the view settled) before the screenshot
-  double settle_timeout_s = 600.0;  // longest wait for the view's background work
+  double settle_timeout_s = 900.0;  // longest wait for the view's background work
   int width = 1280, height = 800;
   std::string device_api, device;  // opened at start when either is given
   bool start_rig = false;          // the rig view's run starts at once (the simulated rig)

@@ -91,10 +91,12 @@ std::optional<ImVec2> SpaceView::screen_position(std::size_t tool) const {
 
 void SpaceView::draw() {
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const float side = std::min(340.0f, avail.x * 0.35f);
-  ImGui::BeginChild("space-plot", {avail.x - side - 8.0f, avail.y}, false, ImGuiWindowFlags_NoScrollWithMouse);
+  const float side = side_panel_ ? std::min(340.0f, avail.x * 0.35f) : 0.0f;
+  ImGui::BeginChild("space-plot", {avail.x - side - (side_panel_ ? 8.0f : 0.0f), avail.y}, false,
+                    ImGuiWindowFlags_NoScrollWithMouse);
   draw_plot(ImGui::GetContentRegionAvail());
   ImGui::EndChild();
+  if (!side_panel_) return;
   ImGui::SameLine();
   ImGui::BeginChild("space-side", {side, avail.y});
   draw_side();
@@ -176,6 +178,11 @@ void SpaceView::draw_plot(ImVec2 size) {
       draw->AddText({p.x + 10.0f, p.y - 18.0f}, IM_COL32(255, 255, 255, 255), letter);
     }
   }
+  if (overlay_) {
+    draw->PushClipRect(origin, {origin.x + plot.x, origin.y + plot.y}, true);
+    overlay_(draw, *frame_, axis_x_, one_d ? axis_x_ : axis_y_);
+    draw->PopClipRect();
+  }
   // The legend: surfaces by colour, kinds by marker.
   float ly = origin.y + 6.0f;
   for (const auto& s : scene_.surfaces) {
@@ -242,7 +249,7 @@ void SpaceView::draw_side() {
   }
   section("Play");
   stroke_widgets(stroke_);
-  ImGui::TextWrapped("Click a tool to feel it; shift-click to compare up to three (A, B, C).");
+  ImGui::TextWrapped("%s", hint_.c_str());
   for (std::size_t k = 0; k < chosen_.size(); ++k)
     ImGui::BulletText("%c: %s", static_cast<char>('A' + k), scene_.tools[chosen_[k]].label.c_str());
   if (!chosen_.empty() && ImGui::Button("Play again") && play_) {

@@ -55,6 +55,14 @@ class SpaceView {
 
   void draw();
   void set_scene(SpaceScene scene);
+  // Drawn over the tools each frame (the design view's design point, its regions and its search
+  // path), with the plot's mapping and the axes shown.
+  using Overlay = std::function<void(ImDrawList*, const PlotFrame&, int axis_x, int axis_y)>;
+  void set_overlay(Overlay overlay) { overlay_ = std::move(overlay); }
+  // Without its side panel (axes, stroke, chosen tools): the design view has its own controls.
+  void set_side_panel(bool shown) { side_panel_ = shown; }
+  // The hint under "Play" (what a click does in this view).
+  void set_hint(std::string hint) { hint_ = std::move(hint); }
   const SpaceScene& scene() const { return scene_; }
   // For tests and the status line: the tool under the mouse, the chosen ones, the plot's mapping.
   std::optional<std::size_t> hovered() const { return hovered_; }
@@ -83,6 +91,9 @@ class SpaceView {
   std::optional<PlotFrame> frame_;
   StrokeChoice stroke_;
   CachedLayer regions_;
+  Overlay overlay_;
+  bool side_panel_ = true;
+  std::string hint_ = "Click a tool to feel it; shift-click to compare up to three (A, B, C).";
   std::uint64_t generation_ = 0;  // bumped when the scene or the axes change
 };
 

@@ -1,0 +1,274 @@
+#include "ui/panel/design_view.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "model/design/design_grid_file.hpp"
+#include "model/design/tool_sound.hpp"
+#include "model/space/bootstrap.hpp"
+#include "ui/panel/widgets.hpp"
+
+namespace nibrig::ui::panel {
+
+namespace design = model::design;
+
+namespace {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Cell centres spread over the grid, `count` of them (all when fewer).
+std::vector<std::pair<double, double>> spread_cell_centres(const design::GridAxes& axes, std::size_t count) {
+  std::vector<std::pair<double, double>> all;
+  for (std::size_t i = 0; i + 1 < axes.fractions.size(); ++i)
+    for (std::size_t j = 0; j + 1 < axes.tips_m.size(); ++j)
+      all.emplace_back(0.5 * (axes.fractions[i] + axes.fractions[i + 1]), 0.5 * (axes.tips_m[j] + axes.tips_m[j + 1]));
+  if (all.size() <= count || count == 0) return all;
+  std::vector<std::pair<double, double>> picked;
+  for (std::size_t k = 0; k < count; ++k) picked.push_back(all[(2 * k + 1) * all.size() / (2 * count)]);
+  return picked;
+}
+
+model::space::Placement placement_of(const SceneTool& t) {
+  model::space::Placement p;
+  p.mean = t.region.mean;
+  p.covariance = t.region.covariance.size() > 0 ? t.region.covariance
+                                                : Eigen::MatrixXd::Zero(t.region.mean.size(), t.region.mean.size());
+  return p;
+}
+
+}  // namespace
+
+DesignView::DesignView(PanelAudio& audio, std::filesystem::path catalog, std::filesystem::path forcing,
+                       DesignSettings settings)
+    : audio_(audio), catalog_(std::move(catalog)), forcing_(std::move(forcing)), settings_(std::move(settings)) {
+  space_ = std::make_unique<SpaceView>(SpaceScene{}, [this](const std::vector<ToolChoice>&, const rt::StrokeRequest&) {
+    if (!space_->chosen().empty()) set_target(space_->chosen().back());
+  });
+  space_->set_side_panel(false);
+  space_->set_overlay([this](ImDrawList* draw, const PlotFrame& frame, int ax, int ay) { draw_overlay(draw, frame, ax, ay); });
+  stroke_.kind = 0;  // a constant speed: the design's sound heard steadily while it changes
+}
+
+DesignView::~DesignView() {
+  // The jobs use the inputs and the grid: stopped and joined before those go.
+  error_job_.reset();
+  job_.reset();
+}
+
+void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map) {
+  space_->set_scene(scene);
+  map_ = std::move(map);
+  target_.reset();
+  search_.reset();
+  update_design();
+}
+
+void DesignView::prepare() {
+  if (inputs_ || job_) return;
+  job_ = std::make_unique<BackgroundJob<DesignInputs>>(
+      "design grid", [catalog = catalog_, forcing = forcing_, s = settings_](JobControl& control) {
+        model::forcing::ForcingInputOptions options;
+        options.catalog = catalog;
+        options.mesh_size = s.mesh_size_m;
+        options.modes = s.modes;
+        control.message(forcing.empty() ? "fitting the forcing model to the catalog" : "reading the forcing model");
+        DesignInputs made;
+        made.inputs = design::load_prediction_inputs(options, forcing);
+        const auto axes = design::even_axes(s.material_a, s.material_b, s.fraction_points, s.min_tip_m, s.max_tip_m,
+                                            s.tip_points);
+        control.message("solving the designs of the grid (cached once solved)");
+        auto grid = design::cached_design_response_grid(
+            *made.inputs, axes,
+            [&control](std::size_t done, std::size_t total) {
+              control.progress(static_cast<double>(done) / static_cast<double>(total));
+              control.message("solved " + std::to_string(done) + " of " + std::to_string(total) + " designs");
+            },
+            control.stop_token());
+        if (!grid) throw std::runtime_error("the design grid was cancelled");
+        made.grid = std::move(*grid);
+        return made;
+      });
+}
+
+void DesignView::set_design(double fraction, double tip_mm) {
+  fraction_ = static_cast<float>(fraction);
+  tip_mm_ = static_cast<float>(tip_mm);
+  update_design();
+}
+
+void DesignView::set_target(std::size_t tool) {
+  if (tool >= space_->scene().tools.size()) return;
+  target_ = tool;
+  search_.reset();
+  update_design();
+}
+
+std::string DesignView::surface() const {
+  return target_ ? space_->scene().tools[*target_].choice.surface : "office";
+}
+
+void DesignView::update_design() {
+  if (!inputs_ || !grid_) return;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    predicted_ = design::predict_from_grid(inputs_->setup, *grid_, fraction_, tip_mm_ * 1e-3, surface());
+    placement_.reset();
+    if (map_) placement_ = design::place_predicted(*map_, *predicted_);
+    if (play_) audio_.play_now(design::predicted_sound(*predicted_), stroke_.request());
+    error_.clear();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+  last_update_ms_ = milliseconds_since(start);
+}
+
+void DesignView::search(bool two_d) {
+  if (!inputs_ || !grid_ || !map_ || !target_) {
+    error_ = "a search needs the grid, a space with a descriptor map and a target tool";
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const auto evaluate = design::distance_to_target(design::grid_predictor(inputs_->setup, *grid_, surface()), *map_,
+                                                     placement_of(space_->scene().tools[*target_]), 500);
+    if (two_d) {
+      design::RangeSearchOptions options;
+      options.first_material = grid_->axes.material_a;
+      options.second_material = grid_->axes.material_b;
+      options.min_tip_m = grid_->axes.tips_m.front();
+      options.max_tip_m = grid_->axes.tips_m.back();
+      search_ = design::range_search(evaluate, options);
+    } else {
+      search_ = design::line_search(design::grid_point(grid_->axes, 0.0, tip_mm_ * 1e-3),
+                                    design::grid_point(grid_->axes, 1.0, tip_mm_ * 1e-3), evaluate);
+    }
+    const auto& best = search_->best().point;
+    set_design(best.fraction_of(grid_->axes.material_b), best.tip_diameter_m * 1e3);
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+  last_search_ms_ = milliseconds_since(start);
+}
+
+void DesignView::draw() {
+  if (job_ && job_->done()) {
+    if (auto made = job_->take_result()) {
+      inputs_ = std::move(made->inputs);
+      grid_ = std::move(made->grid);
+      tip_mm_ = std::clamp(tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
+                           static_cast<float>(grid_->axes.tips_m.back() * 1e3));
+      update_design();
+      // The interpolation's error against the full FEM, measured here in the background.
+      error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
+          "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points),
+                         map = map_, surface = surface()](JobControl& control) {
+            const std::size_t dims = map ? map->descriptor_names.size() : 2;
+            return design::measure_grid_error_at(
+                inputs_->setup, *grid_, points, surface, dims, map ? &*map : nullptr,
+                [&control](std::size_t done, std::size_t total) {
+                  control.progress(static_cast<double>(done) / static_cast<double>(total));
+                },
+                control.stop_token(), 1);
+          });
+    } else {
+      error_ = job_->error();
+    }
+    job_.reset();
+  }
+  if (error_job_ && error_job_->done()) {
+    if (auto e = error_job_->take_result()) grid_error_ = std::move(*e);
+    error_job_.reset();
+  }
+  if (!inputs_ && !job_) prepare();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  ImGui::BeginChild("design-space", {avail.x - 360.0f, avail.y});
+  space_->draw();
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("design-controls", {0.0f, avail.y});
+  draw_controls();
+  ImGui::EndChild();
+}
+
+void DesignView::draw_controls() {
+  section("Target");
+  ImGui::TextDisabled("click a tool in the space");
+  if (target_) ImGui::TextWrapped("%s", space_->scene().tools[*target_].label.c_str());
+  else ImGui::TextWrapped("none yet");
+  ImGui::Text("surface: %s", surface().c_str());
+  section("Design");
+  if (job_) {
+    if (progress_with_cancel("design-grid", static_cast<float>(job_->progress()), job_->message().c_str())) job_->cancel();
+    return;
+  }
+  if (!grid_) {
+    if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+    if (ImGui::Button("Solve the grid")) prepare();
+    return;
+  }
+  bool moved = false;
+  char label[64];
+  std::snprintf(label, sizeof label, "%s share", grid_->axes.material_b.c_str());
+  moved |= ImGui::SliderFloat(label, &fraction_, 0.0f, 1.0f, "%.2f");
+  mix_slider_ = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+  moved |= ImGui::SliderFloat("tip mm", &tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
+                              static_cast<float>(grid_->axes.tips_m.back() * 1e3), "%.2f");
+  if (ImGui::Checkbox("play as it moves", &play_) && !play_) audio_.stop();
+  if (play_) moved |= stroke_widgets(stroke_);
+  if (moved) update_design();
+  if (predicted_) {
+    ImGui::TextWrapped("%s", design::label(predicted_->point).c_str());
+    ImGui::Text("mu %.3f, weighted mean %.3g, first mode %.0f Hz", predicted_->mu, predicted_->vibration.weighted_mean,
+                predicted_->first_mode_hz);
+  }
+  ImGui::Text("slider to placement and sound: %.1f ms", last_update_ms_);
+  if (!map_) ImGui::TextWrapped("This space has no descriptor map: designs cannot be placed in it.");
+  section("Search");
+  if (ImGui::Button("Line search along the mix")) search(false);
+  ImGui::SameLine();
+  if (ImGui::Button("2-D search")) search(true);
+  if (search_) {
+    const auto& best = search_->best();
+    ImGui::TextWrapped("%zu designs in %.0f ms; nearest: %s at %.2f (sd %.2f)", search_->evaluated.size(),
+                       last_search_ms_, design::label(best.point).c_str(), best.distance, best.distance_sd);
+  }
+  section("Interpolation against the FEM");
+  if (error_job_) ImGui::ProgressBar(static_cast<float>(error_job_->progress()), {-1.0f, 0.0f}, "solving cell centres");
+  if (grid_error_) {
+    ImGui::TextWrapped("at %zu cell centres: |H| within %.2f dB rms; placement within %.2g (its own sd %.2g)",
+                       grid_error_->cells.size(), grid_error_->response_rms_db, grid_error_->placement_distance,
+                       grid_error_->placement_sd);
+  }
+  ImGui::Text("grid %zu x %zu, %s-%s, %zu mode crossings blended", grid_->axes.fractions.size(),
+              grid_->axes.tips_m.size(), grid_->axes.material_a.c_str(), grid_->axes.material_b.c_str(),
+              grid_->mode_jumps);
+  if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+}
+
+void DesignView::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const {
+  const bool one_d = ax == ay;
+  const auto at = [&](const Eigen::VectorXd& p) { return frame.to_screen(p[ax], one_d ? 0.0 : p[ay]); };
+  if (target_) {
+    const ImVec2 t = at(space_->scene().tools[*target_].region.mean);
+    draw->AddCircle(t, 12.0f, IM_COL32(255, 80, 80, 255), 24, 2.5f);
+  }
+  if (search_) {
+    for (std::size_t i = 0; i < search_->evaluated.size(); ++i) draw->PathLineTo(at(search_->evaluated[i].placement.mean));
+    draw->PathStroke(IM_COL32(255, 255, 255, 120), 0, 1.0f);
+    for (const auto& c : search_->evaluated) draw->AddCircleFilled(at(c.placement.mean), 2.0f, IM_COL32(255, 255, 255, 160));
+  }
+  if (!placement_) return;
+  const auto region = model::space::gaussian_region(placement_->mean, placement_->covariance, {0.68, 0.95});
+  for (std::size_t k = 0; k < region.radius.size(); ++k) {
+    const auto e = model::space::plane_ellipse(region, k, ax, one_d ? ax : ay);
+    draw_ellipse(draw, frame, placement_->mean[ax], one_d ? 0.0 : placement_->mean[ay], e.semi_axis_1,
+                 one_d ? 0.0 : e.semi_axis_2, e.angle_rad, IM_COL32(255, 255, 255, k == 0 ? 220 : 110), 1.5f);
+  }
+  draw_marker(draw, at(placement_->mean), Marker::diamond, 6.0f, IM_COL32(255, 255, 255, 255), true);
+}
+
+}  // namespace nibrig::ui::panel

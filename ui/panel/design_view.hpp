@@ -1,0 +1,106 @@
+// View 2, design: a target tool (click it in the space) and its surface; sliders for the mix of two
+// materials and the tip diameter; the predicted design moves through the space with its 68/95 %
+// regions and plays as the sliders move; "search" runs the line search along the mix or the 2-D
+// search over mix × tip toward the target and draws its path (Fig. 17). Live through the
+// design-response grid (model/design/design_response_grid.hpp): solved once in the background with
+// progress and cancel, cached on disk, interpolated per slider move; its error against the full
+// FEM is measured in the background at cell centres and shown.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "model/design/design_grid_error.hpp"
+#include "model/design/design_response_grid.hpp"
+#include "model/design/design_search.hpp"
+#include "model/design/prediction_inputs.hpp"
+#include "model/space/descriptor_map.hpp"
+#include "ui/panel/background_job.hpp"
+#include "ui/panel/panel_audio.hpp"
+#include "ui/panel/space_view.hpp"
+
+namespace nibrig::ui::panel {
+
+// How finely designs are solved: the defaults are the full template's and the grid's default
+// density; the tests ask for a coarse grid so that it solves quickly under the sanitizers.
+struct DesignSettings {
+  std::string material_a = "vero", material_b = "DM85";
+  double min_tip_m = 0.001, max_tip_m = 0.004;
+  std::size_t fraction_points = model::design::kDefaultFractionPoints;
+  std::size_t tip_points = model::design::kDefaultTipPoints;
+  double mesh_size_m = 0.0;  // 0: the template's
+  int modes = 0;             // 0: the template's
+  std::size_t error_points = 4;  // cell centres the interpolation is checked at against the FEM
+};
+
+struct DesignInputs {
+  std::unique_ptr<model::design::PredictionInputs> inputs;
+  model::design::DesignResponseGrid grid;
+};
+
+class DesignView {
+ public:
+  DesignView(PanelAudio& audio, std::filesystem::path catalog, std::filesystem::path forcing,
+             DesignSettings settings);
+  ~DesignView();
+
+  void draw();
+  // The space to design in (the panel's) and its descriptor map (none: designs cannot be placed).
+  void set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map);
+  // Starts loading the prediction inputs and the grid (once).
+  void prepare();
+  bool ready() const { return inputs_ != nullptr; }
+  bool preparing() const { return job_ != nullptr; }
+  bool measuring_error() const { return error_job_ != nullptr; }
+
+  // The sliders (λ = fraction of material B, tip in mm) and the target, as a person sets them.
+  void set_design(double fraction, double tip_mm);
+  void set_target(std::size_t tool);
+  void set_playing(bool play) { play_ = play; }
+  // Runs the line search (along the mix at the current tip) or the 2-D search; the path is drawn.
+  void search(bool two_d);
+
+  // What the view shows, for tests and the status: the current prediction and its placement,
+  // how long the last slider move took to a placement and a loaded sound, the last search, the
+  // measured interpolation error.
+  const std::optional<model::design::PredictedTool>& predicted() const { return predicted_; }
+  const std::optional<model::space::Placement>& placement() const { return placement_; }
+  double last_update_ms() const { return last_update_ms_; }
+  const std::optional<model::design::SearchResult>& last_search() const { return search_; }
+  const std::optional<model::design::GridError>& grid_error() const { return grid_error_; }
+  const std::string& error() const { return error_; }
+  SpaceView& space() { return *space_; }
+  // Where the mix slider was last drawn (a scripted session drags it).
+  std::pair<ImVec2, ImVec2> mix_slider_rect() const { return mix_slider_; }
+
+ private:
+  void update_design();
+  void draw_controls();
+  void draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const;
+  std::string surface() const;
+
+  PanelAudio& audio_;
+  std::filesystem::path catalog_, forcing_;
+  DesignSettings settings_;
+  std::unique_ptr<SpaceView> space_;
+  std::optional<model::space::DescriptorMap> map_;
+  std::unique_ptr<BackgroundJob<DesignInputs>> job_;
+  std::unique_ptr<BackgroundJob<model::design::GridError>> error_job_;
+  std::unique_ptr<model::design::PredictionInputs> inputs_;
+  std::optional<model::design::DesignResponseGrid> grid_;
+  std::optional<std::size_t> target_;
+  float fraction_ = 0.5f, tip_mm_ = 2.0f;
+  bool play_ = true;
+  StrokeChoice stroke_;
+  std::optional<model::design::PredictedTool> predicted_;
+  std::optional<model::space::Placement> placement_;
+  std::optional<model::design::SearchResult> search_;
+  std::optional<model::design::GridError> grid_error_;
+  double last_update_ms_ = 0.0, last_search_ms_ = 0.0;
+  std::string error_;
+  std::pair<ImVec2, ImVec2> mix_slider_{};
+};
+
+}  // namespace nibrig::ui::panel
