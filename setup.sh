@@ -4,6 +4,7 @@
 #   ./setup.sh demo    build (Release) and run `nibrig demo` on the bundled default -> nibrig-demo/
 #   ./setup.sh test    build with ASan+UBSan, run every test suite, then fuzz the readers briefly
 #   ./setup.sh bench   build (Release) and run the benchmarks with the scipy reference beside them
+#   ./setup.sh panel   build (Release) and open nibrig-panel (extra arguments go to it)
 #   ./setup.sh build   build (Release) only
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -96,14 +97,27 @@ case "$job" in
     ;;
   bench)
     configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON
-    ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
+    # The panel's frame benchmark needs a display: a private X server when there is none.
+    display=()
+    [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24")
+    "${display[@]}" ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
     /usr/bin/python3 tests/bench/scipy_spectrogram.py
+    ;;
+  panel)
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF
+    if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
+      echo "setup: no display to open the panel on; on a machine without a screen, take a picture of a view:" >&2
+      echo "  xvfb-run -a build/release/ui/panel/nibrig-panel --screenshot space.png --view space" >&2
+      exit 1
+    fi
+    shift
+    exec ./build/release/ui/panel/nibrig-panel "$@"
     ;;
   build)
     configure_and_build build/release -DCMAKE_BUILD_TYPE=Release
     ;;
   *)
-    echo "usage: ./setup.sh [demo|test|bench|build]" >&2
+    echo "usage: ./setup.sh [demo|test|bench|panel|build]" >&2
     exit 2
     ;;
 esac

@@ -8,6 +8,12 @@ namespace nibrig::ui::panel {
 
 DevicesView::DevicesView(PanelAudio& audio) : audio_(audio) {}
 
+void DevicesView::set_request(const DeviceRequest& request) {
+  request_ = request;
+  std::snprintf(api_, sizeof api_, "%s", request.api.c_str());
+  std::snprintf(device_, sizeof device_, "%s", request.device.c_str());
+}
+
 void DevicesView::refresh() {
   if (job_) return;
   job_ = std::make_unique<BackgroundJob<DeviceListing>>("listing devices", [](JobControl& control) {
@@ -22,6 +28,13 @@ void DevicesView::refresh() {
     }
     return listing;
   });
+}
+
+DeviceRequest DevicesView::shown_request() const {
+  DeviceRequest r = request_;
+  r.api = api_;
+  r.device = device_;
+  return r;
 }
 
 void DevicesView::open() {

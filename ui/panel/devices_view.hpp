@@ -27,6 +27,9 @@ class DevicesView {
   void draw();
   void refresh();
   DeviceRequest& request() { return request_; }
+  // The request as the form shows it (what to remember between runs).
+  DeviceRequest shown_request() const;
+  void set_request(const DeviceRequest& request);
   // Opens request() on the audition; the error, if any, is shown.
   void open();
   const std::string& error() const { return error_; }

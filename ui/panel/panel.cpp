@@ -58,7 +58,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);
   if (setup_.device) {
-    devices_view_->request() = *setup_.device;
+    devices_view_->set_request(*setup_.device);
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
   }
   if (!setup_.space.empty()) load_space(setup_.space);
@@ -75,6 +75,7 @@ Panel::~Panel() {
 }
 
 void Panel::load_space(const std::filesystem::path& file) {
+  space_file_ = file;
   const auto catalog_file = model::io::or_default(setup_.catalog, model::io::default_catalog);
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "loading the space", [file, catalog_file](JobControl& control) {

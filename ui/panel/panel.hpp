@@ -47,6 +47,11 @@ class Panel {
   // True once nothing is loading in the background for the view shown (screenshots wait for it).
   bool settled() const;
   const std::string& error() const { return error_; }
+  // Shown in the error line until something else goes wrong (e.g. a settings file that could not
+  // be read).
+  void set_error(std::string error) { error_ = std::move(error); }
+  // The space file open now (empty: none yet).
+  const std::filesystem::path& space_file() const { return space_file_; }
   // The status line under the views: the device and its state, what plays, the stroke.
   std::string status_line() const;
 
@@ -56,6 +61,7 @@ class Panel {
   DesignView& design_view() { return *design_view_; }
   PadView& pad_view() { return *pad_view_; }
   DevicesView& devices_view() { return *devices_view_; }
+  const DevicesView& devices_view() const { return *devices_view_; }
 
  private:
   void load_space(const std::filesystem::path& file);
@@ -64,6 +70,7 @@ class Panel {
   void draw_status();
 
   PanelSetup setup_;
+  std::filesystem::path space_file_;
   std::unique_ptr<PanelAudio> audio_;
   std::unique_ptr<SpaceView> space_view_;
   std::unique_ptr<RigView> rig_view_;

@@ -58,6 +58,7 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
     return std::nullopt;
   }
   o.view = *view_named(view);
+  o.view_given = app.count("--view") > 0;
   if (grid.size() == 2) {
     o.setup.design.fraction_points = static_cast<std::size_t>(grid[0]);
     o.setup.design.tip_points = static_cast<std::size_t>(grid[1]);

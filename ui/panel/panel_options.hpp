@@ -15,6 +15,7 @@ struct PanelOptions {
   PanelSetup setup;
   std::filesystem::path screenshot;  // non-empty: render, write, exit
   View view = View::space;
+  bool view_given = false;  // --view was on the command line (else the remembered view)
   int frames = 10;          // frames drawn (after the view settled) before the screenshot
   double settle_timeout_s = 900.0;  // longest wait for the view's background work
   int width = 1280, height = 800;

@@ -1,0 +1,31 @@
+// What the panel remembers between runs: the view it showed, the actuator's device, the space it
+// had open, the stroke and the rig's choices. Kept as JSON in $XDG_CONFIG_HOME/nibrig/panel.json
+// (else ~/.config/nibrig/panel.json), written atomically when the panel closes; a file that cannot
+// be read is reported in the window and the defaults are used (never a crash).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "ui/panel/panel.hpp"
+#include "ui/panel/rig_view.hpp"
+
+namespace nibrig::ui::panel {
+
+struct PanelSettings {
+  View view = View::space;
+  std::optional<DeviceRequest> device;
+  std::filesystem::path space;
+  StrokeChoice stroke;
+  RigChoice rig;
+};
+
+// $NIBRIG_PANEL_SETTINGS, else $XDG_CONFIG_HOME/nibrig/panel.json, else ~/.config/nibrig/panel.json.
+std::filesystem::path panel_settings_file();
+// The settings in `file`; defaults when it does not exist. Throws std::runtime_error naming the
+// file and what is wrong in it.
+PanelSettings read_panel_settings(const std::filesystem::path& file);
+void write_panel_settings(const std::filesystem::path& file, const PanelSettings& settings);
+
+}  // namespace nibrig::ui::panel
