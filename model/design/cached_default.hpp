@@ -24,7 +24,8 @@ struct DefaultsOptions {
   // regions (tests). Part of the key.
   int bootstrap_resamples = 200;
   unsigned threads = 0;  // 0: one per core; no result depends on it
-  // Called only while computing: a default read from the cache reports nothing.
+  // Called only while computing: a default read from the cache reports nothing. Called from
+  // worker threads, never two at once: a window posts it to its own thread.
   numeric::StepProgress progress;
   // Stops the computation with numeric::Cancelled; nothing is stored then.
   numeric::CancelFlag cancel = nullptr;
