@@ -59,4 +59,24 @@ VibrationDescriptors compute_vibration_descriptors(const io::VelocitySpectrum& s
   return d;
 }
 
+std::size_t weigh_catalog_vibration(io::Catalog& catalog, const ThresholdCurve& threshold,
+                                    int max_bands) {
+  std::size_t weighted = 0;
+  for (auto& p : catalog.pairings) {
+    if (!p.vibration) continue;
+    VibrationDescriptors d;
+    try {
+      d = compute_vibration_descriptors(p.vibration->spectrum, threshold, max_bands);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("pairing " + p.tool + "/" + p.surface + ": " + e.what());
+    }
+    p.vibration->weighted_mean = d.weighted_mean;
+    p.vibration->weighted_power = d.weighted_power;
+    p.vibration->band_energies = d.band_energies;
+    p.vibration->threshold_curve = threshold.source();
+    ++weighted;
+  }
+  return weighted;
+}
+
 }  // namespace nibrig::model::measure

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "model/io/catalog_file.hpp"
 #include "model/io/velocity_spectrum.hpp"
 #include "model/measure/threshold_curve.hpp"
 
@@ -33,5 +34,12 @@ struct VibrationDescriptors {
 VibrationDescriptors compute_vibration_descriptors(const io::VelocitySpectrum& spectrum,
                                                    const ThresholdCurve& threshold,
                                                    int max_bands = 5);
+
+// The descriptor stage run over a catalog: every pairing with a vibration spectrum gets the
+// descriptors of its spectrum weighted by `threshold` (and the threshold's source), so that a
+// catalog and a space agree on the curve they were weighted by. Returns how many pairings were
+// weighted. Throws what compute_vibration_descriptors throws, naming the pairing.
+std::size_t weigh_catalog_vibration(io::Catalog& catalog, const ThresholdCurve& threshold,
+                                    int max_bands = 5);
 
 }  // namespace nibrig::model::measure

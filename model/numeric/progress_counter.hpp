@@ -6,12 +6,28 @@
 #include <cstddef>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <utility>
 
 namespace nibrig::model::numeric {
 
 // Called once per finished unit with done = 1..total. Empty: nobody is watching.
 using Progress = std::function<void(std::size_t done, std::size_t total)>;
+
+// Progress of work made of several steps, each counted in its own units ("fit starts", then
+// "bootstrap refits"): each step is announced with done = 0 as it begins (so a window can name what
+// it is waiting for before the first unit finishes), then called once per finished unit.
+using StepProgress =
+    std::function<void(const std::string& step, std::size_t done, std::size_t total)>;
+
+// The Progress of one step: announces it (done = 0 of `total`) now and forwards every unit.
+// Empty when `progress` is.
+inline Progress step_progress(const StepProgress& progress, const std::string& step,
+                              std::size_t total) {
+  if (!progress) return {};
+  progress(step, 0, total);
+  return [progress, step](std::size_t done, std::size_t all) { progress(step, done, all); };
+}
 
 class ProgressCounter {
  public:

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "model/numeric/cancellation.hpp"
 #include "model/numeric/progress_counter.hpp"
 #include "model/space/objective.hpp"
 
@@ -19,6 +20,8 @@ struct BootstrapOptions {
   // more starts guard against a resample whose optimum moved to another basin.
   int starts = 1;
   std::vector<double> levels{0.68, 0.95};
+  // When set, refits not yet begun are skipped and the bootstrap throws numeric::Cancelled.
+  numeric::CancelFlag cancel = nullptr;
 };
 
 // A stimulus's cloud: the ellipsoid {x : (x − mean)ᵀ covariance⁻¹ (x − mean) ≤ radius[k]²} holds

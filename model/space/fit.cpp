@@ -122,9 +122,12 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
   numeric::ProgressCounter counter(progress, results.size());
   numeric::parallel_for(results.size(), options.threads, [&](std::size_t s) {
+    if (numeric::cancel_requested(options.cancel)) return;
     results[s] = run_start(problem, options, static_cast<int>(s));
     counter.finished();
   });
+  // Checked after the join, so that no worker still writes into `results` when the caller unwinds.
+  numeric::throw_if_cancelled(options.cancel, "space fit");
 
   FitResult fit;
   for (std::size_t s = 0; s < results.size(); ++s) {

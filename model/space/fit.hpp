@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "model/numeric/cancellation.hpp"
 #include "model/numeric/progress_counter.hpp"
 #include "model/space/objective.hpp"
 
@@ -22,6 +23,9 @@ struct FitOptions {
   // When not empty (dims × stimuli), start 0 begins here instead of at random, shifted so that the
   // pinned stimulus sits at the origin: a refit on resampled data starts at the reference space.
   Eigen::MatrixXd initial;
+  // When set, starts not yet begun are skipped and the fit throws numeric::Cancelled (a start
+  // already running finishes first: one start takes a fraction of a second).
+  numeric::CancelFlag cancel = nullptr;
 };
 
 struct FitResult {

@@ -69,19 +69,11 @@ void demo(const DemoOptions& options, unsigned threads) {
 
   // The descriptor stage of the pipeline, run here on the bundled spectra: weighting by the
   // detection threshold, mean weighted value, weighted power and band energies (Sec. 4.4).
-  std::size_t vibration_pairs = 0;
+  const std::size_t vibration_pairs =
+      model::measure::weigh_catalog_vibration(catalog, threshold, max_bands);
   std::size_t friction_pairs = 0;
-  for (auto& p : catalog.pairings) {
+  for (const auto& p : catalog.pairings)
     if (p.friction) ++friction_pairs;
-    if (!p.vibration) continue;
-    ++vibration_pairs;
-    const auto d =
-        model::measure::compute_vibration_descriptors(p.vibration->spectrum, threshold, max_bands);
-    p.vibration->weighted_mean = d.weighted_mean;
-    p.vibration->weighted_power = d.weighted_power;
-    p.vibration->band_energies = d.band_energies;
-    p.vibration->threshold_curve = threshold.source();
-  }
 
   ensure_folder(options.output);
   ensure_folder(options.output / "spectra");

@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "model/design/default_forcing.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/design/material_hold_out.hpp"
@@ -48,8 +49,10 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   const auto start = std::chrono::steady_clock::now();
   ForcingInputOptions options;
   options.catalog = catalog_file;
-  options.modes = 32;
-  options.mesh_size = 0.004;
+  // The designs of the panel's default model (model/design/default_forcing.hpp), so that the two
+  // stay one model.
+  options.modes = design::kDefaultForcingModes;
+  options.mesh_size = design::kDefaultForcingMeshSize;
   ForcingInputs inputs = load_forcing_inputs(options, design_progress());
   ForcingForPrediction fitted = fit_forcing_for_prediction(inputs);
   const forcing::ForcingModel& model = fitted.model;

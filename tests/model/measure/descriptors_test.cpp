@@ -78,5 +78,35 @@ TEST(VibrationDescriptors, RejectsUnusableSpectra) {
   EXPECT_THROW(compute_vibration_descriptors(ok, flat, 0), std::invalid_argument);
 }
 
+// The demo's descriptor stage over a catalog: a pairing with a spectrum gets exactly what
+// compute_vibration_descriptors gives for it and the curve's name; one without is left alone; a
+// spectrum that cannot be weighed is named by its pairing.
+TEST(VibrationDescriptors, WeighingACatalogWeighsEverySpectrumAndNamesTheCurve) {
+  const ThresholdCurve flat({1.0, 1000.0}, {0.2, 0.2}, "flat");
+  io::Catalog catalog;
+  io::Pairing with{"pen", "office", std::nullopt, io::VibrationDescriptor{}};
+  with.vibration->spectrum = flat_spectrum(100, 2.0, 0.6);
+  with.vibration->weighted_mean = 99.0;  // stale, from another curve
+  io::Pairing without{"pen", "stone", io::FrictionDescriptor{}, std::nullopt};
+  catalog.pairings = {with, without};
+
+  EXPECT_EQ(weigh_catalog_vibration(catalog, flat, 3), 1u);
+  const auto& v = *catalog.pairings[0].vibration;
+  const VibrationDescriptors expected = compute_vibration_descriptors(v.spectrum, flat, 3);
+  EXPECT_EQ(v.weighted_mean, expected.weighted_mean);  // 3: the closed form of the test above
+  EXPECT_EQ(v.weighted_power, expected.weighted_power);
+  EXPECT_EQ(v.band_energies, expected.band_energies);
+  EXPECT_EQ(v.threshold_curve, "flat");
+  EXPECT_FALSE(catalog.pairings[1].vibration.has_value());
+
+  catalog.pairings[0].vibration->spectrum.amplitude_m_s2.clear();
+  try {
+    weigh_catalog_vibration(catalog, flat, 3);
+    FAIL() << "a spectrum without speeds was weighed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pen/office"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace nibrig::model::measure

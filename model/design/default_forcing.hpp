@@ -1,0 +1,40 @@
+// The forcing model a face predicts designs with unless told otherwise: Eq. 10 fitted to the
+// bundled catalog's printed tools, their designs simulated at the demo's resolution
+// (fit_forcing_for_prediction, as `nibrig demo` fits it). Computed once (seconds: every design is
+// meshed and solved) and kept in the user cache.
+#pragma once
+
+#include "model/design/cached_default.hpp"
+#include "model/forcing/forcing_inputs.hpp"
+#include "model/forcing/forcing_model.hpp"
+#include "model/io/user_cache.hpp"
+
+namespace nibrig::model::design {
+
+// Bumped whenever the fit or the forcing file changes what a key's file holds.
+inline constexpr int kDefaultForcingVersion = 1;
+
+// The demo's designs: 32 modes on a 4 mm mesh (the template's finer mesh changes the responses by
+// less than the fit's residual and takes several times longer).
+inline constexpr int kDefaultForcingModes = 32;
+inline constexpr double kDefaultForcingMeshSize = 0.004;  // m
+
+// The fit's inputs for these options: catalog, stylus design and materials (empty: bundled), at
+// the demo's modes and mesh.
+forcing::ForcingInputOptions default_forcing_inputs(const DefaultsOptions& options);
+
+// Every input the model depends on: the key format version, the catalog's, stylus design's,
+// materials' and the bundled threshold curve's bytes (the fit weighs its held-out descriptor errors
+// by the bundled curve whatever options.threshold_curve says), the modes and the mesh size.
+// Throws std::runtime_error naming an input file that cannot be read.
+io::CacheKey default_forcing_key(const DefaultsOptions& options = {});
+
+// <cache>/default_forcing-<key>.json when it is there and reads as a forcing model; else the
+// designs are simulated (step "designs simulated", announced with total 0 until the first design
+// says how many) and the model fitted (step "forcing fit", 0 then 1 of 1), and written there
+// atomically. A cache file that does not read is computed again, with a warning. Throws what
+// load_forcing_inputs throws, and numeric::Cancelled (checked after each design and around the
+// fit), leaving no file behind.
+Cached<forcing::ForcingModel> default_forcing_model(const DefaultsOptions& options = {});
+
+}  // namespace nibrig::model::design

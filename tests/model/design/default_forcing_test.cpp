@@ -1,0 +1,102 @@
+// The panel's default forcing model: computed on a cache miss (designs simulated, then the fit) and
+// written under its key, read back on a hit without computing, keyed by every input file, and
+// leaving nothing behind when cancelled. The model is the demo's (54 exemplars, 1.98 dB).
+// The corrupt-file path is the one default_space_test.cpp checks (cached_default.hpp): a second
+// forcing computation would double this suite's time under the sanitizers.
+#include "model/design/default_forcing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <fstream>
+#include <map>
+
+#include "model/io/bundled_assets.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::design {
+namespace {
+
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> out;
+  if (!std::filesystem::exists(dir)) return out;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path());
+  return out;
+}
+
+TEST(DefaultForcing, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
+  DefaultsOptions o;
+  o.cache_dir = test::scratch_dir("default_forcing_hit") / "cache";
+  std::map<std::string, std::size_t> last_done, totals;
+  o.progress = [&](const std::string& step, std::size_t done, std::size_t total) {
+    last_done[step] = done;
+    totals[step] = total;
+  };
+
+  const Cached<forcing::ForcingModel> first = default_forcing_model(o);
+  EXPECT_TRUE(first.computed);
+  EXPECT_TRUE(first.warnings.empty());
+  EXPECT_EQ(files_in(o.cache_dir), std::vector<std::filesystem::path>{first.file});
+  ASSERT_EQ(last_done.size(), 2u);
+  EXPECT_GT(totals.at("designs simulated"), 1u);
+  EXPECT_EQ(last_done.at("designs simulated"), totals.at("designs simulated"));
+  EXPECT_EQ(last_done.at("forcing fit"), 1u);
+  // The demo's model: `nibrig demo` reported 54 exemplars on 6 surfaces, residual RMS 1.98 dB
+  // (two decimals, so 0.01 is its rounding).
+  EXPECT_EQ(first.value.exemplar_count(), 54u);
+  EXPECT_EQ(first.value.surface_forcing.size(), 6u);
+  EXPECT_NEAR(first.value.residual_rms_db, 1.98, 0.01);
+  EXPECT_FALSE(first.value.held_out_descriptor_errors.empty());
+
+  last_done.clear();
+  const Cached<forcing::ForcingModel> second = default_forcing_model(o);
+  EXPECT_FALSE(second.computed);
+  EXPECT_TRUE(last_done.empty());
+  // The file keeps 17 significant digits: equal to the last ulp of the text conversion.
+  EXPECT_NEAR(second.value.residual_rms_db, first.value.residual_rms_db, 1e-12);
+  const auto& a = first.value.surface_forcing.at("office");
+  const auto& b = second.value.surface_forcing.at("office");
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_NEAR(b[3][5], a[3][5], 1e-12 * a[3][5]);
+}
+
+TEST(DefaultForcing, EveryInputFileIsInTheKey) {
+  const auto dir = test::scratch_dir("default_forcing_key");
+  const std::string key = default_forcing_key().hex();
+  // Copies key as the bundled files (content, not path); one appended byte does not.
+  const std::vector<std::pair<std::filesystem::path DefaultsOptions::*, std::filesystem::path>>
+      inputs{{&DefaultsOptions::catalog, io::default_catalog()},
+             {&DefaultsOptions::materials, io::default_materials()},
+             {&DefaultsOptions::stylus_design, io::default_stylus_design()}};
+  for (const auto& [member, bundled] : inputs) {
+    DefaultsOptions o;
+    o.*member = dir / bundled.filename();
+    std::filesystem::copy_file(bundled, o.*member);
+    EXPECT_EQ(default_forcing_key(o).hex(), key) << bundled;
+    std::ofstream(o.*member, std::ios::app) << ' ';
+    EXPECT_NE(default_forcing_key(o).hex(), key) << bundled;
+  }
+  // How the space is computed is not the forcing model's business.
+  DefaultsOptions refits;
+  refits.bootstrap_resamples = 8;
+  EXPECT_EQ(default_forcing_key(refits).hex(), key);
+}
+
+TEST(DefaultForcing, ACancelledComputationLeavesNoFile) {
+  DefaultsOptions o;
+  o.cache_dir = test::scratch_dir("default_forcing_cancel") / "cache";
+  std::atomic<bool> cancel{false};
+  o.cancel = &cancel;
+  std::size_t designs = 0;
+  o.progress = [&](const std::string& step, std::size_t done, std::size_t) {
+    if (step != "designs simulated" || done == 0) return;
+    designs = done;
+    cancel = true;  // after the first design: the next one is never meshed
+  };
+  EXPECT_THROW(default_forcing_model(o), numeric::Cancelled);
+  EXPECT_EQ(designs, 1u);
+  EXPECT_TRUE(files_in(o.cache_dir).empty());
+}
+
+}  // namespace
+}  // namespace nibrig::model::design
