@@ -1,10 +1,13 @@
 #include "ui/panel/design_view.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <stop_token>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "model/design/default_forcing.hpp"
 #include "model/design/design_grid_file.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/space/bootstrap.hpp"
@@ -75,9 +78,23 @@ void DesignView::prepare() {
         options.catalog = catalog;
         options.mesh_size = s.mesh_size_m;
         options.modes = s.modes;
-        control.message(forcing.empty() ? "fitting the forcing model to the catalog" : "reading the forcing model");
         DesignInputs made;
-        made.inputs = design::load_prediction_inputs(options, forcing);
+        if (forcing.empty()) {  // the demo's forcing model, fitted once and kept in the user cache
+          std::atomic<bool> cancel{false};
+          std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
+          design::DefaultsOptions defaults;
+          defaults.catalog = catalog;
+          defaults.cancel = &cancel;
+          defaults.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
+            control.message("the default forcing model (fitted once, then kept): " + step);
+            control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+          };
+          auto model = design::default_forcing_model(defaults);
+          made.inputs = design::load_prediction_inputs(options, model.file, std::move(model.value));
+        } else {
+          control.message("reading the forcing model");
+          made.inputs = design::load_prediction_inputs(options, forcing);
+        }
         const auto axes = design::even_axes(s.material_a, s.material_b, s.fraction_points, s.min_tip_m, s.max_tip_m,
                                             s.tip_points);
         control.message("solving the designs of the grid (cached once solved)");

@@ -1,6 +1,8 @@
 #include "ui/panel/panel.hpp"
 
+#include <atomic>
 #include <cstdio>
+#include <stop_token>
 
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
@@ -8,7 +10,6 @@
 #include "ui/panel/devices_view.hpp"
 #include "ui/panel/pad_view.hpp"
 #include "ui/panel/rig_view.hpp"
-#include "ui/panel/space_scene.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
@@ -62,6 +63,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
   }
   if (!setup_.space.empty()) load_space(setup_.space);
+  else load_default_space();
   if (setup_.start_rig) {
     rig_view_->choice().speedup = 8.0f;
     rig_view_->start();
@@ -76,13 +78,28 @@ Panel::~Panel() {
 
 void Panel::load_space(const std::filesystem::path& file) {
   space_file_ = file;
-  const auto catalog_file = model::io::or_default(setup_.catalog, model::io::default_catalog);
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
-      "loading the space", [file, catalog_file](JobControl& control) {
+      "loading the space", [file, catalog = setup_.catalog](JobControl& control) {
         control.message("reading " + file.string());
-        const auto catalog = model::io::read_catalog(catalog_file);
-        const auto space = model::space::read_space_file(file);
-        return LoadedSpace{scene_of(space, catalog, catalog_file, "space " + file.string()), space.descriptor_map};
+        return load_space_file(file, catalog);
+      });
+}
+
+void Panel::load_default_space() {
+  space_file_.clear();
+  space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
+      "the default space", [catalog = setup_.catalog](JobControl& control) {
+        // The cancel flag the model checks follows the job's stop request.
+        std::atomic<bool> cancel{false};
+        std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
+        model::design::DefaultsOptions options;
+        options.catalog = catalog;
+        options.cancel = &cancel;
+        options.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
+          control.message("the default space (computed once, then kept): " + step);
+          control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+        };
+        return panel::load_default_space(options);
       });
 }
 
@@ -102,6 +119,7 @@ void Panel::poll_jobs() {
   audio_->poll();
   if (space_job_ && space_job_->done()) {
     if (auto loaded = space_job_->take_result()) {
+      for (const auto& w : loaded->warnings) error_ = w;
       design_view_->set_space(loaded->scene, loaded->map);
       space_view_->set_scene(std::move(loaded->scene));
     } else {
@@ -116,6 +134,7 @@ void Panel::draw_menu() {
   if (ImGui::BeginMenu("File")) {
     ImGui::InputText("path", open_path_, sizeof open_path_);
     if (ImGui::MenuItem("Open space")) load_space(open_path_);
+    if (ImGui::MenuItem("The default space")) load_default_space();
     ImGui::EndMenu();
   }
   ImGui::EndMenuBar();

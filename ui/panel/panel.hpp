@@ -14,6 +14,7 @@
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/design_view.hpp"
 #include "ui/panel/panel_audio.hpp"
+#include "ui/panel/space_scene.hpp"
 #include "ui/panel/space_view.hpp"
 
 namespace nibrig::ui::panel {
@@ -65,6 +66,7 @@ class Panel {
 
  private:
   void load_space(const std::filesystem::path& file);
+  void load_default_space();
   void poll_jobs();
   void draw_menu();
   void draw_status();
@@ -76,10 +78,6 @@ class Panel {
   std::unique_ptr<RigView> rig_view_;
   std::unique_ptr<PadView> pad_view_;
   std::unique_ptr<DevicesView> devices_view_;
-  struct LoadedSpace {
-    SpaceScene scene;
-    std::optional<model::space::DescriptorMap> map;
-  };
   std::unique_ptr<BackgroundJob<LoadedSpace>> space_job_;
   std::unique_ptr<DesignView> design_view_;
   View current_ = View::space;
