@@ -55,8 +55,9 @@ void PadView::draw() {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(160.0f);
   ImGui::SliderFloat("force N", &force_n_, 0.5f, 4.0f, "%.1f");
-  ImGui::Text("in use: %s on %s%s", tool_.tool.c_str(), tool_.surface.c_str(),
-              audio_.making_sounds() ? " (being made)" : "");
+  if (!loaded_) ImGui::Text("press Load to draw with %s on %s", tool_text_, surface_text_);
+  else ImGui::Text("in use: %s on %s%s", tool_.tool.c_str(), tool_.surface.c_str(),
+                   audio_.making_sounds() ? " (being made)" : "");
 
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 canvas_size{avail.x, std::max(100.0f, avail.y - 150.0f)};
@@ -88,7 +89,7 @@ void PadView::draw() {
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i) - static_cast<double>(x.size());
   draw_axes(draw, frame, "frames", "speed mm/s");
   draw_trace(draw, frame, x, y, IM_COL32(86, 180, 233, 255));
-  ImGui::SetCursorScreenPos({origin.x, at.y + 100.0f});
+  ImGui::SetCursorScreenPos({origin.x, at.y + 112.0f});
   ImGui::Text("%.0f mm/s%s", speed_mm_s_, speed_mm_s_ > 250.0 ? " (beyond the measured 250 mm/s: the fastest spectrum is held)" : "");
 }
 
