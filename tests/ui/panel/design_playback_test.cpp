@@ -1,0 +1,141 @@
+// The design view on a real JACK server: dragging the mix slider from VeroClear to DM85 changes
+// what the actuator receives within 50 ms. An independent libjack client records the panel's output
+// with the server's frame clock. The two designs play at nearly one level (within about 1 dB), so
+// the change is found by what is played, not how loud: the old design's voice is deterministic (its
+// seed, a constant stroke), so an offline render of it lines up with the recording sample for
+// sample (correlation near 1) until the voice is swapped out, and the recording is read in 10 ms
+// windows for the first one that no longer follows it.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <thread>
+
+#include "model/design/tool_sound.hpp"
+#include "playback/playback_session.hpp"
+#include "tests/playback/jack_recorder.hpp"
+#include "tests/support/jack_server.hpp"
+#include "tests/ui/panel/test_space.hpp"
+#include "ui/panel/panel.hpp"
+#include "ui/panel/panel_window.hpp"
+
+namespace nibrig::ui::panel {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A design's sound as the panel plays it (slot 0, the audition's first seed, 100 mm/s and 2.2 N),
+// rendered offline from the voice's start for `seconds`.
+std::vector<float> offline(const model::design::PredictedTool& tool, double seconds) {
+  const auto sound = model::design::predicted_sound(tool);
+  playback::PlaybackSession session(rt::EngineSettings{}, {{sound.name, sound.modal, sound.spectrum}},
+                                    std::make_unique<rt::ConstantStroke>(0.1, 2.2), 1);
+  std::vector<float> out(static_cast<std::size_t>(seconds * 48000.0) / 64 * 64);
+  for (std::size_t at = 0; at < out.size(); at += 64) session.engine().render(out.data() + at, 64);
+  return out;
+}
+
+// Normalised correlation of a[0..n) with b[0..n).
+double correlation(const float* a, const float* b, std::size_t n) {
+  double ab = 0.0, aa = 0.0, bb = 0.0;
+  for (std::size_t i = 0; i < n; ++i) ab += double(a[i]) * b[i], aa += double(a[i]) * a[i], bb += double(b[i]) * b[i];
+  return aa > 0 && bb > 0 ? ab / std::sqrt(aa * bb) : 0.0;
+}
+
+TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds) {
+  nibrig::testing::JackServer server;
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_design_playback";
+  std::filesystem::remove_all(dir);
+  ::setenv("NIBRIG_CACHE", (dir / "cache").c_str(), 1);
+  WindowSettings w;
+  w.visible = false;
+  w.vsync = false;
+  PanelWindow window(w);
+  PanelSetup setup;
+  setup.space = testing::write_descriptor_space(dir);
+  setup.device = DeviceRequest{"jack", "system", 1, 64};
+  setup.design.fraction_points = 3;
+  setup.design.tip_points = 3;
+  setup.design.mesh_size_m = 0.004;
+  setup.design.modes = 32;
+  setup.design.error_points = 1;
+  Panel panel(setup);
+  panel.show(View::design);
+  auto& view = panel.design_view();
+  const auto frame = [&](const std::function<void(ImGuiIO&)>& input = {}) {
+    window.begin_frame(input);
+    panel.draw();
+    window.end_frame();
+  };
+  const auto deadline = std::chrono::steady_clock::now() + 900s;
+  while (!view.ready() && std::chrono::steady_clock::now() < deadline) frame();
+  ASSERT_TRUE(view.ready()) << view.error() << " " << panel.error();
+  view.set_target(2);
+  view.set_design(0.0, 2.5);  // VeroClear, playing at a constant 100 mm/s from here
+  ASSERT_TRUE(view.error().empty()) << view.error();
+  const auto voice_started = std::chrono::steady_clock::now();
+
+  playback::testing::JackRecorder ear("ear", 1, 96000);  // 2 s
+  ASSERT_TRUE(ear.connect("nibrig-panel:outport 0", 0));
+  ear.start();
+  while (ear.recorded() < 48000) frame();  // a second of the old design
+  frame();
+  const auto [min, max] = view.mix_slider_rect();
+  const float y = 0.5f * (min.y + max.y);
+  frame([&](ImGuiIO& io) { io.MousePos = {min.x + 1.0f, y}; });
+  frame([&](ImGuiIO& io) { io.MousePos = {min.x + 1.0f, y}, io.MouseDown[0] = true; });
+  // The frame that moves the slider to its right end: the server's clock just before it.
+  const jack_nframes_t moved = jack_frame_time(ear.client());
+  frame([&](ImGuiIO& io) { io.MousePos = {max.x + 5.0f, y}, io.MouseDown[0] = true; });
+  frame([&](ImGuiIO& io) { io.MousePos = {max.x + 5.0f, y}, io.MouseDown[0] = false; });
+  EXPECT_NEAR(view.predicted()->point.fraction_of("DM85"), 1.0, 1e-9);
+  const double update_ms = view.last_update_ms();
+  while (ear.recorded() < 96000 && std::chrono::steady_clock::now() < deadline) frame();
+  ASSERT_TRUE(ear.wait_full(1s));
+  const double played_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - voice_started).count();
+
+  // Where the move is in the recording, by the server's frame clock.
+  std::size_t at = 0;
+  for (const auto& c : ear.cycles())
+    if (c.time <= moved) at = c.start + (moved - c.time);
+  ASSERT_GT(at, 24000u);
+  const auto& samples = ear.samples(0);
+
+  // The old voice offline, from its start to past the recording's end; where the recording's
+  // samples 100 ms before the move lie in it (the best correlation over every lag).
+  view.set_playing(false);
+  view.set_design(0.0, 2.5);
+  const std::vector<float> reference = offline(*view.predicted(), played_s + 1.0);
+  const std::size_t probe = at - 4800, length = 1024;
+  std::size_t lag = 0;
+  double best = -1.0;
+  for (std::size_t k = 0; k + length <= reference.size(); ++k) {
+    const double r = correlation(samples.data() + probe, reference.data() + k, length);
+    if (r > best) best = r, lag = k;
+  }
+  RecordProperty("old_voice_correlation", std::to_string(best));
+  ASSERT_GT(best, 0.99) << "the recording does not follow the old design's offline render";
+  const auto follows = [&](std::size_t from) {  // the 10 ms window at `from` follows the old voice
+    const std::size_t k = lag + from - probe;
+    return k + 480 <= reference.size() && correlation(samples.data() + from, reference.data() + k, 480) > 0.9;
+  };
+  // Before the move the recording follows the old voice, window after window.
+  for (std::size_t from = at - 4800; from + 480 <= at; from += 480) EXPECT_TRUE(follows(from)) << "at " << from;
+  // After it, the first window that no longer follows it ends within 50 ms of the move.
+  std::optional<double> changed_ms;
+  for (std::size_t from = at; from + 480 <= samples.size(); from += 48)
+    if (!follows(from)) {
+      changed_ms = static_cast<double>(from + 480 - at) / 48.0;
+      break;
+    }
+  ASSERT_TRUE(changed_ms.has_value()) << "the recording still follows the old design after the move";
+  RecordProperty("slider_to_signal_ms", std::to_string(*changed_ms));
+  RecordProperty("slider_to_placement_and_voice_ms", std::to_string(update_ms));
+  EXPECT_LT(*changed_ms, 50.0);
+}
+
+}  // namespace
+}  // namespace nibrig::ui::panel
