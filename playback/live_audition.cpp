@@ -1,8 +1,6 @@
 #include "playback/live_audition.hpp"
 
-#include <chrono>
 #include <stdexcept>
-#include <thread>
 
 #include "rt/fir_filter.hpp"
 #include "rt/voice_builder.hpp"
@@ -25,7 +23,7 @@ void LiveAudition::open(const OutputSettings& output) {
 
 void LiveAudition::close() {
   output_.reset();  // the callback has stopped calling the engine when this returns
-  engine_->collect();
+  pump();
 }
 
 std::optional<StreamInfo> LiveAudition::stream_info() const {
@@ -45,23 +43,25 @@ std::optional<OutputStatus> LiveAudition::output_status() const {
 
 std::string LiveAudition::last_problem() const { return output_ ? output_->last_problem() : ""; }
 
-template <typename Command>
-void LiveAudition::deliver(const char* what, Command&& command) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
-  while (!command()) {
-    if (!output_) {
-      engine_->render(scratch_.data(), scratch_.size());
+std::size_t LiveAudition::pump() {
+  while (!pending_.empty()) {
+    if (pending_.front().command()) {
+      pending_.pop_front();
       continue;
     }
-    if (std::chrono::steady_clock::now() > deadline)
-      throw std::runtime_error(std::string("the engine took no ") + what +
-                               " for a second: its device is " +
-                               (output_->status() == OutputStatus::lost
-                                    ? "lost (" + output_->last_problem() + ")"
-                                    : "not calling back"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (output_) break;  // the callback drains the queue; the rest goes on a later pump
+    engine_->render(scratch_.data(), scratch_.size());
   }
   engine_->collect();
+  return pending_.size();
+}
+
+void LiveAudition::deliver(Pending pending) {
+  if (pending.contact && !pending_.empty() && pending_.back().contact)
+    pending_.back() = std::move(pending);  // only the newest contact matters
+  else
+    pending_.push_back(std::move(pending));
+  pump();
 }
 
 void LiveAudition::load(std::size_t slot, const SessionVoice& voice, std::uint64_t seed) {
@@ -70,7 +70,8 @@ void LiveAudition::load(std::size_t slot, const SessionVoice& voice, std::uint64
                                 std::to_string(names_.size()) + " slots)");
   auto built = rt::build_voice(voice.name, voice.modal, voice.spectrum, engine_->internal_rate(), seed);
   const std::string name = built->name();
-  deliver("voice", [&] { return engine_->load(slot, std::move(built)); });
+  auto held = std::make_shared<std::unique_ptr<rt::Voice>>(std::move(built));
+  deliver({false, [this, slot, held] { return engine_->load(slot, std::move(*held)); }});
   names_[slot] = name;
 }
 
@@ -78,26 +79,28 @@ void LiveAudition::select(std::size_t slot) {
   if (slot >= names_.size())
     throw std::invalid_argument("slot " + std::to_string(slot) + " out of range (" +
                                 std::to_string(names_.size()) + " slots)");
-  deliver("selection", [&] { return engine_->select(slot); });
+  deliver({false, [this, slot] { return engine_->select(slot); }});
   selected_ = slot;
 }
 
 void LiveAudition::attach(std::unique_ptr<rt::StrokeSource> stroke) {
   if (!stroke) throw std::invalid_argument("no stroke to attach");
-  deliver("stroke", [&] { return engine_->attach(std::move(stroke)); });
+  auto source = std::make_shared<std::unique_ptr<rt::StrokeSource>>(std::move(stroke));
+  deliver({false, [this, source] { return engine_->attach(std::move(*source)); }});
 }
 
 InverseFilter LiveAudition::use_actuator(const ActuatorCalibration& calibration, std::string name) {
   InverseFilter filter = redesign_for_rate(calibration, engine_->internal_rate());
   auto fir = std::make_unique<rt::FirFilter>(filter.taps);
-  deliver("actuator filter", [&] { return engine_->set_calibration(std::move(fir)); });
-  deliver("output level", [&] { return engine_->set_output_level(1.0); });
+  auto shared = std::make_shared<std::unique_ptr<rt::FirFilter>>(std::move(fir));
+  deliver({false, [this, shared] { return engine_->set_calibration(std::move(*shared)); }});
+  deliver({false, [this] { return engine_->set_output_level(1.0); }});
   actuator_ = std::move(name);
   return filter;
 }
 
 void LiveAudition::set_contact(double speed_m_s, double normal_force_n) {
-  deliver("contact", [&] { return engine_->set_contact(speed_m_s, normal_force_n); });
+  deliver({true, [this, speed_m_s, normal_force_n] { return engine_->set_contact(speed_m_s, normal_force_n); }});
 }
 
 }  // namespace nibrig::playback

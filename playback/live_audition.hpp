@@ -1,10 +1,13 @@
 // A player that keeps running while a person works: one engine with a voice per slot (a tool, or
 // the two or three of an A/B or triplet comparison), a stroke or a live contact, on a device by
 // name or on none at all (a screenshot, a machine without audio). The panel plays what is clicked,
-// dragged and drawn here; a test reaches all of it without a window.
+// dragged and drawn here; a test reaches all of it without a window. No call waits for the audio
+// thread: what the engine's queue cannot take yet is held and handed over by a later call or pump().
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,15 +58,23 @@ class LiveAudition {
   InverseFilter use_actuator(const ActuatorCalibration& calibration, std::string name);
   const std::string& actuator() const noexcept { return actuator_; }
   rt::EngineStats engine_stats() const { return engine_->stats(); }
+  // Hands over what the engine's queue refused before (the panel calls it every frame); how many
+  // commands still wait.
+  std::size_t pump();
   double sample_rate() const noexcept { return engine_->sample_rate(); }
 
  private:
-  // Hands a command to the engine: with a device open its callback drains the queue every block
-  // (waits up to a second for room, then throws naming the device's state); with none, this
-  // thread renders a block into scratch to drain it, as nothing else calls the engine.
-  template <typename Command>
-  void deliver(const char* what, Command&& command);
+  // Hands commands to the engine in order, without ever waiting for the audio thread: what its
+  // queue refuses (full: the callback has not run since, or the device is lost) waits here and is
+  // handed over by the next call or pump(). With no device open, nothing else calls the engine, so
+  // this thread renders a block into scratch to drain the queue.
+  struct Pending {
+    bool contact = false;             // a live contact: a newer one replaces it
+    std::function<bool()> command;    // true once the engine took it
+  };
+  void deliver(Pending pending);
 
+  std::deque<Pending> pending_;
   rt::EngineSettings settings_;
   std::unique_ptr<rt::Engine> engine_;
   std::unique_ptr<AudioOutput> output_;

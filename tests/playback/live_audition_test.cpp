@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <thread>
 
 #include "model/io/catalog_file.hpp"
 #include "tests/playback/jack_recorder.hpp"
@@ -88,6 +89,33 @@ TEST(LiveAudition, PlaysTheLoadedToolSwitchesSlotsAndFallsSilentWhenTheContactSt
   const auto stopped = record("audition:outport 0", 24000);
   EXPECT_LT(rms_of_last(stopped, stopped.size(), 12000), cryon_rms * 1e-2);
   EXPECT_EQ(audition.output_stats()->losses, 0u);
+}
+
+// The proof that a control thread never waits for the audio thread: with the server dead, no
+// callback drains the engine's queue, and a thousand commands still return at once; what the queue
+// could not take is held, in order, and handed over once the device is back.
+TEST(LiveAudition, ACommandNeverWaitsForTheAudioThread) {
+  nibrig::testing::JackServer server;
+  LiveAudition audition(rt::EngineSettings{});
+  playback::OutputSettings settings = testing::jack_settings("held");
+  settings.retry_interval = std::chrono::milliseconds(100);
+  audition.open(settings);
+  server.kill();
+  const auto lost_by = std::chrono::steady_clock::now() + 20s;
+  while (audition.output_status() != OutputStatus::lost && std::chrono::steady_clock::now() < lost_by)
+    std::this_thread::sleep_for(10ms);
+  ASSERT_EQ(audition.output_status(), OutputStatus::lost);
+  for (int i = 0; i < 1000; ++i) audition.set_contact(0.05, 2.2);
+  audition.load(1, {"cryon", small_stylus(), spectrum("cryon")}, 1);
+  for (int i = 0; i < 500; ++i) audition.select(i % 2);
+  const std::size_t held = audition.pump();
+  EXPECT_GT(held, 0u);  // the queue (256 commands) filled; the rest waits here
+  EXPECT_EQ(audition.names()[1], "cryon");
+  server.start();
+  const auto back_by = std::chrono::steady_clock::now() + 30s;
+  while (audition.pump() > 0 && std::chrono::steady_clock::now() < back_by) std::this_thread::sleep_for(10ms);
+  EXPECT_EQ(audition.pump(), 0u);
+  EXPECT_GE(audition.output_stats()->reconnects, 1u);
 }
 
 TEST(LiveAudition, WithoutADeviceEveryCommandStillGoesThrough) {

@@ -82,6 +82,7 @@ void PanelAudio::start_pending() {
 }
 
 void PanelAudio::poll() {
+  audition_.pump();  // what the engine's queue could not take last frame
   if (!job_ || !job_->done()) return;
   const std::string failed = job_->error();
   auto made = job_->take_result();

@@ -1,12 +1,13 @@
 // The design view on a real JACK server: dragging the mix slider from VeroClear to DM85 changes
 // what the actuator receives within 50 ms. An independent libjack client records the panel's output
-// with the server's frame clock. The two designs play at nearly one level (within about 1 dB), so
+// as it goes. The two designs play at nearly one level (within about 1 dB), so
 // the change is found by what is played, not how loud: the old design's voice is deterministic (its
 // seed, a constant stroke), so an offline render of it lines up with the recording sample for
 // sample (correlation near 1) until the voice is swapped out, and the recording is read in 10 ms
 // windows for the first one that no longer follows it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -86,9 +87,11 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   const auto [min, max] = view.mix_slider_rect();
   const float y = 0.5f * (min.y + max.y);
   frame([&](ImGuiIO& io) { io.MousePos = {min.x + 1.0f, y}; });
+  // The press already moves the slider (to where it was pressed): where the recording is just
+  // before it (the recorder's cycles run with the panel's; jack_frame_time's estimate from this
+  // thread ran up to 70 ms ahead of them on the dummy driver), then the drag to the right end.
+  const std::size_t at = ear.recorded();
   frame([&](ImGuiIO& io) { io.MousePos = {min.x + 1.0f, y}, io.MouseDown[0] = true; });
-  // The frame that moves the slider to its right end: the server's clock just before it.
-  const jack_nframes_t moved = jack_frame_time(ear.client());
   frame([&](ImGuiIO& io) { io.MousePos = {max.x + 5.0f, y}, io.MouseDown[0] = true; });
   frame([&](ImGuiIO& io) { io.MousePos = {max.x + 5.0f, y}, io.MouseDown[0] = false; });
   EXPECT_NEAR(view.predicted()->point.fraction_of("DM85"), 1.0, 1e-9);
@@ -97,40 +100,60 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   ASSERT_TRUE(ear.wait_full(1s));
   const double played_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - voice_started).count();
 
-  // Where the move is in the recording, by the server's frame clock.
-  std::size_t at = 0;
-  for (const auto& c : ear.cycles())
-    if (c.time <= moved) at = c.start + (moved - c.time);
   ASSERT_GT(at, 24000u);
   const auto& samples = ear.samples(0);
 
   // The old voice offline, from its start to past the recording's end; where the recording's
-  // samples 100 ms before the move lie in it (the best correlation over every lag).
+  // samples 100 ms (or a little more) before the move lie in it (the best correlation over every lag).
   view.set_playing(false);
   view.set_design(0.0, 2.5);
   const std::vector<float> reference = offline(*view.predicted(), played_s + 1.0);
-  const std::size_t probe = at - 4800, length = 1024;
-  std::size_t lag = 0;
+  // A glitch (a late callback skipping a period under load) inside the probe leaves no lag that
+  // fits it whole: the first of a few probes that fits is taken.
+  const std::size_t length = 1024;
+  std::size_t probe = 0, lag = 0;
   double best = -1.0;
-  for (std::size_t k = 0; k + length <= reference.size(); ++k) {
-    const double r = correlation(samples.data() + probe, reference.data() + k, length);
-    if (r > best) best = r, lag = k;
+  for (std::size_t back : {4800u, 7200u, 9600u, 12000u, 14400u}) {
+    probe = at - back;
+    best = -1.0;
+    for (std::size_t k = 0; k + length <= reference.size(); ++k) {
+      const double r = correlation(samples.data() + probe, reference.data() + k, length);
+      if (r > best) best = r, lag = k;
+    }
+    if (best > 0.99) break;
   }
   RecordProperty("old_voice_correlation", std::to_string(best));
   ASSERT_GT(best, 0.99) << "the recording does not follow the old design's offline render";
-  const auto follows = [&](std::size_t from) {  // the 10 ms window at `from` follows the old voice
-    const std::size_t k = lag + from - probe;
-    return k + 480 <= reference.size() && correlation(samples.data() + from, reference.data() + k, 480) > 0.9;
+  // The 10 ms window at `from` follows the old voice: it is in the render near where the probe's
+  // alignment puts it (within 40 ms: a late callback on a loaded machine skips a period or a few).
+  const auto best_near = [&](std::size_t from) {
+    const long expected = static_cast<long>(lag + from) - static_cast<long>(probe);
+    double r = -1.0;
+    for (long k = std::max(0L, expected - 1920); k <= expected + 1920; ++k)
+      if (static_cast<std::size_t>(k) + 480 <= reference.size())
+        r = std::max(r, correlation(samples.data() + from, reference.data() + k, 480));
+    return r;
   };
-  // Before the move the recording follows the old voice, window after window.
-  for (std::size_t from = at - 4800; from + 480 <= at; from += 480) EXPECT_TRUE(follows(from)) << "at " << from;
-  // After it, the first window that no longer follows it ends within 50 ms of the move.
+  const auto follows = [&](std::size_t from) { return best_near(from) > 0.9; };
+  // Before the move the recording follows the old voice, window after window from the probe (a
+  // window holding a skipped period cannot follow one lag whole: at most one in five may not).
+  std::size_t windows = 0, followed = 0;
+  for (std::size_t from = probe; from + 480 <= at; from += 480) {
+    ++windows;
+    followed += follows(from);
+  }
+  EXPECT_GE(followed * 5, windows * 4) << followed << " of " << windows << " windows before the move follow it";
+  // After it, the old voice is gone for good: the first window from which none of the next 100 ms
+  // follows it ends within 50 ms of the move (a lone window with a glitch does not count).
   std::optional<double> changed_ms;
-  for (std::size_t from = at; from + 480 <= samples.size(); from += 48)
-    if (!follows(from)) {
+  for (std::size_t from = at; from + 480 + 4800 <= samples.size(); from += 48) {
+    bool gone = true;
+    for (std::size_t later = from; later <= from + 4800 && gone; later += 480) gone = !follows(later);
+    if (gone) {
       changed_ms = static_cast<double>(from + 480 - at) / 48.0;
       break;
     }
+  }
   ASSERT_TRUE(changed_ms.has_value()) << "the recording still follows the old design after the move";
   RecordProperty("slider_to_signal_ms", std::to_string(*changed_ms));
   RecordProperty("slider_to_placement_and_voice_ms", std::to_string(update_ms));
