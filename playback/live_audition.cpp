@@ -7,10 +7,10 @@
 
 namespace nibrig::playback {
 
-LiveAudition::LiveAudition(rt::EngineSettings settings) : settings_(settings) {
-  if (settings_.slots == 0) throw std::invalid_argument("a live audition needs at least one slot");
-  engine_ = std::make_unique<rt::Engine>(settings_);
-  names_.assign(settings_.slots, "");
+LiveAudition::LiveAudition(rt::EngineSettings settings) {
+  if (settings.slots == 0) throw std::invalid_argument("a live audition needs at least one slot");
+  engine_ = std::make_unique<rt::Engine>(settings);
+  names_.assign(settings.slots, "");
   scratch_.assign(256, 0.0f);  // a block to drain the queue with when no device calls the engine
 }
 

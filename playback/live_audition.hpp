@@ -75,7 +75,6 @@ class LiveAudition {
   void deliver(Pending pending);
 
   std::deque<Pending> pending_;
-  rt::EngineSettings settings_;
   std::unique_ptr<rt::Engine> engine_;
   std::unique_ptr<AudioOutput> output_;
   std::vector<std::string> names_;

@@ -10,27 +10,21 @@
 #include <numeric>
 #include <thread>
 
-#include "model/io/catalog_file.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/playback/jack_stream_settings.hpp"
+#include "tests/rt/test_voices.hpp"
 #include "tests/support/jack_server.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace nibrig::playback {
 namespace {
 
 using namespace std::chrono_literals;
 
-model::modal::ModalModel small_stylus() {
-  const double tau = 2 * 3.141592653589793;
-  return {{tau * 92.7, tau * 250.0, tau * 1457.5}, {0.36, 0.05, 0.3}, {23.3, 10.0, 33.1}, {0.40, 0.30, 5.1}};
-}
+using rt::testing::small_stylus;
 
-const model::io::VelocitySpectrum& spectrum(const std::string& tool) {
-  static const auto catalog = model::io::read_catalog(test::assets_dir() / "default_catalog.json");
-  for (const auto& p : catalog.pairings)
-    if (p.tool == tool && p.surface == "note" && p.vibration) return p.vibration->spectrum;
-  throw std::runtime_error("no " + tool + "/note in the bundled catalog");
+const model::io::VelocitySpectrum& cryon_on_note() {
+  static const auto spectrum = rt::testing::catalog_spectrum("cryon", "note");
+  return spectrum;
 }
 
 // The same tool four times as strong: slot 1 then plays 12 dB louder, which tells a switch apart
@@ -67,8 +61,8 @@ TEST(LiveAudition, PlaysTheLoadedToolSwitchesSlotsAndFallsSilentWhenTheContactSt
   const auto before = record("audition:outport 0", 9600);
   EXPECT_EQ(rms_of_last(before, before.size(), before.size()), 0.0);
 
-  audition.load(0, {"cryon", small_stylus(), spectrum("cryon")}, 7);
-  const auto louder = four_times(spectrum("cryon"));
+  audition.load(0, {"cryon", small_stylus(), cryon_on_note()}, 7);
+  const auto louder = four_times(cryon_on_note());
   audition.load(1, {"cryon x4", small_stylus(), louder}, 8);
   audition.set_contact(0.1, 2.2);
   EXPECT_EQ(audition.names()[0], "cryon");
@@ -106,7 +100,7 @@ TEST(LiveAudition, ACommandNeverWaitsForTheAudioThread) {
     std::this_thread::sleep_for(10ms);
   ASSERT_EQ(audition.output_status(), OutputStatus::lost);
   for (int i = 0; i < 1000; ++i) audition.set_contact(0.05, 2.2);
-  audition.load(1, {"cryon", small_stylus(), spectrum("cryon")}, 1);
+  audition.load(1, {"cryon", small_stylus(), cryon_on_note()}, 1);
   for (int i = 0; i < 500; ++i) audition.select(i % 2);
   const std::size_t held = audition.pump();
   EXPECT_GT(held, 0u);  // the queue (256 commands) filled; the rest waits here
@@ -124,12 +118,12 @@ TEST(LiveAudition, WithoutADeviceEveryCommandStillGoesThrough) {
   EXPECT_FALSE(audition.output_stats().has_value());
   // More commands than the engine's queue holds: each is drained by the caller.
   for (int i = 0; i < 600; ++i) audition.set_contact(0.05 + 1e-4 * i, 2.2);
-  audition.load(2, {"cryon", small_stylus(), spectrum("cryon")}, 1);
+  audition.load(2, {"cryon", small_stylus(), cryon_on_note()}, 1);
   audition.select(2);
   EXPECT_EQ(audition.selected(), 2u);
   EXPECT_EQ(audition.names()[2], "cryon");
   EXPECT_THROW(audition.select(3), std::invalid_argument);
-  EXPECT_THROW(audition.load(3, {"cryon", small_stylus(), spectrum("cryon")}, 1), std::invalid_argument);
+  EXPECT_THROW(audition.load(3, {"cryon", small_stylus(), cryon_on_note()}, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
   app.add_option("--height", o.height, "window height in pixels")->check(cli::whole_in_range(240, 8192, "pixels"));
   app.add_option("--api", o.device_api, "audio API of the actuator (jack, alsa, pulse)");
   app.add_option("--device", o.device, "audio device of the actuator, by name");
-  app.add_flag("--start-rig", o.start_rig,
+  app.add_flag("--start-rig", o.setup.start_rig,
                "start the rig view's live comparison at once (the simulated rig, 8 times real time); a "
                "screenshot of the rig view is then taken half way through");
   try {
@@ -63,7 +63,6 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
     o.setup.design.fraction_points = static_cast<std::size_t>(grid[0]);
     o.setup.design.tip_points = static_cast<std::size_t>(grid[1]);
   }
-  o.setup.start_rig = o.start_rig;
   if (!o.device_api.empty() || !o.device.empty()) o.setup.device = DeviceRequest{o.device_api, o.device, 1, 256};
   exit_code = 0;
   return o;

@@ -20,7 +20,6 @@ struct PanelOptions {
   double settle_timeout_s = 900.0;  // longest wait for the view's background work
   int width = 1280, height = 800;
   std::string device_api, device;  // opened at start when either is given
-  bool start_rig = false;          // the rig view's run starts at once (the simulated rig)
 };
 
 // Parses argv; on --help prints and returns nullopt with exit_code 0; on a usage error prints

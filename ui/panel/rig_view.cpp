@@ -103,7 +103,7 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     std::optional<rig::ComparisonTable> table;
     if (live.table_version() != seen_version) seen_version = live.table_version(), table = live.table();
     std::lock_guard lock(feed->mutex);
-    if (feed->frequencies_hz.empty()) feed->frequencies_hz = live.frequencies_hz(), feed->bins = live.frequencies_hz().size();
+    if (feed->frequencies_hz.empty()) feed->frequencies_hz = live.frequencies_hz();
     feed->measured_db.insert(feed->measured_db.end(), rows.measured_db.begin(), rows.measured_db.end());
     feed->simulated_db.insert(feed->simulated_db.end(), rows.simulated_db.begin(), rows.simulated_db.end());
     if (table) feed->table = std::move(table);
@@ -143,8 +143,10 @@ void RigView::stop() { cancel_->store(true); }
 
 void RigView::take_feed() {
   std::vector<float> measured, simulated;
+  std::size_t bins = 0;
   {
     std::lock_guard lock(feed_->mutex);
+    bins = feed_->frequencies_hz.size();
     if (shown_hz_.empty() && !feed_->frequencies_hz.empty())
       for (double f : feed_->frequencies_hz)
         if (f <= kShownMaxHz) shown_hz_.push_back(f);
@@ -158,14 +160,15 @@ void RigView::take_feed() {
     simulated_name_ = feed_->simulated_name;
   }
   if (shown_hz_.empty() || measured.empty()) return;
-  const std::size_t bins = feed_->bins, shown = shown_hz_.size();
+  const std::size_t shown = shown_hz_.size();
   if (!measured_) {
     measured_ = std::make_unique<Waterfall>(shown, kWaterfallRows, Waterfall::Scale::sequential, kLowDb, kHighDb);
     simulated_ = std::make_unique<Waterfall>(shown, kWaterfallRows, Waterfall::Scale::sequential, kLowDb, kHighDb);
     difference_ = std::make_unique<Waterfall>(shown, kWaterfallRows, Waterfall::Scale::diverging, 0.0f, kDifferenceSpanDb);
   }
   std::vector<float> diff(shown);
-  for (std::size_t r = 0; r + 1 <= measured.size() / bins && r + 1 <= simulated.size() / bins; ++r) {
+  const std::size_t rows = std::min(measured.size(), simulated.size()) / bins;
+  for (std::size_t r = 0; r < rows; ++r) {
     const float* m = measured.data() + r * bins;
     const float* s = simulated.data() + r * bins;
     for (std::size_t k = 0; k < shown; ++k) diff[k] = s[k] - m[k];

@@ -38,8 +38,7 @@ struct RigChoice {
 struct RigFeed {
   std::mutex mutex;
   std::vector<double> frequencies_hz;
-  std::vector<float> measured_db, simulated_db;  // new rows × all bins
-  std::size_t bins = 0;
+  std::vector<float> measured_db, simulated_db;  // new rows × frequencies_hz.size()
   std::deque<float> speed_mm_s, force_n;  // the newest frames, decimated to 100 Hz
   std::optional<rig::ComparisonTable> table;
   rig::CaptureProgress progress;

@@ -5,38 +5,22 @@
 #include <GL/glext.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <stdexcept>
+
+#include "ui/report/colour_maps.hpp"
 
 namespace nibrig::ui::panel {
 
 namespace {
-
-// Viridis at nine evenly spaced points (matplotlib's table), linearly interpolated between them.
-constexpr std::array<std::array<float, 3>, 9> kViridis{{{0.267f, 0.005f, 0.329f},
-                                                          {0.283f, 0.141f, 0.458f},
-                                                          {0.254f, 0.265f, 0.530f},
-                                                          {0.207f, 0.372f, 0.553f},
-                                                          {0.164f, 0.471f, 0.558f},
-                                                          {0.128f, 0.567f, 0.551f},
-                                                          {0.135f, 0.659f, 0.518f},
-                                                          {0.478f, 0.821f, 0.318f},
-                                                          {0.993f, 0.906f, 0.144f}}};
 
 std::uint8_t byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
 }  // namespace
 
 Rgba sequential_colour(float value, float lo, float hi) {
-  float u = (value - lo) / (hi - lo);
-  if (!std::isfinite(u)) u = 0.0f;
-  u = std::clamp(u, 0.0f, 1.0f) * static_cast<float>(kViridis.size() - 1);
-  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(u), kViridis.size() - 2);
-  const float t = u - static_cast<float>(i);
-  const auto& a = kViridis[i];
-  const auto& b = kViridis[i + 1];
-  return {byte(a[0] + t * (b[0] - a[0])), byte(a[1] + t * (b[1] - a[1])), byte(a[2] + t * (b[2] - a[2])), 255};
+  const report::Rgb c = report::viridis_at((value - lo) / (hi - lo));  // clamped, NaN as the low end
+  return {static_cast<std::uint8_t>(c.r), static_cast<std::uint8_t>(c.g), static_cast<std::uint8_t>(c.b), 255};
 }
 
 Rgba diverging_colour(float value, float span) {

@@ -16,7 +16,8 @@ struct Rgba {
   bool operator==(const Rgba&) const = default;
 };
 
-// Viridis (perceptually uniform, readable in grey) of value in [lo, hi], clamped.
+// Viridis (ui/report/colour_maps.hpp: perceptually uniform, readable in grey) of value in [lo, hi],
+// clamped.
 Rgba sequential_colour(float value, float lo, float hi);
 // Blue (−span) through near-white (0) to red (+span), clamped: a difference in dB.
 Rgba diverging_colour(float value, float span);

@@ -19,6 +19,7 @@
 #include "playback/playback_session.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
+#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/panel_window.hpp"
@@ -51,18 +52,11 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_design_playback";
   std::filesystem::remove_all(dir);
   ::setenv("NIBRIG_CACHE", (dir / "cache").c_str(), 1);
-  WindowSettings w;
-  w.visible = false;
-  w.vsync = false;
-  PanelWindow window(w);
+  PanelWindow window(testing::hidden_window());
   PanelSetup setup;
   setup.space = testing::write_descriptor_space(dir);
   setup.device = DeviceRequest{"jack", "system", 1, 64};
-  setup.design.fraction_points = 3;
-  setup.design.tip_points = 3;
-  setup.design.mesh_size_m = 0.004;
-  setup.design.modes = 32;
-  setup.design.error_points = 1;
+  setup.design = testing::coarse_design(1);
   Panel panel(setup);
   panel.show(View::design);
   auto& view = panel.design_view();

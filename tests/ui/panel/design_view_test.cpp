@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <thread>
 
+#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "tests/ui/report/png_reader.hpp"
 #include "ui/panel/panel.hpp"
@@ -19,27 +20,14 @@ namespace {
 
 using namespace std::chrono_literals;
 
-DesignSettings coarse() {
-  DesignSettings d;
-  d.fraction_points = 3;
-  d.tip_points = 3;
-  d.mesh_size_m = 0.004;
-  d.modes = 32;
-  d.error_points = 2;
-  return d;
-}
-
 TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_design";
   std::filesystem::remove_all(dir);
   ::setenv("NIBRIG_CACHE", (dir / "cache").c_str(), 1);
-  WindowSettings w;
-  w.visible = false;
-  w.vsync = false;
-  PanelWindow window(w);
+  PanelWindow window(testing::hidden_window());
   PanelSetup setup;
   setup.space = testing::write_descriptor_space(dir);
-  setup.design = coarse();
+  setup.design = testing::coarse_design();
   Panel panel(setup);
   panel.show(View::design);
   auto& view = panel.design_view();

@@ -10,6 +10,7 @@
 
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
+#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/panel_window.hpp"
@@ -22,13 +23,7 @@ using namespace std::chrono_literals;
 struct Session {
   PanelWindow window;
   Panel panel;
-  Session(const PanelSetup& setup) : window(hidden()), panel(setup) {}
-  static WindowSettings hidden() {
-    WindowSettings w;
-    w.visible = false;
-    w.vsync = false;
-    return w;
-  }
+  Session(const PanelSetup& setup) : window(testing::hidden_window()), panel(setup) {}
   void frame(const std::function<void(ImGuiIO&)>& input = {}) {
     window.begin_frame(input);
     panel.draw();

@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "tests/ui/report/png_reader.hpp"
 #include "ui/panel/panel.hpp"
@@ -81,16 +82,9 @@ void draw_until(PanelWindow& window, Panel& panel, const std::function<bool()>& 
   window.end_frame(png);
 }
 
-WindowSettings hidden() {
-  WindowSettings w;
-  w.visible = false;
-  w.vsync = false;
-  return w;
-}
-
 TEST(PanelWindow, EachToolIsDrawnWhereTheSpacePlacesItInItsSurfacesColour) {
   const auto dir = scratch("space_points");
-  PanelWindow window(hidden());
+  PanelWindow window(testing::hidden_window());
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   Panel panel(setup);
@@ -119,7 +113,7 @@ TEST(PanelWindow, EachToolIsDrawnWhereTheSpacePlacesItInItsSurfacesColour) {
 TEST(PanelWindow, TheRigsWaterfallShowsTheAnalysedLevelAtAKnownBin) {
   const auto dir = scratch("rig_waterfall");
   ::setenv("XDG_DATA_HOME", (dir / "data").c_str(), 1);  // the run's session goes here
-  PanelWindow window(hidden());
+  PanelWindow window(testing::hidden_window());
   PanelSetup setup;
   setup.start_rig = true;
   Panel panel(setup);
