@@ -1,0 +1,35 @@
+// The design tests' shared cache: the demo's forcing model and the coarse design grid
+// (panel_test_setup.hpp) are solved once, by DesignCache.SolvesTheCoarseGridOnceForTheDesignTests
+// (a CTest fixture, tests/CMakeLists.txt), and the design tests only read them. Solving takes
+// three minutes under the sanitizers; done in each test, it also ran beside the JACK session's
+// timing check and loaded the machine while the slider's latency was being measured.
+#pragma once
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <thread>
+
+#include "ui/panel/panel.hpp"
+
+namespace nibrig::ui::panel::testing {
+
+inline std::filesystem::path shared_design_cache() {
+  return std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_design_cache";
+}
+
+// Points the user cache at the shared one (a test run alone, outside CTest, fills it itself).
+inline void use_shared_design_cache() { ::setenv("NIBRIG_CACHE", shared_design_cache().c_str(), 1); }
+
+// Draws frames until the design view's grid is loaded and its error measured (the panel settled)
+// or the deadline passes.
+inline void draw_until_design_settled(Panel& panel, const std::function<void()>& frame,
+                                      std::chrono::steady_clock::time_point deadline) {
+  while (!(panel.settled() && panel.design_view().ready()) && std::chrono::steady_clock::now() < deadline) {
+    frame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+}  // namespace nibrig::ui::panel::testing
