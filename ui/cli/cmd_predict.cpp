@@ -20,6 +20,7 @@
 #include "model/io/json_fields.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
+#include "model/design/prediction_file.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/interpolation_report.hpp"
@@ -91,7 +92,7 @@ void run_predict(const PredictOptions& o) {
                            design::label(point), o.surface, tool.design_name, tool.first_mode_hz,
                            describe_descriptors(tool), seconds_since(start));
 
-  nlohmann::json j = prediction_json(tool, threshold.source());
+  nlohmann::json j = design::prediction_json(tool, threshold.source());
 
   if (const auto measured = measurement(o, catalog)) {
     const auto& [label, spectrum] = *measured;

@@ -15,6 +15,7 @@
 #include "model/mechanics/stylus_description.hpp"
 #include "model/space/space_file.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/design/prediction_file.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_figures.hpp"
@@ -88,7 +89,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
   const auto& threshold = *prediction->threshold;
   const design::PredictedTool predicted =
       design::predict_tool(setup, design::parse_design_point(kInterpolated), "office");
-  write_json_file(dir / "predicted.json", prediction_json(predicted, threshold.source()));
+  write_json_file(dir / "predicted.json", design::prediction_json(predicted, threshold.source()));
   plot_velocity_spectrum(predicted.spectrum, fmt::format("Predicted: {} on office", kInterpolated),
                          dir / "predicted_spectrum.png");
 

@@ -15,6 +15,7 @@
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/prediction_scores.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/design/prediction_file.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
@@ -118,7 +119,7 @@ void run_space_embed(const SpaceEmbedOptions& o) {
   if (!o.predicted.empty()) {
     const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
     for (const auto& file : o.predicted) {
-      ReadPrediction read = read_prediction(file, threshold);
+      model::design::ReadPrediction read = model::design::read_prediction(file, threshold);
       if (read.descriptor_errors.empty())
         spdlog::warn("{} has no descriptor_error_covariance: placed as if measured", file.string());
       else
