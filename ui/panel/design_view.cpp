@@ -9,6 +9,8 @@
 
 #include "model/design/default_forcing.hpp"
 #include "model/design/design_grid_file.hpp"
+#include "model/design/prediction_file.hpp"
+#include "model/io/atomic_file.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/space/bootstrap.hpp"
 #include "ui/panel/widgets.hpp"
@@ -60,6 +62,11 @@ DesignView::~DesignView() {
   // The jobs use the inputs and the grid: stopped and joined before those go.
   error_job_.reset();
   job_.reset();
+}
+
+void DesignView::stop_work() {
+  if (job_) job_->cancel();
+  if (error_job_) error_job_->cancel();
 }
 
 void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map) {
@@ -169,6 +176,40 @@ void DesignView::search(bool two_d) {
     error_ = e.what();
   }
   last_search_ms_ = milliseconds_since(start);
+}
+
+std::string DesignView::save_prediction(const std::filesystem::path& file) const {
+  if (!predicted_ || !inputs_) return "there is no design to save yet (the grid is not ready)";
+  try {
+    const std::string source = inputs_->threshold ? inputs_->threshold->source() : std::string();
+    model::io::write_file_atomically(file, design::prediction_json(*predicted_, source).dump(2) + "\n");
+    return {};
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+std::string DesignView::open_prediction(const std::filesystem::path& file) {
+  if (!inputs_ || !grid_ || !inputs_->threshold) return "the design grid is not ready yet";
+  try {
+    const auto read = design::read_prediction(file, *inputs_->threshold);
+    const auto& axes = grid_->axes;
+    for (const auto& share : read.point.mix)
+      if (share.material != axes.material_a && share.material != axes.material_b)
+        return file.string() + ": the design " + design::label(read.point) + " has " + share.material +
+               ", and this grid mixes " + axes.material_a + " and " + axes.material_b + " only";
+    const double tip_mm = read.point.tip_diameter_m * 1e3;
+    if (tip_mm < axes.tips_m.front() * 1e3 - 1e-9 || tip_mm > axes.tips_m.back() * 1e3 + 1e-9) {
+      char range[96];
+      std::snprintf(range, sizeof range, "the tip %.3g mm is outside the grid's %.3g-%.3g mm", tip_mm,
+                    axes.tips_m.front() * 1e3, axes.tips_m.back() * 1e3);
+      return file.string() + ": " + range;
+    }
+    set_design(read.point.fraction_of(axes.material_b), tip_mm);
+    return error_;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
 }
 
 void DesignView::draw() {

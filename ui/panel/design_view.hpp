@@ -54,6 +54,10 @@ class DesignView {
   bool ready() const { return inputs_ != nullptr; }
   bool preparing() const { return job_ != nullptr; }
   bool measuring_error() const { return error_job_ != nullptr; }
+  // Asks its background work (the grid, the error measurement) to stop; working() is true until
+  // that work has ended. The panel replaces a view this way without waiting for a FEM solve.
+  void stop_work();
+  bool working() const { return (job_ && !job_->done()) || (error_job_ && !error_job_->done()); }
 
   // The sliders (λ = fraction of material B, tip in mm) and the target, as a person sets them.
   void set_design(double fraction, double tip_mm);
@@ -61,6 +65,13 @@ class DesignView {
   void set_playing(bool play) { play_ = play; }
   // Runs the line search (along the mix at the current tip) or the 2-D search; the path is drawn.
   void search(bool two_d);
+  // Writes the design shown as a prediction file (model/design/prediction_file.hpp: what `nibrig
+  // predict` writes, so `space embed` and `render --tool` take it). Returns the error, if any.
+  std::string save_prediction(const std::filesystem::path& file) const;
+  // Sets the sliders to the design a prediction file names. Returns the error, if any: a file that
+  // cannot be read (named with its field), a design that mixes other materials than the grid's two,
+  // a tip outside the grid.
+  std::string open_prediction(const std::filesystem::path& file);
 
   // What the view shows, for tests and the status: the current prediction and its placement,
   // how long the last slider move took to a placement and a loaded sound, the last search, the

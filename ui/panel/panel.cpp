@@ -1,12 +1,17 @@
 #include "ui/panel/panel.hpp"
 
+#include <GLFW/glfw3.h>
+
 #include <atomic>
 #include <cstdio>
 #include <stop_token>
 
+#include "model/design/default_forcing.hpp"
+#include "model/forcing/forcing_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/io/user_cache.hpp"
+#include "model/space/space_fit_file.hpp"
 #include "ui/panel/devices_view.hpp"
 #include "ui/panel/pad_view.hpp"
 #include "ui/panel/rig_view.hpp"
@@ -24,6 +29,19 @@ std::filesystem::path sessions_folder() {
   const std::filesystem::path base = data && *data ? std::filesystem::path(data)
                                                    : std::filesystem::path(home && *home ? home : ".") / ".local" / "share";
   return base / "nibrig" / "sessions";
+}
+
+// Where a file dialog starts: the folder of the file in use, else the working folder.
+std::filesystem::path folder_of(const std::filesystem::path& file) { return file.empty() ? file : file.parent_path(); }
+
+// Model-side progress (a step, done of total) on a job's bar and message.
+model::space::StepProgress step_progress(JobControl& control, bool two_steps) {
+  return [&control, two_steps](const std::string& step, std::size_t done, std::size_t total) {
+    const double part = total ? static_cast<double>(done) / static_cast<double>(total) : 0.0;
+    const bool second = step != "fitting starts";
+    control.progress(two_steps ? 0.5 * part + (second ? 0.5 : 0.0) : part);
+    control.message(step + ": " + std::to_string(done) + " of " + std::to_string(total));
+  };
 }
 
 }  // namespace
@@ -73,11 +91,13 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
 Panel::~Panel() {
   // The views that play stop using the audio before it goes.
   design_view_.reset();
+  retired_designs_.clear();
   pad_view_.reset();
 }
 
 void Panel::load_space(const std::filesystem::path& file) {
   space_file_ = file;
+  showing_default_ = false;
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "loading the space", [file, catalog = setup_.catalog](JobControl& control) {
         control.message("reading " + file.string());
@@ -87,6 +107,7 @@ void Panel::load_space(const std::filesystem::path& file) {
 
 void Panel::load_default_space() {
   space_file_.clear();
+  showing_default_ = true;
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "the default space", [catalog = setup_.catalog](JobControl& control) {
         // The cancel flag the model checks follows the job's stop request.
@@ -103,6 +124,158 @@ void Panel::load_default_space() {
       });
 }
 
+void Panel::fit_space(const SpaceFitRequest& r) {
+  space_file_.clear();
+  showing_default_ = false;
+  space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
+      "fitting a space", [r, catalog = setup_.catalog](JobControl& control) {
+        std::atomic<bool> cancel{false};
+        std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
+        control.message("reading " + r.judgments.string());
+        const std::filesystem::path descriptors =
+            r.descriptors ? model::io::or_default(catalog, model::io::default_catalog) : std::filesystem::path();
+        const auto inputs = model::space::read_space_inputs(r.judgments, descriptors, static_cast<std::size_t>(r.dims),
+                                                            r.descriptors ? r.lambda : 0.0);
+        model::space::SpaceFitSettings settings;
+        settings.starts = r.starts;
+        settings.seed = static_cast<unsigned>(r.seed);
+        settings.bootstrap = r.bootstrap;
+        settings.cancel = &cancel;
+        auto fitted = model::space::fit_space_file(inputs, r.judgments, descriptors, settings,
+                                                   step_progress(control, r.bootstrap > 0));
+        auto loaded = loaded_space_of(std::move(fitted.file), catalog,
+                                      "space fitted to " + r.judgments.filename().string() + " (not saved)");
+        loaded.warnings = std::move(fitted.warnings);
+        return loaded;
+      });
+}
+
+void Panel::file_job(std::string title, std::function<Apply(JobControl&)> work) {
+  if (file_job_) {
+    error_ = "wait for " + file_job_->title() + " to finish";
+    return;
+  }
+  notice_.clear();
+  file_job_ = std::make_unique<BackgroundJob<Apply>>(std::move(title), std::move(work));
+}
+
+void Panel::save_space(const std::filesystem::path& file) {
+  if (!space_) {
+    error_ = "there is no space to save yet";
+    return;
+  }
+  file_job("saving the space", [space = *space_, file](JobControl&) -> Apply {
+    model::space::write_space_file(file, space);
+    return [file](Panel& p) {
+      p.space_file_ = file;
+      p.showing_default_ = false;
+      p.notice_ = "wrote " + file.string();
+    };
+  });
+}
+
+void Panel::open_catalog(const std::filesystem::path& file) {
+  file_job("opening the catalog", [file, forcing = setup_.forcing](JobControl& control) -> Apply {
+    control.message("reading " + file.string());
+    model::design::ToolSoundOptions options;
+    options.catalog = file;
+    options.forcing_model = forcing;
+    auto sounds = std::make_shared<model::design::ToolSounds>(options);  // reads the catalog, or throws naming it
+    return [sounds, file, forcing](Panel& p) {
+      p.use_sources(sounds, file, forcing);
+      p.notice_ = "the catalog is " + file.string();
+    };
+  });
+}
+
+void Panel::open_forcing(const std::filesystem::path& file) {
+  file_job("opening the forcing model", [file, catalog = setup_.catalog](JobControl& control) -> Apply {
+    control.message("reading " + file.string());
+    model::forcing::read_forcing_model(file);  // the whole file checked before it is used
+    model::design::ToolSoundOptions options;
+    options.catalog = catalog;
+    options.forcing_model = file;
+    auto sounds = std::make_shared<model::design::ToolSounds>(options);
+    return [sounds, file, catalog](Panel& p) {
+      p.use_sources(sounds, catalog, file);
+      p.notice_ = "the forcing model is " + file.string();
+    };
+  });
+}
+
+void Panel::save_forcing(const std::filesystem::path& file) {
+  file_job("saving the forcing model",
+           [file, forcing = setup_.forcing, catalog = setup_.catalog](JobControl& control) -> Apply {
+             if (!forcing.empty()) {
+               model::forcing::write_forcing_model(file, model::forcing::read_forcing_model(forcing));
+             } else {  // the demo's, from the user cache (fitted there first if it is not yet)
+               model::design::DefaultsOptions defaults;
+               defaults.catalog = catalog;
+               defaults.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
+                 control.message("the default forcing model: " + step);
+                 control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+               };
+               model::forcing::write_forcing_model(file, model::design::default_forcing_model(defaults).value);
+             }
+             return [file](Panel& p) { p.notice_ = "wrote " + file.string(); };
+           });
+}
+
+void Panel::open_design(const std::filesystem::path& file) {
+  if (const std::string e = design_view_->open_prediction(file); !e.empty()) {
+    error_ = e;
+    return;
+  }
+  notice_ = "the design of " + file.string();
+  show(View::design);
+}
+
+void Panel::save_design(const std::filesystem::path& file) {
+  if (const std::string e = design_view_->save_prediction(file); !e.empty()) error_ = e;
+  else notice_ = "wrote " + file.string();
+}
+
+void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::filesystem::path catalog,
+                        std::filesystem::path forcing) {
+  setup_.catalog = std::move(catalog);
+  setup_.forcing = std::move(forcing);
+  error_.clear();
+  audio_->use_sounds(std::move(sounds));
+  rig_view_->set_files(setup_.catalog, setup_.forcing);
+  // The design view's grid depends on both: it starts again. The old one stops its work on its
+  // own thread and goes once that has ended (the UI does not wait for a FEM solve).
+  design_view_->stop_work();
+  retired_designs_.push_back(std::move(design_view_));
+  design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
+  // The tools of the space are placed from the catalog: placed again.
+  if (!space_file_.empty()) load_space(space_file_);
+  else if (showing_default_ || !space_) load_default_space();
+  else
+    space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
+        "placing the tools", [space = *space_, catalog = setup_.catalog](JobControl&) {
+          return loaded_space_of(space, catalog, "space fitted here (not saved)");
+        });
+}
+
+void Panel::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || files_.is_open()) return;
+  // ImGui 1.86's GLFW back end indexes io.KeysDown by GLFW's key codes.
+  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (io.KeyCtrl) {
+    for (int k = 0; k < 5; ++k)
+      if (pressed(GLFW_KEY_1 + k)) show(kViews[k]);
+    if (pressed(GLFW_KEY_O))
+      files_.open("Open a space", FileDialog::Mode::open, {".json"}, folder_of(space_file_),
+                  [this](const std::filesystem::path& f) { open_space(f); });
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+    if (pressed(GLFW_KEY_A + k)) audio_->select(static_cast<std::size_t>(k));
+  if (pressed(GLFW_KEY_SPACE)) audio_->stop();
+  if (pressed(GLFW_KEY_ENTER)) space_view_->play_chosen();
+}
+
 void Panel::show(View view) { requested_ = view; }
 
 bool Panel::settled() const {
@@ -111,33 +284,79 @@ bool Panel::settled() const {
     case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
     case View::devices: return devices_view_->listing().has_value();
     case View::design: return !space_job_ && design_view_->ready() && !design_view_->measuring_error();
+    case View::pad: return !file_job_;
     default: return true;
   }
 }
 
 void Panel::poll_jobs() {
   audio_->poll();
+  std::erase_if(retired_designs_, [](const auto& view) { return !view->working(); });
   if (space_job_ && space_job_->done()) {
     if (auto loaded = space_job_->take_result()) {
       for (const auto& w : loaded->warnings) error_ = w;
       design_view_->set_space(loaded->scene, loaded->map);
       space_view_->set_scene(std::move(loaded->scene));
+      space_ = std::move(loaded->file);
     } else {
       error_ = space_job_->error();
     }
     space_job_.reset();
   }
+  if (file_job_ && file_job_->done()) {
+    auto apply = file_job_->take_result();
+    const std::string failed = file_job_->error();
+    file_job_.reset();
+    if (apply && *apply) (*apply)(*this);
+    else error_ = failed;
+  }
 }
 
 void Panel::draw_menu() {
   if (!ImGui::BeginMenuBar()) return;
+  using Mode = FileDialog::Mode;
+  const auto chosen = [this](void (Panel::*action)(const std::filesystem::path&)) {
+    return [this, action](const std::filesystem::path& f) { (this->*action)(f); };
+  };
   if (ImGui::BeginMenu("File")) {
-    ImGui::InputText("path", open_path_, sizeof open_path_);
-    if (ImGui::MenuItem("Open space")) load_space(open_path_);
+    if (ImGui::MenuItem("Open space...", "Ctrl+O"))
+      files_.open("Open a space", Mode::open, {".json"}, folder_of(space_file_), chosen(&Panel::open_space));
     if (ImGui::MenuItem("The default space")) load_default_space();
+    if (ImGui::MenuItem("Fit a space from judgments...")) fit_window_ = true;
+    if (ImGui::MenuItem("Save space as...", nullptr, false, space_.has_value()))
+      files_.open("Save the space", Mode::save, {".json"}, folder_of(space_file_), chosen(&Panel::save_space));
+    ImGui::Separator();
+    if (ImGui::MenuItem("Open catalog..."))
+      files_.open("Open a catalog", Mode::open, {".json", ".json.gz"}, folder_of(setup_.catalog),
+                  chosen(&Panel::open_catalog));
+    if (ImGui::MenuItem("Open forcing model..."))
+      files_.open("Open a forcing model", Mode::open, {".json"}, folder_of(setup_.forcing), chosen(&Panel::open_forcing));
+    if (ImGui::MenuItem("Save forcing model as..."))
+      files_.open("Save the forcing model", Mode::save, {".json"}, folder_of(setup_.forcing),
+                  chosen(&Panel::save_forcing));
+    ImGui::Separator();
+    if (ImGui::MenuItem("Open design...", nullptr, false, design_view_->ready()))
+      files_.open("Open a design (a prediction file)", Mode::open, {".json"}, {}, chosen(&Panel::open_design));
+    if (ImGui::MenuItem("Save design as...", nullptr, false, design_view_->predicted().has_value()))
+      files_.open("Save the design (a prediction file)", Mode::save, {".json"}, {}, chosen(&Panel::save_design));
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Keys")) keys_window_ = true;
     ImGui::EndMenu();
   }
   ImGui::EndMenuBar();
+}
+
+void Panel::draw_fit_window() {
+  if (!fit_window_) return;
+  ImGui::SetNextWindowSize({560.0f, 0.0f}, ImGuiCond_Appearing);
+  if (ImGui::Begin("Fit a space from judgments", &fit_window_)) {
+    ImGui::TextWrapped("Triplet judgments (ours, Lagunas et al. or Salmon's CSV). The fit runs in the background; "
+                       "the space it makes is shown, and File > Save space as keeps it.");
+    if (space_fit_form(fit_request_, files_)) fit_space(fit_request_);
+  }
+  ImGui::End();
 }
 
 std::string Panel::status_line() const {
@@ -160,10 +379,12 @@ void Panel::draw_status() {
     if (progress_with_cancel("space-job", static_cast<float>(space_job_->progress()), space_job_->message().c_str()))
       space_job_.reset();
   }
+  if (file_job_) ImGui::ProgressBar(static_cast<float>(file_job_->progress()), {-1.0f, 0.0f}, file_job_->message().c_str());
   if (audio_->making_sounds())
     ImGui::ProgressBar(static_cast<float>(audio_->making_progress()), {-1.0f, 0.0f}, audio_->making_message().c_str());
   const std::string& problem = !error_.empty() ? error_ : audio_->error();
   if (!problem.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", problem.c_str());
+  else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
   ImGui::TextUnformatted(status_line().c_str());
   if (audio_->playing().size() > 1) {
     for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
@@ -176,6 +397,7 @@ void Panel::draw_status() {
 
 void Panel::draw() {
   poll_jobs();
+  handle_keys();
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->WorkPos);
   ImGui::SetNextWindowSize(viewport->WorkSize);
@@ -205,7 +427,21 @@ void Panel::draw() {
   }
   if (requested_ && current_ == *requested_) requested_.reset();
   draw_status();
+  files_.draw();
   ImGui::End();
+  draw_fit_window();
+  if (keys_window_) {
+    if (ImGui::Begin("Keys", &keys_window_, ImGuiWindowFlags_AlwaysAutoResize)) {
+      ImGui::TextUnformatted(
+          "A, B, C       switch between the tools compared\n"
+          "Enter         play the chosen tools again\n"
+          "Space         stop\n"
+          "Ctrl+1 ... 5  space, design, rig, pad, devices\n"
+          "Ctrl+O        open a space\n"
+          "(not while a text field has the keyboard)");
+    }
+    ImGui::End();
+  }
 }
 
 }  // namespace nibrig::ui::panel

@@ -1,10 +1,12 @@
 // nibrig-panel's contents: the five views as tabs of one full-window ImGui window, an error line
-// that shows what went wrong in a file or a device (never a crash), and the files a person opens.
+// that shows what went wrong in a file or a device (never a crash), the files a person opens and
+// saves (spaces, catalogs, forcing models, designs; a space fitted from judgments), and the keys.
 // Everything here runs on the UI thread and only draws and dispatches: loading, fitting, making
 // sounds and the rig run on worker threads (background_job.hpp), the sound on the audio thread.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,7 +15,9 @@
 #include "model/space/descriptor_map.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/design_view.hpp"
+#include "ui/panel/file_dialog.hpp"
 #include "ui/panel/panel_audio.hpp"
+#include "ui/panel/space_fit_form.hpp"
 #include "ui/panel/space_scene.hpp"
 #include "ui/panel/space_view.hpp"
 
@@ -51,8 +55,35 @@ class Panel {
   // Shown in the error line until something else goes wrong (e.g. a settings file that could not
   // be read).
   void set_error(std::string error) { error_ = std::move(error); }
-  // The space file open now (empty: none yet).
+  // The space file open now (empty: none yet, the default, or a fit not saved).
   const std::filesystem::path& space_file() const { return space_file_; }
+  // The catalog and forcing model in use (empty: the bundled catalog, the demo's forcing model).
+  const std::filesystem::path& catalog_file() const { return setup_.catalog; }
+  const std::filesystem::path& forcing_file() const { return setup_.forcing; }
+
+  // What the File menu does. Each returns at once: reading, fitting and writing run in the
+  // background, and what goes wrong shows in the error line. A catalog or forcing model is read
+  // whole before it replaces the one in use, so a bad file changes nothing.
+  void open_space(const std::filesystem::path& file) { load_space(file); }
+  void open_default_space() { load_default_space(); }
+  void fit_space(const SpaceFitRequest& request);
+  void save_space(const std::filesystem::path& file);
+  void open_catalog(const std::filesystem::path& file);
+  void open_forcing(const std::filesystem::path& file);
+  void save_forcing(const std::filesystem::path& file);
+  void open_design(const std::filesystem::path& file);
+  void save_design(const std::filesystem::path& file);
+  // True while a file is being read, written or a space fitted.
+  bool busy() const { return space_job_ != nullptr || file_job_ != nullptr; }
+  // The last thing a file operation said ("wrote …"), shown in the status line.
+  const std::string& notice() const { return notice_; }
+  FileDialog& file_dialog() { return files_; }
+  SpaceFitRequest& fit_request() { return fit_request_; }
+
+  // The keys (also listed under Help): A, B, C switch between the tools compared; space stops what
+  // plays or plays the chosen tools again; ctrl+1…5 show a view; ctrl+O opens a space. Not while
+  // a text field has the keyboard.
+  void handle_keys();
   // The status line under the views: the device and its state, what plays, the stroke.
   std::string status_line() const;
 
@@ -67,8 +98,15 @@ class Panel {
  private:
   void load_space(const std::filesystem::path& file);
   void load_default_space();
+  // Runs `work` in the background; what it returns is applied on the UI thread when done.
+  using Apply = std::function<void(Panel&)>;
+  void file_job(std::string title, std::function<Apply(JobControl&)> work);
+  // Another catalog or forcing model: the views that use them start again with them.
+  void use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::filesystem::path catalog,
+                   std::filesystem::path forcing);
   void poll_jobs();
   void draw_menu();
+  void draw_fit_window();
   void draw_status();
 
   PanelSetup setup_;
@@ -79,11 +117,17 @@ class Panel {
   std::unique_ptr<PadView> pad_view_;
   std::unique_ptr<DevicesView> devices_view_;
   std::unique_ptr<BackgroundJob<LoadedSpace>> space_job_;
+  std::unique_ptr<BackgroundJob<Apply>> file_job_;
   std::unique_ptr<DesignView> design_view_;
+  std::vector<std::unique_ptr<DesignView>> retired_designs_;  // replaced, their work ending
+  std::optional<model::space::SpaceFile> space_;  // the space shown, for Save space as
   View current_ = View::space;
   std::optional<View> requested_;
-  std::string error_;
-  char open_path_[512] = {};
+  std::string error_, notice_;
+  FileDialog files_;
+  SpaceFitRequest fit_request_;
+  bool showing_default_ = false;
+  bool fit_window_ = false, keys_window_ = false;
 };
 
 }  // namespace nibrig::ui::panel

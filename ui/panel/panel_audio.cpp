@@ -13,6 +13,16 @@ PanelAudio::PanelAudio(model::design::ToolSoundOptions sounds)
 
 PanelAudio::~PanelAudio() {
   job_.reset();  // stops and joins the job before the sounds it uses go
+  retired_.clear();
+}
+
+void PanelAudio::use_sounds(std::shared_ptr<model::design::ToolSounds> sounds) {
+  if (job_) {
+    job_->cancel();
+    retired_.push_back(std::move(job_));
+  }
+  pending_.reset();
+  sounds_ = std::move(sounds);
 }
 
 std::string PanelAudio::open(const DeviceRequest& device) {
@@ -83,6 +93,7 @@ void PanelAudio::start_pending() {
 
 void PanelAudio::poll() {
   audition_.pump();  // what the engine's queue could not take last frame
+  std::erase_if(retired_, [](const auto& job) { return job->done(); });
   if (!job_ || !job_->done()) return;
   const std::string failed = job_->error();
   auto made = job_->take_result();

@@ -69,6 +69,10 @@ class PanelAudio {
 
   // The catalog the sounds come from (read when constructed).
   const model::io::Catalog& catalog() const { return sounds_->catalog(); }
+  // Sounds come from `sounds` from now on (another catalog or forcing model, opened in the window);
+  // what plays keeps playing. A sound being made with the old ones finishes on its own thread and
+  // is dropped: the UI does not wait for it.
+  void use_sounds(std::shared_ptr<model::design::ToolSounds> sounds);
 
  private:
   using Sounds = std::vector<model::design::ToolSound>;
@@ -80,6 +84,7 @@ class PanelAudio {
   playback::LiveAudition audition_;
   std::shared_ptr<model::design::ToolSounds> sounds_;  // shared with the job that uses it
   std::unique_ptr<BackgroundJob<Sounds>> job_;
+  std::vector<std::unique_ptr<BackgroundJob<Sounds>>> retired_;  // superseded by use_sounds, finishing
   std::optional<Request> pending_;
   std::vector<ToolChoice> requested_, playing_;
   rt::StrokeRequest stroke_;

@@ -53,6 +53,11 @@ class RigView {
   void draw();
   void start();
   void stop();
+  // The catalog and forcing model of the next run (a run going on keeps its own).
+  void set_files(std::filesystem::path catalog, std::filesystem::path forcing) {
+    catalog_ = std::move(catalog);
+    forcing_ = std::move(forcing);
+  }
   bool running() const { return job_ && !job_->done(); }
   // Of the run going on (0 before the capture starts), or 1 after it.
   double progress() const { return job_ ? job_->progress() : 1.0; }

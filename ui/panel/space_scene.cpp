@@ -36,15 +36,19 @@ SpaceScene scene_of(const space::SpaceTools& tools, std::size_t dims, const std:
   return scene;
 }
 
-LoadedSpace load_space_file(const std::filesystem::path& file, const std::filesystem::path& catalog_file) {
+LoadedSpace loaded_space_of(space::SpaceFile s, const std::filesystem::path& catalog_file, const std::string& title) {
   const auto catalog_path = model::io::or_default(catalog_file, model::io::default_catalog);
   const auto catalog = model::io::read_catalog(catalog_path);
-  const auto s = space::read_space_file(file);
   LoadedSpace loaded;
-  loaded.scene = scene_of(space::space_tools(s, catalog, catalog_path), static_cast<std::size_t>(s.coordinates.rows()),
-                          "space " + file.string());
+  loaded.scene =
+      scene_of(space::space_tools(s, catalog, catalog_path), static_cast<std::size_t>(s.coordinates.rows()), title);
   loaded.map = s.descriptor_map;
+  loaded.file = std::move(s);
   return loaded;
+}
+
+LoadedSpace load_space_file(const std::filesystem::path& file, const std::filesystem::path& catalog_file) {
+  return loaded_space_of(space::read_space_file(file), catalog_file, "space " + file.string());
 }
 
 LoadedSpace load_default_space(const model::design::DefaultsOptions& options) {
@@ -54,6 +58,7 @@ LoadedSpace load_default_space(const model::design::DefaultsOptions& options) {
                           static_cast<std::size_t>(cached.value.space.coordinates.rows()),
                           "the demo's space: a SIMULATED observer (no human judgments are bundled)");
   loaded.map = cached.value.space.descriptor_map;
+  loaded.file = cached.value.space;
   loaded.warnings = cached.warnings;
   return loaded;
 }

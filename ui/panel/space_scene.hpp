@@ -9,6 +9,7 @@
 
 #include "model/design/cached_default.hpp"
 #include "model/space/descriptor_map.hpp"
+#include "model/space/space_file.hpp"
 #include "model/space/space_tools.hpp"
 #include "ui/panel/space_view.hpp"
 
@@ -17,11 +18,16 @@ namespace nibrig::ui::panel {
 SpaceScene scene_of(const model::space::SpaceTools& tools, std::size_t dims, const std::string& title);
 
 struct LoadedSpace {
+  model::space::SpaceFile file;  // the space itself, as "Save space as" writes it
   SpaceScene scene;
   std::optional<model::space::DescriptorMap> map;
-  std::vector<std::string> warnings;  // a cache that could not be read or written
+  std::vector<std::string> warnings;  // a cache that could not be read or written, a fit's caveat
 };
 
+// A space and its tools placed with `catalog_file` (empty: the bundled catalog), titled `title`.
+// Throws what the catalog reader throws, naming the file.
+LoadedSpace loaded_space_of(model::space::SpaceFile space, const std::filesystem::path& catalog_file,
+                            const std::string& title);
 // A space file, its tools placed with `catalog_file` (empty: the bundled catalog). Throws what the
 // readers throw, naming the file.
 LoadedSpace load_space_file(const std::filesystem::path& file, const std::filesystem::path& catalog_file);

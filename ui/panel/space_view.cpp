@@ -208,13 +208,16 @@ void SpaceView::draw_plot(ImVec2 size) {
       } else {
         chosen_ = {i};
       }
-      if (!chosen_.empty() && play_) {
-        std::vector<ToolChoice> tools;
-        for (std::size_t c : chosen_) tools.push_back(scene_.tools[c].choice);
-        play_(tools, stroke_.request());
-      }
+      play_chosen();
     }
   }
+}
+
+void SpaceView::play_chosen() {
+  if (chosen_.empty() || !play_) return;
+  std::vector<ToolChoice> tools;
+  for (std::size_t c : chosen_) tools.push_back(scene_.tools[c].choice);
+  play_(tools, stroke_.request());
 }
 
 void SpaceView::draw_regions(ImDrawList* draw, bool one_d) const {
@@ -252,11 +255,7 @@ void SpaceView::draw_side() {
   ImGui::TextWrapped("%s", hint_.c_str());
   for (std::size_t k = 0; k < chosen_.size(); ++k)
     ImGui::BulletText("%c: %s", static_cast<char>('A' + k), scene_.tools[chosen_[k]].label.c_str());
-  if (!chosen_.empty() && ImGui::Button("Play again") && play_) {
-    std::vector<ToolChoice> tools;
-    for (std::size_t c : chosen_) tools.push_back(scene_.tools[c].choice);
-    play_(tools, stroke_.request());
-  }
+  if (!chosen_.empty() && ImGui::Button("Play again")) play_chosen();
   section("Tools");
   ImGui::Text("%zu tools, %d dimension%s", scene_.tools.size(), dims, dims == 1 ? "" : "s");
 }

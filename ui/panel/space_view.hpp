@@ -71,6 +71,8 @@ class SpaceView {
   int axis_x() const { return axis_x_; }
   int axis_y() const { return axis_y_; }
   void set_axes(int x, int y);
+  // Plays the chosen tools again with the stroke shown (the "Play again" button, the Enter key).
+  void play_chosen();
   StrokeChoice& stroke() { return stroke_; }
   // The colour tools on that surface are drawn in (alpha 0-255).
   ImU32 surface_colour(const std::string& surface, int alpha) const;

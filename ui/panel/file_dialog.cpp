@@ -1,0 +1,167 @@
+#include "ui/panel/file_dialog.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <system_error>
+
+#include "imgui.h"
+
+namespace nibrig::ui::panel {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool ends_in_one_of(const std::string& name, const std::vector<std::string>& endings) {
+  if (endings.empty()) return true;
+  const std::string n = lower(name);
+  return std::any_of(endings.begin(), endings.end(), [&](const std::string& e) { return n.ends_with(lower(e)); });
+}
+
+std::string size_text(std::uintmax_t bytes) {
+  char text[32];
+  if (bytes < 1024) std::snprintf(text, sizeof text, "%ju B", bytes);
+  else if (bytes < 1024 * 1024) std::snprintf(text, sizeof text, "%.1f KiB", static_cast<double>(bytes) / 1024.0);
+  else std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+}  // namespace
+
+std::vector<FolderEntry> list_folder(const fs::path& folder, const std::vector<std::string>& endings) {
+  std::error_code ec;
+  fs::directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec);
+  if (ec) throw std::runtime_error(folder.string() + ": cannot be read (" + ec.message() + ")");
+  std::vector<FolderEntry> folders, files;
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) throw std::runtime_error(folder.string() + ": cannot be read (" + ec.message() + ")");
+    const std::string name = it->path().filename().string();
+    if (name.starts_with(".")) continue;
+    std::error_code kind;
+    if (it->is_directory(kind)) folders.push_back({name, true, 0});
+    else if (ends_in_one_of(name, endings)) files.push_back({name, false, it->is_regular_file(kind) ? it->file_size(kind) : 0});
+  }
+  const auto by_name = [](const FolderEntry& a, const FolderEntry& b) {
+    const std::string la = lower(a.name), lb = lower(b.name);
+    return la != lb ? la < lb : a.name < b.name;
+  };
+  std::sort(folders.begin(), folders.end(), by_name);
+  std::sort(files.begin(), files.end(), by_name);
+  folders.insert(folders.end(), files.begin(), files.end());
+  return folders;
+}
+
+void FileDialog::open(std::string title, Mode mode, std::vector<std::string> endings, fs::path folder, Chosen chosen) {
+  title_ = std::move(title);
+  mode_ = mode;
+  endings_ = std::move(endings);
+  chosen_ = std::move(chosen);
+  name_[0] = 0;
+  error_.clear();
+  std::error_code ec;
+  if (folder.empty() || !fs::is_directory(folder, ec)) folder = fs::current_path(ec);
+  enter(folder);
+  open_ = true;
+  popup_opened_ = false;
+}
+
+void FileDialog::enter(const fs::path& folder) {
+  std::error_code ec;
+  const fs::path absolute = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+  try {
+    entries_ = list_folder(absolute, endings_);
+    folder_ = absolute;
+    error_.clear();
+  } catch (const std::exception& e) {
+    error_ = e.what();  // stay where we were
+  }
+}
+
+bool FileDialog::choose(const std::string& name) {
+  if (name.empty()) {
+    error_ = mode_ == Mode::open ? "choose a file to open" : "type a name to save as";
+    return false;
+  }
+  const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : folder_ / name;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    enter(path);
+    name_[0] = 0;
+    return false;
+  }
+  if (mode_ == Mode::open && !fs::is_regular_file(path, ec)) {
+    error_ = path.string() + ": no such file";
+    return false;
+  }
+  if (mode_ == Mode::save && !fs::is_directory(path.parent_path(), ec)) {
+    error_ = path.parent_path().string() + ": no such folder";
+    return false;
+  }
+  open_ = false;
+  error_.clear();
+  if (chosen_) chosen_(fs::weakly_canonical(path, ec));
+  return true;
+}
+
+void FileDialog::draw() {
+  if (!open_) return;
+  const std::string id = title_ + "##file-dialog";
+  if (!popup_opened_) {
+    ImGui::OpenPopup(id.c_str());
+    popup_opened_ = true;
+  }
+  const ImVec2 size = ImGui::GetMainViewport()->WorkSize;
+  ImGui::SetNextWindowSize({std::min(720.0f, size.x - 40.0f), std::min(520.0f, size.y - 40.0f)}, ImGuiCond_Appearing);
+  bool keep = true;
+  if (!ImGui::BeginPopupModal(id.c_str(), &keep)) {
+    open_ = keep && open_;
+    return;
+  }
+  if (ImGui::Button("Up")) enter(folder_.parent_path());
+  ImGui::SameLine();
+  ImGui::TextUnformatted(folder_.c_str());
+  const float footer = ImGui::GetFrameHeightWithSpacing() * 2.0f + ImGui::GetTextLineHeightWithSpacing();
+  ImGui::BeginChild("entries", {0.0f, -footer}, true);
+  std::string enter_name;
+  for (const auto& e : entries_) {
+    const std::string label = e.folder ? e.name + "/" : e.name;
+    const bool selected = !e.folder && e.name == name_;
+    if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (e.folder) enter_name = e.name;
+      else {
+        std::snprintf(name_, sizeof name_, "%s", e.name.c_str());
+        if (ImGui::IsMouseDoubleClicked(0)) {
+          choose(name_);
+          break;
+        }
+      }
+    }
+    if (!e.folder) {
+      ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 90.0f);
+      ImGui::TextDisabled("%s", size_text(e.bytes).c_str());
+    }
+  }
+  ImGui::EndChild();
+  if (!enter_name.empty()) enter(folder_ / enter_name);
+  ImGui::SetNextItemWidth(-200.0f);
+  const bool typed = ImGui::InputText("##name", name_, sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if (ImGui::Button(mode_ == Mode::open ? "Open" : "Save") || typed) choose(name_);
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) open_ = false;
+  if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+  else if (mode_ == Mode::save && name_[0] && fs::exists(folder_ / name_))
+    ImGui::TextDisabled("%s exists and will be replaced", name_);
+  else ImGui::TextDisabled("%s", endings_.empty() ? "any file" : ("files ending in " + endings_.front()).c_str());
+  if (!open_) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+  if (!keep) open_ = false;
+}
+
+}  // namespace nibrig::ui::panel

@@ -1,0 +1,62 @@
+// Choosing a file in the window (ImGui has no file dialog): a folder's entries, folders first,
+// filtered by what the file is for; click a name or type one, then Open or Save. A path typed
+// whole (absolute, or relative to the folder shown) is taken as it is. The listing is a library
+// call (list_folder) that tests reach without a screen, and choose() is what the buttons do.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace nibrig::ui::panel {
+
+struct FolderEntry {
+  std::string name;
+  bool folder = false;
+  std::uintmax_t bytes = 0;  // 0 for a folder
+};
+
+// The folders, then the files whose names end in one of `endings` (all files when empty), each
+// sorted by name, case-insensitively; hidden entries (".name") left out. Throws
+// std::runtime_error naming the folder when it cannot be read.
+std::vector<FolderEntry> list_folder(const std::filesystem::path& folder, const std::vector<std::string>& endings);
+
+class FileDialog {
+ public:
+  enum class Mode { open, save };
+  using Chosen = std::function<void(const std::filesystem::path&)>;
+
+  // Opens the dialog titled `title` in `folder` (the working folder when empty or missing);
+  // `chosen` is called with the file once a person confirms one.
+  void open(std::string title, Mode mode, std::vector<std::string> endings, std::filesystem::path folder,
+            Chosen chosen);
+  // Each frame: the modal dialog while it is open.
+  void draw();
+  bool is_open() const { return open_; }
+
+  // What the buttons do, for scripted sessions: a name (or path) of a folder enters it (false); of
+  // a file, takes it (true: the dialog closes and `chosen` is called). False with error() set when
+  // the name is empty, names no file to open, or a file to save in a folder that does not exist.
+  bool choose(const std::string& name);
+  void cancel() { open_ = false; }
+  const std::filesystem::path& folder() const { return folder_; }
+  const std::vector<FolderEntry>& entries() const { return entries_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  void enter(const std::filesystem::path& folder);
+
+  bool open_ = false, popup_opened_ = false;
+  std::string title_;
+  Mode mode_ = Mode::open;
+  std::vector<std::string> endings_;
+  std::filesystem::path folder_;
+  std::vector<FolderEntry> entries_;
+  Chosen chosen_;
+  std::string error_;
+  char name_[512] = {};
+};
+
+}  // namespace nibrig::ui::panel
