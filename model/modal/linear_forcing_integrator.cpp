@@ -1,6 +1,7 @@
 #include "model/modal/linear_forcing_integrator.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "model/modal/linear_forcing_step.hpp"
@@ -17,13 +18,13 @@ static_assert(kLanes == 4, "run() adds the four partial sums by hand");
 }  // namespace
 
 LinearForcingIntegrator::LinearForcingIntegrator(const ModalModel& model, double sample_rate)
-    : modes_(model.size()), sample_rate_(sample_rate), feedthrough_(0.0) {
+    : modes_(model.size()), sample_rate_(sample_rate), resonant_feedthrough_(0.0), feedthrough_(0.0) {
   const std::string caller = "LinearForcingIntegrator";
   check_modal_model(model, caller);
   check_sample_rate(sample_rate, caller);
   padded_ = (modes_ + kLanes - 1) / kLanes * kLanes;
   for (auto* a : {&dd_, &dv_, &vd_, &vv_, &start_d_, &start_v_, &end_d_, &end_v_, &out_d_, &out_v_,
-                  &q_, &v_}) {
+                  &static_d_, &q_, &v_}) {
     a->assign(padded_, 0.0);
   }
   const double h = 1.0 / sample_rate;
@@ -42,6 +43,9 @@ LinearForcingIntegrator::LinearForcingIntegrator(const ModalModel& model, double
     end_v_[i] = b * s.from_end.velocity;
     out_d_[i] = -c * w * w;
     out_v_[i] = -2.0 * c * model.zeta[i] * w;
+    const bool quasi_static = model.zeta[i] >= 1.0 || w >= std::numbers::pi * sample_rate;
+    static_d_[i] = quasi_static ? b / (w * w) : 0.0;
+    if (!quasi_static) resonant_feedthrough_ += c * b;
     feedthrough_ += c * b;
   }
 }
@@ -75,9 +79,16 @@ void LinearForcingIntegrator::run(const Sample* force, Sample* acceleration,
                                   std::size_t count) noexcept {
   std::size_t n = 0;
   if (!started_ && count > 0) {
-    // At rest at the time origin: only the instantaneous part b·f of q̈ reaches the sensor.
     const double f = static_cast<double>(force[0]);
-    acceleration[0] = static_cast<Sample>(feedthrough_ * f);
+    if (start_ == Start::at_rest) {
+      // At rest at the time origin: only the instantaneous part b·f of q̈ reaches the sensor.
+      acceleration[0] = static_cast<Sample>(feedthrough_ * f);
+    } else {
+      // The quasi-static modes held still under f (b·f − ω²q = 0: no acceleration), the others at
+      // rest (their instantaneous b·f only).
+      for (std::size_t i = 0; i < modes_; ++i) q_[i] = static_d_[i] * f, v_[i] = 0.0;
+      acceleration[0] = static_cast<Sample>(resonant_feedthrough_ * f);
+    }
     previous_force_ = f;
     started_ = true;
     n = 1;

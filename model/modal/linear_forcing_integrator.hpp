@@ -25,6 +25,16 @@ class LinearForcingIntegrator {
   // the force may jump from 0 to its first value (as simulate_sinusoids starts at t = 0).
   void reset() noexcept;
 
+  // How the time origin starts (after construction or reset()): at rest, the force jumping from 0
+  // (the default, the closed forms' convention), or with the quasi-static modes in equilibrium
+  // under the first force: every overdamped mode (ζ ≥ 1) and every mode above the step's Nyquist
+  // frequency held still at b·f/ω², as in a stylus already in steady contact; the resonant ones
+  // at rest, since a still resonant mode is no likelier a state than rest. A voice that joins a
+  // stroke in progress starts so: from rest, the jump reached the sensor whole through the stiff
+  // modes' Σ c·b, and a printed design's first millisecond clicked at 8× its level.
+  enum class Start { at_rest, in_equilibrium };
+  void set_start(Start start) noexcept { start_ = start; }
+
   // Sets the state at the time of the last processed sample, whose force was `force` (N). Throws
   // std::invalid_argument on sizes other than modes() or non-finite values. Not for the audio
   // thread.
@@ -53,10 +63,13 @@ class LinearForcingIntegrator {
   std::vector<double> dd_, dv_, vd_, vv_;
   std::vector<double> start_d_, start_v_, end_d_, end_v_;
   std::vector<double> out_d_, out_v_;
+  std::vector<double> static_d_;  // b/ω² of a quasi-static mode (0 for the others): held still
+  double resonant_feedthrough_;   // Σ c_i b_i over the modes that start at rest anyway
   double feedthrough_;  // Σ c_i b_i
   std::vector<double> q_, v_;
   double previous_force_ = 0.0;
   bool started_ = false;
+  Start start_ = Start::at_rest;
 };
 
 }  // namespace nibrig::model::modal

@@ -92,6 +92,34 @@ TEST(Engine, SwitchingSlotsCrossfadesWithoutAClick) {
   EXPECT_EQ(engine->stats().voices, 3u);  // the others keep running, silently
 }
 
+// The design view swaps the voice in slot 0 at every slider move, often faster than the
+// crossfade: a press, then a drag on the next frame. Neither swap may click.
+TEST(Engine, SwappingTheVoiceOfASlotWhilePlayingCrossfadesWithoutAClick) {
+  auto engine = engine_with({"stab"}, 0, std::make_unique<ConstantStroke>(0.1));
+  const auto before = render(*engine, 48000, 64);
+  ASSERT_TRUE(engine->load(0, testing::catalog_voice("cryon", "note", engine->internal_rate(), 7)));
+  const auto first = render(*engine, 320, 64);  // 6.7 ms: the press's voice, fading in
+  ASSERT_TRUE(engine->load(0, testing::catalog_voice("vero2", "note", engine->internal_rate(), 8)));
+  const auto after = render(*engine, 48000, 64);
+  std::vector<float> swap(before.end() - 4800, before.end());
+  swap.insert(swap.end(), first.begin(), first.end());
+  swap.insert(swap.end(), after.begin(), after.begin() + 4800);
+  auto max_step = [](const std::vector<float>& x, std::size_t from, std::size_t to) {
+    double m = 0;
+    for (std::size_t i = from + 1; i < to; ++i) m = std::max(m, std::abs(double(x[i]) - x[i - 1]));
+    return m;
+  };
+  auto peak = [](const std::vector<float>& x, std::size_t from, std::size_t to) {
+    double m = 0;
+    for (std::size_t i = from; i < to; ++i) m = std::max(m, std::abs(double(x[i])));
+    return m;
+  };
+  const double steady_step = std::max(max_step(before, 0, 48000), max_step(after, 4800, 48000));
+  const double steady_peak = std::max(peak(before, 0, 48000), peak(after, 4800, 48000));
+  EXPECT_LE(max_step(swap, 0, swap.size()), 1.1 * steady_step);
+  EXPECT_LE(peak(swap, 0, swap.size()), 1.1 * steady_peak);
+}
+
 TEST(Engine, LiveContactActsWithinOneBlock) {
   Engine engine{EngineSettings{}};
   ASSERT_TRUE(engine.load(0, testing::catalog_voice("cryon", "note", engine.internal_rate(), 3)));

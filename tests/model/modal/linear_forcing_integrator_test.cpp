@@ -120,6 +120,36 @@ TEST(LinearForcingIntegrator, FirstSampleIsTheTimeOriginAtRest) {
   EXPECT_DOUBLE_EQ(a, cb * f);
 }
 
+TEST(LinearForcingIntegrator, StartedInEquilibriumTheQuasiStaticModesStayStillUnderAConstantForce) {
+  // Of the seven modes only the 95 Hz one is resonant (ζ 0.004); 410 Hz and above are overdamped
+  // (ζ = λω/2 ≥ 1) or critical. Held still at b·f/ω² under a constant f, those sit at their fixed
+  // point for ever: the sensor reads what the resonant mode alone, started at rest, gives.
+  const ModalModel m = stylus_like_model();
+  ModalModel resonant;
+  resonant.omega = {m.omega[0]};
+  resonant.zeta = {m.zeta[0]};
+  resonant.input = {m.input[0]};
+  resonant.output = {m.output[0]};
+  double cb = 0.0;
+  for (std::size_t i = 0; i < m.size(); ++i) cb += m.output[i] * m.input[i];
+  const double f = 1.75;
+  std::vector<double> force(4800, f), a(4800), alone(4800);
+  LinearForcingIntegrator held(m, kRate);
+  held.set_start(LinearForcingIntegrator::Start::in_equilibrium);
+  held.process(force.data(), a.data(), a.size());
+  LinearForcingIntegrator reference(resonant, kRate);
+  reference.process(force.data(), alone.data(), alone.size());
+  for (std::size_t n = 0; n < a.size(); ++n) ASSERT_NEAR(a[n], alone[n], 1e-9 * std::abs(cb * f)) << n;
+  // From rest the whole model starts at Σ c·b·f.
+  LinearForcingIntegrator rest(m, kRate);
+  rest.process(force.data(), a.data(), 1);
+  EXPECT_DOUBLE_EQ(a[0], cb * f);
+  // reset() keeps the start chosen.
+  held.reset();
+  held.process(force.data(), a.data(), 2);
+  EXPECT_NEAR(a[1], alone[1], 1e-9 * std::abs(cb * f));
+}
+
 TEST(LinearForcingIntegrator, FreeVibrationEnergyDecaysAtTwiceZetaOmega) {
   // E = (q̇² + ω²q²)/2 of a free underdamped mode has the envelope e^{−2ζωt}; over one damped
   // period T_d = 2π/ω_d exactly, e^{T_dU} = e^{−ζωT_d}·I, so E(t + T_d) = e^{−2ζωT_d}E(t) for any
