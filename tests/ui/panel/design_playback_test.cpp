@@ -146,14 +146,6 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
     return fit;
   };
   const auto follows = [&](std::size_t from) { return best_near(from).correlation > 0.9; };
-  // Before the move the recording follows the old voice, window after window from the probe (a
-  // window holding a skipped period cannot follow one lag whole: at most one in five may not).
-  std::size_t windows = 0, followed = 0;
-  for (std::size_t from = probe; from + 480 <= at; from += 480) {
-    ++windows;
-    followed += follows(from);
-  }
-  EXPECT_GE(followed * 5, windows * 4) << followed << " of " << windows << " windows before the move follow it";
   // After it, the old voice is gone for good: the first window from which none of the next 100 ms
   // follows it (a lone window with a glitch does not count).
   std::optional<std::size_t> gone_from;
@@ -166,24 +158,18 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
     }
   }
   ASSERT_TRUE(gone_from.has_value()) << "the recording still follows the old design after the move";
-  // Where it departs: the last window before that which follows, at its own alignment, then the
-  // first sample from which the recording differs from the render by more than a twentieth of the
-  // render's level for most of the next millisecond (an equal-power crossfade's new voice reaches
-  // that within its first millisecond; before it, the two agree to float rounding). A skipped
-  // period on the way (the recording jumps ahead in the render by whole periods) is followed, not
-  // taken for the change: where the recording stops following, it is looked for within 40 ms of
-  // where it was in the render before it counts as departed.
-  std::size_t last = *gone_from;
-  Fit fit;
-  while (last >= probe + 48) {  // the swap may fall in the window that holds the press itself
-    last -= 48;
-    if ((fit = best_near(last)).correlation > 0.9) break;
-  }
-  ASSERT_GT(fit.correlation, 0.9) << "no window after the move follows the old design";
+  // Where it departs: from the probe on, sample by sample against the render at the probe's
+  // alignment, the first sample from which the recording differs from it by more than a twentieth
+  // of the render's level for most of the next millisecond (an equal-power crossfade's new voice
+  // reaches that within its first millisecond; before it, the two agree to float rounding). A
+  // skipped period on the way (a late callback on a loaded machine: the recording jumps ahead in
+  // the render) is followed, not taken for the change: where the recording stops following, it is
+  // looked for within 40 ms of where it was in the render before it counts as departed. So the
+  // recording follows the old design from the probe to the departure, and that is after the move.
   double level = 0.0;
-  for (std::size_t i = 0; i < 480; ++i) level += double(reference[fit.at + i]) * reference[fit.at + i];
-  const double tolerance = 0.05 * std::sqrt(level / 480.0);
-  long shift = static_cast<long>(fit.at) - static_cast<long>(last);  // render index − recording index
+  for (std::size_t i = 0; i < length; ++i) level += double(reference[lag + i]) * reference[lag + i];
+  const double tolerance = 0.05 * std::sqrt(level / static_cast<double>(length));
+  long shift = static_cast<long>(lag) - static_cast<long>(probe);  // render index − recording index
   const auto differs = [&](std::size_t n, long by) {
     const long k = static_cast<long>(n) + by;
     return k < 0 || static_cast<std::size_t>(k) >= reference.size() ||
@@ -195,12 +181,14 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
     return count;
   };
   std::optional<std::size_t> departs;
-  for (std::size_t n = last; n + 48 < samples.size(); ++n) {
+  std::size_t skips = 0;
+  for (std::size_t n = probe; n + 48 < samples.size(); ++n) {
     if (!differs(n, shift) || differing(n, shift) <= 24) continue;
     bool realigned = false;
     for (long d = 1; d <= 1920 && !realigned; ++d)
       for (long by : {shift + d, shift - d})
         if (!realigned && differing(n, by) <= 2) shift = by, realigned = true;
+    skips += realigned;
     if (!realigned) {
       departs = n;
       break;
@@ -211,6 +199,7 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   const double changed_ms = (static_cast<double>(*departs) - static_cast<double>(at)) / 48.0;
   RecordProperty("slider_to_signal_ms", std::to_string(changed_ms));
   RecordProperty("slider_to_placement_and_voice_ms", std::to_string(update_ms));
+  RecordProperty("skipped_periods_followed", std::to_string(skips));
   EXPECT_LT(changed_ms, 50.0);
 }
 
