@@ -29,7 +29,7 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
   options.cancel = settings.cancel;
   const auto start = std::chrono::steady_clock::now();
   FittedSpace out;
-  out.fit = fit_space(in.problem, options, step(progress, "fitting starts"));
+  out.fit = fit_space(in.problem, options, step(progress, kFitStep));
   SpaceFile& file = out.file;
   file.seconds = seconds_since(start);
   file.stimuli = in.judgments.stimuli;
@@ -64,7 +64,7 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
     b.cancel = settings.cancel;
     const auto b_start = std::chrono::steady_clock::now();
     const BootstrapResult regions =
-        bootstrap_space(in.problem, out.fit.coordinates, b, step(progress, "bootstrap refits"));
+        bootstrap_space(in.problem, out.fit.coordinates, b, step(progress, kBootstrapStep));
     file.regions = regions.regions;
     file.region_levels = regions.levels;
     file.bootstrap_resamples = settings.bootstrap;

@@ -25,8 +25,10 @@ struct SpaceFitSettings {
   numeric::CancelFlag cancel = nullptr;
 };
 
-// Called as each start or refit finishes: the step ("fitting starts", "bootstrap refits"), how many
-// of it are done, of how many. From worker threads, never two at once.
+// Called as each start or refit finishes: the step (kFitStep, then kBootstrapStep), how many of it
+// are done, of how many. From worker threads, never two at once.
+inline constexpr const char* kFitStep = "fitting starts";
+inline constexpr const char* kBootstrapStep = "bootstrap refits";
 using StepProgress =
     std::function<void(const std::string& step, std::size_t done, std::size_t total)>;
 

@@ -36,6 +36,15 @@ inline void JobControl::message(std::string text) {
   *message_ = std::move(text);
 }
 
+// A model's progress by step (its name, done of total) on a job's bar, the message `prefix` + the
+// step's name: the form the cached defaults and the space fit report in.
+inline auto step_reporter(JobControl& control, std::string prefix) {
+  return [&control, prefix = std::move(prefix)](const std::string& step, std::size_t done, std::size_t total) {
+    control.message(prefix + step);
+    control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+  };
+}
+
 template <typename Result>
 class BackgroundJob {
  public:

@@ -92,10 +92,7 @@ void DesignView::prepare() {
           design::DefaultsOptions defaults;
           defaults.catalog = catalog;
           defaults.cancel = &cancel;
-          defaults.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
-            control.message("the default forcing model (fitted once, then kept): " + step);
-            control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
-          };
+          defaults.progress = step_reporter(control, "the default forcing model (fitted once, then kept): ");
           auto model = design::default_forcing_model(defaults);
           made.inputs = design::load_prediction_inputs(options, model.file, std::move(model.value));
         } else {

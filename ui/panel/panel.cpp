@@ -34,13 +34,13 @@ std::filesystem::path sessions_folder() {
 // Where a file dialog starts: the folder of the file in use, else the working folder.
 std::filesystem::path folder_of(const std::filesystem::path& file) { return file.empty() ? file : file.parent_path(); }
 
-// Model-side progress (a step, done of total) on a job's bar and message.
-model::space::StepProgress step_progress(JobControl& control, bool two_steps) {
-  return [&control, two_steps](const std::string& step, std::size_t done, std::size_t total) {
+// A fit's two steps (the starts, then the bootstrap's refits) as the two halves of one bar.
+model::space::StepProgress fit_progress(JobControl& control, bool with_bootstrap) {
+  auto report = step_reporter(control, "");
+  return [&control, report, with_bootstrap](const std::string& step, std::size_t done, std::size_t total) {
+    report(step + ": " + std::to_string(done) + " of " + std::to_string(total), done, total);
     const double part = total ? static_cast<double>(done) / static_cast<double>(total) : 0.0;
-    const bool second = step != "fitting starts";
-    control.progress(two_steps ? 0.5 * part + (second ? 0.5 : 0.0) : part);
-    control.message(step + ": " + std::to_string(done) + " of " + std::to_string(total));
+    if (with_bootstrap) control.progress(0.5 * part + (step == model::space::kBootstrapStep ? 0.5 : 0.0));
   };
 }
 
@@ -116,10 +116,7 @@ void Panel::load_default_space() {
         model::design::DefaultsOptions options;
         options.catalog = catalog;
         options.cancel = &cancel;
-        options.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
-          control.message("the default space (computed once, then kept): " + step);
-          control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
-        };
+        options.progress = step_reporter(control, "the default space (computed once, then kept): ");
         return panel::load_default_space(options);
       });
 }
@@ -142,7 +139,7 @@ void Panel::fit_space(const SpaceFitRequest& r) {
         settings.bootstrap = r.bootstrap;
         settings.cancel = &cancel;
         auto fitted = model::space::fit_space_file(inputs, r.judgments, descriptors, settings,
-                                                   step_progress(control, r.bootstrap > 0));
+                                                   fit_progress(control, r.bootstrap > 0));
         auto loaded = loaded_space_of(std::move(fitted.file), catalog,
                                       "space fitted to " + r.judgments.filename().string() + " (not saved)");
         loaded.warnings = std::move(fitted.warnings);
@@ -211,10 +208,7 @@ void Panel::save_forcing(const std::filesystem::path& file) {
              } else {  // the demo's, from the user cache (fitted there first if it is not yet)
                model::design::DefaultsOptions defaults;
                defaults.catalog = catalog;
-               defaults.progress = [&control](const std::string& step, std::size_t done, std::size_t total) {
-                 control.message("the default forcing model: " + step);
-                 control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
-               };
+               defaults.progress = step_reporter(control, "the default forcing model: ");
                model::forcing::write_forcing_model(file, model::design::default_forcing_model(defaults).value);
              }
              return [file](Panel& p) { p.notice_ = "wrote " + file.string(); };

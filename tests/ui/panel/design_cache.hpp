@@ -11,6 +11,8 @@
 #include <functional>
 #include <thread>
 
+#include "tests/ui/panel/panel_test_setup.hpp"
+#include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
 
 namespace nibrig::ui::panel::testing {
@@ -21,6 +23,15 @@ inline std::filesystem::path shared_design_cache() {
 
 // Points the user cache at the shared one (a test run alone, outside CTest, fills it itself).
 inline void use_shared_design_cache() { ::setenv("NIBRIG_CACHE", shared_design_cache().c_str(), 1); }
+
+// The design tests' panel: the descriptor space written into `dir` (test_space.hpp), the coarse
+// grid (panel_test_setup.hpp).
+inline PanelSetup design_setup(const std::filesystem::path& dir) {
+  PanelSetup setup;
+  setup.space = write_descriptor_space(dir);
+  setup.design = coarse_design();
+  return setup;
+}
 
 // Draws frames until the design view's grid is loaded and its error measured (the panel settled)
 // or the deadline passes.

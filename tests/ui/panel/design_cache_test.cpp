@@ -29,10 +29,7 @@ TEST(DesignCache, SolvesTheCoarseGridOnceForTheDesignTests) {
   testing::use_shared_design_cache();
   const auto dir = testing::shared_design_cache().parent_path() / "panel_design_cache_space";
   PanelWindow window(testing::hidden_window());
-  PanelSetup setup;
-  setup.space = testing::write_descriptor_space(dir);
-  setup.design = testing::coarse_design();
-  Panel panel(setup);
+  Panel panel(testing::design_setup(dir));
   panel.show(View::design);
   auto& view = panel.design_view();
   bool progress_seen = false;

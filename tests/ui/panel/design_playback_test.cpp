@@ -55,10 +55,9 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   std::filesystem::remove_all(dir);
   testing::use_shared_design_cache();
   PanelWindow window(testing::hidden_window());
-  PanelSetup setup;
-  setup.space = testing::write_descriptor_space(dir);
+  PanelSetup setup = testing::design_setup(dir);
   setup.device = DeviceRequest{"jack", "system", 1, 64};
-  setup.design = testing::coarse_design(1);
+  setup.design.error_points = 1;
   Panel panel(setup);
   panel.show(View::design);
   auto& view = panel.design_view();

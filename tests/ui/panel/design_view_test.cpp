@@ -33,10 +33,7 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   std::filesystem::remove_all(dir);
   testing::use_shared_design_cache();
   PanelWindow window(testing::hidden_window());
-  PanelSetup setup;
-  setup.space = testing::write_descriptor_space(dir);
-  setup.design = testing::coarse_design();
-  Panel panel(setup);
+  Panel panel(testing::design_setup(dir));
   panel.show(View::design);
   auto& view = panel.design_view();
   const auto frame = [&](const std::function<void(ImGuiIO&)>& input = {}, const std::filesystem::path& png = {}) {
