@@ -17,8 +17,9 @@ struct JackServerSettings {
 
 class JackServer {
  public:
-  // Starts `jackd --no-realtime -n <unique name> -d dummy -r <rate> -p <period>` and waits until a
-  // client can connect (up to 10 s). Throws std::runtime_error with the server's log on failure.
+  // Starts `jackd -n <unique name> [--realtime -P 70 | --no-realtime] -d dummy -r <rate>
+  // -p <period>` (real-time when this process may use SCHED_FIFO) and waits until a client can
+  // connect (up to 10 s). Throws std::runtime_error with the server's log on failure.
   explicit JackServer(const JackServerSettings& settings = {});
   ~JackServer();
   JackServer(const JackServer&) = delete;
