@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <thread>
+#include <utility>
 
 #include "model/io/session.hpp"
 #include "rig/capture.hpp"
@@ -53,11 +55,18 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   RigData all, batch;
   bool more = true, tapped = false;
   double tap_host_s = 0.0;
+  // The audio clock's rate on the host clock, from the samples' arrival: JACK's dummy driver runs
+  // its clock from a timer that a loaded machine delays (13 % slow once in CI, under ASan).
+  std::optional<std::pair<std::chrono::steady_clock::time_point, std::size_t>> first_arrival, last_arrival;
   while (more) {
     batch.clear();
     more = rig.read(batch, 50ms);
     all.frames.insert(all.frames.end(), batch.frames.begin(), batch.frames.end());
     all.acceleration.insert(all.acceleration.end(), batch.acceleration.begin(), batch.acceleration.end());
+    if (!batch.acceleration.empty()) {
+      last_arrival = std::pair{std::chrono::steady_clock::now(), all.acceleration.size()};
+      if (!first_arrival) first_arrival = last_arrival;
+    }
     // Tapped once a second is on the timeline, not at a fixed time after start: under the
     // sanitizers in CI the streams started late and a timed tap fell outside the 3 s recorded.
     if (!tapped && all.acceleration.size() >= 48000u) {
@@ -81,11 +90,17 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
     const double excess = all.frames[k].normal_force_N - 2.2;
     if (excess > 0.05) weight += excess, moment += excess * static_cast<double>(k);
   }
-  ASSERT_GT(weight, 4.0) << "the tap was not found in the frames";
-  // Interpolation keeps the pulse's area up to the ratio of the two clocks' spacing: the session's
-  // frames are spaced by the audio clock, which JACK's dummy driver runs a few percent slow under
-  // load (up to 4 % seen under the sanitizers).
-  EXPECT_NEAR(weight, 5.0, 0.5);
+  ASSERT_GT(weight, 3.0) << "the tap was not found in the frames";
+  // Interpolation keeps the pulse's area up to the ratio of the two clocks' spacing: the pulse
+  // lasts one device frame (1 ms), the session's frames are spaced by the audio clock (48 of its
+  // samples), so the frames sum 5 N times the audio clock's rate over 48 kHz. That rate is measured
+  // from arrivals over ~3 s (to ~1 %); 0.25 N leaves the rest for the pulse's split between frames.
+  ASSERT_TRUE(first_arrival && last_arrival);
+  const double arrival_s = std::chrono::duration<double>(last_arrival->first - first_arrival->first).count();
+  ASSERT_GT(arrival_s, 1.0);
+  const double audio_rate_hz = static_cast<double>(last_arrival->second - first_arrival->second) / arrival_s;
+  RecordProperty("audio_clock_hz", std::to_string(audio_rate_hz));
+  EXPECT_NEAR(weight, 5.0 * audio_rate_hz / 48000.0, 0.25) << "audio clock " << audio_rate_hz << " Hz";
   const double tap_on_timeline_s = moment / weight / 1000.0;
   std::size_t impulse = 0;
   for (std::size_t n = 0; n < all.acceleration.size(); ++n)
