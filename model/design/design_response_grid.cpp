@@ -17,7 +17,7 @@ namespace nibrig::model::design {
 
 namespace {
 
-std::string number(double value) {
+std::string grid_number(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
@@ -31,11 +31,11 @@ void check_axis(const std::vector<double>& values, const std::string& name, doub
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (!(values[k] >= min && values[k] <= max))
       throw std::invalid_argument("design grid: " + name + "[" + std::to_string(k) + "] is " +
-                                  number(values[k]) + ", expected " + range);
+                                  grid_number(values[k]) + ", expected " + range);
     if (k > 0 && !(values[k] > values[k - 1]))
       throw std::invalid_argument("design grid: " + name + "[" + std::to_string(k) + "] is " +
-                                  number(values[k]) + ", expected more than the previous " +
-                                  number(values[k - 1]) + " (strictly increasing)");
+                                  grid_number(values[k]) + ", expected more than the previous " +
+                                  grid_number(values[k - 1]) + " (strictly increasing)");
   }
 }
 
@@ -54,9 +54,9 @@ AxisPosition locate(const std::vector<double>& nodes, double x, const std::strin
   if (!(x >= lo - slack && x <= hi + slack)) {
     const bool below = x < lo;
     throw std::invalid_argument(
-        "the design grid's " + what + " " + number(x / unit) + unit_name + " is " +
-        number(std::abs(x - (below ? lo : hi)) / unit) + unit_name + (below ? " below" : " above") +
-        " its range " + number(lo / unit) + unit_name + " to " + number(hi / unit) + unit_name +
+        "the design grid's " + what + " " + grid_number(x / unit) + unit_name + " is " +
+        grid_number(std::abs(x - (below ? lo : hi)) / unit) + unit_name + (below ? " below" : " above") +
+        " its range " + grid_number(lo / unit) + unit_name + " to " + grid_number(hi / unit) + unit_name +
         ": nothing outside the grid is extrapolated");
   }
   x = std::clamp(x, lo, hi);  // only the slack above: no more than rounding
@@ -158,7 +158,7 @@ void validate(const DesignResponseGrid& grid, const std::string& where) {
       refuse(at + ": expected |H| at " + std::to_string(grid.frequencies_hz.size()) +
              " frequencies, found " + std::to_string(node.response_magnitude.size()));
     for (double h : node.response_magnitude)
-      if (!(h > 0 && std::isfinite(h))) refuse(at + ": |H| " + number(h) + ", expected > 0");
+      if (!(h > 0 && std::isfinite(h))) refuse(at + ": |H| " + grid_number(h) + ", expected > 0");
     const auto& m = node.modal;
     if (m.size() != static_cast<std::size_t>(grid.modes) || m.zeta.size() != m.size() ||
         m.input.size() != m.size() || m.output.size() != m.size())

@@ -12,8 +12,8 @@ namespace {
 
 using namespace json_fields;
 
-constexpr const char* kFormat = "nibrig-catalog";
-constexpr int kVersion = 1;
+constexpr const char* kCatalogFormat = "nibrig-catalog";
+constexpr int kCatalogVersion = 1;
 constexpr int kMostBands = 1000;
 const std::set<std::string> kKinds = {"real", "printed", "commercial", "predicted", "unknown"};
 
@@ -167,14 +167,14 @@ nlohmann::json catalog_json(const Catalog& catalog) {
     if (p.vibration) pairing["vibration"] = vibration_json(*p.vibration);
     pairings.push_back(std::move(pairing));
   }
-  return {{"format", kFormat},     {"version", kVersion},  {"citation", catalog.citation},
+  return {{"format", kCatalogFormat},     {"version", kCatalogVersion},  {"citation", catalog.citation},
           {"tools", tools},        {"surfaces", surfaces}, {"pairings", pairings},
           {"notes", catalog.notes}};
 }
 
 Catalog catalog_from(const nlohmann::json& json, const std::filesystem::path& file) {
   as_object(json, file, "");
-  check_format_and_version(json, file, kFormat, kVersion);
+  check_format_and_version(json, file, kCatalogFormat, kCatalogVersion);
   Catalog catalog;
   catalog.citation = string_member(json, "citation", file, "");
 

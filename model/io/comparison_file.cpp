@@ -15,8 +15,8 @@ namespace {
 namespace jf = json_fields;
 using nlohmann::json;
 
-constexpr const char* kFormat = "nibrig-comparison";
-constexpr long long kVersion = 1;
+constexpr const char* kComparisonFormat = "nibrig-comparison";
+constexpr long long kComparisonVersion = 1;
 constexpr double kMmPerM = 1000.0;  // speeds are mm/s in files, m/s inside
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr long long kMaxCount = std::numeric_limits<long long>::max();
@@ -60,8 +60,8 @@ void write_comparison_file(const ComparisonFile& c, const std::filesystem::path&
          {"simulated_weighted_mean", number_or_null(b.simulated_weighted_mean)},
          {"weighted_mean_log10_difference", number_or_null(b.weighted_mean_log10_difference)}});
   }
-  const json j = {{"format", kFormat},
-                  {"version", kVersion},
+  const json j = {{"format", kComparisonFormat},
+                  {"version", kComparisonVersion},
                   {"tool", c.tool},
                   {"surface", c.surface},
                   {"spectrogram",
@@ -88,7 +88,7 @@ void write_comparison_file(const ComparisonFile& c, const std::filesystem::path&
 ComparisonFile read_comparison_file(const std::filesystem::path& file) {
   const json root = jf::parse_file(file);
   jf::as_object(root, file, "");
-  jf::check_format_and_version(root, file, kFormat, kVersion);
+  jf::check_format_and_version(root, file, kComparisonFormat, kComparisonVersion);
   const Reader r{file};
   ComparisonFile c;
   c.tool = jf::string_member(root, "tool", file, "");

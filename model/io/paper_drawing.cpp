@@ -9,7 +9,7 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr const char* kExpectedHeader =
+constexpr const char* kDrawingHeader =
     "Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch,Speed,Acceeration";
 constexpr long long kLongestFrameStep_ms = 50;
 constexpr double kLowestFrameRate_hz = 60.0;
@@ -32,7 +32,7 @@ DrawingTrajectory read_paper_drawing(const std::filesystem::path& file) {
   trajectory.surface = std::string(tokens[1]);
   trajectory.subject = stem->substr(tokens[0].size() + tokens[1].size() + 2);
 
-  CsvReader csv(file, kExpectedHeader);
+  CsvReader csv(file, kDrawingHeader);
   const std::size_t c_time = csv.header().column("Unix Timestamp");
   const std::size_t c_x = csv.header().column("X");
   const std::size_t c_y = csv.header().column("Y");

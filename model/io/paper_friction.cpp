@@ -14,15 +14,15 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr const char* kExpectedName = "<tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]";
-constexpr const char* kExpectedHeader = "TimeStamp,X,Y,Z";
+constexpr const char* kFrictionName = "<tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]";
+constexpr const char* kFrictionHeader = "TimeStamp,X,Y,Z";
 constexpr double kSecondsPerDay = 86400.0;
 constexpr long long kSecondsPerHour = 3600;
-constexpr double kRateTolerance = 0.05;
+constexpr double kFrictionRateTolerance = 0.05;
 
-[[noreturn]] void bad_name(const std::filesystem::path& file, const std::string& why) {
+[[noreturn]] void bad_friction_name(const std::filesystem::path& file, const std::string& why) {
   throw FormatError(
-      file, "", "unparsable file name, expected " + std::string(kExpectedName) + " (" + why + ")");
+      file, "", "unparsable file name, expected " + std::string(kFrictionName) + " (" + why + ")");
 }
 
 // Digits only, no sign: the parts of a wall-clock stamp.
@@ -77,7 +77,7 @@ std::optional<Stamp> parse_stamp(std::string_view text) {
 bool is_whole(double value) { return std::floor(value) == value; }
 
 void check_rate(double rate_hz, const std::filesystem::path& file, const std::string& evidence) {
-  if (std::abs(rate_hz - kOptoForceRate_hz) > kRateTolerance * kOptoForceRate_hz) {
+  if (std::abs(rate_hz - kOptoForceRate_hz) > kFrictionRateTolerance * kOptoForceRate_hz) {
     throw FormatError(file, "column 'TimeStamp'",
                       "expected about 1000 Hz (the force sensor's rate), found " +
                           std::to_string(rate_hz) + " Hz (" + evidence + ")");
@@ -88,9 +88,9 @@ void check_rate(double rate_hz, const std::filesystem::path& file, const std::st
 
 FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
   const auto stem = csv_stem(file);
-  if (!stem) bad_name(file, "not a .csv or .csv.gz file");
+  if (!stem) bad_friction_name(file, "not a .csv or .csv.gz file");
   std::vector<std::string_view> tokens = split_fields(*stem, '_');
-  if (tokens.size() < 5) bad_name(file, "expected at least 5 parts separated by '_'");
+  if (tokens.size() < 5) bad_friction_name(file, "expected at least 5 parts separated by '_'");
   // Read from the right so that a tool id may itself contain '_'.
   const std::size_t n = tokens.size();
   const std::string_view load_token = tokens[n - 3];
@@ -102,20 +102,20 @@ FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
     if (i > 0) name.tool += '_';
     name.tool += tokens[i];
   }
-  if (name.tool.empty() || name.surface.empty()) bad_name(file, "empty tool or surface");
+  if (name.tool.empty() || name.surface.empty()) bad_friction_name(file, "empty tool or surface");
   for (std::string_view part : tokens) {
-    if (part.empty()) bad_name(file, "empty part between '_'");
+    if (part.empty()) bad_friction_name(file, "empty part between '_'");
   }
   if (load_token.back() != 'N')
-    bad_name(file, "the load must end in 'N', found " + in_quotes(load_token));
+    bad_friction_name(file, "the load must end in 'N', found " + in_quotes(load_token));
   const auto load = positive_number_in_name(load_token.substr(0, load_token.size() - 1));
-  if (!load) bad_name(file, "the load must be a positive number, found " + in_quotes(load_token));
+  if (!load) bad_friction_name(file, "the load must be a positive number, found " + in_quotes(load_token));
   const auto lever = positive_number_in_name(lever_token);
   if (!lever)
-    bad_name(file, "the lever factor must be a positive number, found " + in_quotes(lever_token));
+    bad_friction_name(file, "the lever factor must be a positive number, found " + in_quotes(lever_token));
   const auto rep = digits(rep_token, 6);
   if (!rep || *rep < 1)
-    bad_name(file, "the repetition must be a whole number >= 1, found " + in_quotes(rep_token));
+    bad_friction_name(file, "the repetition must be a whole number >= 1, found " + in_quotes(rep_token));
   name.normal_load_N = *load;
   name.lever_factor = *lever;
   name.repetition = static_cast<int>(*rep);
@@ -138,7 +138,7 @@ FrictionRecording read_paper_friction(const std::filesystem::path& file, Frictio
   recording.name = std::move(name);
   recording.source = file;
 
-  CsvReader csv(file, kExpectedHeader);
+  CsvReader csv(file, kFrictionHeader);
   const std::size_t c_time = csv.header().column("TimeStamp");
   const std::size_t c_x = csv.header().column("X");
   const std::size_t c_y = csv.header().column("Y");
@@ -216,7 +216,7 @@ FrictionRecording read_paper_friction(const std::filesystem::path& file, Frictio
   if (rows < 2) {
     throw FormatError(file, "",
                       "expected at least 2 data rows after the header " +
-                          std::string(kExpectedHeader) + ", found " + std::to_string(rows));
+                          std::string(kFrictionHeader) + ", found " + std::to_string(rows));
   }
   if (edited_counts > 0) {
     recording.warnings.push_back(

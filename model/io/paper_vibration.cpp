@@ -13,21 +13,21 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr const char* kExpectedName =
+constexpr const char* kVibrationName =
     "arm_<tool>_<surface>, arm_<material>_<tip>_<surface>, arm_plain_<material>_<tip>[_nailN]_"
     "<surface> or arm_penh_<material>_<surface> (.csv or .csv.gz)";
-constexpr const char* kExpectedHeader = "time,timestamp,xAccel,yAccel,zAccel,xxx (or blank ,,,,,)";
+constexpr const char* kVibrationHeader = "time,timestamp,xAccel,yAccel,zAccel,xxx (or blank ,,,,,)";
 
 // Longer steps are pauses between sweeps, not the sample spacing: they are recorded as gaps but
 // left out of the rate estimate.
 constexpr long long kLongestSampleStep_ms = 100;
 // The worst real file loses 0.2 % of its samples to dropped-sample gaps; another device rate
 // (500, 1024, 2000 Hz) is far outside 2 %.
-constexpr double kRateTolerance = 0.02;
+constexpr double kVibrationRateTolerance = 0.02;
 
-[[noreturn]] void bad_name(const std::filesystem::path& file, const std::string& why) {
+[[noreturn]] void bad_vibration_name(const std::filesystem::path& file, const std::string& why) {
   throw FormatError(
-      file, "", "unparsable file name, expected " + std::string(kExpectedName) + " (" + why + ")");
+      file, "", "unparsable file name, expected " + std::string(kVibrationName) + " (" + why + ")");
 }
 
 bool is_word(std::string_view text) {
@@ -45,11 +45,11 @@ bool is_nail_variant(std::string_view text) {
 void set_printed(VibrationFileName& name, const std::filesystem::path& file,
                  std::string_view material, std::string_view tip) {
   if (std::isalpha(static_cast<unsigned char>(material.front())) == 0) {
-    bad_name(file, "a material starts with a letter, found " + in_quotes(material));
+    bad_vibration_name(file, "a material starts with a letter, found " + in_quotes(material));
   }
   const auto mm = positive_number_in_name(tip);
   if (!mm)
-    bad_name(file, "the tip diameter must be a positive number of mm, found " + in_quotes(tip));
+    bad_vibration_name(file, "the tip diameter must be a positive number of mm, found " + in_quotes(tip));
   name.material = std::string(material);
   name.tip_diameter_m = *mm * 1e-3;
   name.tool = std::string(material) + std::string(tip);
@@ -64,19 +64,19 @@ bool is_paper_vibration_file(const std::filesystem::path& file) {
 
 VibrationFileName parse_vibration_file_name(const std::filesystem::path& file) {
   const auto stem = csv_stem(file);
-  if (!stem) bad_name(file, "not a .csv or .csv.gz file");
-  if (stem->compare(0, 4, "arm_") != 0) bad_name(file, "the name must start with 'arm_'");
+  if (!stem) bad_vibration_name(file, "not a .csv or .csv.gz file");
+  if (stem->compare(0, 4, "arm_") != 0) bad_vibration_name(file, "the name must start with 'arm_'");
   std::vector<std::string_view> tokens = split_fields(std::string_view(*stem).substr(4), '_');
   for (std::string_view token : tokens) {
     if (!is_word(token))
-      bad_name(file, "parts must be letters and digits, found " + in_quotes(token));
+      bad_vibration_name(file, "parts must be letters and digits, found " + in_quotes(token));
   }
   VibrationFileName name;
   name.surface = std::string(tokens.back());
   const std::size_t n = tokens.size();
   if (tokens.front() == "plain") {
     if (n != 4 && !(n == 5 && is_nail_variant(tokens[3]))) {
-      bad_name(file, "arm_plain_ takes <material>_<tip>[_nailN]_<surface>");
+      bad_vibration_name(file, "arm_plain_ takes <material>_<tip>[_nailN]_<surface>");
     }
     set_printed(name, file, tokens[1], tokens[2]);
     name.variant = "plain";
@@ -87,9 +87,9 @@ VibrationFileName parse_vibration_file_name(const std::filesystem::path& file) {
     return name;
   }
   if (tokens.front() == "penh") {
-    if (n != 3) bad_name(file, "arm_penh_ takes <material>_<surface>");
+    if (n != 3) bad_vibration_name(file, "arm_penh_ takes <material>_<surface>");
     if (std::isalpha(static_cast<unsigned char>(tokens[1].front())) == 0) {
-      bad_name(file, "a material starts with a letter, found " + in_quotes(tokens[1]));
+      bad_vibration_name(file, "a material starts with a letter, found " + in_quotes(tokens[1]));
     }
     name.material = std::string(tokens[1]);
     name.variant = "penh";
@@ -104,7 +104,7 @@ VibrationFileName parse_vibration_file_name(const std::filesystem::path& file) {
     name.tool = std::string(tokens[0]);
     return name;
   }
-  bad_name(file, "found " + std::to_string(n) + " parts after 'arm_'");
+  bad_vibration_name(file, "found " + std::to_string(n) + " parts after 'arm_'");
 }
 
 VibrationRecording read_paper_vibration(const std::filesystem::path& file) {
@@ -118,7 +118,7 @@ VibrationRecording read_paper_vibration(const std::filesystem::path& file, Vibra
   recording.name = std::move(name);
   recording.source = file;
 
-  CsvReader csv(file, kExpectedHeader);
+  CsvReader csv(file, kVibrationHeader);
   const CsvHeader& header = csv.header();
   std::size_t c_stamp = 1;
   std::size_t c_accel = 2;
@@ -175,7 +175,7 @@ VibrationRecording read_paper_vibration(const std::filesystem::path& file, Vibra
   const double measured_hz =
       static_cast<double>(steps) * 1000.0 / static_cast<double>(step_time_ms);
   if (std::abs(measured_hz - kPaperAccelerometerRate_hz) >
-      kRateTolerance * kPaperAccelerometerRate_hz) {
+      kVibrationRateTolerance * kPaperAccelerometerRate_hz) {
     throw FormatError(file, "column 'timestamp'",
                       "expected 1000 Hz, found " + std::to_string(measured_hz) + " Hz (" +
                           std::to_string(steps) + " sample steps over " +

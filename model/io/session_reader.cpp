@@ -12,7 +12,7 @@ namespace nibrig::model::io {
 namespace {
 
 constexpr std::string_view kPartialSuffix = ".partial";
-constexpr sf_count_t kReadChunk = 1 << 16;
+constexpr sf_count_t kSessionReadChunk = 1 << 16;
 
 std::string subtype_name(int format) {
   switch (format & SF_FORMAT_SUBMASK) {
@@ -87,9 +87,9 @@ std::vector<float> read_stream(const std::filesystem::path& wav, double expected
                           " Hz (session.json), found " + std::to_string(info.samplerate) + " Hz");
   }
   std::vector<float> samples;
-  std::vector<float> chunk(static_cast<std::size_t>(kReadChunk));
+  std::vector<float> chunk(static_cast<std::size_t>(kSessionReadChunk));
   for (;;) {
-    const sf_count_t got = sf_read_float(file.handle, chunk.data(), kReadChunk);
+    const sf_count_t got = sf_read_float(file.handle, chunk.data(), kSessionReadChunk);
     if (got <= 0) break;
     for (sf_count_t i = 0; i < got; ++i) {
       if (!std::isfinite(chunk[static_cast<std::size_t>(i)])) {

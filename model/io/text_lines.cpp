@@ -16,7 +16,7 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr std::size_t kReadChunk = 1 << 16;
+constexpr std::size_t kTextReadChunk = 1 << 16;
 
 std::string_view trim(std::string_view text) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
@@ -44,8 +44,8 @@ TextLineReader::TextLineReader(std::filesystem::path file) : file_(std::move(fil
                       std::string("cannot open for reading (") +
                           (error != 0 ? std::strerror(error) : "out of memory") + ")");
   }
-  gzbuffer(gz_, kReadChunk);
-  buffer_.resize(kReadChunk);
+  gzbuffer(gz_, kTextReadChunk);
+  buffer_.resize(kTextReadChunk);
 }
 
 TextLineReader::~TextLineReader() {

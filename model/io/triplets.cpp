@@ -14,7 +14,7 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr const char* kExpectedHeader = "reference,a,b,count_a,count_b[,observer]";
+constexpr const char* kTripletHeader = "reference,a,b,count_a,count_b[,observer]";
 
 std::string name_or_index(std::size_t index, const std::vector<std::string>& stimuli) {
   if (index < stimuli.size()) return in_quotes(stimuli[index]);
@@ -65,7 +65,7 @@ TripletSet read_triplet_csv(const std::filesystem::path& file) {
 }
 
 TripletSet read_triplet_csv(const std::filesystem::path& file, Responses responses) {
-  CsvReader csv(file, kExpectedHeader);
+  CsvReader csv(file, kTripletHeader);
   const std::size_t columns[] = {csv.header().column("reference"), csv.header().column("a"),
                                  csv.header().column("b")};
   const char* column_names[] = {"reference", "a", "b"};
@@ -159,17 +159,17 @@ TripletSet read_any_triplets(const std::filesystem::path& file, Responses respon
     if (!lines.next(first)) {
       throw FormatError(file, "",
                         "empty file: expected a triplet CSV header " +
-                            std::string(kExpectedHeader) + " or a JSON object");
+                            std::string(kTripletHeader) + " or a JSON object");
     }
   }
   const std::size_t start = first.find_first_not_of(" \t\xEF\xBB\xBF");
   if (start != std::string::npos && first[start] == '{') return read_lagunas_json(file, responses);
-  const CsvHeader header(first, file, 1, kExpectedHeader);
+  const CsvHeader header(first, file, 1, kTripletHeader);
   if (header.find("Center") && header.find("Answer")) return read_salmon_csv(file);
   if (header.find("reference")) return read_triplet_csv(file, responses);
   throw FormatError(
       file, line_place(1),
-      "unrecognised triplet file: expected a header " + std::string(kExpectedHeader) +
+      "unrecognised triplet file: expected a header " + std::string(kTripletHeader) +
           " (nibrig), one with Participant.ID,Center,Left,Right,Answer (Salmon), or a "
           "JSON object with answers and agreement (Lagunas et al.), found " +
           in_quotes(first));

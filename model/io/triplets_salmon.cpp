@@ -11,7 +11,7 @@ namespace nibrig::model::io {
 
 namespace {
 
-constexpr const char* kExpectedHeader = "Participant.ID,Timestamp,Center,Left,Right,Answer,...";
+constexpr const char* kSalmonHeader = "Participant.ID,Timestamp,Center,Left,Right,Answer,...";
 
 struct Response {
   std::string center, left, right, observer;
@@ -22,7 +22,7 @@ struct Response {
 }  // namespace
 
 TripletSet read_salmon_csv(const std::filesystem::path& file) {
-  CsvReader csv(file, kExpectedHeader);
+  CsvReader csv(file, kSalmonHeader);
   const std::size_t c_participant = csv.header().column("Participant.ID");
   const std::size_t c_center = csv.header().column("Center");
   const std::size_t c_left = csv.header().column("Left");

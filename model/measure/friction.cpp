@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "model/measure/effective_sample_size.hpp"
+#include "model/measure/order_statistics.hpp"
 
 namespace nibrig::model::measure {
 
@@ -16,7 +17,7 @@ namespace {
 constexpr double kSmoothingS = 0.05;
 constexpr double kEnterFraction = 0.50;
 constexpr double kLeaveFraction = 0.25;
-constexpr double kEdgeFraction = 0.10;
+constexpr double kFrictionEdgeFraction = 0.10;
 constexpr double kBridgeS = 0.5;
 constexpr double kMinContactS = 1.0;
 constexpr double kSettleS = 1.0;
@@ -40,18 +41,6 @@ std::vector<double> moving_mean(std::span<const double> x, std::size_t width) {
     out[i] = (prefix[b] - prefix[a]) / static_cast<double>(b - a);
   }
   return out;
-}
-
-double median(std::vector<double> v) {
-  const std::size_t k = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
-
-double quantile(std::vector<double> v, double q) {
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
 }
 
 struct Interval {
@@ -144,7 +133,7 @@ ContactRegion detect_contact(std::span<const double> force, double fs) {
   }
   if (best == nullptr) throw std::runtime_error("detect_contact: no contact lasts 1 s");
 
-  const double edge = b + kEdgeFraction * step;
+  const double edge = b + kFrictionEdgeFraction * step;
   ContactRegion c;
   c.begin = best->begin;
   while (c.begin > 0 && y[c.begin - 1] > edge) --c.begin;

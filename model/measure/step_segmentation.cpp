@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/measure/order_statistics.hpp"
 #include "model/measure/spectrum_analyzer.hpp"
 #include "model/numeric/real_fft.hpp"
 
@@ -27,7 +28,7 @@ namespace {
 // any step to be found: the paper's recordings have 0.9-2.5.
 constexpr double kMinContrast = 0.3;
 // Edge candidates need a step statistic of this fraction of the contrast.
-constexpr double kEdgeFraction = 0.4;
+constexpr double kStepEdgeFraction = 0.4;
 // A kept block must be louder than rest by this fraction of the contrast.
 constexpr double kMovingFraction = 0.15;
 
@@ -65,12 +66,6 @@ class PrefixSums {
  private:
   std::vector<double> s1_, s2_;
 };
-
-double quantile(std::vector<double> v, double q) {
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
 
 std::vector<double> moving_mean(const std::vector<double>& v, std::ptrdiff_t width) {
   const PrefixSums sums(v);
@@ -229,7 +224,7 @@ std::vector<Sweep> find_sweeps_on_frames(const Envelope& env, std::size_t sample
   }
   std::vector<double> fall(rise.size());
   std::transform(rise.begin(), rise.end(), fall.begin(), [](double v) { return -v; });
-  const double edge = kEdgeFraction * contrast;
+  const double edge = kStepEdgeFraction * contrast;
 
   // Latest start frame whose kept blocks (and so their analysis windows) still fit in the signal.
   std::ptrdiff_t last_start = -1;

@@ -21,7 +21,7 @@ namespace {
 using nibrig::model::modal::LinearForcingIntegrator;
 using nibrig::model::modal::ModalModel;
 
-constexpr double kRate = 48000.0;
+constexpr double kIntegratorRate = 48000.0;
 
 // Modes log-spaced from 80 Hz to 20 kHz with ζ = λω/2 (λ = 1.25e-3), couplings of alternating sign.
 ModalModel stylus(std::size_t modes) {
@@ -50,7 +50,7 @@ std::vector<float> noise(std::size_t n) {
 
 void BM_IntegratorPiecewiseLinear(benchmark::State& state) {
   const auto modes = static_cast<std::size_t>(state.range(0));
-  LinearForcingIntegrator integrator(stylus(modes), kRate);
+  LinearForcingIntegrator integrator(stylus(modes), kIntegratorRate);
   const std::vector<float> force = noise(48000);
   std::vector<float> acceleration(force.size());
   for (auto _ : state) {
@@ -72,7 +72,7 @@ void BM_IntegratorNaiveMatrixExponential(benchmark::State& state) {
   const std::vector<float> force = noise(480);
   std::vector<Eigen::Vector2d> x(modes, Eigen::Vector2d::Zero());
   std::vector<float> acceleration(force.size());
-  const double h = 1.0 / kRate;
+  const double h = 1.0 / kIntegratorRate;
   for (auto _ : state) {
     for (std::size_t n = 1; n < force.size(); ++n) {
       const double f0 = force[n - 1], f1 = force[n];

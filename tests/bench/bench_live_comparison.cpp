@@ -20,7 +20,7 @@ namespace {
 
 namespace measure = nibrig::model::measure;
 
-constexpr double kRate = 48000.0;
+constexpr double kComparisonRate = 48000.0;
 constexpr std::size_t kSeconds = 10;
 constexpr std::size_t kBlock = 256;  // a typical audio period
 
@@ -41,15 +41,15 @@ void BM_LiveComparisonAnalysis(benchmark::State& state) {
   std::normal_distribution<double> noise(0.0, 0.2);
   std::vector<float> measured(kSeconds * 48000), simulated(measured.size());
   for (std::size_t n = 0; n < measured.size(); ++n) {
-    const double t = static_cast<double>(n) / kRate;
+    const double t = static_cast<double>(n) / kComparisonRate;
     measured[n] = static_cast<float>(std::sin(2 * std::numbers::pi * 180.0 * t) + noise(rng));
     simulated[n] =
         static_cast<float>(0.8 * std::sin(2 * std::numbers::pi * 190.0 * t) + noise(rng));
   }
-  measure::StreamingSpectrogram a(kRate, settings), b(kRate, settings);
+  measure::StreamingSpectrogram a(kComparisonRate, settings), b(kComparisonRate, settings);
   measure::SpeedBinnedComparison comparison(a.frequencies_hz(), {}, threshold());
   std::vector<double> pending(a.bins());
-  const std::size_t publish_every = static_cast<std::size_t>(kRate / 10.0);
+  const std::size_t publish_every = static_cast<std::size_t>(kComparisonRate / 10.0);
   double lsd = 0.0;
   const double cpu_start = thread_cpu_seconds();
   for (auto _ : state) {

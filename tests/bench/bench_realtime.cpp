@@ -23,7 +23,7 @@ namespace {
 using nibrig::model::modal::ModalModel;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kRate = 48000.0;
+constexpr double kEngineRate = 48000.0;
 
 // 64 modes log-spaced from 80 Hz to 20 kHz with the paper's λ = 1.25e-3 (as bench_integrator).
 ModalModel stylus64() {
@@ -72,7 +72,7 @@ double naive_seconds_per_second(std::size_t samples) {
   std::vector<double> phases(500);
   for (auto& p : phases) p = phase(rng);
   std::vector<Eigen::Vector2d> x(m.size(), Eigen::Vector2d::Zero());
-  const double h = 1.0 / kRate;
+  const double h = 1.0 / kEngineRate;
   double previous = 0, sink = 0;
   const auto start = Clock::now();
   for (std::size_t n = 0; n < samples; ++n) {
@@ -88,7 +88,7 @@ double naive_seconds_per_second(std::size_t samples) {
     sink += a;
   }
   benchmark::DoNotOptimize(sink);
-  return std::chrono::duration<double>(Clock::now() - start).count() / (samples / kRate);
+  return std::chrono::duration<double>(Clock::now() - start).count() / (samples / kEngineRate);
 }
 
 void BM_RealtimeFactorOneVoice64Modes(benchmark::State& state) {
@@ -128,7 +128,7 @@ void BM_CallbackTime64Frames(benchmark::State& state) {
   state.counters["median_us"] = 1e6 * times[times.size() / 2];
   state.counters["p99_us"] = 1e6 * times[times.size() * 99 / 100];
   state.counters["max_us"] = 1e6 * times.back();
-  state.counters["budget_us"] = 1e6 * 64 / kRate;
+  state.counters["budget_us"] = 1e6 * 64 / kEngineRate;
 }
 BENCHMARK(BM_CallbackTime64Frames)->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond)->Iterations(3);
 

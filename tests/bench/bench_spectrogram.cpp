@@ -12,7 +12,7 @@
 
 namespace {
 
-constexpr double kRate = 48000.0;
+constexpr double kSpectrogramRate = 48000.0;
 constexpr std::size_t kSamples = 60 * 48000;
 
 // Two tones plus uniform noise from a 64-bit LCG (Knuth's MMIX constants), reproducible bit for bit
@@ -24,7 +24,7 @@ const std::vector<double>& input() {
     for (std::size_t n = 0; n < kSamples; ++n) {
       s = s * 6364136223846793005ULL + 1442695040888963407ULL;
       const double noise = static_cast<double>(s >> 11) * 0x1.0p-53 - 0.5;
-      const double t = static_cast<double>(n) / kRate;
+      const double t = static_cast<double>(n) / kSpectrogramRate;
       v[n] = 0.5 * std::sin(2.0 * std::numbers::pi * 440.0 * t) +
              0.25 * std::sin(2.0 * std::numbers::pi * 1234.5 * t) + noise;
     }
@@ -40,7 +40,7 @@ void BM_Spectrogram(benchmark::State& state) {
   const auto& x = input();
   double checksum = 0.0;
   for (auto _ : state) {
-    const auto sg = nibrig::model::measure::compute_spectrogram(x, kRate, settings);
+    const auto sg = nibrig::model::measure::compute_spectrogram(x, kSpectrogramRate, settings);
     benchmark::DoNotOptimize(sg.amplitude.data());
     // The checksum (a pass over 46 MB) is not part of the spectrogram, and the Python script does
     // not time its own either; freeing the result at the end of the scope is timed in both.

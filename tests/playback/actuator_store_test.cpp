@@ -11,7 +11,7 @@ namespace nibrig::playback {
 namespace {
 
 TEST(ActuatorStore, OneFilePerActuatorNameFoundByNameOrPath) {
-  const auto dir = test::scratch_dir("actuator_store");
+  const auto dir = nibrig::test::scratch_dir("actuator_store");
   ::setenv("NIBRIG_ACTUATORS", dir.c_str(), 1);
   EXPECT_EQ(actuator_path("rig A/left coil"), dir / "rig_A_left_coil.json");
   try {

@@ -49,7 +49,7 @@ std::string read_error(const std::filesystem::path& file) {
 }
 
 TEST(CalibrationActuatorFile, RoundTripsEveryField) {
-  const auto file = test::scratch_dir("actuator_round_trip") / "actuator.json";
+  const auto file = nibrig::test::scratch_dir("actuator_round_trip") / "actuator.json";
   const ActuatorCalibration c = example();
   write_actuator_file(file, c);
   const ActuatorCalibration back = read_actuator_file(file);
@@ -81,7 +81,7 @@ TEST(CalibrationActuatorFile, RoundTripsEveryField) {
 }
 
 TEST(CalibrationActuatorFile, RedesignsForAnotherRateFromTheStoredResponse) {
-  const auto file = test::scratch_dir("actuator_redesign") / "actuator.json";
+  const auto file = nibrig::test::scratch_dir("actuator_redesign") / "actuator.json";
   write_actuator_file(file, example());
   const ActuatorCalibration c = read_actuator_file(file);
   const double rate = 44100.0 / 11.0;  // a 44.1 kHz device
@@ -100,7 +100,7 @@ TEST(CalibrationActuatorFile, RedesignsForAnotherRateFromTheStoredResponse) {
 }
 
 TEST(CalibrationActuatorFile, ABadFieldNamesTheFileThePathAndWhatWasExpected) {
-  const auto dir = test::scratch_dir("actuator_bad_field");
+  const auto dir = nibrig::test::scratch_dir("actuator_bad_field");
   const auto good = dir / "good.json";
   write_actuator_file(good, example());
   const nlohmann::json original = nlohmann::json::parse(read_text(good));
@@ -147,7 +147,7 @@ TEST(CalibrationActuatorFile, ABadFieldNamesTheFileThePathAndWhatWasExpected) {
 }
 
 TEST(CalibrationActuatorFile, ATruncatedOrEmptyFileIsAClearError) {
-  const auto dir = test::scratch_dir("actuator_truncated");
+  const auto dir = nibrig::test::scratch_dir("actuator_truncated");
   const auto good = dir / "good.json";
   write_actuator_file(good, example());
   const std::string text = read_text(good);

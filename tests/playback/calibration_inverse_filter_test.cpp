@@ -13,6 +13,7 @@
 #include "playback/inverse_filter.hpp"
 #include "playback/sweep.hpp"
 #include "tests/playback/calibration_chain.hpp"
+#include "model/measure/order_statistics.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -38,10 +39,7 @@ std::complex<double> dtft(const std::vector<double>& h, double f, double fs) {
   return sum;
 }
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
+using model::measure::median;
 
 struct Flatness {
   double max_deviation_db = 0;  // max |20 log10 |C·G|| over 20-500 Hz, 0.5 Hz steps

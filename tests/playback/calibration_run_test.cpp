@@ -16,13 +16,13 @@
 namespace nibrig::playback {
 namespace {
 
-struct Measured {
+struct MeasuredThroughJack {
   ActuatorCalibration calibration;
   double delay_frames = 0, worst_db = 0, worst_deg = 0;  // against the simulated chain, 20-500 Hz
 };
 
 // One calibration through out → actuator → in, compared with the actuator's known response.
-Measured calibrate_through(testing::SimulatedActuator& actuator, const CalibrationRunSettings& settings) {
+MeasuredThroughJack calibrate_through(testing::SimulatedActuator& actuator, const CalibrationRunSettings& settings) {
   auto run = std::async(std::launch::async, [&] { return run_calibration(settings); });
   // Wire out → actuator → in whenever the stream's ports exist (within each attempt's lead-in:
   // run_calibration measures again after xruns, on a fresh stream with fresh ports).
@@ -33,7 +33,7 @@ Measured calibrate_through(testing::SimulatedActuator& actuator, const Calibrati
     wired = wired || (out && in);
   }
   EXPECT_TRUE(wired);
-  Measured m{run.get()};
+  MeasuredThroughJack m{run.get()};
   m.delay_frames = m.calibration.delay_s * 48000;
   const auto& r = m.calibration.response;
   for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k) {
@@ -62,7 +62,7 @@ TEST(CalibrationRun, MeasuresAndFlattensASimulatedActuatorThroughJack) {
   // scheduling, and a late block that hits both sweeps alike passes run_calibration's agreement
   // check yet bends a few bins (0.61 dB seen once in CI): a whole new calibration then, at most
   // three. A broken estimate misses every time.
-  Measured m;
+  MeasuredThroughJack m;
   for (int attempt = 1; attempt <= 3; ++attempt) {
     m = calibrate_through(actuator, settings);
     if (m.worst_db < 0.5 && m.worst_deg < 5.0) break;

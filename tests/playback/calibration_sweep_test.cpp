@@ -10,6 +10,7 @@
 
 #include "playback/sweep.hpp"
 #include "tests/playback/calibration_chain.hpp"
+#include "model/measure/order_statistics.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -20,10 +21,7 @@ double rms(const std::vector<double>& x) {
   return std::sqrt(sum / static_cast<double>(x.size()));
 }
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
+using model::measure::median;
 
 double wrap(double phase) { return std::remainder(phase, 2.0 * std::numbers::pi); }
 
@@ -76,12 +74,12 @@ TEST(CalibrationSweep, RejectsSettingsItCannotPlay) {
   EXPECT_THROW(exponential_sweep(s), std::invalid_argument);
 }
 
-struct Measured {
+struct MeasuredSweep {
   ResponseEstimate estimate;
   testing::ChainModel chain;
 };
 
-Measured measure(double noise_db, double cubic_level, std::size_t delay) {
+MeasuredSweep measure(double noise_db, double cubic_level, std::size_t delay) {
   SweepSettings s;  // 10 Hz - 20 kHz over 4 s, 1 s silence, 2 repetitions, level 0.3
   const std::vector<double> played = exponential_sweep(s);
   testing::ChainModel chain;
@@ -96,7 +94,7 @@ Measured measure(double noise_db, double cubic_level, std::size_t delay) {
 
 TEST(CalibrationSweep, RecoversAResonantChainWithDelayNoiseAndDistortion) {
   // −60 dB noise; cubic distortion with a·A² = 0.02, i.e. a 3rd harmonic at −46 dB.
-  const Measured m = measure(-60.0, 0.02, 173);
+  const MeasuredSweep m = measure(-60.0, 0.02, 173);
   const ResponseEstimate& e = m.estimate;
   EXPECT_EQ(e.delay_samples, 173u);  // the chain's response starts at its first delayed sample
   EXPECT_NEAR(e.delay_s, 173.0 / 48000.0, 1e-12);
@@ -153,7 +151,7 @@ TEST(CalibrationSweep, ItsSnrFallsWithTheNoise) {
   // 40 dB more noise must cost 40 dB of SNR. Two repetitions give a two-degree-of-freedom spread
   // per frequency, so single points scatter by several dB; the median over the band does not.
   std::vector<double> quiet, loud;
-  const Measured a = measure(-60.0, 0.0, 50), b = measure(-20.0, 0.0, 50);
+  const MeasuredSweep a = measure(-60.0, 0.0, 50), b = measure(-20.0, 0.0, 50);
   for (std::size_t i = 0; i < a.estimate.response.frequencies_hz.size(); ++i) {
     const double f = a.estimate.response.frequencies_hz[i];
     if (f < 20.0 || f > 500.0) continue;

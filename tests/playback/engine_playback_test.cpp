@@ -18,6 +18,7 @@
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/playback/jack_stream_settings.hpp"
 #include "tests/playback/wait_until.hpp"
+#include "tests/rt/test_voices.hpp"
 #include "tests/support/allocation_counter.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
@@ -27,14 +28,10 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// Three modes like a printed stylus's first ones (as tests/rt/test_voices.cpp).
-model::modal::ModalModel small_stylus() {
-  const double tau = 2 * 3.141592653589793;
-  return {{tau * 92.7, tau * 250.0, tau * 1457.5}, {0.36, 0.05, 0.3}, {23.3, 10.0, 33.1}, {0.40, 0.30, 5.1}};
-}
+using rt::testing::small_stylus;
 
 std::unique_ptr<rt::Voice> voice(const std::string& tool, double rate, std::uint64_t seed) {
-  static const auto catalog = model::io::read_catalog(test::assets_dir() / "default_catalog.json");
+  static const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   for (const auto& p : catalog.pairings)
     if (p.tool == tool && p.surface == "note" && p.vibration)
       return rt::build_voice(tool, small_stylus(), p.vibration->spectrum, rate, seed);

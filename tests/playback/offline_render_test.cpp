@@ -25,7 +25,7 @@ class Ramp final : public rt::BlockRenderer {
 };
 
 TEST(OfflineRender, WritesTheRenderersSamplesToAFloatWav) {
-  const auto dir = test::scratch_dir("offline_render");
+  const auto dir = nibrig::test::scratch_dir("offline_render");
   Ramp renderer;
   const auto result = render_to_wav(renderer, dir / "out.wav", {48000, 64, 0.5});
   EXPECT_EQ(result.frames, 24000u);
@@ -58,7 +58,7 @@ TEST(OfflineRender, NamesTheFileItCannotWrite) {
 TEST(OfflineRender, AFailedRenderLeavesNoHalfFile) {
   // The rename fails when the WAV's name is taken by a folder that is not empty: the render itself
   // has succeeded by then, so this is the last point a ".partial" could be left behind.
-  const auto dir = test::scratch_dir("offline_render_failed");
+  const auto dir = nibrig::test::scratch_dir("offline_render_failed");
   std::filesystem::create_directories(dir / "out.wav");
   std::ofstream(dir / "out.wav" / "keep") << "x";
   Ramp renderer;

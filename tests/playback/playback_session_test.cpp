@@ -24,7 +24,7 @@ model::modal::ModalModel small_stylus() {
 }
 
 const model::io::VelocitySpectrum& note_spectrum(const std::string& tool) {
-  static const auto catalog = model::io::read_catalog(test::assets_dir() / "default_catalog.json");
+  static const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   for (const auto& p : catalog.pairings)
     if (p.tool == tool && p.surface == "note" && p.vibration) return p.vibration->spectrum;
   throw std::runtime_error("no " + tool + "/note in the bundled catalog");

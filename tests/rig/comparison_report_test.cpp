@@ -28,7 +28,7 @@ TEST(ComparisonReport, ATablesReportReadsBackAsTheTable) {
   live.finish();
   const ComparisonTable table = live.table();
 
-  const auto file = test::scratch_dir("comparison_report") / "comparison.json";
+  const auto file = nibrig::test::scratch_dir("comparison_report") / "comparison.json";
   model::io::write_comparison_file(comparison_report("vero2", "office", table, settings), file);
   const auto back = model::io::read_comparison_file(file);
   EXPECT_EQ(back.tool, "vero2");

@@ -34,7 +34,7 @@ ComparisonRun compare_vero2_with(model::design::ToolSounds& sounds, const std::s
 // rig's sensor noise and motor line: 1.95 dB here, falling to 1.5 dB over 30 s — and farther from
 // the STABILO pencil's simulation (3.6 dB; the catalog's tools differ by a few dB RMS, Sec. 4).
 TEST(ComparisonRun, TellsTheSameToolFromAnotherAndKeepsTheSession) {
-  const auto dir = test::scratch_dir("comparison_run");
+  const auto dir = nibrig::test::scratch_dir("comparison_run");
   model::design::ToolSounds sounds({});
   const ComparisonRun same = compare_vero2_with(sounds, "vero2", dir / "same");
   const ComparisonRun other = compare_vero2_with(sounds, "stab", dir / "other");
@@ -60,8 +60,8 @@ TEST(ComparisonRun, TellsTheSameToolFromAnotherAndKeepsTheSession) {
 // gets (4096 samples there: 85 ms, 11.7 Hz), not with 4 s segments: the power of two nearest 85
 // samples, 64 (64 ms, 15.6 Hz), a row every 16 ms, so each 2 s step holds a hundred rows.
 TEST(ComparisonRun, KeepsItsResolutionAtAnotherRate) {
-  const auto dir = test::scratch_dir("comparison_run_1khz");
-  ReplayRig rig(test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_2_office.csv.gz", 0.0);
+  const auto dir = nibrig::test::scratch_dir("comparison_run_1khz");
+  ReplayRig rig(nibrig::test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_2_office.csv.gz", 0.0);
   model::design::ToolSounds sounds({});
   ComparisonRunOptions options;
   options.capture.folder = dir / "session";

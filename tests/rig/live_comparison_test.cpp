@@ -236,7 +236,7 @@ TEST(LiveComparison, TheProducersPushNeverAllocatesEvenWhenTheQueueIsFull) {
   settings.idle_sleep = std::chrono::milliseconds(500);
   LiveComparison live(settings, threshold());
   std::this_thread::sleep_for(std::chrono::milliseconds(20));  // let it go to sleep
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   std::size_t refused = 0;
   for (std::size_t pos = 0; pos + 64 <= c.measured.size(); pos += 64) {
     if (!live.push(std::span<const float>(c.measured).subspan(pos, 64),
@@ -248,7 +248,7 @@ TEST(LiveComparison, TheProducersPushNeverAllocatesEvenWhenTheQueueIsFull) {
   EXPECT_FALSE(live.push(std::span<const float>(c.measured).first(10),
                          std::span<const float>(c.simulated).first(9), {}))
       << "streams out of step are refused, not misaligned";
-  const std::size_t allocated = testing::allocations_on_this_thread() - before;
+  const std::size_t allocated = nibrig::testing::allocations_on_this_thread() - before;
   EXPECT_EQ(allocated, 0u) << "the capture thread's push must not allocate";
   live.finish();
   const auto table = live.table();

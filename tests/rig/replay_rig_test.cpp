@@ -30,11 +30,11 @@ model::catalog::SessionAnalysis measure_session(const std::filesystem::path& fol
 // significant digits (about 0.001 dB).
 TEST(ReplayRig, PaperRecordingReplayedAndMeasuredGivesTheCatalogSpectrum) {
   const auto recording =
-      test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_2_office.csv.gz";
+      nibrig::test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_2_office.csv.gz";
   ReplayRig rig(recording, 0.0);
   EXPECT_EQ(rig.description().tool, "vero2");
   EXPECT_EQ(rig.description().surface, "office");
-  const auto dir = test::scratch_dir("replay_paper_recording");
+  const auto dir = nibrig::test::scratch_dir("replay_paper_recording");
   CaptureOptions options;
   options.folder = dir / "vero2_office";
   const CaptureResult result = capture_session(rig, rig.recorded_profile(), options);
@@ -59,7 +59,7 @@ TEST(ReplayRig, PaperRecordingReplayedAndMeasuredGivesTheCatalogSpectrum) {
 
 // A captured session replayed and captured again is the same session, sample for sample.
 TEST(ReplayRig, SessionReplayedIsCapturedUnchanged) {
-  const auto dir = test::scratch_dir("replay_session");
+  const auto dir = nibrig::test::scratch_dir("replay_session");
   model::design::ToolSounds sounds({});
   SimulatedRigSettings settings;
   settings.speedup = 0.0;
@@ -87,7 +87,7 @@ TEST(ReplayRig, SessionReplayedIsCapturedUnchanged) {
 
 TEST(ReplayRig, ClearErrorsForWhatCannotBeReplayed) {
   EXPECT_THROW(ReplayRig("/nonexistent/session", 1.0), std::invalid_argument);
-  const auto dir = test::scratch_dir("replay_errors");
+  const auto dir = nibrig::test::scratch_dir("replay_errors");
   EXPECT_THROW(ReplayRig(dir, 1.0), std::exception);  // a folder without session.json
 }
 

@@ -126,7 +126,7 @@ TEST(SimulatedRig, RealTimePacingFollowsTheClock) {
 // its catalog spectrum. The bound is that repeatability (about 2.3 dB RMS between recordings of one
 // tool, issue 16); what remains is the engine's forcing noise and the rig's added noise and motor line.
 TEST(SimulatedRig, CaptureOfACatalogToolMeasuresAsItsCatalogSpectrum) {
-  const auto dir = test::scratch_dir("simulated_capture_measured");
+  const auto dir = nibrig::test::scratch_dir("simulated_capture_measured");
   SimulatedRig rig(fast(3), testing::bundled_sound("vero2", "office"), "vero2", "office");
   CaptureOptions options;
   options.folder = dir / "vero2_office";

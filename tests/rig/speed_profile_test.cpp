@@ -49,7 +49,7 @@ TEST(SpeedProfile, RefusesPointsThatAreNotAProfile) {
 }
 
 TEST(SpeedProfile, ReadsACsvFileAndNamesTheLineOfAnError) {
-  const auto dir = test::scratch_dir("speed_profile_files");
+  const auto dir = nibrig::test::scratch_dir("speed_profile_files");
   {
     std::ofstream f(dir / "ok.csv");
     f << "# a ramp and a hold\ntime_s,speed_mm_s\n0,0\n1,100\n3,100\n";

@@ -82,10 +82,10 @@ TEST(FirFilter, ResetForgetsTheHistory) {
 TEST(FirFilter, ProcessNeverAllocates) {
   FirFilter filter(random_taps(256, 5));
   std::vector<float> block(64, 0.25f);
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   for (int i = 0; i < 100; ++i) filter.process(block.data(), block.size());
   filter.reset();
-  EXPECT_EQ(testing::allocations_on_this_thread(), before);
+  EXPECT_EQ(nibrig::testing::allocations_on_this_thread(), before);
 }
 
 TEST(FirFilter, RejectsNoTapsAndNonFiniteTaps) {

@@ -20,7 +20,7 @@
 namespace nibrig::rt {
 namespace {
 
-constexpr double kRate = 8000.0;  // the engine's internal rate at 48 kHz
+using testing::kInternalRate;
 
 model::io::VelocitySpectrum crayon_on_office_paper() {
   return testing::catalog_spectrum("cryon", "office");
@@ -38,12 +38,12 @@ std::vector<double> generate(ForcingGenerator& g, double speed, double force, st
 }
 
 std::vector<double> analyse(const std::vector<double>& x, const std::vector<double>& frequencies) {
-  return testing::catalog_analysis(x, kRate, frequencies);
+  return testing::catalog_analysis(x, kInternalRate, frequencies);
 }
 
 TEST(ForcingGenerator, LongRunSpectrumMatchesTheTargetAtSeveralSpeeds) {
   const auto target = crayon_on_office_paper();
-  auto table = std::make_shared<const ForcingTable>(target, kRate);
+  auto table = std::make_shared<const ForcingTable>(target, kInternalRate);
   // Measured speeds, and 80 mm/s between two of them (the target there is the linear
   // interpolation of the amplitude spectra, which is what the generator promises).
   for (double speed : {0.017, 0.1102, 0.25, 0.080}) {
@@ -98,10 +98,10 @@ std::vector<double> autocorrelation(const std::vector<double>& x, std::size_t ma
 
 TEST(ForcingGenerator, AutocorrelationShowsNoPeriodUpToTenSeconds) {
   const auto target = crayon_on_office_paper();
-  auto table = std::make_shared<const ForcingTable>(target, kRate);
+  auto table = std::make_shared<const ForcingTable>(target, kInternalRate);
   ForcingGenerator generator(table, 5);
   const auto x = generate(generator, 0.1102, kReferenceNormalForce, 300 * 8000);  // 300 s
-  const std::size_t from = static_cast<std::size_t>(0.25 * kRate), to = 10 * 8000 + 1;
+  const std::size_t from = static_cast<std::size_t>(0.25 * kInternalRate), to = 10 * 8000 + 1;
   const auto r = autocorrelation(x, to);
   const double worst = *std::max_element(r.begin() + from, r.end(),
                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
@@ -116,13 +116,13 @@ TEST(ForcingGenerator, AutocorrelationShowsNoPeriodUpToTenSeconds) {
   std::vector<double> comb(20 * 8000, 0.0);
   for (int f = 6; f <= 498; ++f)
     for (std::size_t n = 0; n < comb.size(); ++n)
-      comb[n] += std::sin(2 * std::numbers::pi * f * static_cast<double>(n) / kRate + 0.37 * f * f);
+      comb[n] += std::sin(2 * std::numbers::pi * f * static_cast<double>(n) / kInternalRate + 0.37 * f * f);
   const auto rc = autocorrelation(comb, 8001);
   EXPECT_GT(rc[8000], 0.99);
 }
 
 TEST(ForcingGenerator, SpeedActsAtTheNextSampleAndRestIsSilent) {
-  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kRate);
+  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kInternalRate);
   ForcingGenerator a(table, 3), b(table, 3);
   std::vector<double> v(4000, 0.1102), f(4000, kReferenceNormalForce), out_a(4000), out_b(4000);
   a.generate(v.data(), f.data(), out_a.data(), 4000);
@@ -142,7 +142,7 @@ TEST(ForcingGenerator, SpeedActsAtTheNextSampleAndRestIsSilent) {
 }
 
 TEST(ForcingGenerator, AmplitudeScalesWithNormalForceAndIsClampedAboveTheRange) {
-  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kRate);
+  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kInternalRate);
   ForcingGenerator a(table, 9), b(table, 9);
   std::vector<double> v(3000, 0.3), f(3000, kReferenceNormalForce), out_a(3000), out_b(3000);
   a.generate(v.data(), f.data(), out_a.data(), 3000);
@@ -153,7 +153,7 @@ TEST(ForcingGenerator, AmplitudeScalesWithNormalForceAndIsClampedAboveTheRange) 
 }
 
 TEST(ForcingGenerator, GeneratingAllocatesNothingAndNaNIsSilence) {
-  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kRate);
+  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kInternalRate);
   ForcingGenerator g(table, 1);
   std::vector<double> v(20000, 0.1), f(20000, 2.0), out(20000);
   v[5] = std::nan("");

@@ -14,12 +14,12 @@
 namespace nibrig::rt {
 namespace {
 
-constexpr double kRate = 48000.0;
+constexpr double kOutputRate = 48000.0;
 
 std::vector<float> sine(double frequency, double amplitude, std::size_t n) {
   std::vector<float> s(n);
   for (std::size_t i = 0; i < n; ++i)
-    s[i] = static_cast<float>(amplitude * std::sin(2 * std::numbers::pi * frequency * i / kRate));
+    s[i] = static_cast<float>(amplitude * std::sin(2 * std::numbers::pi * frequency * i / kOutputRate));
   return s;
 }
 
@@ -34,7 +34,7 @@ TEST(OutputStage, ASineInTheBandPassesWithTheHighPassesExactGain) {
   std::vector<float> s = sine(200.0, 0.5, 48000);
   stage.process(s.data(), s.size());
   // |H(e^jω)| of y[n] = x[n] − x[n−1] + R·y[n−1] at 200 Hz, after the 5 Hz transient has decayed.
-  const std::complex<double> z = std::polar(1.0, -2 * std::numbers::pi * 200.0 / kRate);
+  const std::complex<double> z = std::polar(1.0, -2 * std::numbers::pi * 200.0 / kOutputRate);
   const double gain = std::abs((1.0 - z) / (1.0 - stage.dc_pole() * z));
   EXPECT_NEAR(peak(s, 24000), 0.5 * gain, 2e-4);  // float samples; the sampled peak is within 2e-5
   EXPECT_GT(gain, 0.999);  // 200 Hz is far above the corner
@@ -62,9 +62,9 @@ TEST(OutputStage, NothingAVoiceCanComputePassesTheLimit) {
   std::normal_distribution<float> huge(0.0f, 1e6f);
   std::vector<float> s(200000);
   for (std::size_t i = 0; i < s.size(); ++i) s[i] = i % 3 ? huge(generator) : faults[pick(generator)];
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   stage.process(s.data(), s.size());
-  EXPECT_EQ(testing::allocations_on_this_thread(), before);
+  EXPECT_EQ(nibrig::testing::allocations_on_this_thread(), before);
   for (float x : s) {
     ASSERT_TRUE(std::isfinite(x));
     ASSERT_LE(std::abs(x), 0.7f);

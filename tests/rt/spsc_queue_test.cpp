@@ -39,7 +39,7 @@ TEST(SpscQueue, TwoThreadsPassAMillionItemsInOrderWithoutAllocating) {
     for (std::uint64_t i = 0; i < kItems;)
       if (q.try_push(i)) ++i;
   });
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   std::uint64_t expected = 0;
   bool in_order = true;
   while (expected < kItems) {
@@ -48,7 +48,7 @@ TEST(SpscQueue, TwoThreadsPassAMillionItemsInOrderWithoutAllocating) {
       ++expected;
     }
   }
-  const std::size_t allocated = testing::allocations_on_this_thread() - before;
+  const std::size_t allocated = nibrig::testing::allocations_on_this_thread() - before;
   producer.join();
   EXPECT_TRUE(in_order);
   EXPECT_EQ(allocated, 0u);
@@ -64,9 +64,9 @@ TEST(AllocationCounter, SeesTheAllocationsItMustRuleOut) {
   // Without this the zero counts above could come from a counter that never counts.
   // Through a volatile pointer: an optimiser may elide a new-expression whose result is unused.
   static void* volatile sink = nullptr;
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   sink = new std::uint64_t(7);
-  const std::size_t after = testing::allocations_on_this_thread();
+  const std::size_t after = nibrig::testing::allocations_on_this_thread();
   delete static_cast<std::uint64_t*>(sink);
   EXPECT_EQ(after - before, 1u);
 }

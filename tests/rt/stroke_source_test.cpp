@@ -59,11 +59,11 @@ TEST(StrokeSource, ABlockIsTheSourceSampledOnItsOwnClock) {
 }
 
 TEST(StrokeSource, ATrajectoryReplaysAnArtistsRecordedSpeedWithoutAllocating) {
-  const auto file = test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
+  const auto file = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
   const model::io::DrawingTrajectory drawing = model::io::read_paper_drawing(file);
   TrajectoryStroke source(drawing);
   EXPECT_NEAR(source.duration(), drawing.time_s.back() - drawing.time_s.front(), 1e-12);
-  const std::size_t before = testing::allocations_on_this_thread();
+  const std::size_t before = nibrig::testing::allocations_on_this_thread();
   std::size_t touching = 0;
   for (std::size_t i = 0; i < drawing.time_s.size(); ++i) {
     const double expected = drawing.touching[i] ? drawing.speed_m_s[i] : 0.0;
@@ -80,7 +80,7 @@ TEST(StrokeSource, ATrajectoryReplaysAnArtistsRecordedSpeedWithoutAllocating) {
   const double rate = 8000.0;
   const auto first = static_cast<std::uint64_t>(source.duration() * rate) - 200;
   source.fill(first, rate, speed, force, 400);
-  EXPECT_EQ(testing::allocations_on_this_thread(), before);
+  EXPECT_EQ(nibrig::testing::allocations_on_this_thread(), before);
   for (std::size_t n = 0; n < 400; ++n) {
     const double t = static_cast<double>(first + n) / rate;
     EXPECT_EQ(speed[n], source.speed_at(t)) << n;

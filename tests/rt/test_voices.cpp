@@ -10,7 +10,7 @@
 namespace nibrig::rt::testing {
 
 model::io::VelocitySpectrum catalog_spectrum(const std::string& tool, const std::string& surface) {
-  static const auto catalog = model::io::read_catalog(test::assets_dir() / "default_catalog.json");
+  static const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   for (const auto& p : catalog.pairings)
     if (p.tool == tool && p.surface == surface && p.vibration) return p.vibration->spectrum;
   throw std::runtime_error("the bundled catalog has no spectrum for " + tool + "/" + surface);

@@ -12,6 +12,9 @@
 
 namespace nibrig::rt::testing {
 
+// The engine's internal rate at a 48 kHz output (the rate a voice steps at).
+inline constexpr double kInternalRate = 8000.0;
+
 // The measured acceleration spectrum of `tool` on `surface` from assets/default_catalog.json.
 model::io::VelocitySpectrum catalog_spectrum(const std::string& tool, const std::string& surface);
 

@@ -17,16 +17,16 @@
 namespace nibrig::rt {
 namespace {
 
-constexpr double kRate = 8000.0;  // the engine's internal rate at 48 kHz
+using testing::kInternalRate;
 
 TEST(Voice, OutputReadsAsTheMeasuredAccelerationSpectrum) {
   const auto measured = testing::catalog_spectrum("stab", "note");
-  const auto response = model::modal::discrete_frequency_response(testing::small_stylus(), kRate,
+  const auto response = model::modal::discrete_frequency_response(testing::small_stylus(), kInternalRate,
                                                                   measured.frequencies_hz);
   double peak = 0;
   for (const auto& h : response) peak = std::max(peak, std::abs(h));
   for (std::size_t s : {0u, 3u, 5u}) {
-    auto voice = testing::catalog_voice("stab", "note", kRate, 21 + s);
+    auto voice = testing::catalog_voice("stab", "note", kInternalRate, 21 + s);
     const std::size_t n = 150 * 12000;  // 150 analysis windows of 1.5 s
     std::vector<double> v(n, measured.speeds_m_s[s]), f(n, kReferenceNormalForce), a(n);
     voice->process(v.data(), f.data(), a.data(), n);
@@ -40,7 +40,7 @@ TEST(Voice, OutputReadsAsTheMeasuredAccelerationSpectrum) {
         want.push_back(measured.amplitude_m_s2[s][k]);
       }
     ASSERT_GT(frequencies.size(), want.size() / 2);
-    const auto a_read = testing::catalog_analysis(a, kRate, frequencies);
+    const auto a_read = testing::catalog_analysis(a, kInternalRate, frequencies);
     const auto agreement = testing::compare_spectra(a_read, want);
     // As for the forcing alone (forcing_generator_test.cpp: the catalog spectrum's own roughness
     // dominates); the integrator adds no error, since the forcing was divided by its own discrete
@@ -55,7 +55,7 @@ TEST(Voice, OutputReadsAsTheMeasuredAccelerationSpectrum) {
 }
 
 TEST(Voice, ProcessingAllocatesNothing) {
-  auto voice = testing::catalog_voice("cryon", "stone", kRate, 1);
+  auto voice = testing::catalog_voice("cryon", "stone", kInternalRate, 1);
   std::vector<double> v(10000, 0.12), f(10000, 2.2), a(10000);
   const std::size_t before = nibrig::testing::allocations_on_this_thread();
   for (std::size_t at = 0; at < v.size(); at += 53)

@@ -29,4 +29,11 @@ std::filesystem::path scratch_dir(const std::string& name) {
 
 std::filesystem::path assets_dir() { return std::filesystem::path(NIBRIG_SOURCE_DIR) / "assets"; }
 
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> out;
+  if (!std::filesystem::exists(dir)) return out;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path());
+  return out;
+}
+
 }  // namespace nibrig::test

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace nibrig::test {
 
@@ -16,5 +17,8 @@ std::filesystem::path scratch_dir(const std::string& name);
 
 // The repository's assets/ folder.
 std::filesystem::path assets_dir();
+
+// The entries of a folder, in the order the file system lists them; none when it does not exist.
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir);
 
 }  // namespace nibrig::test

@@ -15,7 +15,7 @@ namespace {
 
 using namespace detail;
 
-constexpr const char* kind = "comparison spectrograms";
+constexpr const char* kSpectrogramsKind = "comparison spectrograms";
 
 HeatMap panel(const ComparisonSpectrograms& f, std::vector<std::vector<double>> z,
               const std::string& title, const std::string& colour_label, bool y_label) {
@@ -37,9 +37,9 @@ HeatMap panel(const ComparisonSpectrograms& f, std::vector<std::vector<double>> 
 void write_comparison_spectrograms(const ComparisonSpectrograms& figure,
                                    const std::filesystem::path& png) {
   if (!(figure.dynamic_range_db > 0) || !std::isfinite(figure.dynamic_range_db))
-    reject(kind, figure.title, "dynamic_range_db must be positive and finite");
+    reject(kSpectrogramsKind, figure.title, "dynamic_range_db must be positive and finite");
   if (!(figure.difference_range_db > 0) || !std::isfinite(figure.difference_range_db))
-    reject(kind, figure.title, "difference_range_db must be positive and finite");
+    reject(kSpectrogramsKind, figure.title, "difference_range_db must be positive and finite");
   HeatMap measured = panel(figure, figure.measured_db, figure.measured_title, "dB", true);
   HeatMap simulated = panel(figure, figure.simulated_db, figure.simulated_title, "dB", false);
   // Each checked as a heat map of its own under the figure's title, the message naming the panel;
@@ -47,7 +47,7 @@ void write_comparison_spectrograms(const ComparisonSpectrograms& figure,
   for (const HeatMap* map : {&measured, &simulated}) {
     HeatMap named = *map;
     named.title = figure.title;
-    validate_heat_map(named, (std::string(kind) + ", " + map->title + " panel,").c_str());
+    validate_heat_map(named, (std::string(kSpectrogramsKind) + ", " + map->title + " panel,").c_str());
   }
   std::vector<std::vector<double>> difference = figure.simulated_db;
   double top = -std::numeric_limits<double>::infinity();

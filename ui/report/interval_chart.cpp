@@ -14,31 +14,31 @@ namespace {
 
 using namespace detail;
 
-constexpr const char* kind = "interval chart";
+constexpr const char* kIntervalChartKind = "interval chart";
 constexpr Rgb band_grey{212, 212, 212};
 constexpr Rgb separator_grey{170, 170, 170};
 
 void validate(const IntervalChart& chart) {
-  check_size(chart.size, kind, chart.title);
-  if (chart.bars.empty()) reject(kind, chart.title, "no bars to draw");
+  check_size(chart.size, kIntervalChartKind, chart.title);
+  if (chart.bars.empty()) reject(kIntervalChartKind, chart.title, "no bars to draw");
   for (std::size_t i = 0; i < chart.bars.size(); ++i) {
     const auto& b = chart.bars[i];
     const std::string name =
         "bar " + std::to_string(i) + (b.label.empty() ? "" : " (" + b.label + ")");
     for (const auto& [field, v] : {std::pair{"value", b.value}, {"low", b.low}, {"high", b.high}}) {
-      if (!std::isfinite(v)) reject(kind, chart.title, name + " " + field + " is not finite");
+      if (!std::isfinite(v)) reject(kIntervalChartKind, chart.title, name + " " + field + " is not finite");
     }
     // A point outside its own interval can be legitimate (some bootstrap intervals), an interval
     // whose ends are swapped cannot.
     if (b.low > b.high) {
-      reject(kind, chart.title,
+      reject(kIntervalChartKind, chart.title,
              name + " has low " + std::to_string(b.low) + " above high " + std::to_string(b.high));
     }
   }
   if (chart.reference_band) {
     const auto [lo, hi] = *chart.reference_band;
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
-      reject(kind, chart.title,
+      reject(kIntervalChartKind, chart.title,
              "reference band [" + std::to_string(lo) + ", " + std::to_string(hi) +
                  "] is not a finite range with low below high");
     }

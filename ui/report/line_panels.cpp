@@ -12,22 +12,22 @@ namespace {
 
 using namespace detail;
 
-constexpr const char* kind = "line panels";
+constexpr const char* kLinePanelsKind = "line panels";
 
 void validate(const LinePanels& figure) {
-  check_size(figure.size, kind, figure.title);
-  if (figure.panels.empty()) reject(kind, figure.title, "no panels to draw");
+  check_size(figure.size, kLinePanelsKind, figure.title);
+  if (figure.panels.empty()) reject(kLinePanelsKind, figure.title, "no panels to draw");
   if (figure.columns < 1)
-    reject(kind, figure.title, "columns is " + std::to_string(figure.columns) + ", not >= 1");
+    reject(kLinePanelsKind, figure.title, "columns is " + std::to_string(figure.columns) + ", not >= 1");
   for (std::size_t k = 0; k < figure.panels.size(); ++k) {
     const auto& panel = figure.panels[k];
     try {
       validate_line_series(panel, ("panel " + std::to_string(k)).c_str());
     } catch (const std::invalid_argument& e) {
-      reject(kind, figure.title, e.what());
+      reject(kLinePanelsKind, figure.title, e.what());
     }
     if (figure.shared_axes && panel.log_y != figure.panels.front().log_y)
-      reject(kind, figure.title,
+      reject(kLinePanelsKind, figure.title,
              "panel " + std::to_string(k) + " " + quoted_title(panel.title) +
                  " has another log_y than panel 0 on shared axes");
   }

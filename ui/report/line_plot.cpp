@@ -9,13 +9,13 @@ namespace {
 
 using namespace detail;
 
-constexpr const char* kind = "line plot";
+constexpr const char* kLinePlotKind = "line plot";
 
 }  // namespace
 
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png) {
-  check_size(plot.size, kind, plot.title);
-  validate_line_series(plot, kind);
+  check_size(plot.size, kLinePlotKind, plot.title);
+  validate_line_series(plot, kLinePlotKind);
   const auto st = Style::for_size(plot.size);
   const double width = plot.size.width_px, height = plot.size.height_px;
 

@@ -11,20 +11,20 @@ namespace {
 
 using namespace detail;
 
-constexpr const char* kind = "scatter plot";
+constexpr const char* kScatterPlotKind = "scatter plot";
 // Vertices of a drawn ellipse: smooth at any size a figure is likely to give it.
 constexpr int ellipse_vertices = 120;
 constexpr Rgb leader_grey{150, 150, 150};
 
 void validate(const ScatterPlot& plot) {
-  check_size(plot.size, kind, plot.title);
-  if (plot.points.empty()) reject(kind, plot.title, "no points to draw");
+  check_size(plot.size, kScatterPlotKind, plot.title);
+  if (plot.points.empty()) reject(kScatterPlotKind, plot.title, "no points to draw");
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
     const auto& p = plot.points[i];
     const std::string name =
         "point " + std::to_string(i) + (p.label.empty() ? "" : " (" + p.label + ")");
     for (const auto& [field, v] : {std::pair{"x", p.x}, {"y", p.y}}) {
-      if (!std::isfinite(v)) reject(kind, plot.title, name + " " + field + " is not finite");
+      if (!std::isfinite(v)) reject(kScatterPlotKind, plot.title, name + " " + field + " is not finite");
     }
     for (std::size_t k = 0; k < p.regions.size(); ++k) {
       const auto& e = p.regions[k];
@@ -34,17 +34,17 @@ void validate(const ScatterPlot& plot) {
                                      {"semi_axis_1", e.semi_axis_1},
                                      {"semi_axis_2", e.semi_axis_2},
                                      {"angle_rad", e.angle_rad}}) {
-        if (!std::isfinite(v)) reject(kind, plot.title, region + " " + field + " is not finite");
+        if (!std::isfinite(v)) reject(kScatterPlotKind, plot.title, region + " " + field + " is not finite");
       }
       for (const auto& [field, v] :
            {std::pair{"semi_axis_1", e.semi_axis_1}, {"semi_axis_2", e.semi_axis_2}}) {
         if (v < 0.0) {
-          reject(kind, plot.title,
+          reject(kScatterPlotKind, plot.title,
                  region + " " + field + " = " + std::to_string(v) + " is negative");
         }
       }
       if (!plot.region_labels.empty() && k >= plot.region_labels.size()) {
-        reject(kind, plot.title,
+        reject(kScatterPlotKind, plot.title,
                region + " has no legend text: region_labels names " +
                    std::to_string(plot.region_labels.size()) + " styles");
       }

@@ -56,10 +56,10 @@ io::Session write_and_read_synthetic_session(const std::filesystem::path& folder
 }
 
 TEST(AnalyzeSession, RecoversFrictionAndTheSpeedDependentSpectrum) {
-  const auto dir = test::scratch_dir("analyze_session");
+  const auto dir = nibrig::test::scratch_dir("analyze_session");
   const auto session = write_and_read_synthetic_session(dir / "session");
   const auto threshold =
-      measure::ThresholdCurve::load(test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
   AnalysisOptions options;
   options.binning.smoothing_bins = 1;  // compare the raw peak with the closed form
   const auto analysis = analyze_session(session, threshold, options);
@@ -86,7 +86,7 @@ TEST(AnalyzeSession, RecoversFrictionAndTheSpeedDependentSpectrum) {
 }
 
 TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
-  const auto dir = test::scratch_dir("analyze_partial");
+  const auto dir = nibrig::test::scratch_dir("analyze_partial");
   io::SessionInfo info;
   info.tool = "t";
   info.surface = "s";
@@ -104,7 +104,7 @@ TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
   const auto session = io::read_session(io::partial_folder_of(dir / "cut"));
   EXPECT_FALSE(session.complete);
   const auto threshold =
-      measure::ThresholdCurve::load(test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
   const AnalysisOptions options;
   const auto analysis = analyze_session(session, threshold, options);
   EXPECT_FALSE(analysis.complete);

@@ -21,7 +21,7 @@ std::size_t count_files(const std::filesystem::path& folder, const std::string& 
 }
 
 TEST(FindRecordings, FindsEveryFrictionAndVibrationFileOfThePaper) {
-  const auto root = test::shared_data() / "piovarci2018";
+  const auto root = nibrig::test::shared_data() / "piovarci2018";
   const auto found = find_recordings(root);
   std::size_t friction = 0, vibration = 0;
   for (const auto& f : found.files) {
@@ -41,7 +41,7 @@ TEST(FindRecordings, FindsEveryFrictionAndVibrationFileOfThePaper) {
 }
 
 TEST(ClassifyRecording, RejectsWhatIsNotARecordingWithItsPath) {
-  const auto dir = test::scratch_dir("classify");
+  const auto dir = nibrig::test::scratch_dir("classify");
   try {
     classify_recording(dir / "nothing.csv");
     FAIL() << "expected an error";

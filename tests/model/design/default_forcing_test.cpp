@@ -17,16 +17,11 @@
 namespace nibrig::model::design {
 namespace {
 
-std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
-  std::vector<std::filesystem::path> out;
-  if (!std::filesystem::exists(dir)) return out;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path());
-  return out;
-}
+using nibrig::test::files_in;
 
 TEST(DefaultForcing, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
   DefaultsOptions o;
-  o.cache_dir = test::scratch_dir("default_forcing_hit") / "cache";
+  o.cache_dir = nibrig::test::scratch_dir("default_forcing_hit") / "cache";
   std::map<std::string, std::size_t> last_done, totals;
   o.progress = [&](const std::string& step, std::size_t done, std::size_t total) {
     last_done[step] = done;
@@ -61,7 +56,7 @@ TEST(DefaultForcing, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
 }
 
 TEST(DefaultForcing, EveryInputFileIsInTheKey) {
-  const auto dir = test::scratch_dir("default_forcing_key");
+  const auto dir = nibrig::test::scratch_dir("default_forcing_key");
   const std::string key = default_forcing_key().hex();
   // Copies key as the bundled files (content, not path); one appended byte does not.
   const std::vector<std::pair<std::filesystem::path DefaultsOptions::*, std::filesystem::path>>
@@ -84,7 +79,7 @@ TEST(DefaultForcing, EveryInputFileIsInTheKey) {
 
 TEST(DefaultForcing, ACancelledComputationLeavesNoFile) {
   DefaultsOptions o;
-  o.cache_dir = test::scratch_dir("default_forcing_cancel") / "cache";
+  o.cache_dir = nibrig::test::scratch_dir("default_forcing_cancel") / "cache";
   std::atomic<bool> cancel{false};
   o.cancel = &cancel;
   std::size_t designs = 0;

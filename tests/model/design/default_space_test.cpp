@@ -25,15 +25,10 @@ DefaultsOptions quick(const std::filesystem::path& cache) {
   return o;
 }
 
-std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
-  std::vector<std::filesystem::path> out;
-  if (!std::filesystem::exists(dir)) return out;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path());
-  return out;
-}
+using nibrig::test::files_in;
 
 TEST(DefaultSpace, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
-  const auto cache = test::scratch_dir("default_space_hit") / "cache";
+  const auto cache = nibrig::test::scratch_dir("default_space_hit") / "cache";
   // Through the environment, as the panel finds it.
   ::setenv("NIBRIG_CACHE", cache.c_str(), 1);
   DefaultsOptions o = quick({});
@@ -71,7 +66,7 @@ TEST(DefaultSpace, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
 }
 
 TEST(DefaultSpace, EveryInputIsInTheKeyButNotHowItIsComputed) {
-  const auto dir = test::scratch_dir("default_space_key");
+  const auto dir = nibrig::test::scratch_dir("default_space_key");
   const DefaultsOptions base = quick(dir);
   const std::string key = default_space_key(base).hex();
   EXPECT_EQ(DefaultsOptions{}.bootstrap_resamples, 200);  // the demo's, unless a test asks
@@ -85,7 +80,7 @@ TEST(DefaultSpace, EveryInputIsInTheKeyButNotHowItIsComputed) {
   EXPECT_NE(default_space_key(refits).hex(), key);
 
   // A copy keys as the bundled file (content, not path); one changed byte does not.
-  const auto bundled = test::assets_dir() / "default_catalog.json";
+  const auto bundled = nibrig::test::assets_dir() / "default_catalog.json";
   std::ifstream in(bundled, std::ios::binary);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   DefaultsOptions copy = base;
@@ -113,7 +108,7 @@ TEST(DefaultSpace, EveryInputIsInTheKeyButNotHowItIsComputed) {
 }
 
 TEST(DefaultSpace, ACorruptCacheFileIsComputedAgainWithAWarning) {
-  const auto cache = test::scratch_dir("default_space_corrupt");
+  const auto cache = nibrig::test::scratch_dir("default_space_corrupt");
   const DefaultsOptions o = quick(cache);
   const auto file = cache / ("default_space-" + default_space_key(o).hex() + ".json");
   std::ofstream(file) << R"({"format": "nibrig-space", "version": 1, "stimuli": [)";  // cut short
@@ -127,7 +122,7 @@ TEST(DefaultSpace, ACorruptCacheFileIsComputedAgainWithAWarning) {
 }
 
 TEST(DefaultSpace, ASpaceThatCannotBeKeptIsStillReturned) {
-  const auto dir = test::scratch_dir("default_space_unwritable");
+  const auto dir = nibrig::test::scratch_dir("default_space_unwritable");
   std::ofstream(dir / "a_file") << "not a folder";
   const Cached<DefaultSpace> space = default_space(quick(dir / "a_file" / "cache"));
   EXPECT_TRUE(space.computed);
@@ -137,7 +132,7 @@ TEST(DefaultSpace, ASpaceThatCannotBeKeptIsStillReturned) {
 }
 
 TEST(DefaultSpace, ACancelledComputationLeavesNoFile) {
-  const auto cache = test::scratch_dir("default_space_cancel") / "cache";
+  const auto cache = nibrig::test::scratch_dir("default_space_cancel") / "cache";
   std::atomic<bool> cancel{false};
   DefaultsOptions o = quick(cache);
   o.bootstrap_resamples = 200;  // so that the cancel lands mid-bootstrap

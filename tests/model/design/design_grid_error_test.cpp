@@ -43,7 +43,7 @@ struct RealSetup {
 
 const RealSetup& real() {
   static const RealSetup r = [] {
-    const auto assets = test::assets_dir();
+    const auto assets = nibrig::test::assets_dir();
     RealSetup s{io::read_catalog(assets / "default_catalog.json"),
                 {},
                 measure::ThresholdCurve::load(assets / "thresholds" / "israr2006_pen_hold.csv"),

@@ -110,7 +110,7 @@ TEST(DesignResponseGrid, TheEndsOfTheMixAreSingleMaterials) {
 }
 
 TEST(DesignGridFile, ReadsBackWhatItWroteBitForBit) {
-  const auto dir = test::scratch_dir("design_grid_file");
+  const auto dir = nibrig::test::scratch_dir("design_grid_file");
   const DesignResponseGrid grid = synthetic_grid();
   write_design_grid(dir / "grid.json", grid, "0123456789abcdef");
   const DesignResponseGrid back = read_design_grid(dir / "grid.json", "0123456789abcdef");
@@ -136,7 +136,7 @@ TEST(DesignGridFile, ReadsBackWhatItWroteBitForBit) {
 }
 
 TEST(DesignGridFile, ATruncatedOrInconsistentFileIsRefusedNamingTheFile) {
-  const auto dir = test::scratch_dir("design_grid_corrupt");
+  const auto dir = nibrig::test::scratch_dir("design_grid_corrupt");
   write_design_grid(dir / "grid.json", synthetic_grid(), "k");
   std::string text;
   {
@@ -163,7 +163,7 @@ TEST(DesignGridFile, ATruncatedOrInconsistentFileIsRefusedNamingTheFile) {
 // The prediction inputs a cache key is made from, with a hand-made model: no FEM, no fit.
 std::unique_ptr<PredictionInputs> hand_made_inputs() {
   forcing::ForcingInputOptions options;
-  options.catalog = test::assets_dir() / "default_catalog.json";
+  options.catalog = nibrig::test::assets_dir() / "default_catalog.json";
   options.mesh_size = 0.004;
   options.modes = 8;
   return load_prediction_inputs(options, "", hand_made_model());
@@ -192,14 +192,14 @@ TEST(DesignGridCache, EveryInputTheGridDependsOnMovesTheKey) {
   EXPECT_NE(design_grid_cache_key(*inputs, axes), key);
   inputs->model.frequencies_hz.back() -= 1;
   // The template file's content, not its name: a copy elsewhere is the same grid, an edit is not.
-  const auto dir = test::scratch_dir("design_grid_key");
+  const auto dir = nibrig::test::scratch_dir("design_grid_key");
   std::filesystem::copy_file(inputs->design_template_file, dir / "template.json");
   inputs->design_template_file = dir / "template.json";
   EXPECT_EQ(design_grid_cache_key(*inputs, axes), key);
   std::ofstream(dir / "template.json", std::ios::app) << "\n";
   EXPECT_NE(design_grid_cache_key(*inputs, axes), key);
   std::filesystem::copy_file(inputs->materials_file, dir / "materials.json");
-  inputs->design_template_file = test::assets_dir() / "designs" / "stylus_vero_tip2mm.json";
+  inputs->design_template_file = nibrig::test::assets_dir() / "designs" / "stylus_vero_tip2mm.json";
   inputs->materials_file = dir / "materials.json";
   EXPECT_EQ(design_grid_cache_key(*inputs, axes), key);
   std::ofstream(dir / "materials.json", std::ios::app) << " ";
@@ -207,7 +207,7 @@ TEST(DesignGridCache, EveryInputTheGridDependsOnMovesTheKey) {
 }
 
 TEST(DesignGridCache, ACorruptCacheIsRemovedAndRecomputedNotTrusted) {
-  const auto dir = test::scratch_dir("design_grid_cache");
+  const auto dir = nibrig::test::scratch_dir("design_grid_cache");
   ::setenv("NIBRIG_CACHE", dir.c_str(), 1);
   const auto inputs = hand_made_inputs();
   DesignResponseGrid grid = synthetic_grid();

@@ -52,7 +52,7 @@ Made crayon_as_a_prediction() {
 
 TEST(PredictionFile, WhatIsWrittenIsReadBack) {
   const auto [tool, threshold] = crayon_as_a_prediction();
-  const auto file = test::scratch_dir("prediction_file") / "predicted.json";
+  const auto file = nibrig::test::scratch_dir("prediction_file") / "predicted.json";
   io::write_file_atomically(file, prediction_json(tool, threshold.source()).dump());
   const auto read = read_prediction(file, threshold);
   EXPECT_EQ(to_string(read.point), to_string(tool.point));
@@ -79,7 +79,7 @@ TEST(PredictionFile, WhatIsWrittenIsReadBack) {
 
 TEST(PredictionFile, AFileThatIsNotAPredictionIsRefusedNamingTheFileAndField) {
   const auto [tool, threshold] = crayon_as_a_prediction();
-  const auto dir = test::scratch_dir("prediction_file_bad");
+  const auto dir = nibrig::test::scratch_dir("prediction_file_bad");
   auto j = prediction_json(tool, threshold.source());
   j["kind"] = "measurement";
   io::write_file_atomically(dir / "kind.json", j.dump());

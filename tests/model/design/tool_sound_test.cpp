@@ -47,14 +47,14 @@ TEST(ToolSound, ACatalogToolIsItsMeasuredSpectrumThroughTheBundledStylus) {
   ToolSounds sounds({});
   const ToolSound cryon = sounds.sound("cryon", "office");
   const ToolSound stab = sounds.sound("stab", "note");
-  const auto catalog = io::read_catalog(test::assets_dir() / "default_catalog.json");
+  const auto catalog = io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   EXPECT_EQ(cryon.spectrum.amplitude_m_s2,
             pairing_spectrum(catalog, "", "cryon", "office").amplitude_m_s2);
   EXPECT_EQ(cryon.name, "cryon on office");
   // The bundled stylus, meshed once: both tools run the same modes.
-  const auto materials = mechanics::read_material_table(test::assets_dir() / "materials.json");
+  const auto materials = mechanics::read_material_table(nibrig::test::assets_dir() / "materials.json");
   const auto stylus =
-      mechanics::read_design(test::assets_dir() / "designs" / "stylus_vero_tip2mm.json", materials);
+      mechanics::read_design(nibrig::test::assets_dir() / "designs" / "stylus_vero_tip2mm.json", materials);
   EXPECT_EQ(cryon.modes, stylus.name);
   EXPECT_EQ(static_cast<int>(cryon.modal.size()), stylus.modes);
   EXPECT_EQ(cryon.modal.omega, stab.modal.omega);

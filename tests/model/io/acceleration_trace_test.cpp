@@ -11,8 +11,8 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 AccelerationTrace decaying_sine(std::size_t samples) {
   AccelerationTrace trace{2000.0, {}};
@@ -24,7 +24,7 @@ AccelerationTrace decaying_sine(std::size_t samples) {
 }
 
 TEST(AccelerationTrace, CsvRoundTripKeepsRateAndSamples) {
-  const auto file = test::scratch_dir("trace") / "ring.csv";
+  const auto file = nibrig::test::scratch_dir("trace") / "ring.csv";
   const AccelerationTrace written = decaying_sine(500);
   write_acceleration_trace(file, written);
   const AccelerationTrace read = read_acceleration_trace(file);
@@ -36,7 +36,7 @@ TEST(AccelerationTrace, CsvRoundTripKeepsRateAndSamples) {
 }
 
 TEST(AccelerationTrace, SessionFolderGivesCalibratedAcceleration) {
-  const auto folder = test::scratch_dir("trace_session") / "ring";
+  const auto folder = nibrig::test::scratch_dir("trace_session") / "ring";
   SessionInfo info;
   info.tool = "bar";
   info.surface = "none";
@@ -58,32 +58,32 @@ TEST(AccelerationTrace, SessionFolderGivesCalibratedAcceleration) {
 }
 
 TEST(AccelerationTrace, BadFilesNameFileLineAndExpectation) {
-  const auto dir = test::scratch_dir("trace_bad");
+  const auto dir = nibrig::test::scratch_dir("trace_bad");
   std::string rows;
   for (int i = 0; i < 20; ++i) rows += std::to_string(i * 0.001) + ",0.5\n";
 
-  test::write_text(dir / "uneven.csv", "time_s,acceleration_m_s2\n" + rows + "0.025,0.5\n");
+  nibrig::test::write_text(dir / "uneven.csv", "time_s,acceleration_m_s2\n" + rows + "0.025,0.5\n");
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "uneven.csv"); }),
                        {"uneven.csv", "line 22", "evenly spaced"});
 
-  test::write_text(dir / "nan.csv", "time_s,acceleration_m_s2\n0,0.1\n0.001,nan\n" + rows);
+  nibrig::test::write_text(dir / "nan.csv", "time_s,acceleration_m_s2\n0,0.1\n0.001,nan\n" + rows);
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "nan.csv"); }),
                        {"nan.csv", "line 3", "acceleration_m_s2"});
 
-  test::write_text(dir / "column.csv", "time_s,accel_g\n" + rows);
+  nibrig::test::write_text(dir / "column.csv", "time_s,accel_g\n" + rows);
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "column.csv"); }),
                        {"column.csv", "acceleration_m_s2"});
 
-  test::write_text(dir / "short.csv", "time_s,acceleration_m_s2\n0,1\n0.001,2\n");
+  nibrig::test::write_text(dir / "short.csv", "time_s,acceleration_m_s2\n0,1\n0.001,2\n");
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "short.csv"); }),
                        {"short.csv", "at least 16 samples"});
 
-  test::write_text(dir / "backwards.csv",
+  nibrig::test::write_text(dir / "backwards.csv",
                    "time_s,acceleration_m_s2\n0,1\n0.002,2\n0.001,2\n" + rows);
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "backwards.csv"); }),
                        {"backwards.csv", "line 4", "increase"});
 
-  test::write_text(dir / "empty.csv", "");
+  nibrig::test::write_text(dir / "empty.csv", "");
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "empty.csv"); }),
                        {"empty.csv", "time_s,acceleration_m_s2"});
 }

@@ -12,8 +12,8 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 VelocitySpectrum spectrum() {
   VelocitySpectrum s;
@@ -63,7 +63,7 @@ void expect_near_all(const std::vector<double>& a, const std::vector<double>& b)
 }
 
 TEST(Catalog, RoundTrip) {
-  const auto dir = test::scratch_dir("catalog_round_trip");
+  const auto dir = nibrig::test::scratch_dir("catalog_round_trip");
   const Catalog original = sample_catalog();
   write_catalog(dir / "catalog.json", original);
   const Catalog back = read_catalog(dir / "catalog.json");
@@ -149,7 +149,7 @@ TEST(Catalog, SpectrumValidationNamesThePath) {
 class CatalogMalformed : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = test::scratch_dir("catalog_malformed");
+    dir_ = nibrig::test::scratch_dir("catalog_malformed");
     write_catalog(dir_ / "catalog.json", sample_catalog());
     std::ifstream in(dir_ / "catalog.json");
     json_ = nlohmann::json::parse(in);
@@ -157,7 +157,7 @@ class CatalogMalformed : public ::testing::Test {
   std::string error_after(const std::function<void(nlohmann::json&)>& edit) {
     nlohmann::json json = json_;
     edit(json);
-    test::write_text(dir_ / "catalog.json", json.dump(2));
+    nibrig::test::write_text(dir_ / "catalog.json", json.dump(2));
     return format_error_of([&] { read_catalog(dir_ / "catalog.json"); });
   }
   std::filesystem::path dir_;
@@ -203,14 +203,14 @@ TEST_F(CatalogMalformed, FieldErrorsNameTheJsonPath) {
 }
 
 TEST_F(CatalogMalformed, EmptyFileAndBadSyntax) {
-  test::write_text(dir_ / "catalog.json", "");
+  nibrig::test::write_text(dir_ / "catalog.json", "");
   expect_message_names(format_error_of([&] { read_catalog(dir_ / "catalog.json"); }),
                        {"catalog.json", "empty file"});
-  test::write_text(dir_ / "catalog.json", "{\n\"format\": \"nibrig-catalog\",\n\"tools\": [\n");
+  nibrig::test::write_text(dir_ / "catalog.json", "{\n\"format\": \"nibrig-catalog\",\n\"tools\": [\n");
   expect_message_names(format_error_of([&] { read_catalog(dir_ / "catalog.json"); }),
                        {"catalog.json", "line 4", "invalid JSON"});
   // nlohmann reports a number beyond double range as out_of_range, not as a parse error.
-  test::write_text(dir_ / "catalog.json", "{\"format\": 1e999}");
+  nibrig::test::write_text(dir_ / "catalog.json", "{\"format\": 1e999}");
   expect_message_names(format_error_of([&] { read_catalog(dir_ / "catalog.json"); }),
                        {"catalog.json", "invalid JSON", "number overflow"});
   expect_message_names(format_error_of([&] { read_catalog(dir_ / "missing.json"); }),
@@ -218,7 +218,7 @@ TEST_F(CatalogMalformed, EmptyFileAndBadSyntax) {
 }
 
 TEST(Catalog, WriterRefusesNonFiniteNumbersAndLeavesTheOldFile) {
-  const auto dir = test::scratch_dir("catalog_writer_refuses");
+  const auto dir = nibrig::test::scratch_dir("catalog_writer_refuses");
   write_catalog(dir / "catalog.json", sample_catalog());
   Catalog bad = sample_catalog();
   bad.pairings[0].vibration->spectrum.amplitude_m_s2[1][2] =

@@ -41,7 +41,7 @@ ComparisonFile sample() {
 }
 
 TEST(ComparisonFile, RoundTripsWithSpeedsInMillimetresPerSecondAndNullForMissingValues) {
-  const auto file = test::scratch_dir("comparison_file") / "comparison.json";
+  const auto file = nibrig::test::scratch_dir("comparison_file") / "comparison.json";
   write_comparison_file(sample(), file);
 
   std::ifstream in(file);
@@ -77,15 +77,15 @@ TEST(ComparisonFile, RoundTripsWithSpeedsInMillimetresPerSecondAndNullForMissing
 }
 
 TEST(ComparisonFile, RefusesOtherFormatsAndBrokenFieldsNamingThem) {
-  const auto dir = test::scratch_dir("comparison_file_bad");
+  const auto dir = nibrig::test::scratch_dir("comparison_file_bad");
   const auto file = dir / "comparison.json";
   write_comparison_file(sample(), file);
   std::ifstream in(file);
   const auto good = nlohmann::json::parse(in);
   const auto refuse = [&](nlohmann::json j, std::initializer_list<std::string_view> parts) {
     const auto bad = dir / "bad.json";
-    test::write_text(bad, j.dump());
-    test::expect_message_names(test::format_error_of([&] { read_comparison_file(bad); }), parts);
+    nibrig::test::write_text(bad, j.dump());
+    nibrig::test::expect_message_names(nibrig::test::format_error_of([&] { read_comparison_file(bad); }), parts);
   };
   auto j = good;
   j["format"] = "nibrig-catalog";

@@ -11,13 +11,13 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 std::vector<std::filesystem::path> drawing_files() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry :
-       std::filesystem::directory_iterator(test::shared_data() / "piovarci2018" / "drawing")) {
+       std::filesystem::directory_iterator(nibrig::test::shared_data() / "piovarci2018" / "drawing")) {
     if (entry.path().string().ends_with(".csv.gz")) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
@@ -30,8 +30,8 @@ double median(std::vector<double> values) {
 }
 
 TEST(PaperDrawing, NameSplitsToolSurfaceAndSubject) {
-  const auto dir = test::scratch_dir("drawing_name");
-  test::write_gzip(dir / "p2h_paper_bottle_c2.csv.gz",
+  const auto dir = nibrig::test::scratch_dir("drawing_name");
+  nibrig::test::write_gzip(dir / "p2h_paper_bottle_c2.csv.gz",
                    "Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch,Speed,Acceeration\n"
                    "1000,1,2,3,0,0,0.5,0,1,0,0\n1008,1.3,2.4,3,0,0,0.6,0,1,0.5,0\n");
   const auto trajectory = read_paper_drawing(dir / "p2h_paper_bottle_c2.csv.gz");
@@ -126,10 +126,10 @@ TEST(PaperDrawing, SpeedColumnAgreesWithFiniteDifferencesOfPosition) {
 
 class DrawingMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = test::scratch_dir("drawing_malformed"); }
+  void SetUp() override { dir_ = nibrig::test::scratch_dir("drawing_malformed"); }
   std::filesystem::path write(const std::string& body,
                               const std::string& name = "pen_paper_cube.csv.gz") {
-    test::write_gzip(dir_ / name, body);
+    nibrig::test::write_gzip(dir_ / name, body);
     return dir_ / name;
   }
   std::filesystem::path dir_;
@@ -137,7 +137,7 @@ class DrawingMalformed : public ::testing::Test {
 
 const std::string kHeader = "Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch,Speed,Acceeration\n";
 
-std::string rows(int count) {
+std::string drawing_rows(int count) {
   std::string text;
   for (int i = 0; i < count; ++i) {
     text += std::to_string(1492954983454LL + 8 * i) +
@@ -154,14 +154,14 @@ TEST_F(DrawingMalformed, TruncatedGzip) {
             std::to_string((i * 104729) % 1999 / 10.0) + ",1,2,3,0.5,4,1," +
             std::to_string(i % 97 / 10.0) + ",0\n";
   }
-  test::write_truncated_gzip(dir_ / "pen_paper_cube.csv.gz", body, 0.5);
+  nibrig::test::write_truncated_gzip(dir_ / "pen_paper_cube.csv.gz", body, 0.5);
   expect_message_names(format_error_of([&] { read_paper_drawing(dir_ / "pen_paper_cube.csv.gz"); }),
                        {"pen_paper_cube.csv.gz", "line ", "compressed data is truncated"});
 }
 
 TEST_F(DrawingMalformed, NonNumericField) {
   const auto file =
-      write(kHeader + rows(2) + "1492954983478,89.6,abc,24.8,49.8,-62.5,-0.6,295.6,0,0.2,0.1\n");
+      write(kHeader + drawing_rows(2) + "1492954983478,89.6,abc,24.8,49.8,-62.5,-0.6,295.6,0,0.2,0.1\n");
   expect_message_names(
       format_error_of([&] { read_paper_drawing(file); }),
       {"pen_paper_cube.csv.gz", "line 4, field 'Y'", "expected a number, found 'abc'"});
@@ -169,13 +169,13 @@ TEST_F(DrawingMalformed, NonNumericField) {
 
 TEST_F(DrawingMalformed, NaNField) {
   const auto file =
-      write(kHeader + rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,nan,295.6,0,0.2,0.1\n");
+      write(kHeader + drawing_rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,nan,295.6,0,0.2,0.1\n");
   expect_message_names(format_error_of([&] { read_paper_drawing(file); }),
                        {"pen_paper_cube.csv.gz", "line 4, field 'F'", "expected a finite number"});
 }
 
 TEST_F(DrawingMalformed, MissingColumn) {
-  const auto file = write("Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch\n" + rows(2));
+  const auto file = write("Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch\n" + drawing_rows(2));
   expect_message_names(
       format_error_of([&] { read_paper_drawing(file); }),
       {"pen_paper_cube.csv.gz", "line 1", "missing column 'Speed'", "Unix Timestamp,X,Y"});
@@ -188,7 +188,7 @@ TEST_F(DrawingMalformed, EmptyFile) {
 }
 
 TEST_F(DrawingMalformed, UnparsableFileName) {
-  const auto file = write(kHeader + rows(2), "pen_paper.csv.gz");
+  const auto file = write(kHeader + drawing_rows(2), "pen_paper.csv.gz");
   expect_message_names(format_error_of([&] { read_paper_drawing(file); }),
                        {"pen_paper.csv.gz", "unparsable file name", "<tool>_<surface>_<subject>"});
 }
@@ -205,17 +205,17 @@ TEST_F(DrawingMalformed, WrongSampleRate) {
 
 TEST_F(DrawingMalformed, TouchAndTimestampsAreChecked) {
   const auto touch =
-      write(kHeader + rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,0,295.6,2,0.2,0.1\n");
+      write(kHeader + drawing_rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,0,295.6,2,0.2,0.1\n");
   expect_message_names(format_error_of([&] { read_paper_drawing(touch); }),
                        {"line 4, field 'Touch'", "expected 0 or 1, found '2'"});
   const auto repeated =
-      write(kHeader + rows(2) + "1492954983462,89.6,1,24.8,49.8,-62.5,0,295.6,0,0.2,0.1\n",
+      write(kHeader + drawing_rows(2) + "1492954983462,89.6,1,24.8,49.8,-62.5,0,295.6,0,0.2,0.1\n",
             "pen_paper_cup.csv.gz");
   expect_message_names(
       format_error_of([&] { read_paper_drawing(repeated); }),
       {"pen_paper_cup.csv.gz", "line 4, field 'Unix Timestamp'", "expected time to increase"});
   const auto negative_speed =
-      write(kHeader + rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,0,295.6,0,-0.2,0\n",
+      write(kHeader + drawing_rows(2) + "1492954983478,89.6,1,24.8,49.8,-62.5,0,295.6,0,-0.2,0\n",
             "pen_paper_ball.csv.gz");
   expect_message_names(format_error_of([&] { read_paper_drawing(negative_speed); }),
                        {"line 4, field 'Speed'", "expected a distance per frame (>= 0)"});

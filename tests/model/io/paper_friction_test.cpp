@@ -12,10 +12,10 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
-std::filesystem::path friction_dir() { return test::shared_data() / "piovarci2018" / "friction"; }
+std::filesystem::path friction_dir() { return nibrig::test::shared_data() / "piovarci2018" / "friction"; }
 
 std::vector<std::filesystem::path> friction_files() {
   std::vector<std::filesystem::path> files;
@@ -125,16 +125,16 @@ TEST(PaperFriction, ReportsTheQuirksOfTheRealFiles) {
 
 class FrictionMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = test::scratch_dir("friction_malformed"); }
+  void SetUp() override { dir_ = nibrig::test::scratch_dir("friction_malformed"); }
   std::filesystem::path write(const std::string& body,
                               const std::string& name = "p2h_note_2.2N_14_1.csv.gz") {
-    test::write_gzip(dir_ / name, body);
+    nibrig::test::write_gzip(dir_ / name, body);
     return dir_ / name;
   }
   std::filesystem::path dir_;
 };
 
-std::string rows(int count, int start_ms = 0) {
+std::string friction_rows(int count, int start_ms = 0) {
   std::string text;
   for (int i = 0; i < count; ++i) {
     const int ms = start_ms + i;
@@ -150,7 +150,7 @@ TEST_F(FrictionMalformed, TruncatedGzip) {
             std::to_string(i % 1000) + "," + std::to_string((i * 7919) % 2003) + "," +
             std::to_string((i * 104729) % 1999) + "," + std::to_string((i * 13) % 997) + "\n";
   }
-  test::write_truncated_gzip(dir_ / "p2h_note_2.2N_14_1.csv.gz", body, 0.6);
+  nibrig::test::write_truncated_gzip(dir_ / "p2h_note_2.2N_14_1.csv.gz", body, 0.6);
   expect_message_names(
       format_error_of([&] { read_paper_friction(dir_ / "p2h_note_2.2N_14_1.csv.gz"); }),
       {"p2h_note_2.2N_14_1.csv.gz", "line ", "compressed data is truncated"});
@@ -187,7 +187,7 @@ TEST_F(FrictionMalformed, EmptyFileAndHeaderOnly) {
 }
 
 TEST_F(FrictionMalformed, UnparsableFileName) {
-  const auto file = write("TimeStamp,X,Y,Z\n" + rows(3), "friction.csv.gz");
+  const auto file = write("TimeStamp,X,Y,Z\n" + friction_rows(3), "friction.csv.gz");
   expect_message_names(
       format_error_of([&] { read_paper_friction(file); }),
       {"friction.csv.gz", "unparsable file name", "<tool>_<surface>_<load>N_<lever>_<rep>"});

@@ -15,15 +15,15 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
-std::filesystem::path piovarci() { return test::shared_data() / "piovarci2018"; }
+std::filesystem::path piovarci() { return nibrig::test::shared_data() / "piovarci2018"; }
 const std::filesystem::path kVibration = "vibration/arm2/arm_cryon_note.csv.gz";
 const std::filesystem::path kFriction = "friction/printed/DM851_note_2.2N_13.3_1.csv.gz";
 
 std::filesystem::path copy_as(const std::filesystem::path& real, const std::string& name) {
-  const auto dir = test::scratch_dir("paper_recording_" + name);
+  const auto dir = nibrig::test::scratch_dir("paper_recording_" + name);
   std::filesystem::copy_file(piovarci() / real, dir / name);
   return dir / name;
 }
@@ -45,14 +45,14 @@ TEST(PaperFormat, FromTheHeaderOfRealFiles) {
 
 TEST(PaperFormat, BlankAccelerometerHeaderIsTheAccelerometers) {
   // Some real accelerometer files carry ",,,,," as their header (paper_vibration.hpp).
-  const auto dir = test::scratch_dir("paper_format_blank");
-  test::write_text(dir / "x.csv", ",,,,,\n0,1515589189348,1,0,0,1\n");
+  const auto dir = nibrig::test::scratch_dir("paper_format_blank");
+  nibrig::test::write_text(dir / "x.csv", ",,,,,\n0,1515589189348,1,0,0,1\n");
   EXPECT_EQ(paper_format_from_header(dir / "x.csv"), PaperFormat::vibration);
 }
 
 TEST(PaperFormat, AnotherHeaderIsRefusedNamingBoth) {
-  const auto dir = test::scratch_dir("paper_format_other");
-  test::write_text(dir / "x.csv", "a,b,c\n1,2,3\n");
+  const auto dir = nibrig::test::scratch_dir("paper_format_other");
+  nibrig::test::write_text(dir / "x.csv", "a,b,c\n1,2,3\n");
   expect_message_names(format_error_of([&] { paper_format_from_header(dir / "x.csv"); }),
                        {"x.csv", "line 1", "xAccel", "TimeStamp,X,Y,Z"});
 }

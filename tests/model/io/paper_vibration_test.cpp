@@ -13,10 +13,10 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
-std::filesystem::path piovarci() { return test::shared_data() / "piovarci2018"; }
+std::filesystem::path vibration_data() { return nibrig::test::shared_data() / "piovarci2018"; }
 
 std::vector<std::filesystem::path> files_under(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> files;
@@ -71,7 +71,7 @@ TEST(VibrationFileName, RejectsUnparsableNames) {
 }
 
 TEST(VibrationFileName, TimestampListIsNotARecording) {
-  EXPECT_FALSE(is_paper_vibration_file(piovarci() / "vibration" / "prints" / "ts.csv.gz"));
+  EXPECT_FALSE(is_paper_vibration_file(vibration_data() / "vibration" / "prints" / "ts.csv.gz"));
   EXPECT_TRUE(is_paper_vibration_file("arm_vero_1_glass.csv.gz"));
   EXPECT_FALSE(is_paper_vibration_file("arm_.csv.gz"));
 }
@@ -79,7 +79,7 @@ TEST(VibrationFileName, TimestampListIsNotARecording) {
 // Every recording parses; the ±2 % rate check inside the reader passed for each; gaps are where the
 // timestamps say. 86 recordings + ts.csv.gz.
 TEST(PaperVibration, EveryRealRecordingParses) {
-  const auto files = files_under(piovarci() / "vibration");
+  const auto files = files_under(vibration_data() / "vibration");
   std::size_t recordings = 0;
   for (const auto& file : files) {
     SCOPED_TRACE(file.string());
@@ -112,7 +112,7 @@ TEST(PaperVibration, BlankHeaderFileAndItsPauseBetweenSweeps) {
   // ",1513252351136,0.91219515,...", and between rows 14000 and 14001 (0-based) the stamps jump by
   // 26069 ms (checked with awk on the file itself).
   const auto recording =
-      read_paper_vibration(piovarci() / "vibration" / "prints" / "arm_plain_vero_4_stone.csv.gz");
+      read_paper_vibration(vibration_data() / "vibration" / "prints" / "arm_plain_vero_4_stone.csv.gz");
   EXPECT_EQ(recording.name.tool, "vero4");
   EXPECT_EQ(recording.name.variant, "plain");
   EXPECT_EQ(recording.acceleration_m_s2.size(), 42003u);
@@ -126,10 +126,10 @@ TEST(PaperVibration, BlankHeaderFileAndItsPauseBetweenSweeps) {
 // them. Pen-holder and nail variants were only recorded for vibration.
 TEST(PaperVibration, ToolIdsMatchTheFrictionFiles) {
   std::set<std::string> friction_tools;
-  for (const auto& file : files_under(piovarci() / "friction")) {
+  for (const auto& file : files_under(vibration_data() / "friction")) {
     friction_tools.insert(parse_friction_file_name(file).tool);
   }
-  for (const auto& file : files_under(piovarci() / "vibration")) {
+  for (const auto& file : files_under(vibration_data() / "vibration")) {
     if (!is_paper_vibration_file(file)) continue;
     const auto name = parse_vibration_file_name(file);
     if (name.variant == "penh" || name.variant.starts_with("nail")) continue;
@@ -139,10 +139,10 @@ TEST(PaperVibration, ToolIdsMatchTheFrictionFiles) {
 
 class VibrationMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = test::scratch_dir("vibration_malformed"); }
+  void SetUp() override { dir_ = nibrig::test::scratch_dir("vibration_malformed"); }
   std::filesystem::path write(const std::string& body,
                               const std::string& name = "arm_vero_1_glass.csv.gz") {
-    test::write_gzip(dir_ / name, body);
+    nibrig::test::write_gzip(dir_ / name, body);
     return dir_ / name;
   }
   std::filesystem::path dir_;
@@ -150,7 +150,7 @@ class VibrationMalformed : public ::testing::Test {
 
 std::string header() { return "time,timestamp,xAccel,yAccel,zAccel,xxx\n"; }
 
-std::string rows(int count, int step_ms = 1, long long start = 1515589189348) {
+std::string vibration_rows(int count, int step_ms = 1, long long start = 1515589189348) {
   std::string text;
   for (int i = 0; i < count; ++i) {
     text += "2018-1-10T13-59-49," + std::to_string(start + i * step_ms) + ",0.87,-0.06,0.50,0.87\n";
@@ -160,9 +160,9 @@ std::string rows(int count, int step_ms = 1, long long start = 1515589189348) {
 
 TEST_F(VibrationMalformed, ReadsAWellFormedFileAndRecordsGaps) {
   // 400 samples, then 8 ms without one (7 dropped samples), then 400 more: 1000 Hz within 1 %.
-  std::string body = header() + rows(400, 1, 1'000'000);
+  std::string body = header() + vibration_rows(400, 1, 1'000'000);
   body += "t,1000407,1.0,0,0,1.0\n";
-  body += rows(399, 1, 1'000'408);
+  body += vibration_rows(399, 1, 1'000'408);
   const auto recording = read_paper_vibration(write(body));
   ASSERT_EQ(recording.acceleration_m_s2.size(), 800u);
   EXPECT_EQ(recording.timestamp_gaps, (std::vector<std::size_t>{400}));
@@ -178,28 +178,28 @@ TEST_F(VibrationMalformed, TruncatedGzip) {
             std::to_string((i * 7919) % 2003 / 1000.0) + "," +
             std::to_string((i * 104729) % 1999 / 1000.0) + ",0.5,0.1\n";
   }
-  test::write_truncated_gzip(dir_ / "arm_vero_1_glass.csv.gz", body, 0.5);
+  nibrig::test::write_truncated_gzip(dir_ / "arm_vero_1_glass.csv.gz", body, 0.5);
   expect_message_names(
       format_error_of([&] { read_paper_vibration(dir_ / "arm_vero_1_glass.csv.gz"); }),
       {"arm_vero_1_glass.csv.gz", "line ", "compressed data is truncated"});
 }
 
 TEST_F(VibrationMalformed, NonNumericField) {
-  const auto file = write(header() + rows(3) + "t,1515589189351,zero,0,0,0\n");
+  const auto file = write(header() + vibration_rows(3) + "t,1515589189351,zero,0,0,0\n");
   expect_message_names(
       format_error_of([&] { read_paper_vibration(file); }),
       {"arm_vero_1_glass.csv.gz", "line 5, field 'xAccel'", "expected a number, found 'zero'"});
 }
 
 TEST_F(VibrationMalformed, NaNField) {
-  const auto file = write(header() + rows(3) + "t,1515589189351,NaN,0,0,0\n");
+  const auto file = write(header() + vibration_rows(3) + "t,1515589189351,NaN,0,0,0\n");
   expect_message_names(
       format_error_of([&] { read_paper_vibration(file); }),
       {"arm_vero_1_glass.csv.gz", "line 5, field 'xAccel'", "expected a finite number"});
 }
 
 TEST_F(VibrationMalformed, MissingColumn) {
-  const auto file = write("time,stamp,xAccel\n" + rows(3));
+  const auto file = write("time,stamp,xAccel\n" + vibration_rows(3));
   expect_message_names(
       format_error_of([&] { read_paper_vibration(file); }),
       {"arm_vero_1_glass.csv.gz", "line 1", "missing column 'timestamp'", "time,timestamp,xAccel"});
@@ -212,13 +212,13 @@ TEST_F(VibrationMalformed, EmptyFile) {
 }
 
 TEST_F(VibrationMalformed, UnparsableFileName) {
-  const auto file = write(header() + rows(3), "vibration.csv.gz");
+  const auto file = write(header() + vibration_rows(3), "vibration.csv.gz");
   expect_message_names(format_error_of([&] { read_paper_vibration(file); }),
                        {"vibration.csv.gz", "unparsable file name", "arm_<tool>_<surface>"});
 }
 
 TEST_F(VibrationMalformed, WrongSampleRate) {
-  const auto slow = write(header() + rows(100, 2));  // 500 Hz
+  const auto slow = write(header() + vibration_rows(100, 2));  // 500 Hz
   expect_message_names(
       format_error_of([&] { read_paper_vibration(slow); }),
       {"arm_vero_1_glass.csv.gz", "column 'timestamp'", "expected 1000 Hz, found 500"});
@@ -230,7 +230,7 @@ TEST_F(VibrationMalformed, WrongSampleRate) {
 }
 
 TEST_F(VibrationMalformed, BackwardOrFractionalTimestamps) {
-  const auto backwards = write(header() + rows(3) + "t,1515589189000,1,0,0,1\n");
+  const auto backwards = write(header() + vibration_rows(3) + "t,1515589189000,1,0,0,1\n");
   expect_message_names(format_error_of([&] { read_paper_vibration(backwards); }),
                        {"line 5, field 'timestamp'", "expected time to increase"});
   const auto fractional =

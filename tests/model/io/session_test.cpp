@@ -18,8 +18,8 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 SessionInfo rig_info() {
   SessionInfo info;
@@ -95,7 +95,7 @@ std::uint32_t wav_data_bytes(const std::filesystem::path& file) {
 }
 
 TEST(Session, WriteFinishReadRoundTrip) {
-  const auto dir = test::scratch_dir("session_round_trip");
+  const auto dir = nibrig::test::scratch_dir("session_round_trip");
   const auto folder = dir / "p2h_office";
   {
     SessionWriter writer(folder, rig_info());
@@ -124,7 +124,7 @@ TEST(Session, WriteFinishReadRoundTrip) {
 // A capture keeps its record current while recording: a .partial folder says how far it got, and the
 // finished session keeps the last record. A session without one reads with none.
 TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
-  const auto dir = test::scratch_dir("session_capture_record");
+  const auto dir = nibrig::test::scratch_dir("session_capture_record");
   const auto folder = dir / "rig";
   CaptureRecord record;
   record.rig = "simulated rig, seed 3";
@@ -172,7 +172,7 @@ TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
 // The real thing: a capture process killed with SIGKILL while it writes. Everything it reported as
 // written before the kill must be readable from the .partial folder, with no partial block.
 TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
-  const auto dir = test::scratch_dir("session_killed");
+  const auto dir = nibrig::test::scratch_dir("session_killed");
   const auto folder = dir / "killed";
   constexpr int kReportedBlocks = 40;
   int pipe_fds[2];
@@ -223,7 +223,7 @@ TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
 }
 
 TEST(Session, WriterWithoutFinishLeavesAReadablePartialFolder) {
-  const auto dir = test::scratch_dir("session_unfinished");
+  const auto dir = nibrig::test::scratch_dir("session_unfinished");
   {
     SessionWriter writer(dir / "s", rig_info());
     for (std::size_t b = 0; b < 3; ++b) write_blocks(writer, b);
@@ -235,7 +235,7 @@ TEST(Session, WriterWithoutFinishLeavesAReadablePartialFolder) {
 }
 
 TEST(Session, FinishNeverReplacesAnExistingFolder) {
-  const auto dir = test::scratch_dir("session_existing");
+  const auto dir = nibrig::test::scratch_dir("session_existing");
   SessionWriter writer(dir / "s", rig_info());
   write_blocks(writer, 0);
   std::filesystem::create_directory(dir / "s");  // appeared while recording (even empty)
@@ -250,7 +250,7 @@ TEST(Session, FinishNeverReplacesAnExistingFolder) {
 }
 
 TEST(Session, WriterRefusesBadInfoExistingFoldersAndBadSamples) {
-  const auto dir = test::scratch_dir("session_refusals");
+  const auto dir = nibrig::test::scratch_dir("session_refusals");
   SessionInfo fractional_rate = rig_info();
   fractional_rate.speed_rate_hz = 999.5;
   EXPECT_THROW(SessionWriter(dir / "a", fractional_rate), std::invalid_argument);
@@ -276,7 +276,7 @@ TEST(Session, WriterRefusesBadInfoExistingFoldersAndBadSamples) {
 class SessionMalformed : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = test::scratch_dir("session_malformed");
+    dir_ = nibrig::test::scratch_dir("session_malformed");
     folder_ = dir_ / "s";
     SessionWriter writer(folder_, rig_info());
     for (std::size_t b = 0; b < 4; ++b) write_blocks(writer, b);
@@ -286,7 +286,7 @@ class SessionMalformed : public ::testing::Test {
   }
   nlohmann::json json() const { return original_; }
   void set_json(const nlohmann::json& json) const {
-    test::write_text(folder_ / "session.json", json.dump(2));
+    nibrig::test::write_text(folder_ / "session.json", json.dump(2));
   }
   void write_wav(const char* name, int format, int rate, const std::vector<float>& samples) const {
     SF_INFO info{};
@@ -309,13 +309,13 @@ TEST_F(SessionMalformed, MissingSessionJson) {
 }
 
 TEST_F(SessionMalformed, EmptySessionJson) {
-  test::write_text(folder_ / "session.json", "");
+  nibrig::test::write_text(folder_ / "session.json", "");
   expect_message_names(format_error_of([&] { read_session(folder_); }),
                        {"session.json", "empty file", "expected a JSON object"});
 }
 
 TEST_F(SessionMalformed, BadJsonSyntaxNamesTheLine) {
-  test::write_text(folder_ / "session.json",
+  nibrig::test::write_text(folder_ / "session.json",
                    "{\n  \"format\": \"nibrig-session\",\n  \"tool\": ,\n}\n");
   expect_message_names(format_error_of([&] { read_session(folder_); }),
                        {"session.json", "line 3", "invalid JSON"});
@@ -386,7 +386,7 @@ TEST_F(SessionMalformed, MissingOrGarbageStream) {
   std::filesystem::remove(folder_ / "acceleration.wav");
   expect_message_names(format_error_of([&] { read_session(folder_); }),
                        {"acceleration.wav", "missing", "expected a mono float32 WAV stream"});
-  test::write_text(folder_ / "acceleration.wav", "RIFF nonsense");
+  nibrig::test::write_text(folder_ / "acceleration.wav", "RIFF nonsense");
   expect_message_names(format_error_of([&] { read_session(folder_); }),
                        {"acceleration.wav", "expected a WAV file"});
 }

@@ -11,8 +11,8 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 // Lines of random digits: gzip cannot shrink them much, so cutting the compressed file at half its
 // size cuts the text near its middle rather than at the very end.
@@ -35,10 +35,10 @@ std::string join_lines(const std::vector<std::string>& lines) {
 }
 
 TEST(TextLineReader, ReadsPlainAndGzipFilesAlike) {
-  const auto dir = test::scratch_dir("text_lines_alike");
+  const auto dir = nibrig::test::scratch_dir("text_lines_alike");
   const std::string content = "a,b\r\n1,2\n\nlast";
-  test::write_text(dir / "plain.csv", content);
-  test::write_gzip(dir / "packed.csv.gz", content);
+  nibrig::test::write_text(dir / "plain.csv", content);
+  nibrig::test::write_gzip(dir / "packed.csv.gz", content);
   for (const auto& file : {dir / "plain.csv", dir / "packed.csv.gz"}) {
     TextLineReader reader(file);
     std::string line;
@@ -54,9 +54,9 @@ TEST(TextLineReader, ReadsPlainAndGzipFilesAlike) {
 }
 
 TEST(TextLineReader, ReadsLinesLongerThanItsBuffer) {
-  const auto dir = test::scratch_dir("text_lines_long");
+  const auto dir = nibrig::test::scratch_dir("text_lines_long");
   const std::string long_line(300'000, 'x');
-  test::write_gzip(dir / "long.csv.gz", "short\n" + long_line + "\nend\n");
+  nibrig::test::write_gzip(dir / "long.csv.gz", "short\n" + long_line + "\nend\n");
   TextLineReader reader(dir / "long.csv.gz");
   std::string line;
   ASSERT_TRUE(reader.next(line));
@@ -69,10 +69,10 @@ TEST(TextLineReader, ReadsLinesLongerThanItsBuffer) {
 }
 
 TEST(TextLineReader, TruncatedGzipDeliversTheIntactLinesThenNamesTheBrokenOne) {
-  const auto dir = test::scratch_dir("text_lines_truncated");
+  const auto dir = nibrig::test::scratch_dir("text_lines_truncated");
   const auto lines = noisy_lines(20'000);
   const auto file = dir / "cut.csv.gz";
-  test::write_truncated_gzip(file, join_lines(lines), 0.5);
+  nibrig::test::write_truncated_gzip(file, join_lines(lines), 0.5);
 
   TextLineReader reader(file);
   std::string line;
@@ -91,9 +91,9 @@ TEST(TextLineReader, TruncatedGzipDeliversTheIntactLinesThenNamesTheBrokenOne) {
 }
 
 TEST(TextLineReader, CorruptGzipIsAnErrorNotAShortFile) {
-  const auto dir = test::scratch_dir("text_lines_corrupt");
+  const auto dir = nibrig::test::scratch_dir("text_lines_corrupt");
   const auto file = dir / "corrupt.csv.gz";
-  test::write_gzip(file, join_lines(noisy_lines(5'000)));
+  nibrig::test::write_gzip(file, join_lines(noisy_lines(5'000)));
   {
     std::fstream bytes(file, std::ios::in | std::ios::out | std::ios::binary);
     bytes.seekp(static_cast<std::streamoff>(std::filesystem::file_size(file) / 2));
@@ -110,7 +110,7 @@ TEST(TextLineReader, CorruptGzipIsAnErrorNotAShortFile) {
 }
 
 TEST(TextLineReader, MissingFileAndFolderAreNamed) {
-  const auto dir = test::scratch_dir("text_lines_missing");
+  const auto dir = nibrig::test::scratch_dir("text_lines_missing");
   expect_message_names(format_error_of([&] { TextLineReader reader(dir / "nope.csv"); }),
                        {"nope.csv", "cannot open"});
   expect_message_names(format_error_of([&] { TextLineReader reader(dir); }), {"is a folder"});
@@ -165,20 +165,20 @@ TEST(CsvHeader, FindsColumnsByNameAndNamesTheMissingOne) {
 }
 
 TEST(CsvReader, BlankLinesOnlyAtTheEnd) {
-  const auto dir = test::scratch_dir("csv_reader_blank");
-  test::write_text(dir / "ok.csv", "a,b\n1,2\n\n\n");
+  const auto dir = nibrig::test::scratch_dir("csv_reader_blank");
+  nibrig::test::write_text(dir / "ok.csv", "a,b\n1,2\n\n\n");
   CsvReader ok(dir / "ok.csv", "a,b");
   std::vector<std::string_view> fields;
   ASSERT_TRUE(ok.next(fields));
   EXPECT_FALSE(ok.next(fields));
 
-  test::write_text(dir / "gap.csv", "a,b\n1,2\n\n3,4\n");
+  nibrig::test::write_text(dir / "gap.csv", "a,b\n1,2\n\n3,4\n");
   CsvReader gap(dir / "gap.csv", "a,b");
   ASSERT_TRUE(gap.next(fields));
   expect_message_names(format_error_of([&] { gap.next(fields); }),
                        {"gap.csv", "line 3", "blank line inside the data"});
 
-  test::write_text(dir / "empty.csv", "");
+  nibrig::test::write_text(dir / "empty.csv", "");
   expect_message_names(format_error_of([&] { CsvReader empty(dir / "empty.csv", "a,b"); }),
                        {"empty.csv", "empty file", "a,b"});
 }

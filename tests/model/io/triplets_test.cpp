@@ -11,14 +11,14 @@
 namespace nibrig::model::io {
 namespace {
 
-using test::expect_message_names;
-using test::format_error_of;
+using nibrig::test::expect_message_names;
+using nibrig::test::format_error_of;
 
 std::filesystem::path lagunas_file() {
-  return test::shared_data() / "lagunas2019" / "answers_processed_train.json";
+  return nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json";
 }
 std::filesystem::path salmon_file() {
-  return test::shared_data() / "salmon_alien_eggs" / "responses_train.csv";
+  return nibrig::test::shared_data() / "salmon_alien_eggs" / "responses_train.csv";
 }
 
 TEST(Triplets, LagunasRealData) {
@@ -64,30 +64,30 @@ TEST(Triplets, SalmonRealData) {
 TEST(Triplets, DispatchByContent) {
   EXPECT_EQ(read_triplets(lagunas_file()).stimuli.size(), 100u);
   EXPECT_EQ(read_triplets(salmon_file()).stimuli.size(), 300u);
-  const auto dir = test::scratch_dir("triplets_dispatch");
-  test::write_gzip(dir / "ours.csv.gz", "reference,a,b,count_a,count_b\nx,y,z,2,1\n");
+  const auto dir = nibrig::test::scratch_dir("triplets_dispatch");
+  nibrig::test::write_gzip(dir / "ours.csv.gz", "reference,a,b,count_a,count_b\nx,y,z,2,1\n");
   EXPECT_EQ(read_triplets(dir / "ours.csv.gz").stimuli, (std::vector<std::string>{"x", "y", "z"}));
-  test::write_text(dir / "lagunas.txt", "{\"answers\": [[0, 1, 2]], \"agreement\": [[1, 0]]}");
+  nibrig::test::write_text(dir / "lagunas.txt", "{\"answers\": [[0, 1, 2]], \"agreement\": [[1, 0]]}");
   EXPECT_EQ(read_triplets(dir / "lagunas.txt").stimuli, (std::vector<std::string>{"0", "1", "2"}));
-  test::write_text(dir / "other.csv", "who,what\n1,2\n");
+  nibrig::test::write_text(dir / "other.csv", "who,what\n1,2\n");
   expect_message_names(
       format_error_of([&] { read_triplets(dir / "other.csv"); }),
       {"other.csv", "line 1", "unrecognised triplet file", "reference,a,b,count_a,count_b"});
 }
 
 TEST(Triplets, QueriesNeedNoResponsesJudgmentsDo) {
-  const auto dir = test::scratch_dir("triplet_queries");
-  test::write_text(dir / "q.csv", "reference,a,b,count_a,count_b\nx,y,z,0,0\ny,z,x,2,1\n");
+  const auto dir = nibrig::test::scratch_dir("triplet_queries");
+  nibrig::test::write_text(dir / "q.csv", "reference,a,b,count_a,count_b\nx,y,z,0,0\ny,z,x,2,1\n");
   const TripletSet queries = read_triplet_queries(dir / "q.csv");
   ASSERT_EQ(queries.triplets.size(), 2u);
   EXPECT_EQ(queries.stimuli[queries.triplets[0].reference], "x");
   expect_message_names(format_error_of([&] { read_triplets(dir / "q.csv"); }),
                        {"q.csv", "line 2", "at least one response"});
-  test::write_text(dir / "q.json", R"({"answers": [[0, 1, 2]], "agreement": [[0, 0]]})");
+  nibrig::test::write_text(dir / "q.json", R"({"answers": [[0, 1, 2]], "agreement": [[0, 0]]})");
   EXPECT_EQ(read_triplet_queries(dir / "q.json").triplets.size(), 1u);
   // `space predict --help` promises counts are ignored: a query file may leave them out, while a
   // judgment file without them is still refused.
-  test::write_text(dir / "bare.csv", "reference,a,b\nx,y,z\ny,z,x\n");
+  nibrig::test::write_text(dir / "bare.csv", "reference,a,b\nx,y,z\ny,z,x\n");
   const TripletSet bare = read_triplet_queries(dir / "bare.csv");
   ASSERT_EQ(bare.triplets.size(), 2u);
   EXPECT_EQ(bare.stimuli[bare.triplets[1].a], "z");
@@ -95,13 +95,13 @@ TEST(Triplets, QueriesNeedNoResponsesJudgmentsDo) {
   expect_message_names(format_error_of([&] { read_triplets(dir / "bare.csv"); }),
                        {"bare.csv", "missing column 'count_a'"});
   // Everything but the counts is still checked.
-  test::write_text(dir / "self.csv", "reference,a,b,count_a,count_b\nx,x,z,0,0\n");
+  nibrig::test::write_text(dir / "self.csv", "reference,a,b,count_a,count_b\nx,x,z,0,0\n");
   expect_message_names(format_error_of([&] { read_triplet_queries(dir / "self.csv"); }),
                        {"self.csv", "line 2", "three different stimuli"});
 }
 
 TEST(Triplets, CsvRoundTrip) {
-  const auto dir = test::scratch_dir("triplets_round_trip");
+  const auto dir = nibrig::test::scratch_dir("triplets_round_trip");
   TripletSet set;
   set.stimuli = {"8B pencil", "vero1", "DM851"};  // order of first appearance below
   set.triplets = {{0, 1, 2, 3, 1, "ann"}, {1, 2, 0, 0, 2, ""}, {2, 0, 1, 5, 5, "bob"}};
@@ -120,7 +120,7 @@ TEST(Triplets, CsvRoundTrip) {
 }
 
 TEST(Triplets, WriterRefusesWhatTheFormatCannotHold) {
-  const auto dir = test::scratch_dir("triplets_writer");
+  const auto dir = nibrig::test::scratch_dir("triplets_writer");
   TripletSet out_of_range{{"a", "b"}, {{0, 1, 2, 1, 0, ""}}, {}};
   expect_message_names(format_error_of([&] { write_triplet_csv(dir / "t.csv", out_of_range); }),
                        {"t.csv", "triplet 0", "index 2 out of range (2 stimuli)"});
@@ -132,9 +132,9 @@ TEST(Triplets, WriterRefusesWhatTheFormatCannotHold) {
 
 class TripletCsvMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = test::scratch_dir("triplets_malformed"); }
+  void SetUp() override { dir_ = nibrig::test::scratch_dir("triplets_malformed"); }
   std::filesystem::path write(const std::string& body, const std::string& name = "triplets.csv") {
-    test::write_text(dir_ / name, body);
+    nibrig::test::write_text(dir_ / name, body);
     return dir_ / name;
   }
   std::filesystem::path dir_;
@@ -149,7 +149,7 @@ TEST_F(TripletCsvMalformed, TruncatedGzip) {
             std::to_string(i % 991) + "," + std::to_string(i % 7 + 1) + "," +
             std::to_string(i % 5) + ",o" + std::to_string(i * 31 % 1009) + "\n";
   }
-  test::write_truncated_gzip(dir_ / "cut.csv.gz", body, 0.5);
+  nibrig::test::write_truncated_gzip(dir_ / "cut.csv.gz", body, 0.5);
   expect_message_names(format_error_of([&] { read_triplet_csv(dir_ / "cut.csv.gz"); }),
                        {"cut.csv.gz", "line ", "compressed data is truncated"});
 }
@@ -197,9 +197,9 @@ TEST_F(TripletCsvMalformed, SelfTripletNegativeAndZeroCounts) {
 }
 
 TEST(LagunasMalformed, ErrorsNameTheJsonPath) {
-  const auto dir = test::scratch_dir("lagunas_malformed");
+  const auto dir = nibrig::test::scratch_dir("lagunas_malformed");
   const auto write = [&](const std::string& body) {
-    test::write_text(dir / "answers.json", body);
+    nibrig::test::write_text(dir / "answers.json", body);
     return dir / "answers.json";
   };
   expect_message_names(format_error_of([&] { read_lagunas_json(write("")); }),
@@ -239,7 +239,7 @@ TEST(LagunasMalformed, ErrorsNameTheJsonPath) {
       {"field 'agreement'", "expected one entry per answer (1), found 2"});
 
   // With names beside the file, an id beyond the list is out of range.
-  test::write_text(dir / "material_names_sorted.txt", "gold\nsilver\nwood\n");
+  nibrig::test::write_text(dir / "material_names_sorted.txt", "gold\nsilver\nwood\n");
   expect_message_names(
       format_error_of(
           [&] { read_lagunas_json(write("{\"answers\": [[0,1,5]], \"agreement\": [[1,0]]}")); }),
@@ -248,23 +248,23 @@ TEST(LagunasMalformed, ErrorsNameTheJsonPath) {
   const TripletSet named =
       read_lagunas_json(write("{\"answers\": [[0,1,2]], \"agreement\": [[1,3]]}"));
   EXPECT_EQ(named.stimuli, (std::vector<std::string>{"gold", "silver", "wood"}));
-  test::write_text(dir / "material_names_sorted.txt", "gold\ngold\n");
+  nibrig::test::write_text(dir / "material_names_sorted.txt", "gold\ngold\n");
   expect_message_names(format_error_of([&] { read_lagunas_json(dir / "answers.json"); }),
                        {"material_names_sorted.txt", "line 2", "expected unique names"});
 }
 
 TEST(SalmonMalformed, AnswerMustBeACandidate) {
-  const auto dir = test::scratch_dir("salmon_malformed");
-  test::write_text(
+  const auto dir = nibrig::test::scratch_dir("salmon_malformed");
+  nibrig::test::write_text(
       dir / "r.csv",
       "Participant.ID,Timestamp,Center,Left,Right,Answer\n7,t,i1,i2,i3,i2\n7,t,i1,i2,i3,i9\n");
   expect_message_names(format_error_of([&] { read_salmon_csv(dir / "r.csv"); }),
                        {"r.csv", "line 3, field 'Answer'",
                         "expected the Left or the Right item ('i2' or 'i3'), found 'i9'"});
-  test::write_text(dir / "m.csv", "Participant.ID,Center,Left,Answer\n7,i1,i2,i2\n");
+  nibrig::test::write_text(dir / "m.csv", "Participant.ID,Center,Left,Answer\n7,i1,i2,i2\n");
   expect_message_names(format_error_of([&] { read_salmon_csv(dir / "m.csv"); }),
                        {"m.csv", "line 1", "missing column 'Right'"});
-  test::write_text(dir / "s.csv", "Participant.ID,Center,Left,Right,Answer\n7,i1,i2,i2,i2\n");
+  nibrig::test::write_text(dir / "s.csv", "Participant.ID,Center,Left,Right,Answer\n7,i1,i2,i2,i2\n");
   expect_message_names(format_error_of([&] { read_salmon_csv(dir / "s.csv"); }),
                        {"s.csv", "line 2", "expected three different stimuli"});
 }

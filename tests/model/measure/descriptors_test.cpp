@@ -37,7 +37,7 @@ TEST(VibrationDescriptors, FlatSpectrumOnFlatThresholdHasClosedForms) {
 
 TEST(VibrationDescriptors, BandsAddUpToThePowerAndOneBandIsThePower) {
   const ThresholdCurve curve =
-      ThresholdCurve::load(test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+      ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
   io::VelocitySpectrum s = flat_spectrum(741, 2.0 / 3.0, 0.0);
   for (std::size_t r = 0; r < 3; ++r) {
     for (std::size_t i = 0; i < 741; ++i) {

@@ -151,7 +151,7 @@ FrictionFile load_friction(const std::filesystem::path& path) {
     start = u + 1;
   }
   const double lever = std::stod(fields.at(3));
-  auto column = test::read_gz_csv_column(path, 3);
+  auto column = nibrig::test::read_gz_csv_column(path, 3);
   // Only stab_stone ends in a truncated line (its last row lacks Z); nothing else is skipped.
   EXPECT_LE(column.short_rows, 1u) << name;
   for (double& v : column.values) v = v / 403.2 / lever;
@@ -159,8 +159,8 @@ FrictionFile load_friction(const std::filesystem::path& path) {
 }
 
 TEST(FrictionOnPaperData, EveryRecordGivesAPlausibleCoefficientAndContact) {
-  const auto root = test::shared_data() / "piovarci2018" / "friction";
-  const auto out = test::scratch_dir("friction_paper") / "mu.csv";
+  const auto root = nibrig::test::shared_data() / "piovarci2018" / "friction";
+  const auto out = nibrig::test::scratch_dir("friction_paper") / "mu.csv";
   std::ofstream table(out);
   table << "file,contact_begin_s,contact_end_s,mu,ci_low,ci_high,effective_samples,slope_per_m_s,"
            "upstream_mu\n";

@@ -67,10 +67,10 @@ TEST(Spectrogram, EachRowIsTheDirectDftOfItsWindowedSegment) {
   std::vector<double> y(length);
   double sum_w = 0.0;
   for (std::size_t t = 0; t < length; ++t) {
-    y[t] = (x[start + t] - mean) * test::hann(t, length);
-    sum_w += test::hann(t, length);
+    y[t] = (x[start + t] - mean) * nibrig::test::hann(t, length);
+    sum_w += nibrig::test::hann(t, length);
   }
-  const auto X = test::direct_dft(y);
+  const auto X = nibrig::test::direct_dft(y);
   for (std::size_t k = 0; k < X.size(); ++k) {
     const double c = (k == 0 || k == length / 2) ? 1.0 : 2.0;
     // Direct O(N²) sum vs FFT: both round at ~1e-14 relative; 1e-11 absolute is generous.

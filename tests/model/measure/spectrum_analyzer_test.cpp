@@ -25,7 +25,7 @@ std::vector<double> sine(std::size_t n, double cycles_per_segment, double amplit
 TEST(WindowCoefficients, PeriodicHannMatchesSineSquaredForm) {
   const auto w = window_coefficients(Window::hann, 16);
   // 0.5 - 0.5 cos(2πn/N) = sin²(πn/N): same values by a trigonometric identity; 1e-15 is rounding.
-  for (std::size_t n = 0; n < 16; ++n) EXPECT_NEAR(w[n], test::hann(n, 16), 1e-15);
+  for (std::size_t n = 0; n < 16; ++n) EXPECT_NEAR(w[n], nibrig::test::hann(n, 16), 1e-15);
 }
 
 class OnBinSine : public ::testing::TestWithParam<Window> {};
@@ -89,11 +89,11 @@ TEST(SpectrumAnalyzer, MatchesADirectDft) {
     std::vector<double> y(n);
     double sum_w = 0.0;
     for (std::size_t t = 0; t < n; ++t) {
-      const double wt = w == Window::hann ? test::hann(t, n) : 1.0;
+      const double wt = w == Window::hann ? nibrig::test::hann(t, n) : 1.0;
       y[t] = (x[t] - mean) * wt;
       sum_w += wt;
     }
-    const auto X = test::direct_dft(y);
+    const auto X = nibrig::test::direct_dft(y);
     for (std::size_t k = 0; k < out.size(); ++k) {
       const double c = (k == 0 || k == n / 2) ? 1.0 : 2.0;
       // O(N²) summation accumulates ~N·eps relative error: 1e-10 absolute on O(0.1) values.

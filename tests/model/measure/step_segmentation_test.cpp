@@ -123,8 +123,8 @@ TEST(StepSegmentation, DefaultSpeedsSpanThePapersRange) {
 }
 
 std::vector<double> load_acceleration(const std::string& relative) {
-  const auto path = test::shared_data() / "piovarci2018" / "vibration" / (relative + ".csv.gz");
-  auto column = test::read_gz_csv_column(path, 2);  // xAccel in g, the column the paper uses
+  const auto path = nibrig::test::shared_data() / "piovarci2018" / "vibration" / (relative + ".csv.gz");
+  auto column = nibrig::test::read_gz_csv_column(path, 2);  // xAccel in g, the column the paper uses
   EXPECT_EQ(column.short_rows, 0u) << relative;
   for (double& v : column.values) v *= kG;
   return column.values;
@@ -176,7 +176,7 @@ TEST(StepSegmentationOnPaperData, AgreesWithTheHandPickedStartRows) {
 }
 
 TEST(StepSegmentationOnPaperData, EveryRecordingYieldsEvenlySpacedSweeps) {
-  const auto root = test::shared_data() / "piovarci2018" / "vibration";
+  const auto root = nibrig::test::shared_data() / "piovarci2018" / "vibration";
   std::size_t files = 0, complete = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     const std::string name = entry.path().filename().string();

@@ -12,14 +12,14 @@ namespace nibrig::model::measure {
 namespace {
 
 std::filesystem::path write(const std::string& name, const std::string& text) {
-  const auto path = test::scratch_dir("threshold_" + name) / "curve.csv";
+  const auto path = nibrig::test::scratch_dir("threshold_" + name) / "curve.csv";
   std::ofstream(path) << text;
   return path;
 }
 
 TEST(ThresholdCurve, LoadsTheShippedPenHoldCurve) {
   const ThresholdCurve c =
-      ThresholdCurve::load(test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+      ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
   EXPECT_NE(c.source().find("Israr"), std::string::npos);
   EXPECT_NE(c.source().find("APPROXIMATION"), std::string::npos);  // says plainly what it is
   ASSERT_EQ(c.frequencies_hz().size(), 8u);

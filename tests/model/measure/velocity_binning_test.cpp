@@ -42,7 +42,7 @@ std::vector<std::vector<double>> paper_spectra(const std::vector<double>& d,
       double mean = 0.0;
       for (double v : y) mean += v / 1500.0;
       for (double& v : y) v -= mean;
-      const auto Y = test::direct_dft(y);
+      const auto Y = nibrig::test::direct_dft(y);
       for (std::size_t k = 9; k <= 749; ++k) my[k - 9] += std::abs(Y[k]) * 2.0 / 1500.0 / 3.0;
     }
     std::vector<double> smoothed(741);
@@ -59,8 +59,8 @@ std::vector<std::vector<double>> paper_spectra(const std::vector<double>& d,
 
 TEST(SpectrumPerStep, ReproducesThePapersSpectraOnItsOwnWindows) {
   const auto path =
-      test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_1_office.csv.gz";
-  auto column = test::read_gz_csv_column(path, 2);
+      nibrig::test::shared_data() / "piovarci2018/vibration/prints/arm_plain_vero_1_office.csv.gz";
+  auto column = nibrig::test::read_gz_csv_column(path, 2);
   std::vector<double> x = column.values;
   for (double& v : x) v *= 9.80665;  // g → m/s²
   // The paper's windows for this file (start row 4), handed over as a segmentation.

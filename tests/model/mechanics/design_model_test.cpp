@@ -15,12 +15,12 @@ namespace {
 using ::testing::HasSubstr;
 
 const MaterialTable& bundled_materials() {
-  static const MaterialTable table = read_material_table(test::assets_dir() / "materials.json");
+  static const MaterialTable table = read_material_table(nibrig::test::assets_dir() / "materials.json");
   return table;
 }
 
 Design paper_bar() {
-  return read_design(test::assets_dir() / "designs" / "paper_bar.json", bundled_materials());
+  return read_design(nibrig::test::assets_dir() / "designs" / "paper_bar.json", bundled_materials());
 }
 
 TEST(DesignModel, PaperBarTakesTheMaterialsDampingAndIsDominatedByItsFirstBendingMode) {

@@ -15,14 +15,14 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 std::filesystem::path write_table(const std::string& name, const std::string& materials_json) {
-  const auto file = test::scratch_dir("material_table") / name;
+  const auto file = nibrig::test::scratch_dir("material_table") / name;
   std::ofstream(file) << R"({"format": "nibrig-materials", "version": 1, "materials": )"
                       << materials_json << "}";
   return file;
 }
 
 TEST(MaterialTable, BundledTableHoldsThePapersVeroClearFit) {
-  const MaterialTable table = read_material_table(test::assets_dir() / "materials.json");
+  const MaterialTable table = read_material_table(nibrig::test::assets_dir() / "materials.json");
   const Material& vero = table.find("veroclear-piovarci2018");  // names are case-insensitive
   // Published values (Sec. 5.1): E = 0.45 GPa, Rayleigh stiffness term 1.25e-3, no mass term.
   EXPECT_DOUBLE_EQ(vero.youngs_modulus, 0.45e9);
@@ -35,7 +35,7 @@ TEST(MaterialTable, BundledTableHoldsThePapersVeroClearFit) {
 }
 
 TEST(MaterialTable, UnknownNameListsTheKnownOnes) {
-  const MaterialTable table = read_material_table(test::assets_dir() / "materials.json");
+  const MaterialTable table = read_material_table(nibrig::test::assets_dir() / "materials.json");
   EXPECT_THAT([&] { table.find("unobtainium"); },
               ::testing::ThrowsMessage<std::invalid_argument>(
                   AllOf(HasSubstr("unknown material 'unobtainium'"), HasSubstr("VeroClear"))));

@@ -34,7 +34,7 @@ std::vector<Triangle> box_triangles() {
 }
 
 std::filesystem::path write_stl(const std::string& name, const std::vector<Triangle>& triangles) {
-  const auto file = test::scratch_dir("mesh_import") / name;
+  const auto file = nibrig::test::scratch_dir("mesh_import") / name;
   std::ofstream out(file);
   out << "solid test\n";
   for (const auto& t : triangles) {
@@ -84,7 +84,7 @@ TEST(MeshImport, NonManifoldStlIsRefused) {
 }
 
 TEST(MeshImport, MshKeepsItsPhysicalGroupsAsRegionsAndNodeSets) {
-  const auto file = test::scratch_dir("mesh_import") / "rod.msh";
+  const auto file = nibrig::test::scratch_dir("mesh_import") / "rod.msh";
   {
     GmshSession session("rod");
     const int box = gmsh::model::occ::addBox(0, 0, 0, 0.05, 0.004, 0.004);
@@ -108,7 +108,7 @@ TEST(MeshImport, MshKeepsItsPhysicalGroupsAsRegionsAndNodeSets) {
 }
 
 TEST(MeshImport, StepSolidIsMeshed) {
-  const auto file = test::scratch_dir("mesh_import") / "pin.step";
+  const auto file = nibrig::test::scratch_dir("mesh_import") / "pin.step";
   {
     GmshSession session("pin");
     gmsh::model::occ::addCylinder(0, 0, 0, 30, 0, 0, 2);  // millimetres, as CAD exports them
@@ -124,7 +124,7 @@ TEST(MeshImport, MissingUnknownAndEmptyFiles) {
   EXPECT_THAT([&] { import_mesh_file("/nonexistent/nib.stl", {}); },
               ::testing::ThrowsMessage<std::runtime_error>(
                   AllOf(HasSubstr("nib.stl"), HasSubstr("no such file"))));
-  const auto obj = test::scratch_dir("mesh_import") / "nib.obj";
+  const auto obj = nibrig::test::scratch_dir("mesh_import") / "nib.obj";
   std::ofstream(obj) << "v 0 0 0\n";
   EXPECT_THAT([&] { import_mesh_file(obj, {}); }, ::testing::ThrowsMessage<std::runtime_error>(
                                                       HasSubstr("unknown mesh format '.obj'")));

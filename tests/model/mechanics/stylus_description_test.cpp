@@ -15,25 +15,25 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 const MaterialTable& bundled_materials() {
-  static const MaterialTable table = read_material_table(test::assets_dir() / "materials.json");
+  static const MaterialTable table = read_material_table(nibrig::test::assets_dir() / "materials.json");
   return table;
 }
 
 std::filesystem::path write_design(const std::string& name, const std::string& body) {
-  const auto file = test::scratch_dir("design") / name;
+  const auto file = nibrig::test::scratch_dir("design") / name;
   std::ofstream(file) << R"({"format": "nibrig-design", "version": 1, )" << body << "}";
   return file;
 }
 
 TEST(Design, BundledDesignsReadAndMesh) {
-  for (const auto& entry : std::filesystem::directory_iterator(test::assets_dir() / "designs")) {
+  for (const auto& entry : std::filesystem::directory_iterator(nibrig::test::assets_dir() / "designs")) {
     const Design design = read_design(entry.path(), bundled_materials());
     EXPECT_FALSE(design.name.empty()) << entry.path();
     EXPECT_NEAR(design.tip.direction.norm(), 1.0, 1e-12);
     EXPECT_NEAR(design.sensor.direction.norm(), 1.0, 1e-12);
   }
   const Design bar =
-      read_design(test::assets_dir() / "designs" / "paper_bar.json", bundled_materials());
+      read_design(nibrig::test::assets_dir() / "designs" / "paper_bar.json", bundled_materials());
   const auto& shape = std::get<BarGeometry>(bar.shape);
   EXPECT_DOUBLE_EQ(shape.free_length(), 0.180);  // 210 mm clamped over 30 mm
   const TetMesh mesh = mesh_design(bar);
@@ -118,7 +118,7 @@ TEST(Design, AnInlineBarMeshesAtItsThicknessButNoFinerThanAHundredthOfItsLength)
 
 TEST(Design, MeshWithoutClampIsRefused) {
   // A mesh file whose clamp box holds no node: the design would float freely.
-  const auto dir = test::scratch_dir("design_clamp");
+  const auto dir = nibrig::test::scratch_dir("design_clamp");
   {
     std::ofstream stl(dir / "cube.stl");
     const double v[8][3] = {{0, 0, 0},  {10, 0, 0},  {10, 10, 0},  {0, 10, 0},

@@ -17,12 +17,13 @@
 #include "model/modal/frequency_response.hpp"
 #include "model/modal/linear_forcing_integrator.hpp"
 #include "model/modal/sinusoid_step.hpp"
+#include "tests/model/modal/modal_test_constants.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRate = 48000.0;
+using test::kPi;
+using test::kRate;
 constexpr int kDof = 4;
 constexpr int kTip = 3;     // force at the free end (the nib)
 constexpr int kSensor = 1;  // accelerometer one mass in

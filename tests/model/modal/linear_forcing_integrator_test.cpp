@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "model/modal/linear_forcing_step.hpp"
+#include "tests/model/modal/modal_test_constants.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRate = 48000.0;
+using test::kPi;
+using test::kRate;
 
 // Seven modes (not a multiple of the engine's four lanes, so padding is exercised) across the
 // damping regimes of a stylus with the paper's λ = 1.25e-3 (ζ = λω/2) plus two light ones.

@@ -6,15 +6,16 @@
 #include <cmath>
 #include <limits>
 
+#include "tests/model/modal/modal_test_constants.hpp"
 #include "tests/model/modal/quad_exponential.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-using test::quad;
-using test::QuadMatrix;
+using nibrig::test::quad;
+using nibrig::test::QuadMatrix;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::kEps;
 
 // The textbook way to get Γ₀, Γ₁: the exponential of the augmented generator of [q, q̇, f, f'] (the
 // force a state with constant slope), in quadruple precision and in units of the step (h = 1,
@@ -28,7 +29,7 @@ LinearForcingStep reference(double x, double zeta) {
   a(1, 1) = -quad(2) * quad(zeta) * qx;
   a(1, 2) = 1;
   a(2, 3) = 1;
-  const QuadMatrix e = test::quad_exp(a);
+  const QuadMatrix e = nibrig::test::quad_exp(a);
   LinearForcingStep s;
   s.transition = {static_cast<double>(e(0, 0)), static_cast<double>(e(0, 1) / qx),
                   static_cast<double>(e(1, 0) * qx), static_cast<double>(e(1, 1))};

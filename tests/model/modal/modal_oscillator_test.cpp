@@ -8,15 +8,16 @@
 #include <limits>
 #include <vector>
 
+#include "tests/model/modal/modal_test_constants.hpp"
 #include "tests/model/modal/quad_exponential.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-using test::quad;
-using test::QuadMatrix;
+using nibrig::test::quad;
+using nibrig::test::QuadMatrix;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::kEps;
 
 // Reference in units of the step (h = 1, x = ωh, y = Ωh), with the balanced state (xq, q̇) so that
 // every entry of the generator is O(x): [Re X, Im X, f, f'] with X' = (U + jy)X + (0,1)ᵀ f. Its
@@ -42,7 +43,7 @@ Reference reference(double x, double zeta, double y) {
   }
   a(1, 4) = 1;  // the force enters Re q̇
   a(4, 5) = 1;  // f' is the slope
-  const QuadMatrix e = test::quad_exp(a);
+  const QuadMatrix e = nibrig::test::quad_exp(a);
   Reference r;
   r.phi = {static_cast<double>(e(0, 0)), static_cast<double>(e(0, 1) / qx),
            static_cast<double>(e(1, 0) * qx), static_cast<double>(e(1, 1))};

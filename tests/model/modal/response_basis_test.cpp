@@ -17,13 +17,14 @@
 #include "model/modal/frequency_response.hpp"
 #include "model/modal/linear_forcing_integrator.hpp"
 #include "model/modal/sinusoid_step.hpp"
+#include "tests/model/modal/modal_test_constants.hpp"
 #include "tests/model/modal/paper_damped_model.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRate = 48000.0;
+using test::kPi;
+using test::kRate;
 
 ModalModel model() { return test::paper_damped_model(); }
 

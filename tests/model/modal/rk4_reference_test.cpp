@@ -14,12 +14,13 @@
 
 #include "model/modal/linear_forcing_integrator.hpp"
 #include "model/modal/sinusoid_step.hpp"
+#include "tests/model/modal/modal_test_constants.hpp"
 
 namespace nibrig::model::modal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRate = 48000.0;
+using test::kPi;
+using test::kRate;
 
 // Modes up to 3 kHz and ζ up to 9 (the paper's λ at 2.9 kHz), so that RK4 with 64 sub-steps per
 // sample is in its asymptotic regime even for the fast overdamped pole (≈ 2ζω·h/64 ≈ 0.11).

@@ -7,11 +7,13 @@
 #include <numbers>
 #include <vector>
 
+#include "tests/model/modal/modal_test_constants.hpp"
+
 namespace nibrig::model::modal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRate = 48000.0;
+using test::kPi;
+using test::kRate;
 
 // Closed-form steady state of q̈ + 2ζωq̇ + ω²q = A sin(Ωt + φ): q = A·Im(H e^{j(Ωt+φ)}) with
 // H = 1/(ω² − Ω² + 2jζωΩ); q̇ and q̈ carry the factors jΩ and −Ω².

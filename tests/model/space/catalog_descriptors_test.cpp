@@ -12,7 +12,7 @@ namespace nibrig::model::space {
 namespace {
 
 const std::filesystem::path& catalog_file() {
-  static const std::filesystem::path f = test::assets_dir() / "default_catalog.json";
+  static const std::filesystem::path f = nibrig::test::assets_dir() / "default_catalog.json";
   return f;
 }
 

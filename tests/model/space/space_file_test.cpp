@@ -28,7 +28,7 @@ SpaceFile example() {
 }
 
 TEST(SpaceFile, DescriptorsMapAndRegionsSurviveARoundTrip) {
-  const auto dir = test::scratch_dir("space_file");
+  const auto dir = nibrig::test::scratch_dir("space_file");
   const SpaceFile s = example();
   write_space_file(dir / "space.json", s);
   const SpaceFile r = read_space_file(dir / "space.json");
@@ -48,7 +48,7 @@ TEST(SpaceFile, DescriptorsMapAndRegionsSurviveARoundTrip) {
 }
 
 TEST(SpaceFile, ARegionOfTheWrongShapeIsNamed) {
-  const auto dir = test::scratch_dir("space_file_bad");
+  const auto dir = nibrig::test::scratch_dir("space_file_bad");
   SpaceFile s = example();
   s.regions[2].covariance = Eigen::Matrix3d::Identity();
   write_space_file(dir / "space.json", s);

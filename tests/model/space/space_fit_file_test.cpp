@@ -25,7 +25,7 @@ std::filesystem::path judged(const std::vector<std::string>& stimuli, const std:
   io::TripletSet set;
   set.stimuli = stimuli;
   set.triplets = testing::every_triplet_judged(truth, 8, 12).triplets;
-  const auto file = test::scratch_dir(name) / "judgments.csv";
+  const auto file = nibrig::test::scratch_dir(name) / "judgments.csv";
   io::write_triplet_csv(file, set);
   return file;
 }

@@ -210,7 +210,7 @@ std::vector<std::string> names(std::size_t n) {
 }
 
 TEST(TrialPlanCsv, RoundTripKeepsTrialsAndAnswers) {
-  const auto dir = test::scratch_dir("trial_plan_round_trip");
+  const auto dir = nibrig::test::scratch_dir("trial_plan_round_trip");
   TrialList list;
   list.stimuli = names(6);
   list.trials = plan_all_triplets(6, 1, 3, 0.5);
@@ -241,7 +241,7 @@ TEST(TrialPlanCsv, RoundTripKeepsTrialsAndAnswers) {
 
 class TrialPlanCsvMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = test::scratch_dir("trial_plan_malformed"); }
+  void SetUp() override { dir_ = nibrig::test::scratch_dir("trial_plan_malformed"); }
   std::string error_of(const std::string& text, const std::vector<std::string>& known = {}) {
     const auto file = dir_ / "bad.csv";
     std::ofstream(file) << text;

@@ -16,7 +16,7 @@ namespace {
 using test::run_cli;
 
 TEST(AudioCli, RenderWritesTheToolOverTheSweepToAWav) {
-  const auto out = test::scratch_dir("cli_render");
+  const auto out = nibrig::test::scratch_dir("cli_render");
   ::testing::internal::CaptureStdout();
   const int code = run_cli({"render", "--tool", "cryon", "--surface", "office", "--sweep",
                             "--seconds", "1", "-o", (out / "cryon.wav").string()});
@@ -37,7 +37,7 @@ TEST(AudioCli, RenderWritesTheToolOverTheSweepToAWav) {
 }
 
 TEST(AudioCli, RenderCreatesAMissingFolderAndRefusesAFolderAsOutput) {
-  const auto out = test::scratch_dir("cli_render_folders");
+  const auto out = nibrig::test::scratch_dir("cli_render_folders");
   std::filesystem::remove_all(out / "new");
   ::testing::internal::CaptureStdout();
   const int code = run_cli({"render", "--tool", "cryon", "--surface", "office", "--speed", "100",

@@ -16,14 +16,14 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::is_png;
-using test::read_json;
+using nibrig::test::is_png;
+using nibrig::test::read_json;
 using test::run_cli;
 
 TEST(Cli, MeasureFrictionWritesMuAndFigures) {
-  const auto out = test::scratch_dir("cli_measure_friction");
+  const auto out = nibrig::test::scratch_dir("cli_measure_friction");
   const auto file =
-      test::shared_data() / "piovarci2018/friction/real_tools/p2h_office_2.2N_14_1.csv.gz";
+      nibrig::test::shared_data() / "piovarci2018/friction/real_tools/p2h_office_2.2N_14_1.csv.gz";
   ASSERT_EQ(run_cli({"measure", file.string(), "-o", (out / "m.json").string()}), 0);
   const auto j = read_json(out / "m.json");
   EXPECT_EQ(j["kind"], "friction");
@@ -39,9 +39,9 @@ TEST(Cli, MeasureFrictionWritesMuAndFigures) {
 }
 
 TEST(Cli, MeasureVibrationWritesTheVelocityBinnedSpectrumKeys) {
-  const auto out = test::scratch_dir("cli_measure_vibration");
+  const auto out = nibrig::test::scratch_dir("cli_measure_vibration");
   const auto file =
-      test::shared_data() / "piovarci2018/vibration/prints/arm_plain_DM85_4_office.csv.gz";
+      nibrig::test::shared_data() / "piovarci2018/vibration/prints/arm_plain_DM85_4_office.csv.gz";
   ASSERT_EQ(run_cli({"measure", file.string(), "-o", (out / "v.json").string()}), 0);
   const auto j = read_json(out / "v.json");
   const auto& f = j["frequencies_hz"];
@@ -61,29 +61,29 @@ TEST(Cli, MeasureVibrationWritesTheVelocityBinnedSpectrumKeys) {
 }
 
 TEST(Cli, ErrorsAreOneLineAndANonZeroExit) {
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   const int code = run_cli({"measure", "/nonexistent/arm_x_y.csv.gz", "--no-plots"});
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(code, 0);
   EXPECT_NE(err.find("/nonexistent/arm_x_y.csv.gz"), std::string::npos);
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 }
 
 TEST(Cli, MalformedRecordingNamesFileAndLine) {
-  const auto dir = test::scratch_dir("cli_malformed");
+  const auto dir = nibrig::test::scratch_dir("cli_malformed");
   const auto file = dir / "pen_office_2.2N_14_1.csv";
   std::ofstream(file) << "TimeStamp,X,Y,Z\n10:00:00.000,1,2,3\n10:00:00.001,1,2,abc\n";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   const int code = run_cli({"measure", file.string(), "--no-plots"});
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(code, 0);
   EXPECT_NE(err.find("pen_office_2.2N_14_1.csv"), std::string::npos) << err;
   EXPECT_NE(err.find("line 3"), std::string::npos) << err;
 }
 
 TEST(Cli, CatalogBuildProcessesEveryRecordingOfThePaper) {
-  const auto out = test::scratch_dir("cli_catalog");
-  const auto root = test::shared_data() / "piovarci2018";
+  const auto out = nibrig::test::scratch_dir("cli_catalog");
+  const auto root = nibrig::test::shared_data() / "piovarci2018";
   ASSERT_EQ(run_cli({"catalog", "build", root.string(), "-o", (out / "catalog.json").string(),
                      "--report", (out / "report").string()}),
             0);
@@ -112,10 +112,10 @@ TEST(Cli, CatalogBuildProcessesEveryRecordingOfThePaper) {
 }
 
 TEST(Cli, DemoRunsOnTheBundledDefault) {
-  const auto out = test::scratch_dir("cli_demo");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_demo");
+  ::testing::internal::CaptureStdout();
   const int code = run_cli({"demo", "-o", (out / "demo").string()});
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0);
   EXPECT_NE(text.find("Coulomb friction mu"), std::string::npos) << text;
   EXPECT_TRUE(std::filesystem::exists(out / "demo" / "catalog.json"));
@@ -149,10 +149,10 @@ TEST(Cli, DemoRunsOnTheBundledDefault) {
   EXPECT_TRUE(is_png(forcing / "material_curves.png"));
   EXPECT_TRUE(is_png(forcing / "predicted_spectrum.png"));
   EXPECT_TRUE(is_png(forcing / "design_path.png"));
-  const auto predicted = test::read_json(forcing / "predicted.json");
+  const auto predicted = nibrig::test::read_json(forcing / "predicted.json");
   EXPECT_EQ(predicted["amplitude_m_s2"].size(), predicted["speeds_mm_s"].size());
   EXPECT_TRUE(predicted.contains("descriptor_error_covariance"));  // placed with its error
-  const auto search = test::read_json(forcing / "design_search.json");
+  const auto search = nibrig::test::read_json(forcing / "design_search.json");
   EXPECT_GE(search["path"].size(), 9u);
   // The rig: the simulated turntable's capture measured against the catalog, and the comparison.
   EXPECT_NE(text.find("captured and measured as a session"), std::string::npos) << text;

@@ -22,14 +22,14 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::is_png;
-using test::read_json;
+using nibrig::test::is_png;
+using nibrig::test::read_json;
 using test::run_cli;
 
 namespace space = model::space;
 
 std::filesystem::path write_test_space(const std::filesystem::path& folder) {
-  const auto catalog_file = test::assets_dir() / "default_catalog.json";
+  const auto catalog_file = nibrig::test::assets_dir() / "default_catalog.json";
   const auto catalog = model::io::read_catalog(catalog_file);
   space::SpaceFile s;
   s.stimuli = {"cryon/office", "stab/office", "vero1/office", "vero4/office",
@@ -82,25 +82,25 @@ void expect_placed_with_its_descriptor_error(const std::filesystem::path& out,
   nlohmann::json without = predicted;
   without.erase("descriptor_error_covariance");
   std::ofstream(out / "predicted_without_error.json") << without.dump();
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const auto catalog = (test::assets_dir() / "default_catalog.json").string();
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const auto catalog = (nibrig::test::assets_dir() / "default_catalog.json").string();
   ASSERT_EQ(run_cli({"space", "embed", space_file.string(), catalog, "--predicted",
                      (out / "predicted_without_error.json").string(), "-o",
                      (out / "placed_without_error.csv").string()}),
             0);
-  testing::internal::GetCapturedStdout();
-  const std::string warning = testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  const std::string warning = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(warning.find("placed as if measured"), std::string::npos) << warning;
   // A damaged covariance is refused, naming the file and the field.
   const auto refused = [&](nlohmann::json damaged, const std::string& field) {
     std::ofstream(out / "damaged.json") << damaged.dump();
-    testing::internal::CaptureStdout();
-    testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
+    ::testing::internal::CaptureStderr();
     const int code = run_cli({"space", "embed", space_file.string(), catalog, "--predicted",
                               (out / "damaged.json").string()});
-    testing::internal::GetCapturedStdout();
-    const std::string error = testing::internal::GetCapturedStderr();
+    ::testing::internal::GetCapturedStdout();
+    const std::string error = ::testing::internal::GetCapturedStderr();
     EXPECT_NE(code, 0) << field;
     EXPECT_NE(error.find("damaged.json"), std::string::npos) << error;
     EXPECT_NE(error.find(field), std::string::npos) << error;
@@ -144,14 +144,14 @@ void expect_placed_with_its_descriptor_error(const std::filesystem::path& out,
 }
 
 TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
-  const auto out = test::scratch_dir("cli_design");
+  const auto out = nibrig::test::scratch_dir("cli_design");
   const auto space_file = write_test_space(out);
   const std::vector<std::string> coarse{"--modes", "32", "--mesh-size", "0.004"};
   std::vector<std::string> fit{"forcing", "fit", "-o", (out / "forcing.json").string()};
   fit.insert(fit.end(), coarse.begin(), coarse.end());
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(fit), 0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
 
   // The target is the measured 4 mm DM85 tool on glass, placed from its descriptors; the line runs
   // from the 1 mm VeroClear design to the 4 mm DM85 one. The model predicts the DM85 end from the
@@ -173,9 +173,9 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
                                 "--plot",
                                 (out / "path.png").string()};
   args.insert(args.end(), coarse.begin(), coarse.end());
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   const int code = run_cli(args);
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto search = read_json(out / "search.json");
   const auto& path = search["path"];
@@ -204,38 +204,38 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
                                    "-o",
                                    (out / "predicted.json").string()};
   predict.insert(predict.end(), coarse.begin(), coarse.end());
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(predict), 0);
   ASSERT_EQ(run_cli({"space", "embed", space_file.string(),
-                     (test::assets_dir() / "default_catalog.json").string(), "--predicted",
+                     (nibrig::test::assets_dir() / "default_catalog.json").string(), "--predicted",
                      (out / "predicted.json").string(), "-o", (out / "placed.csv").string(),
                      "--plot", (out / "placed.png").string()}),
             0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
   std::ifstream placed(out / "placed.csv");
   const std::string csv((std::istreambuf_iterator<char>(placed)), std::istreambuf_iterator<char>());
   EXPECT_NE(csv.find("\"pred:DM85:0.5,vero:0.5,tip=2mm/glass\",no,"), std::string::npos) << csv;
   EXPECT_TRUE(is_png(out / "placed.png"));
   expect_placed_with_its_descriptor_error(out, space_file);
   // A file that is not a prediction is refused, naming it and the field.
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const int not_prediction = run_cli({"space", "embed", space_file.string(),
-                                      (test::assets_dir() / "default_catalog.json").string(),
+                                      (nibrig::test::assets_dir() / "default_catalog.json").string(),
                                       "--predicted", (out / "search.json").string()});
-  testing::internal::GetCapturedStdout();
-  const std::string refused = testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  const std::string refused = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(not_prediction, 0);
   EXPECT_NE(refused.find("search.json"), std::string::npos) << refused;
   EXPECT_NE(refused.find("kind"), std::string::npos) << refused;
 
   // A target the space cannot place fails in one line.
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const int bad = run_cli({"design", "--target", "nothing/glass", "--surface", "glass", "--space",
                            space_file.string(), "--forcing", (out / "forcing.json").string()});
-  testing::internal::GetCapturedStdout();
-  const std::string error = testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  const std::string error = ::testing::internal::GetCapturedStderr();
   EXPECT_EQ(bad, 2) << "an unknown --target is a usage error: " << error;
   EXPECT_NE(error.find("--target"), std::string::npos) << "names the option: " << error;
   EXPECT_NE(error.find("nothing/glass"), std::string::npos) << error;

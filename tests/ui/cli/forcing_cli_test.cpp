@@ -12,7 +12,7 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::is_png;
+using nibrig::test::is_png;
 using test::run_cli;
 
 std::vector<std::string> lines_of(const std::filesystem::path& file) {
@@ -22,22 +22,15 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
   return lines;
 }
 
-// Both commands run with a coarser mesh and fewer modes than the template's (4 mm, 32 instead of
-// 3 mm, 64: ~1 % in |H|, ~4x faster): these tests are about the commands; the model's real-data
-// test uses the full resolution.
-const std::vector<std::string> kCoarse{"--modes", "32", "--mesh-size", "0.004"};
-
-std::vector<std::string> with_coarse(std::vector<std::string> args) {
-  args.insert(args.end(), kCoarse.begin(), kCoarse.end());
-  return args;
-}
+// Both commands run with a coarser mesh and fewer modes than the template's (cli_harness.hpp).
+using nibrig::test::with_coarse;
 
 TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
-  const auto out = test::scratch_dir("cli_forcing_fit");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_forcing_fit");
+  ::testing::internal::CaptureStdout();
   const int code = run_cli(with_coarse({"forcing", "fit", "-o", (out / "forcing.json").string(),
                                         "--plots", (out / "plots").string()}));
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto model = model::forcing::read_forcing_model(out / "forcing.json");
   // The bundled catalog: 54 printed exemplars on 6 surfaces (see the model's real-data test).
@@ -68,11 +61,11 @@ TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
 }
 
 TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
-  const auto out = test::scratch_dir("cli_forcing_loo");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_forcing_loo");
+  ::testing::internal::CaptureStdout();
   const int code = run_cli({"forcing", "loo", "-o", (out / "loo.csv").string(), "--modes", "32",
                             "--mesh-size", "0.004"});
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   EXPECT_NE(text.find("23 predicted, 0 not predictable"), std::string::npos) << text;
   EXPECT_NE(text.find("worst: "), std::string::npos) << text;
@@ -94,12 +87,12 @@ TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
 }
 
 TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed) {
-  const auto out = test::scratch_dir("cli_forcing_holdout");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_forcing_holdout");
+  ::testing::internal::CaptureStdout();
   const int code =
       run_cli(with_coarse({"forcing", "holdout", "--tip", "2", "-o",
                            (out / "holdout.csv").string(), "--plots", (out / "plots").string()}));
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   // The 15 measured 2 mm tools (vero2 and DM852 on five surfaces, DM952 on two, teflon2 on
   // three), each beside both baselines, per speed and overall.
@@ -136,11 +129,11 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
 }
 
 TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
-  const auto out = test::scratch_dir("cli_forcing_holdout_material");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_forcing_holdout_material");
+  ::testing::internal::CaptureStdout();
   const int code = run_cli(with_coarse(
       {"forcing", "holdout", "--material", "DM95", "-o", (out / "holdout.csv").string()}));
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   // The 14 measured DM95 tools (1 and 4 mm on six surfaces, 2 mm on two), each as the mix of
   // VeroClear and DM85 with DM95's modulus, beside both materials' curves and measured tools.
@@ -161,23 +154,23 @@ TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
       << csv[0];
 
   // A tip and a material at once, and a mix the material's modulus is not between, are refused.
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_NE(run_cli({"forcing", "holdout", "--material", "DM95", "--tip", "2"}), 0);
-  testing::internal::GetCapturedStderr();
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  ::testing::internal::GetCapturedStderr();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const int bad =
       run_cli(with_coarse({"forcing", "holdout", "--material", "DM85", "--as", "vero,DM95"}));
-  testing::internal::GetCapturedStdout();
-  const std::string error = testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  const std::string error = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(bad, 0);
   EXPECT_NE(error.find("no mix of vero and DM95"), std::string::npos) << error;
 }
 
 TEST(ForcingCli, AMissingCatalogIsOneClearLine) {
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   const int code = run_cli({"forcing", "fit", "/nonexistent/catalog.json"});
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(code, 0);
   EXPECT_NE(err.find("/nonexistent/catalog.json: no such file (expected a tool catalog JSON)"),
             std::string::npos)
@@ -186,15 +179,15 @@ TEST(ForcingCli, AMissingCatalogIsOneClearLine) {
 }
 
 TEST(ForcingCli, AMalformedCatalogNamesTheFileAndField) {
-  const auto dir = test::scratch_dir("cli_forcing_bad_catalog");
-  std::ifstream in(test::assets_dir() / "default_catalog.json");
+  const auto dir = nibrig::test::scratch_dir("cli_forcing_bad_catalog");
+  std::ifstream in(nibrig::test::assets_dir() / "default_catalog.json");
   auto catalog = nlohmann::json::parse(in);
   catalog["pairings"][0]["vibration"]["amplitude_m_s2"][2].erase(0);
   const auto file = dir / "broken.json";
   std::ofstream(file) << catalog.dump();
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   const int code = run_cli({"forcing", "loo", file.string()});
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(code, 0);
   EXPECT_NE(err.find(file.string()), std::string::npos) << err;
   EXPECT_NE(err.find("pairings[0].vibration.amplitude_m_s2[2]"), std::string::npos) << err;

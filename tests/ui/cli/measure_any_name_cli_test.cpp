@@ -12,13 +12,13 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::read_json;
+using nibrig::test::read_json;
 using test::run_cli;
 
-std::filesystem::path piovarci() { return test::shared_data() / "piovarci2018"; }
+std::filesystem::path piovarci() { return nibrig::test::shared_data() / "piovarci2018"; }
 
 TEST(CliMeasureAnyName, AccelerometerFileNamedAnythingWritesTheSpectrum) {
-  const auto out = test::scratch_dir("cli_measure_any_vibration");
+  const auto out = nibrig::test::scratch_dir("cli_measure_any_vibration");
   const auto real = piovarci() / "vibration/arm2/arm_cryon_note.csv.gz";
   const auto copy = out / "arm_DM85_25_vero_75_1_note.csv.gz";
   std::filesystem::copy_file(real, copy);
@@ -40,7 +40,7 @@ TEST(CliMeasureAnyName, AccelerometerFileNamedAnythingWritesTheSpectrum) {
 }
 
 TEST(CliMeasureAnyName, FrictionFileNamedAnythingIsKnownByItsHeader) {
-  const auto out = test::scratch_dir("cli_measure_any_friction");
+  const auto out = nibrig::test::scratch_dir("cli_measure_any_friction");
   const auto real = piovarci() / "friction/printed/DM851_note_2.2N_13.3_1.csv.gz";
   const auto copy = out / "run7.csv.gz";
   std::filesystem::copy_file(real, copy);
@@ -57,7 +57,7 @@ TEST(CliMeasureAnyName, FrictionFileNamedAnythingIsKnownByItsHeader) {
 }
 
 TEST(CliMeasureAnyName, FrictionWithoutTheLeverSaysWhatToState) {
-  const auto out = test::scratch_dir("cli_measure_any_lever");
+  const auto out = nibrig::test::scratch_dir("cli_measure_any_lever");
   std::filesystem::copy_file(piovarci() / "friction/printed/DM851_note_2.2N_13.3_1.csv.gz",
                              out / "run7.csv.gz");
   ::testing::internal::CaptureStderr();
@@ -71,7 +71,7 @@ TEST(CliMeasureAnyName, FrictionWithoutTheLeverSaysWhatToState) {
 }
 
 TEST(CliMeasureAnyName, KindOverridesWhatTheNameSuggests) {
-  const auto out = test::scratch_dir("cli_measure_any_kind");
+  const auto out = nibrig::test::scratch_dir("cli_measure_any_kind");
   // "_2.2N_" makes the name look like a friction file; the content is an accelerometer's.
   const auto copy = out / "cryon_note_2.2N_1_1.csv.gz";
   std::filesystem::copy_file(piovarci() / "vibration/arm2/arm_cryon_note.csv.gz", copy);

@@ -14,17 +14,17 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::is_png;
-using test::read_json;
+using nibrig::test::is_png;
+using nibrig::test::read_json;
 using test::run_cli;
 
 TEST(MechanicsCli, InlinePlainBarReportsTheKeysScriptsUseAndMatchesBeamTheory) {
-  const auto out = test::scratch_dir("cli_mech_bar");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_mech_bar");
+  ::testing::internal::CaptureStdout();
   const int code =
       run_cli({"mechanics", "modes", "--bar", "0.21,0.02,0.002", "--clamp", "0.03", "--no-cutout",
                "--material", "steel", "--modes", "8", "-o", (out / "bar.json").string()});
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto j = read_json(out / "bar.json");
   EXPECT_DOUBLE_EQ(j["material"]["youngs_modulus"].get<double>(), 200e9);
@@ -52,13 +52,13 @@ TEST(MechanicsCli, InlinePlainBarReportsTheKeysScriptsUseAndMatchesBeamTheory) {
 }
 
 TEST(MechanicsCli, BundledStylusDesignWithTwoMaterials) {
-  const auto out = test::scratch_dir("cli_mech_stylus");
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_mech_stylus");
+  ::testing::internal::CaptureStdout();
   const int code =
       run_cli({"mechanics", "modes",
-               (test::assets_dir() / "designs" / "stylus_vero_dm85tip_4mm.json").string(),
+               (nibrig::test::assets_dir() / "designs" / "stylus_vero_dm85tip_4mm.json").string(),
                "--modes", "6", "-o", (out / "s.json").string(), "--no-plots"});
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0);
   const auto j = read_json(out / "s.json");
   EXPECT_EQ(j["regions"]["tip"]["name"], "DM85");
@@ -71,10 +71,10 @@ TEST(MechanicsCli, BundledStylusDesignWithTwoMaterials) {
 
 TEST(MechanicsCli, RingDownFitsATraceAndDrawsIt) {
   namespace mech = model::mechanics;
-  const auto out = test::scratch_dir("cli_mech_ring");
-  const auto materials = mech::read_material_table(test::assets_dir() / "materials.json");
+  const auto out = nibrig::test::scratch_dir("cli_mech_ring");
+  const auto materials = mech::read_material_table(nibrig::test::assets_dir() / "materials.json");
   mech::Design design =
-      mech::read_design(test::assets_dir() / "designs" / "paper_bar.json", materials);
+      mech::read_design(nibrig::test::assets_dir() / "designs" / "paper_bar.json", materials);
   design.modes = 6;
   const auto truth = mech::build_design_model(design, materials);
   model::io::AccelerationTrace trace{800.0,
@@ -90,10 +90,10 @@ TEST(MechanicsCli, RingDownFitsATraceAndDrawsIt) {
   std::ofstream(design_file) << R"({"format": "nibrig-design", "version": 1, "name": "bar",
     "shape": {"kind": "bar"}, "materials": {"body": "VeroClear"}, "damping": {"rayleigh_stiffness": 1e-3},
     "mesh_size": 0.004, "modes": 6})";
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   const int code = run_cli({"mechanics", "ringdown", (out / "ring.csv").string(),
                             design_file.string(), "-o", (out / "fit.json").string()});
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto fit = read_json(out / "fit.json");
   EXPECT_NEAR(fit["youngs_modulus"].get<double>(), 0.45e9, 0.01 * 0.45e9);
@@ -103,13 +103,13 @@ TEST(MechanicsCli, RingDownFitsATraceAndDrawsIt) {
 }
 
 TEST(MechanicsCli, BadDesignsFailInOneLine) {
-  const auto out = test::scratch_dir("cli_mech_bad");
+  const auto out = nibrig::test::scratch_dir("cli_mech_bad");
   auto one_line_error = [](std::vector<std::string> args, const std::string& expected) {
-    testing::internal::CaptureStderr();
-    testing::internal::CaptureStdout();
+    ::testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
     const int code = run_cli(std::move(args));
-    testing::internal::GetCapturedStdout();
-    const std::string err = testing::internal::GetCapturedStderr();
+    ::testing::internal::GetCapturedStdout();
+    const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_NE(code, 0);
     EXPECT_NE(err.find(expected), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;

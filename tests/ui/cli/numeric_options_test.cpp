@@ -106,7 +106,7 @@ std::vector<std::string> words(const std::string& command, const std::filesystem
 class NumericOption : public ::testing::TestWithParam<Row> {};
 
 TEST_P(NumericOption, IsRefusedNamingTheOptionBeforeAnyWork) {
-  const auto dir = test::scratch_dir("cli_numeric_options");
+  const auto dir = nibrig::test::scratch_dir("cli_numeric_options");
   { std::ofstream(dir / "any.json") << "{}\n"; }  // checked to exist only; never read
   const Row& row = GetParam();
   ::testing::internal::CaptureStderr();
@@ -125,7 +125,7 @@ INSTANTIATE_TEST_SUITE_P(EveryCommand, NumericOption, ::testing::ValuesIn(kRows)
 TEST(NumericOptions, RefusalSaysTheExpectedRangeAndUnit) {
   ::testing::internal::CaptureStderr();
   const int code = run_cli({"render", "--tool", "cryon", "--surface", "office", "--speed=-5", "-o",
-                            (test::scratch_dir("cli_numeric_unit") / "x.wav").string()});
+                            (nibrig::test::scratch_dir("cli_numeric_unit") / "x.wav").string()});
   const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(code, 0);
   // The user needs the unit and the bound to retype it, not only that something was wrong.
@@ -145,7 +145,7 @@ TEST(NumericOptions, AUnitSlipInABarNamesTheDimension) {
 
 // Renders 0.05 s (a few blocks) so that the run is cheap; the point is what stderr says.
 std::string render_warnings(const std::vector<std::string>& extra) {
-  const auto dir = test::scratch_dir("cli_numeric_warn");
+  const auto dir = nibrig::test::scratch_dir("cli_numeric_warn");
   std::vector<std::string> args{"render",    "--tool", "cryon",
                                 "--surface", "office", "--seconds",
                                 "0.05",      "-o",     (dir / "x.wav").string()};

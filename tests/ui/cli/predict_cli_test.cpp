@@ -19,16 +19,11 @@
 namespace nibrig::ui::cli {
 namespace {
 
-using test::is_png;
-using test::read_json;
+using nibrig::test::is_png;
+using nibrig::test::read_json;
 using test::run_cli;
 
-const std::vector<std::string> kCoarse{"--modes", "32", "--mesh-size", "0.004"};
-
-std::vector<std::string> with_coarse(std::vector<std::string> args) {
-  args.insert(args.end(), kCoarse.begin(), kCoarse.end());
-  return args;
-}
+using nibrig::test::with_coarse;
 
 // The rms of a mono float WAV after its first second (the engine's fades and warm-up).
 double wav_rms(const std::filesystem::path& file, std::size_t skip) {
@@ -45,25 +40,25 @@ double wav_rms(const std::filesystem::path& file, std::size_t skip) {
 
 // Runs the command and returns its exit code with what it printed on stderr.
 std::pair<int, std::string> failing(std::vector<std::string> args) {
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const int code = run_cli(std::move(args));
-  testing::internal::GetCapturedStdout();
-  return {code, testing::internal::GetCapturedStderr()};
+  ::testing::internal::GetCapturedStdout();
+  return {code, ::testing::internal::GetCapturedStderr()};
 }
 
 TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
   // Without --forcing the command would fit a model for seconds and print the prediction before
   // finding --plot unusable; refused while parsing, it prints and writes nothing.
-  const auto out = test::scratch_dir("cli_predict_plot_alone");
+  const auto out = nibrig::test::scratch_dir("cli_predict_plot_alone");
   std::filesystem::remove(out / "p.png");
   std::filesystem::remove(out / "p.json");
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const int code = run_cli({"predict", "--design", "vero,tip=2mm", "--surface", "office", "--plot",
                             (out / "p.png").string(), "-o", (out / "p.json").string()});
-  const std::string printed = testing::internal::GetCapturedStdout();
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string printed = ::testing::internal::GetCapturedStdout();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_EQ(code, 2) << "a usage error: " << err;
   EXPECT_NE(err.find("--plot"), std::string::npos) << err;
   EXPECT_NE(err.find("--measured"), std::string::npos) << err;
@@ -75,15 +70,15 @@ TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
 
 TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
   // The fit is most of the wait; before, it was silent and left out of the reported time.
-  const auto out = test::scratch_dir("cli_predict_fits");
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
+  const auto out = nibrig::test::scratch_dir("cli_predict_fits");
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
   const auto start = std::chrono::steady_clock::now();
   const int code = run_cli(with_coarse({"predict", "--design", "vero,tip=2mm", "--surface",
                                         "office", "-o", (out / "p.json").string()}));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string text = testing::internal::GetCapturedStdout();
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   ASSERT_EQ(code, 0) << err;
   EXPECT_NE(err.find("fitting the forcing model to the catalog (no --forcing given)"),
             std::string::npos)
@@ -98,19 +93,19 @@ TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
 }
 
 TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
-  const auto out = test::scratch_dir("cli_predict");
+  const auto out = nibrig::test::scratch_dir("cli_predict");
   const std::string forcing = (out / "forcing.json").string();
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(with_coarse({"forcing", "fit", "-o", forcing})), 0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
 
   // A mix between fitted designs, compared with the measured 1 mm VeroClear tool.
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   const int code =
       run_cli(with_coarse({"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm", "--surface",
                            "office", "--forcing", forcing, "--against", "vero1", "--plot",
                            (out / "mix.png").string(), "-o", (out / "mix.json").string()}));
-  const std::string text = testing::internal::GetCapturedStdout();
+  const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   const auto mix = read_json(out / "mix.json");
   // The keys `nibrig measure` writes for a recording.
@@ -145,7 +140,7 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
 
   // The prediction's own output as the "measurement": zero error, every baseline beaten; with one
   // speed moved by 5 mm/s the grids differ and only the plot compares.
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(with_coarse({"predict", "--design", "DM85:0.25,vero:0.75,tip=1.5mm",
                                  "--surface", "office", "--forcing", forcing, "--measured",
                                  (out / "mix.json").string(), "-o", (out / "self.json").string()})),
@@ -159,7 +154,7 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
            "--forcing", forcing, "--measured", (out / "shifted.json").string(), "--plot",
            (out / "shifted.png").string(), "-o", (out / "shifted_prediction.json").string()})),
       0);
-  const std::string compared = testing::internal::GetCapturedStdout();
+  const std::string compared = ::testing::internal::GetCapturedStdout();
   const auto self = read_json(out / "self.json")["comparison"];
   EXPECT_NEAR(self["rms_db"].get<double>(), 0.0, 1e-9);
   EXPECT_TRUE(self["beats_every_baseline"].get<bool>());
@@ -169,16 +164,16 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
 
   // The bundled 1 mm VeroClear stylus file is the fitted vero1 design: predicting the file and the
   // point "vero,tip=1mm" must give the same spectrum.
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(with_coarse(
                 {"predict", "--design",
-                 (test::assets_dir() / "designs" / "stylus_vero_tip1mm.json").string(), "--surface",
+                 (nibrig::test::assets_dir() / "designs" / "stylus_vero_tip1mm.json").string(), "--surface",
                  "office", "--forcing", forcing, "-o", (out / "file.json").string()})),
             0);
   ASSERT_EQ(run_cli(with_coarse({"predict", "--design", "vero,tip=1mm", "--surface", "office",
                                  "--forcing", forcing, "-o", (out / "point.json").string()})),
             0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
   const auto file = read_json(out / "file.json")["amplitude_m_s2"];
   const auto point = read_json(out / "point.json")["amplitude_m_s2"];
   ASSERT_EQ(file.size(), point.size());
@@ -191,14 +186,14 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
   // the predicted spectrum's (Parseval with the catalog's amplitude convention). 20 s of noise over
   // ~500 Hz estimate the rms to ~1 %; the generator's total power is within 0.1 dB (rt tests).
   const std::string design = "DM85:0.25,vero:0.75,tip=1.5mm";
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"predict", "--design", design, "--surface", "office", "--forcing", forcing,
                      "-o", (out / "full.json").string()}),
             0);
   ASSERT_EQ(run_cli({"render", "--tool", design, "--surface", "office", "--forcing", forcing,
                      "--speed", "110.2", "--seconds", "20", "-o", (out / "design.wav").string()}),
             0);
-  const std::string rendered = testing::internal::GetCapturedStdout();
+  const std::string rendered = ::testing::internal::GetCapturedStdout();
   EXPECT_NE(rendered.find("predicted " + design), std::string::npos) << rendered;
   const auto full = read_json(out / "full.json");
   const auto speeds = full["speeds_mm_s"].get<std::vector<double>>();

@@ -43,16 +43,16 @@ std::filesystem::path simulated_judgments(const std::filesystem::path& dir) {
 }
 
 TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
-  const auto dir = test::scratch_dir("cli_space");
+  const auto dir = nibrig::test::scratch_dir("cli_space");
   const auto judgments = simulated_judgments(dir);
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "fit", judgments.string(), "--dims", "1", "--starts", "4", "-o",
                      (dir / "space.json").string()}),
             0);
   ASSERT_EQ(run_cli({"space", "predict", (dir / "space.json").string(), judgments.string(), "-o",
                      (dir / "p.csv").string()}),
             0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
 
   const auto space = model::space::read_space_file(dir / "space.json");
   ASSERT_EQ(space.coordinates.rows(), 1);
@@ -84,34 +84,34 @@ TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
   // Queries need no responses: a list of triplets with both counts 0 is predicted too.
   std::ofstream(dir / "queries.csv")
       << "reference,a,b,count_a,count_b\ns0,s1,s5,0,0\ns5,s4,s0,0,0\n";
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(
       run_cli({"space", "predict", (dir / "space.json").string(), (dir / "queries.csv").string()}),
       0);
-  const std::string out = testing::internal::GetCapturedStdout();
+  const std::string out = ::testing::internal::GetCapturedStdout();
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 3) << out;
   EXPECT_NE(out.find("s0,s1,s5,"), std::string::npos) << out;
 }
 
 TEST(SpaceCli, UnknownStimulusAndUnsupportedLambdaFailInOneLine) {
-  const auto dir = test::scratch_dir("cli_space_bad");
+  const auto dir = nibrig::test::scratch_dir("cli_space_bad");
   const auto judgments = simulated_judgments(dir);
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "fit", judgments.string(), "--dims", "1", "--starts", "2", "-o",
                      (dir / "space.json").string()}),
             0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
   std::ofstream(dir / "other.csv") << "reference,a,b,count_a,count_b\ns0,s1,zebra,0,0\n";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_NE(
       run_cli({"space", "predict", (dir / "space.json").string(), (dir / "other.csv").string()}),
       0);
-  std::string err = testing::internal::GetCapturedStderr();
+  std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("stimulus 'zebra' is not in"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_NE(run_cli({"space", "fit", judgments.string(), "--lambda", "1"}), 0);
-  err = testing::internal::GetCapturedStderr();
+  err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("--descriptors"), std::string::npos) << err;
 }
 

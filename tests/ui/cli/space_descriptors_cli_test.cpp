@@ -31,7 +31,7 @@ struct Study {
 // involve a 13th pairing, so that placing it from its descriptors can be scored.
 Study descriptor_study(const std::filesystem::path& dir) {
   Study s;
-  s.catalog = test::assets_dir() / "default_catalog.json";
+  s.catalog = nibrig::test::assets_dir() / "default_catalog.json";
   const auto catalog = model::io::read_catalog(s.catalog);
   const auto all = model::space::descriptors_of_catalog(catalog, s.catalog, 2);
   for (Eigen::Index i = 0; i < 13; ++i) s.names.push_back(all.rows[static_cast<std::size_t>(i * 4)]);
@@ -69,17 +69,17 @@ Study descriptor_study(const std::filesystem::path& dir) {
 }
 
 TEST(SpaceCliDescriptors, FitPlaceEvaluateAndPredictNewTools) {
-  const auto dir = test::scratch_dir("cli_space_descriptors");
+  const auto dir = nibrig::test::scratch_dir("cli_space_descriptors");
   const Study s = descriptor_study(dir);
   const auto space_file = dir / "space.json";
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "fit", s.judgments.string(), "--descriptors", s.catalog.string(),
                      "--lambda", "1", "--starts", "4", "--bootstrap", "20", "--plot",
                      (dir / "space.png").string(), "-o", space_file.string()}),
             0);
-  std::string out = testing::internal::GetCapturedStdout();
+  std::string out = ::testing::internal::GetCapturedStdout();
   EXPECT_NE(out.find("axis 1 vs friction_mu"), std::string::npos) << out;
-  EXPECT_TRUE(test::is_png(dir / "space.png"));
+  EXPECT_TRUE(nibrig::test::is_png(dir / "space.png"));
   const auto space = model::space::read_space_file(space_file);
   ASSERT_TRUE(space.descriptor_map.has_value());
   EXPECT_EQ(space.regions.size(), 12u);
@@ -87,12 +87,12 @@ TEST(SpaceCliDescriptors, FitPlaceEvaluateAndPredictNewTools) {
   // The truth is linear in the descriptors, so the map explains almost all of each axis.
   for (double r2 : space.descriptor_map->r_squared) EXPECT_GT(r2, 0.9);
 
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "evaluate", space_file.string(), s.new_tool_judgments.string(),
                      "--catalog", s.catalog.string(), "-o", (dir / "scores.json").string()}),
             0);
-  out = testing::internal::GetCapturedStdout();
-  const auto scores = test::read_json(dir / "scores.json");
+  out = ::testing::internal::GetCapturedStdout();
+  const auto scores = nibrig::test::read_json(dir / "scores.json");
   EXPECT_EQ(scores["placed_from_descriptors"], 1) << out;
   // The new tool placed from descriptors predicts most majority answers: the simulated observer
   // agrees with its own truth on ~85 % of these triplets; 70 % leaves room for the placement's
@@ -102,20 +102,20 @@ TEST(SpaceCliDescriptors, FitPlaceEvaluateAndPredictNewTools) {
       << out;
   EXPECT_GT(scores["pearson_r"].get<double>(), 0.6) << out;
 
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "predict", space_file.string(), s.new_tool_judgments.string(),
                      "--catalog", s.catalog.string()}),
             0);
-  out = testing::internal::GetCapturedStdout();
+  out = ::testing::internal::GetCapturedStdout();
   EXPECT_EQ(out.substr(0, out.find('\n')), "reference,a,b,p_first,p_first_sd");
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 31) << out;
 
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "embed", space_file.string(), s.catalog.string(), "-o",
                      (dir / "placed.csv").string(), "--plot", (dir / "placed.png").string()}),
             0);
-  testing::internal::GetCapturedStdout();
-  EXPECT_TRUE(test::is_png(dir / "placed.png"));
+  ::testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(nibrig::test::is_png(dir / "placed.png"));
   std::ifstream placed(dir / "placed.csv");
   std::string header;
   std::getline(placed, header);
@@ -123,31 +123,31 @@ TEST(SpaceCliDescriptors, FitPlaceEvaluateAndPredictNewTools) {
 }
 
 TEST(SpaceCliDescriptors, ValidateSweepsDimensionsAndLambdas) {
-  const auto dir = test::scratch_dir("cli_space_validate");
+  const auto dir = nibrig::test::scratch_dir("cli_space_validate");
   const Study s = descriptor_study(dir);
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "validate", s.judgments.string(), "--descriptors",
                      s.catalog.string(), "--dims", "1,2", "--lambdas", "0,1", "--folds", "3",
                      "--starts", "2", "-o", (dir / "report" / "validation.json").string(),
                      "--plots", (dir / "report").string()}),
             0);
-  const std::string out = testing::internal::GetCapturedStdout();
-  const auto v = test::read_json(dir / "report" / "validation.json");
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  const auto v = nibrig::test::read_json(dir / "report" / "validation.json");
   ASSERT_EQ(v["points"].size(), 4u) << out;
-  EXPECT_TRUE(test::is_png(dir / "report" / "dimension_sweep.png"));
+  EXPECT_TRUE(nibrig::test::is_png(dir / "report" / "dimension_sweep.png"));
   // A 2-D truth: the 2-D spaces predict held-out triplets better than the 1-D ones.
   EXPECT_LT(v["points"][2]["mean_error"].get<double>(), v["points"][0]["mean_error"].get<double>());
 }
 
 TEST(SpaceCliDescriptors, DescriptorRowsThatDoNotMatchFailInOneLine) {
-  const auto dir = test::scratch_dir("cli_space_descriptors_bad");
+  const auto dir = nibrig::test::scratch_dir("cli_space_descriptors_bad");
   std::ofstream(dir / "j.csv") << "reference,a,b,count_a,count_b\ncryon/office,stab/stone,"
                                   "unicorn/office,1,0\n";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_NE(run_cli({"space", "fit", (dir / "j.csv").string(), "--descriptors",
-                     (test::assets_dir() / "default_catalog.json").string(), "--lambda", "1"}),
+                     (nibrig::test::assets_dir() / "default_catalog.json").string(), "--lambda", "1"}),
             0);
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("unicorn/office"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 }

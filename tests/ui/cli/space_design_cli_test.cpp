@@ -27,10 +27,10 @@ void answer_at_random(const std::filesystem::path& list_file, unsigned seed) {
 }
 
 TEST(SpaceDesignCli, PlanBothStagesAnswerThemAndMergeIntoJudgments) {
-  const auto dir = test::scratch_dir("cli_space_plan");
+  const auto dir = nibrig::test::scratch_dir("cli_space_plan");
   std::ofstream(dir / "stimuli.txt") << "# six tools\npen/office\npen/note\n\nchalk/office\n"
                                         "chalk/note\nbrush/office\nbrush/note\n";
-  testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "plan", (dir / "stimuli.txt").string(), "--fraction", "1", "-o",
                      (dir / "stage1.csv").string()}),
             0);
@@ -48,34 +48,34 @@ TEST(SpaceDesignCli, PlanBothStagesAnswerThemAndMergeIntoJudgments) {
   ASSERT_EQ(run_cli({"space", "merge", (dir / "stage1.csv").string(), (dir / "stage2.csv").string(),
                      "--all-judgments", "-o", (dir / "judgments.csv").string()}),
             0);
-  testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStdout();
   const auto judgments = model::io::read_triplet_csv(dir / "judgments.csv");
   EXPECT_EQ(model::io::response_count(judgments), stage1.trials.size() + stage2.trials.size());
 }
 
 TEST(SpaceDesignCli, AStimulusListWithARepeatedNameIsRefusedWithItsLine) {
-  const auto dir = test::scratch_dir("cli_space_plan_bad");
+  const auto dir = nibrig::test::scratch_dir("cli_space_plan_bad");
   std::ofstream(dir / "stimuli.txt") << "a\nb\nc\nb\n";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_NE(run_cli({"space", "plan", (dir / "stimuli.txt").string(), "-o",
                      (dir / "x.csv").string()}),
             0);
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("line 4"), std::string::npos) << err;
   EXPECT_NE(err.find("'b'"), std::string::npos) << err;
 }
 
 TEST(SpaceDesignCli, SynthReportsRecoveryPerDimension) {
-  const auto dir = test::scratch_dir("cli_space_synth");
-  testing::internal::CaptureStdout();
+  const auto dir = nibrig::test::scratch_dir("cli_space_synth");
+  ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"space", "synth", "--dims", "1,2", "--trials", "3", "--starts", "2",
                      "-o", (dir / "report" / "synthetic.json").string(), "--plots",
                      (dir / "report").string()}),
             0);
-  testing::internal::GetCapturedStdout();
-  const auto j = test::read_json(dir / "report" / "synthetic.json");
+  ::testing::internal::GetCapturedStdout();
+  const auto j = nibrig::test::read_json(dir / "report" / "synthetic.json");
   ASSERT_EQ(j["dimensions"].size(), 2u);
-  EXPECT_TRUE(test::is_png(dir / "report" / "synthetic_recovery.png"));
+  EXPECT_TRUE(nibrig::test::is_png(dir / "report" / "synthetic_recovery.png"));
   // Below the paper's 17 % on real data, as Fig. 10 shows (measured 7-8 % over 100 truths).
   for (const auto& d : j["dimensions"]) EXPECT_LT(d["probability_error"]["mean"].get<double>(), 0.17);
 }

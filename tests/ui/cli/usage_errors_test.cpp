@@ -79,7 +79,7 @@ TEST(CliUsageErrors, NoGuessWhenTheWordIsNotASlip) {
 }
 
 TEST(CliQuiet, SilencesWarningsButNotErrors) {
-  const auto dir = test::scratch_dir("cli_quiet");
+  const auto dir = nibrig::test::scratch_dir("cli_quiet");
   const std::vector<std::string> render{
       "render",      "--tool",    "cryon", "--surface", "office",
       "--speed=1e9", "--seconds", "0.05",  "-o",        (dir / "x.wav").string()};
@@ -95,7 +95,7 @@ TEST(CliQuiet, SilencesWarningsButNotErrors) {
 }
 
 TEST(CliGlobalOptions, AreAcceptedAfterTheCommandToo) {
-  const auto dir = test::scratch_dir("cli_global_after");
+  const auto dir = nibrig::test::scratch_dir("cli_global_after");
   // The render warns above the measured speeds without -q (checked in CliQuiet above); -q after
   // the command, even after a nested one's options, silences it the same as before the command.
   std::vector<std::string> render{

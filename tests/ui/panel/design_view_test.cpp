@@ -70,11 +70,11 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   RecordProperty("slider_to_placement_and_voice_ms", std::to_string(view.last_update_ms()));
 
   // The picture: the design's white diamond where the space view maps its placement.
-  const auto image = test::decode_png(dir / "design.png");
+  const auto image = nibrig::test::decode_png(dir / "design.png");
   const auto& plot = *view.space().frame();
   const ImVec2 at = plot.to_screen(to[0], to[1]);
   const auto pixel = image.at(static_cast<int>(at.x), static_cast<int>(at.y));
-  EXPECT_TRUE(test::near(pixel, {255, 255, 255}, 8)) << int(pixel.r) << "," << int(pixel.g) << "," << int(pixel.b);
+  EXPECT_TRUE(nibrig::test::near(pixel, {255, 255, 255}, 8)) << int(pixel.r) << "," << int(pixel.g) << "," << int(pixel.b);
 
   // A line search along the mix toward the target draws its path, and ends at its nearest design.
   view.search(false);

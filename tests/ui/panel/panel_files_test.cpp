@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 void touch(const fs::path& file) { std::ofstream(file) << "{}"; }
 
 TEST(FileDialog, ListsFoldersFirstThenTheFilesItIsForByName) {
-  const auto dir = test::scratch_dir("file_dialog_list");
+  const auto dir = nibrig::test::scratch_dir("file_dialog_list");
   for (const char* name : {"b.json", "A.json", "notes.txt", ".hidden.json"}) touch(dir / name);
   fs::create_directories(dir / "zeta");
   fs::create_directories(dir / "Alpha");
@@ -54,7 +54,7 @@ TEST(FileDialog, ListsFoldersFirstThenTheFilesItIsForByName) {
 }
 
 TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
-  const auto dir = test::scratch_dir("file_dialog_choose");
+  const auto dir = nibrig::test::scratch_dir("file_dialog_choose");
   fs::create_directories(dir / "sub");
   touch(dir / "space.json");
   fs::path taken;
@@ -80,10 +80,10 @@ TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
 }
 
 // A hidden window and the panel in it, drawn until `done` or the deadline.
-struct Session {
+struct FilesSession {
   PanelWindow window{testing::hidden_window()};
   Panel panel;
-  explicit Session(PanelSetup setup) : panel(std::move(setup)) {}
+  explicit FilesSession(PanelSetup setup) : panel(std::move(setup)) {}
   void frame(const std::function<void(ImGuiIO&)>& input = {}) {
     window.begin_frame(input);
     panel.draw();
@@ -100,7 +100,7 @@ struct Session {
 };
 
 TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
-  const auto dir = test::scratch_dir("panel_fit");
+  const auto dir = nibrig::test::scratch_dir("panel_fit");
   // Every triplet of eight catalog pairings judged 8 times by an observer of a known 2-D space.
   const std::vector<std::string> stimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
                                             "DM854/office", "DM951/office", "cryon/office", "stab/office"};
@@ -112,7 +112,7 @@ TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
 
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
-  Session s(setup);
+  FilesSession s(setup);
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
   ASSERT_EQ(s.panel.space_view().scene().tools.size(), 3u);
 
@@ -177,10 +177,10 @@ TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
 }
 
 TEST(PanelFiles, ACatalogThatCannotBeReadChangesNothingAndOneThatCanIsUsed) {
-  const auto dir = test::scratch_dir("panel_catalog");
+  const auto dir = nibrig::test::scratch_dir("panel_catalog");
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
-  Session s(setup);
+  FilesSession s(setup);
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
   std::ofstream(dir / "broken.json") << R"({"format": "nibrig-catalog", "version": 1, "tools": [)";
   s.panel.open_catalog(dir / "broken.json");
@@ -206,10 +206,10 @@ TEST(PanelFiles, ACatalogThatCannotBeReadChangesNothingAndOneThatCanIsUsed) {
 }
 
 TEST(PanelKeys, CtrlNumbersShowViewsAndLettersSwitchTheComparedTools) {
-  const auto dir = test::scratch_dir("panel_keys");
+  const auto dir = nibrig::test::scratch_dir("panel_keys");
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
-  Session s(setup);
+  FilesSession s(setup);
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
   const auto press = [&](int key, bool ctrl) {
     s.frame([&](ImGuiIO& io) { io.KeysDown[key] = true, io.KeyCtrl = ctrl; });

@@ -20,10 +20,10 @@ namespace {
 
 using namespace std::chrono_literals;
 
-struct Session {
+struct PlaybackSession {
   PanelWindow window;
   Panel panel;
-  Session(const PanelSetup& setup) : window(testing::hidden_window()), panel(setup) {}
+  PlaybackSession(const PanelSetup& setup) : window(testing::hidden_window()), panel(setup) {}
   void frame(const std::function<void(ImGuiIO&)>& input = {}) {
     window.begin_frame(input);
     panel.draw();
@@ -63,7 +63,7 @@ TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameB
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   setup.device = DeviceRequest{"jack", "system", 1, 64};
-  Session s(setup);
+  PlaybackSession s(setup);
   ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
   ASSERT_TRUE(s.frames_until([&] { return s.panel.settled(); }, 60s));
   EXPECT_EQ(s.panel.status_line().rfind("jack system | nothing playing", 0), 0u) << s.panel.status_line();

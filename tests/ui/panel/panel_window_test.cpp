@@ -47,7 +47,7 @@ TEST_P(EveryView, RendersIntoAPictureThroughTheExecutable) {
                               (std::string(GetParam()) == "design" ? " --settle-timeout 0" : "") + " > " +
                               (dir / "out.txt").string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  const auto image = test::decode_png(png);
+  const auto image = nibrig::test::decode_png(png);
   EXPECT_EQ(image.width, 1280);
   EXPECT_EQ(image.height, 800);
   // A picture of a view, not a blank window: beyond the background (the most common colour), the
@@ -93,7 +93,7 @@ TEST(PanelWindow, EachToolIsDrawnWhereTheSpacePlacesItInItsSurfacesColour) {
   draw_until(window, panel, [&] { return panel.settled() && ++frames > 3; }, dir / "space.png");
   const auto& view = panel.space_view();
   ASSERT_EQ(view.scene().tools.size(), 3u);
-  const auto image = test::decode_png(dir / "space.png");
+  const auto image = nibrig::test::decode_png(dir / "space.png");
   const auto space = testing::small_space();
   for (std::size_t i = 0; i < 3; ++i) {
     const ImVec2 p = *view.screen_position(i);
@@ -105,7 +105,7 @@ TEST(PanelWindow, EachToolIsDrawnWhereTheSpacePlacesItInItsSurfacesColour) {
     // ...the picture has a judged tool's filled marker in its surface's colour.
     const auto pixel = image.at(static_cast<int>(p.x), static_cast<int>(p.y));
     const auto want = rgb_of(view.surface_colour(view.scene().tools[i].choice.surface, 255));
-    EXPECT_TRUE(test::near(pixel, want, 3)) << "tool " << i << " at " << p.x << "," << p.y << ": (" << int(pixel.r)
+    EXPECT_TRUE(nibrig::test::near(pixel, want, 3)) << "tool " << i << " at " << p.x << "," << p.y << ": (" << int(pixel.r)
                                             << "," << int(pixel.g) << "," << int(pixel.b) << ")";
   }
 }
@@ -121,7 +121,7 @@ TEST(PanelWindow, TheRigsWaterfallShowsTheAnalysedLevelAtAKnownBin) {
   auto& rig = panel.rig_view();
   draw_until(window, panel, [&] { return rig.measured() && rig.measured()->rows_pushed() >= 60; }, dir / "rig.png");
   ASSERT_NE(rig.measured(), nullptr) << rig.error();
-  const auto image = test::decode_png(dir / "rig.png");
+  const auto image = nibrig::test::decode_png(dir / "rig.png");
   const auto [min, max] = rig.waterfall_rect(0);
   const std::size_t bins = rig.measured()->bins();
   ASSERT_GT(bins, 30u);  // 0-500 Hz at 11.7 Hz
@@ -135,7 +135,7 @@ TEST(PanelWindow, TheRigsWaterfallShowsTheAnalysedLevelAtAKnownBin) {
     const float x = min.x + (static_cast<float>(k) + 0.5f) * (max.x - min.x) / static_cast<float>(bins);
     const auto pixel = image.at(static_cast<int>(x), py);
     const Rgba want = rig.measured()->colour_at(age, k);
-    const bool same = test::near(pixel, {want.r, want.g, want.b}, 2);
+    const bool same = nibrig::test::near(pixel, {want.r, want.g, want.b}, 2);
     matched += same;
     EXPECT_TRUE(same) << "bin " << k << ": (" << int(pixel.r) << "," << int(pixel.g) << "," << int(pixel.b)
                       << ") where the row " << age << " old has (" << int(want.r) << "," << int(want.g) << ","

@@ -33,7 +33,7 @@ inline std::filesystem::path write_small_space(const std::filesystem::path& fold
 // Eight printed and real tools on office paper placed at their own two descriptors (μ and the
 // log10 weighted mean), with the map from descriptors to that space, so that designs can be placed.
 inline std::filesystem::path write_descriptor_space(const std::filesystem::path& folder) {
-  const auto catalog_file = test::assets_dir() / "default_catalog.json";
+  const auto catalog_file = nibrig::test::assets_dir() / "default_catalog.json";
   const auto catalog = model::io::read_catalog(catalog_file);
   model::space::SpaceFile s;
   s.stimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",

@@ -32,14 +32,14 @@ ComparisonSpectrograms two_stripes() {
   return f;
 }
 
-bool is_viridis(Rgb c, int index) { return test::near(c, viridis()[index], 2); }
+bool is_viridis(Rgb c, int index) { return nibrig::test::near(c, viridis()[index], 2); }
 bool is_map_colour(Rgb c) {
   return is_viridis(c, 0) || is_viridis(c, 255) || is_viridis(c, 127) || is_viridis(c, 128);
 }
 
 // Column runs where at least a quarter of the pixels are the figure's cell colours: the panels
 // (colour bars hold each colour for a pixel or two of their height only).
-std::vector<std::pair<int, int>> panel_columns(const test::RgbImage& img) {
+std::vector<std::pair<int, int>> panel_columns(const nibrig::test::RgbImage& img) {
   std::vector<std::pair<int, int>> runs;
   bool inside = false;
   for (int x = 0; x < img.width; ++x) {
@@ -55,7 +55,7 @@ std::vector<std::pair<int, int>> panel_columns(const test::RgbImage& img) {
 
 // Fraction of the panel's height (0 at its bottom) of the middle of the rows of `index`'s colour
 // in column x.
-double colour_height(const test::RgbImage& img, int x, int index) {
+double colour_height(const nibrig::test::RgbImage& img, int x, int index) {
   int top = img.height, bottom = -1, first = img.height, last = -1;
   for (int y = 0; y < img.height; ++y) {
     if (is_map_colour(img.at(x, y))) first = std::min(first, y), last = std::max(last, y);
@@ -66,12 +66,12 @@ double colour_height(const test::RgbImage& img, int x, int index) {
 }
 
 TEST(ReportComparisonSpectrograms, ThreePanelsShowMeasuredSimulatedAndTheirDifference) {
-  const auto dir = test::scratch_dir("report_comparison");
+  const auto dir = nibrig::test::scratch_dir("report_comparison");
   const auto png = dir / "comparison.png";
   write_comparison_spectrograms(two_stripes(), png);
-  EXPECT_EQ(test::png_header(png).width, 2100u);
+  EXPECT_EQ(nibrig::test::png_header(png).width, 2100u);
   test::expect_white_border(png);
-  const auto img = test::decode_png(png);
+  const auto img = nibrig::test::decode_png(png);
   const auto panels = panel_columns(img);
   ASSERT_EQ(panels.size(), 3u) << "measured | simulated | difference";
   for (const auto& [x0, x1] : panels)

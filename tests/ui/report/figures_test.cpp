@@ -81,12 +81,12 @@ LinePlot sample_line_plot(std::size_t curves = 3) {
 }
 
 TEST(ReportFigures, EachKindWritesAPngOfTheAskedSize) {
-  const auto dir = test::scratch_dir("report_sizes");
+  const auto dir = nibrig::test::scratch_dir("report_sizes");
   write_heat_map(sample_heat_map(), dir / "heat.png");
   write_interval_chart(sample_chart(8, false), dir / "chart.png");
   write_line_plot(sample_line_plot(), dir / "lines.png");
   for (const char* name : {"heat.png", "chart.png", "lines.png"}) {
-    const auto header = test::png_header(dir / name);
+    const auto header = nibrig::test::png_header(dir / name);
     EXPECT_EQ(header.width, 1200u) << name;
     EXPECT_EQ(header.height, 800u) << name;
   }
@@ -100,29 +100,29 @@ TEST(ReportFigures, EachKindWritesAPngOfTheAskedSize) {
   write_heat_map(map, dir / "heat_small.png");
   write_interval_chart(chart, dir / "chart_other.png");
   write_line_plot(plot, dir / "lines_large.png");
-  EXPECT_EQ(test::png_header(dir / "heat_small.png").width, 640u);
-  EXPECT_EQ(test::png_header(dir / "heat_small.png").height, 480u);
-  EXPECT_EQ(test::png_header(dir / "chart_other.png").width, 900u);
-  EXPECT_EQ(test::png_header(dir / "chart_other.png").height, 700u);
-  EXPECT_EQ(test::png_header(dir / "lines_large.png").width, 2000u);
-  EXPECT_EQ(test::png_header(dir / "lines_large.png").height, 1000u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "heat_small.png").width, 640u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "heat_small.png").height, 480u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "chart_other.png").width, 900u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "chart_other.png").height, 700u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "lines_large.png").width, 2000u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "lines_large.png").height, 1000u);
   // An interval chart is as large as asked or larger: labels too long for the height heighten it.
   auto long_labels = sample_chart(8);
   long_labels.size = {900, 500};
   write_interval_chart(long_labels, dir / "chart_long_labels.png");
-  EXPECT_EQ(test::png_header(dir / "chart_long_labels.png").width, 900u);
-  EXPECT_GT(test::png_header(dir / "chart_long_labels.png").height, 500u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "chart_long_labels.png").width, 900u);
+  EXPECT_GT(nibrig::test::png_header(dir / "chart_long_labels.png").height, 500u);
   // stb_image, an independent decoder, reads every one of them whole.
   for (const auto& name : names_in(dir)) {
-    const auto img = test::decode_png(dir / name);
-    EXPECT_EQ(static_cast<std::uint32_t>(img.width), test::png_header(dir / name).width);
+    const auto img = nibrig::test::decode_png(dir / name);
+    EXPECT_EQ(static_cast<std::uint32_t>(img.width), nibrig::test::png_header(dir / name).width);
   }
   // Only the figures: no temporary file is left beside them.
   EXPECT_EQ(names_in(dir).size(), 7u);
 }
 
 TEST(ReportFigures, NothingReachesTheImageBorder) {
-  const auto dir = test::scratch_dir("report_borders");
+  const auto dir = nibrig::test::scratch_dir("report_borders");
   auto small_map = sample_heat_map();
   small_map.size = {480, 320};
   auto many_curves = sample_line_plot(12);
@@ -148,7 +148,7 @@ TEST(ReportFigures, NothingReachesTheImageBorder) {
 
 TEST(ReportFigures, DegenerateButValidInputsStillDraw) {
   // One cell, one point, one bar, constant values: nothing to divide by zero, still a figure.
-  const auto dir = test::scratch_dir("report_degenerate");
+  const auto dir = nibrig::test::scratch_dir("report_degenerate");
   HeatMap one_cell;
   one_cell.x = {440.0};
   one_cell.y = {0.1};
@@ -172,17 +172,17 @@ TEST(ReportFigures, DegenerateButValidInputsStillDraw) {
   write_interval_chart(one_bar, dir / "one_bar.png");
 
   for (const auto& name : names_in(dir)) {
-    EXPECT_EQ(test::png_header(dir / name).width, 1200u) << name;
+    EXPECT_EQ(nibrig::test::png_header(dir / name).width, 1200u) << name;
     expect_white_border(dir / name);
   }
   EXPECT_EQ(names_in(dir).size(), 6u);
 }
 
 TEST(ReportIntervalChart, NinetyBarsWidenTheImageSoEveryLabelHasRoom) {
-  const auto dir = test::scratch_dir("report_ninety");
+  const auto dir = nibrig::test::scratch_dir("report_ninety");
   const auto chart = sample_chart(90);
   write_interval_chart(chart, dir / "chart.png");
-  const auto header = test::png_header(dir / "chart.png");
+  const auto header = nibrig::test::png_header(dir / "chart.png");
   // About 20 px per bar at the default size (a label's line height), so well over 1200 px.
   EXPECT_GE(header.width, 90u * 20u);
   EXPECT_GE(header.height, 800u);
@@ -190,7 +190,7 @@ TEST(ReportIntervalChart, NinetyBarsWidenTheImageSoEveryLabelHasRoom) {
 
   // Each bar's upright label is a column of ink under the plot: count the separate runs of inked
   // columns in a row crossing the labels just under the axis. Touching labels would merge runs.
-  const auto img = test::decode_png(dir / "chart.png");
+  const auto img = nibrig::test::decode_png(dir / "chart.png");
   int best_runs = 0;
   for (int y = img.height / 2; y < img.height; ++y) {
     int runs = 0;
@@ -214,11 +214,11 @@ struct CellCheck {
   int bright_x0, bright_x1, bright_y0, bright_y1;
 };
 
-CellCheck find_cells(const test::RgbImage& img) {
+CellCheck find_cells(const nibrig::test::RgbImage& img) {
   const auto& v = viridis();
   const auto is_map_colour = [&](Rgb c) {
-    return test::near(c, v[0], 2) || test::near(c, v[255], 2) || test::near(c, v[128], 2) ||
-           test::near(c, v[127], 2);
+    return nibrig::test::near(c, v[0], 2) || nibrig::test::near(c, v[255], 2) || nibrig::test::near(c, v[128], 2) ||
+           nibrig::test::near(c, v[127], 2);
   };
   CellCheck out{img.width, -1, img.height, -1, img.width, -1, img.height, -1};
   for (int x = 0; x < img.width; ++x) {
@@ -235,7 +235,7 @@ CellCheck find_cells(const test::RgbImage& img) {
   }
   for (int y = out.map_y0; y <= out.map_y1; ++y) {
     for (int x = out.map_x0; x <= out.map_x1; ++x) {
-      if (test::near(img.at(x, y), v[255], 2)) {
+      if (nibrig::test::near(img.at(x, y), v[255], 2)) {
         out.bright_x0 = std::min(out.bright_x0, x), out.bright_x1 = std::max(out.bright_x1, x);
         out.bright_y0 = std::min(out.bright_y0, y), out.bright_y1 = std::max(out.bright_y1, y);
       }
@@ -249,7 +249,7 @@ CellCheck find_cells(const test::RgbImage& img) {
 // 3 px tolerance: the frame line (1.6 px) covers the map's outermost pixel, cell edges are
 // anti-aliased over a pixel, and PLplot rounds positions to 0.1 px.
 void expect_known_pattern(const fs::path& png) {
-  const auto img = test::decode_png(png);
+  const auto img = nibrig::test::decode_png(png);
   const auto c = find_cells(img);
   ASSERT_GT(c.map_x1 - c.map_x0, img.width / 2) << "heat map not found in " << png;
   ASSERT_GT(c.map_y1 - c.map_y0, img.height / 2) << "heat map not found in " << png;
@@ -261,14 +261,14 @@ void expect_known_pattern(const fs::path& png) {
   EXPECT_NEAR(c.bright_y0, py(30.0), 3.0);
   EXPECT_NEAR(c.bright_y1 + 1, py(15.0), 3.0);
   const auto middle = img.at(static_cast<int>(px(0.0)), static_cast<int>(py(40.0)));
-  EXPECT_TRUE(test::near(middle, viridis()[128], 2) || test::near(middle, viridis()[127], 2))
+  EXPECT_TRUE(nibrig::test::near(middle, viridis()[128], 2) || nibrig::test::near(middle, viridis()[127], 2))
       << "middle cell is " << middle.r << "," << middle.g << "," << middle.b;
   const auto background = img.at(static_cast<int>(px(13.0)), static_cast<int>(py(10.0)));
-  EXPECT_TRUE(test::near(background, viridis()[0], 2));
+  EXPECT_TRUE(nibrig::test::near(background, viridis()[0], 2));
 }
 
 TEST(ReportHeatMap, CellsSitBetweenTheMidpointsOfTheirNeighbours) {
-  const auto dir = test::scratch_dir("report_pattern");
+  const auto dir = nibrig::test::scratch_dir("report_pattern");
   write_heat_map(sample_heat_map(), dir / "linear.png");
   expect_known_pattern(dir / "linear.png");
 }
@@ -282,7 +282,7 @@ TEST(ReportHeatMap, DecibelScaleIsReMaxAndClampsAtMinus60) {
   }
   map.z[1][3] = 2.0;                                 // the maximum: 0 dB
   map.z[2][0] = 2.0 * std::pow(10.0, -30.0 / 20.0);  // -30 dB re max
-  const auto dir = test::scratch_dir("report_decibel");
+  const auto dir = nibrig::test::scratch_dir("report_decibel");
   write_heat_map(map, dir / "db.png");
   expect_known_pattern(dir / "db.png");
 }
@@ -295,9 +295,9 @@ TEST(ReportHeatMap, MoreCellsThanPixelsStillShowANarrowPeak) {
   map.z.assign(2, std::vector<double>(6000, 0.0));
   map.z[0][4500] = map.z[1][4500] = 1.0;
   map.title = "Narrow peak";
-  const auto dir = test::scratch_dir("report_merge");
+  const auto dir = nibrig::test::scratch_dir("report_merge");
   write_heat_map(map, dir / "peak.png");
-  const auto img = test::decode_png(dir / "peak.png");
+  const auto img = nibrig::test::decode_png(dir / "peak.png");
   const auto c = find_cells(img);
   ASSERT_LE(c.bright_x0, c.bright_x1) << "the peak vanished";
   const double expected = c.map_x0 + (4500.0 + 0.5) / 6000.0 * (c.map_x1 - c.map_x0 + 1);
@@ -362,7 +362,7 @@ TEST(ReportFigures, BadLinePlotsAreRefused) {
 
 TEST(ReportFigures, AnUnwritableFolderIsAnExceptionNotAnExit) {
   // PLplot ends the process when it cannot open its output; the figure must find out first.
-  const auto dir = test::scratch_dir("report_unwritable");
+  const auto dir = nibrig::test::scratch_dir("report_unwritable");
   try {
     write_line_plot(sample_line_plot(), dir / "missing" / "lines.png");
     ADD_FAILURE() << "wrote into a folder that does not exist";
@@ -375,7 +375,7 @@ TEST(ReportFigures, AnUnwritableFolderIsAnExceptionNotAnExit) {
 TEST(ReportFigures, AMissingPngcairoDriverIsReported) {
   // PLplot looks for drivers in $PLPLOT_DRV_DIR; pointing it at an empty folder is a machine
   // without plplot-driver-cairo. (PLplot itself would end the process on finding no driver at all.)
-  const auto dir = test::scratch_dir("report_no_driver");
+  const auto dir = nibrig::test::scratch_dir("report_no_driver");
   const auto drivers = dir / "drivers";
   fs::create_directories(drivers);
   const char* old = std::getenv("PLPLOT_DRV_DIR");
@@ -396,13 +396,13 @@ TEST(ReportFigures, AMissingPngcairoDriverIsReported) {
   EXPECT_EQ(names_in(dir), std::vector<std::string>{"drivers"});
   // With the real driver folder back, figures work again.
   write_heat_map(sample_heat_map(), dir / "heat.png");
-  EXPECT_EQ(test::png_header(dir / "heat.png").width, 1200u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "heat.png").width, 1200u);
 }
 
 TEST(ReportFigures, FiguresDoNotLeakStateIntoOneAnother) {
   // Heat map (colour map 1, images) and line plot (log axis, translucent bands, many colours), each
   // drawn after the other: the bytes must not depend on what came before.
-  const auto dir = test::scratch_dir("report_state");
+  const auto dir = nibrig::test::scratch_dir("report_state");
   const auto map = sample_heat_map();
   const auto plot = sample_line_plot(8);
   write_heat_map(map, dir / "map_first.png");
@@ -416,7 +416,7 @@ TEST(ReportFigures, FiguresDoNotLeakStateIntoOneAnother) {
 }
 
 TEST(ReportFigures, TheCallersOwnPlplotSettingsDoNotReachAFigure) {
-  const auto dir = test::scratch_dir("report_caller_state");
+  const auto dir = nibrig::test::scratch_dir("report_caller_state");
   write_line_plot(sample_line_plot(), dir / "clean.png");
   // A program that uses PLplot itself: its current stream has a black background, big characters,
   // a dashed line style and a different colour map 1.
@@ -435,7 +435,7 @@ TEST(ReportFigures, TheCallersOwnPlplotSettingsDoNotReachAFigure) {
 }
 
 TEST(ReportFigures, ThreadsDrawingAtOnceGetTheBytesOfDrawingInTurn) {
-  const auto dir = test::scratch_dir("report_threads");
+  const auto dir = nibrig::test::scratch_dir("report_threads");
   const auto map = sample_heat_map();
   const auto chart = sample_chart(12);
   const auto plot = sample_line_plot();

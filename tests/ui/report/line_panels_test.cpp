@@ -34,12 +34,12 @@ LinePlot flat_panel(const std::string& title, double level) {
 }
 
 // Image rows (from the top) where the first series' colour appears within columns [x0, x1).
-std::vector<int> rows_of_first_colour(const test::RgbImage& img, int x0, int x1) {
+std::vector<int> rows_of_first_colour(const nibrig::test::RgbImage& img, int x0, int x1) {
   std::vector<int> rows;
   const Rgb first = categorical_palette()[0];
   for (int y = 0; y < img.height; ++y) {
     int hits = 0;
-    for (int x = x0; x < x1; ++x) hits += test::near(img.at(x, y), first, 12);
+    for (int x = x0; x < x1; ++x) hits += nibrig::test::near(img.at(x, y), first, 12);
     if (hits > (x1 - x0) / 3) rows.push_back(y);  // a horizontal line across most of the panel
   }
   return rows;
@@ -55,7 +55,7 @@ double mean(const std::vector<int>& v) {
 }
 
 TEST(ReportLinePanels, EachPanelDrawsInItsOwnColumnAndSharedAxesAreShared) {
-  const auto dir = test::scratch_dir("report_panels");
+  const auto dir = nibrig::test::scratch_dir("report_panels");
   LinePanels figure;
   figure.title = "Predicted and measured, by speed";
   figure.panels = {flat_panel("17 mm/s", 1e-3), flat_panel("110 mm/s", 1e-2),
@@ -64,13 +64,13 @@ TEST(ReportLinePanels, EachPanelDrawsInItsOwnColumnAndSharedAxesAreShared) {
   figure.shared_axes = false;
   write_line_panels(figure, dir / "own.png");
   for (const char* name : {"shared.png", "own.png"}) {
-    EXPECT_EQ(test::png_header(dir / name).width, 1800u);
-    EXPECT_EQ(test::png_header(dir / name).height, 700u);
+    EXPECT_EQ(nibrig::test::png_header(dir / name).width, 1800u);
+    EXPECT_EQ(nibrig::test::png_header(dir / name).height, 700u);
     test::expect_white_border(dir / name);
   }
 
-  const auto shared = test::decode_png(dir / "shared.png");
-  const auto own = test::decode_png(dir / "own.png");
+  const auto shared = nibrig::test::decode_png(dir / "shared.png");
+  const auto own = nibrig::test::decode_png(dir / "own.png");
   const int third = shared.width / 3;
   std::vector<double> shared_rows, own_rows;
   for (int k = 0; k < 3; ++k) {
@@ -91,14 +91,14 @@ TEST(ReportLinePanels, EachPanelDrawsInItsOwnColumnAndSharedAxesAreShared) {
 }
 
 TEST(ReportLinePanels, MorePanelsThanColumnsWrapIntoRows) {
-  const auto dir = test::scratch_dir("report_panels_rows");
+  const auto dir = nibrig::test::scratch_dir("report_panels_rows");
   LinePanels figure;
   figure.columns = 2;
   figure.size = {1200, 1000};
   for (int k = 0; k < 3; ++k) figure.panels.push_back(flat_panel("panel", 1e-2));
   write_line_panels(figure, dir / "rows.png");
   test::expect_white_border(dir / "rows.png");
-  const auto img = test::decode_png(dir / "rows.png");
+  const auto img = nibrig::test::decode_png(dir / "rows.png");
   const auto left = rows_of_first_colour(img, 0, img.width / 2);
   const auto right = rows_of_first_colour(img, img.width / 2, img.width);
   // Two lines on the left (rows 1 and 2), one on the right (row 1 only).
@@ -110,7 +110,7 @@ TEST(ReportLinePanels, MorePanelsThanColumnsWrapIntoRows) {
 }
 
 TEST(ReportLinePanels, MutedReferencesAreGreyAndLieUnderTheCurves) {
-  const auto dir = test::scratch_dir("report_muted");
+  const auto dir = nibrig::test::scratch_dir("report_muted");
   LinePlot plot = flat_panel("", 1e-2);   // measured, then predicted ten times higher
   LineSeries reference = plot.series[1];  // a muted reference exactly under the predicted curve
   reference.label = "baseline";
@@ -118,7 +118,7 @@ TEST(ReportLinePanels, MutedReferencesAreGreyAndLieUnderTheCurves) {
   plot.series.insert(plot.series.begin(), reference);
   plot.title = "Muted";
   write_line_plot(plot, dir / "muted.png");
-  const auto img = test::decode_png(dir / "muted.png");
+  const auto img = nibrig::test::decode_png(dir / "muted.png");
   // The coloured curves keep the first two colours although the muted series comes first: each
   // draws a line across the plot. The grey line lies exactly under the predicted one, drawn before
   // it and thinner, so none of it shows on the rows of that line.
@@ -126,7 +126,7 @@ TEST(ReportLinePanels, MutedReferencesAreGreyAndLieUnderTheCurves) {
     std::vector<int> rows;
     for (int y = 0; y < img.height; ++y) {
       int hits = 0;
-      for (int x = 0; x < img.width; ++x) hits += test::near(img.at(x, y), colour, tolerance);
+      for (int x = 0; x < img.width; ++x) hits += nibrig::test::near(img.at(x, y), colour, tolerance);
       if (hits > img.width / 2) rows.push_back(y);
     }
     return rows;
@@ -139,12 +139,12 @@ TEST(ReportLinePanels, MutedReferencesAreGreyAndLieUnderTheCurves) {
   int hidden_grey = 0;
   for (int y = predicted_rows.front() - 3; y <= predicted_rows.back() + 3; ++y)
     for (int x = img.width / 4; x < 3 * img.width / 4; ++x)
-      hidden_grey += test::near(img.at(x, y), grey, 6);
+      hidden_grey += nibrig::test::near(img.at(x, y), grey, 6);
   EXPECT_EQ(hidden_grey, 0);
   // The baseline's legend swatch is that grey.
   int legend_grey = 0;
   for (int y = 0; y < predicted_rows.front() - 10; ++y)
-    for (int x = 0; x < img.width; ++x) legend_grey += test::near(img.at(x, y), grey, 6);
+    for (int x = 0; x < img.width; ++x) legend_grey += nibrig::test::near(img.at(x, y), grey, 6);
   EXPECT_GT(legend_grey, 20);
 }
 

@@ -46,25 +46,25 @@ ScatterPlot sample_space(std::size_t n = 9) {
 }
 
 // Image pixel (column, row from the top) of a page position (origin bottom left).
-Rgb pixel_at(const test::RgbImage& img, double page_x, double page_y) {
+Rgb pixel_at(const nibrig::test::RgbImage& img, double page_x, double page_y) {
   return img.at(static_cast<int>(std::floor(page_x)),
                 static_cast<int>(std::floor(img.height - page_y)));
 }
 
 TEST(ReportScatterPlot, WritesAPngOfTheAskedSizeWithNothingAtTheBorder) {
-  const auto dir = test::scratch_dir("scatter_sizes");
+  const auto dir = nibrig::test::scratch_dir("scatter_sizes");
   auto plot = sample_space();
   write_scatter_plot(plot, dir / "default.png");
   plot.size = {900, 900};
   write_scatter_plot(plot, dir / "square.png");
   plot.size = {640, 400};
   write_scatter_plot(plot, dir / "small.png");
-  EXPECT_EQ(test::png_header(dir / "default.png").width, 1200u);
-  EXPECT_EQ(test::png_header(dir / "default.png").height, 800u);
-  EXPECT_EQ(test::png_header(dir / "square.png").width, 900u);
-  EXPECT_EQ(test::png_header(dir / "square.png").height, 900u);
-  EXPECT_EQ(test::png_header(dir / "small.png").width, 640u);
-  EXPECT_EQ(test::png_header(dir / "small.png").height, 400u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "default.png").width, 1200u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "default.png").height, 800u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "square.png").width, 900u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "square.png").height, 900u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "small.png").width, 640u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "small.png").height, 400u);
   // Only the figures: no temporary file is left beside them.
   EXPECT_EQ(test::names_in(dir).size(), 3u);
   for (const auto& name : test::names_in(dir)) test::expect_white_border(dir / name);
@@ -79,9 +79,9 @@ TEST(ReportScatterPlot, GroupsAtOppositeCornersColourOppositeCornersOfThePlot) {
     plot.points.push_back({"", 0.2 * i, 0.1 * i, "A", {}, false});
     plot.points.push_back({"", 10.0 - 0.2 * i, 10.0 - 0.1 * i, "B", {}, false});
   }
-  const auto dir = test::scratch_dir("scatter_corners");
+  const auto dir = nibrig::test::scratch_dir("scatter_corners");
   write_scatter_plot(plot, dir / "corners.png");
-  const auto img = test::decode_png(dir / "corners.png");
+  const auto img = nibrig::test::decode_png(dir / "corners.png");
   // The plot box, to leave out the legend's swatches above it.
   const auto box = layout_scatter(plot).axes.box;
   const double mid_x = 0.5 * (box.x0 + box.x1), mid_y = 0.5 * (box.y0 + box.y1);
@@ -92,8 +92,8 @@ TEST(ReportScatterPlot, GroupsAtOppositeCornersColourOppositeCornersOfThePlot) {
       const double y = img.height - row - 0.5, x = col + 0.5;
       // Tolerance 2 per channel: the inside of a marker is its exact colour; its anti-aliased rim
       // is a blend that this excludes.
-      if (test::near(img.at(col, row), palette[0], 2)) (x < mid_x && y < mid_y ? a_in : a_out)++;
-      if (test::near(img.at(col, row), palette[1], 2)) (x > mid_x && y > mid_y ? b_in : b_out)++;
+      if (nibrig::test::near(img.at(col, row), palette[0], 2)) (x < mid_x && y < mid_y ? a_in : a_out)++;
+      if (nibrig::test::near(img.at(col, row), palette[1], 2)) (x > mid_x && y > mid_y ? b_in : b_out)++;
     }
   }
   // A marker of radius 4.5 px has about 50 pixels of its exact colour; three of them overlap.
@@ -105,9 +105,9 @@ TEST(ReportScatterPlot, GroupsAtOppositeCornersColourOppositeCornersOfThePlot) {
 
 TEST(ReportScatterPlot, EachMarkerShowsItsGroupColourWhereTheAxesPutIt) {
   const auto plot = sample_space();
-  const auto dir = test::scratch_dir("scatter_markers");
+  const auto dir = nibrig::test::scratch_dir("scatter_markers");
   write_scatter_plot(plot, dir / "space.png");
-  const auto img = test::decode_png(dir / "space.png");
+  const auto img = nibrig::test::decode_png(dir / "space.png");
   const auto f = layout_scatter(plot);
   const auto& palette = categorical_palette();
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
@@ -119,7 +119,7 @@ TEST(ReportScatterPlot, EachMarkerShowsItsGroupColourWhereTheAxesPutIt) {
       for (int dy = -1; dy <= 1; ++dy) {
         const auto c = pixel_at(img, x + dx, y + dy);
         const Rgb expected = plot.points[i].hollow ? white : group;
-        EXPECT_TRUE(test::near(c, expected, 2)) << "point " << i << " at " << dx << "," << dy
+        EXPECT_TRUE(nibrig::test::near(c, expected, 2)) << "point " << i << " at " << dx << "," << dy
                                                 << ": " << c.r << "," << c.g << "," << c.b;
       }
     }
@@ -130,7 +130,7 @@ TEST(ReportScatterPlot, EachMarkerShowsItsGroupColourWhereTheAxesPutIt) {
   int ring = 0;
   for (int k = 0; k < 16; ++k) {
     const double t = 2.0 * std::numbers::pi * k / 16;
-    ring += test::near(pixel_at(img, hx + 3.6 * std::cos(t), hy + 3.6 * std::sin(t)),
+    ring += nibrig::test::near(pixel_at(img, hx + 3.6 * std::cos(t), hy + 3.6 * std::sin(t)),
                        palette[4 % 3], 40);
   }
   EXPECT_GE(ring, 8);
@@ -138,11 +138,11 @@ TEST(ReportScatterPlot, EachMarkerShowsItsGroupColourWhereTheAxesPutIt) {
 
 // Walks from (x, y) along (ux, uy) in page pixels, from `from` px out to `to` px, and returns the
 // middle of the first run of pixels close to `colour`, in px from the start; -1 if none.
-double first_run(const test::RgbImage& img, double x, double y, double ux, double uy, double from,
+double first_run(const nibrig::test::RgbImage& img, double x, double y, double ux, double uy, double from,
                  double to, Rgb colour) {
   double start = -1.0, end = -1.0;
   for (double d = from; d <= to; d += 0.25) {
-    const bool hit = test::near(pixel_at(img, x + d * ux, y + d * uy), colour, 60);
+    const bool hit = nibrig::test::near(pixel_at(img, x + d * ux, y + d * uy), colour, 60);
     if (hit && start < 0) start = d;
     if (hit) end = d;
     if (!hit && start >= 0) break;
@@ -159,9 +159,9 @@ TEST(ReportScatterPlot, OnEqualAxesAnEllipseOutlineLiesAtItsSemiAxes) {
   const double turn = std::numbers::pi / 3.0;
   plot.points.push_back({"", 7.0, 0.0, "turned", {{7.0, 0.0, 2.0, 1.0, turn}}, false});
   plot.points.push_back({"", 12.0, 1.0, "far", {}, false});
-  const auto dir = test::scratch_dir("scatter_ellipses");
+  const auto dir = nibrig::test::scratch_dir("scatter_ellipses");
   write_scatter_plot(plot, dir / "ellipses.png");
-  const auto img = test::decode_png(dir / "ellipses.png");
+  const auto img = nibrig::test::decode_png(dir / "ellipses.png");
   const auto m = layout_scatter(plot).mapping;
   const auto& palette = categorical_palette();
 
@@ -254,9 +254,9 @@ ScatterPlot hundred_points() {
 
 TEST(ReportScatterPlot, AHundredLabelledPointsRenderWithoutLabelsOverlapping) {
   const auto plot = hundred_points();
-  const auto dir = test::scratch_dir("scatter_hundred");
+  const auto dir = nibrig::test::scratch_dir("scatter_hundred");
   write_scatter_plot(plot, dir / "hundred.png");
-  EXPECT_EQ(test::png_header(dir / "hundred.png").width, 1200u);
+  EXPECT_EQ(nibrig::test::png_header(dir / "hundred.png").width, 1200u);
   test::expect_white_border(dir / "hundred.png");
 
   // Beyond 40 points a label is either free of every other label and marker, or left out.
@@ -320,14 +320,14 @@ TEST(ReportScatterPlot, BadScatterPlotsAreRefused) {
 TEST(ReportScatterPlot, RegionsNeedNoLegendTextWhenNoneIsGiven) {
   auto plot = sample_space();
   plot.region_labels.clear();
-  const auto dir = test::scratch_dir("scatter_no_region_labels");
+  const auto dir = nibrig::test::scratch_dir("scatter_no_region_labels");
   write_scatter_plot(plot, dir / "plot.png");
   for (const auto& e : layout_scatter(plot).legend)
     EXPECT_NE(e.kind, detail::LegendEntry::Kind::region) << e.label;
 }
 
 TEST(ReportScatterPlot, ThreadsDrawingAtOnceGetTheBytesOfDrawingInTurn) {
-  const auto dir = test::scratch_dir("scatter_threads");
+  const auto dir = nibrig::test::scratch_dir("scatter_threads");
   const auto plot = sample_space();
   const auto line =
       LinePlot{{{"a", {0.0, 1.0, 2.0}, {1.0, 0.5, 2.0}, {}, {}}}, "lines", "", "", false, {}};
