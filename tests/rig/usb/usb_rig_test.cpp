@@ -91,16 +91,21 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
     if (excess > 0.05) weight += excess, moment += excess * static_cast<double>(k);
   }
   ASSERT_GT(weight, 3.0) << "the tap was not found in the frames";
-  // Interpolation keeps the pulse's area up to the ratio of the two clocks' spacing: the pulse
-  // lasts one device frame (1 ms), the session's frames are spaced by the audio clock (48 of its
-  // samples), so the frames sum 5 N times the audio clock's rate over 48 kHz. That rate is measured
-  // from arrivals over ~3 s (to ~1 %); 0.25 N leaves the rest for the pulse's split between frames.
+  // Interpolation keeps the pulse's area up to the ratio of the two clocks' spacing where it lands:
+  // the pulse lasts one device frame (1 ms), and the session's frames are spaced by the audio
+  // clock (48 of its samples), so the frames sum 5 N times the audio clock's rate over 48 kHz. The
+  // overall rate is measured from arrivals over ~3 s (a dummy clock ran 13 % slow once in CI). The
+  // local rate at the tap also moves with the stamp of the audio block it falls in (the timeline
+  // follows each block's callback stamp): 0.1 ms of jitter in a 1.33 ms block is 7.5 %, and 4.63 N
+  // was seen with the clock at 47.85 kHz. 15 % still tells a tap found once from a lost or a
+  // doubled one.
   ASSERT_TRUE(first_arrival && last_arrival);
   const double arrival_s = std::chrono::duration<double>(last_arrival->first - first_arrival->first).count();
   ASSERT_GT(arrival_s, 1.0);
   const double audio_rate_hz = static_cast<double>(last_arrival->second - first_arrival->second) / arrival_s;
   RecordProperty("audio_clock_hz", std::to_string(audio_rate_hz));
-  EXPECT_NEAR(weight, 5.0 * audio_rate_hz / 48000.0, 0.25) << "audio clock " << audio_rate_hz << " Hz";
+  const double expected_weight = 5.0 * audio_rate_hz / 48000.0;
+  EXPECT_NEAR(weight, expected_weight, 0.15 * expected_weight) << "audio clock " << audio_rate_hz << " Hz";
   const double tap_on_timeline_s = moment / weight / 1000.0;
   std::size_t impulse = 0;
   for (std::size_t n = 0; n < all.acceleration.size(); ++n)
