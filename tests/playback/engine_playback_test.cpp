@@ -151,7 +151,17 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
   // hop over the calls, 0-22 blocks a minute took up to 4 ms here: every warm voice moved its
   // frames in the same callback. Since then the largest block takes 0.25-0.36 ms of CPU time
   // under the flood, with the machine's two cores otherwise busy (see the issue note).
-  EXPECT_EQ(stats.overruns, 0u) << "largest CPU time of a block " << 1e6 * stats.max_callback_cpu_s << " us";
+  // Under the sanitizers, every block costs 3-7 times its Release time and ASan's own work (its
+  // shadow memory's first touches, its allocator's bookkeeping for the other threads) lands in
+  // the callback now and then: on this machine, 1-8 blocks of 44,000 took 1.7-4.8 ms of CPU
+  // time, with the tests' JACK server real-time or not, the engine built a file at a time or not.
+  // There one block in 2000 is allowed; the Release build, the one that plays, must have none.
+#if defined(__SANITIZE_ADDRESS__)
+  EXPECT_LE(stats.overruns, renderer.calls() / 2000)
+#else
+  EXPECT_EQ(stats.overruns, 0u)
+#endif
+      << "largest CPU time of a block " << 1e6 * stats.max_callback_cpu_s << " us";
   EXPECT_GT(renderer.calls(), 20000u);  // 60 s of 64-frame periods is 45,000
   EXPECT_GT(swaps, 20u);
   EXPECT_GT(contacts, 100000u);
@@ -160,7 +170,7 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
       "soak: %llu callbacks, %llu contact updates, %llu voice swaps; engine overruns %llu (largest "
       "CPU time of a block %.1f us); callback wall time median <= %.1f us, 99th percentile <= "
       "%.1f us, max %.1f us; "
-      "device underflows %llu (the dummy driver without real-time scheduling)\n",
+      "device underflows %llu (the dummy driver's late cycles)\n",
       static_cast<unsigned long long>(renderer.calls()), static_cast<unsigned long long>(contacts),
       static_cast<unsigned long long>(swaps), static_cast<unsigned long long>(stats.overruns),
       1e6 * stats.max_callback_cpu_s, 1e6 * stats.callback_time_quantile(0.5), 1e6 * stats.callback_time_quantile(0.99),
