@@ -63,6 +63,10 @@ class RigView {
   double progress() const { return job_ ? job_->progress() : 1.0; }
   RigChoice& choice() { return choice_; }
   const std::string& error() const { return error_; }
+  // What the view says of the last run once it ended: its session folder, and why it ended early.
+  const std::string& finished() const { return finished_; }
+  // The speed trace as drawn (mm/s at 100 Hz, the newest last).
+  const std::vector<float>& speed_trace() const { return speed_mm_s_; }
   // For tests: the waterfalls (null before the first rows) and the last table.
   const Waterfall* measured() const { return measured_.get(); }
   const Waterfall* simulated() const { return simulated_.get(); }
