@@ -42,7 +42,8 @@ class AccelerometerInput {
   // Appends the samples captured since the last call (full-scale units) and takes their stamps
   // into the clock. Capture thread only.
   std::size_t read(std::vector<float>& into);
-  // Samples read so far: the index the next one has in host_time_of.
+  // The index the next sample read has in host_time_of: the samples read so far and those the
+  // full ring dropped while nobody read.
   std::uint64_t samples_read() const { return samples_read_; }
   // Host time (s, steady clock) at which sample `index` (counted from the stream's first) was
   // captured: the stamp of the callback that delivered it, less the latency the stamps do not
@@ -75,7 +76,8 @@ class AccelerometerInput {
   Silence silence_;
   std::unique_ptr<playback::AudioOutput> stream_;
   ClockFit clock_;
-  std::uint64_t samples_read_ = 0;
+  std::uint64_t samples_read_ = 0;  // delivered, plus those the full ring dropped before them
+  std::uint64_t samples_delivered_ = 0;
   double rate_ = 0.0, buffering_s_ = 0.0, device_latency_s_ = 0.0;
   std::vector<float> buffer_;
   std::vector<playback::CaptureStamp> stamps_;

@@ -5,6 +5,7 @@
 // alignment error, measured.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -125,6 +126,33 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   EXPECT_LT(std::abs(error_ms), 2.0);
   EXPECT_NEAR(tap_host_s, tapped_host_s, 0.0015);  // the device tapped the frame due then
   EXPECT_TRUE(std::isfinite(rig.health().alignment_error_ms));
+}
+
+// Opened, then left waiting longer than the accelerometer's ring holds (~2.7 s) before the start,
+// as a face does while it meshes the simulated tool: the capture's timeline must still be the
+// motor's. The samples the full ring dropped once went uncounted, so every session frame was
+// looked up that much before the start, where the turntable stood (a 25 s wait: speed 0 throughout).
+TEST(UsbRig, AWaitBeforeTheStartLongerThanTheInputRingKeepsTheTimeline) {
+  nibrig::testing::JackServer server;
+  usb::testing::Testbed testbed;
+  usb::testing::EmulatedRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
+  testing::JackFeeder feeder("wait-feeder", 0.01, 440.0);
+  UsbRig rig(fed_by_jack("wait-accel"));
+  ASSERT_TRUE(feeder.connect("wait-accel:inport 0"));
+  std::this_thread::sleep_for(5s);
+  rig.start(SpeedProfile("hold", {{0.0, 0.05}, {2.0, 0.05}}));
+  RigData all, batch;
+  while (rig.read(batch, 50ms)) {
+    all.frames.insert(all.frames.end(), batch.frames.begin(), batch.frames.end());
+    batch.clear();
+  }
+  all.frames.insert(all.frames.end(), batch.frames.begin(), batch.frames.end());
+  ASSERT_EQ(all.frames.size(), 2000u);
+  // The motor reaches its speed within a few of its 50 ms time constants: from 0.5 s on, every
+  // frame holds it (a timeline 2.3 s early, as before, holds 0 throughout).
+  float slowest = 1.0f;
+  for (std::size_t k = 500; k < all.frames.size(); ++k) slowest = std::min(slowest, all.frames[k].speed_m_s);
+  EXPECT_NEAR(slowest, 0.05f, 0.002f);
 }
 
 // Unplugged in the middle of a capture: the capture ends, the session is finished with everything
