@@ -59,9 +59,8 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
   std::optional<rig::SpeedProfile> profile;
   if (request.kind != rig::RigKind::replay) profile = rig::profile_named(c.profile, seconds);
   // The simulated tool is made before the rig is opened whenever the choice names it: meshing it
-  // takes seconds to tens of seconds, and a USB controller opened before that streamed all the
-  // while, after which its capture lost the turntable's speed (a 25 s wait between opening and
-  // starting left the session's speed at 0; 3 s did not: a driver bug, see the issue note).
+  // takes seconds to tens of seconds, which a USB controller opened first would spend streaming
+  // into rings nobody reads (the overflow once cost the capture its timeline: UsbRig's tests).
   std::optional<model::design::ToolSound> sound;
   const auto make_sound = [&](const std::string& tool, const std::string& surface) {
     control.message("making the simulated " + tool + " on " + surface);
