@@ -58,16 +58,6 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
   const std::optional<double> seconds = c.seconds > 0 ? std::optional<double>(c.seconds) : std::nullopt;
   std::optional<rig::SpeedProfile> profile;
   if (request.kind != rig::RigKind::replay) profile = rig::profile_named(c.profile, seconds);
-  // The simulated tool is made before the rig is opened whenever the choice names it: meshing it
-  // takes seconds to tens of seconds, which a USB controller opened first would spend streaming
-  // into rings nobody reads (the overflow once cost the capture its timeline: UsbRig's tests).
-  std::optional<model::design::ToolSound> sound;
-  const auto make_sound = [&](const std::string& tool, const std::string& surface) {
-    control.message("making the simulated " + tool + " on " + surface);
-    sound = sounds.sound(tool, surface);
-  };
-  const std::string named_tool = c.simulated_tool.empty() ? c.tool : c.simulated_tool;
-  if (!named_tool.empty() && !c.surface.empty()) make_sound(named_tool, c.surface);
   control.message("opening the rig");
   auto opened = rig::open_rig(request, sounds);
   if (!profile) {
@@ -75,16 +65,16 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     if (!own) throw std::invalid_argument("the replayed session has no speed profile to run");
     profile = seconds ? rig::fit_to_duration(*own, *seconds) : *own;
   }
-  if (!sound) {
-    const std::string mounted = c.tool.empty() ? opened->description().tool : c.tool;
-    const std::string surface = c.surface.empty() ? opened->description().surface : c.surface;
-    make_sound(c.simulated_tool.empty() ? mounted : c.simulated_tool, surface);
-  }
+  const std::string mounted = c.tool.empty() ? opened->description().tool : c.tool;
+  const std::string surface = c.surface.empty() ? opened->description().surface : c.surface;
+  const std::string simulated_tool = c.simulated_tool.empty() ? mounted : c.simulated_tool;
+  control.message("making the simulated " + simulated_tool + " on " + surface);
+  const model::design::ToolSound sound = sounds.sound(simulated_tool, surface);
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   {
     std::lock_guard lock(feed->mutex);
     feed->rig_name = opened->description().name;
-    feed->simulated_name = sound->name;
+    feed->simulated_name = sound.name;
   }
   rig::ComparisonRunOptions options;
   options.capture.folder = folder;
@@ -119,7 +109,7 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     if (table) feed->table = std::move(table);
   };
   control.message("running " + profile->description());
-  return rig::run_comparison(*opened, *profile, *sound, threshold, options);
+  return rig::run_comparison(*opened, *profile, sound, threshold, options);
 }
 
 }  // namespace

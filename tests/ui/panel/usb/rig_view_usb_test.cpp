@@ -3,7 +3,9 @@
 // graph, the view drawn in a real GLFW window on Xvfb. What a person at the panel checks: the
 // speed trace follows the profile the controller was given, the measured spectrogram shows the
 // accelerometer's tone where it is, the comparison table fills, and pulling the cable ends the run
-// with the reason shown and the session kept.
+// with the reason shown and the session kept. The view opens the rig, then meshes the simulated
+// tool for ~20 s: longer than the accelerometer's ring holds, which once left the capture's speed
+// at 0 throughout (AccelerometerInput now counts what the full ring dropped).
 #include <gtest/gtest.h>
 
 #include <algorithm>
