@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "model/io/utc_time.hpp"
 #include "rt/engine.hpp"
 
 namespace nibrig::playback {
@@ -31,15 +32,6 @@ class BufferPlayer final : public rt::BlockRenderer {
   const std::vector<double>& signal_;
   std::atomic<std::size_t> position_{0};
 };
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 // The inverse filter's length in time at every rate: 64 ms keeps it flat to 0.7 dB over the band at
 // 2 to 8 kHz (calibration_inverse_filter_test), and a minimum-phase filter's latency is not its length.
@@ -137,7 +129,7 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
 
   ActuatorCalibration calibration;
   calibration.name = settings.name;
-  calibration.created = utc_now();
+  calibration.created = model::io::now_utc_iso8601();
   calibration.sweep = sweep;
   calibration.delay_s = estimate.delay_s;
   calibration.response = estimate.response;

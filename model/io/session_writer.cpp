@@ -11,20 +11,12 @@
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/session.hpp"
+#include "model/io/utc_time.hpp"
 #include "model/io/session_json.hpp"
 
 namespace nibrig::model::io {
 
 namespace {
-
-std::string now_utc_iso8601() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 std::string dump_json(const nlohmann::json& json) {
   try {

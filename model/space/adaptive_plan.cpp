@@ -155,6 +155,23 @@ std::vector<Eigen::MatrixXd> laplace_ensemble(const SpaceProblem& problem,
   return ensemble;
 }
 
+std::vector<Trial> next_adaptive_batch(const SpaceProblem& problem, const Eigen::MatrixXd& mode,
+                                       const std::vector<io::Triplet>& candidates,
+                                       const LaplaceOptions& ensemble_options,
+                                       std::size_t batch_size, int stage,
+                                       std::mt19937_64& generator) {
+  const std::vector<Eigen::MatrixXd> ensemble =
+      laplace_ensemble(problem, mode, ensemble_options, generator);
+  const std::vector<std::size_t> batch =
+      select_batch(expected_information_gain(ensemble, candidates, problem.scale), batch_size);
+  std::vector<Trial> asked;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    const io::Triplet& t = candidates[batch[i]];
+    asked.push_back(i % 2 ? Trial{t.reference, t.b, t.a, stage} : Trial{t.reference, t.a, t.b, stage});
+  }
+  return asked;
+}
+
 std::vector<AdaptiveCheckpoint> run_adaptive_study(const SimulatedObserver& observer,
                                                    std::size_t dims, const AdaptiveOptions& options,
                                                    std::uint64_t seed) {
@@ -198,18 +215,10 @@ std::vector<AdaptiveCheckpoint> run_adaptive_study(const SimulatedObserver& obse
       if (reported.size() == checkpoints.size()) break;
     }
     const std::size_t target = checkpoints[reported.size()];
-    const std::vector<Eigen::MatrixXd> ensemble =
-        laplace_ensemble(problem, fit.coordinates, options.ensemble, generator);
-    const std::vector<std::size_t> batch =
-        select_batch(expected_information_gain(ensemble, candidates, problem.scale),
-                     std::min(options.batch_size, target - trials.size()));
-    std::vector<Trial> asked;
-    for (std::size_t i = 0; i < batch.size(); ++i) {
-      const io::Triplet& t = candidates[batch[i]];
-      // Sides alternate down the batch; a simulated observer has no side bias anyway.
-      asked.push_back(i % 2 ? Trial{t.reference, t.b, t.a, round + 1}
-                            : Trial{t.reference, t.a, t.b, round + 1});
-    }
+    const std::vector<Trial> asked =
+        next_adaptive_batch(problem, fit.coordinates, candidates, options.ensemble,
+                            std::min(options.batch_size, target - trials.size()), round + 1,
+                            generator);
     const std::vector<Choice> answers = observer.answer(asked, generator);
     trials.insert(trials.end(), asked.begin(), asked.end());
     choices.insert(choices.end(), answers.begin(), answers.end());

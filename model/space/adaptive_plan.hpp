@@ -64,6 +64,14 @@ std::vector<Eigen::MatrixXd> laplace_ensemble(const SpaceProblem& problem,
                                               const LaplaceOptions& options,
                                               std::mt19937_64& generator);
 
+// One batch of the adaptive plan after a fit: the ensemble around `mode`, the batch_size
+// candidates of highest gain (each once), sides alternating down the batch (so that each side
+// leads half the time), stage `stage`. What run_adaptive_study and a study with people ask next.
+std::vector<Trial> next_adaptive_batch(const SpaceProblem& problem, const Eigen::MatrixXd& mode,
+                                       const std::vector<io::Triplet>& candidates,
+                                       const LaplaceOptions& ensemble, std::size_t batch_size,
+                                       int stage, std::mt19937_64& generator);
+
 // The adaptive loop with a simulated observer: a random start design (initial_trials distinct
 // triplets, once each), then fit → ensemble → the batch of highest gain (each once) → answers,
 // until the largest checkpoint. The fit at each checkpoint (a number of trials) is reported.

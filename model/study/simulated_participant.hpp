@@ -1,0 +1,74 @@
+// A participant who is a model: answers drawn from a perceptual space by the Thurstonian observer
+// of model/space (P(left) = Φ(−s·d)), with lapses (a share of answers given at random, as
+// attention slips), a response time that grows with how hard the triplet is, and a way of
+// exploring (reference, A, reference, B, then more back and forth the harder it is). For tests, and
+// for estimating a study's length before anyone comes in.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "model/space/simulated_observer.hpp"
+#include "model/space/space_file.hpp"
+#include "model/study/study_session.hpp"
+
+namespace nibrig::model::study {
+
+struct SimulatedParticipantOptions {
+  double lapse_rate = 0.0;  // share of answers at random; 0: the model's observer exactly
+  // Response time = non_decision_s + a log-normal time whose median is median_s on an obvious
+  // triplet and (1 + slowdown) × median_s on a coin toss; the paper's participants explored freely
+  // for several seconds per trial.
+  double non_decision_s = 1.0;
+  double median_s = 5.0;
+  double slowdown = 1.0;
+  double log_sd = 0.35;
+};
+
+// Throws std::invalid_argument for a lapse rate outside [0, 1], a negative time or spread.
+void validate(const SimulatedParticipantOptions& options);
+
+class SimulatedParticipant final : public Respondent {
+ public:
+  // truth: dims × the study's stimuli. Each trial's answer, plays and time are drawn from the seed
+  // and the trial's number. Throws as SimulatedObserver and validate.
+  SimulatedParticipant(Eigen::MatrixXd truth, SimulatedParticipantOptions options,
+                       std::uint64_t seed);
+
+  bool agree(const StudyTexts&) override { return true; }
+  Answer answer(const TrialPrompt& prompt, const std::function<void(Role)>& play) override;
+  void rest(std::size_t, std::size_t) override {}
+
+  const space::SimulatedObserver& observer() const noexcept { return observer_; }
+
+ private:
+  space::SimulatedObserver observer_;
+  SimulatedParticipantOptions options_;
+  std::uint64_t seed_;
+};
+
+// The simulated participant's space for a study's stimuli: each stimulus the space judged at its
+// coordinates, any other catalog pairing placed from its descriptors through the space's map
+// (when it has one; `catalog_file` empty: the bundled catalog). Throws std::invalid_argument
+// naming the space file and the stimulus it cannot place.
+Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
+                                  const std::filesystem::path& space_file,
+                                  const std::vector<Stimulus>& stimuli,
+                                  const std::filesystem::path& catalog_file);
+
+// How many trials a study takes, from simulated participants answering from `truth` with seeds
+// seed, seed + 1, ...: what the runner says before a study starts (two-stage's stage 2 depends on
+// how many triplets tie).
+struct TrialEstimate {
+  double mean = 0.0;
+  std::size_t least = 0, most = 0;  // practice included
+  std::size_t runs = 0;
+};
+TrialEstimate estimate_trials(const StudyDefinition& definition, const Eigen::MatrixXd& truth,
+                              std::size_t runs, std::uint64_t seed, unsigned threads = 0);
+
+}  // namespace nibrig::model::study

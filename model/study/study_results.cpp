@@ -1,0 +1,94 @@
+#include "model/study/study_results.hpp"
+
+#include <algorithm>
+
+#include "model/io/format_error.hpp"
+#include "model/space/trial_plan.hpp"
+
+namespace nibrig::model::study {
+namespace {
+
+struct MainAnswers {
+  std::vector<space::Trial> trials;
+  std::vector<space::Choice> choices;
+};
+
+MainAnswers main_answers(const ParticipantData& p) {
+  MainAnswers m;
+  for (const auto& r : p.responses)
+    if (!r.practice) {
+      m.trials.push_back(r.planned);
+      m.choices.push_back(r.chosen);
+    }
+  return m;
+}
+
+}  // namespace
+
+StudyData read_study(const std::filesystem::path& folder) {
+  StudyData study;
+  study.folder = folder;
+  study.definition = read_study_file(folder / kStudyFile);
+  std::vector<std::string> names;
+  for (const auto& s : study.definition.stimuli) names.push_back(s.name);
+  const std::filesystem::path participants = folder / kParticipantsFolder;
+  if (!std::filesystem::is_directory(participants)) return study;
+  std::vector<std::filesystem::path> folders;
+  for (const auto& entry : std::filesystem::directory_iterator(participants))
+    if (entry.is_directory() && std::filesystem::exists(entry.path() / kParticipantFile))
+      folders.push_back(entry.path());
+  std::sort(folders.begin(), folders.end());
+  for (const auto& f : folders) {
+    ParticipantData p;
+    p.record = read_participant_file(f / kParticipantFile);
+    if (std::filesystem::exists(f / kResponsesFile)) {
+      ResponseFile file = read_response_file(f / kResponsesFile, names);
+      p.responses = std::move(file.responses);
+      study.warnings.insert(study.warnings.end(), file.warnings.begin(), file.warnings.end());
+    }
+    study.participants.push_back(std::move(p));
+  }
+  return study;
+}
+
+JudgmentSelection default_selection(const StudyDefinition& d) {
+  return d.plan == PlanKind::two_stage && d.mode != StudyMode::validation
+             ? JudgmentSelection::paper
+             : JudgmentSelection::every_answer;
+}
+
+io::TripletSet study_judgments(const StudyData& study, JudgmentSelection selection,
+                               const std::string& participant) {
+  io::TripletSet set;
+  for (const auto& s : study.definition.stimuli) set.stimuli.push_back(s.name);
+  set.source = study.folder;
+  const bool stages = selection == JudgmentSelection::paper &&
+                      study.definition.plan == PlanKind::two_stage &&
+                      study.definition.mode != StudyMode::validation;
+  for (const auto& p : study.participants) {
+    if (!participant.empty() && p.record.id != participant) continue;
+    const MainAnswers m = main_answers(p);
+    std::vector<io::Triplet> counts =
+        stages ? space::two_stage_counts(space::merge_trials(m.trials, m.choices, 1),
+                                         space::merge_trials(m.trials, m.choices, 2))
+               : space::merge_trials(m.trials, m.choices);
+    for (auto& t : counts) {
+      t.observer = p.record.id;
+      set.triplets.push_back(std::move(t));
+    }
+  }
+  return set;
+}
+
+std::vector<io::Triplet> pooled_counts(const StudyData& study, const std::string& leave_out) {
+  MainAnswers all;
+  for (const auto& p : study.participants) {
+    if (p.record.id == leave_out) continue;
+    const MainAnswers m = main_answers(p);
+    all.trials.insert(all.trials.end(), m.trials.begin(), m.trials.end());
+    all.choices.insert(all.choices.end(), m.choices.begin(), m.choices.end());
+  }
+  return space::merge_trials(all.trials, all.choices);
+}
+
+}  // namespace nibrig::model::study

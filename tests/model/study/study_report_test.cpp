@@ -1,0 +1,138 @@
+#include "model/study/study_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "model/space/simulated_observer.hpp"
+#include "model/space/space_file.hpp"
+#include "model/space/synthetic_study.hpp"
+#include "tests/model/study/study_test_support.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace nibrig::model::study {
+namespace {
+
+SessionSettings simulated_session(const std::filesystem::path& study, const std::string& id) {
+  SessionSettings s;
+  s.study = study;
+  s.participant = id;
+  s.respondent = "simulated";
+  return s;
+}
+
+// The fitted coordinates in the study's stimulus order (a fit numbers stimuli as its judgments
+// file first names them).
+Eigen::MatrixXd in_study_order(const space::SpaceFile& space, const StudyDefinition& d) {
+  Eigen::MatrixXd out(space.coordinates.rows(), static_cast<Eigen::Index>(d.stimuli.size()));
+  for (std::size_t i = 0; i < d.stimuli.size(); ++i) {
+    const auto it = std::find(space.stimuli.begin(), space.stimuli.end(), d.stimuli[i].name);
+    EXPECT_NE(it, space.stimuli.end()) << d.stimuli[i].name;
+    out.col(static_cast<Eigen::Index>(i)) =
+        space.coordinates.col(static_cast<Eigen::Index>(it - space.stimuli.begin()));
+  }
+  return out;
+}
+
+TEST(StudyReport, ATwoStageRunWithASimulatedParticipantRecoversItsSpaceAsTheSyntheticStudyDoes) {
+  // The reference: `space synth`'s recovery for the same size (15 stimuli, 2-D, the paper's plan
+  // and data selection), over 12 random truths.
+  space::SyntheticStudyOptions synth;
+  synth.trials = 12;
+  synth.dims = {2};
+  synth.stimuli = 15;
+  synth.seed = 3;
+  const space::DimensionRecovery reference = space::run_synthetic_study(synth).front();
+
+  // The runner: a truth of the same kind, one participant answering from it through the whole
+  // two-stage session, the report's fit.
+  std::mt19937_64 generator(77);
+  const Eigen::MatrixXd truth = space::random_space(2, 15, generator);
+  const auto dir = nibrig::test::scratch_dir("report_recovery");
+  const StudyDefinition d = test::definition_of(15);
+  const auto study = test::make_study(dir, d);
+  SimulatedParticipant participant(truth, {}, 4);
+  NothingPresented nothing;
+  ASSERT_TRUE(run_session(simulated_session(study, "S01"), nothing, participant).complete);
+  StudyReportSettings settings;
+  settings.bootstrap = 20;
+  const StudyReport report = report_study(study, dir / "report", settings);
+  ASSERT_TRUE(report.fitted);
+  EXPECT_FALSE(report.with_descriptors) << "made-up tools have no descriptors";
+  const space::RecoveryError runner = space::recovery_error(in_study_order(report.fitted->file, d), truth);
+  std::printf("recovery: runner coordinates %.3f probabilities %.3f; synth %.3f ± %.3f, %.3f ± %.3f\n",
+              runner.coordinates, runner.probabilities, reference.coordinate_error.mean,
+              reference.coordinate_error.sd, reference.probability_error.mean,
+              reference.probability_error.sd);
+  // One truth against the spread of twelve: within three standard deviations of their mean.
+  EXPECT_LT(runner.coordinates,
+            reference.coordinate_error.mean + 3 * reference.coordinate_error.sd);
+  EXPECT_LT(runner.probabilities,
+            reference.probability_error.mean + 3 * reference.probability_error.sd);
+  // The files the report promises, and the participant's agreement with the space they built.
+  EXPECT_TRUE(std::filesystem::exists(dir / "report" / kReportJudgments));
+  EXPECT_TRUE(std::filesystem::exists(dir / "report" / kReportSpace));
+  EXPECT_TRUE(std::filesystem::exists(dir / "report" / kReportStatistics));
+  ASSERT_EQ(report.participants.size(), 1u);
+  EXPECT_FALSE(report.participants[0].with_others) << "alone in the study";
+  // Answers drawn from the truth agree with the fitted prediction as often as with the truth's
+  // own: the mean of max(p, 1−p) over the answered trials, to 3 points.
+  const space::SimulatedObserver observer(truth);
+  double expected = 0.0, n = 0.0;
+  for (const auto& r : report.study.participants[0].responses) {
+    if (r.practice) continue;
+    const double p = observer.probability_first(r.planned.reference, r.planned.left, r.planned.right);
+    expected += std::max(p, 1.0 - p);
+    n += 1.0;
+  }
+  EXPECT_NEAR(report.participants[0].with_space.fraction, expected / n, 0.03);
+}
+
+TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
+  // Sec. 6.1: designs judged against a reference by 12 participants, scored against the space
+  // they answer from. The majority agreement is counted here from the logs, independently.
+  std::mt19937_64 generator(5);
+  const Eigen::MatrixXd truth = space::random_space(2, 6, generator);
+  const auto dir = nibrig::test::scratch_dir("report_validation");
+  StudyDefinition d = test::definition_of(6);
+  d.mode = StudyMode::validation;
+  d.practice = 0;
+  const auto study = test::make_study(dir, d);
+  space::SpaceFile space;
+  for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
+  space.coordinates = truth;
+  space.scale = space::kThurstoneScale;
+  space::write_space_file(dir / "truth.json", space);
+  NothingPresented nothing;
+  for (int k = 0; k < 12; ++k) {
+    SimulatedParticipant p(truth, {}, 100 + static_cast<std::uint64_t>(k));
+    run_session(simulated_session(study, "V" + std::to_string(k)), nothing, p);
+  }
+  StudyReportSettings settings;
+  EXPECT_THROW(report_study(study, dir / "report", settings), std::invalid_argument)
+      << "a validation study needs its space";
+  settings.validation_space = dir / "truth.json";
+  const StudyReport report = report_study(study, dir / "report", settings);
+  ASSERT_TRUE(report.validation);
+  EXPECT_FALSE(report.fitted);
+  ASSERT_EQ(report.validation_triplets.size(), 10u);  // the pairs of 5 candidates
+  const space::SimulatedObserver observer(truth);
+  double agree = 0.0, decided = 0.0;
+  for (const auto& t : report.validation_triplets) {
+    EXPECT_EQ(t.count_a + t.count_b, 12);
+    if (t.count_a == t.count_b) continue;
+    decided += 1.0;
+    agree += (observer.probability_first(t.reference, t.a, t.b) > 0.5) == (t.count_a > t.count_b);
+  }
+  EXPECT_DOUBLE_EQ(report.validation->majority.trials, decided);
+  EXPECT_DOUBLE_EQ(report.validation->majority.agreements, agree);
+  ASSERT_EQ(report.participants.size(), 12u);
+  for (const auto& p : report.participants) {
+    ASSERT_TRUE(p.with_others);
+    EXPECT_EQ(p.with_others->trials, 10.0);
+    EXPECT_EQ(p.answers, 10u);
+  }
+}
+
+}  // namespace
+}  // namespace nibrig::model::study
