@@ -1,0 +1,60 @@
+#include "rig/study_actuator.hpp"
+
+#include <stdexcept>
+
+namespace nibrig::rig {
+
+void check_study_stimuli(const model::design::ToolSounds& sounds,
+                         const std::vector<model::study::Stimulus>& stimuli) {
+  for (const auto& s : stimuli) {
+    try {
+      sounds.check(s.tool, s.surface);
+    } catch (const std::exception& e) {
+      throw std::invalid_argument("stimulus '" + s.name + "': " + e.what());
+    }
+  }
+}
+
+std::vector<model::design::ToolSound> study_sounds(
+    model::design::ToolSounds& sounds, const std::vector<model::study::Stimulus>& stimuli,
+    const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<model::design::ToolSound> made;
+  for (const auto& s : stimuli) {
+    made.push_back(sounds.sound(s.tool, s.surface));
+    if (progress) progress(made.size(), stimuli.size());
+  }
+  return made;
+}
+
+std::unique_ptr<rt::StrokeSource> ActuatorPresenter::study_sweep() {
+  return std::make_unique<rt::SweepStroke>();
+}
+
+ActuatorPresenter::ActuatorPresenter(playback::LiveAudition& audition,
+                                     std::vector<model::design::ToolSound> sounds,
+                                     StrokeMaker stroke, std::uint64_t seed)
+    : audition_(audition), sounds_(std::move(sounds)), stroke_(std::move(stroke)), seed_(seed) {
+  if (audition_.names().size() < 3)
+    throw std::invalid_argument("the actuator's audition needs three slots (reference, A, B)");
+}
+
+void ActuatorPresenter::prepare(const model::study::PlannedTrial& planned) {
+  const std::size_t stimuli[3] = {planned.trial.reference, planned.trial.left, planned.trial.right};
+  for (std::size_t slot = 0; slot < 3; ++slot) {
+    const model::design::ToolSound& s = sounds_.at(stimuli[slot]);
+    // A seed per trial and slot: the forcing noise is not the same sample for sample in every trial.
+    audition_.load(slot, {s.name, s.modal, s.spectrum}, seed_ + 3 * stimuli[slot] + slot);
+  }
+}
+
+void ActuatorPresenter::present(model::study::Role role) {
+  const std::size_t slot = role == model::study::Role::reference ? 0
+                           : role == model::study::Role::left    ? 1
+                                                                  : 2;
+  audition_.select(slot);
+  audition_.attach(stroke_());
+}
+
+void ActuatorPresenter::pause() { audition_.set_contact(0.0, 0.0); }
+
+}  // namespace nibrig::rig
