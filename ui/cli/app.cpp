@@ -68,6 +68,7 @@ int run(int argc, char** argv) {
   add_render_command(app, global);
   add_audio_commands(app, global);
   add_rig_command(app, global);
+  add_experiment_command(app, global);
   add_demo_command(app, global);
   add_global_options(app, global);
 

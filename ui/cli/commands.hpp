@@ -24,6 +24,7 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 
 // Threads to use for parallel work: the --threads option, or the number of cores.

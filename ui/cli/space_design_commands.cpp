@@ -6,13 +6,13 @@
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/synthetic_study.hpp"
 #include "model/space/trial_plan.hpp"
+#include "model/study/stimulus_list.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
@@ -37,26 +37,6 @@ void write_recovery_chart(const std::vector<space::DimensionRecovery>& rows,
                           100 * (r.probability_error.mean + r.probability_error.sd),
                           "probability error"});
   report::write_interval_chart(chart, png);
-}
-
-// One stimulus name per line; blank lines and lines starting with '#' are skipped.
-std::vector<std::string> read_stimulus_list(const std::filesystem::path& file) {
-  model::io::TextLineReader reader(file);
-  std::vector<std::string> names;
-  std::set<std::string> seen;
-  std::string line;
-  while (reader.next(line)) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const std::string name = line.substr(first, line.find_last_not_of(" \t") - first + 1);
-    if (!seen.insert(name).second)
-      throw model::io::FormatError(file, model::io::line_place(reader.line_number()),
-                                   "stimulus '" + name + "' is listed twice");
-    names.push_back(name);
-  }
-  if (names.size() < 3)
-    throw model::io::FormatError(file, "", "expected at least 3 stimulus names, one per line");
-  return names;
 }
 
 }  // namespace
@@ -147,7 +127,7 @@ void run_space_synth(const SpaceSynthOptions& o, unsigned threads) {
 void run_space_plan(const SpacePlanOptions& o) {
   space::TrialList list;
   if (o.stage == 1) {
-    list.stimuli = read_stimulus_list(o.input);
+    list.stimuli = model::study::read_stimulus_names(o.input);
     list.trials = space::plan_all_triplets(list.stimuli.size(), o.repetitions ? o.repetitions : 2,
                                            o.seed, o.fraction);
   } else {
