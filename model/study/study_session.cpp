@@ -71,27 +71,24 @@ void check_session(const SessionSettings& s) {
   }
 }
 
-SessionResult run_session(const SessionSettings& s, Presenter& presenter, Respondent& respondent) {
-  check_session(s);
-  const StudyDefinition definition = read_study_file(s.study / kStudyFile);
-  const std::vector<std::string> names = names_of(definition);
-  const std::filesystem::path folder = participant_folder(s.study, s.participant);
+StudySession::StudySession(const SessionSettings& settings, Presenter& presenter)
+    : settings_(settings), presenter_(presenter) {
+  check_session(settings_);
+  definition_ = read_study_file(settings_.study / kStudyFile);
+  names_ = names_of(definition_);
+  const std::filesystem::path folder = participant_folder(settings_.study, settings_.participant);
   const std::filesystem::path responses = folder / kResponsesFile;
-  SessionResult result;
-
-  ParticipantRecord record;
-  if (s.resume) {
-    record = read_participant_file(folder / kParticipantFile);
-  } else {
-    record = {s.participant, s.seed.value_or(seed_of_participant(s.participant)), s.respondent,
-              io::now_utc_iso8601()};
-  }
-  TrialSequence sequence(definition, record.seed, s.threads);
-  if (s.resume && std::filesystem::exists(responses)) {
-    ResponseFile logged = read_response_file(responses, names);
-    result.warnings = logged.warnings;
+  if (settings_.resume)
+    record_ = read_participant_file(folder / kParticipantFile);
+  else
+    record_ = {settings_.participant, settings_.seed.value_or(seed_of_participant(settings_.participant)),
+               settings_.respondent, io::now_utc_iso8601()};
+  sequence_ = std::make_unique<TrialSequence>(definition_, record_.seed, settings_.threads);
+  if (settings_.resume && std::filesystem::exists(responses)) {
+    ResponseFile logged = read_response_file(responses, names_);
+    result_.warnings = logged.warnings;
     for (const LoggedResponse& r : logged.responses) {
-      const auto planned = sequence.next();
+      const auto planned = sequence_->next();
       const bool same = planned && planned->practice == r.practice &&
                         planned->trial.reference == r.planned.reference &&
                         planned->trial.left == r.planned.left &&
@@ -100,62 +97,99 @@ SessionResult run_session(const SessionSettings& s, Presenter& presenter, Respon
       if (!same)
         throw io::FormatError(responses, "trial " + std::to_string(r.trial),
                               planned ? "is not the trial the study's plan gives with seed " +
-                                            std::to_string(record.seed) +
+                                            std::to_string(record_.seed) +
                                             " (another study, seed or plan?)"
                                       : "lies beyond the end of the study's plan");
-      sequence.record(r.chosen);
+      sequence_->record(r.chosen);
+      if (!r.practice) ++main_done_;
     }
-    result.resumed_at = logged.responses.size();
+    result_.resumed_at = logged.responses.size();
   }
+  texts_ = read_study_texts(settings_.study);
+}
 
-  const StudyTexts texts = read_study_texts(s.study);
-  if (!respondent.agree(texts)) {
-    result.declined = true;
-    return result;
-  }
+StudySession::~StudySession() = default;
+
+void StudySession::begin() {
+  if (log_) return;
+  const std::filesystem::path folder = participant_folder(settings_.study, settings_.participant);
   std::filesystem::create_directories(folder);
-  if (!s.resume) write_participant_file(folder / kParticipantFile, record);
-  ResponseLog log(responses, names);
-  if (log.removed_cut_off_line() && result.warnings.empty())
-    result.warnings.push_back(responses.string() + ": a cut-off last line was removed");
+  if (!settings_.resume) write_participant_file(folder / kParticipantFile, record_);
+  log_ = std::make_unique<ResponseLog>(folder / kResponsesFile, names_);
+  if (log_->removed_cut_off_line() && result_.warnings.empty())
+    result_.warnings.push_back((folder / kResponsesFile).string() + ": a cut-off last line was removed");
+  prepare_current();
+}
 
-  std::size_t main_done = 0;
-  for (const auto& t : sequence.trials()) main_done += t.practice ? 0 : 1;
-  while (const auto planned = sequence.next()) {
-    presenter.prepare(*planned);
-    std::string plays;
-    const auto play = [&](Role role) {
-      plays.push_back(static_cast<char>(role));
-      presenter.present(role);
-    };
-    TrialPrompt prompt{sequence.answered() + 1, sequence.expected_at_most(), *planned,
-                       &definition.stimuli[planned->trial.reference],
-                       &definition.stimuli[planned->trial.left],
-                       &definition.stimuli[planned->trial.right]};
-    const auto start = std::chrono::steady_clock::now();
-    const Answer answer = respondent.answer(prompt, play);
-    const double measured =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    presenter.pause();
-    if (answer.choice == space::Choice::none) return result;  // stopped: this trial is not kept
-    LoggedResponse r;
-    r.trial = prompt.number;
-    r.practice = planned->practice;
-    r.planned = planned->trial;
-    r.chosen = answer.choice;
-    r.response_s = answer.response_s.value_or(measured);
-    r.plays = plays;
-    r.answered_utc = io::now_utc_iso8601();
-    log.append(r);
-    sequence.record(answer.choice);
-    ++result.answered;
-    if (!planned->practice) ++main_done;
-    if (!planned->practice && definition.break_every > 0 && main_done % definition.break_every == 0 &&
-        sequence.next())
-      respondent.rest(sequence.answered(), sequence.expected_at_most());
+void StudySession::prepare_current() {
+  plays_.clear();
+  result_.complete = !sequence_->next().has_value();
+  if (!result_.complete) presenter_.prepare(*sequence_->next());
+  trial_start_ = std::chrono::steady_clock::now();
+}
+
+std::optional<TrialPrompt> StudySession::current() const {
+  if (!log_) return std::nullopt;
+  const auto planned = sequence_->next();
+  if (!planned) return std::nullopt;
+  return TrialPrompt{sequence_->answered() + 1, sequence_->expected_at_most(), *planned,
+                     &definition_.stimuli[planned->trial.reference],
+                     &definition_.stimuli[planned->trial.left],
+                     &definition_.stimuli[planned->trial.right]};
+}
+
+void StudySession::play(Role role) {
+  if (!current()) throw std::logic_error("no trial to play: the session has not begun or is complete");
+  plays_.push_back(static_cast<char>(role));
+  presenter_.present(role);
+}
+
+bool StudySession::answer(space::Choice choice, std::optional<double> response_s) {
+  const auto prompt = current();
+  if (!prompt) throw std::logic_error("no trial waits for an answer");
+  if (choice == space::Choice::none) throw std::invalid_argument("an answer is left or right");
+  const double measured =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - trial_start_).count();
+  presenter_.pause();
+  LoggedResponse r;
+  r.trial = prompt->number;
+  r.practice = prompt->planned.practice;
+  r.planned = prompt->planned.trial;
+  r.chosen = choice;
+  r.response_s = response_s.value_or(measured);
+  r.plays = plays_;
+  r.answered_utc = io::now_utc_iso8601();
+  log_->append(r);
+  sequence_->record(choice);
+  ++result_.answered;
+  if (!r.practice) ++main_done_;
+  prepare_current();
+  return !r.practice && definition_.break_every > 0 && main_done_ % definition_.break_every == 0 &&
+         !result_.complete;
+}
+
+bool StudySession::complete() const { return result_.complete; }
+
+SessionResult run_session(const SessionSettings& settings, Presenter& presenter,
+                          Respondent& respondent) {
+  StudySession session(settings, presenter);
+  if (!respondent.agree(session.texts())) {
+    SessionResult declined = session.result();
+    declined.declined = true;
+    return declined;
   }
-  result.complete = true;
-  return result;
+  session.begin();
+  while (const auto prompt = session.current()) {
+    const Answer a = respondent.answer(*prompt, [&session](Role role) { session.play(role); });
+    if (a.choice == space::Choice::none) {
+      presenter.pause();
+      return session.result();  // stopped: this trial is not kept
+    }
+    if (session.answer(a.choice, a.response_s))
+      respondent.rest(session.result().resumed_at + session.result().answered,
+                      session.current() ? session.current()->expected_at_most : 0);
+  }
+  return session.result();
 }
 
 }  // namespace nibrig::model::study

@@ -5,7 +5,9 @@
 // from (the actuator, the rig, nothing) and who answers are the two interfaces below.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <memory>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -105,10 +107,55 @@ struct SessionResult {
   std::vector<std::string> warnings;  // a cut-off line dropped, ...
 };
 
-// Runs (or resumes) one participant until the plan is complete or the respondent stops. A resumed
-// session replays the logged answers through the plan and throws io::FormatError naming the file
-// and line where a logged trial is not the one the plan gives (another study or seed). Each answer
-// is on disk before the next trial is prepared.
+// One participant's session step by step, for a face that drives it from its own loop (the
+// panel's frames): constructed, it has checked the session and replayed a resumed log; begin()
+// after the consent; then for each trial current(), play() as often as asked, answer(). Each answer
+// is on disk before answer() returns and the next trial is prepared (its stimuli loaded through the
+// presenter). Throws what check_session throws; on resume io::FormatError naming the responses file
+// and the trial where a logged trial is not the one the plan gives (another study or seed).
+class StudySession {
+ public:
+  StudySession(const SessionSettings& settings, Presenter& presenter);
+  ~StudySession();
+  StudySession(const StudySession&) = delete;
+  StudySession& operator=(const StudySession&) = delete;
+
+  const StudyDefinition& definition() const noexcept { return definition_; }
+  const StudyTexts& texts() const noexcept { return texts_; }
+  // Writes the participant's file (a new one), opens the log, prepares the first trial.
+  void begin();
+  bool begun() const noexcept { return log_ != nullptr; }
+  // The trial waiting for its answer; nullopt once the plan is complete (or before begin()).
+  std::optional<TrialPrompt> current() const;
+  // Presents one of the current trial's stimuli (recorded in its plays).
+  void play(Role role);
+  // Records the answer to the current trial; response_s: measured from the trial's start when not
+  // given. Returns true when a rest is due before the next trial.
+  bool answer(space::Choice choice, std::optional<double> response_s = std::nullopt);
+  // The current trial's plays so far ("RAB").
+  const std::string& plays() const noexcept { return plays_; }
+  bool complete() const;
+  const SessionResult& result() const noexcept { return result_; }
+
+ private:
+  void prepare_current();
+
+  SessionSettings settings_;
+  Presenter& presenter_;
+  StudyDefinition definition_;
+  std::vector<std::string> names_;
+  StudyTexts texts_;
+  ParticipantRecord record_;
+  std::unique_ptr<TrialSequence> sequence_;
+  std::unique_ptr<ResponseLog> log_;
+  SessionResult result_;
+  std::size_t main_done_ = 0;
+  std::string plays_;
+  std::chrono::steady_clock::time_point trial_start_;
+};
+
+// Runs (or resumes) one participant until the plan is complete or the respondent stops: a
+// StudySession driven by a Respondent. Throws as StudySession.
 SessionResult run_session(const SessionSettings& settings, Presenter& presenter,
                           Respondent& respondent);
 
