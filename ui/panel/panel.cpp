@@ -13,6 +13,7 @@
 #include "model/io/user_cache.hpp"
 #include "model/space/space_fit_file.hpp"
 #include "ui/panel/devices_view.hpp"
+#include "ui/panel/experiment_view.hpp"
 #include "ui/panel/pad_view.hpp"
 #include "ui/panel/rig_view.hpp"
 #include "ui/panel/widgets.hpp"
@@ -21,7 +22,8 @@ namespace nibrig::ui::panel {
 
 namespace {
 
-constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices};
+constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices,
+                           View::experiment};
 
 std::filesystem::path sessions_folder() {
   const char* data = std::getenv("XDG_DATA_HOME");
@@ -59,6 +61,7 @@ const char* view_name(View view) {
     case View::rig: return "rig";
     case View::pad: return "pad";
     case View::devices: return "devices";
+    case View::experiment: return "experiment";
   }
   return "space";
 }
@@ -76,6 +79,12 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   pad_view_ = std::make_unique<PadView>(*audio_);
   design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);
+  experiment_view_ = std::make_unique<ExperimentView>(*audio_, [this] {
+    model::design::ToolSoundOptions options;
+    options.catalog = setup_.catalog;
+    options.forcing_model = setup_.forcing;
+    return options;
+  });
   if (setup_.device) {
     devices_view_->set_request(*setup_.device);
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
@@ -90,6 +99,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
 
 Panel::~Panel() {
   // The views that play stop using the audio before it goes.
+  experiment_view_.reset();
   design_view_.reset();
   retired_designs_.clear();
   pad_view_.reset();
@@ -257,7 +267,7 @@ void Panel::handle_keys() {
   // ImGui 1.86's GLFW back end indexes io.KeysDown by GLFW's key codes.
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.KeyCtrl) {
-    for (int k = 0; k < 5; ++k)
+    for (int k = 0; k < 6; ++k)
       if (pressed(GLFW_KEY_1 + k)) show(kViews[k]);
     if (pressed(GLFW_KEY_O))
       files_.open("Open a space", FileDialog::Mode::open, {".json"}, folder_of(space_file_),
@@ -277,6 +287,7 @@ bool Panel::settled() const {
     case View::space: return !space_job_ && !audio_->making_sounds();
     case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
     case View::devices: return devices_view_->listing().has_value();
+    case View::experiment: return experiment_view_->stage() != ExperimentView::Stage::preparing;
     case View::design: return !space_job_ && design_view_->ready() && !design_view_->measuring_error();
     case View::pad: return !file_job_;
     default: return true;
@@ -391,8 +402,20 @@ void Panel::draw_status() {
 
 void Panel::draw() {
   poll_jobs();
-  handle_keys();
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  if (experiment_view_->fullscreen()) {
+    // A participant in session sees the study and nothing else: no menu, tabs, status or keys of
+    // the other views.
+    ImGui::SetNextWindowPos(viewport->WorkPos);
+    ImGui::SetNextWindowSize(viewport->WorkSize);
+    ImGui::Begin("nibrig-experiment", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings);
+    experiment_view_->draw();
+    ImGui::End();
+    return;
+  }
+  handle_keys();
   ImGui::SetNextWindowPos(viewport->WorkPos);
   ImGui::SetNextWindowSize(viewport->WorkSize);
   ImGui::Begin("nibrig-panel", nullptr,
@@ -412,6 +435,7 @@ void Panel::draw() {
           case View::rig: rig_view_->draw(); break;
           case View::pad: pad_view_->draw(); break;
           case View::devices: devices_view_->draw(); break;
+          case View::experiment: experiment_view_->draw(); break;
         }
         ImGui::EndChild();
         ImGui::EndTabItem();
@@ -430,7 +454,7 @@ void Panel::draw() {
           "A, B, C       switch between the tools compared\n"
           "Enter         play the chosen tools again\n"
           "Space         stop\n"
-          "Ctrl+1 ... 5  space, design, rig, pad, devices\n"
+          "Ctrl+1 ... 6  space, design, rig, pad, devices, experiment\n"
           "Ctrl+O        open a space\n"
           "(not while a text field has the keyboard)");
     }

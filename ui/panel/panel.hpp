@@ -1,4 +1,4 @@
-// nibrig-panel's contents: the five views as tabs of one full-window ImGui window, an error line
+// nibrig-panel's contents: the six views as tabs of one full-window ImGui window, an error line
 // that shows what went wrong in a file or a device (never a crash), the files a person opens and
 // saves (spaces, catalogs, forcing models, designs; a space fitted from judgments), and the keys.
 // Everything here runs on the UI thread and only draws and dispatches: loading, fitting, making
@@ -26,8 +26,9 @@ namespace nibrig::ui::panel {
 class RigView;
 class PadView;
 class DevicesView;
+class ExperimentView;
 
-enum class View { space, design, rig, pad, devices };
+enum class View { space, design, rig, pad, devices, experiment };
 std::optional<View> view_named(std::string_view name);
 const char* view_name(View view);
 
@@ -81,7 +82,7 @@ class Panel {
   SpaceFitRequest& fit_request() { return fit_request_; }
 
   // The keys (also listed under Help): A, B, C switch between the tools compared; space stops what
-  // plays or plays the chosen tools again; ctrl+1…5 show a view; ctrl+O opens a space. Not while
+  // plays or plays the chosen tools again; ctrl+1…6 show a view; ctrl+O opens a space. Not while
   // a text field has the keyboard.
   void handle_keys();
   // The status line under the views: the device and its state, what plays, the stroke.
@@ -94,6 +95,7 @@ class Panel {
   PadView& pad_view() { return *pad_view_; }
   DevicesView& devices_view() { return *devices_view_; }
   const DevicesView& devices_view() const { return *devices_view_; }
+  ExperimentView& experiment_view() { return *experiment_view_; }
 
  private:
   void load_space(const std::filesystem::path& file);
@@ -116,6 +118,7 @@ class Panel {
   std::unique_ptr<RigView> rig_view_;
   std::unique_ptr<PadView> pad_view_;
   std::unique_ptr<DevicesView> devices_view_;
+  std::unique_ptr<ExperimentView> experiment_view_;
   std::unique_ptr<BackgroundJob<LoadedSpace>> space_job_;
   std::unique_ptr<BackgroundJob<Apply>> file_job_;
   std::unique_ptr<DesignView> design_view_;

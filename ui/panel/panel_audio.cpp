@@ -94,6 +94,7 @@ void PanelAudio::start_pending() {
 void PanelAudio::poll() {
   audition_.pump();  // what the engine's queue could not take last frame
   std::erase_if(retired_, [](const auto& job) { return job->done(); });
+  if (lent_) return;
   if (!job_ || !job_->done()) return;
   const std::string failed = job_->error();
   auto made = job_->take_result();
@@ -155,5 +156,18 @@ void PanelAudio::contact(double speed_m_s, double force_n) {
 }
 
 void PanelAudio::stop() { contact(0.0, 0.0); }
+
+playback::LiveAudition& PanelAudio::lend_audition() {
+  stop();
+  if (job_) {
+    job_->cancel();
+    retired_.push_back(std::move(job_));
+  }
+  pending_.reset();
+  requested_.clear();
+  playing_.clear();
+  lent_ = true;
+  return audition_;
+}
 
 }  // namespace nibrig::ui::panel

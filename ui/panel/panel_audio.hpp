@@ -67,6 +67,13 @@ class PanelAudio {
   const std::string& error() const { return error_; }
   std::string stroke_description() const { return stroke_description_; }
 
+  // Lends the audition to the experiment view, which loads and plays a trial's three stimuli in
+  // its slots while a participant is in session: what played stops and sounds still being made are
+  // dropped, and nothing is loaded again until it is given back.
+  playback::LiveAudition& lend_audition();
+  void give_back_audition() { lent_ = false; }
+  bool audition_lent() const { return lent_; }
+
   // The catalog the sounds come from (read when constructed).
   const model::io::Catalog& catalog() const { return sounds_->catalog(); }
   // Sounds come from `sounds` from now on (another catalog or forcing model, opened in the window);
@@ -91,6 +98,7 @@ class PanelAudio {
   std::string stroke_description_;
   std::string error_;
   std::uint64_t seed_ = 1;
+  bool lent_ = false;
 };
 
 }  // namespace nibrig::ui::panel

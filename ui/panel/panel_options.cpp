@@ -21,7 +21,7 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", o.screenshot, "render one view into this PNG and exit");
   app.add_option("--view", view, "the view shown first (space, design, rig, pad, devices)")
-      ->check(CLI::IsMember({"space", "design", "rig", "pad", "devices"}));
+      ->check(CLI::IsMember({"space", "design", "rig", "pad", "devices", "experiment"}));
   app.add_option("--frames", o.frames, "frames drawn before the screenshot, once the view has loaded")
       ->check(cli::whole_in_range(1, 100000, "frames"));
   app.add_option("--settle-timeout", o.settle_timeout_s,

@@ -1,0 +1,73 @@
+// View 6, the experiment: one participant's session of a triplet study in the window
+// (model::study::StudySession, as `nibrig experiment run` drives it at a terminal). The
+// experimenter fills in the study folder, the stimulus list and the participant ID; the stimuli's
+// sounds are made in the background; then the window shows the participant nothing but the study
+// (the panel hides its menu, tabs and status): instructions and consent, each trial's Reference, A
+// and B to feel as often as wanted (buttons or keys R, A, B), the answer (1, 2), rests, the end.
+// Every answer is on disk when its button is pressed; Stop (Esc) ends the session, Resume continues.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/design/tool_sound.hpp"
+#include "model/study/study_session.hpp"
+#include "rig/study_actuator.hpp"
+#include "ui/panel/background_job.hpp"
+#include "ui/panel/panel_audio.hpp"
+
+namespace nibrig::ui::panel {
+
+class ExperimentView {
+ public:
+  // sound_options: where the stimuli's sounds come from (the panel's catalog and forcing model).
+  ExperimentView(PanelAudio& audio, std::function<model::design::ToolSoundOptions()> sound_options);
+  ~ExperimentView();
+
+  enum class Stage { setup, preparing, consent, trial, rest, done };
+  Stage stage() const { return stage_; }
+  // While a participant is in session (consent to the end): the panel shows nothing else.
+  bool fullscreen() const { return stage_ != Stage::setup && stage_ != Stage::preparing; }
+  void draw();
+
+  // The setup form, as the experimenter fills it in.
+  struct Form {
+    std::string study, stimuli, participant;
+    bool adaptive = false;
+    int practice = 3, break_every = 100;
+    bool resume = false;
+  };
+  Form& form() { return form_; }
+  // What the buttons and keys do.
+  void start();                      // setup → preparing (errors stay in setup, shown)
+  void agree(bool yes);              // consent → trial, or back to setup
+  void play(model::study::Role role);
+  void answer(model::space::Choice choice);
+  void go_on();                      // rest → trial
+  void stop();                       // any stage → setup; the trial in progress is not kept
+  // Called every frame by draw(); tests call it while they wait for the sounds.
+  void poll();
+
+  const std::string& error() const { return error_; }
+  const model::study::StudySession* session() const { return session_.get(); }
+
+ private:
+  void draw_setup();
+  void draw_participant();
+  void handle_keys();
+
+  PanelAudio& audio_;
+  std::function<model::design::ToolSoundOptions()> sound_options_;
+  Form form_;
+  Stage stage_ = Stage::setup;
+  std::string error_;
+  std::unique_ptr<BackgroundJob<std::vector<model::design::ToolSound>>> sounds_job_;
+  std::unique_ptr<rig::ActuatorPresenter> presenter_;
+  std::unique_ptr<model::study::StudySession> session_;
+  char study_text_[512] = "", stimuli_text_[512] = "", participant_text_[65] = "";
+};
+
+}  // namespace nibrig::ui::panel
