@@ -99,7 +99,8 @@ rig::RigRequest turntable_request(const ExperimentRunOptions& o, const study::St
     r.accelerometer_m_s2_per_full_scale = o.accelerometer;
   } else {
     r.kind = rig::RigKind::simulated;
-    r.speedup = o.rig_speedup;
+    // A simulated participant does not wait for the turntable; a person feels it in real time.
+    r.speedup = o.rig_speedup.value_or(o.simulate.empty() ? 1.0 : 0.0);
   }
   r.tool = s.tool;
   r.surface = s.surface;
@@ -299,9 +300,10 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
       ->check(whole_in_range(1, 10, "a number of dimensions"));
   run->add_flag("--resume", o->resume, "Continue the participant's session where it stopped");
   run->add_flag("--simulated-rig", o->simulated_rig, "Rig mode: the simulated rig, each stimulus simulated");
-  run->add_option("--rig-speedup", o->rig_speedup,
-                  "Simulated rig: 1 = real time (default), k = k times faster, 0 = as fast as it "
-                  "computes")
+  run->add_option_function<double>(
+         "--rig-speedup", [o](const double& k) { o->rig_speedup = k; },
+         "Simulated rig: 1 = real time, k = k times faster, 0 = as fast as it computes (default: "
+         "1, and 0 with --simulate)")
       ->check(in_range(0, 1e6, "a speed-up factor"));
   run->add_option_function<std::string>(
          "--usb", [o](const std::string& serial) { o->usb = serial; },

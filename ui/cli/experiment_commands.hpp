@@ -23,7 +23,7 @@ struct ExperimentRunOptions {
   std::size_t trials = 0, practice = 3, break_every = 100, dims = 2;
   bool resume = false;
   bool simulated_rig = false;
-  double rig_speedup = 1.0;
+  std::optional<double> rig_speedup;  // none: real time for a person, as fast as it computes with --simulate
   std::optional<std::string> usb;  // rig mode with the USB controller ("" = the only one)
   std::string input_api, input;   // its accelerometer's audio input
   unsigned input_channel = 1;

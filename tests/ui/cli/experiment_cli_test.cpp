@@ -126,13 +126,13 @@ TEST(ExperimentCli, ASimulatedParticipantsTwoStageRunOnTheActuatorRecoversItsSpa
 }
 
 TEST(ExperimentCli, ASimulatedParticipantOnTheSimulatedRigRecoversItsSpaceToo) {
-  // Each play runs the study's 3 s sweep on a simulated rig (as fast as it computes, about 35 ms
-  // in Release): a smaller study keeps it to a minute under the sanitizers.
+  // Each play runs the study's 3 s sweep on a simulated rig (with --simulate as fast as it
+  // computes, about 35 ms in Release): a smaller study keeps it to a minute under the sanitizers.
   const auto dir = nibrig::test::scratch_dir("cli_experiment_rig");
   const ExperimentTruth truth = make_truth(dir, 6, 2);
   ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"experiment", "run", "--stimuli", truth.stimuli.string(), "--mode", "rig",
-                     "--simulated-rig", "--rig-speedup", "0", "--trials", "100", "--practice", "0",
+                     "--simulated-rig", "--trials", "100", "--practice", "0",
                      "--participant", "P01", "--simulate", truth.space.string(), "-o",
                      (dir / "study").string()}),
             0);
