@@ -17,16 +17,19 @@ const char* role_words(model::study::Role role) {
 }  // namespace
 
 TurntablePresenter::TurntablePresenter(std::vector<model::study::Stimulus> stimuli, RigOpener open,
-                                       OperatorPrompt tell, SpeedProfile profile)
+                                       OperatorPrompt mount, OperatorNotice notice,
+                                       SpeedProfile profile)
     : stimuli_(std::move(stimuli)),
       open_(std::move(open)),
-      tell_(std::move(tell)),
+      mount_(std::move(mount)),
+      notice_(std::move(notice)),
       profile_(std::move(profile)) {}
 
 void TurntablePresenter::prepare(const model::study::PlannedTrial& planned) {
   trial_ = planned;
   const auto& t = planned.trial;
-  tell_("trial with reference " + model::study::pairing_of(stimuli_[t.reference]) + ", A " +
+  if (!notice_) return;
+  notice_("trial with reference " + model::study::pairing_of(stimuli_[t.reference]) + ", A " +
         model::study::pairing_of(stimuli_[t.left]) + ", B " +
         model::study::pairing_of(stimuli_[t.right]) + ": have them at hand");
 }
@@ -39,7 +42,7 @@ void TurntablePresenter::present(model::study::Role role) {
                                                                    : t.right;
   const model::study::Stimulus& s = stimuli_[index];
   if (mounted_ != index) {
-    tell_("mount " + s.tool + " on " + s.surface + " (" + role_words(role) + ")");
+    mount_("mount " + s.tool + " on " + s.surface + " (" + role_words(role) + ")");
     mounted_ = index;
     ++mounts_;
   }

@@ -22,11 +22,16 @@ class TurntablePresenter final : public model::study::Presenter {
   // The rig with this stimulus mounted: the simulated rig simulates it, the USB rig has whatever
   // the operator mounted.
   using RigOpener = std::function<std::unique_ptr<Rig>(const model::study::Stimulus&)>;
-  // Tells the operator something and returns once they are done (a terminal waits for Enter).
+  // Tells the operator what to mount and returns once they have (a terminal waits for Enter, the
+  // panel for a button); called on the thread that presents.
   using OperatorPrompt = std::function<void(const std::string& message)>;
+  // Tells the operator a trial's three tools; must not wait (it is called where the trial is
+  // prepared, the panel's UI thread among them).
+  using OperatorNotice = std::function<void(const std::string& message)>;
 
   TurntablePresenter(std::vector<model::study::Stimulus> stimuli, RigOpener open,
-                     OperatorPrompt tell, SpeedProfile profile = study_sweep(3.0));
+                     OperatorPrompt mount, OperatorNotice notice = {},
+                     SpeedProfile profile = study_sweep(3.0));
 
   void prepare(const model::study::PlannedTrial& trial) override;
   // Runs the profile once with the stimulus mounted. Throws std::runtime_error naming the rig and
@@ -41,7 +46,8 @@ class TurntablePresenter final : public model::study::Presenter {
  private:
   std::vector<model::study::Stimulus> stimuli_;
   RigOpener open_;
-  OperatorPrompt tell_;
+  OperatorPrompt mount_;
+  OperatorNotice notice_;
   SpeedProfile profile_;
   std::optional<model::study::PlannedTrial> trial_;
   std::optional<std::size_t> mounted_;

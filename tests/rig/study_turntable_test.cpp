@@ -60,8 +60,8 @@ study::SessionSettings turntable_session(const std::filesystem::path& folder) {
 TEST(StudyTurntable, TellsTheOperatorWhatToMountAndRunsASweepForEveryStimulusAskedFor) {
   const auto folder = study::test::make_study(nibrig::test::scratch_dir("study_turntable"), turntable_study());
   std::vector<std::string> told;
-  TurntablePresenter presenter(turntable_study().stimuli, simulated_rig_of,
-                               [&](const std::string& m) { told.push_back(m); });
+  const auto tell = [&](const std::string& m) { told.push_back(m); };
+  TurntablePresenter presenter(turntable_study().stimuli, simulated_rig_of, tell, tell);
   // Trial 1 asks for the reference twice in a row (mounted once), trial 2 alternates.
   ScriptedTurntableParticipant participant({"RRAB", "RARB"});
   ASSERT_TRUE(study::run_session(turntable_session(folder), presenter, participant).complete);

@@ -204,14 +204,18 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
   std::unique_ptr<playback::LiveAudition> audition;
   std::unique_ptr<study::Presenter> presenter;
   if (on_rig) {
-    rig::TurntablePresenter::OperatorPrompt tell = [&person](const std::string& message) {
+    // A person's operator confirms each mount with Enter; a simulated study only says it.
+    const rig::TurntablePresenter::OperatorPrompt mount = [&person](const std::string& message) {
       std::printf("operator: %s%s\n", message.c_str(), person ? " (Enter when done)" : "");
       if (person) person->wait_for_enter();
+    };
+    const rig::TurntablePresenter::OperatorNotice notice = [](const std::string& message) {
+      std::printf("operator: %s\n", message.c_str());
     };
     presenter = std::make_unique<rig::TurntablePresenter>(
         definition.stimuli,
         [&o, &sounds](const study::Stimulus& s) { return rig::open_rig(turntable_request(o, s), sounds); },
-        tell);
+        mount, notice);
   } else if (device) {
     auto bar = progress_bar("making the stimuli's sounds");
     std::vector<model::design::ToolSound> made = rig::study_sounds(sounds, definition.stimuli, bar);

@@ -14,11 +14,32 @@ namespace nibrig::ui::panel {
 namespace study = model::study;
 
 ExperimentView::ExperimentView(PanelAudio& audio,
-                               std::function<model::design::ToolSoundOptions()> sound_options)
-    : audio_(audio), sound_options_(std::move(sound_options)) {}
+                               std::function<model::design::ToolSoundOptions()> sound_options,
+                               RigChoiceRequest rig)
+    : audio_(audio), sound_options_(std::move(sound_options)), rig_(std::move(rig)) {}
 
 ExperimentView::~ExperimentView() {
+  stop();
+  retired_.clear();  // joins a sweep still running (at most its 3 s)
   if (audio_.audition_lent()) audio_.give_back_audition();
+}
+
+std::string ExperimentView::operator_request() const {
+  std::lock_guard lock(desk_->mutex);
+  return desk_->done ? std::string() : desk_->request;
+}
+
+std::string ExperimentView::operator_notice() const {
+  std::lock_guard lock(desk_->mutex);
+  return desk_->notice;
+}
+
+void ExperimentView::operator_done() {
+  {
+    std::lock_guard lock(desk_->mutex);
+    desk_->done = true;
+  }
+  desk_->changed.notify_all();
 }
 
 void ExperimentView::start() {
@@ -35,6 +56,9 @@ void ExperimentView::start() {
       study::StudyDefinition d;
       d.stimuli = study::read_stimulus_list(form_.stimuli);
       d.plan = form_.adaptive ? study::PlanKind::adaptive : study::PlanKind::two_stage;
+      d.mode = form_.mode == 1   ? study::StudyMode::validation
+               : form_.mode == 2 ? study::StudyMode::rig
+                                 : study::StudyMode::actuator;
       d.practice = static_cast<std::size_t>(form_.practice);
       d.break_every = static_cast<std::size_t>(form_.break_every);
       if (std::filesystem::exists(std::filesystem::path(form_.study) / study::kStudyFile))
@@ -45,19 +69,29 @@ void ExperimentView::start() {
                                   model::io::asset("experiment/consent.txt"));
     }
     study::check_session(settings);
-    const std::vector<study::Stimulus> stimuli =
-        study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile).stimuli;
+    const study::StudyDefinition d =
+        study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
+    const bool on_rig = d.mode == study::StudyMode::rig;
+    if (on_rig) {
+      if (!rig_) throw std::invalid_argument("this panel has no rig to run a study in rig mode");
+      rig_();  // refuses a rig that cannot present (the replay rig) now, in the form
+    }
     auto options = sound_options_();
     options.progress = {};
     // The sounds with a ToolSounds of its own: the panel's is busy with what the other views play.
-    sounds_job_ = std::make_unique<BackgroundJob<std::vector<model::design::ToolSound>>>(
-        "making the stimuli's sounds", [options, stimuli](JobControl& control) {
-          model::design::ToolSounds sounds(options);
-          rig::check_study_stimuli(sounds, stimuli);
-          return rig::study_sounds(sounds, stimuli, [&control](std::size_t done, std::size_t total) {
-            control.progress(static_cast<double>(done) / static_cast<double>(total));
-            control.message("made " + std::to_string(done) + " of " + std::to_string(total));
-          });
+    // The rig's simulation asks it for each stimulus it runs, on the rig's worker.
+    sounds_job_ = std::make_unique<BackgroundJob<Prepared>>(
+        "making the stimuli's sounds", [options, stimuli = d.stimuli, on_rig](JobControl& control) {
+          Prepared prepared;
+          prepared.tool_sounds = std::make_shared<model::design::ToolSounds>(options);
+          rig::check_study_stimuli(*prepared.tool_sounds, stimuli);
+          prepared.sounds = rig::study_sounds(
+              *prepared.tool_sounds, stimuli, [&control](std::size_t done, std::size_t total) {
+                control.progress(static_cast<double>(done) / static_cast<double>(total));
+                control.message("made " + std::to_string(done) + " of " + std::to_string(total));
+              });
+          if (!on_rig) prepared.tool_sounds.reset();
+          return prepared;
         });
     stage_ = Stage::preparing;
   } catch (const std::exception& e) {
@@ -66,11 +100,22 @@ void ExperimentView::start() {
 }
 
 void ExperimentView::poll() {
+  std::erase_if(retired_, [](const Retired& r) { return r.job->done(); });
+  if (stage_ == Stage::presenting && present_job_ && present_job_->done()) {
+    const std::string failed = present_job_->error();
+    present_job_.reset();
+    stage_ = Stage::trial;
+    if (!failed.empty()) {
+      stop();
+      error_ = failed;  // an unplugged rig, say: every answer before is on disk
+    }
+    return;
+  }
   if (stage_ != Stage::preparing || !sounds_job_ || !sounds_job_->done()) return;
   const std::string failed = sounds_job_->error();
-  auto sounds = sounds_job_->take_result();
+  auto prepared = sounds_job_->take_result();
   sounds_job_.reset();
-  if (!failed.empty() || !sounds) {
+  if (!failed.empty() || !prepared) {
     error_ = failed.empty() ? "making the stimuli's sounds was cancelled" : failed;
     stage_ = Stage::setup;
     return;
@@ -81,7 +126,36 @@ void ExperimentView::poll() {
     settings.participant = form_.participant;
     settings.resume = form_.resume;
     settings.respondent = "a person (the panel)";
-    presenter_ = std::make_unique<rig::ActuatorPresenter>(audio_.lend_audition(), std::move(*sounds));
+    const study::StudyDefinition d =
+        study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
+    if (d.mode == study::StudyMode::rig) {
+      desk_ = std::make_shared<OperatorDesk>();
+      const rig::RigRequest base = rig_();
+      // The worker asks and waits; Stop abandons the desk so that it stops waiting.
+      const auto mount = [desk = desk_](const std::string& message) {
+        std::unique_lock lock(desk->mutex);
+        desk->request = message;
+        desk->done = false;
+        desk->changed.wait(lock, [&] { return desk->done || desk->abandoned; });
+        if (desk->abandoned) throw std::runtime_error("stopped while the operator mounted a tool");
+      };
+      const auto notice = [desk = desk_](const std::string& message) {
+        std::lock_guard lock(desk->mutex);
+        desk->notice = message;
+      };
+      presenter_ = std::make_unique<rig::TurntablePresenter>(
+          d.stimuli,
+          [base, sounds = prepared->tool_sounds](const study::Stimulus& s) {
+            rig::RigRequest r = base;
+            r.tool = s.tool;
+            r.surface = s.surface;
+            return rig::open_rig(r, *sounds);
+          },
+          mount, notice);
+    } else {
+      presenter_ = std::make_unique<rig::ActuatorPresenter>(audio_.lend_audition(),
+                                                            std::move(prepared->sounds));
+    }
     session_ = std::make_unique<study::StudySession>(settings, *presenter_);
     stage_ = Stage::consent;
   } catch (const std::exception& e) {
@@ -109,7 +183,15 @@ void ExperimentView::agree(bool yes) {
 }
 
 void ExperimentView::play(study::Role role) {
-  if (stage_ == Stage::trial) session_->play(role);
+  if (stage_ != Stage::trial) return;
+  if (session_->definition().mode != study::StudyMode::rig) return session_->play(role);
+  // The turntable runs for seconds (and the operator mounts first): on a worker, the UI drawing on.
+  present_job_ = std::make_unique<BackgroundJob<bool>>(
+      "the turntable", [session = session_.get(), role](JobControl&) {
+        session->play(role);
+        return true;
+      });
+  stage_ = Stage::presenting;
 }
 
 void ExperimentView::answer(model::space::Choice choice) {
@@ -133,6 +215,16 @@ void ExperimentView::go_on() {
 }
 
 void ExperimentView::stop() {
+  {
+    std::lock_guard lock(desk_->mutex);
+    desk_->abandoned = true;
+  }
+  desk_->changed.notify_all();
+  if (present_job_) {
+    // The sweep ends on its own thread; its session and rig live until then.
+    retired_.push_back({std::move(presenter_), std::move(session_), desk_, std::move(present_job_)});
+  }
+  desk_ = std::make_shared<OperatorDesk>();
   if (presenter_) presenter_->pause();
   session_.reset();
   presenter_.reset();
@@ -159,14 +251,16 @@ void ExperimentView::draw_setup() {
   field("study folder", study_text_, sizeof study_text_, form_.study);
   field("stimulus list (tool/surface a line)", stimuli_text_, sizeof stimuli_text_, form_.stimuli);
   field("participant ID", participant_text_, sizeof participant_text_, form_.participant);
+  ImGui::Combo("mode", &form_.mode,
+               "actuator\0validation (designs against the first stimulus)\0rig (the rig view's rig)\0");
   ImGui::Checkbox("adaptive plan (else the paper's two stages)", &form_.adaptive);
   ImGui::InputInt("practice trials", &form_.practice);
   ImGui::InputInt("rest every N trials (0: none)", &form_.break_every);
   form_.practice = std::max(0, form_.practice);
   form_.break_every = std::max(0, form_.break_every);
   ImGui::Checkbox("resume this participant", &form_.resume);
-  ImGui::TextDisabled("Edit instructions.txt and consent.txt in the study folder. Rig mode: `nibrig "
-                      "experiment run --mode rig` at the rig's terminal.");
+  ImGui::TextDisabled("Edit instructions.txt and consent.txt in the study folder. Rig mode runs the "
+                      "simulated or USB rig chosen in the rig view.");
   if (stage_ == Stage::preparing) {
     if (progress_with_cancel("sounds", static_cast<float>(sounds_job_ ? sounds_job_->progress() : 0.0),
                              sounds_job_ ? sounds_job_->message().c_str() : ""))
@@ -217,8 +311,21 @@ void ExperimentView::draw_participant() {
     }
     return;
   }
+  if (stage_ == Stage::presenting) {
+    const std::string request = operator_request();
+    if (!request.empty()) {
+      ImGui::Text("Operator: %s", request.c_str());
+      if (ImGui::Button("Done", big)) operator_done();
+    } else {
+      ImGui::TextUnformatted("The turntable runs: draw with the tool now.");
+    }
+    if (ImGui::SmallButton("Stop for now (Esc)")) stop();
+    return;
+  }
   const auto prompt = session_->current();
   if (!prompt) return;
+  if (session_->definition().mode == study::StudyMode::rig)
+    ImGui::TextDisabled("Operator: %s", operator_notice().c_str());
   ImGui::ProgressBar(static_cast<float>(prompt->number - 1) / static_cast<float>(prompt->expected_at_most),
                      {-1.0f, 0.0f},
                      (std::string("trial ") + std::to_string(prompt->number) + " of at most " +

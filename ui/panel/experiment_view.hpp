@@ -5,9 +5,14 @@
 // (the panel hides its menu, tabs and status): instructions and consent, each trial's Reference, A
 // and B to feel as often as wanted (buttons or keys R, A, B), the answer (1, 2), rests, the end.
 // Every answer is on disk when its button is pressed; Stop (Esc) ends the session, Resume continues.
+// In rig mode the stimuli are physical tools on the turntable (the rig view's simulated or USB rig):
+// each one asked for is mounted (the window tells the operator, who confirms) and swept on a worker
+// thread while the window shows that the turntable runs; the UI thread never waits for it.
 #pragma once
 
+#include <condition_variable>
 #include <functional>
+#include <mutex>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,7 +20,9 @@
 
 #include "model/design/tool_sound.hpp"
 #include "model/study/study_session.hpp"
+#include "rig/rig_request.hpp"
 #include "rig/study_actuator.hpp"
+#include "rig/study_turntable.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
 
@@ -23,11 +30,14 @@ namespace nibrig::ui::panel {
 
 class ExperimentView {
  public:
-  // sound_options: where the stimuli's sounds come from (the panel's catalog and forcing model).
-  ExperimentView(PanelAudio& audio, std::function<model::design::ToolSoundOptions()> sound_options);
+  // sound_options: where the stimuli's sounds come from (the panel's catalog and forcing model);
+  // rig: the rig a study in rig mode runs (the rig view's choice), or why there is none.
+  using RigChoiceRequest = std::function<rig::RigRequest()>;
+  ExperimentView(PanelAudio& audio, std::function<model::design::ToolSoundOptions()> sound_options,
+                 RigChoiceRequest rig = {});
   ~ExperimentView();
 
-  enum class Stage { setup, preparing, consent, trial, rest, done };
+  enum class Stage { setup, preparing, consent, trial, presenting, rest, done };
   Stage stage() const { return stage_; }
   // While a participant is in session (consent to the end): the panel shows nothing else.
   bool fullscreen() const { return stage_ != Stage::setup && stage_ != Stage::preparing; }
@@ -36,6 +46,7 @@ class ExperimentView {
   // The setup form, as the experimenter fills it in.
   struct Form {
     std::string study, stimuli, participant;
+    int mode = 0;  // 0 actuator, 1 validation (designs against the first stimulus), 2 rig
     bool adaptive = false;
     int practice = 3, break_every = 100;
     bool resume = false;
@@ -47,6 +58,10 @@ class ExperimentView {
   void play(model::study::Role role);
   void answer(model::space::Choice choice);
   void go_on();                      // rest → trial
+  // Rig mode: what the operator is asked to do now (empty: nothing), and their confirmation.
+  std::string operator_request() const;
+  void operator_done();
+  std::string operator_notice() const;
   void stop();                       // any stage → setup; the trial in progress is not kept
   // Called every frame by draw(); tests call it while they wait for the sounds.
   void poll();
@@ -59,14 +74,38 @@ class ExperimentView {
   void draw_participant();
   void handle_keys();
 
+  // The rig's worker asks the operator through this and waits; the UI answers, never waits.
+  struct OperatorDesk {
+    mutable std::mutex mutex;
+    std::condition_variable changed;
+    std::string request, notice;
+    bool done = false, abandoned = false;
+  };
+  struct Prepared {
+    std::vector<model::design::ToolSound> sounds;
+    std::shared_ptr<model::design::ToolSounds> tool_sounds;
+  };
+  // A session stopped while the turntable ran: kept until its sweep ends on its own thread.
+  // The job is declared last so that it is destroyed (joined) first, before what it uses.
+  struct Retired {
+    std::unique_ptr<model::study::Presenter> presenter;
+    std::unique_ptr<model::study::StudySession> session;
+    std::shared_ptr<OperatorDesk> desk;
+    std::unique_ptr<BackgroundJob<bool>> job;
+  };
+
   PanelAudio& audio_;
   std::function<model::design::ToolSoundOptions()> sound_options_;
+  RigChoiceRequest rig_;
   Form form_;
   Stage stage_ = Stage::setup;
   std::string error_;
-  std::unique_ptr<BackgroundJob<std::vector<model::design::ToolSound>>> sounds_job_;
-  std::unique_ptr<rig::ActuatorPresenter> presenter_;
+  std::unique_ptr<BackgroundJob<Prepared>> sounds_job_;
+  std::unique_ptr<model::study::Presenter> presenter_;
   std::unique_ptr<model::study::StudySession> session_;
+  std::unique_ptr<BackgroundJob<bool>> present_job_;  // rig mode: the sweep being run
+  std::shared_ptr<OperatorDesk> desk_ = std::make_shared<OperatorDesk>();
+  std::vector<Retired> retired_;
   char study_text_[512] = "", stimuli_text_[512] = "", participant_text_[65] = "";
 };
 

@@ -79,12 +79,21 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   pad_view_ = std::make_unique<PadView>(*audio_);
   design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);
-  experiment_view_ = std::make_unique<ExperimentView>(*audio_, [this] {
-    model::design::ToolSoundOptions options;
-    options.catalog = setup_.catalog;
-    options.forcing_model = setup_.forcing;
-    return options;
-  });
+  experiment_view_ = std::make_unique<ExperimentView>(
+      *audio_,
+      [this] {
+        model::design::ToolSoundOptions options;
+        options.catalog = setup_.catalog;
+        options.forcing_model = setup_.forcing;
+        return options;
+      },
+      [this] {
+        const rig::RigRequest request = rig_request_of(rig_view_->choice());
+        if (request.kind == rig::RigKind::replay)
+          throw std::invalid_argument(
+              "a study in rig mode needs the simulated or the USB rig: choose one in the rig view");
+        return request;
+      });
   if (setup_.device) {
     devices_view_->set_request(*setup_.device);
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;

@@ -45,16 +45,7 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
   sound_options.catalog = catalog;
   sound_options.forcing_model = forcing;
   model::design::ToolSounds sounds(sound_options);
-  rig::RigRequest request;
-  request.kind = c.kind == 0 ? rig::RigKind::simulated : c.kind == 1 ? rig::RigKind::replay : rig::RigKind::usb;
-  request.tool = c.tool;
-  request.surface = c.surface;
-  request.speedup = c.speedup;
-  request.replay = c.replay;
-  request.usb_serial = c.usb_serial;
-  request.input_api = c.input_api;
-  request.input_device = c.input_device;
-  request.input_channel = static_cast<unsigned>(std::max(1, c.input_channel));
+  const rig::RigRequest request = rig_request_of(c);
   const std::optional<double> seconds = c.seconds > 0 ? std::optional<double>(c.seconds) : std::nullopt;
   std::optional<rig::SpeedProfile> profile;
   if (request.kind != rig::RigKind::replay) profile = rig::profile_named(c.profile, seconds);
@@ -298,6 +289,20 @@ void RigView::draw_table() {
     ImGui::EndTable();
   }
   ImGui::Text("mean LSD %.1f dB over %zu speed bins", table_->summary.mean_lsd_db, table_->summary.bins_with_rows);
+}
+
+rig::RigRequest rig_request_of(const RigChoice& c) {
+  rig::RigRequest request;
+  request.kind = c.kind == 0 ? rig::RigKind::simulated : c.kind == 1 ? rig::RigKind::replay : rig::RigKind::usb;
+  request.tool = c.tool;
+  request.surface = c.surface;
+  request.speedup = c.speedup;
+  request.replay = c.replay;
+  request.usb_serial = c.usb_serial;
+  request.input_api = c.input_api;
+  request.input_device = c.input_device;
+  request.input_channel = static_cast<unsigned>(std::max(1, c.input_channel));
+  return request;
 }
 
 }  // namespace nibrig::ui::panel

@@ -34,6 +34,9 @@ struct RigChoice {
   float speedup = 1.0f;  // the simulated and replay rigs: 1 = real time
 };
 
+// The rig the choice names, as rig::open_rig takes it (the rig view's run, the experiment's rig mode).
+rig::RigRequest rig_request_of(const RigChoice& choice);
+
 // What the worker hands the UI, under a mutex held only to copy.
 struct RigFeed {
   std::mutex mutex;

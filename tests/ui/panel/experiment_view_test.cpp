@@ -104,5 +104,53 @@ TEST(ExperimentView, RunsAParticipantFromConsentToDiskAndResumesAfterAStop) {
   EXPECT_EQ(view.stage(), ExperimentView::Stage::setup);
 }
 
+// Rig mode with the simulated rig (as fast as it computes): asking for a stimulus runs the sweep on
+// a worker while the window asks the operator to mount it; the UI thread keeps drawing.
+TEST(ExperimentView, InRigModeTheOperatorMountsEachToolAndTheTurntableRunsOffTheUiThread) {
+  const auto dir = nibrig::test::scratch_dir("panel_experiment_rig");
+  std::ofstream(dir / "stimuli.txt") << "cryon/office\nstab/office\nvero2/office\n";
+  testing::HeadlessImGui imgui;
+  PanelAudio audio(model::design::ToolSoundOptions{});
+  ExperimentView view(audio, [] { return model::design::ToolSoundOptions{}; }, [] {
+    rig::RigRequest r;
+    r.kind = rig::RigKind::simulated;
+    r.speedup = 0;
+    return r;
+  });
+  view.form() = {(dir / "study").string(), (dir / "stimuli.txt").string(), "R01", 2, false, 0, 100, false};
+  view.start();
+  ASSERT_EQ(view.error(), "");
+  wait_for_sounds(imgui, view);
+  ASSERT_EQ(view.stage(), ExperimentView::Stage::consent) << view.error();
+  EXPECT_FALSE(audio.audition_lent()) << "the actuator is not used in rig mode";
+  view.agree(true);
+  EXPECT_NE(view.operator_notice().find("have them at hand"), std::string::npos);
+  std::vector<std::string> asked;
+  for (char c : std::string("RAB")) {
+    ASSERT_EQ(view.stage(), ExperimentView::Stage::trial) << view.error();
+    view.play(static_cast<study::Role>(c));
+    EXPECT_EQ(view.stage(), ExperimentView::Stage::presenting);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+    while (view.stage() == ExperimentView::Stage::presenting && std::chrono::steady_clock::now() < until) {
+      imgui.frame([&] { view.draw(); });  // the UI keeps drawing meanwhile
+      if (const std::string r = view.operator_request(); !r.empty()) {
+        asked.push_back(r);
+        view.operator_done();
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  ASSERT_EQ(asked.size(), 3u);
+  EXPECT_EQ(asked[0].rfind("mount ", 0), 0u) << asked[0];
+  view.answer(model::space::Choice::left);
+  // Stopped while the operator is asked to mount: the worker stops waiting, nothing more is kept.
+  view.play(study::Role::reference);
+  view.stop();
+  EXPECT_EQ(view.stage(), ExperimentView::Stage::setup);
+  const auto logged = study::read_study(dir / "study").participants.at(0).responses;
+  ASSERT_EQ(logged.size(), 1u);
+  EXPECT_EQ(logged[0].plays, "RAB");
+}
+
 }  // namespace
 }  // namespace nibrig::ui::panel
