@@ -56,7 +56,8 @@ Answer SimulatedParticipant::answer(const TrialPrompt& prompt,
 Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
                                   const std::filesystem::path& space_file,
                                   const std::vector<Stimulus>& stimuli,
-                                  const std::filesystem::path& catalog_file) {
+                                  const std::filesystem::path& catalog_file,
+                                  const PlaceOther& other) {
   const std::filesystem::path catalog =
       space.descriptor_map ? io::or_default(catalog_file, io::default_catalog)
                            : std::filesystem::path{};
@@ -67,6 +68,11 @@ Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
     const bool judged =
         std::find(space.stimuli.begin(), space.stimuli.end(), s.name) != space.stimuli.end();
     try {
+      if (!judged && other)
+        if (const auto placed = other(s)) {
+          truth.col(static_cast<Eigen::Index>(i)) = *placed;
+          continue;
+        }
       truth.col(static_cast<Eigen::Index>(i)) =
           locator.locate(judged ? s.name : pairing_of(s), space_file).mean;
     } catch (const std::exception& e) {

@@ -8,6 +8,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -51,14 +53,19 @@ class SimulatedParticipant final : public Respondent {
   std::uint64_t seed_;
 };
 
+// Where a stimulus the space neither judged nor finds in the catalog lies (a design point, placed
+// from its predicted descriptors by a caller that can predict); nullopt: it cannot say.
+using PlaceOther = std::function<std::optional<Eigen::VectorXd>(const Stimulus&)>;
+
 // The simulated participant's space for a study's stimuli: each stimulus the space judged at its
 // coordinates, any other catalog pairing placed from its descriptors through the space's map
-// (when it has one; `catalog_file` empty: the bundled catalog). Throws std::invalid_argument
-// naming the space file and the stimulus it cannot place.
+// (when it has one; `catalog_file` empty: the bundled catalog), anything else where `other` says.
+// Throws std::invalid_argument naming the space file and the stimulus it cannot place.
 Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
                                   const std::filesystem::path& space_file,
                                   const std::vector<Stimulus>& stimuli,
-                                  const std::filesystem::path& catalog_file);
+                                  const std::filesystem::path& catalog_file,
+                                  const PlaceOther& other = {});
 
 // How many trials a study takes, from simulated participants answering from `truth` with seeds
 // seed, seed + 1, ...: what the runner says before a study starts (two-stage's stage 2 depends on

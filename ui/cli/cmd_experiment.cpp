@@ -13,6 +13,7 @@
 #include <random>
 #include <thread>
 
+#include "model/design/design_search.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/space/simulated_observer.hpp"
@@ -159,7 +160,12 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
   Eigen::MatrixXd truth;
   if (simulated) {
     const model::space::SpaceFile space = model::space::read_space_file(o.simulate);
-    truth = study::truth_for_stimuli(space, o.simulate, definition.stimuli, o.catalog);
+    // A design point is placed where its predicted descriptors put it (seconds each: the FEM).
+    const study::PlaceOther predicted = [&](const study::Stimulus& s) -> std::optional<Eigen::VectorXd> {
+      if (!model::design::names_design_point(s.tool) || !space.descriptor_map) return std::nullopt;
+      return model::design::place_predicted(*space.descriptor_map, sounds.predict(s.tool, s.surface)).mean;
+    };
+    truth = study::truth_for_stimuli(space, o.simulate, definition.stimuli, o.catalog, predicted);
     study::SimulatedParticipantOptions options;
     options.lapse_rate = o.lapse_rate;
     // The participant's own seed, so that a resumed simulation answers as an uninterrupted one.

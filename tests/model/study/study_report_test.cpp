@@ -136,3 +136,33 @@ TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
 
 }  // namespace
 }  // namespace nibrig::model::study
+
+namespace nibrig::model::study {
+namespace {
+
+TEST(SimulatedTruth, JudgedStimuliKeepTheirPlaceAndOthersGoWhereTheCallerPlacesThem) {
+  // A design point is neither judged nor in the catalog: the face predicts it (here a fixed
+  // place), and a stimulus nobody can place is refused naming it.
+  space::SpaceFile space;
+  space.stimuli = {"a/x", "b/x", "c/x"};
+  space.coordinates = Eigen::MatrixXd{{0.0, 1.0, 2.0}, {0.5, -0.5, 0.0}};
+  space.scale = space::kThurstoneScale;
+  const std::vector<Stimulus> stimuli = {{"c/x", "c", "x"}, {"D1", "DM85:1,tip=2mm", "x"}, {"a/x", "a", "x"}};
+  const PlaceOther place = [](const Stimulus& s) -> std::optional<Eigen::VectorXd> {
+    if (s.name != "D1") return std::nullopt;
+    return Eigen::Vector2d{7.0, 8.0};
+  };
+  const Eigen::MatrixXd truth = truth_for_stimuli(space, "space.json", stimuli, "", place);
+  EXPECT_EQ(truth.col(0), space.coordinates.col(2));
+  EXPECT_EQ(truth.col(1), Eigen::Vector2d(7.0, 8.0));
+  EXPECT_EQ(truth.col(2), space.coordinates.col(0));
+  try {
+    truth_for_stimuli(space, "space.json", stimuli, "");
+    ADD_FAILURE() << "an unplaceable stimulus was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'D1'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace nibrig::model::study
