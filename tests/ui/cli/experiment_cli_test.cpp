@@ -183,11 +183,16 @@ TEST(ExperimentCli, KilledWithSigkillMidRunAndResumedWritesTheSameJudgments) {
   ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli(with({"-o", (dir / "whole").string()})), 0);
   // Paced at 200× its modelled times (5-10 s a trial): 25-50 ms a trial, killed at a random
-  // moment of the first two seconds.
+  // moment of the 1.5 s after its first answer is on disk (under the sanitizers on a busy machine
+  // the command needs seconds before it: a kill before it would test nothing).
   const pid_t pid = test::start_cli(with({"--pace", "200", "-o", (dir / "killed").string()}));
+  const fs::path log = dir / "killed" / "participants" / "P07" / "responses.csv";
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  while (!(fs::exists(log) && fs::file_size(log) > 100) && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::random_device entropy;
-  const auto wait = std::chrono::milliseconds(300 + entropy() % 1700);
-  SCOPED_TRACE("killed after " + std::to_string(wait.count()) + " ms");
+  const auto wait = std::chrono::milliseconds(entropy() % 1500);
+  SCOPED_TRACE("killed " + std::to_string(wait.count()) + " ms after the first answer");
   std::this_thread::sleep_for(wait);
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   EXPECT_EQ(test::wait_cli(pid), 128 + SIGKILL);
