@@ -20,12 +20,17 @@ namespace {
 
 namespace study = model::study;
 
-// A share of n answers with its 95 % interval (normal approximation), in percent.
+// A share of n answers with its 95 % Wilson interval, in percent: unlike the normal
+// approximation it does not shrink to nothing when every answer agrees (5 of 5 is not certainty).
 report::IntervalBar share_bar(const std::string& label, double agreements, double n,
                               const std::string& group) {
   const double f = n > 0 ? agreements / n : 0.0;
-  const double half = n > 0 ? 1.96 * std::sqrt(f * (1.0 - f) / n) : 0.0;
-  return {label, 100 * f, 100 * std::max(0.0, f - half), 100 * std::min(1.0, f + half), group};
+  if (n <= 0) return {label, 0.0, 0.0, 0.0, group};
+  const double z2 = 1.96 * 1.96;
+  const double centre = (f + z2 / (2 * n)) / (1 + z2 / n);
+  const double half = 1.96 * std::sqrt(f * (1 - f) / n + z2 / (4 * n * n)) / (1 + z2 / n);
+  return {label, 100 * f, 100 * std::max(0.0, centre - half), 100 * std::min(1.0, centre + half),
+          group};
 }
 
 void write_agreement_chart(const study::StudyReport& r, const std::filesystem::path& png) {
@@ -44,7 +49,8 @@ void write_agreement_chart(const study::StudyReport& r, const std::filesystem::p
 
 void write_validation_chart(const study::StudyReport& r, const std::filesystem::path& png) {
   report::IntervalChart chart;
-  chart.title = "Validation (Sec. 6.1): preference for the first candidate, observed and predicted";
+  chart.title = "Validation (Sec. 6.1) against " + r.study.definition.stimuli.front().name +
+                ": preference for the first candidate, observed (95 %) and predicted";
   chart.value_label = "P(first candidate chosen) (%)";
   const auto& d = r.study.definition;
   for (std::size_t i = 0; i < r.validation_triplets.size(); ++i) {
