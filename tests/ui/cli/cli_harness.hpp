@@ -22,8 +22,9 @@ extern char** environ;
 namespace nibrig::test {
 
 // Starts `nibrig args...` without waiting: its process id, for a test that signals it, then
-// wait_cli(pid).
-inline pid_t start_cli(std::vector<std::string> args) {
+// wait_cli(pid). With `input`, its standard input is read from that file (a person's keys,
+// scripted); otherwise it inherits the test's.
+inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::path& input = {}) {
   args.insert(args.begin(), NIBRIG_CLI_BINARY);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -31,25 +32,9 @@ inline pid_t start_cli(std::vector<std::string> args) {
   // What this process printed so far goes first, in order with the child's output.
   std::fflush(stdout);
   std::fflush(stderr);
-  pid_t pid = 0;
-  if (const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, nullptr, nullptr, argv.data(), environ))
-    throw std::runtime_error(std::string("cannot start ") + NIBRIG_CLI_BINARY + ": error " +
-                             std::to_string(e));
-  return pid;
-}
-
-// Starts `nibrig args...` with its standard input read from `input` (a file): a person's keys,
-// scripted.
-inline pid_t start_cli_with_input(std::vector<std::string> args, const std::filesystem::path& input) {
-  args.insert(args.begin(), NIBRIG_CLI_BINARY);
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);
-  std::fflush(stderr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, input.c_str(), O_RDONLY, 0);
+  if (!input.empty()) posix_spawn_file_actions_addopen(&actions, 0, input.c_str(), O_RDONLY, 0);
   pid_t pid = 0;
   const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);

@@ -225,7 +225,7 @@ TEST(ExperimentCli, APersonAnswersWithKeysAtTheTerminalWhileTheActuatorPlaysOnJa
   // Consent, then: an answer refused before all three were felt, plays, answers; Enter is ignored.
   std::ofstream(dir / "keys.txt") << "y\n1\nr\na\nb\na\n1\n\nb\nr\na\nb\n2\n";
   ::testing::internal::CaptureStdout();
-  const pid_t pid = test::start_cli_with_input(
+  const pid_t pid = test::start_cli(
       {"experiment", "run", "--stimuli", (dir / "stimuli.txt").string(), "--plan",
        (dir / "plan.csv").string(), "--practice", "0", "--participant", "P01", "--api", "jack",
        "--device", "system", "-o", (dir / "study").string()},
