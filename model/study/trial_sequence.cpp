@@ -75,11 +75,11 @@ PlanSizes plan_sizes(const StudyDefinition& d) {
 }
 
 TrialSequence::TrialSequence(StudyDefinition definition, std::uint64_t seed, unsigned threads)
-    : definition_(std::move(definition)), threads_(threads), generator_(seed) {
+    : definition_(std::move(definition)), generator_(seed) {
   validate(definition_);
   sizes_ = plan_sizes(definition_);
   adaptive_fit_.starts = 4;
-  adaptive_fit_.threads = threads_;
+  adaptive_fit_.threads = threads;
 }
 
 std::size_t TrialSequence::expected_at_most() const noexcept {

@@ -60,7 +60,6 @@ class TrialSequence {
 
   StudyDefinition definition_;
   PlanSizes sizes_;
-  unsigned threads_;
   std::mt19937_64 generator_;
   Part part_ = Part::practice;
   int adaptive_round_ = 1;

@@ -42,14 +42,19 @@ void ExperimentView::operator_done() {
   desk_->changed.notify_all();
 }
 
+study::SessionSettings ExperimentView::session_settings() const {
+  study::SessionSettings settings;
+  settings.study = form_.study;
+  settings.participant = form_.participant;
+  settings.resume = form_.resume;
+  settings.respondent = "a person (the panel)";
+  return settings;
+}
+
 void ExperimentView::start() {
   error_.clear();
   try {
-    study::SessionSettings settings;
-    settings.study = form_.study;
-    settings.participant = form_.participant;
-    settings.resume = form_.resume;
-    settings.respondent = "a person (the panel)";
+    const study::SessionSettings settings = session_settings();
     study::check_participant_id(form_.participant);
     if (!form_.resume || !form_.stimuli.empty()) {
       if (form_.stimuli.empty()) throw std::invalid_argument("a new study needs its stimulus list");
@@ -69,8 +74,8 @@ void ExperimentView::start() {
                                   model::io::asset("experiment/consent.txt"));
     }
     study::check_session(settings);
-    const study::StudyDefinition d =
-        study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
+    definition_ = study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
+    const study::StudyDefinition& d = definition_;
     const bool on_rig = d.mode == study::StudyMode::rig;
     if (on_rig) {
       if (!rig_) throw std::invalid_argument("this panel has no rig to run a study in rig mode");
@@ -121,13 +126,8 @@ void ExperimentView::poll() {
     return;
   }
   try {
-    study::SessionSettings settings;
-    settings.study = form_.study;
-    settings.participant = form_.participant;
-    settings.resume = form_.resume;
-    settings.respondent = "a person (the panel)";
-    const study::StudyDefinition d =
-        study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
+    const study::SessionSettings settings = session_settings();
+    const study::StudyDefinition& d = definition_;  // as start() read it
     if (d.mode == study::StudyMode::rig) {
       desk_ = std::make_shared<OperatorDesk>();
       const rig::RigRequest base = rig_();

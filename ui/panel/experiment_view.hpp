@@ -70,6 +70,7 @@ class ExperimentView {
   const model::study::StudySession* session() const { return session_.get(); }
 
  private:
+  model::study::SessionSettings session_settings() const;  // of the form
   void draw_setup();
   void draw_participant();
   void handle_keys();
@@ -98,6 +99,7 @@ class ExperimentView {
   std::function<model::design::ToolSoundOptions()> sound_options_;
   RigChoiceRequest rig_;
   Form form_;
+  model::study::StudyDefinition definition_;  // the study start() found or made
   Stage stage_ = Stage::setup;
   std::string error_;
   std::unique_ptr<BackgroundJob<Prepared>> sounds_job_;
