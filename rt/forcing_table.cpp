@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <span>
 #include <string>
 
 namespace nibrig::rt {
@@ -39,14 +40,27 @@ void check(const model::io::VelocitySpectrum& t, double sample_rate_hz, double w
   }
 }
 
-// Linear interpolation inside [f.front(), f.back()], 0 outside.
-double amplitude_at(const std::vector<double>& f, const std::vector<double>& a, double x) {
-  if (x < f.front() || x > f.back()) return 0.0;
-  const auto after = std::upper_bound(f.begin(), f.end(), x);
-  if (after == f.end()) return a.back();
-  const auto i = static_cast<std::size_t>(after - f.begin());
-  const double u = (x - f[i - 1]) / (f[i] - f[i - 1]);
-  return a[i - 1] + u * (a[i] - a[i - 1]);
+// Linear interpolation of (f, a) at the rising points step, 2·step, … out.size()·step, 0 outside
+// [f.front(), f.back()]. The points rise, so the segment each falls in is found by walking on, not
+// by a search per point: a table has 2^15 to 2^16 bins per speed, and a voice is built at every
+// move of the panel's design sliders.
+void interpolate_rising(const std::vector<double>& f, const std::vector<double>& a, double step,
+                        std::span<double> out) {
+  std::size_t after = 0;  // the first frequency above the point's
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double x = static_cast<double>(k + 1) * step;
+    if (x < f.front() || x > f.back()) {
+      out[k] = 0.0;
+      continue;
+    }
+    while (after < f.size() && f[after] <= x) ++after;
+    if (after == f.size()) {
+      out[k] = a.back();
+      continue;
+    }
+    const double u = (x - f[after - 1]) / (f[after] - f[after - 1]);
+    out[k] = a[after - 1] + u * (a[after] - a[after - 1]);
+  }
 }
 
 }  // namespace
@@ -59,15 +73,16 @@ ForcingTable::ForcingTable(const model::io::VelocitySpectrum& target, double sam
   speeds_ = target.speeds_m_s;
   magnitudes_.assign(speeds_.size() * bins(), 0.0);
   const double n = static_cast<double>(frame_length_);
+  // A bin k of a real frame carries 2E|X_k|²/N² of the variance; the band it stands for, fs/N,
+  // should carry S·fs/N: E|X_k|² = S·fs·N/2 for unit complex noise (E|Z|² = 1). S grows with the
+  // square of the mean amplitude, so |X_k| is the amplitude times one factor.
+  const double per_amplitude =
+      std::sqrt(model::numeric::noise_psd_from_mean_amplitude(1.0, window_seconds) * sample_rate_hz * n / 2.0);
   for (std::size_t s = 0; s < speeds_.size(); ++s) {
-    for (std::size_t k = 1; k + 1 < bins(); ++k) {  // no DC, no Nyquist bin
-      const double f = static_cast<double>(k) * sample_rate_hz / n;
-      const double a = amplitude_at(target.frequencies_hz, target.amplitude_m_s2[s], f);
-      const double psd = model::numeric::noise_psd_from_mean_amplitude(a, window_seconds);
-      // A bin k of a real frame carries 2E|X_k|²/N² of the variance; the band it stands for,
-      // fs/N, should carry S·fs/N: E|X_k|² = S·fs·N/2 for unit complex noise (E|Z|² = 1).
-      magnitudes_[s * bins() + k] = std::sqrt(psd * sample_rate_hz * n / 2.0);
-    }
+    // No DC, no Nyquist bin: bins 1 … N/2 − 1.
+    const std::span<double> row(magnitudes_.data() + s * bins() + 1, bins() - 2);
+    interpolate_rising(target.frequencies_hz, target.amplitude_m_s2[s], sample_rate_hz / n, row);
+    for (double& m : row) m *= per_amplitude;
   }
 }
 

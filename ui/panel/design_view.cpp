@@ -137,9 +137,13 @@ void DesignView::update_design() {
   const auto start = std::chrono::steady_clock::now();
   try {
     predicted_ = design::predict_from_grid(inputs_->setup, *grid_, fraction_, tip_mm_ * 1e-3, surface());
+    // The sound first: the ear notices a late change, the eye not a placement a millisecond later.
+    if (play_) {
+      audio_.play_now(design::predicted_sound(*predicted_), stroke_.request());
+      last_sound_sent_ = std::chrono::steady_clock::now();
+    }
     placement_.reset();
     if (map_) placement_ = design::place_predicted(*map_, *predicted_);
-    if (play_) audio_.play_now(design::predicted_sound(*predicted_), stroke_.request());
     error_.clear();
   } catch (const std::exception& e) {
     error_ = e.what();

@@ -7,6 +7,7 @@
 // FEM is measured in the background at cell centres and shown.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -79,6 +80,8 @@ class DesignView {
   const std::optional<model::design::PredictedTool>& predicted() const { return predicted_; }
   const std::optional<model::space::Placement>& placement() const { return placement_; }
   double last_update_ms() const { return last_update_ms_; }
+  // When the last move's sound was handed to the audio thread (what follows is the audio's part).
+  std::chrono::steady_clock::time_point last_sound_sent() const { return last_sound_sent_; }
   const std::optional<model::design::SearchResult>& last_search() const { return search_; }
   const std::optional<model::design::GridError>& grid_error() const { return grid_error_; }
   const std::string& error() const { return error_; }
@@ -110,6 +113,7 @@ class DesignView {
   std::optional<model::design::SearchResult> search_;
   std::optional<model::design::GridError> grid_error_;
   double last_update_ms_ = 0.0, last_search_ms_ = 0.0;
+  std::chrono::steady_clock::time_point last_sound_sent_{};
   std::string error_;
   std::pair<ImVec2, ImVec2> mix_slider_{};
 };
