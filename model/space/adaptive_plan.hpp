@@ -31,7 +31,7 @@ double bald(const std::vector<double>& member_probabilities);
 // candidate out of range.
 std::vector<double> expected_information_gain(const std::vector<Eigen::MatrixXd>& ensemble,
                                               const std::vector<io::Triplet>& candidates,
-                                              double scale = kThurstoneScale);
+                                              const JudgmentModel& model = {});
 
 // Indices of the batch_size largest gains, largest first, each candidate at most once (greedy
 // top-K: it ignores that two chosen triplets may ask about the same thing, which the next batch's

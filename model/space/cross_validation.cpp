@@ -46,7 +46,7 @@ CrossValidationResult cross_validate(const SpaceProblem& problem,
     scores.training_triplets = training.triplets.size();
     for (const auto& t : held_out)
       if (!seen[t.reference] || !seen[t.a] || !seen[t.b]) ++scores.unseen_stimulus_triplets;
-    const std::vector<double> predicted = predict_triplets(fit.coordinates, held_out, problem.scale);
+    const std::vector<double> predicted = predict_triplets(fit.coordinates, held_out, fit.model);
     scores.scores = score_predictions(predicted, held_out);
     result.folds.push_back(scores);
     all_predicted.insert(all_predicted.end(), predicted.begin(), predicted.end());

@@ -118,7 +118,7 @@ Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd
 }
 
 UncertainProbability uncertain_probability_first(const Placement& reference, const Placement& a,
-                                                 const Placement& b, double scale, int samples,
+                                                 const Placement& b, const JudgmentModel& model, int samples,
                                                  std::mt19937_64& generator) {
   if (samples < 2) throw std::invalid_argument("an uncertain probability needs at least 2 samples");
   const Eigen::MatrixXd lr = square_root(reference.covariance), la = square_root(a.covariance),
@@ -130,7 +130,8 @@ UncertainProbability uncertain_probability_first(const Placement& reference, con
     q.col(0) = draw(reference, lr, normal, generator);
     q.col(1) = draw(a, la, normal, generator);
     q.col(2) = draw(b, lb, normal, generator);
-    const double p = probability_first(q, 0, 1, 2, scale);
+    const double p = probability_first(model, static_cast<std::size_t>(q.rows()), (q.col(1) - q.col(0)).norm(),
+                                       (q.col(2) - q.col(0)).norm(), typical_log_sigma(model));
     sum += p;
     sum_sq += p * p;
   }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "model/space/judgment_model.hpp"
+
 namespace nibrig::model::space {
 
 // coordinates ≈ B · [1, z]ᵀ with z the standardised descriptors (z = (x − mean) / scale).
@@ -54,8 +56,10 @@ Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd
 struct UncertainProbability {
   double mean = 0.0, sd = 0.0;
 };
+// The judgment model's typical noise stands for theirs (typical_log_sigma): a placed tool was never
+// judged.
 UncertainProbability uncertain_probability_first(const Placement& reference, const Placement& a,
-                                                 const Placement& b, double scale, int samples,
+                                                 const Placement& b, const JudgmentModel& model, int samples,
                                                  std::mt19937_64& generator);
 
 // The distance between two uncertain positions: between their means, and its standard deviation

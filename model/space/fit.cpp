@@ -41,9 +41,27 @@ Eigen::VectorXd free_part(const Eigen::MatrixXd& q, std::size_t pinned) {
 
 struct StartResult {
   Eigen::MatrixXd coordinates;
+  JudgmentModel model;
   double objective = 0.0;
   int iterations = 0;
 };
+
+// The fitted parts of the model after the coordinates in the optimiser's vector: θ with
+// ε = σ(θ)/2 (a lapse stays in [0, 0.5), where half the answers at random is the most it can mean),
+// then η per stimulus.
+constexpr double kStartLapse = 0.02;
+
+double sigmoid(double x) { return 1.0 / (1.0 + std::exp(-x)); }
+
+Eigen::Index model_parameters(const ModelFamily& f, std::size_t stimuli) {
+  return (f.lapse ? 1 : 0) + (f.stimulus_noise ? static_cast<Eigen::Index>(stimuli) : 0);
+}
+
+// Writes the model's fitted parts from x[from...] into `model`.
+void read_model(const Eigen::VectorXd& x, Eigen::Index from, JudgmentModel& model) {
+  if (model.family.lapse) model.lapse = 0.5 * sigmoid(x(from++));
+  if (model.family.stimulus_noise) model.log_noise = x.segment(from, model.log_noise.size());
+}
 
 StartResult run_start(const SpaceProblem& problem, const FitOptions& options, int start) {
   std::mt19937_64 generator(options.seed + static_cast<unsigned>(start));
@@ -56,18 +74,45 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
     for (Eigen::Index i = 0; i < q0.size(); ++i) q0.data()[i] = normal(generator);
     q0.col(static_cast<Eigen::Index>(options.pinned)).setZero();
   }
-  Eigen::VectorXd x = free_part(q0, options.pinned);
+  const Eigen::VectorXd coordinates = free_part(q0, options.pinned);
+  const Eigen::Index free_coordinates = coordinates.size();
+  JudgmentModel model = problem.model;
+  if (model.family.stimulus_noise && model.log_noise.size() == 0)
+    model.log_noise = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(problem.stimuli));
+  if (!model.family.stimulus_noise) model.log_noise.resize(0);
+  if (!model.family.lapse) model.lapse = 0.0;
+  Eigen::VectorXd x(free_coordinates + model_parameters(model.family, problem.stimuli));
+  x.head(free_coordinates) = coordinates;
+  {
+    Eigen::Index k = free_coordinates;
+    if (model.family.lapse) {
+      const double start_lapse = model.lapse > 0 ? model.lapse : kStartLapse;
+      x(k++) = std::log(2.0 * start_lapse / (1.0 - 2.0 * start_lapse));  // σ⁻¹(2ε)
+    }
+    if (model.family.stimulus_noise) x.segment(k, model.log_noise.size()) = model.log_noise;
+  }
 
   // The best finite point any evaluation saw: LBFGSpp's line search evaluates trial points in
   // place and, when it gives up (at a kink where stimuli coincide, at round-off level near the
   // optimum, or after a trial step overflowed to a non-finite point), leaves x at its last trial.
   Eigen::VectorXd best_x = x;
   double best_f = std::numeric_limits<double>::infinity();
+  JudgmentModel trial = model;
   auto function = [&](const Eigen::VectorXd& v, Eigen::VectorXd& grad) {
-    const Eigen::MatrixXd q = to_coordinates(v, problem.dims, problem.stimuli, options.pinned);
+    const Eigen::MatrixXd q =
+        to_coordinates(v.head(free_coordinates), problem.dims, problem.stimuli, options.pinned);
+    read_model(v, free_coordinates, trial);
     Eigen::MatrixXd g;
-    const double f = objective(problem, q, &g);
-    grad = free_part(g, options.pinned);
+    ModelGradient mg;
+    const double f = objective(problem, q, trial, &g, &mg);
+    grad.resize(v.size());
+    grad.head(free_coordinates) = free_part(g, options.pinned);
+    Eigen::Index k = free_coordinates;
+    if (trial.family.lapse) {
+      const double u = sigmoid(v(k));
+      grad(k++) = mg.lapse * 0.5 * u * (1.0 - u);
+    }
+    if (trial.family.stimulus_noise) grad.segment(k, mg.log_noise.size()) = mg.log_noise;
     if (std::isfinite(f) && f < best_f && grad.allFinite()) {
       best_f = f;
       best_x = v;
@@ -98,7 +143,9 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
     throw std::runtime_error("the objective is not finite at start " + std::to_string(start));
   x = best_x;
   const double fx = best_f;
-  result.coordinates = to_coordinates(x, problem.dims, problem.stimuli, options.pinned);
+  result.coordinates = to_coordinates(x.head(free_coordinates), problem.dims, problem.stimuli, options.pinned);
+  read_model(x, free_coordinates, model);
+  result.model = model;
   result.objective = fx;
   return result;
 }
@@ -138,9 +185,12 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
   std::sort(fit.start_objectives.begin(), fit.start_objectives.end());
   const StartResult& best = results[static_cast<std::size_t>(fit.best_start)];
   fit.coordinates = best.coordinates;
+  fit.model = best.model;
   fit.objective = best.objective;
   fit.iterations = best.iterations;
-  fit.negative_log_likelihood = negative_log_likelihood(problem, best.coordinates);
+  SpaceProblem fitted = problem;
+  fitted.model = best.model;
+  fit.negative_log_likelihood = negative_log_likelihood(fitted, best.coordinates);
   fit.correlation_penalty = correlation_penalty(problem, best.coordinates);
   return fit;
 }

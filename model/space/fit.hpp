@@ -1,5 +1,6 @@
 // Fitting a perceptual space: L-BFGS (LBFGSpp) on the objective of objective.hpp from many random
-// starts in parallel, keeping the best. One stimulus is pinned at the origin (translation);
+// starts in parallel, keeping the best; the judgment model's lapse and noises, where its family has
+// them, are fitted with the coordinates. One stimulus is pinned at the origin (translation);
 // rotation is fixed by the correlation term, scale by the likelihood. Reports the spread of the
 // optima.
 #pragma once
@@ -30,6 +31,7 @@ struct FitOptions {
 
 struct FitResult {
   Eigen::MatrixXd coordinates;  // dims × stimuli
+  JudgmentModel model;          // problem.model with the parts its family fits fitted
   double objective = 0.0;
   double negative_log_likelihood = 0.0;
   double correlation_penalty = 0.0;      // −Σ log|r_d| (without λ)

@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/space/normal_tail.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -24,20 +23,32 @@ Eigen::VectorXd unit(const Eigen::MatrixXd& q, std::size_t i, std::size_t j) {
   return n > 0 ? Eigen::VectorXd(v / n) : Eigen::VectorXd::Zero(v.size());
 }
 
-double likelihood_part(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient) {
+double likelihood_part(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
+                       Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
+  const bool noise = m.log_noise.size() > 0;
   double nll = 0.0;
+  TripletGradient g;
   for (const auto& t : p.triplets) {
-    const double d = distance(q, t.a, t.reference) - distance(q, t.b, t.reference);
-    const double x = -p.scale * d;  // P(a) = Φ(x), P(b) = Φ(−x)
-    nll -= t.count_a * log_normal_cdf(x) + t.count_b * log_normal_cdf(-x);
-    if (!gradient) continue;
-    // ∂nll/∂d = s·[C_a·φ(x)/Φ(x) − C_b·φ(−x)/Φ(−x)]
-    const double dnll_dd =
-        p.scale * (t.count_a * normal_pdf_over_cdf(x) - t.count_b * normal_pdf_over_cdf(-x));
-    const Eigen::VectorXd ua = unit(q, t.a, t.reference), ub = unit(q, t.b, t.reference);
-    gradient->col(t.a) += dnll_dd * ua;
-    gradient->col(t.b) -= dnll_dd * ub;
-    gradient->col(t.reference) += dnll_dd * (ub - ua);
+    const double log_sigma = triplet_log_sigma(m, t.reference, t.a, t.b);
+    nll += triplet_negative_log_likelihood(m, p.dims, distance(q, t.a, t.reference), distance(q, t.b, t.reference),
+                                           log_sigma, t.count_a, t.count_b,
+                                           gradient || model_gradient ? &g : nullptr);
+    if (gradient) {
+      const Eigen::VectorXd ua = unit(q, t.a, t.reference), ub = unit(q, t.b, t.reference);
+      gradient->col(t.a) += g.distance_a * ua;
+      gradient->col(t.b) += g.distance_b * ub;
+      gradient->col(t.reference) -= g.distance_a * ua + g.distance_b * ub;
+    }
+    if (!model_gradient) continue;
+    model_gradient->lapse += g.lapse;
+    if (noise) {
+      // ∂log σ_t/∂η_i = σ_i²/(3σ_t²) for each of the triplet's three stimuli.
+      const double inverse = std::exp(-2.0 * log_sigma) / 3.0;
+      for (std::size_t i : {t.reference, t.a, t.b}) {
+        const auto k = static_cast<Eigen::Index>(i);
+        model_gradient->log_noise(k) += g.log_sigma * std::exp(2.0 * m.log_noise(k)) * inverse;
+      }
+    }
   }
   return nll;
 }
@@ -76,7 +87,14 @@ void validate(const SpaceProblem& p) {
                                 std::to_string(p.stimuli));
   if (!(p.lambda >= 0) || !std::isfinite(p.lambda))
     throw std::invalid_argument("lambda must be zero or positive");
-  if (!(p.scale > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+  if (!(p.model.scale > 0) || !std::isfinite(p.model.scale))
+    throw std::invalid_argument("the judgment model's scale must be positive");
+  if (!(p.model.lapse >= 0 && p.model.lapse < 0.5))
+    throw std::invalid_argument("the judgment model's lapse rate must be in [0, 0.5)");
+  if (p.model.log_noise.size() > 0 &&
+      (static_cast<std::size_t>(p.model.log_noise.size()) != p.stimuli || !p.model.log_noise.allFinite()))
+    throw std::invalid_argument("the judgment model has " + std::to_string(p.model.log_noise.size()) +
+                                " noises, expected one per stimulus (" + std::to_string(p.stimuli) + "), finite");
   if (!(p.prior_sd >= 0) || !std::isfinite(p.prior_sd))
     throw std::invalid_argument("the coordinate prior's sd must be zero (none) or positive");
   for (std::size_t i = 0; i < p.triplets.size(); ++i) {
@@ -109,29 +127,37 @@ void validate(const SpaceProblem& p) {
 }
 
 double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient) {
+  return objective(p, q, p.model, gradient, nullptr);
+}
+
+double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const JudgmentModel& m, Eigen::MatrixXd* gradient,
+                 ModelGradient* model_gradient) {
   if (gradient) gradient->setZero(q.rows(), q.cols());
-  double value = likelihood_part(p, q, gradient);
+  if (model_gradient) {
+    model_gradient->lapse = 0.0;
+    model_gradient->log_noise.setZero(m.log_noise.size());
+  }
+  double value = likelihood_part(p, m, q, gradient, model_gradient);
   if (p.lambda > 0) value += p.lambda * correlation_part(p, q, gradient, p.lambda);
   if (p.prior_sd > 0) {
     const double precision = 1.0 / (p.prior_sd * p.prior_sd);
     value += 0.5 * precision * q.squaredNorm();
     if (gradient) *gradient += precision * q;
   }
+  if (m.log_noise.size() > 0) {
+    const double precision = 1.0 / (kNoisePriorSd * kNoisePriorSd);
+    value += 0.5 * precision * m.log_noise.squaredNorm();
+    if (model_gradient) model_gradient->log_noise += precision * m.log_noise;
+  }
   return value;
 }
 
 double negative_log_likelihood(const SpaceProblem& p, const Eigen::MatrixXd& q) {
-  return likelihood_part(p, q, nullptr);
+  return likelihood_part(p, p.model, q, nullptr, nullptr);
 }
 
 double correlation_penalty(const SpaceProblem& p, const Eigen::MatrixXd& q) {
   return p.descriptors.size() > 0 ? correlation_part(p, q, nullptr, 0.0) : 0.0;
-}
-
-double probability_first(const Eigen::MatrixXd& q, std::size_t reference, std::size_t a,
-                         std::size_t b, double scale) {
-  const double d = distance(q, a, reference) - distance(q, b, reference);
-  return std::exp(log_normal_cdf(-scale * d));
 }
 
 }  // namespace nibrig::model::space

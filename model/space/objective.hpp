@@ -1,19 +1,16 @@
 // The objective of the perceptual space (Sec. 4, Eq. 1-6): the negative log-likelihood of the
-// triplet counts under the Thurstonian model P(a closer to ref) = Φ(−s·d), d = ‖Q_a−Q_r‖ −
-// ‖Q_b−Q_r‖, minus λ·Σ_d log|corr(Q^d, D^d)| tying axis d to descriptor d; with its analytic
-// gradient.
+// triplet counts under the judgment model (judgment_model.hpp; the paper's is P(a closer to ref) =
+// Φ(−s·d), d = ‖Q_a−Q_r‖ − ‖Q_b−Q_r‖), minus λ·Σ_d log|corr(Q^d, D^d)| tying axis d to descriptor
+// d, plus the priors; with its analytic gradient, in the coordinates and in the model's fitted parts.
 #pragma once
 
 #include <Eigen/Core>
 #include <vector>
 
 #include "model/io/triplets.hpp"
+#include "model/space/judgment_model.hpp"
 
 namespace nibrig::model::space {
-
-// s = 2/3 makes one unit of distance difference 75 % preference (Φ(2/3) = 0.748), the scale of the
-// authors' released code; the paper's Eq. 2 is a garbled fast approximation of Φ (ARCHITECTURE.md, "Science notes").
-inline constexpr double kThurstoneScale = 2.0 / 3.0;
 
 struct SpaceProblem {
   std::size_t stimuli = 0;
@@ -22,7 +19,9 @@ struct SpaceProblem {
   // stimuli × dims, column d the descriptor axis d is tied to; empty when λ = 0.
   Eigen::MatrixXd descriptors;
   double lambda = 0.0;
-  double scale = kThurstoneScale;
+  // The link, the scale, and which parts a fit adds (family); its lapse and noises are where a fit
+  // starts, and what objective(problem, Q) holds fixed.
+  JudgmentModel model;
   // 0: none, the objective of Eq. 6 exactly. > 0: a Gaussian prior N(0, prior_sd²) on every
   // coordinate adds Σ q²/(2·prior_sd²). With few judgments some configuration may explain every
   // answer; the likelihood then has no maximum and a fit stretches without bound (seen with one
@@ -42,12 +41,19 @@ void validate(const SpaceProblem& problem);
 double objective(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates,
                  Eigen::MatrixXd* gradient);
 
-// The two parts separately (for reports): −log P_exp and −log P_corr (without λ).
+// The objective at a model of problem.model's family, with its gradient in the parts the family
+// fits: ∂/∂ε when it has a lapse, ∂/∂η per stimulus (the prior N(0, kNoisePriorSd²) included) when
+// it has noises.
+struct ModelGradient {
+  double lapse = 0.0;
+  Eigen::VectorXd log_noise;
+};
+double objective(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates, const JudgmentModel& model,
+                 Eigen::MatrixXd* gradient, ModelGradient* model_gradient);
+
+// The two parts separately (for reports): −log P_exp (under problem.model) and −log P_corr
+// (without λ).
 double negative_log_likelihood(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates);
 double correlation_penalty(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates);
-
-// P(a judged closer to the reference than b) under the model.
-double probability_first(const Eigen::MatrixXd& coordinates, std::size_t reference, std::size_t a,
-                         std::size_t b, double scale = kThurstoneScale);
 
 }  // namespace nibrig::model::space

@@ -31,7 +31,7 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
     throw std::invalid_argument(std::to_string(predicted.size()) + " predictions for " +
                                 std::to_string(triplets.size()) + " triplets");
   PredictionScores s;
-  double majority_agree = 0.0, majority_n = 0.0, individual_agree = 0.0, error_sum = 0.0;
+  double majority_agree = 0.0, majority_n = 0.0, individual_agree = 0.0, error_sum = 0.0, loss_sum = 0.0;
   std::vector<double> p_predicted, p_observed;
   for (std::size_t t = 0; t < triplets.size(); ++t) {
     const double p = predicted[t];
@@ -48,6 +48,8 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
       majority_agree += agreement(p, tr.count_a > tr.count_b);
       majority_n += 1.0;
     }
+    const double sure = std::clamp(p, 1e-12, 1.0 - 1e-12);
+    loss_sum -= tr.count_a * std::log(sure) + tr.count_b * std::log1p(-sure);
     const double observed = static_cast<double>(tr.count_a) / n;
     error_sum += std::abs(p - observed);
     p_predicted.push_back(p);
@@ -57,6 +59,7 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
   if (majority_n > 0) s.majority = agreement_test(majority_agree, majority_n);
   s.individual = agreement_test(individual_agree, static_cast<double>(s.responses));
   s.mean_absolute_error = error_sum / static_cast<double>(s.triplets);
+  s.log_loss = loss_sum / static_cast<double>(s.responses);
   const auto constant = [](const std::vector<double>& v) {
     return std::all_of(v.begin(), v.end(), [&](double x) { return x == v.front(); });
   };
@@ -74,11 +77,11 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
 }
 
 std::vector<double> predict_triplets(const Eigen::MatrixXd& coordinates,
-                                     const std::vector<io::Triplet>& triplets, double scale) {
+                                     const std::vector<io::Triplet>& triplets, const JudgmentModel& model) {
   std::vector<double> p;
   p.reserve(triplets.size());
   for (const auto& t : triplets)
-    p.push_back(probability_first(coordinates, t.reference, t.a, t.b, scale));
+    p.push_back(probability_first(model, coordinates, t.reference, t.a, t.b));
   return p;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/io/triplets.hpp"
+#include "model/space/judgment_model.hpp"
 #include "model/space/statistics.hpp"
 
 namespace nibrig::model::space {
@@ -25,6 +26,10 @@ struct PredictionScores {
   // Mean over triplets of |p_predicted − count_a / (count_a + count_b)|: the paper's "error"
   // (17 % for its 5-fold validation, 19 % for new tools).
   double mean_absolute_error = 0.0;
+  // Mean −log P(the answer given) per response, in nats (ln 2 = 0.693 for a coin): the proper
+  // score a choice of model goes by, since it also weighs how sure each prediction was. A
+  // prediction of exactly 0 or 1 is taken as 1e-12 from it, so one wrong certainty costs 27.6.
+  double log_loss = 0.0;
   // Predicted against observed probability over the triplets; empty when either is constant (one
   // response per triplet, as in Salmon's data, leaves observed probabilities of 0 or 1 only, which
   // is still a valid correlation; a single triplet is not).
@@ -41,6 +46,6 @@ PredictionScores score_predictions(const std::vector<double>& predicted,
 
 // P(a chosen) of every triplet under a space (dims × stimuli).
 std::vector<double> predict_triplets(const Eigen::MatrixXd& coordinates,
-                                     const std::vector<io::Triplet>& triplets, double scale);
+                                     const std::vector<io::Triplet>& triplets, const JudgmentModel& model);
 
 }  // namespace nibrig::model::space

@@ -53,15 +53,24 @@ Eigen::MatrixXd space_from_descriptors(const Eigen::MatrixXd& descriptors, doubl
 }
 
 SimulatedObserver::SimulatedObserver(Eigen::MatrixXd truth, double scale)
-    : truth_(std::move(truth)), scale_(scale) {
+    : SimulatedObserver(std::move(truth), [scale] {
+        JudgmentModel paper;
+        paper.scale = scale;
+        return paper;
+      }()) {}
+
+SimulatedObserver::SimulatedObserver(Eigen::MatrixXd truth, JudgmentModel model)
+    : truth_(std::move(truth)), model_(std::move(model)) {
   if (truth_.cols() < 3 || truth_.rows() < 1)
     throw std::invalid_argument("a simulated observer needs a space with at least 3 stimuli");
-  if (!(scale_ > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+  if (!(model_.scale > 0)) throw std::invalid_argument("the Thurstone scale must be positive");
+  if (model_.log_noise.size() > 0 && model_.log_noise.size() != truth_.cols())
+    throw std::invalid_argument("a simulated observer's model needs a noise per stimulus of its space");
 }
 
 double SimulatedObserver::probability_first(std::size_t reference, std::size_t a,
                                             std::size_t b) const {
-  return space::probability_first(truth_, reference, a, b, scale_);
+  return space::probability_first(model_, truth_, reference, a, b);
 }
 
 bool SimulatedObserver::chooses_first(std::size_t reference, std::size_t a, std::size_t b,

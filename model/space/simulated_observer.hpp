@@ -41,11 +41,15 @@ Eigen::MatrixXd space_from_descriptors(const Eigen::MatrixXd& descriptors,
 
 class SimulatedObserver {
  public:
-  // Throws std::invalid_argument for a space with fewer than 3 stimuli or a non-positive scale.
+  // Throws std::invalid_argument for a space with fewer than 3 stimuli, a non-positive scale or a
+  // model with noises for another number of stimuli.
   explicit SimulatedObserver(Eigen::MatrixXd truth, double scale = kThurstoneScale);
+  // An observer who judges by another model (a link, a lapse, noises per stimulus).
+  SimulatedObserver(Eigen::MatrixXd truth, JudgmentModel model);
 
   const Eigen::MatrixXd& truth() const { return truth_; }
-  double scale() const { return scale_; }
+  double scale() const { return model_.scale; }
+  const JudgmentModel& model() const { return model_; }
 
   // P(a judged closer to the reference than b): probability_first of the truth.
   double probability_first(std::size_t reference, std::size_t a, std::size_t b) const;
@@ -59,7 +63,7 @@ class SimulatedObserver {
 
  private:
   Eigen::MatrixXd truth_;
-  double scale_;
+  JudgmentModel model_;
 };
 
 }  // namespace nibrig::model::space

@@ -72,7 +72,7 @@ SimulatedStudy run_simulated_study(const io::Catalog& catalog,
   SpaceFile& file = study.space;
   file.stimuli = stimuli;
   file.coordinates = study.fit.coordinates;
-  file.scale = study.problem.scale;
+  file.model = study.fit.model;
   file.lambda = o.lambda;
   file.objective = study.fit.objective;
   file.negative_log_likelihood = study.fit.negative_log_likelihood;

@@ -53,6 +53,79 @@ Eigen::VectorXd vector_at(const nlohmann::json& value, const std::filesystem::pa
   return Eigen::Map<const Eigen::VectorXd>(v.data(), size);
 }
 
+// The model in words, for a reader of the file.
+std::string model_formula(const ModelFamily& f) {
+  std::string p;
+  switch (f.link) {
+    case Link::probit: p = "Phi(scale * (|Q_b - Q_ref| - |Q_a - Q_ref|) / sigma)"; break;
+    case Link::logistic: p = "1 / (1 + exp(-1.702 * scale * (|Q_b - Q_ref| - |Q_a - Q_ref|) / sigma))"; break;
+    case Link::student_t:
+      p = "K(a) / (K(a) + K(b)), K(x) = (1 + (scale * |Q_x - Q_ref| / sigma)^2 / alpha)^(-(alpha + 1) / 2), "
+          "alpha = max(1, dims - 1)";
+      break;
+  }
+  std::string text = "P(a closer to reference than b) = ";
+  text += f.lapse ? "lapse / 2 + (1 - lapse) * " + p : p;
+  text += f.stimulus_noise ? "; sigma = sqrt(mean of exp(2 * log_noise) over the three stimuli)" : "; sigma = 1";
+  return text;
+}
+
+nlohmann::json judgment_model_json(const SpaceFile& s) {
+  nlohmann::json j = {{"family", family_name(s.model.family)}, {"lapse", s.model.lapse}};
+  if (s.model.log_noise.size() > 0) j["log_noise"] = vector_of(s.model.log_noise);
+  if (!s.model_reason.empty()) j["chosen_because"] = s.model_reason;
+  if (!s.model_scores.empty()) {
+    nlohmann::json scores = nlohmann::json::array();
+    for (const auto& m : s.model_scores)
+      scores.push_back({{"family", m.family},
+                        {"log_loss", m.log_loss},
+                        {"majority_agreement", m.majority_agreement},
+                        {"individual_agreement", m.individual_agreement},
+                        {"mean_error", m.mean_error}});
+    j["cross_validation"] = scores;
+  }
+  return j;
+}
+
+// "judgment_model" (a file before it existed holds the paper's model: probit, no lapse, no noises).
+void read_judgment_model(const nlohmann::json& root, const std::filesystem::path& file, SpaceFile& s) {
+  if (!root.contains("judgment_model")) return;
+  const std::string at = "judgment_model";
+  const auto& j = jf::as_object(root[at], file, at);
+  const std::string family = jf::as_string(jf::member(j, "family", file, at), file, jf::member_path(at, "family"));
+  try {
+    s.model.family = parse_family(family);
+  } catch (const std::invalid_argument& e) {
+    throw io::FormatError(file, jf::place(jf::member_path(at, "family")), e.what());
+  }
+  s.model.lapse = jf::number_member(j, "lapse", file, at);
+  if (!(s.model.lapse >= 0 && s.model.lapse < 0.5) || (!s.model.family.lapse && s.model.lapse != 0))
+    throw io::FormatError(file, jf::place(jf::member_path(at, "lapse")),
+                          "expected a share in [0, 0.5), and 0 for a family without a lapse");
+  if (s.model.family.stimulus_noise) {
+    s.model.log_noise = vector_at(jf::member(j, "log_noise", file, at), file, jf::member_path(at, "log_noise"),
+                                  s.coordinates.cols());
+    if (!s.model.log_noise.allFinite())
+      throw io::FormatError(file, jf::place(jf::member_path(at, "log_noise")), "expected finite numbers");
+  }
+  if (j.contains("chosen_because"))
+    s.model_reason = jf::as_string(j["chosen_because"], file, jf::member_path(at, "chosen_because"));
+  if (j.contains("cross_validation")) {
+    const std::string cv = jf::member_path(at, "cross_validation");
+    const auto& scores = jf::as_array(j["cross_validation"], file, cv);
+    for (std::size_t i = 0; i < scores.size(); ++i) {
+      const std::string e = jf::element_path(cv, i);
+      ModelScore m;
+      m.family = jf::as_string(jf::member(scores[i], "family", file, e), file, jf::member_path(e, "family"));
+      m.log_loss = jf::number_member(scores[i], "log_loss", file, e);
+      m.majority_agreement = jf::number_member(scores[i], "majority_agreement", file, e);
+      m.individual_agreement = jf::number_member(scores[i], "individual_agreement", file, e);
+      m.mean_error = jf::number_member(scores[i], "mean_error", file, e);
+      s.model_scores.push_back(m);
+    }
+  }
+}
+
 nlohmann::json map_json(const DescriptorMap& m) {
   return {{"descriptor_mean", vector_of(m.descriptor_mean)},
           {"descriptor_scale", vector_of(m.descriptor_scale)},
@@ -100,9 +173,10 @@ void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
   const nlohmann::json j = {
       {"format", "nibrig-space"},
       {"version", 1},
-      {"model", "P(a closer to reference than b) = Phi(-scale * (|Q_a - Q_ref| - |Q_b - Q_ref|))"},
+      {"model", model_formula(s.model.family)},
       {"dims", s.coordinates.rows()},
-      {"scale", s.scale},
+      {"scale", s.model.scale},
+      {"judgment_model", judgment_model_json(s)},
       {"lambda", s.lambda},
       {"stimuli", s.stimuli},
       {"coordinates", coordinates},
@@ -140,8 +214,8 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
   jf::as_object(root, file, "");
   jf::check_format_and_version(root, file, "nibrig-space", 1);
   SpaceFile s;
-  s.scale = jf::number_member(root, "scale", file, "");
-  if (!(s.scale > 0)) throw io::FormatError(file, jf::place("scale"), "expected a positive number");
+  s.model.scale = jf::number_member(root, "scale", file, "");
+  if (!(s.model.scale > 0)) throw io::FormatError(file, jf::place("scale"), "expected a positive number");
   s.lambda = root.contains("lambda") ? jf::number_member(root, "lambda", file, "") : 0.0;
   const auto& names = jf::as_array(jf::member(root, "stimuli", file, ""), file, "stimuli");
   for (std::size_t i = 0; i < names.size(); ++i)
@@ -163,6 +237,7 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
     for (std::size_t d = 0; d < point.size(); ++d)
       s.coordinates(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(i)) = point[d];
   }
+  read_judgment_model(root, file, s);
   if (root.contains("provenance") && root["provenance"].contains("judgments"))
     s.judgments = jf::as_string(root["provenance"]["judgments"], file, "provenance.judgments");
   const Eigen::Index dims = s.coordinates.rows(), n = s.coordinates.cols();

@@ -12,13 +12,18 @@
 
 #include "model/space/bootstrap.hpp"
 #include "model/space/descriptor_map.hpp"
+#include "model/space/judgment_model.hpp"
 
 namespace nibrig::model::space {
 
 struct SpaceFile {
   std::vector<std::string> stimuli;
   Eigen::MatrixXd coordinates;  // dims × stimuli
-  double scale = 0.0;           // s of P = Φ(−s·d)
+  // How distances become judgments (its family, scale, lapse and noises), why this model (given or
+  // chosen by cross-validation), and every candidate's held-out scores when chosen.
+  JudgmentModel model;
+  std::string model_reason;
+  std::vector<ModelScore> model_scores;
   double lambda = 0.0;
   double objective = 0.0, negative_log_likelihood = 0.0;
   std::vector<double> start_objectives;

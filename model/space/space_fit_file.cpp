@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "model/space/model_choice.hpp"
+
 namespace nibrig::model::space {
 
 namespace {
@@ -29,12 +31,29 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
   options.cancel = settings.cancel;
   const auto start = std::chrono::steady_clock::now();
   FittedSpace out;
-  out.fit = fit_space(in.problem, options, step(progress, kFitStep));
+  SpaceProblem problem = in.problem;
+  problem.model.family = settings.model;
+  if (settings.choose_model) {
+    ModelChoiceOptions choice_options;
+    choice_options.candidates = settings.candidates;
+    choice_options.cross_validation.folds = settings.folds;
+    choice_options.cross_validation.seed = settings.seed;
+    choice_options.cross_validation.fit = options;
+    choice_options.cross_validation.fit.starts = settings.choice_starts;
+    ModelChoice choice = choose_model(problem, choice_options, step(progress, kChoiceStep));
+    problem.model.family = choice.chosen;
+    out.file.model_reason = std::move(choice.reason);
+    out.file.model_scores = std::move(choice.scores);
+  } else {
+    out.file.model_reason = settings.model == kPaperModel ? "the paper's model (the default), not chosen"
+                                                          : "given, not chosen by cross-validation";
+  }
+  out.fit = fit_space(problem, options, step(progress, kFitStep));
   SpaceFile& file = out.file;
   file.seconds = seconds_since(start);
   file.stimuli = in.judgments.stimuli;
   file.coordinates = out.fit.coordinates;
-  file.scale = in.problem.scale;
+  file.model = out.fit.model;
   file.lambda = in.problem.lambda;
   file.objective = out.fit.objective;
   file.negative_log_likelihood = out.fit.negative_log_likelihood;
@@ -57,6 +76,9 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
           " descriptors; no tool can be placed from descriptors with this space");
   }
   if (settings.bootstrap > 0) {
+    // Each refit starts from the fitted space and model.
+    SpaceProblem fitted_problem = problem;
+    fitted_problem.model = out.fit.model;
     BootstrapOptions b;
     b.resamples = settings.bootstrap;
     b.seed = settings.seed;
@@ -64,7 +86,7 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
     b.cancel = settings.cancel;
     const auto b_start = std::chrono::steady_clock::now();
     const BootstrapResult regions =
-        bootstrap_space(in.problem, out.fit.coordinates, b, step(progress, kBootstrapStep));
+        bootstrap_space(fitted_problem, out.fit.coordinates, b, step(progress, kBootstrapStep));
     file.regions = regions.regions;
     file.region_levels = regions.levels;
     file.bootstrap_resamples = settings.bootstrap;

@@ -22,11 +22,19 @@ struct SpaceFitSettings {
   unsigned seed = 1;
   unsigned threads = 0;  // 0: one per core
   int bootstrap = 0;     // resamples; 0: no confidence regions
+  // The judgment model fitted, or, with choose_model, the one of `candidates` that predicts held-out
+  // judgments best (model_choice.hpp: `folds`-fold cross-validation, `choice_starts` starts a fold).
+  ModelFamily model = kPaperModel;
+  bool choose_model = false;
+  std::vector<ModelFamily> candidates = every_family();
+  int folds = 5;
+  int choice_starts = 2;
   numeric::CancelFlag cancel = nullptr;
 };
 
-// Called as each start or refit finishes: the step (kFitStep, then kBootstrapStep), how many of it
+// Called as each start or refit finishes: the step (kChoiceStep, kFitStep, then kBootstrapStep), how many of it
 // are done, of how many. From worker threads, never two at once.
+inline constexpr const char* kChoiceStep = "choosing the judgment model (fold fits)";
 inline constexpr const char* kFitStep = "fitting starts";
 inline constexpr const char* kBootstrapStep = "bootstrap refits";
 using StepProgress =

@@ -1,5 +1,6 @@
 #include "model/space/space_inputs.hpp"
 
+#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -79,16 +80,26 @@ std::vector<QueryPrediction> predict_queries(const SpaceFile& space, const io::T
                                              const std::filesystem::path& query_file) {
   std::mt19937_64 generator(1);
   std::vector<QueryPrediction> out;
+  // A judged stimulus's own noise where the model has noises; a placed tool has the typical one.
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < space.stimuli.size(); ++i) index[space.stimuli[i]] = i;
+  const auto log_sigma = [&](const io::Triplet& t) {
+    const auto r = index.find(queries.stimuli[t.reference]), a = index.find(queries.stimuli[t.a]),
+               b = index.find(queries.stimuli[t.b]);
+    if (space.model.log_noise.size() == 0 || r == index.end() || a == index.end() || b == index.end())
+      return typical_log_sigma(space.model);
+    return triplet_log_sigma(space.model, r->second, a->second, b->second);
+  };
   for (const auto& t : queries.triplets) {
     const auto& r = locator.locate(queries.stimuli[t.reference], query_file);
     const auto& a = locator.locate(queries.stimuli[t.a], query_file);
     const auto& b = locator.locate(queries.stimuli[t.b], query_file);
     if (r.covariance.isZero(0.0) && a.covariance.isZero(0.0) && b.covariance.isZero(0.0)) {
-      Eigen::MatrixXd q(r.mean.size(), 3);
-      q << r.mean, a.mean, b.mean;
-      out.push_back({probability_first(q, 0, 1, 2, space.scale), 0.0});
+      out.push_back({probability_first(space.model, static_cast<std::size_t>(r.mean.size()), (a.mean - r.mean).norm(),
+                                       (b.mean - r.mean).norm(), log_sigma(t)),
+                     0.0});
     } else {
-      const auto u = uncertain_probability_first(r, a, b, space.scale, kUncertaintySamples, generator);
+      const auto u = uncertain_probability_first(r, a, b, space.model, kUncertaintySamples, generator);
       out.push_back({u.mean, u.sd});
     }
   }

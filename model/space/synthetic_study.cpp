@@ -50,7 +50,7 @@ void check_space_size(std::size_t dims, std::size_t stimuli) {
 }  // namespace
 
 RecoveryError recovery_error(const Eigen::MatrixXd& fitted, const Eigen::MatrixXd& truth,
-                             double scale) {
+                             const JudgmentModel& model) {
   if (fitted.rows() != truth.rows() || fitted.cols() != truth.cols())
     throw std::invalid_argument("recovery_error: the fit and the truth differ in shape");
   const Eigen::MatrixXd aligned = procrustes_align(fitted, truth);
@@ -63,8 +63,8 @@ RecoveryError recovery_error(const Eigen::MatrixXd& fitted, const Eigen::MatrixX
   double sum = 0.0;
   const std::vector<io::Triplet> all = all_triplets(n);
   for (const io::Triplet& t : all)
-    sum += std::abs(probability_first(fitted, t.reference, t.a, t.b, scale) -
-                    probability_first(truth, t.reference, t.a, t.b, scale));
+    sum += std::abs(probability_first(model, fitted, t.reference, t.a, t.b) -
+                    probability_first(model, truth, t.reference, t.a, t.b));
   result.probabilities = all.empty() ? 0.0 : sum / static_cast<double>(all.size());
   return result;
 }

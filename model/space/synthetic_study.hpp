@@ -28,7 +28,7 @@ struct RecoveryError {
 
 // Throws std::invalid_argument when the two are not the same shape.
 RecoveryError recovery_error(const Eigen::MatrixXd& fitted, const Eigen::MatrixXd& truth,
-                             double scale = kThurstoneScale);
+                             const JudgmentModel& model = {});
 
 // Which judgments the fit sees. paper: two_stage_counts (stage 2, and the stage-one triplets
 // that were not ties). all_judgments: every answer of both stages. The paper's selection keeps the

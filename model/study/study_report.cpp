@@ -34,9 +34,8 @@ class SpacePredictor {
   std::optional<double> p_left(const space::Trial& t) const {
     const Eigen::Index r = columns_[t.reference], a = columns_[t.left], b = columns_[t.right];
     if (r < 0 || a < 0 || b < 0) return std::nullopt;
-    return space::probability_first(space_.coordinates, static_cast<std::size_t>(r),
-                                    static_cast<std::size_t>(a), static_cast<std::size_t>(b),
-                                    space_.scale);
+    return space::probability_first(space_.model, space_.coordinates, static_cast<std::size_t>(r),
+                                    static_cast<std::size_t>(a), static_cast<std::size_t>(b));
   }
 
  private:

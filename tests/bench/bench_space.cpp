@@ -27,7 +27,7 @@ space::SpaceProblem paper_sized_study() {
     for (std::size_t a = 0; a < 15; ++a)
       for (std::size_t b = a + 1; b < 15; ++b) {
         if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(2, space::probability_first(truth, r, a, b));
+        std::binomial_distribution<int> observer(2, space::probability_first(space::JudgmentModel{}, truth, r, a, b));
         io::Triplet t;
         t.reference = r, t.a = a, t.b = b;
         t.count_a = observer(generator);

@@ -1,6 +1,7 @@
 // `nibrig space ...`: registers the perceptual-space subcommands; the work is in
 // space_fit_command.cpp, space_validate_command.cpp, space_query_commands.cpp and
 // space_design_commands.cpp.
+#include "model/space/judgment_model.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
@@ -9,6 +10,22 @@
 
 namespace nibrig::ui::cli {
 namespace {
+
+// A judgment model's name (model/space/judgment_model.hpp), refused while parsing with the names
+// that exist; "auto" and "all" where the option takes them.
+CLI::Validator judgment_model_name(bool auto_allowed, bool all_allowed = false) {
+  return CLI::Validator(
+      [auto_allowed, all_allowed](std::string& text) {
+        if ((auto_allowed && text == "auto") || (all_allowed && text == "all")) return std::string();
+        try {
+          model::space::parse_family(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what()) + (auto_allowed ? ", or auto" : "") + (all_allowed ? ", or all" : "");
+        }
+      },
+      "MODEL");
+}
 
 void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) {
   auto o = std::make_shared<SpaceFitOptions>();
@@ -33,6 +50,15 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--bootstrap", o->bootstrap,
                   "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
       ->check(whole_in_range(0, 100000, "a number of resamples"));
+  fit->add_option("--model", o->model,
+                  "Judgment model: probit (the paper's, default), logistic or student-t, each optionally with "
+                  "+lapse and then +noise; or auto: the one that predicts held-out judgments best")
+      ->check(judgment_model_name(true));
+  fit->add_option("--models", o->models, "Candidates of --model auto (default: all twelve)")
+      ->delimiter(',')
+      ->check(judgment_model_name(false));
+  fit->add_option("--folds", o->folds, "Folds of --model auto's cross-validation (default 5)")
+      ->check(whole_in_range(2, 100, "a number of folds"));
   fit->add_option("--plot", o->plot, "PNG of the space (first two axes)")
       ->check(file_to_write());
   fit->add_option("-o,--output", o->output, "Output space file (default space.json)")
@@ -40,6 +66,8 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->callback([o, global] {
     configure_logging(global->verbosity);
     if (o->bootstrap == 1) throw CLI::ValidationError("--bootstrap", "needs at least 2 resamples");
+    if (!o->models.empty() && o->model != "auto")
+      throw CLI::ValidationError("--models", "lists the candidates of --model auto");
     run_space_fit(*o, worker_threads(*global));
   });
 }
@@ -64,6 +92,10 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
   v->add_option("--lambdas", o->lambdas, "Lambdas to try (default 0)")
       ->delimiter(',')
       ->check(non_negative("a weight"));
+  v->add_option("--models", o->models,
+                "Judgment models to try: names as for space fit --model, or all (default probit)")
+      ->delimiter(',')
+      ->check(judgment_model_name(false, true));
   v->add_option("--starts", o->starts, "Random starts per fit (default 8)")
       ->check(whole_in_range(1, 10000, "a number of starts"));
   v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)")->check(any_seed());

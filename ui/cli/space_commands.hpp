@@ -13,6 +13,9 @@ struct SpaceFitOptions {
   int starts = 16;
   unsigned seed = 1;
   int bootstrap = 0;  // resamples; 0 = no confidence regions
+  std::string model = "probit";     // a family's name, or "auto"
+  std::vector<std::string> models;  // the candidates of --model auto; empty: every family
+  int folds = 5;                    // of --model auto
 };
 void run_space_fit(const SpaceFitOptions& options, unsigned threads);
 
@@ -21,6 +24,7 @@ struct SpaceValidateOptions {
   int folds = 5;
   std::vector<std::size_t> dims{1, 2, 3};
   std::vector<double> lambdas{0.0};
+  std::vector<std::string> models{"probit"};  // family names, or "all"
   int starts = 8;
   unsigned seed = 1;
 };

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "model/space/bootstrap.hpp"
 #include "ui/report/figures.hpp"
@@ -72,29 +73,27 @@ void write_sweep_plot(const std::vector<space::SweepPoint>& points, const std::s
   report::LinePlot plot;
   plot.title = title;
   plot.y_label = "held-out error |#gDp| (%)";
-  if (lambdas.size() == 1) {
-    plot.x_label = "dimensions";
-    report::LineSeries line{fmt::format("#gl = {:g}", points.front().lambda), {}, {}, {}, {}};
-    for (const auto& p : points) {
-      line.x.push_back(static_cast<double>(p.dims));
-      line.y.push_back(100 * p.mean_error);
-      line.y_low.push_back(100 * (p.mean_error - p.sd_error));
-      line.y_high.push_back(100 * (p.mean_error + p.sd_error));
-    }
-    plot.series.push_back(line);
-  } else {
-    plot.x_label = "#gl";
-    std::map<std::size_t, report::LineSeries> by_dims;
-    for (const auto& p : points) {
-      auto& line = by_dims[p.dims];
-      line.label = std::to_string(p.dims) + "-D";
-      line.x.push_back(p.lambda);
-      line.y.push_back(100 * p.mean_error);
-      line.y_low.push_back(100 * (p.mean_error - p.sd_error));
-      line.y_high.push_back(100 * (p.mean_error + p.sd_error));
-    }
-    for (auto& [d, line] : by_dims) plot.series.push_back(line);
+  std::set<std::string> models;
+  for (const auto& p : points) models.insert(space::family_name(p.model));
+  const auto add = [](report::LineSeries& line, double x, const space::SweepPoint& p) {
+    line.x.push_back(x);
+    line.y.push_back(100 * p.mean_error);
+    line.y_low.push_back(100 * (p.mean_error - p.sd_error));
+    line.y_high.push_back(100 * (p.mean_error + p.sd_error));
+  };
+  // One line per judgment model (or per λ when one model), or per dimension and model over λ.
+  std::map<std::string, report::LineSeries> lines;
+  std::vector<std::string> order;
+  for (const auto& p : points) {
+    const std::string model = models.size() > 1 ? space::family_name(p.model) : "";
+    const std::string key = lambdas.size() == 1
+                                ? (model.empty() ? fmt::format("#gl = {:g}", p.lambda) : model)
+                                : std::to_string(p.dims) + "-D" + (model.empty() ? "" : " " + model);
+    if (!lines.count(key)) order.push_back(key), lines[key].label = key;
+    add(lines[key], lambdas.size() == 1 ? static_cast<double>(p.dims) : p.lambda, p);
   }
+  plot.x_label = lambdas.size() == 1 ? "dimensions" : "#gl";
+  for (const auto& key : order) plot.series.push_back(lines[key]);
   report::write_line_plot(plot, png);
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <iostream>
 
 #include "model/space/space_file.hpp"
@@ -31,6 +32,22 @@ void report_axis_correlations(const space::SpaceFile& file) {
   }
 }
 
+// Which judgment model, with its fitted parts, and the cross-validation that chose it.
+void report_model(const space::SpaceFile& file) {
+  std::string parts;
+  if (file.model.family.lapse) parts += fmt::format(", lapse {:.3f}", file.model.lapse);
+  if (file.model.log_noise.size() > 0)
+    parts += fmt::format(", noise per stimulus {:.2f} to {:.2f} (sigma, 1 = typical)",
+                         std::exp(file.model.log_noise.minCoeff()), std::exp(file.model.log_noise.maxCoeff()));
+  std::cout << fmt::format("judgment model {}{}: {}\n", space::family_name(file.model.family), parts, file.model_reason);
+  if (file.model_scores.empty()) return;
+  std::cout << "  model                    held-out log loss   majority   individual   error\n";
+  for (const auto& s : file.model_scores)
+    std::cout << fmt::format("  {:<24} {:>8.4f}           {:5.1f} %    {:5.1f} %     {:5.1f} %{}\n", s.family,
+                             s.log_loss, 100 * s.majority_agreement, 100 * s.individual_agreement, 100 * s.mean_error,
+                             s.family == space::family_name(file.model.family) ? "  <- chosen" : "");
+}
+
 }  // namespace
 
 void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
@@ -43,6 +60,13 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
   settings.seed = o.seed;
   settings.threads = threads;
   settings.bootstrap = o.bootstrap;
+  settings.choose_model = o.model == "auto";
+  if (!settings.choose_model) settings.model = space::parse_family(o.model);
+  if (!o.models.empty()) {
+    settings.candidates.clear();
+    for (const auto& name : o.models) settings.candidates.push_back(space::parse_family(name));
+  }
+  settings.folds = o.folds;
   // One bar a step: the starts, then the bootstrap's refits.
   std::string step_shown;
   std::function<void(std::size_t, std::size_t)> bar;
@@ -59,6 +83,7 @@ void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
       "of {} starts, worst start {:.2f}\n",
       o.dims, file.stimuli.size(), file.seconds, fitted.fit.negative_log_likelihood, file.responses,
       o.starts, fitted.fit.start_objectives.back());
+  report_model(file);
   if (in.descriptors) report_axis_correlations(file);
   if (file.descriptor_map)
     for (std::size_t d = 0; d < file.descriptor_map->r_squared.size(); ++d)

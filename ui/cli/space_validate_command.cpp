@@ -56,6 +56,14 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   space::SweepOptions sweep;
   sweep.dims = o.dims;
   sweep.lambdas = o.lambdas;
+  sweep.models.clear();
+  for (const auto& name : o.models) {
+    if (name == "all") {
+      sweep.models = space::every_family();
+      break;
+    }
+    sweep.models.push_back(space::parse_family(name));
+  }
   sweep.cross_validation.folds = o.folds;
   sweep.cross_validation.seed = o.seed;
   sweep.cross_validation.fit.starts = o.starts;
@@ -63,7 +71,7 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   sweep.cross_validation.fit.threads = threads;
   spdlog::info("{}: {} stimuli, {} triplets; {}-fold cross-validation of {} spaces",
                o.judgments.string(), in.problem.stimuli, in.problem.triplets.size(), o.folds,
-               o.dims.size() * o.lambdas.size());
+               o.dims.size() * o.lambdas.size() * sweep.models.size());
   const std::vector<space::SweepPoint> points =
       space::sweep_dimensions(in.problem, descriptors, sweep, progress_bar("fitting folds"));
 
@@ -79,14 +87,17 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   std::cout << fmt::format("{}-fold cross-validation of {} ({} triplets, {} responses)\n", o.folds,
                            o.judgments.filename().string(), in.problem.triplets.size(),
                            model::io::response_count(in.judgments));
-  std::cout << " dims  lambda   error (mean ± sd over folds)   majority   individual\n";
+  std::cout << " dims  lambda  model                    error (mean ± sd over folds)   majority   individual"
+               "   log loss\n";
   for (const auto& p : points) {
-    std::cout << fmt::format("  {:>2}  {:>6.3g}   {:5.1f} % ± {:4.1f} %             {:5.1f} %    "
-                             "{:5.1f} %\n",
-                             p.dims, p.lambda, 100 * p.mean_error, 100 * p.sd_error,
-                             100 * p.majority_agreement, 100 * p.individual_agreement);
+    std::cout << fmt::format("  {:>2}  {:>6.3g}  {:<24} {:5.1f} % ± {:4.1f} %             {:5.1f} %    "
+                             "{:5.1f} %     {:.4f}\n",
+                             p.dims, p.lambda, space::family_name(p.model), 100 * p.mean_error, 100 * p.sd_error,
+                             100 * p.majority_agreement, 100 * p.individual_agreement, p.log_loss);
     json["points"].push_back({{"dims", p.dims},
                               {"lambda", p.lambda},
+                              {"model", space::family_name(p.model)},
+                              {"log_loss", p.log_loss},
                               {"mean_error", p.mean_error},
                               {"sd_error", p.sd_error},
                               {"majority_agreement", p.majority_agreement},

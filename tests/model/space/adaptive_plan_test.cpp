@@ -21,8 +21,8 @@ double probability_error(const Eigen::MatrixXd& fit, const Eigen::MatrixXd& trut
   double sum = 0.0;
   const auto all = all_triplets(static_cast<std::size_t>(truth.cols()));
   for (const auto& t : all)
-    sum += std::abs(probability_first(fit, t.reference, t.a, t.b) -
-                    probability_first(truth, t.reference, t.a, t.b));
+    sum += std::abs(probability_first(JudgmentModel{}, fit, t.reference, t.a, t.b) -
+                    probability_first(JudgmentModel{}, truth, t.reference, t.a, t.b));
   return sum / static_cast<double>(all.size());
 }
 
@@ -49,8 +49,8 @@ TEST(AdaptivePlan, BaldPrefersUncertainOutcomesTheEnsembleDisagreesOn) {
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     // The closed form for two members: H((p_A + p_B)/2) − (H(p_A) + H(p_B))/2.
     const io::Triplet& t = candidates[c];
-    const double pa = probability_first(a, t.reference, t.a, t.b);
-    const double pb = probability_first(b, t.reference, t.a, t.b);
+    const double pa = probability_first(JudgmentModel{}, a, t.reference, t.a, t.b);
+    const double pb = probability_first(JudgmentModel{}, b, t.reference, t.a, t.b);
     const double closed =
         binary_entropy((pa + pb) / 2) - (binary_entropy(pa) + binary_entropy(pb)) / 2;
     EXPECT_NEAR(gains[c], closed, 1e-14) << "candidate " << c;  // round-off of a few logs

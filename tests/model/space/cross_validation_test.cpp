@@ -33,7 +33,7 @@ TEST(SpaceCrossValidation, HeldOutErrorApproachesTheObserversOwnNoise) {
   options.fit.starts = 4;
   const CrossValidationResult cv = cross_validate(study, options);
   ASSERT_EQ(cv.folds.size(), 5u);
-  std::vector<double> truth_p = predict_triplets(truth, study.triplets, study.scale);
+  std::vector<double> truth_p = predict_triplets(truth, study.triplets, study.model);
   const PredictionScores floor = score_predictions(truth_p, study.triplets);
   const PredictionScores chance =
       score_predictions(std::vector<double>(study.triplets.size(), 0.5), study.triplets);

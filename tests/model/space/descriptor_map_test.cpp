@@ -66,11 +66,11 @@ TEST(SpaceDescriptorMap, UncertainProbabilityIsExactForCertainPositions) {
   Placement a{Eigen::Vector2d(1, 0), Eigen::Matrix2d::Zero()};
   Placement b{Eigen::Vector2d(0, 2), Eigen::Matrix2d::Zero()};
   std::mt19937_64 generator(1);
-  const UncertainProbability u = uncertain_probability_first(r, a, b, 2.0 / 3.0, 50, generator);
+  const UncertainProbability u = uncertain_probability_first(r, a, b, JudgmentModel{}, 50, generator);
   EXPECT_NEAR(u.mean, 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-12);  // Φ(2/3)
   EXPECT_NEAR(u.sd, 0.0, 1e-12);
   b.covariance = Eigen::Matrix2d::Identity();
-  EXPECT_GT(uncertain_probability_first(r, a, b, 2.0 / 3.0, 200, generator).sd, 0.01);
+  EXPECT_GT(uncertain_probability_first(r, a, b, JudgmentModel{}, 200, generator).sd, 0.01);
 }
 
 TEST(SpaceDescriptorMap, RejectsTablesThatDoNotMatch) {

@@ -85,8 +85,8 @@ TEST(SpaceObjective, AnalyticGradientMatchesFiniteDifferences) {
 TEST(SpaceObjective, OneUnitOfDistanceIsSeventyFivePercent) {
   Eigen::MatrixXd q(1, 3);
   q << 0.0, 1.0, 2.0;  // a at distance 1 from the reference, b at distance 2
-  EXPECT_NEAR(probability_first(q, 0, 1, 2), 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-15);
-  EXPECT_NEAR(probability_first(q, 0, 1, 2), 0.7475, 1e-4);
+  EXPECT_NEAR(probability_first(JudgmentModel{}, q, 0, 1, 2), 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-15);
+  EXPECT_NEAR(probability_first(JudgmentModel{}, q, 0, 1, 2), 0.7475, 1e-4);
 }
 
 TEST(SpaceObjective, BadProblemsNameWhatIsWrong) {

@@ -35,7 +35,7 @@ TEST(SimulatedObserver, AnswerFrequencyMatchesTheModelProbability) {
                                 {1, 0, 2},
                                 {2, 1, 3},
                                 {0, 1, 4}}) {
-    const double p = probability_first(q, r, a, b);
+    const double p = probability_first(JudgmentModel{}, q, r, a, b);
     EXPECT_DOUBLE_EQ(observer.probability_first(r, a, b), p);
     std::vector<Trial> trials(static_cast<std::size_t>(n), Trial{r, a, b, 1});
     int first = 0;
@@ -49,7 +49,7 @@ TEST(SimulatedObserver, AnswerFrequencyMatchesTheModelProbability) {
   std::vector<Trial> swapped(static_cast<std::size_t>(n), Trial{0, 2, 1, 1});
   int right = 0;
   for (Choice c : observer.answer(swapped, generator)) right += c == Choice::right;
-  const double p = probability_first(q, 0, 1, 2);
+  const double p = probability_first(JudgmentModel{}, q, 0, 1, 2);
   EXPECT_NEAR(static_cast<double>(right) / n, p, 4.5 * std::sqrt(p * (1 - p) / n));
 }
 

@@ -14,7 +14,7 @@ SpaceFile example() {
   SpaceFile s;
   s.stimuli = {"a/x", "b/x", "c/x", "d/x", "e/x"};
   s.coordinates = Eigen::MatrixXd::Random(2, 5);
-  s.scale = 2.0 / 3.0;
+  s.model.scale = 2.0 / 3.0;
   s.lambda = 0.5;
   s.descriptor_names = {"mu", "log10_vib"};
   s.descriptors = Eigen::MatrixXd::Random(5, 2);

@@ -17,7 +17,7 @@ SpaceFile three_tools() {
   s.coordinates.resize(2, 3);
   s.coordinates << 0.0, 1.0, 3.0,  //
       0.0, 0.5, -1.0;
-  s.scale = 2.0 / 3.0;
+  s.model.scale = 2.0 / 3.0;
   return s;
 }
 
@@ -31,7 +31,7 @@ TEST(SpaceInputs, JudgedStimuliAreLocatedExactlyAndTheirAnswerHasNoSpread) {
   ASSERT_EQ(p.size(), 2u);
   // d = |pencil − pen| − |charcoal − pen|, P(pencil closer) = Φ(−s·d) = erfc(s·d/√2)/2.
   const double d = std::hypot(3.0, 1.0) - std::hypot(2.0, 1.5);
-  EXPECT_NEAR(p[0].p, 0.5 * std::erfc(s.scale * d / std::sqrt(2.0)), 1e-12);
+  EXPECT_NEAR(p[0].p, 0.5 * std::erfc(s.model.scale * d / std::sqrt(2.0)), 1e-12);
   EXPECT_NEAR(p[0].p + p[1].p, 1.0, 1e-12);  // the same question asked the other way round
   EXPECT_EQ(p[0].sd, 0.0);
   EXPECT_FALSE(locator.placed("pen/office"));

@@ -21,8 +21,9 @@ inline Eigen::MatrixXd random_truth(Eigen::Index dims, Eigen::Index stimuli, uns
   return truth;
 }
 
-inline SpaceProblem every_triplet_judged(const Eigen::MatrixXd& truth, int judgments,
-                                         unsigned seed) {
+// By the paper's observer unless another judgment model is given (a link, a lapse, noises).
+inline SpaceProblem every_triplet_judged(const Eigen::MatrixXd& truth, int judgments, unsigned seed,
+                                         const JudgmentModel& model = {}) {
   std::mt19937 generator(seed);
   SpaceProblem p;
   p.dims = static_cast<std::size_t>(truth.rows());
@@ -31,7 +32,7 @@ inline SpaceProblem every_triplet_judged(const Eigen::MatrixXd& truth, int judgm
     for (std::size_t a = 0; a < p.stimuli; ++a)
       for (std::size_t b = a + 1; b < p.stimuli; ++b) {
         if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(judgments, probability_first(truth, r, a, b));
+        std::binomial_distribution<int> observer(judgments, probability_first(model, truth, r, a, b));
         io::Triplet t;
         t.reference = r, t.a = a, t.b = b;
         t.count_a = observer(generator);

@@ -101,7 +101,7 @@ TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
   space::SpaceFile space;
   for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
   space.coordinates = truth;
-  space.scale = space::kThurstoneScale;
+  space.model.scale = space::kThurstoneScale;
   space::write_space_file(dir / "truth.json", space);
   NothingPresented nothing;
   for (int k = 0; k < 12; ++k) {
@@ -146,7 +146,7 @@ TEST(SimulatedTruth, JudgedStimuliKeepTheirPlaceAndOthersGoWhereTheCallerPlacesT
   space::SpaceFile space;
   space.stimuli = {"a/x", "b/x", "c/x"};
   space.coordinates = Eigen::MatrixXd{{0.0, 1.0, 2.0}, {0.5, -0.5, 0.0}};
-  space.scale = space::kThurstoneScale;
+  space.model.scale = space::kThurstoneScale;
   const std::vector<Stimulus> stimuli = {{"c/x", "c", "x"}, {"D1", "DM85:1,tip=2mm", "x"}, {"a/x", "a", "x"}};
   const PlaceOther place = [](const Stimulus& s) -> std::optional<Eigen::VectorXd> {
     if (s.name != "D1") return std::nullopt;

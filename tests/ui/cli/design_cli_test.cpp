@@ -44,7 +44,7 @@ std::filesystem::path write_test_space(const std::filesystem::path& folder) {
     s.coordinates(0, i) = 5 * table.values(i, 0) + wobble;
     s.coordinates(1, i) = table.values(i, 1) - wobble;
   }
-  s.scale = 1.0;
+  s.model.scale = 1.0;
   s.judgments = "none: a space made for the test";
   s.descriptor_map = space::fit_descriptor_map(s.coordinates, s.descriptors, s.descriptor_names);
   const auto file = folder / "space.json";

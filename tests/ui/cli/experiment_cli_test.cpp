@@ -51,7 +51,7 @@ ExperimentTruth make_truth(const fs::path& dir, std::size_t count, std::uint64_t
   model::space::SpaceFile space;
   space.stimuli = t.names;
   space.coordinates = t.coordinates;
-  space.scale = model::space::kThurstoneScale;
+  space.model.scale = model::space::kThurstoneScale;
   t.space = dir / "truth.json";
   model::space::write_space_file(t.space, space);
   return t;

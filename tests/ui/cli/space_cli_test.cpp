@@ -30,7 +30,7 @@ std::filesystem::path simulated_judgments(const std::filesystem::path& dir) {
       for (std::size_t b = a + 1; b < 6; ++b) {
         if (a == r || b == r) continue;
         std::binomial_distribution<int> observer(10,
-                                                 model::space::probability_first(truth, r, a, b));
+                                                 model::space::probability_first(model::space::JudgmentModel{}, truth, r, a, b));
         model::io::Triplet t;
         t.reference = r, t.a = a, t.b = b;
         t.count_a = observer(generator);
@@ -77,7 +77,7 @@ TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
     EXPECT_EQ(b, queries.stimuli[t.b]);
     // Written with 10 significant digits.
     EXPECT_NEAR(std::stod(p),
-                model::space::probability_first(space.coordinates, t.reference, t.a, t.b), 1e-9);
+                model::space::probability_first(model::space::JudgmentModel{}, space.coordinates, t.reference, t.a, t.b), 1e-9);
   }
   EXPECT_FALSE(std::getline(csv, line));
 

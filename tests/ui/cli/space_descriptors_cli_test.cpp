@@ -44,7 +44,7 @@ Study descriptor_study(const std::filesystem::path& dir) {
       (1.5 * ((values.rowwise() - mean).array().rowwise() / sd.array())).matrix().transpose();
   std::mt19937 generator(3);
   auto judge = [&](std::size_t r, std::size_t a, std::size_t b, int n) {
-    std::binomial_distribution<int> observer(n, model::space::probability_first(truth, r, a, b));
+    std::binomial_distribution<int> observer(n, model::space::probability_first(model::space::JudgmentModel{}, truth, r, a, b));
     model::io::Triplet t;
     t.reference = r, t.a = a, t.b = b;
     t.count_a = observer(generator);

@@ -17,7 +17,7 @@ inline model::space::SpaceFile small_space() {
   s.coordinates.resize(2, 3);
   s.coordinates << 0.0, 3.0, -2.0,  //
       0.0, 1.0, 2.0;
-  s.scale = 2.0 / 3.0;
+  s.model.scale = 2.0 / 3.0;
   s.lambda = 1.0;
   s.judgments = "written by the panel's tests";
   return s;
@@ -42,7 +42,7 @@ inline std::filesystem::path write_descriptor_space(const std::filesystem::path&
   s.coordinates = table.values.transpose();
   // A little scatter so that the map's residual covariance is not singular.
   for (Eigen::Index i = 0; i < s.coordinates.cols(); ++i) s.coordinates(0, i) += 0.01 * static_cast<double>(i % 3);
-  s.scale = 2.0 / 3.0;
+  s.model.scale = 2.0 / 3.0;
   s.descriptor_names = table.names;
   s.descriptors = table.values;
   s.descriptor_source = catalog_file.string();
