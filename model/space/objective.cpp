@@ -12,32 +12,28 @@ constexpr double kCorrelationSmoothing = 1e-12;  // ε² in log √(r² + ε²)
 
 std::string triplet_name(std::size_t t) { return "triplet " + std::to_string(t); }
 
-double distance(const Eigen::MatrixXd& q, std::size_t i, std::size_t j) {
-  return (q.col(i) - q.col(j)).norm();
-}
-
-// d/dQ_i of ‖Q_i − Q_j‖: the unit vector from j to i, 0 where they coincide.
-Eigen::VectorXd unit(const Eigen::MatrixXd& q, std::size_t i, std::size_t j) {
-  Eigen::VectorXd v = q.col(i) - q.col(j);
-  const double n = v.norm();
-  return n > 0 ? Eigen::VectorXd(v / n) : Eigen::VectorXd::Zero(v.size());
-}
-
 double likelihood_part(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
                        Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
   const bool noise = m.log_noise.size() > 0;
   double nll = 0.0;
   TripletGradient g;
+  // The two offsets from the reference, in buffers allocated once: with a heap vector per triplet,
+  // parallel starts spent their time in the allocator (Lagunas: 22,801 triplets an evaluation).
+  Eigen::VectorXd va(static_cast<Eigen::Index>(p.dims)), vb(static_cast<Eigen::Index>(p.dims));
   for (const auto& t : p.triplets) {
+    const auto col = [](std::size_t i) { return static_cast<Eigen::Index>(i); };
+    va = q.col(col(t.a)) - q.col(col(t.reference));
+    vb = q.col(col(t.b)) - q.col(col(t.reference));
+    const double da = va.norm(), db = vb.norm();
     const double log_sigma = triplet_log_sigma(m, t.reference, t.a, t.b);
-    nll += triplet_negative_log_likelihood(m, p.dims, distance(q, t.a, t.reference), distance(q, t.b, t.reference),
-                                           log_sigma, t.count_a, t.count_b,
+    nll += triplet_negative_log_likelihood(m, p.dims, da, db, log_sigma, t.count_a, t.count_b,
                                            gradient || model_gradient ? &g : nullptr);
     if (gradient) {
-      const Eigen::VectorXd ua = unit(q, t.a, t.reference), ub = unit(q, t.b, t.reference);
-      gradient->col(t.a) += g.distance_a * ua;
-      gradient->col(t.b) += g.distance_b * ub;
-      gradient->col(t.reference) -= g.distance_a * ua + g.distance_b * ub;
+      // ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide (a subgradient).
+      const double ka = da > 0 ? g.distance_a / da : 0.0, kb = db > 0 ? g.distance_b / db : 0.0;
+      gradient->col(col(t.a)) += ka * va;
+      gradient->col(col(t.b)) += kb * vb;
+      gradient->col(col(t.reference)) -= ka * va + kb * vb;
     }
     if (!model_gradient) continue;
     model_gradient->lapse += g.lapse;
