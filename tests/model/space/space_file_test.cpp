@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "model/io/format_error.hpp"
 #include "tests/support/test_paths.hpp"
@@ -45,6 +46,49 @@ TEST(SpaceFile, DescriptorsMapAndRegionsSurviveARoundTrip) {
   EXPECT_EQ(r.regions[3].radius, s.regions[3].radius);
   EXPECT_TRUE(r.regions[3].covariance.isApprox(s.regions[3].covariance));
   EXPECT_EQ(r.bootstrap_resamples, 100);
+}
+
+TEST(SpaceFile, TheJudgmentModelItsChoiceAndAnOlderFileWithoutOneRead) {
+  const auto dir = nibrig::test::scratch_dir("space_file_model");
+  SpaceFile s = example();
+  s.model.family = {Link::student_t, true, true};
+  s.model.lapse = 0.031;
+  s.model.log_noise = Eigen::VectorXd::LinSpaced(5, -0.4, 0.6);
+  s.model_reason = "5-fold cross-validation of 12 models";
+  s.model_scores = {{"probit", 0.52, 0.81, 0.7, 0.2}, {"student-t+lapse+noise", 0.5, 0.83, 0.71, 0.19}};
+  write_space_file(dir / "space.json", s);
+  const SpaceFile r = read_space_file(dir / "space.json");
+  EXPECT_EQ(r.model.family, s.model.family);
+  EXPECT_EQ(r.model.lapse, 0.031);
+  EXPECT_TRUE(r.model.log_noise.isApprox(s.model.log_noise, 1e-15));
+  EXPECT_EQ(r.model_reason, s.model_reason);
+  ASSERT_EQ(r.model_scores.size(), 2u);
+  EXPECT_EQ(r.model_scores[1].family, "student-t+lapse+noise");
+  EXPECT_EQ(r.model_scores[1].majority_agreement, 0.83);
+
+  // A space written before judgment models existed holds the paper's.
+  nlohmann::json old = nlohmann::json::parse(std::ifstream(dir / "space.json"));
+  old.erase("judgment_model");
+  std::ofstream(dir / "old.json") << old.dump();
+  EXPECT_EQ(read_space_file(dir / "old.json").model.family, kPaperModel);
+  // A noise too few, and an unknown family, are named with their place.
+  old["judgment_model"] = {{"family", "probit+noise"}, {"lapse", 0.0}, {"log_noise", {0.1, 0.2}}};
+  std::ofstream(dir / "short.json") << old.dump();
+  try {
+    read_space_file(dir / "short.json");
+    FAIL() << "two noises for five stimuli were accepted";
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("judgment_model.log_noise"), std::string::npos) << e.what();
+  }
+  old["judgment_model"] = {{"family", "cauchy"}, {"lapse", 0.0}};
+  std::ofstream(dir / "unknown.json") << old.dump();
+  try {
+    read_space_file(dir / "unknown.json");
+    FAIL() << "an unknown family was accepted";
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("judgment_model.family"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("student-t+lapse+noise"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SpaceFile, ARegionOfTheWrongShapeIsNamed) {
