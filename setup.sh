@@ -102,6 +102,7 @@ case "$job" in
     [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24")
     "${display[@]}" ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
     /usr/bin/python3 tests/bench/scipy_spectrogram.py
+    /usr/bin/python3 tests/bench/numpy_space_fit.py
     ;;
   panel)
     configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF

@@ -63,17 +63,10 @@ void read_model(const Eigen::VectorXd& x, Eigen::Index from, JudgmentModel& mode
   if (model.family.stimulus_noise) model.log_noise = x.segment(from, model.log_noise.size());
 }
 
-StartResult run_start(const SpaceProblem& problem, const FitOptions& options, int start) {
-  std::mt19937_64 generator(options.seed + static_cast<unsigned>(start));
-  std::normal_distribution<double> normal(0.0, options.start_spread);
-  Eigen::MatrixXd q0(static_cast<Eigen::Index>(problem.dims),
-                     static_cast<Eigen::Index>(problem.stimuli));
-  if (start == 0 && options.initial.size() > 0) {
-    q0 = options.initial.colwise() - options.initial.col(static_cast<Eigen::Index>(options.pinned));
-  } else {
-    for (Eigen::Index i = 0; i < q0.size(); ++i) q0.data()[i] = normal(generator);
-    q0.col(static_cast<Eigen::Index>(options.pinned)).setZero();
-  }
+// L-BFGS from q0 (and the model's lapse and noises as problem.model holds them, where its family
+// fits them) to the best point it reaches.
+StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0,
+                          const FitOptions& options, int start) {
   const Eigen::VectorXd coordinates = free_part(q0, options.pinned);
   const Eigen::Index free_coordinates = coordinates.size();
   JudgmentModel model = problem.model;
@@ -143,10 +136,38 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
     throw std::runtime_error("the objective is not finite at start " + std::to_string(start));
   x = best_x;
   const double fx = best_f;
-  result.coordinates = to_coordinates(x.head(free_coordinates), problem.dims, problem.stimuli, options.pinned);
+  result.coordinates =
+      to_coordinates(x.head(free_coordinates), problem.dims, problem.stimuli, options.pinned);
   read_model(x, free_coordinates, model);
   result.model = model;
   result.objective = fx;
+  return result;
+}
+
+StartResult run_start(const SpaceProblem& problem, const FitOptions& options, int start) {
+  std::mt19937_64 generator(options.seed + static_cast<unsigned>(start));
+  std::normal_distribution<double> normal(0.0, options.start_spread);
+  Eigen::MatrixXd q0(static_cast<Eigen::Index>(problem.dims),
+                     static_cast<Eigen::Index>(problem.stimuli));
+  const bool given = start == 0 && options.initial.size() > 0;
+  if (given) {
+    q0 = options.initial.colwise() - options.initial.col(static_cast<Eigen::Index>(options.pinned));
+  } else {
+    for (Eigen::Index i = 0; i < q0.size(); ++i) q0.data()[i] = normal(generator);
+    q0.col(static_cast<Eigen::Index>(options.pinned)).setZero();
+  }
+  const ModelFamily& family = problem.model.family;
+  if (given || (!family.lapse && !family.stimulus_noise))
+    return minimize_from(problem, q0, options, start);
+  // From a random start, the coordinates are found first by the link alone, and the lapse and
+  // noises fitted with them from there: fitted together from the start, while every prediction is
+  // still a guess, the lapse ran to ½ (all answers random) and stayed, its sigmoid flat there
+  // (Lagunas, Student-t + lapse).
+  SpaceProblem link_alone = problem;
+  link_alone.model.family.lapse = link_alone.model.family.stimulus_noise = false;
+  const StartResult first = minimize_from(link_alone, q0, options, start);
+  StartResult result = minimize_from(problem, first.coordinates, options, start);
+  result.iterations += first.iterations;
   return result;
 }
 
@@ -166,11 +187,12 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
                                 std::to_string(problem.dims) + " × " +
                                 std::to_string(problem.stimuli));
 
+  const SpaceProblem as_fitted = with_link_prior(problem);
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
   numeric::ProgressCounter counter(progress, results.size());
   numeric::parallel_for(results.size(), options.threads, [&](std::size_t s) {
     if (numeric::cancel_requested(options.cancel)) return;
-    results[s] = run_start(problem, options, static_cast<int>(s));
+    results[s] = run_start(as_fitted, options, static_cast<int>(s));
     counter.finished();
   });
   // Checked after the join, so that no worker still writes into `results` when the caller unwinds.

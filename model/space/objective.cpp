@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-
 namespace nibrig::model::space {
 namespace {
 
@@ -88,9 +87,11 @@ void validate(const SpaceProblem& p) {
   if (!(p.model.lapse >= 0 && p.model.lapse < 0.5))
     throw std::invalid_argument("the judgment model's lapse rate must be in [0, 0.5)");
   if (p.model.log_noise.size() > 0 &&
-      (static_cast<std::size_t>(p.model.log_noise.size()) != p.stimuli || !p.model.log_noise.allFinite()))
-    throw std::invalid_argument("the judgment model has " + std::to_string(p.model.log_noise.size()) +
-                                " noises, expected one per stimulus (" + std::to_string(p.stimuli) + "), finite");
+      (static_cast<std::size_t>(p.model.log_noise.size()) != p.stimuli ||
+       !p.model.log_noise.allFinite()))
+    throw std::invalid_argument(
+        "the judgment model has " + std::to_string(p.model.log_noise.size()) +
+        " noises, expected one per stimulus (" + std::to_string(p.stimuli) + "), finite");
   if (!(p.prior_sd >= 0) || !std::isfinite(p.prior_sd))
     throw std::invalid_argument("the coordinate prior's sd must be zero (none) or positive");
   for (std::size_t i = 0; i < p.triplets.size(); ++i) {
@@ -126,8 +127,8 @@ double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixX
   return objective(p, q, p.model, gradient, nullptr);
 }
 
-double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const JudgmentModel& m, Eigen::MatrixXd* gradient,
-                 ModelGradient* model_gradient) {
+double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const JudgmentModel& m,
+                 Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
   if (gradient) gradient->setZero(q.rows(), q.cols());
   if (model_gradient) {
     model_gradient->lapse = 0.0;
@@ -146,6 +147,12 @@ double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const Judgment
     if (model_gradient) model_gradient->log_noise += precision * m.log_noise;
   }
   return value;
+}
+
+SpaceProblem with_link_prior(SpaceProblem p) {
+  if (p.model.family.link == Link::student_t && p.prior_sd == 0)
+    p.prior_sd = kStudentCoordinatePriorSd;
+  return p;
 }
 
 double negative_log_likelihood(const SpaceProblem& p, const Eigen::MatrixXd& q) {

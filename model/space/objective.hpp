@@ -30,6 +30,10 @@ struct SpaceProblem {
   double prior_sd = 0.0;
 };
 
+// The problem as fitted: with kStudentCoordinatePriorSd as its coordinate prior when its link is
+// Student-t and it has none.
+SpaceProblem with_link_prior(SpaceProblem problem);
+
 // Throws std::invalid_argument naming the triplet or field: an index out of range, a reference
 // equal to a candidate, a negative count, descriptors of the wrong shape or with a constant column
 // (no correlation exists), λ < 0, a negative prior_sd, fewer stimuli than dims + 1.

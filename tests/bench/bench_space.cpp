@@ -4,6 +4,7 @@
 // < 20 s, < 10 s on this 2-core machine.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <random>
 
 #include "model/io/triplets.hpp"
@@ -65,6 +66,35 @@ void BM_FitLagunas3D(benchmark::State& state) {
   state.counters["triplets"] = static_cast<double>(p.triplets.size());
 }
 
+// One start on one thread for each judgment model, beside tests/bench/numpy_space_fit.py (numpy and
+// scipy's L-BFGS-B on the same data, models and starts): seconds per start, and the optimum, so the
+// two are known to reach the same place.
+void BM_SpaceStartLagunas3D(benchmark::State& state) {
+  static const io::TripletSet set = io::read_lagunas_json(nibrig::test::shared_data() / "lagunas2019" /
+                                                          "answers_processed_train.json");
+  const char* families[] = {"probit", "logistic", "student-t", "probit+lapse+noise"};
+  const char* family = families[state.range(0)];
+  space::SpaceProblem p;
+  p.dims = 3;
+  p.stimuli = set.stimuli.size();
+  p.triplets = set.triplets;
+  p.model.family = space::parse_family(family);
+  space::FitOptions options;
+  options.starts = 1;
+  options.threads = 1;
+  unsigned seed = 0;
+  double best = 0.0, iterations = 0.0;
+  for (auto _ : state) {
+    options.seed = seed++;  // a new start each time, as the reference's three
+    const auto fit = space::fit_space(p, options);
+    best = seed == 1 ? fit.objective : std::min(best, fit.objective);
+    iterations += fit.iterations;
+  }
+  state.SetLabel(family);
+  state.counters["objective"] = best;
+  state.counters["iterations"] = iterations / static_cast<double>(seed);
+}
+
 void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
   const space::SpaceProblem study = paper_sized_study();
   space::FitOptions fit_options;
@@ -82,5 +112,6 @@ void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
 BENCHMARK(BM_FitPaperSizedStudy2D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Bootstrap1000PaperSized2D)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FitLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SpaceStartLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
