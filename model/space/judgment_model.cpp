@@ -39,10 +39,10 @@ LinkTerms link_terms(Link link, double alpha, double xa, double xb) {
   LinkTerms t;
   switch (link) {
     case Link::probit: {  // z = x_b − x_a; P(a) = Φ(z)
-      const double z = xb - xa;
-      t.log_a = log_normal_cdf(z);
-      t.log_b = log_normal_cdf(-z);
-      const double ra = normal_pdf_over_cdf(z), rb = normal_pdf_over_cdf(-z);
+      const NormalSides sides = normal_sides(xb - xa);
+      t.log_a = sides.log_cdf;
+      t.log_b = sides.log_cdf_negative;
+      const double ra = sides.pdf_over_cdf, rb = sides.pdf_over_cdf_negative;
       t.log_a_dxa = -ra, t.log_a_dxb = ra, t.log_b_dxa = rb, t.log_b_dxb = -rb;
       break;
     }
@@ -77,8 +77,9 @@ struct Lapsed {
   double value = 0.0, d_log = 1.0, d_lapse = 0.0;
 };
 Lapsed with_lapse(double log_p, double lapse) {
-  // (At ε = 0 the ε-derivative is 1/(2P) − 1, bounded where P underflows: no fit uses it there.)
-  if (lapse == 0.0) return {log_p, 1.0, 0.5 * std::exp(std::min(-log_p, 700.0)) - 1.0};
+  // ε = 0 only where the family fits no lapse (a fitted one is σ(θ)/2 > 0), so its derivative,
+  // 1/(2P) − 1, is not asked for there: 0 saves two exponentials per triplet.
+  if (lapse == 0.0) return {log_p, 1.0, 0.0};
   const double guess = std::log(0.5 * lapse), judged = std::log1p(-lapse) + log_p;
   const double high = std::max(guess, judged);
   const double value = high + std::log(std::exp(guess - high) + std::exp(judged - high));

@@ -77,8 +77,8 @@ double student_degrees_of_freedom(std::size_t dims);
 
 // One triplet's negative log-likelihood, −(n_a log P'(a) + n_b log P'(b)), from the two distances
 // to the reference and the triplet's log σ_t, with its derivatives when `gradient` is given:
-// ∂/∂d_a, ∂/∂d_b, ∂/∂log σ_t, ∂/∂ε. Finite for every finite input (log Φ and softplus in their
-// tails).
+// ∂/∂d_a, ∂/∂d_b, ∂/∂log σ_t, ∂/∂ε (0 at ε = 0: no lapse fitted). Finite for every finite input
+// (log Φ and softplus in their tails).
 struct TripletGradient {
   double distance_a = 0.0, distance_b = 0.0, log_sigma = 0.0, lapse = 0.0;
 };

@@ -35,4 +35,16 @@ double normal_pdf_over_cdf(double x) {
   return 1.0 / mills_ratio(-x);
 }
 
+NormalSides normal_sides(double x) {
+  const double t = std::abs(x);
+  if (-t < kTail)
+    return {log_normal_cdf(x), log_normal_cdf(-x), normal_pdf_over_cdf(x), normal_pdf_over_cdf(-x)};
+  const double small = 0.5 * std::erfc(t / kSqrt2);  // Φ(−t) ≤ ½
+  const double pdf = std::exp(-0.5 * t * t - kLogSqrt2Pi);
+  const double log_small = std::log(small), log_large = std::log1p(-small);
+  const double ratio_small = pdf / small, ratio_large = pdf / (1.0 - small);
+  if (x >= 0) return {log_large, log_small, ratio_large, ratio_small};
+  return {log_small, log_large, ratio_small, ratio_large};
+}
+
 }  // namespace nibrig::model::space

@@ -28,7 +28,8 @@ space::SpaceProblem paper_sized_study() {
     for (std::size_t a = 0; a < 15; ++a)
       for (std::size_t b = a + 1; b < 15; ++b) {
         if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(2, space::probability_first(space::JudgmentModel{}, truth, r, a, b));
+        std::binomial_distribution<int> observer(
+            2, space::probability_first(space::JudgmentModel{}, truth, r, a, b));
         io::Triplet t;
         t.reference = r, t.a = a, t.b = b;
         t.count_a = observer(generator);
@@ -70,8 +71,8 @@ void BM_FitLagunas3D(benchmark::State& state) {
 // scipy's L-BFGS-B on the same data, models and starts): seconds per start, and the optimum, so the
 // two are known to reach the same place.
 void BM_SpaceStartLagunas3D(benchmark::State& state) {
-  static const io::TripletSet set = io::read_lagunas_json(nibrig::test::shared_data() / "lagunas2019" /
-                                                          "answers_processed_train.json");
+  static const io::TripletSet set = io::read_lagunas_json(
+      nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json");
   const char* families[] = {"probit", "logistic", "student-t", "probit+lapse+noise"};
   const char* family = families[state.range(0)];
   space::SpaceProblem p;
@@ -95,6 +96,23 @@ void BM_SpaceStartLagunas3D(benchmark::State& state) {
   state.counters["iterations"] = iterations / static_cast<double>(seed);
 }
 
+// One evaluation of the objective and its gradient (probit) at a random 3-D space of Lagunas's
+// stimuli, beside numpy_space_fit.py's per-evaluation time.
+void BM_SpaceObjectiveLagunas3D(benchmark::State& state) {
+  static const io::TripletSet set = io::read_lagunas_json(
+      nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json");
+  space::SpaceProblem p;
+  p.dims = 3;
+  p.stimuli = set.stimuli.size();
+  p.triplets = set.triplets;
+  const Eigen::MatrixXd q = Eigen::MatrixXd::Random(3, static_cast<Eigen::Index>(p.stimuli));
+  Eigen::MatrixXd g;
+  for (auto _ : state) benchmark::DoNotOptimize(space::objective(p, q, &g));
+  state.counters["ns_per_triplet"] = benchmark::Counter(
+      static_cast<double>(p.triplets.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
   const space::SpaceProblem study = paper_sized_study();
   space::FitOptions fit_options;
@@ -112,6 +130,7 @@ void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
 BENCHMARK(BM_FitPaperSizedStudy2D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Bootstrap1000PaperSized2D)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FitLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SpaceObjectiveLagunas3D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpaceStartLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

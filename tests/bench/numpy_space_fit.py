@@ -23,6 +23,7 @@ from scipy import optimize, special
 SCALE = 2.0 / 3.0
 LOGISTIC_SLOPE = 1.702
 NOISE_PRIOR_SD = 0.5
+STUDENT_COORDINATE_PRIOR_SD = 10.0  # kStudentCoordinatePriorSd
 
 
 def lagunas(path):
@@ -105,6 +106,9 @@ def make_objective(family, data, dims):
             wa_d, wb_d = ka * va[d], kb * vb[d]
             grad_q[d] = (np.bincount(a, wa_d, n) + np.bincount(b, wb_d, n) - np.bincount(r, wa_d + wb_d, n))
         grad = [grad_q[:, 1:].T.reshape(-1)]
+        if link == "student-t":
+            value += 0.5 * (x[:free] ** 2).sum() / STUDENT_COORDINATE_PRIOR_SD ** 2
+            grad[0] = grad[0] + x[:free] / STUDENT_COORDINATE_PRIOR_SD ** 2
         if lapse_on:
             u = special.expit(x[free])
             grad.append(np.array([d_eps * 0.5 * u * (1 - u)]))
@@ -151,10 +155,20 @@ def main():
     for family in ("probit", "logistic", "student-t", "probit+lapse+noise"):
         f, size, free, lapse_on = make_objective(family, data, dims)
         check_gradient(f, start(size, free, lapse_on, 99))
+        if family == "probit":  # one evaluation with its gradient, beside BM_SpaceObjectiveLagunas3D
+            x = start(size, free, lapse_on, 5)
+            t = time.perf_counter()
+            for _ in range(20):
+                f(x)
+            print(f"  one probit evaluation with gradient: {(time.perf_counter() - t) / 20 * 1e3:.2f} ms")
         times, best = [], math.inf
+        base = make_objective(family.split("+")[0], data, dims)[0] if "+" in family else None
         for s in range(3):
             x0 = start(size, free, lapse_on, s)
             t = time.perf_counter()
+            if base:  # as nibrig does: the coordinates by the link alone first, then every part
+                x0[:free] = optimize.minimize(base, x0[:free], jac=True, method="L-BFGS-B",
+                                              options={"maxiter": 1000}).x
             res = optimize.minimize(f, x0, jac=True, method="L-BFGS-B", options={"maxiter": 1000})
             times.append(time.perf_counter() - t)
             best = min(best, res.fun)

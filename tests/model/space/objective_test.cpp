@@ -28,6 +28,23 @@ TEST(NormalTail, LogCdfAgreesWithErfcAndItsAsymptote) {
   }
 }
 
+TEST(NormalTail, BothSidesAtOnceAgreeWithEachSideAlone) {
+  // 1 − Φ(−t) for the larger side loses at most an ulp of it; the tail forms are the same calls.
+  for (double x : {0.0, 0.3, -0.3, 2.0, -2.0, 4.99, -4.99, 5.01, -5.01, 12.0, -40.0}) {
+    const NormalSides s = normal_sides(x);
+    EXPECT_NEAR(s.log_cdf, log_normal_cdf(x), 1e-15 + 1e-14 * std::abs(log_normal_cdf(x))) << x;
+    EXPECT_NEAR(s.log_cdf_negative, log_normal_cdf(-x),
+                1e-15 + 1e-14 * std::abs(log_normal_cdf(-x)))
+        << x;
+    EXPECT_NEAR(s.pdf_over_cdf, normal_pdf_over_cdf(x),
+                1e-14 * std::max(1.0, normal_pdf_over_cdf(x)))
+        << x;
+    EXPECT_NEAR(s.pdf_over_cdf_negative, normal_pdf_over_cdf(-x),
+                1e-14 * std::max(1.0, normal_pdf_over_cdf(-x)))
+        << x;
+  }
+}
+
 TEST(NormalTail, PdfOverCdfIsTheDerivativeOfLogCdf) {
   for (double x : {2.0, 0.3, -3.0, -4.9999, -5.0001, -8.0, -40.0, -500.0}) {
     const double h = 1e-5 * std::max(1.0, std::abs(x));
@@ -85,7 +102,8 @@ TEST(SpaceObjective, AnalyticGradientMatchesFiniteDifferences) {
 TEST(SpaceObjective, OneUnitOfDistanceIsSeventyFivePercent) {
   Eigen::MatrixXd q(1, 3);
   q << 0.0, 1.0, 2.0;  // a at distance 1 from the reference, b at distance 2
-  EXPECT_NEAR(probability_first(JudgmentModel{}, q, 0, 1, 2), 0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-15);
+  EXPECT_NEAR(probability_first(JudgmentModel{}, q, 0, 1, 2),
+              0.5 * std::erfc(-(2.0 / 3.0) / std::sqrt(2.0)), 1e-15);
   EXPECT_NEAR(probability_first(JudgmentModel{}, q, 0, 1, 2), 0.7475, 1e-4);
 }
 
