@@ -55,15 +55,20 @@ LinkTerms link_terms(Link link, double alpha, double xa, double xb) {
       break;
     }
     case Link::student_t: {  // P(a) = K_a/(K_a + K_b) = 1/(1 + e^u), u = log K_b − log K_a
-      const auto log_kernel = [alpha](double x) {
-        return -0.5 * (alpha + 1.0) * std::log1p(x * x / alpha);
-      };
-      const auto log_kernel_dx = [alpha](double x) { return -(alpha + 1.0) * x / (alpha + x * x); };
-      const double u = log_kernel(xb) - log_kernel(xa);
-      t.log_a = -softplus(u);
-      t.log_b = -softplus(-u);
-      const double du_dxa = -log_kernel_dx(xa), du_dxb = log_kernel_dx(xb);
-      const double la_du = -logistic(u), lb_du = logistic(-u);
+      // u = −(α+1)/2 · log((α + x_b²)/(α + x_a²)): one log; then softplus(±u) and σ(±u) from one
+      // exponential and one log1p (eight transcendentals a triplet before, three now).
+      const double wa = alpha + xa * xa, wb = alpha + xb * xb;
+      const double u = -0.5 * (alpha + 1.0) * std::log(wb / wa);
+      const double e = std::exp(-std::abs(u)), tail = std::log1p(e);
+      const double softplus_u = std::max(u, 0.0) + tail;  // softplus(−u) = softplus(u) − u
+      t.log_a = -softplus_u;
+      t.log_b = -(softplus_u - u);
+      const double sigma_abs = 1.0 / (1.0 + e), sigma_neg_abs = e / (1.0 + e);  // σ(|u|), σ(−|u|)
+      const double sigma_u = u >= 0 ? sigma_abs : sigma_neg_abs,
+                   sigma_minus_u = u >= 0 ? sigma_neg_abs : sigma_abs;
+      // d log K/dx = −(α+1)·x/(α + x²)
+      const double du_dxa = (alpha + 1.0) * xa / wa, du_dxb = -(alpha + 1.0) * xb / wb;
+      const double la_du = -sigma_u, lb_du = sigma_minus_u;
       t.log_a_dxa = la_du * du_dxa, t.log_a_dxb = la_du * du_dxb;
       t.log_b_dxa = lb_du * du_dxa, t.log_b_dxb = lb_du * du_dxb;
       break;
