@@ -11,35 +11,18 @@
 #include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
+#include "tests/ui/cli/line_judgments.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
 
 using test::run_cli;
 
-// Every triplet of six stimuli on a line (0, 1, ..., 5 units) judged 10 times by a simulated
+// Every triplet of six stimuli on a line (0, 1, ..., 5 units) judged 10 times by the paper's
 // observer.
 std::filesystem::path simulated_judgments(const std::filesystem::path& dir) {
-  Eigen::MatrixXd truth(1, 6);
-  truth << 0, 1, 2, 3, 4, 5;
-  model::io::TripletSet set;
-  for (int i = 0; i < 6; ++i) set.stimuli.push_back("s" + std::to_string(i));
-  std::mt19937 generator(5);
-  for (std::size_t r = 0; r < 6; ++r)
-    for (std::size_t a = 0; a < 6; ++a)
-      for (std::size_t b = a + 1; b < 6; ++b) {
-        if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(10,
-                                                 model::space::probability_first(model::space::JudgmentModel{}, truth, r, a, b));
-        model::io::Triplet t;
-        t.reference = r, t.a = a, t.b = b;
-        t.count_a = observer(generator);
-        t.count_b = 10 - t.count_a;
-        set.triplets.push_back(t);
-      }
-  const auto file = dir / "judgments.csv";
-  model::io::write_triplet_csv(file, set);
-  return file;
+  return test::write_line_judgments(dir / "judgments.csv",
+                                    Eigen::RowVectorXd::LinSpaced(6, 0.0, 5.0), 10, 5);
 }
 
 TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
@@ -77,7 +60,9 @@ TEST(SpaceCli, FitThenPredictGivesTheModelsProbabilitiesInInputOrder) {
     EXPECT_EQ(b, queries.stimuli[t.b]);
     // Written with 10 significant digits.
     EXPECT_NEAR(std::stod(p),
-                model::space::probability_first(model::space::JudgmentModel{}, space.coordinates, t.reference, t.a, t.b), 1e-9);
+                model::space::probability_first(model::space::JudgmentModel{}, space.coordinates,
+                                                t.reference, t.a, t.b),
+                1e-9);
   }
   EXPECT_FALSE(std::getline(csv, line));
 

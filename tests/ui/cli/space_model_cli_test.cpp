@@ -11,6 +11,7 @@
 #include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
+#include "tests/ui/cli/line_judgments.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -21,28 +22,11 @@ namespace space = model::space;
 // Every triplet of eight stimuli on a line (0, 0.8, ..., 5.6 units) judged 12 times by an observer
 // who answers at random a fifth of the time.
 std::filesystem::path lapsing_judgments(const std::filesystem::path& dir) {
-  Eigen::MatrixXd truth = Eigen::RowVectorXd::LinSpaced(8, 0.0, 5.6);
   space::JudgmentModel observer;
   observer.family.lapse = true;
   observer.lapse = 0.2;
-  model::io::TripletSet set;
-  for (int i = 0; i < 8; ++i) set.stimuli.push_back("s" + std::to_string(i));
-  std::mt19937 generator(9);
-  for (std::size_t r = 0; r < 8; ++r)
-    for (std::size_t a = 0; a < 8; ++a)
-      for (std::size_t b = a + 1; b < 8; ++b) {
-        if (a == r || b == r) continue;
-        std::binomial_distribution<int> answers(12,
-                                                space::probability_first(observer, truth, r, a, b));
-        model::io::Triplet t;
-        t.reference = r, t.a = a, t.b = b;
-        t.count_a = answers(generator);
-        t.count_b = 12 - t.count_a;
-        set.triplets.push_back(t);
-      }
-  const auto file = dir / "judgments.csv";
-  model::io::write_triplet_csv(file, set);
-  return file;
+  return test::write_line_judgments(dir / "judgments.csv",
+                                    Eigen::RowVectorXd::LinSpaced(8, 0.0, 5.6), 12, 9, observer);
 }
 
 TEST(SpaceModelCli, AutoChoosesByCrossValidationAndRecordsWhy) {
