@@ -81,23 +81,11 @@ TEST(JudgmentModel, ProbabilitiesFollowTheirDefinitions) {
 // Every family's gradient, in the coordinates, the lapse and the noises, against central
 // differences of the objective (with the descriptor term and the coordinate prior on as well).
 TEST(JudgmentModel, GradientsMatchFiniteDifferencesForEveryFamily) {
-  std::mt19937 generator(7);
-  std::normal_distribution<double> normal;
   const std::size_t stimuli = 7, dims = 2;
-  SpaceProblem p;
-  p.stimuli = stimuli, p.dims = dims, p.lambda = 0.3, p.prior_sd = 3.0;
-  std::uniform_int_distribution<std::size_t> pick(0, stimuli - 1);
-  std::uniform_int_distribution<int> count(0, 5);
-  while (p.triplets.size() < 50) {
-    io::Triplet t;
-    t.reference = pick(generator), t.a = pick(generator), t.b = pick(generator);
-    if (t.reference == t.a || t.reference == t.b || t.a == t.b) continue;
-    t.count_a = count(generator), t.count_b = count(generator);
-    p.triplets.push_back(t);
-  }
-  p.descriptors = Eigen::MatrixXd(stimuli, dims);
-  for (Eigen::Index i = 0; i < p.descriptors.size(); ++i)
-    p.descriptors.data()[i] = normal(generator);
+  SpaceProblem p = testing::random_problem(stimuli, dims, 0.3, 7);
+  p.prior_sd = 3.0;
+  std::mt19937 generator(8);
+  std::normal_distribution<double> normal;
   Eigen::MatrixXd q(dims, stimuli);
   for (Eigen::Index i = 0; i < q.size(); ++i) q.data()[i] = 1.5 * normal(generator);
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "model/space/normal_tail.hpp"
+#include "tests/model/space/study_fixture.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -54,27 +55,7 @@ TEST(NormalTail, PdfOverCdfIsTheDerivativeOfLogCdf) {
   }
 }
 
-SpaceProblem random_problem(std::size_t stimuli, std::size_t dims, double lambda, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, stimuli - 1);
-  std::uniform_int_distribution<int> count(0, 6);
-  SpaceProblem p;
-  p.stimuli = stimuli;
-  p.dims = dims;
-  p.lambda = lambda;
-  while (p.triplets.size() < 60) {
-    io::Triplet t;
-    t.reference = pick(generator), t.a = pick(generator), t.b = pick(generator);
-    if (t.reference == t.a || t.reference == t.b || t.a == t.b) continue;
-    t.count_a = count(generator), t.count_b = count(generator);
-    p.triplets.push_back(t);
-  }
-  std::normal_distribution<double> normal;
-  p.descriptors = Eigen::MatrixXd(stimuli, dims);
-  for (Eigen::Index i = 0; i < p.descriptors.size(); ++i)
-    p.descriptors.data()[i] = normal(generator);
-  return p;
-}
+using testing::random_problem;
 
 TEST(SpaceObjective, AnalyticGradientMatchesFiniteDifferences) {
   for (double lambda : {0.0, 3.0}) {

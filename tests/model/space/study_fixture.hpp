@@ -1,6 +1,6 @@
 // Simulated judgments for the space tests: every triplet of a known space judged a number of times
-// by a Thurstonian observer, so that a fit, a cross-validation or a bootstrap can be checked against
-// the truth.
+// by a Thurstonian observer, so that a fit, a cross-validation or a bootstrap can be checked
+// against the truth.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,13 +32,39 @@ inline SpaceProblem every_triplet_judged(const Eigen::MatrixXd& truth, int judgm
     for (std::size_t a = 0; a < p.stimuli; ++a)
       for (std::size_t b = a + 1; b < p.stimuli; ++b) {
         if (a == r || b == r) continue;
-        std::binomial_distribution<int> observer(judgments, probability_first(model, truth, r, a, b));
+        std::binomial_distribution<int> observer(judgments,
+                                                 probability_first(model, truth, r, a, b));
         io::Triplet t;
         t.reference = r, t.a = a, t.b = b;
         t.count_a = observer(generator);
         t.count_b = judgments - t.count_a;
         p.triplets.push_back(t);
       }
+  return p;
+}
+
+// 60 random triplets of `stimuli` with counts 0-6 and a random descriptor per axis: a problem that
+// exercises every term of the objective, for checks of its gradient.
+inline SpaceProblem random_problem(std::size_t stimuli, std::size_t dims, double lambda,
+                                   unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, stimuli - 1);
+  std::uniform_int_distribution<int> count(0, 6);
+  SpaceProblem p;
+  p.stimuli = stimuli;
+  p.dims = dims;
+  p.lambda = lambda;
+  while (p.triplets.size() < 60) {
+    io::Triplet t;
+    t.reference = pick(generator), t.a = pick(generator), t.b = pick(generator);
+    if (t.reference == t.a || t.reference == t.b || t.a == t.b) continue;
+    t.count_a = count(generator), t.count_b = count(generator);
+    p.triplets.push_back(t);
+  }
+  std::normal_distribution<double> normal;
+  p.descriptors = Eigen::MatrixXd(stimuli, dims);
+  for (Eigen::Index i = 0; i < p.descriptors.size(); ++i)
+    p.descriptors.data()[i] = normal(generator);
   return p;
 }
 
