@@ -119,6 +119,7 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
   // test alone took 2.7 times the evaluations to polish the same optimum to its last digits.
   param.past = 1;
   param.delta = 1e-9;
+  param.m = 10;  // corrections kept, as scipy's L-BFGS-B (maxcor); LBFGSpp's default is 6
   param.max_iterations = options.max_iterations;
   LBFGSpp::LBFGSSolver<double> solver(param);
   StartResult result;

@@ -2,20 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
-#include "model/space/normal_tail.hpp"
+#include "model/space/triplet_kernel.hpp"
 
 namespace nibrig::model::space {
 namespace {
-
-// log(1 + e^x) without overflow, and the logistic σ(x) = its derivative.
-double softplus(double x) { return x > 0 ? x + std::log1p(std::exp(-x)) : std::log1p(std::exp(x)); }
-double logistic(double x) {
-  if (x >= 0) return 1.0 / (1.0 + std::exp(-x));
-  const double e = std::exp(x);
-  return e / (1.0 + e);
-}
 
 const char* link_name(Link link) {
   switch (link) {
@@ -29,75 +22,32 @@ const char* link_name(Link link) {
   return "?";
 }
 
-// log P(a), log P(b) of the link alone at x_a = s·d_a/σ, x_b = s·d_b/σ, and their derivatives.
-struct LinkTerms {
-  double log_a = 0.0, log_b = 0.0;
-  double log_a_dxa = 0.0, log_a_dxb = 0.0, log_b_dxa = 0.0, log_b_dxb = 0.0;
-};
-
-LinkTerms link_terms(Link link, double alpha, double xa, double xb) {
-  LinkTerms t;
-  switch (link) {
-    case Link::probit: {  // z = x_b − x_a; P(a) = Φ(z)
-      const NormalSides sides = normal_sides(xb - xa);
-      t.log_a = sides.log_cdf;
-      t.log_b = sides.log_cdf_negative;
-      const double ra = sides.pdf_over_cdf, rb = sides.pdf_over_cdf_negative;
-      t.log_a_dxa = -ra, t.log_a_dxb = ra, t.log_b_dxa = rb, t.log_b_dxb = -rb;
-      break;
-    }
-    case Link::logistic: {  // P(a) = σ(c·z)
-      const double cz = kLogisticSlope * (xb - xa);
-      t.log_a = -softplus(-cz);
-      t.log_b = -softplus(cz);
-      const double ga = kLogisticSlope * logistic(-cz), gb = kLogisticSlope * logistic(cz);
-      t.log_a_dxa = -ga, t.log_a_dxb = ga, t.log_b_dxa = gb, t.log_b_dxb = -gb;
-      break;
-    }
-    case Link::student_t: {  // P(a) = K_a/(K_a + K_b) = 1/(1 + e^u), u = log K_b − log K_a
-      // u = −(α+1)/2 · log((α + x_b²)/(α + x_a²)): one log; then softplus(±u) and σ(±u) from one
-      // exponential and one log1p (eight transcendentals a triplet before, three now).
-      const double wa = alpha + xa * xa, wb = alpha + xb * xb;
-      const double u = -0.5 * (alpha + 1.0) * std::log(wb / wa);
-      const double e = std::exp(-std::abs(u)), tail = std::log1p(e);
-      const double softplus_u = std::max(u, 0.0) + tail;  // softplus(−u) = softplus(u) − u
-      t.log_a = -softplus_u;
-      t.log_b = -(softplus_u - u);
-      const double sigma_abs = 1.0 / (1.0 + e), sigma_neg_abs = e / (1.0 + e);  // σ(|u|), σ(−|u|)
-      const double sigma_u = u >= 0 ? sigma_abs : sigma_neg_abs,
-                   sigma_minus_u = u >= 0 ? sigma_neg_abs : sigma_abs;
-      // d log K/dx = −(α+1)·x/(α + x²)
-      const double du_dxa = (alpha + 1.0) * xa / wa, du_dxb = -(alpha + 1.0) * xb / wb;
-      const double la_du = -sigma_u, lb_du = sigma_minus_u;
-      t.log_a_dxa = la_du * du_dxa, t.log_a_dxb = la_du * du_dxb;
-      t.log_b_dxa = lb_du * du_dxa, t.log_b_dxb = lb_du * du_dxb;
-      break;
-    }
-  }
-  return t;
-}
-
-// log(ε/2 + (1−ε)·e^ℓ) and its derivatives in ℓ and ε.
-struct Lapsed {
-  double value = 0.0, d_log = 1.0, d_lapse = 0.0;
-};
-Lapsed with_lapse(double log_p, double lapse) {
-  // ε = 0 only where the family fits no lapse (a fitted one is σ(θ)/2 > 0), so its derivative,
-  // 1/(2P) − 1, is not asked for there: 0 saves two exponentials per triplet.
-  if (lapse == 0.0) return {log_p, 1.0, 0.0};
-  const double guess = std::log(0.5 * lapse), judged = std::log1p(-lapse) + log_p;
-  const double high = std::max(guess, judged);
-  const double value = high + std::log(std::exp(guess - high) + std::exp(judged - high));
-  return {value, std::exp(judged - value), (0.5 - std::exp(log_p)) * std::exp(-value)};
-}
-
 }  // namespace
+
+TripletKernel kernel_of(const JudgmentModel& m, std::size_t dims) {
+  return {m.family.link, student_degrees_of_freedom(dims), m.lapse};
+}
 
 std::string family_name(const ModelFamily& family) {
   std::string name = link_name(family.link);
   if (family.lapse) name += "+lapse";
   if (family.stimulus_noise) name += "+noise";
   return name;
+}
+
+std::string describe_model(const JudgmentModel& m) {
+  std::string text = family_name(m.family);
+  char part[96];
+  if (m.family.lapse) {
+    std::snprintf(part, sizeof part, ", lapse %.3f", m.lapse);
+    text += part;
+  }
+  if (m.log_noise.size() > 0) {
+    std::snprintf(part, sizeof part, ", noise per stimulus %.2f to %.2f (sigma, 1 = typical)",
+                  std::exp(m.log_noise.minCoeff()), std::exp(m.log_noise.maxCoeff()));
+    text += part;
+  }
+  return text;
 }
 
 std::vector<ModelFamily> every_family() {
@@ -125,27 +75,23 @@ double triplet_negative_log_likelihood(const JudgmentModel& m, std::size_t dims,
                                        TripletGradient* gradient) {
   const double per = m.scale * std::exp(-log_sigma);  // ∂x/∂d
   const double xa = per * da, xb = per * db;
-  const LinkTerms t = link_terms(m.family.link, student_degrees_of_freedom(dims), xa, xb);
-  const Lapsed a = with_lapse(t.log_a, m.lapse), b = with_lapse(t.log_b, m.lapse);
-  const double nll = -(count_a * a.value + count_b * b.value);
+  const TripletTerms t =
+      triplet_terms(kernel_of(m, dims), xa, xb, count_a, count_b, gradient != nullptr);
   if (gradient) {
-    // ∂nll/∂x through each answer's log-probability, then x = per·d.
-    const double dxa = -(count_a * a.d_log * t.log_a_dxa + count_b * b.d_log * t.log_b_dxa);
-    const double dxb = -(count_a * a.d_log * t.log_a_dxb + count_b * b.d_log * t.log_b_dxb);
-    gradient->distance_a = dxa * per;
-    gradient->distance_b = dxb * per;
-    gradient->log_sigma = -(dxa * xa + dxb * xb);  // ∂x/∂log σ = −x
-    gradient->lapse = -(count_a * a.d_lapse + count_b * b.d_lapse);
+    gradient->distance_a = t.d_xa * per;
+    gradient->distance_b = t.d_xb * per;
+    gradient->log_sigma = -(t.d_xa * xa + t.d_xb * xb);  // ∂x/∂log σ = −x
+    gradient->lapse = t.d_lapse;
   }
-  return nll;
+  return t.nll;
 }
 
 double probability_first(const JudgmentModel& m, std::size_t dims, double da, double db,
                          double log_sigma) {
   const double per = m.scale * std::exp(-log_sigma);
-  const LinkTerms t =
-      link_terms(m.family.link, student_degrees_of_freedom(dims), per * da, per * db);
-  return std::exp(with_lapse(t.log_a, m.lapse).value);
+  const detail::LinkTerms t =
+      detail::link_terms(m.family.link, student_degrees_of_freedom(dims), per * da, per * db, false, false);
+  return 0.5 * m.lapse + (1.0 - m.lapse) * t.p_a;
 }
 
 double triplet_log_sigma(const JudgmentModel& m, std::size_t r, std::size_t a, std::size_t b) {

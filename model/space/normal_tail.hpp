@@ -3,7 +3,18 @@
 // gradient.
 #pragma once
 
+#include <cmath>
+
 namespace nibrig::model::space {
+
+inline constexpr double kSqrt2 = 1.4142135623730951;
+inline constexpr double kLogSqrt2Pi = 0.91893853320467274;  // log √(2π)
+// Below this Φ(x) = erfc(−x/√2)/2 nears erfc's underflow (Φ(−37.5) ≈ 1e-307), and the continued
+// fraction is used instead. erfc of a large argument keeps its full relative precision until then
+// (it is not 1 − erf), so the bound sits far out: at −5, as it once was, a fitted Lagunas space
+// sent a third of its triplets through sixty divisions each, and an evaluation inside a fit took
+// 1.5 times one at a random start.
+inline constexpr double kNormalTail = -30.0;
 
 // log of the standard normal CDF; finite for every finite x.
 double log_normal_cdf(double x);
@@ -11,13 +22,36 @@ double log_normal_cdf(double x);
 // φ(x)/Φ(x) (the inverse Mills ratio of −x), the derivative of log Φ; ≈ −x for x → −∞.
 double normal_pdf_over_cdf(double x);
 
-// log Φ(x), log Φ(−x) and the two ratios φ/Φ at x and −x together: one erfc where the four
+// Φ(x), Φ(−x), their logs and the two ratios φ/Φ at x and −x together: one erfc where the four
 // separately took four (Φ of the smaller side, and 1 − it for the larger, loses nothing), the tail
-// forms beyond. The probit likelihood needs all four for every triplet at every evaluation.
+// forms beyond. The probit likelihood needs the ratios for every triplet at every evaluation, and
+// a log only for a side some answer took (half of Lagunas's triplets were unanimous) and only
+// without a lapse (which mixes the probabilities themselves): a log not wanted is left at 0.
 struct NormalSides {
+  double cdf = 0.0, cdf_negative = 0.0;  // 0 where they underflow, far in a tail
   double log_cdf = 0.0, log_cdf_negative = 0.0;
   double pdf_over_cdf = 0.0, pdf_over_cdf_negative = 0.0;
 };
-NormalSides normal_sides(double x);
+// Inline: the probit likelihood's innermost call. |x| > −kNormalTail goes to normal_sides_far.
+NormalSides normal_sides_far(double x, bool log_cdf_wanted, bool log_cdf_negative_wanted);
+inline NormalSides normal_sides(double x, bool log_cdf_wanted = true,
+                                bool log_cdf_negative_wanted = true) {
+  const double t = std::abs(x);
+  if (-t < kNormalTail) return normal_sides_far(x, log_cdf_wanted, log_cdf_negative_wanted);
+  const double small = 0.5 * std::erfc(t / kSqrt2), large = 1.0 - small;  // Φ(−t) ≤ ½, Φ(t)
+  const double pdf = std::exp(-0.5 * t * t - kLogSqrt2Pi);
+  const bool small_is_cdf = x < 0;
+  const bool small_log = small_is_cdf ? log_cdf_wanted : log_cdf_negative_wanted;
+  const bool large_log = small_is_cdf ? log_cdf_negative_wanted : log_cdf_wanted;
+  const double log_small = small_log ? std::log(small) : 0.0;
+  // log of the larger side as log(1 − small), not log1p(−small): the likelihood sums these, so an
+  // absolute error of 1e-16 is what counts, and glibc's log1p took twice log's time. Below 1e-8
+  // its series −small − small²/2 is exact to 1e-24, and a fitted space's confident triplets take
+  // no log at all.
+  const double log_large = !large_log ? 0.0 : small < 1e-8 ? -small * (1.0 + 0.5 * small) : std::log(large);
+  const double ratio_small = pdf / small, ratio_large = pdf / large;
+  if (small_is_cdf) return {small, large, log_small, log_large, ratio_small, ratio_large};
+  return {large, small, log_large, log_small, ratio_large, ratio_small};
+}
 
 }  // namespace nibrig::model::space

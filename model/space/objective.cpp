@@ -1,8 +1,12 @@
 #include "model/space/objective.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 #include <string>
+
+#include "model/space/triplet_kernel.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -11,67 +15,185 @@ constexpr double kCorrelationSmoothing = 1e-12;  // ε² in log √(r² + ε²)
 
 std::string triplet_name(std::size_t t) { return "triplet " + std::to_string(t); }
 
-// The likelihood over the triplets with the space's columns as vectors of D coordinates: fixed for
-// 1-3 dimensions (the spaces people fit), so the offsets live in registers and the loops unroll;
-// Eigen::Dynamic otherwise. Fixed sizes took the Lagunas 3-D evaluation from 122 to 98 ns a
-// triplet.
+// Where a triplet's two distances come from and where ∂nll/∂d_a, ∂nll/∂d_b go, with the space's
+// columns as vectors of D coordinates: fixed for 1-3 dimensions (the spaces people fit), so the
+// offsets live in registers and the loops unroll; Eigen::Dynamic otherwise. Fixed sizes took the
+// Lagunas 3-D evaluation from 122 to 98 ns a triplet.
+//
+// TripletOffsets: each triplet's two offsets from its reference, and their gradient added to the
+// three columns at once.
 template <int D>
-double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
-                                const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient,
-                                ModelGradient* model_gradient) {
+class TripletOffsets {
+ public:
   using Vector = Eigen::Matrix<double, D, 1>;
-  const auto dims = static_cast<Eigen::Index>(p.dims);
-  const auto column = [&](const Eigen::MatrixXd& x, std::size_t i) {
-    return Eigen::Map<const Vector>(x.data() + static_cast<Eigen::Index>(i) * dims, dims);
-  };
-  const auto gradient_column = [&](std::size_t i) {
-    return Eigen::Map<Vector>(gradient->data() + static_cast<Eigen::Index>(i) * dims, dims);
-  };
+  TripletOffsets(const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient)
+      : q_(q), gradient_(gradient), va_(q.rows()), vb_(q.rows()) {}
+
+  std::pair<double, double> distances(const io::Triplet& t) {
+    va_ = column(t.a) - column(t.reference);
+    vb_ = column(t.b) - column(t.reference);
+    da_ = va_.norm(), db_ = vb_.norm();
+    return {da_, db_};
+  }
+  // ∂nll/∂d of the triplet just measured. ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide
+  // (a subgradient).
+  void pull(const io::Triplet& t, double along_a, double along_b) {
+    const double ka = da_ > 0 ? along_a / da_ : 0.0, kb = db_ > 0 ? along_b / db_ : 0.0;
+    gradient_column(t.a) += ka * va_;
+    gradient_column(t.b) += kb * vb_;
+    gradient_column(t.reference) -= ka * va_ + kb * vb_;
+  }
+  void finish() {}
+
+ private:
+  Eigen::Map<const Vector> column(std::size_t i) const {
+    return {q_.data() + static_cast<Eigen::Index>(i) * q_.rows(), q_.rows()};
+  }
+  Eigen::Map<Vector> gradient_column(std::size_t i) {
+    return {gradient_->data() + static_cast<Eigen::Index>(i) * q_.rows(), q_.rows()};
+  }
+  const Eigen::MatrixXd& q_;
+  Eigen::MatrixXd* gradient_;
+  // Buffers made once (on the stack when D is fixed): with a heap vector per triplet, parallel
+  // starts spent their time in the allocator.
+  Vector va_, vb_;
+  double da_ = 0.0, db_ = 0.0;
+};
+
+// PairTable: every pair's distance once an evaluation, and ∂nll/∂d summed per pair before it goes
+// to the two columns. Where pairs are fewer than triplet sides (Lagunas: 4,950 pairs for 45,602
+// sides) a triplet then reads two numbers and adds two, with no square root, division or column
+// update of its own.
+template <int D>
+class PairTable {
+ public:
+  using Vector = Eigen::Matrix<double, D, 1>;
+  PairTable(const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient)
+      : q_(q), gradient_(gradient), n_(q.cols()), distance_(n_, n_) {
+    for (Eigen::Index j = 1; j < n_; ++j)
+      for (Eigen::Index i = 0; i < j; ++i) distance_(i, j) = (column(j) - column(i)).norm();
+    if (gradient_) pull_.setZero(n_, n_);
+  }
+  std::pair<double, double> distances(const io::Triplet& t) const {
+    return {distance_.data()[index(t.reference, t.a)], distance_.data()[index(t.reference, t.b)]};
+  }
+  void pull(const io::Triplet& t, double along_a, double along_b) {
+    pull_.data()[index(t.reference, t.a)] += along_a;
+    pull_.data()[index(t.reference, t.b)] += along_b;
+  }
+  void finish() {
+    if (!gradient_) return;
+    for (Eigen::Index j = 1; j < n_; ++j)
+      for (Eigen::Index i = 0; i < j; ++i) {
+        const double d = distance_(i, j), along = pull_(i, j);
+        if (along == 0.0 || !(d > 0)) continue;  // coincident stimuli: the subgradient 0
+        const Vector g = (along / d) * (column(j) - column(i));
+        gradient_column(j) += g;
+        gradient_column(i) -= g;
+      }
+  }
+
+ private:
+  // (i, j) with i < j: the upper triangle, column-major.
+  Eigen::Index index(std::size_t x, std::size_t y) const {
+    const auto i = static_cast<Eigen::Index>(std::min(x, y)), j = static_cast<Eigen::Index>(std::max(x, y));
+    return i + j * n_;
+  }
+  Eigen::Map<const Vector> column(Eigen::Index i) const {
+    return {q_.data() + i * q_.rows(), q_.rows()};
+  }
+  Eigen::Map<Vector> gradient_column(Eigen::Index i) {
+    return {gradient_->data() + i * q_.rows(), q_.rows()};
+  }
+  const Eigen::MatrixXd& q_;
+  Eigen::MatrixXd* gradient_;
+  Eigen::Index n_;
+  Eigen::MatrixXd distance_, pull_;
+};
+
+// The likelihood over the triplets, their distances from `Distances`, for the link L.
+template <Link L, class Distances>
+double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
+                                Distances& distances, bool coordinate_gradient,
+                                ModelGradient* model_gradient) {
   const bool noise = m.log_noise.size() > 0;
+  const TripletKernel kernel = kernel_of(m, p.dims);
+  const bool with_gradient = coordinate_gradient || model_gradient;
+  // σ_i² = e^{2η_i} once an evaluation, not three times a triplet: σ_t² is their mean over the
+  // triplet's three stimuli, x = s·d/σ_t, and ∂log σ_t/∂η_i = σ_i²/(3σ_t²).
+  const Eigen::VectorXd variance = noise ? Eigen::VectorXd((2.0 * m.log_noise).array().exp())
+                                         : Eigen::VectorXd();
+  if (noise && static_cast<std::size_t>(variance.size()) != p.stimuli)
+    throw std::invalid_argument("the judgment model has noises for " +
+                                std::to_string(variance.size()) + " stimuli, the problem " +
+                                std::to_string(p.stimuli));
   double nll = 0.0;
-  TripletGradient g;
-  // The two offsets from the reference, in buffers made once (on the stack when D is fixed): with a
-  // heap vector per triplet, parallel starts spent their time in the allocator.
-  Vector va(dims), vb(dims);
   for (const auto& t : p.triplets) {
-    va = column(q, t.a) - column(q, t.reference);
-    vb = column(q, t.b) - column(q, t.reference);
-    const double da = va.norm(), db = vb.norm();
-    const double log_sigma = triplet_log_sigma(m, t.reference, t.a, t.b);
-    nll += triplet_negative_log_likelihood(m, p.dims, da, db, log_sigma, t.count_a, t.count_b,
-                                           gradient || model_gradient ? &g : nullptr);
-    if (gradient) {
-      // ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide (a subgradient).
-      const double ka = da > 0 ? g.distance_a / da : 0.0, kb = db > 0 ? g.distance_b / db : 0.0;
-      gradient_column(t.a) += ka * va;
-      gradient_column(t.b) += kb * vb;
-      gradient_column(t.reference) -= ka * va + kb * vb;
-    }
-    if (!model_gradient) continue;
-    model_gradient->lapse += g.lapse;
+    const auto [da, db] = distances.distances(t);
+    double per = m.scale, sum = 0.0;  // ∂x/∂d = s/σ_t
     if (noise) {
-      // ∂log σ_t/∂η_i = σ_i²/(3σ_t²) for each of the triplet's three stimuli.
-      const double inverse = std::exp(-2.0 * log_sigma) / 3.0;
+      sum = variance(static_cast<Eigen::Index>(t.reference)) +
+            variance(static_cast<Eigen::Index>(t.a)) + variance(static_cast<Eigen::Index>(t.b));
+      per = m.scale * std::sqrt(3.0 / sum);
+    }
+    const double xa = per * da, xb = per * db;
+    const TripletTerms terms = triplet_terms<L>(kernel, xa, xb, t.count_a, t.count_b, with_gradient);
+    nll += terms.nll;
+    if (coordinate_gradient) distances.pull(t, terms.d_xa * per, terms.d_xb * per);
+    if (!model_gradient) continue;
+    model_gradient->lapse += terms.d_lapse;
+    if (noise) {
+      const double d_log_sigma = -(terms.d_xa * xa + terms.d_xb * xb);  // ∂x/∂log σ = −x
       for (std::size_t i : {t.reference, t.a, t.b}) {
         const auto k = static_cast<Eigen::Index>(i);
-        model_gradient->log_noise(k) += g.log_sigma * std::exp(2.0 * m.log_noise(k)) * inverse;
+        model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum;
       }
     }
   }
+  if (coordinate_gradient) distances.finish();
   return nll;
+}
+
+template <class Distances>
+double likelihood_by_link(const SpaceProblem& p, const JudgmentModel& m, Distances& distances,
+                          bool coordinate_gradient, ModelGradient* model_gradient) {
+  switch (m.family.link) {
+    case Link::logistic:
+      return likelihood_over_triplets<Link::logistic>(p, m, distances, coordinate_gradient,
+                                                      model_gradient);
+    case Link::student_t:
+      return likelihood_over_triplets<Link::student_t>(p, m, distances, coordinate_gradient,
+                                                       model_gradient);
+    case Link::probit:
+      break;
+  }
+  return likelihood_over_triplets<Link::probit>(p, m, distances, coordinate_gradient,
+                                                model_gradient);
+}
+
+template <int D>
+double likelihood_in(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
+                     Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
+  const auto n = static_cast<std::size_t>(q.cols());
+  if (n * (n - 1) / 2 <= 2 * p.triplets.size()) {
+    PairTable<D> pairs(q, gradient);
+    return likelihood_by_link(p, m, pairs, gradient != nullptr, model_gradient);
+  }
+  TripletOffsets<D> offsets(q, gradient);
+  return likelihood_by_link(p, m, offsets, gradient != nullptr, model_gradient);
 }
 
 double likelihood_part(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
                        Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
   switch (p.dims) {
     case 1:
-      return likelihood_over_triplets<1>(p, m, q, gradient, model_gradient);
+      return likelihood_in<1>(p, m, q, gradient, model_gradient);
     case 2:
-      return likelihood_over_triplets<2>(p, m, q, gradient, model_gradient);
+      return likelihood_in<2>(p, m, q, gradient, model_gradient);
     case 3:
-      return likelihood_over_triplets<3>(p, m, q, gradient, model_gradient);
+      return likelihood_in<3>(p, m, q, gradient, model_gradient);
     default:
-      return likelihood_over_triplets<Eigen::Dynamic>(p, m, q, gradient, model_gradient);
+      return likelihood_in<Eigen::Dynamic>(p, m, q, gradient, model_gradient);
   }
 }
 

@@ -15,8 +15,9 @@ namespace {
 using ::testing::HasSubstr;
 
 TEST(NormalTail, LogCdfAgreesWithErfcAndItsAsymptote) {
-  // Where erfc is still representable both forms hold; 1e-12 relative is the round-off of erfc.
-  for (double x : {3.0, 0.0, -1.0, -4.99, -5.01, -6.0, -10.0, -20.0, -30.0})
+  // Where erfc is still representable both forms hold (the continued fraction from −30 on, checked
+  // beyond it); 1e-12 relative is the round-off of erfc.
+  for (double x : {3.0, 0.0, -1.0, -4.99, -5.01, -6.0, -10.0, -20.0, -29.99, -30.01, -35.0})
     EXPECT_NEAR(log_normal_cdf(x), std::log(0.5 * std::erfc(-x / std::sqrt(2.0))),
                 1e-12 * std::abs(std::log(0.5 * std::erfc(-x / std::sqrt(2.0)))))
         << x;
@@ -30,9 +31,22 @@ TEST(NormalTail, LogCdfAgreesWithErfcAndItsAsymptote) {
 }
 
 TEST(NormalTail, BothSidesAtOnceAgreeWithEachSideAlone) {
-  // 1 − Φ(−t) for the larger side loses at most an ulp of it; the tail forms are the same calls.
-  for (double x : {0.0, 0.3, -0.3, 2.0, -2.0, 4.99, -4.99, 5.01, -5.01, 12.0, -40.0}) {
+  // 1 − Φ(−t) for the larger side loses at most an ulp of it, and its log is taken as log(1 −
+  // Φ(−t)): within 1e-15 absolute, which is what a sum of likelihoods needs; the tail forms are
+  // the same calls.
+  for (double x : {0.0, 0.3, -0.3, 2.0, -2.0, 4.99, -4.99, 12.0, -20.0, 29.99, -29.99, 30.01, -30.01,
+                   -40.0}) {
     const NormalSides s = normal_sides(x);
+    EXPECT_NEAR(s.cdf, 0.5 * std::erfc(-x / std::sqrt(2.0)), 1e-16 + 1e-14 * s.cdf) << x;
+    EXPECT_NEAR(s.cdf_negative, 0.5 * std::erfc(x / std::sqrt(2.0)), 1e-16 + 1e-14 * s.cdf_negative) << x;
+    // A log not asked for is not worked out; the rest is the same.
+    for (const auto& [a, b] : {std::pair{false, true}, std::pair{true, false}}) {
+      const NormalSides one = normal_sides(x, a, b);
+      EXPECT_EQ(one.log_cdf, a ? s.log_cdf : 0.0) << x;
+      EXPECT_EQ(one.log_cdf_negative, b ? s.log_cdf_negative : 0.0) << x;
+      EXPECT_EQ(one.pdf_over_cdf, s.pdf_over_cdf) << x;
+      EXPECT_EQ(one.pdf_over_cdf_negative, s.pdf_over_cdf_negative) << x;
+    }
     EXPECT_NEAR(s.log_cdf, log_normal_cdf(x), 1e-15 + 1e-14 * std::abs(log_normal_cdf(x))) << x;
     EXPECT_NEAR(s.log_cdf_negative, log_normal_cdf(-x),
                 1e-15 + 1e-14 * std::abs(log_normal_cdf(-x)))
@@ -76,6 +90,45 @@ TEST(SpaceObjective, AnalyticGradientMatchesFiniteDifferences) {
       // ~1e-16·f/h ≈ 1e-8; 1e-6 relative leaves room for both and catches any missed term.
       EXPECT_NEAR(gradient.data()[i], numeric, 1e-6 * std::max(1.0, std::abs(numeric)))
           << "lambda " << lambda << ", coordinate " << i;
+    }
+  }
+}
+
+TEST(SpaceObjective, APairTableAndEachTripletsOffsetsGiveTheSameValueAndGradients) {
+  // The likelihood reads a table of every pair's distances where pairs are fewer than triplet
+  // sides, each triplet's own offsets otherwise. The same 60 triplets over 8 stimuli (28 pairs: the
+  // table) and over the same 8 among 40 (780 pairs: the offsets), the other 32 judged in none.
+  SpaceProblem few = random_problem(8, 2, 0.0, 41);
+  few.descriptors.resize(0, 0);
+  SpaceProblem many = few;
+  many.stimuli = 40;
+  std::mt19937 generator(42);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd q_many(2, 40);
+  for (Eigen::Index i = 0; i < q_many.size(); ++i) q_many.data()[i] = normal(generator);
+  const Eigen::MatrixXd q_few = q_many.leftCols(8);
+  for (const char* family : {"logistic+lapse+noise", "student-t", "probit+noise"}) {
+    JudgmentModel m_few;
+    m_few.family = parse_family(family);
+    m_few.lapse = m_few.family.lapse ? 0.07 : 0.0;
+    JudgmentModel m_many = m_few;
+    if (m_few.family.stimulus_noise) {
+      m_many.log_noise = Eigen::VectorXd::Zero(40);  // the unjudged 32 at the prior's mean: no cost
+      for (Eigen::Index i = 0; i < 8; ++i) m_many.log_noise(i) = 0.3 * normal(generator);
+      m_few.log_noise = m_many.log_noise.head(8);
+    }
+    Eigen::MatrixXd g_few, g_many;
+    ModelGradient mg_few, mg_many;
+    const double f_few = objective(few, q_few, m_few, &g_few, &mg_few);
+    const double f_many = objective(many, q_many, m_many, &g_many, &mg_many);
+    // Sums of the same terms in the same order: round-off apart at most.
+    EXPECT_NEAR(f_few, f_many, 1e-12 * std::abs(f_few)) << family;
+    EXPECT_LT((g_few - g_many.leftCols(8)).cwiseAbs().maxCoeff(), 1e-12 * g_few.cwiseAbs().maxCoeff()) << family;
+    EXPECT_EQ(g_many.rightCols(32).cwiseAbs().maxCoeff(), 0.0) << family;
+    EXPECT_NEAR(mg_few.lapse, mg_many.lapse, 1e-12 * std::max(1.0, std::abs(mg_few.lapse))) << family;
+    if (m_few.family.stimulus_noise) {
+      EXPECT_LT((mg_few.log_noise - mg_many.log_noise.head(8)).cwiseAbs().maxCoeff(), 1e-12) << family;
+      EXPECT_EQ(mg_many.log_noise.tail(32).cwiseAbs().maxCoeff(), 0.0) << family;
     }
   }
 }
