@@ -20,8 +20,9 @@ void validate(const SimulatedParticipantOptions& o) {
 }
 
 SimulatedParticipant::SimulatedParticipant(Eigen::MatrixXd truth,
-                                           SimulatedParticipantOptions options, std::uint64_t seed)
-    : observer_(std::move(truth)), options_(options), seed_(seed) {
+                                           SimulatedParticipantOptions options, std::uint64_t seed,
+                                           space::JudgmentModel model)
+    : observer_(std::move(truth), std::move(model)), options_(options), seed_(seed) {
   validate(options_);
 }
 
@@ -83,13 +84,29 @@ Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
   return truth;
 }
 
+space::JudgmentModel judgment_model_for_stimuli(const space::SpaceFile& space,
+                                                const std::vector<Stimulus>& stimuli) {
+  space::JudgmentModel model = space.model;
+  if (space.model.log_noise.size() == 0) return model;
+  model.log_noise.setConstant(static_cast<Eigen::Index>(stimuli.size()),
+                              space::typical_log_sigma(space.model));
+  for (std::size_t i = 0; i < stimuli.size(); ++i) {
+    const auto judged = std::find(space.stimuli.begin(), space.stimuli.end(), stimuli[i].name);
+    if (judged != space.stimuli.end())
+      model.log_noise(static_cast<Eigen::Index>(i)) =
+          space.model.log_noise(judged - space.stimuli.begin());
+  }
+  return model;
+}
+
 TrialEstimate estimate_trials(const StudyDefinition& definition, const Eigen::MatrixXd& truth,
-                              std::size_t runs, std::uint64_t seed, unsigned threads) {
+                              std::size_t runs, std::uint64_t seed, unsigned threads,
+                              const space::JudgmentModel& model) {
   TrialEstimate estimate;
   double sum = 0.0;
   for (std::size_t run = 0; run < runs; ++run) {
     TrialSequence sequence(definition, seed + run, threads);
-    SimulatedParticipant participant(truth, {}, seed + run);
+    SimulatedParticipant participant(truth, {}, seed + run, model);
     const auto ignore = [](Role) {};
     while (const auto planned = sequence.next()) {
       TrialPrompt prompt;

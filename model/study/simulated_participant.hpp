@@ -36,10 +36,11 @@ void validate(const SimulatedParticipantOptions& options);
 
 class SimulatedParticipant final : public Respondent {
  public:
-  // truth: dims × the study's stimuli. Each trial's answer, plays and time are drawn from the seed
-  // and the trial's number. Throws as SimulatedObserver and validate.
+  // truth: dims × the study's stimuli; model: how they judge (a space's, for its noises one per
+  // study stimulus: judgment_model_for_stimuli). Each trial's answer, plays and time are drawn from
+  // the seed and the trial's number. Throws as SimulatedObserver and validate.
   SimulatedParticipant(Eigen::MatrixXd truth, SimulatedParticipantOptions options,
-                       std::uint64_t seed);
+                       std::uint64_t seed, space::JudgmentModel model = {});
 
   bool agree(const StudyTexts&) override { return true; }
   Answer answer(const TrialPrompt& prompt, const std::function<void(Role)>& play) override;
@@ -67,7 +68,13 @@ Eigen::MatrixXd truth_for_stimuli(const space::SpaceFile& space,
                                   const std::filesystem::path& catalog_file,
                                   const PlaceOther& other = {});
 
-// How many trials a study takes, from simulated participants answering from `truth` with seeds
+// How the simulated participant judges a study's stimuli: the space's judgment model (link, scale,
+// lapse), with each judged stimulus's noise where the family has noises and the space's typical
+// noise for a stimulus it did not judge (as `space predict` treats one).
+space::JudgmentModel judgment_model_for_stimuli(const space::SpaceFile& space,
+                                                const std::vector<Stimulus>& stimuli);
+
+// How many trials a study takes, from simulated participants judging `truth` by `model` with seeds
 // seed, seed + 1, ...: what the runner says before a study starts (two-stage's stage 2 depends on
 // how many triplets tie).
 struct TrialEstimate {
@@ -76,6 +83,7 @@ struct TrialEstimate {
   std::size_t runs = 0;
 };
 TrialEstimate estimate_trials(const StudyDefinition& definition, const Eigen::MatrixXd& truth,
-                              std::size_t runs, std::uint64_t seed, unsigned threads = 0);
+                              std::size_t runs, std::uint64_t seed, unsigned threads = 0,
+                              const space::JudgmentModel& model = {});
 
 }  // namespace nibrig::model::study

@@ -108,10 +108,11 @@ rig::RigRequest turntable_request(const ExperimentRunOptions& o, const study::St
   return r;
 }
 
-// What the trial count will be, from five simulated participants answering from `truth`.
-void say_estimate(const study::StudyDefinition& d, const Eigen::MatrixXd& truth, std::uint64_t seed,
-                  unsigned threads, const std::string& whose) {
-  const study::TrialEstimate e = study::estimate_trials(d, truth, 5, seed, threads);
+// What the trial count will be, from five simulated participants judging `truth` by `model`.
+void say_estimate(const study::StudyDefinition& d, const Eigen::MatrixXd& truth,
+                  const model::space::JudgmentModel& model, std::uint64_t seed, unsigned threads,
+                  const std::string& whose) {
+  const study::TrialEstimate e = study::estimate_trials(d, truth, 5, seed, threads, model);
   std::cout << fmt::format(
       "{} stimuli, {} plan, {} mode: about {:.0f} trials with {} practice ({}-{} over {} simulated "
       "participants answering from {})\n",
@@ -158,6 +159,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
   rig::check_study_stimuli(sounds, definition.stimuli);
   std::optional<study::SimulatedParticipant> simulated_participant;
   Eigen::MatrixXd truth;
+  model::space::JudgmentModel judging;  // the paper's, unless the space judged by another
   if (simulated) {
     const model::space::SpaceFile space = model::space::read_space_file(o.simulate);
     // A design point is placed where its predicted descriptors put it (seconds each: the FEM).
@@ -166,15 +168,17 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
       return model::design::place_predicted(*space.descriptor_map, sounds.predict(s.tool, s.surface)).mean;
     };
     truth = study::truth_for_stimuli(space, o.simulate, definition.stimuli, o.catalog, predicted);
+    judging = study::judgment_model_for_stimuli(space, definition.stimuli);
     study::SimulatedParticipantOptions options;
     options.lapse_rate = o.lapse_rate;
     // The participant's own seed, so that a resumed simulation answers as an uninterrupted one.
     std::uint64_t seed = o.seed.value_or(study::seed_of_participant(o.participant));
     const auto record = study::participant_folder(o.output, o.participant) / study::kParticipantFile;
     if (o.resume && !o.seed && std::filesystem::exists(record)) seed = study::read_participant_file(record).seed;
-    simulated_participant.emplace(truth, options, seed);
+    simulated_participant.emplace(truth, options, seed, judging);
     session.respondent = "simulated from " + o.simulate.string() +
-                         fmt::format(" (lapse rate {})", o.lapse_rate);
+                         fmt::format(" (judging by {}, lapse rate {} besides)",
+                                     model::space::family_name(judging.family), o.lapse_rate);
   } else {
     // No space to answer from: the estimate asks observers of a random space of the usual spread.
     std::mt19937_64 generator(1);
@@ -193,7 +197,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--participant", e.what());
   }
-  say_estimate(definition, truth, o.seed.value_or(1), threads,
+  say_estimate(definition, truth, judging, o.seed.value_or(1), threads,
                simulated ? o.simulate.string() : "a random space");
 
   // 4. Who answers, and what they feel.
@@ -282,11 +286,12 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
       ->check(CLI::IsMember({"actuator", "rig", "validation"}));
   run->add_option("--participant", o->participant, "Participant ID (names their folder)")->required();
   run->add_option("--simulate", o->simulate,
-                  "A space (space.json): a simulated participant answers from it; nothing is played "
-                  "and no device is needed")
+                  "A space (space.json): a simulated participant answers from it, judging by the "
+                  "space's judgment model; nothing is played and no device is needed")
       ->check(CLI::ExistingFile);
   run->add_option("--lapse-rate", o->lapse_rate,
-                  "With --simulate: the share of answers given at random (default 0)")
+                  "With --simulate: a share of answers given at random besides the space model's "
+                  "own lapse (default 0)")
       ->check(in_range(0, 1, "a share of answers"));
   run->add_option("--pace", o->pace,
                   "With --simulate: take its modelled response times divided by this (1: as a "
