@@ -1,6 +1,7 @@
 #include "model/space/space_tools.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -55,6 +56,8 @@ SpaceTools space_tools(const SpaceFile& space, const io::Catalog& catalog,
                        const std::filesystem::path& catalog_file) {
   SpaceTools out;
   out.descriptor_names = space.descriptor_names;
+  out.judgment_model = describe_model(space.model);
+  out.model_reason = space.model_reason;
   // Placed tools' ellipses are drawn at the bootstrap's levels so that the two kinds compare; a
   // space without bootstrap takes the demo's 68 % / 95 %.
   out.levels = space.region_levels.empty() ? std::vector<double>{0.68, 0.95} : space.region_levels;
@@ -69,6 +72,7 @@ SpaceTools space_tools(const SpaceFile& space, const io::Catalog& catalog,
     t.judged = true;
     const auto column = static_cast<Eigen::Index>(i);
     t.position = space.coordinates.col(column);
+    if (space.model.log_noise.size() > column) t.noise_sigma = std::exp(space.model.log_noise(column));
     if (space.descriptors.size() > 0) t.descriptors = space.descriptors.row(column).transpose();
     if (!space.regions.empty()) {
       t.region_source = RegionSource::bootstrap;

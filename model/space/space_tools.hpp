@@ -35,6 +35,9 @@ struct SpaceTool {
   ToolKind kind = ToolKind::unknown;
   bool judged = false;  // a stimulus of the study (fitted) rather than placed from descriptors
   std::optional<double> mu;  // Coulomb friction; none when the catalog has no friction for it
+  // How consistently it was judged: σ_i = exp(η_i) of the space's judgment model (1 = typical);
+  // none when the model has no noise per stimulus or the tool was not judged.
+  std::optional<double> noise_sigma;
   // The space's descriptors (SpaceTools::descriptor_names), as the fit or the map saw them; empty
   // when the space has none.
   Eigen::VectorXd descriptors;
@@ -47,6 +50,8 @@ struct SpaceTool {
 };
 
 struct SpaceTools {
+  std::string judgment_model;  // describe_model of the space's model
+  std::string model_reason;    // why that model (the cross-validation that chose it, or "given")
   std::vector<std::string> descriptor_names;
   std::vector<double> levels;  // of every tool's ellipses: the space's bootstrap levels
   std::vector<SpaceTool> tools;  // the stimuli in the space's order, then the placed tools in

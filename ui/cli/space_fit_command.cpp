@@ -34,12 +34,7 @@ void report_axis_correlations(const space::SpaceFile& file) {
 
 // Which judgment model, with its fitted parts, and the cross-validation that chose it.
 void report_model(const space::SpaceFile& file) {
-  std::string parts;
-  if (file.model.family.lapse) parts += fmt::format(", lapse {:.3f}", file.model.lapse);
-  if (file.model.log_noise.size() > 0)
-    parts += fmt::format(", noise per stimulus {:.2f} to {:.2f} (sigma, 1 = typical)",
-                         std::exp(file.model.log_noise.minCoeff()), std::exp(file.model.log_noise.maxCoeff()));
-  std::cout << fmt::format("judgment model {}{}: {}\n", space::family_name(file.model.family), parts, file.model_reason);
+  std::cout << fmt::format("judgment model {}: {}\n", space::describe_model(file.model), file.model_reason);
   if (file.model_scores.empty()) return;
   std::cout << "  model                    held-out log loss   majority   individual   error\n";
   for (const auto& s : file.model_scores)

@@ -2,9 +2,12 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <stop_token>
+#include <string>
+#include <vector>
 
 #include "model/design/default_forcing.hpp"
 #include "model/forcing/forcing_file.hpp"
@@ -37,12 +40,23 @@ std::filesystem::path sessions_folder() {
 std::filesystem::path folder_of(const std::filesystem::path& file) { return file.empty() ? file : file.parent_path(); }
 
 // A fit's two steps (the starts, then the bootstrap's refits) as the two halves of one bar.
-model::space::StepProgress fit_progress(JobControl& control, bool with_bootstrap) {
+std::vector<std::string> fit_steps(const model::space::SpaceFitSettings& s) {
+  std::vector<std::string> steps;
+  if (s.choose_model) steps.push_back(model::space::kChoiceStep);
+  steps.push_back(model::space::kFitStep);
+  if (s.bootstrap > 0) steps.push_back(model::space::kBootstrapStep);
+  return steps;
+}
+
+model::space::StepProgress fit_progress(JobControl& control, std::vector<std::string> steps) {
   auto report = step_reporter(control, "");
-  return [&control, report, with_bootstrap](const std::string& step, std::size_t done, std::size_t total) {
+  return [&control, report, steps](const std::string& step, std::size_t done, std::size_t total) {
     report(step + ": " + std::to_string(done) + " of " + std::to_string(total), done, total);
+    // Each step that runs takes an equal share of the bar, in the order they run.
+    const auto at = std::find(steps.begin(), steps.end(), step);
+    if (steps.size() < 2 || at == steps.end()) return;
     const double part = total ? static_cast<double>(done) / static_cast<double>(total) : 0.0;
-    if (with_bootstrap) control.progress(0.5 * part + (step == model::space::kBootstrapStep ? 0.5 : 0.0));
+    control.progress((static_cast<double>(at - steps.begin()) + part) / static_cast<double>(steps.size()));
   };
 }
 
@@ -156,9 +170,11 @@ void Panel::fit_space(const SpaceFitRequest& r) {
         settings.starts = r.starts;
         settings.seed = static_cast<unsigned>(r.seed);
         settings.bootstrap = r.bootstrap;
+        settings.choose_model = r.model == "auto";
+        if (!settings.choose_model) settings.model = model::space::parse_family(r.model);
         settings.cancel = &cancel;
         auto fitted = model::space::fit_space_file(inputs, r.judgments, descriptors, settings,
-                                                   fit_progress(control, r.bootstrap > 0));
+                                                   fit_progress(control, fit_steps(settings)));
         auto loaded = loaded_space_of(std::move(fitted.file), catalog,
                                       "space fitted to " + r.judgments.filename().string() + " (not saved)");
         loaded.warnings = std::move(fitted.warnings);

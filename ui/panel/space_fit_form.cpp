@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "imgui.h"
+#include "model/space/judgment_model.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -18,6 +21,15 @@ bool space_fit_form(SpaceFitRequest& r, FileDialog& files) {
   ImGui::Checkbox("tie the axes to the catalog's descriptors", &r.descriptors);
   ImGui::SliderInt("dimensions", &r.dims, 1, 6);
   if (r.descriptors) ImGui::SliderFloat("lambda", &r.lambda, 0.0f, 10.0f, "%.2f");
+  if (ImGui::BeginCombo("judgment model", r.model.c_str())) {
+    std::vector<std::string> names{"auto"};
+    for (const auto& f : model::space::every_family()) names.push_back(model::space::family_name(f));
+    for (const auto& name : names)
+      if (ImGui::Selectable(name.c_str(), name == r.model)) r.model = name;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("auto: the model that predicts held-out judgments best (5-fold cross-validation)");
   ImGui::SliderInt("starts", &r.starts, 1, 64);
   ImGui::SliderInt("bootstrap resamples", &r.bootstrap, 0, 1000);
   ImGui::InputInt("seed", &r.seed);

@@ -13,6 +13,8 @@ namespace space = model::space;
 SpaceScene scene_of(const space::SpaceTools& tools, std::size_t dims, const std::string& title) {
   SpaceScene scene;
   scene.title = title;
+  scene.judgment_model = tools.judgment_model;
+  scene.model_reason = tools.model_reason;
   for (std::size_t d = 0; d < dims; ++d) scene.axis_names.push_back("axis " + std::to_string(d + 1));
   for (const auto& t : tools.tools) {
     SceneTool s;
@@ -26,6 +28,7 @@ SpaceScene scene_of(const space::SpaceTools& tools, std::size_t dims, const std:
     }
     s.region.mean = t.position;  // the fitted place (a bootstrap region's mean is near it)
     s.mu = t.mu;
+    s.noise_sigma = t.noise_sigma;
     for (Eigen::Index k = 0; k < t.descriptors.size(); ++k)
       if (static_cast<std::size_t>(k) < tools.descriptor_names.size())
         s.descriptors.emplace_back(tools.descriptor_names[static_cast<std::size_t>(k)], t.descriptors[k]);

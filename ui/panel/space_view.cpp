@@ -238,6 +238,7 @@ void SpaceView::draw_tooltip(const SceneTool& t) const {
   ImGui::Text("%s", t.label.c_str());
   ImGui::Text("%s, %s", t.kind.c_str(), t.judged ? "judged" : "placed from its descriptors");
   if (t.mu) ImGui::Text("mu %.3f", *t.mu);
+  if (t.noise_sigma) ImGui::Text("judged with noise sigma %.2f (1 = typical)", *t.noise_sigma);
   for (const auto& [name, value] : t.descriptors) ImGui::Text("%s %.3g", name.c_str(), value);
   ImGui::EndTooltip();
 }
@@ -258,6 +259,11 @@ void SpaceView::draw_side() {
   if (!chosen_.empty() && ImGui::Button("Play again")) play_chosen();
   section("Tools");
   ImGui::Text("%zu tools, %d dimension%s", scene_.tools.size(), dims, dims == 1 ? "" : "s");
+  if (!scene_.judgment_model.empty()) {
+    section("Judgments");
+    ImGui::TextWrapped("judged by %s", scene_.judgment_model.c_str());
+    if (!scene_.model_reason.empty()) ImGui::TextWrapped("%s", scene_.model_reason.c_str());
+  }
 }
 
 }  // namespace nibrig::ui::panel

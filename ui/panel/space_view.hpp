@@ -26,6 +26,7 @@ struct SceneTool {
   model::space::ConfidenceRegion region;  // mean = its place; no radii: no region known
   std::vector<double> region_levels;      // the levels of region.radius
   std::optional<double> mu;
+  std::optional<double> noise_sigma;  // how consistently it was judged (1 = typical), when known
   std::vector<std::pair<std::string, double>> descriptors;
 };
 
@@ -34,6 +35,8 @@ struct SpaceScene {
   std::vector<std::string> axis_names;  // one per dimension
   std::vector<SceneTool> tools;
   std::vector<std::string> surfaces;  // the colour order
+  std::string judgment_model;         // the space's model and its fitted parts, in words
+  std::string model_reason;           // why that model
 };
 
 // How a stroke is chosen in the views that play tools.

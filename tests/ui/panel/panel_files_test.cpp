@@ -16,6 +16,7 @@
 #include "model/io/bundled_assets.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/fit.hpp"
+#include "model/space/model_choice.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/space_inputs.hpp"
 #include "tests/model/space/study_fixture.hpp"
@@ -174,6 +175,61 @@ TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
   s.panel.fit_space(request);
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
   EXPECT_THAT(s.panel.error(), HasSubstr("not_judgments.csv"));
+}
+
+TEST(PanelFiles, AFitInTheWindowJudgesByTheModelAskedOrChosenAndTheViewSaysWhich) {
+  const auto dir = nibrig::test::scratch_dir("panel_fit_model");
+  const std::vector<std::string> stimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
+                                            "DM854/office", "DM951/office", "cryon/office", "stab/office"};
+  model::io::TripletSet judged;
+  judged.stimuli = stimuli;
+  judged.triplets = model::space::testing::every_triplet_judged(model::space::testing::random_truth(1, 8, 31), 6, 32)
+                        .triplets;
+  model::io::write_triplet_csv(dir / "judgments.csv", judged);
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  FilesSession s(setup);
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+
+  // A model given: a noise per stimulus, which each judged tool's tooltip shows as its sigma.
+  SpaceFitRequest request;
+  request.judgments = dir / "judgments.csv";
+  request.descriptors = false;
+  request.dims = 1;
+  request.starts = 2;
+  request.bootstrap = 0;
+  request.model = "logistic+noise";
+  s.panel.fit_space(request);
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
+  const auto& given = s.panel.space_view().scene();
+  EXPECT_THAT(given.judgment_model, HasSubstr("logistic+noise, noise per stimulus"));
+  EXPECT_THAT(given.model_reason, HasSubstr("given"));
+  ASSERT_EQ(given.tools.size(), 8u);
+  for (const auto& t : given.tools) {
+    ASSERT_TRUE(t.noise_sigma.has_value()) << t.label;
+    EXPECT_GT(*t.noise_sigma, 0.0) << t.label;
+  }
+
+  // "auto": the family cross-validation chooses from the same folds as choose_model's own, with
+  // every candidate's score kept in the space the panel would save.
+  request.model = "auto";
+  s.panel.fit_space(request);
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
+  const auto in = model::space::read_space_inputs(dir / "judgments.csv", {}, 1, 0.0);
+  model::space::ModelChoiceOptions choice;
+  choice.cross_validation.folds = 5;
+  choice.cross_validation.seed = 1;
+  choice.cross_validation.fit.starts = 2;
+  choice.cross_validation.fit.seed = 1;
+  const auto reference = model::space::choose_model(in.problem, choice);
+  const auto& chosen = s.panel.space_view().scene();
+  EXPECT_THAT(chosen.judgment_model, ::testing::StartsWith(model::space::family_name(reference.chosen)));
+  EXPECT_EQ(chosen.model_reason, reference.reason);
+  s.panel.save_space(dir / "auto.json");
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  EXPECT_EQ(model::space::read_space_file(dir / "auto.json").model_scores.size(), 12u);
 }
 
 TEST(PanelFiles, ACatalogThatCannotBeReadChangesNothingAndOneThatCanIsUsed) {
