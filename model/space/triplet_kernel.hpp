@@ -69,19 +69,24 @@ inline LinkTerms link_terms(double alpha, double xa, double xb, bool log_a_wante
       break;
     }
     case Link::student_t: {  // P(a) = K_a/(K_a + K_b) = 1/(1 + e^u), u = log K_b − log K_a
-      // u = −(α+1)/2 · log((α + x_b²)/(α + x_a²)): one log; then softplus(±u) and σ(±u) from one
-      // exponential and one more log (eight transcendentals a triplet before, three now; log(1 + e)
-      // as the logistic's).
+      // e^{±u} = r^{(α+1)/2}, r = the smaller of w_a/w_b and w_b/w_a (w = α + x²), is ≤ 1 and,
+      // with α a whole number (dims − 1), a power of √r: no exponential, and no overflow however
+      // far apart the two are. Then log(1 + k) for the likelier side, and log r as well for the
+      // other only where an answer took it (three transcendentals a triplet before, one to two now).
       const double wa = alpha + xa * xa, wb = alpha + xb * xb;
-      const double u = -0.5 * (alpha + 1.0) * std::log(wb / wa);
-      const double e = std::exp(-std::abs(u)), tail = std::log(1.0 + e);
-      const double softplus_u = std::max(u, 0.0) + tail;  // softplus(−u) = softplus(u) − u
-      t.log_a = -softplus_u;
-      t.log_b = -(softplus_u - u);
-      const double sigma_abs = 1.0 / (1.0 + e), sigma_neg_abs = e / (1.0 + e);  // σ(|u|), σ(−|u|)
-      const double sigma_u = u >= 0 ? sigma_abs : sigma_neg_abs,
-                   sigma_minus_u = u >= 0 ? sigma_neg_abs : sigma_abs;
-      t.p_a = sigma_minus_u, t.p_b = sigma_u;
+      const bool a_likelier = wa <= wb;
+      const double r = a_likelier ? wa / wb : wb / wa, root = std::sqrt(r);
+      double k = 1.0;  // r^{(α+1)/2} = P(less likely)/P(likelier)
+      for (long n = std::lround(alpha + 1.0); n > 0; --n) k *= root;
+      const double likelier = 1.0 / (1.0 + k), less = k * likelier;
+      const bool less_log = a_likelier ? log_b_wanted : log_a_wanted;
+      const bool likelier_log = a_likelier ? log_a_wanted : log_b_wanted;
+      const double log_likelier = likelier_log || less_log ? -std::log(1.0 + k) : 0.0;
+      const double log_less = less_log ? 0.5 * (alpha + 1.0) * std::log(r) + log_likelier : 0.0;
+      t.p_a = a_likelier ? likelier : less, t.p_b = a_likelier ? less : likelier;
+      t.log_a = !log_a_wanted ? 0.0 : a_likelier ? log_likelier : log_less;
+      t.log_b = !log_b_wanted ? 0.0 : a_likelier ? log_less : log_likelier;
+      const double sigma_u = t.p_b, sigma_minus_u = t.p_a;  // d log P(a)/du = −σ(u) = −P(b)
       // d log K/dx = −(α+1)·x/(α + x²)
       const double du_dxa = (alpha + 1.0) * xa / wa, du_dxb = -(alpha + 1.0) * xb / wb;
       const double la_du = -sigma_u, lb_du = sigma_minus_u;
