@@ -100,16 +100,24 @@ struct FilesSession {
   }
 };
 
-TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
-  const auto dir = nibrig::test::scratch_dir("panel_fit");
-  // Every triplet of eight catalog pairings judged 8 times by an observer of a known 2-D space.
-  const std::vector<std::string> stimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
-                                            "DM854/office", "DM951/office", "cryon/office", "stab/office"};
+// Eight catalog pairings, every triplet of them judged `repeats` times by an observer of a random
+// `dims`-D space (seed for the space, seed + 1 for the answers), written as dir/judgments.csv.
+const std::vector<std::string> kJudgedStimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
+                                                 "DM854/office", "DM951/office", "cryon/office", "stab/office"};
+void write_judgments(const fs::path& dir, Eigen::Index dims, int repeats, unsigned seed) {
   model::io::TripletSet judged;
-  judged.stimuli = stimuli;
-  judged.triplets = model::space::testing::every_triplet_judged(model::space::testing::random_truth(2, 8, 21), 8, 22)
+  judged.stimuli = kJudgedStimuli;
+  judged.triplets = model::space::testing::every_triplet_judged(
+                        model::space::testing::random_truth(dims, static_cast<Eigen::Index>(kJudgedStimuli.size()), seed), repeats, seed + 1)
                         .triplets;
   model::io::write_triplet_csv(dir / "judgments.csv", judged);
+}
+
+TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
+  const auto dir = nibrig::test::scratch_dir("panel_fit");
+  // Every triplet judged 8 times by an observer of a known 2-D space.
+  write_judgments(dir, 2, 8, 21);
+  const std::vector<std::string>& stimuli = kJudgedStimuli;
 
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
@@ -179,13 +187,7 @@ TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
 
 TEST(PanelFiles, AFitInTheWindowJudgesByTheModelAskedOrChosenAndTheViewSaysWhich) {
   const auto dir = nibrig::test::scratch_dir("panel_fit_model");
-  const std::vector<std::string> stimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
-                                            "DM854/office", "DM951/office", "cryon/office", "stab/office"};
-  model::io::TripletSet judged;
-  judged.stimuli = stimuli;
-  judged.triplets = model::space::testing::every_triplet_judged(model::space::testing::random_truth(1, 8, 31), 6, 32)
-                        .triplets;
-  model::io::write_triplet_csv(dir / "judgments.csv", judged);
+  write_judgments(dir, 1, 6, 31);  // every triplet judged 6 times by an observer of a 1-D space
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   FilesSession s(setup);
