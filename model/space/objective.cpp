@@ -72,6 +72,8 @@ class PairTable {
       : q_(q), gradient_(gradient), n_(q.cols()), distance_(n_, n_) {
     for (Eigen::Index j = 1; j < n_; ++j)
       for (Eigen::Index i = 0; i < j; ++i) distance_(i, j) = (column(j) - column(i)).norm();
+    // A stimulus from itself, as the offsets give it: only a triplet validate() refuses reads it.
+    distance_.diagonal().setZero();
     if (gradient_) pull_.setZero(n_, n_);
   }
   std::pair<double, double> distances(const io::Triplet& t) const {
