@@ -1,12 +1,13 @@
 #include "model/space/objective.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <stdexcept>
 #include <string>
 
-#include "model/space/triplet_kernel.hpp"
+#include "model/space/triplet_block.hpp"
 
 namespace nibrig::model::space {
 namespace {
@@ -21,7 +22,9 @@ std::string triplet_name(std::size_t t) { return "triplet " + std::to_string(t);
 // Lagunas 3-D evaluation from 122 to 98 ns a triplet.
 //
 // TripletOffsets: each triplet's two offsets from its reference, and their gradient added to the
-// three columns at once.
+// three columns at once. The likelihood loop measures a whole block before it pulls on any, so a
+// pull measures its triplet again (a few subtractions and a square root, against the link's
+// transcendentals).
 template <int D>
 class TripletOffsets {
  public:
@@ -32,13 +35,12 @@ class TripletOffsets {
   std::pair<double, double> distances(const io::Triplet& t) {
     va_ = column(t.a) - column(t.reference);
     vb_ = column(t.b) - column(t.reference);
-    da_ = va_.norm(), db_ = vb_.norm();
-    return {da_, db_};
+    return {va_.norm(), vb_.norm()};
   }
-  // ∂nll/∂d of the triplet just measured. ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide
-  // (a subgradient).
+  // ∂nll/∂d of triplet t. ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide (a subgradient).
   void pull(const io::Triplet& t, double along_a, double along_b) {
-    const double ka = da_ > 0 ? along_a / da_ : 0.0, kb = db_ > 0 ? along_b / db_ : 0.0;
+    const auto [da, db] = distances(t);
+    const double ka = da > 0 ? along_a / da : 0.0, kb = db > 0 ? along_b / db : 0.0;
     gradient_column(t.a) += ka * va_;
     gradient_column(t.b) += kb * vb_;
     gradient_column(t.reference) -= ka * va_ + kb * vb_;
@@ -57,7 +59,6 @@ class TripletOffsets {
   // Buffers made once (on the stack when D is fixed): with a heap vector per triplet, parallel
   // starts spent their time in the allocator.
   Vector va_, vb_;
-  double da_ = 0.0, db_ = 0.0;
 };
 
 // PairTable: every pair's distance once an evaluation, and ∂nll/∂d summed per pair before it goes
@@ -129,26 +130,40 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
     throw std::invalid_argument("the judgment model has noises for " +
                                 std::to_string(variance.size()) + " stimuli, the problem " +
                                 std::to_string(p.stimuli));
+  // A block's x_a, x_b and counts are gathered, its terms worked out together (block_terms), and
+  // then spread back to the distances and the model.
+  TripletBlock block;
+  std::array<double, TripletBlock::kSize> per, sum;  // ∂x/∂d = s/σ_t, and Σσ_i² of the three
   double nll = 0.0;
-  for (const auto& t : p.triplets) {
-    const auto [da, db] = distances.distances(t);
-    double per = m.scale, sum = 0.0;  // ∂x/∂d = s/σ_t
-    if (noise) {
-      sum = variance(static_cast<Eigen::Index>(t.reference)) +
-            variance(static_cast<Eigen::Index>(t.a)) + variance(static_cast<Eigen::Index>(t.b));
-      per = m.scale * std::sqrt(3.0 / sum);
+  for (std::size_t first = 0; first < p.triplets.size(); first += TripletBlock::kSize) {
+    block.size = std::min(TripletBlock::kSize, p.triplets.size() - first);
+    for (std::size_t i = 0; i < block.size; ++i) {
+      const io::Triplet& t = p.triplets[first + i];
+      const auto [da, db] = distances.distances(t);
+      per[i] = m.scale;
+      if (noise) {
+        sum[i] = variance(static_cast<Eigen::Index>(t.reference)) +
+                 variance(static_cast<Eigen::Index>(t.a)) + variance(static_cast<Eigen::Index>(t.b));
+        per[i] = m.scale * std::sqrt(3.0 / sum[i]);
+      }
+      block.xa[i] = per[i] * da, block.xb[i] = per[i] * db;
+      block.count_a[i] = t.count_a, block.count_b[i] = t.count_b;
     }
-    const double xa = per * da, xb = per * db;
-    const TripletTerms terms = triplet_terms<L>(kernel, xa, xb, t.count_a, t.count_b, with_gradient);
-    nll += terms.nll;
-    if (coordinate_gradient) distances.pull(t, terms.d_xa * per, terms.d_xb * per);
-    if (!model_gradient) continue;
-    model_gradient->lapse += terms.d_lapse;
-    if (noise) {
-      const double d_log_sigma = -(terms.d_xa * xa + terms.d_xb * xb);  // ∂x/∂log σ = −x
-      for (std::size_t i : {t.reference, t.a, t.b}) {
-        const auto k = static_cast<Eigen::Index>(i);
-        model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum;
+    block_terms<L>(kernel, block, with_gradient);
+    for (std::size_t i = 0; i < block.size; ++i) {
+      const io::Triplet& t = p.triplets[first + i];
+      const TripletTerms& terms = block.terms[i];
+      nll += terms.nll;
+      if (coordinate_gradient) distances.pull(t, terms.d_xa * per[i], terms.d_xb * per[i]);
+      if (!model_gradient) continue;
+      model_gradient->lapse += terms.d_lapse;
+      if (noise) {
+        // ∂x/∂log σ = −x
+        const double d_log_sigma = -(terms.d_xa * block.xa[i] + terms.d_xb * block.xb[i]);
+        for (std::size_t s : {t.reference, t.a, t.b}) {
+          const auto k = static_cast<Eigen::Index>(s);
+          model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum[i];
+        }
       }
     }
   }

@@ -137,6 +137,19 @@ inline Lapsed with_lapse(double p, double lapse) {
   return {std::log(mixed), (1.0 - lapse) * p * inverse, (0.5 - p) * inverse};
 }
 
+// The triplet's terms from its link's (t) and each answer's (a, b) parts.
+inline TripletTerms combined(const LinkTerms& t, const Lapsed& a, const Lapsed& b, double count_a,
+                             double count_b, bool with_gradient) {
+  TripletTerms out;
+  out.nll = -(count_a * a.value + count_b * b.value);
+  if (!with_gradient) return out;
+  // ∂nll/∂x through each answer's log-probability.
+  out.d_xa = -(count_a * a.d_log * t.log_a_dxa + count_b * b.d_log * t.log_b_dxa);
+  out.d_xb = -(count_a * a.d_log * t.log_a_dxb + count_b * b.d_log * t.log_b_dxb);
+  out.d_lapse = -(count_a * a.d_lapse + count_b * b.d_lapse);
+  return out;
+}
+
 }  // namespace detail
 
 // For the link L (kernel.link is not read: the caller chose L from it).
@@ -153,14 +166,7 @@ template <Link L>
     a = in_logs ? detail::with_lapse_in_logs(t.log_a, k.lapse) : detail::with_lapse(t.p_a, k.lapse);
   if (count_b != 0)
     b = in_logs ? detail::with_lapse_in_logs(t.log_b, k.lapse) : detail::with_lapse(t.p_b, k.lapse);
-  TripletTerms out;
-  out.nll = -(count_a * a.value + count_b * b.value);
-  if (!with_gradient) return out;
-  // ∂nll/∂x through each answer's log-probability.
-  out.d_xa = -(count_a * a.d_log * t.log_a_dxa + count_b * b.d_log * t.log_b_dxa);
-  out.d_xb = -(count_a * a.d_log * t.log_a_dxb + count_b * b.d_log * t.log_b_dxb);
-  out.d_lapse = -(count_a * a.d_lapse + count_b * b.d_lapse);
-  return out;
+  return detail::combined(t, a, b, count_a, count_b, with_gradient);
 }
 
 inline TripletTerms triplet_terms(const TripletKernel& k, double xa, double xb, double count_a,
