@@ -24,6 +24,9 @@ struct FitOptions {
   // When not empty (dims × stimuli), start 0 begins here instead of at random, shifted so that the
   // pinned stimulus sits at the origin: a refit on resampled data starts at the reference space.
   Eigen::MatrixXd initial;
+  // Without `initial`, start 0 begins at spectral_start() (the judgments' own MDS), the others at
+  // random; off, every start is random (the benchmark's starts, as numpy's reference draws them).
+  bool spectral_start = true;
   // When set, starts not yet begun are skipped and the fit throws numeric::Cancelled (a start
   // already running finishes first: one start takes a fraction of a second).
   numeric::CancelFlag cancel = nullptr;
