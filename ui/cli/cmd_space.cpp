@@ -31,8 +31,8 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   auto o = std::make_shared<SpaceFitOptions>();
   auto* fit = cmd.add_subcommand("fit", "Fit a space to judgments -> space.json");
   fit->footer(
-      "Maximum likelihood from many random starts (L-BFGS), the best kept; stimulus 1 at the "
-      "origin.\n"
+      "Maximum likelihood from many starts (L-BFGS), the best kept: the first from the judgments'\n"
+      "own MDS, the others random; stimulus 1 at the origin.\n"
       "--descriptors names a catalog whose pairings \"tool/surface\" are the judged stimuli: axis 1 "
       "is\n"
       "tied to friction mu, axis 2 to log10 weighted vibration (D >= 3: band energies) with weight\n"
