@@ -32,6 +32,15 @@ struct NormalSides {
   double log_cdf = 0.0, log_cdf_negative = 0.0;
   double pdf_over_cdf = 0.0, pdf_over_cdf_negative = 0.0;
 };
+
+// log(1 − small) for the larger side of a probit, given log_large = log(1 − small) as computed
+// (std::log or a vector log): a sum of likelihoods needs an absolute error of 1e-16, which log of
+// the rounded 1 − small gives (log1p took twice its time); below 1e-8 the series −small − small²/2,
+// exact to 1e-24, is used instead.
+inline double log_larger_side(double small, double log_large) {
+  return small < 1e-8 ? -small * (1.0 + 0.5 * small) : log_large;
+}
+
 // Inline: the probit likelihood's innermost call. |x| > −kNormalTail goes to normal_sides_far.
 NormalSides normal_sides_far(double x, bool log_cdf_wanted, bool log_cdf_negative_wanted);
 inline NormalSides normal_sides(double x, bool log_cdf_wanted = true,
@@ -44,11 +53,7 @@ inline NormalSides normal_sides(double x, bool log_cdf_wanted = true,
   const bool small_log = small_is_cdf ? log_cdf_wanted : log_cdf_negative_wanted;
   const bool large_log = small_is_cdf ? log_cdf_negative_wanted : log_cdf_wanted;
   const double log_small = small_log ? std::log(small) : 0.0;
-  // log of the larger side as log(1 − small), not log1p(−small): the likelihood sums these, so an
-  // absolute error of 1e-16 is what counts, and glibc's log1p took twice log's time. Below 1e-8
-  // its series −small − small²/2 is exact to 1e-24, and a fitted space's confident triplets take
-  // no log at all.
-  const double log_large = !large_log ? 0.0 : small < 1e-8 ? -small * (1.0 + 0.5 * small) : std::log(large);
+  const double log_large = large_log ? log_larger_side(small, std::log(large)) : 0.0;
   const double ratio_small = pdf / small, ratio_large = pdf / large;
   if (small_is_cdf) return {small, large, log_small, log_large, ratio_small, ratio_large};
   return {large, small, log_large, log_small, ratio_large, ratio_small};

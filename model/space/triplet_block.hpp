@@ -66,9 +66,7 @@ inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
   numeric::log_all(small.data(), log_small.data(), n);
   numeric::log_all(large.data(), log_large.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
-    // The larger side's log(1 − small) by its series below 1e-8 (see normal_sides).
-    const double s = small[i];
-    const double larger = s < 1e-8 ? -s * (1.0 + 0.5 * s) : log_large[i];
+    const double larger = log_larger_side(small[i], log_large[i]);
     LinkTerms& t = b.link[i];
     t.log_a = b.count_a[i] == 0 ? 0.0 : z[i] < 0 ? log_small[i] : larger;
     t.log_b = b.count_b[i] == 0 ? 0.0 : z[i] < 0 ? larger : log_small[i];
@@ -168,10 +166,8 @@ inline void block_answers(const TripletKernel& k, TripletBlock& b, bool with_gra
   for (std::size_t i = 0; i < n; ++i) {
     const LinkTerms& t = b.link[i];
     Lapsed on_a, on_b;
-    if (b.count_a[i] != 0)
-      on_a = {log_a[i], (1.0 - lapse) * t.p_a / mixed_a[i], (0.5 - t.p_a) / mixed_a[i]};
-    if (b.count_b[i] != 0)
-      on_b = {log_b[i], (1.0 - lapse) * t.p_b / mixed_b[i], (0.5 - t.p_b) / mixed_b[i]};
+    if (b.count_a[i] != 0) on_a = lapsed_mixture(t.p_a, lapse, mixed_a[i], log_a[i]);
+    if (b.count_b[i] != 0) on_b = lapsed_mixture(t.p_b, lapse, mixed_b[i], log_b[i]);
     b.terms[i] = combined(t, on_a, on_b, b.count_a[i], b.count_b[i], with_gradient);
   }
 }

@@ -132,9 +132,14 @@ inline Lapsed with_lapse_in_logs(double log_p, double lapse) {
 
 // From P itself: ε/2 ≥ kLapseInLogs/2 keeps the mixture from underflow, so one log and one
 // division (five exponentials and logs in logs).
+// From P, the mixture ε/2 + (1−ε)P and its log, however taken (a block takes the logs at once).
+inline Lapsed lapsed_mixture(double p, double lapse, double mixed, double log_mixed) {
+  const double inverse = 1.0 / mixed;
+  return {log_mixed, (1.0 - lapse) * p * inverse, (0.5 - p) * inverse};
+}
 inline Lapsed with_lapse(double p, double lapse) {
-  const double mixed = 0.5 * lapse + (1.0 - lapse) * p, inverse = 1.0 / mixed;
-  return {std::log(mixed), (1.0 - lapse) * p * inverse, (0.5 - p) * inverse};
+  const double mixed = 0.5 * lapse + (1.0 - lapse) * p;
+  return lapsed_mixture(p, lapse, mixed, std::log(mixed));
 }
 
 // The triplet's terms from its link's (t) and each answer's (a, b) parts.
