@@ -26,9 +26,13 @@ namespace nibrig::ui::cli {
 
 namespace {
 
+// The demo's parts, in the order they run; `--only` picks some (a test about one part runs it alone).
+const std::vector<std::string> kSections{"descriptors", "mechanics", "space", "forcing", "render", "rig"};
+
 struct DemoOptions {
   std::filesystem::path output = "nibrig-demo";
   std::filesystem::path catalog;
+  std::vector<std::string> only;  // empty: every part
 };
 
 std::string descriptors_csv(const model::io::Catalog& catalog, int max_bands) {
@@ -60,35 +64,37 @@ std::string descriptors_csv(const model::io::Catalog& catalog, int max_bands) {
   return csv.str();
 }
 
-void demo(const DemoOptions& options, unsigned threads) {
-  constexpr int max_bands = 5;
-  const auto catalog_path =
-      options.catalog.empty() ? model::io::default_catalog() : options.catalog;
-  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-  auto catalog = model::io::read_catalog(catalog_path);
-
-  // The descriptor stage of the pipeline, run here on the bundled spectra: weighting by the
-  // detection threshold, mean weighted value, weighted power and band energies (Sec. 4.4).
-  const std::size_t vibration_pairs =
-      model::measure::weigh_catalog_vibration(catalog, threshold, max_bands);
+// The descriptor stage of the pipeline, run on the bundled spectra: weighting by the detection
+// threshold, mean weighted value, weighted power and band energies (Sec. 4.4). Every later part
+// reads the catalog weighted; only this one writes its report.
+DemoSection run_descriptor_demo(const model::io::Catalog& catalog,
+                                const std::filesystem::path& catalog_path,
+                                const model::measure::ThresholdCurve& threshold,
+                                std::size_t vibration_pairs, const std::filesystem::path& output,
+                                int max_bands) {
   std::size_t friction_pairs = 0;
   for (const auto& p : catalog.pairings)
     if (p.friction) ++friction_pairs;
 
-  ensure_folder(options.output);
-  ensure_folder(options.output / "spectra");
-  model::io::write_catalog(options.output / "catalog.json", catalog);
-  write_text_file(options.output / "descriptors.csv", descriptors_csv(catalog, max_bands));
-  if (friction_pairs > 0) plot_catalog_friction(catalog, options.output / "friction.png");
+  ensure_folder(output / "spectra");
+  model::io::write_catalog(output / "catalog.json", catalog);
+  write_text_file(output / "descriptors.csv", descriptors_csv(catalog, max_bands));
+  if (friction_pairs > 0) plot_catalog_friction(catalog, output / "friction.png");
   Progress progress("figures", vibration_pairs);
   for (const auto& p : catalog.pairings) {
     if (!p.vibration) continue;
     plot_velocity_spectrum(p.vibration->spectrum,
                            "Velocity-binned spectrum: " + p.tool + " on " + p.surface,
-                           options.output / "spectra" / (p.tool + "_" + p.surface + ".png"));
+                           output / "spectra" / (p.tool + "_" + p.surface + ".png"));
     progress.advance(p.tool + "_" + p.surface);
   }
 
+  DemoSection section;
+  section.numbers = {{"tools", catalog.tools.size()},
+                     {"surfaces", catalog.surfaces.size()},
+                     {"pairs", catalog.pairings.size()},
+                     {"friction_pairs", friction_pairs},
+                     {"vibration_pairs", vibration_pairs}};
   std::ostringstream summary;
   summary << "nibrig demo: measurement pipeline on the bundled default ("
           << catalog_path.filename().string() << ")\n"
@@ -103,6 +109,7 @@ void demo(const DemoOptions& options, unsigned threads) {
       hi = std::max(hi, p.friction->mu);
     }
     summary << "  Coulomb friction mu: " << lo << " .. " << hi << " (paper: 0.13 .. 0.33)\n";
+    section.numbers["friction_mu_range"] = {lo, hi};
   }
   if (vibration_pairs > 0) {
     const model::io::Pairing* strongest = nullptr;
@@ -117,18 +124,59 @@ void demo(const DemoOptions& options, unsigned threads) {
             << " on " << strongest->surface << " (" << strongest->vibration->weighted_mean
             << "), weakest " << weakest->tool << " on " << weakest->surface << " ("
             << weakest->vibration->weighted_mean << ")\n";
+    section.numbers["weighted_mean_strongest"] = {{"tool", strongest->tool},
+                                                  {"surface", strongest->surface},
+                                                  {"value", strongest->vibration->weighted_mean}};
+    section.numbers["weighted_mean_weakest"] = {{"tool", weakest->tool},
+                                                {"surface", weakest->surface},
+                                                {"value", weakest->vibration->weighted_mean}};
   }
   summary << "  threshold curve: " << threshold.source() << "\n"
           << "  source: " << catalog.citation << "\n"
-          << "  report: " << options.output.string()
+          << "  report: " << output.string()
           << "/ (catalog.json, descriptors.csv, friction.png, spectra/*.png)\n";
-  summary << run_mechanics_demo(options.output);
-  summary << run_space_demo(catalog, catalog_path, options.output, threads);
-  summary << run_forcing_demo(catalog_path, options.output);
-  summary << run_render_demo(catalog, options.catalog, options.output);
-  summary << run_rig_demo(options.catalog, options.output);
-  write_text_file(options.output / "SUMMARY.txt", summary.str());
-  std::cout << summary.str();
+  section.text = summary.str();
+  return section;
+}
+
+void demo(const DemoOptions& options, unsigned threads) {
+  constexpr int max_bands = 5;
+  const auto catalog_path =
+      options.catalog.empty() ? model::io::default_catalog() : options.catalog;
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+  auto catalog = model::io::read_catalog(catalog_path);
+  const std::size_t vibration_pairs =
+      model::measure::weigh_catalog_vibration(catalog, threshold, max_bands);
+  ensure_folder(options.output);
+
+  const auto chosen = [&](const std::string& name) {
+    return options.only.empty() ||
+           std::find(options.only.begin(), options.only.end(), name) != options.only.end();
+  };
+  std::string text;
+  nlohmann::json numbers = {{"catalog", catalog_path.string()}, {"sections", nlohmann::json::array()}};
+  for (const auto& name : kSections) {
+    if (!chosen(name)) continue;
+    DemoSection section;
+    if (name == "descriptors")
+      section = run_descriptor_demo(catalog, catalog_path, threshold, vibration_pairs, options.output, max_bands);
+    else if (name == "mechanics")
+      section = run_mechanics_demo(options.output);
+    else if (name == "space")
+      section = run_space_demo(catalog, catalog_path, options.output, threads);
+    else if (name == "forcing")
+      section = run_forcing_demo(catalog_path, options.output);
+    else if (name == "render")
+      section = run_render_demo(catalog, options.catalog, options.output);
+    else
+      section = run_rig_demo(options.catalog, options.output);
+    text += section.text;
+    numbers["sections"].push_back(name);
+    numbers[name] = std::move(section.numbers);
+  }
+  write_text_file(options.output / "SUMMARY.txt", text);
+  write_json_file(options.output / "SUMMARY.json", numbers);
+  std::cout << text;
 }
 
 }  // namespace
@@ -149,10 +197,16 @@ void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global
       "Then the forcing model of the printed tools with its leave-one-out, a predicted design\n"
       "and a design search in that space (forcing/).\n"
       "Finally every tool with a vibration spectrum is rendered over the rig's sweep through the\n"
-      "real-time engine into render/*.wav.");
+      "real-time engine into render/*.wav. SUMMARY.txt says what each part found, and\n"
+      "SUMMARY.json holds the same numbers for a script.");
   cmd->add_option("-o,--output", options->output, "Report folder")->capture_default_str();
   cmd->add_option("--catalog", options->catalog, "Use this catalog instead of the bundled one")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--only", options->only,
+                  "Run only these parts (descriptors, mechanics, space, forcing, render, rig); "
+                  "forcing searches a design only in a space the same report holds")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kSections));
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
     demo(*options, worker_threads(*global));

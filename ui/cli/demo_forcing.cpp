@@ -43,7 +43,7 @@ constexpr const char* kTarget = "cryon/office";
 
 }  // namespace
 
-std::string run_forcing_demo(const std::filesystem::path& catalog_file,
+DemoSection run_forcing_demo(const std::filesystem::path& catalog_file,
                              const std::filesystem::path& report) {
   const auto dir = report / "forcing";
   ensure_folder(dir);
@@ -94,6 +94,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
                          dir / "predicted_spectrum.png");
 
   std::string search_line;
+  nlohmann::json search_numbers;  // null: no search
   const auto space_path = report / "space" / "space.json";
   if (std::filesystem::exists(space_path)) {
     const auto space = model::space::read_space_file(space_path);
@@ -117,6 +118,14 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
       write_search_plot(space, kTarget, nullptr, result, {0, last}, kSearchSurface,
                         dir / "design_path.png");
       const auto& best = result.best();
+      search_numbers = {{"target", kTarget},
+                        {"surface", kSearchSurface},
+                        {"optimum", design::label(best.point)},
+                        {"distance", best.distance},
+                        {"distance_sd", best.distance_sd},
+                        {"distance_from", result.evaluated.front().distance},
+                        {"distance_to", result.evaluated[last].distance},
+                        {"predictions", result.evaluated.size()}};
       search_line = fmt::format(
           "  design search on {} for {} {}: optimum {} at distance {:.2f} ± {:.2f} (the two "
           "designs: {:.2f}, {:.2f}; {} predictions, {:.1f} s)\n",
@@ -129,7 +138,34 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
     search_line =
         fmt::format("  design search: skipped (no space with {} and a descriptor map)\n", kTarget);
 
-  return fmt::format(
+  DemoSection section;
+  section.numbers = {
+      {"modes", options.modes},
+      {"mesh_size_mm", options.mesh_size * 1e3},
+      {"exemplars", model.exemplar_count()},
+      {"surfaces", model.surface_forcing.size()},
+      {"residual_rms_db", model.residual_rms_db},
+      {"leave_one_out",
+       {{"paper_tools", loo.summary.predicted},
+        {"mean_rms_db", loo.summary.mean_rms_db},
+        {"median_rms_db", loo.summary.median_rms_db},
+        {"max_rms_db", loo.summary.max_rms_db},
+        {"baseline_mean_rms_db", loo.summary.mean_baseline_rms_db}}},
+      {"tip_2mm_held_out",
+       {{"predicted", held.predicted},
+        {"beats_every_baseline", held.beats_every_baseline},
+        {"mean_predicted_db", held.mean_predicted_db},
+        {"mean_measured_neighbours_db", held.mean_measured_db},
+        {"widest_baseline_gap_db", held.widest_baseline_gap_db}}},
+      {"dm95_held_out",
+       {{"dm85_fraction_by_modulus", dm95_fraction},
+        {"predicted", held_dm95.predicted},
+        {"beats_every_baseline", held_dm95.beats_every_baseline},
+        {"fitted_dm85_fraction", dm95.fitted_fraction},
+        {"fitted_dm85_fraction_se", dm95.fitted_fraction_se}}},
+      {"predicted_design", kInterpolated},
+      {"design_search", search_numbers}};
+  section.text = fmt::format(
              "forcing model (Sec. 5.2; designs at {} modes on a {:g} mm mesh): {} "
              "printed exemplars on {} surfaces, residual RMS {:.2f} dB\n"
              "  leave-one-out over {} of the paper's 27 tools: RMS mean {:.2f}, median {:.2f}, max "
@@ -160,6 +196,7 @@ std::string run_forcing_demo(const std::filesystem::path& catalog_file,
              "predicted.json, predicted_spectrum.png, design_search.json, "
              "design_path.png); {:.1f} s\n",
              dir.string(), seconds_since(start));
+  return section;
 }
 
 }  // namespace nibrig::ui::cli

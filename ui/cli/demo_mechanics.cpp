@@ -25,7 +25,7 @@ namespace {
 namespace mech = model::mechanics;
 
 void bar_against_beam_theory(const mech::MaterialTable& materials, const std::filesystem::path& dir,
-                             std::ostringstream& summary) {
+                             std::ostringstream& summary, nlohmann::json& numbers) {
   // The paper's material, and the same with ν = 0: a 3-D bar with ν > 0 is held against
   // anticlastic bending at its clamp and comes out about 1 % stiffer than beam theory; with ν = 0
   // Euler-Bernoulli is its exact thin limit, so that row shows the discretisation error alone.
@@ -46,6 +46,7 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
   design.modes = 10;
   const auto beam = mech::cantilever_bending_frequencies(
       paper.youngs_modulus, paper.density, bar.free_length(), bar.width, bar.thickness, 3);
+  nlohmann::json meshes = nlohmann::json::array();
   std::ostringstream csv;
   csv << "poisson_ratio,mesh_size_mm,nodes,free_dofs,f1_hz,f2_hz,f3_hz,f1_error,f2_error,f3_"
          "error\n";
@@ -60,8 +61,15 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
       csv << material->poisson_ratio << ',' << size * 1e3 << ',' << model.mesh.nodes.cols() << ','
           << model.free_dofs;
       for (double x : f) csv << ',' << x;
-      for (std::size_t n = 0; n < 3; ++n) csv << ',' << (f[n] - beam[n]) / beam[n];
+      std::vector<double> errors;
+      for (std::size_t n = 0; n < 3; ++n) errors.push_back((f[n] - beam[n]) / beam[n]);
+      for (double e : errors) csv << ',' << e;
       csv << '\n';
+      meshes.push_back({{"poisson_ratio", material->poisson_ratio},
+                        {"mesh_size_mm", size * 1e3},
+                        {"free_dofs", model.free_dofs},
+                        {"fem_hz", f},
+                        {"relative_error", errors}});
       summary << "    nu " << material->poisson_ratio << ", " << size * 1e3 << " mm elements ("
               << model.free_dofs << " DOFs): " << f[0] << ", " << f[1] << ", " << f[2] << " Hz ("
               << std::showpos << 100 * (f[0] - beam[0]) / beam[0] << " %, "
@@ -70,10 +78,11 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
     }
   }
   write_text_file(dir / "cantilever_convergence.csv", csv.str());
+  numbers["cantilever"] = {{"euler_bernoulli_hz", beam}, {"meshes", meshes}};
 }
 
 void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesystem::path& dir,
-                         std::ostringstream& summary) {
+                         std::ostringstream& summary, nlohmann::json& numbers) {
   mech::Design design = mech::read_design(model::io::asset("designs/paper_bar.json"), materials);
   const auto bar = mech::build_design_model(design, materials);
   write_json_file(dir / "paper_bar.json", modes_json(bar));
@@ -100,10 +109,15 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
           << " Hz; ring-down fit on a "
           << "SIMULATED trace (the paper's is not published): E " << fit.youngs_modulus / 1e9
           << " GPa, lambda " << fit.rayleigh_stiffness << " s (paper: 0.45 GPa, 0.00125 s)\n";
+  numbers["paper_bar"] = {
+      {"first_modes_hz", {bar.modal.omega[0] / (2 * M_PI), bar.modal.omega[1] / (2 * M_PI)}},
+      {"simulated_trace", true},
+      {"fitted_youngs_modulus_gpa", fit.youngs_modulus / 1e9},
+      {"fitted_rayleigh_stiffness_s", fit.rayleigh_stiffness}};
 }
 
 void stylus_responses(const mech::MaterialTable& materials, const std::filesystem::path& dir,
-                      std::ostringstream& summary) {
+                      std::ostringstream& summary, nlohmann::json& numbers) {
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(model::io::asset("designs")))
     if (e.path().filename().string().rfind("stylus_", 0) == 0) files.push_back(e.path());
@@ -118,6 +132,10 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
             << model.modal.omega[0] / (2 * M_PI) << " Hz (damping ratio " << model.modal.zeta[0]
             << "), " << model.free_dofs << " DOFs, "
             << model.seconds.meshing_s + model.seconds.assembly_s + model.seconds.modes_s << " s\n";
+    numbers["stylus_designs"].push_back({{"name", design.name},
+                                         {"first_mode_hz", model.modal.omega[0] / (2 * M_PI)},
+                                         {"damping_ratio", model.modal.zeta[0]},
+                                         {"free_dofs", model.free_dofs}});
     models.emplace_back(design.name, model.modal);
     progress.advance(design.name);
   }
@@ -127,7 +145,7 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
 
 }  // namespace
 
-std::string run_mechanics_demo(const std::filesystem::path& report) {
+DemoSection run_mechanics_demo(const std::filesystem::path& report) {
   const auto dir = report / "mechanics";
   ensure_folder(dir);
   const auto materials = mech::read_material_table(model::io::default_materials());
@@ -135,10 +153,12 @@ std::string run_mechanics_demo(const std::filesystem::path& report) {
   summary << "mechanics (Sec. 5.1): " << dir.string()
           << "/ (cantilever_convergence.csv, paper_bar*.{json,csv,png}, stylus JSON, "
              "stylus_frequency_responses.png)\n";
-  bar_against_beam_theory(materials, dir, summary);
-  paper_bar_ring_down(materials, dir, summary);
-  stylus_responses(materials, dir, summary);
-  return summary.str();
+  DemoSection section;
+  bar_against_beam_theory(materials, dir, summary, section.numbers);
+  paper_bar_ring_down(materials, dir, summary, section.numbers);
+  stylus_responses(materials, dir, summary, section.numbers);
+  section.text = summary.str();
+  return section;
 }
 
 }  // namespace nibrig::ui::cli

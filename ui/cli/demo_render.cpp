@@ -57,7 +57,7 @@ playback::PlaybackSession sweep_session(const model::design::ToolSound& sound, d
 }
 
 // Each tool for one sweep through the device, one after another.
-std::string play_all(model::design::ToolSounds& sounds,
+DemoSection play_all(model::design::ToolSounds& sounds,
                      const std::vector<std::pair<std::string, std::string>>& pairs,
                      const playback::OutputSettings& device) {
   std::uint64_t overruns = 0, underflows = 0;
@@ -69,14 +69,18 @@ std::string play_all(model::design::ToolSounds& sounds,
     overruns += session.engine().stats().overruns;
     underflows += output.stats().output_underflows;
   }
-  return "  played every tool through " + device.api + " '" + device.device + "': " +
-         std::to_string(overruns) + " engine overruns, " + std::to_string(underflows) +
-         " device underflows\n";
+  return {"  played every tool through " + device.api + " '" + device.device + "': " +
+              std::to_string(overruns) + " engine overruns, " + std::to_string(underflows) +
+              " device underflows\n",
+          {{"api", device.api},
+           {"device", device.device},
+           {"engine_overruns", overruns},
+           {"device_underflows", underflows}}};
 }
 
 }  // namespace
 
-std::string run_render_demo(const model::io::Catalog& catalog,
+DemoSection run_render_demo(const model::io::Catalog& catalog,
                             const std::filesystem::path& catalog_file,
                             const std::filesystem::path& report) {
   const auto folder = report / "render";
@@ -107,7 +111,7 @@ std::string run_render_demo(const model::io::Catalog& catalog,
     progress.advance(tool);
   }
   write_text_file(folder / "renders.csv", table.str());
-  std::string played = "  no audio device: nothing played (see `nibrig devices`)\n";
+  DemoSection played{"  no audio device: nothing played (see `nibrig devices`)\n", nullptr};
   if (const auto device = available_output()) played = play_all(sounds, pairs, *device);
   const rt::EngineSettings engine_settings;
   char line[500];
@@ -120,7 +124,14 @@ std::string run_render_demo(const model::io::Catalog& catalog,
                 1e3 * rt::SweepStroke::kPaperLow, rt::SweepStroke::kPaperPeriod, modes.c_str(),
                 engine_settings.sample_rate_hz, playback::OfflineRenderSettings{}.block_frames,
                 loudest_name.c_str(), loudest, slowest);
-  return line + played;
+  return {line + played.text,
+          {{"tools", pairs.size()},
+           {"seconds_each", rt::SweepStroke::kPaperPeriod},
+           {"sample_rate_hz", engine_settings.sample_rate_hz},
+           {"loudest", loudest_name},
+           {"loudest_rms_m_s2", loudest},
+           {"slowest_realtime_factor", slowest},
+           {"played", played.numbers}}};
 }
 
 }  // namespace nibrig::ui::cli

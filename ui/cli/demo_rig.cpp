@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
 #include "model/catalog/analysis.hpp"
 #include "model/catalog/compact.hpp"
@@ -33,7 +32,7 @@ rig::SimulatedRigSettings fast_rig() {
 
 }  // namespace
 
-std::string run_rig_demo(const std::filesystem::path& catalog_file, const std::filesystem::path& report) {
+DemoSection run_rig_demo(const std::filesystem::path& catalog_file, const std::filesystem::path& report) {
   const auto folder = report / "rig";
   ensure_folder(folder);
   std::filesystem::remove_all(folder / "steps");  // a demo run again replaces its own output
@@ -67,7 +66,17 @@ std::string run_rig_demo(const std::filesystem::path& catalog_file, const std::f
   write_comparison_figure(run, std::string(kTool) + " on " + kSurface + " (simulated rig) against " + run.simulated,
                           folder / "compare" / "comparison.png");
 
-  std::ostringstream lines;
+  const double weighted_mean_difference =
+      std::pow(10.0, run.table.summary.mean_weighted_mean_log10_difference) - 1.0;
+  DemoSection section;
+  section.numbers = {{"tool", kTool},
+                     {"surface", kSurface},
+                     {"steps_session_complete", model::io::read_session(captured.folder).complete},
+                     {"steps_rms_db_from_catalog", rms_db},
+                     {"comparison_mean_distance_db", run.table.summary.mean_lsd_db},
+                     {"comparison_speed_bins", run.table.summary.bins_with_rows},
+                     {"comparison_weighted_mean_difference", weighted_mean_difference},
+                     {"comparison_blocks_dropped", run.table.blocks_dropped}};
   char text[512];
   std::snprintf(text, sizeof text,
                 "rig (simulated turntable, %s on %s):\n"
@@ -78,10 +87,10 @@ std::string run_rig_demo(const std::filesystem::path& catalog_file, const std::f
                 "  report: %s/ (steps/, compare/comparison.json, compare/comparison.png)\n",
                 kTool, kSurface, rms_db, run.table.summary.mean_lsd_db,
                 run.table.summary.bins_with_rows,
-                100.0 * (std::pow(10.0, run.table.summary.mean_weighted_mean_log10_difference) - 1.0),
+                100.0 * weighted_mean_difference,
                 static_cast<unsigned long long>(run.table.blocks_dropped), folder.string().c_str());
-  lines << text;
-  return lines.str();
+  section.text = text;
+  return section;
 }
 
 }  // namespace nibrig::ui::cli

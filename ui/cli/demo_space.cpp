@@ -6,7 +6,6 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <sstream>
 
 #include "model/io/triplets.hpp"
 #include "model/space/catalog_descriptors.hpp"
@@ -21,7 +20,7 @@ namespace nibrig::ui::cli {
 
 namespace space = model::space;
 
-std::string run_space_demo(const model::io::Catalog& catalog,
+DemoSection run_space_demo(const model::io::Catalog& catalog,
                            const std::filesystem::path& catalog_file,
                            const std::filesystem::path& report, unsigned threads) {
   const auto dir = report / "space";
@@ -65,8 +64,29 @@ std::string run_space_demo(const model::io::Catalog& catalog,
   const space::SweepPoint* best = &points.front();
   for (const auto& p : points)
     if (p.mean_error < best->mean_error) best = &p;
-  std::ostringstream s;
-  s << fmt::format(
+  DemoSection section;
+  section.numbers = {
+      {"simulated_observer", true},
+      {"stimuli", file.stimuli.size()},
+      {"stage1_trials", study.stage_one.trials.size()},
+      {"stage2_trials", study.stage_two.trials.size()},
+      {"stage1_ties", study.ties},
+      {"judgments", study.judgments.triplets.size()},
+      {"dims", file.coordinates.rows()},
+      {"lambda", options.lambda},
+      {"negative_log_likelihood", study.fit.negative_log_likelihood},
+      {"recovery_probability_error", recovery.probabilities},
+      {"recovery_coordinate_error", recovery.coordinates},
+      {"best_cross_validated",
+       {{"dims", best->dims},
+        {"lambda", best->lambda},
+        {"held_out_error", best->mean_error},
+        {"majority_agreement", best->majority_agreement}}},
+      {"bootstrap_resamples", options.bootstrap_resamples},
+      {"regions", file.regions.size()},
+      {"descriptor_map_r_squared", file.descriptor_map->r_squared},
+      {"placed_tools", placed.size()}};
+  section.text = fmt::format(
       "perceptual space (SIMULATED observer: no human judgments of drawing tools are bundled)\n"
       "  an observer whose perception is the catalog's descriptors judged the paper's two-stage\n"
       "  experiment on {} tool/surface pairs: {} + {} trials, {} stage-1 ties\n"
@@ -83,7 +103,7 @@ std::string run_space_demo(const model::io::Catalog& catalog,
       100 * best->majority_agreement, options.bootstrap_resamples,
       file.descriptor_map->r_squared[0], file.descriptor_map->r_squared[1], placed.size(),
       dir.string());
-  return s.str();
+  return section;
 }
 
 }  // namespace nibrig::ui::cli
