@@ -72,6 +72,8 @@ std::vector<FrictionInterpolationError> friction_interpolation_errors(const io::
   }
   std::vector<std::pair<std::size_t, FrictionInterpolationError>> found;  // catalog order
   for (const auto& [key, by_tip] : by_material_surface) {
+    // Named, since clang 14 (the sanitizer build's compiler) lets no lambda capture a binding.
+    const std::string& surface = key.second;
     std::vector<Measured> tools;
     for (const auto& [tip, measured] : by_tip) tools.push_back(measured);
     for (std::size_t k = 1; k + 1 < tools.size(); ++k) {
@@ -81,9 +83,9 @@ std::vector<FrictionInterpolationError> friction_interpolation_errors(const io::
       const auto order = static_cast<std::size_t>(
           std::find_if(
               catalog.pairings.begin(), catalog.pairings.end(),
-              [&](const auto& p) { return p.tool == mid.tool && p.surface == key.second; }) -
+              [&](const auto& p) { return p.tool == mid.tool && p.surface == surface; }) -
           catalog.pairings.begin());
-      found.push_back({order, {mid.tool, key.second, interpolated - mid.mu}});
+      found.push_back({order, {mid.tool, surface, interpolated - mid.mu}});
     }
   }
   std::sort(found.begin(), found.end(),
