@@ -1,16 +1,11 @@
 #include "model/design/tool_sound.hpp"
 
-#include <spdlog/spdlog.h>
-
-#include <numbers>
 #include <stdexcept>
 
 #include "model/design/design_point.hpp"
 #include "model/design/prediction_inputs.hpp"
+#include "model/design/stylus_modes.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/mechanics/stylus_description.hpp"
-#include "model/mechanics/design_model.hpp"
-#include "model/mechanics/material_table.hpp"
 
 namespace nibrig::model::design {
 
@@ -42,7 +37,7 @@ const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
 struct ToolSounds::State {
   ToolSoundOptions options;
   io::Catalog catalog;
-  std::optional<ToolSound> stylus;                   // name and modes; meshed on first need
+  std::optional<ToolSound> stylus;                   // name and modes; on first need (cached)
   std::unique_ptr<PredictionInputs> prediction;      // loaded on the first design point
 };
 
@@ -83,14 +78,8 @@ ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface)
   const io::VelocitySpectrum& spectrum =
       pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
   if (!state_->stylus) {
-    const auto materials = mechanics::read_material_table(io::default_materials());
-    const auto file = io::or_default(state_->options.stylus_design, io::default_stylus_design);
-    const mechanics::Design d = mechanics::read_design(file, materials);
-    const mechanics::DesignModel model = mechanics::build_design_model(d, materials);
-    spdlog::info("{}: {} modes, first at {:.1f} Hz (meshing and modes {:.2f} s)", d.name,
-                 model.modal.size(), model.modal.omega.front() / (2 * std::numbers::pi),
-                 model.seconds.meshing_s + model.seconds.assembly_s + model.seconds.modes_s);
-    state_->stylus = ToolSound{"", d.name, model.modal, {}};
+    StylusModes stylus = stylus_modes(state_->options.stylus_design).value;
+    state_->stylus = ToolSound{"", std::move(stylus.design_name), std::move(stylus.modal), {}};
   }
   return {tool + " on " + surface, state_->stylus->modes, state_->stylus->modal, spectrum};
 }

@@ -47,8 +47,9 @@ struct ToolSoundOptions {
 };
 
 // Makes the sounds of any number of tools with one set of inputs, each loaded the first time a
-// tool needs it: the stylus is meshed once for all catalog tools, the forcing model read (or
-// fitted) once for all design points.
+// tool needs it: the stylus's modes once for all catalog tools (from the user cache where another
+// process solved them, stylus_modes.hpp), the forcing model read (or fitted) once for all design
+// points.
 class ToolSounds {
  public:
   explicit ToolSounds(ToolSoundOptions options);  // reads the catalog; throws naming a bad one
