@@ -2,7 +2,8 @@
 # nibrig setup: installs the Debian packages the project needs (only when something is missing),
 # builds, and runs one job:
 #   ./setup.sh demo    build (Release) and run `nibrig demo` on the bundled default -> nibrig-demo/
-#   ./setup.sh test    build with ASan+UBSan, run every test suite, then fuzz the readers briefly
+#   ./setup.sh test    build the libraries' suites with ASan+UBSan and the faces' in Release, run every
+#                      test suite, then fuzz the readers briefly
 #   ./setup.sh bench   build (Release) and run the benchmarks with the scipy reference beside them
 #   ./setup.sh panel   build (Release) and open nibrig-panel (extra arguments go to it)
 #   ./setup.sh build   build (Release) only
@@ -26,6 +27,15 @@ packages=(
   python3-numpy python3-scipy
 )
 
+# Each stage's wall time on standard error, so that a CI log says where its minutes went.
+stage_start=$(date +%s)
+stage_done() {
+  local now
+  now=$(date +%s)
+  echo "setup: $1 took $((now - stage_start)) s" >&2
+  stage_start=$now
+}
+
 install_packages() {
   local missing=()
   for p in "${packages[@]}"; do
@@ -39,64 +49,94 @@ install_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-configure_and_build() {  # $1 = build dir, rest = cmake options
+configure_and_build() {  # $1 = build dir, rest = cmake options; $targets (if set) = what to build
   local dir=$1; shift
   cmake -S "$root" -B "$dir" -G Ninja "$@" >/dev/null
-  cmake --build "$dir" -j "$jobs"
+  stage_done "configuring $dir"
+  cmake --build "$dir" -j "$jobs" ${targets:+--target $targets}
+  stage_done "building $dir"
 }
 
 build_fuzzers() {  # libFuzzer needs clang; the readers are built again into each fuzz binary
   local out=$root/build/fuzz
   mkdir -p "$out"
+  local pids=()
   for target in "$root"/tests/fuzz/fuzz_*.cpp; do
     local name
     name=$(basename "$target" .cpp)
     clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -I"$root" -DNIBRIG_SOURCE_DIR="\"$root\"" \
-      "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib) -o "$out/$name"
+      "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib) -o "$out/$name" &
+    pids+=($!)
   done
+  for pid in "${pids[@]}"; do wait "$pid"; done
 }
 
-run_fuzzers() {
-  local seconds=${NIBRIG_FUZZ_SECONDS:-20}
+run_fuzzer() {  # $1 = fuzz binary; its seeds are copied to a folder of its own, which it may add to
+  local bin=$1 seconds=${NIBRIG_FUZZ_SECONDS:-20}
+  local name corpus work
+  name=$(basename "$bin")
+  corpus=$root/tests/fuzz/corpus/${name#fuzz_}
+  work=$(mktemp -d)
+  cp -r "$corpus"/. "$work"/ 2>/dev/null || true
+  # Every CSV seed also as a .gz twin, made here rather than committed: the readers take gzip
+  # through zlib, so the compressed path is fuzzed from every format.
+  for seed in "$work"/*.csv; do [ -f "$seed" ] && gzip -c "$seed" >"$seed.gz"; done
+  echo "fuzz: $name for ${seconds} s"
+  "$bin" -max_total_time="$seconds" -print_final_stats=1 "$work" 2>"$root/build/fuzz/$name.log" ||
+    { tail -40 "$root/build/fuzz/$name.log"; echo "fuzz: $name found a crash"; return 1; }
+  grep -E "stat::number_of_executed_units" "$root/build/fuzz/$name.log" || true
+  rm -rf "$work"
+}
+
+run_fuzzers() {  # each fuzzer on a core of its own; fails when any found a crash
+  local pids=() failed=0
   for bin in "$root"/build/fuzz/fuzz_*; do
-    local name corpus work
-    name=$(basename "$bin")
-    corpus=$root/tests/fuzz/corpus/${name#fuzz_}
-    work=$(mktemp -d)
-    cp -r "$corpus"/. "$work"/ 2>/dev/null || true
-    # Every CSV seed also as a .gz twin, made here rather than committed: the readers take gzip
-    # through zlib, so the compressed path is fuzzed from every format.
-    for seed in "$work"/*.csv; do [ -f "$seed" ] && gzip -c "$seed" >"$seed.gz"; done
-    echo "fuzz: $name for ${seconds} s"
-    "$bin" -max_total_time="$seconds" -print_final_stats=1 "$work" 2>"$root/build/fuzz/$name.log" ||
-      { tail -40 "$root/build/fuzz/$name.log"; echo "fuzz: $name found a crash"; return 1; }
-    grep -E "stat::number_of_executed_units" "$root/build/fuzz/$name.log" || true
-    rm -rf "$work"
+    [ -x "$bin" ] && [ "${bin%.log}" = "$bin" ] || continue
+    run_fuzzer "$bin" &
+    pids+=($!)
   done
+  for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+  return $failed
 }
 
 install_packages
+stage_done "installing packages"
 case "$job" in
   demo)
-    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF
+    # The command alone: the panel is `./setup.sh panel`'s.
+    targets=nibrig configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF \
+      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF
     ./build/release/ui/nibrig demo -o nibrig-demo
+    stage_done "running the demo"
     ;;
   test)
     # A test jackd that died with its process (a crashed test) keeps its slot in jack2's
     # machine-wide registry of 8 servers; with no jackd running, the registry can go.
     if ! pgrep -x jackd >/dev/null; then rm -f /dev/shm/jack-shm-registry /dev/shm/jack_sem.*nibrig-test-*; fi
-    # Line tables only (-g1): sanitizer reports still name file and line, and the cold build, most
-    # of CI's time, is a quarter shorter than with full debug information.
-    configure_and_build build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNIBRIG_SANITIZE=ON -DNIBRIG_BUILD_BENCH=OFF \
-      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-    # One test more than cores: the minute-long JACK soak mostly waits on the audio clock.
-    (cd build/asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    # Two trees, each test in one (README, "Tests"). The libraries' own suites (label unit) under
+    # ASan+UBSan, compiled by clang: the same sources took GCC 2.2 times as long with the
+    # sanitizers, most of CI's time. Line tables only (-g1): reports still name file and line.
+    configure_and_build build/asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DNIBRIG_SANITIZE=ON -DNIBRIG_TESTS=unit -DNIBRIG_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+    # The faces end to end and the checks whose time is the feature (label scenario) in Release,
+    # the build that plays, with LeakSanitizer linked in where the sanitizer build had it.
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=ON -DNIBRIG_TESTS=scenario \
+      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=ON
+    # One ctest over both trees, so that one scheduler fills the cores and the JACK tests of both
+    # share one lock. One test more than cores: the JACK tests mostly wait on the audio clock.
+    printf 'subdirs("asan" "release")\n' >build/CTestTestfile.cmake
+    # What the tests keep in their user cache is solved again in each run, by the code under test.
+    rm -rf build/asan/tests/scratch/user_cache build/release/tests/scratch/user_cache
+    (cd build && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
        ctest --output-on-failure -j "$((jobs + 1))")
+    stage_done "running the tests"
     build_fuzzers
+    stage_done "building the fuzzers"
     run_fuzzers
+    stage_done "fuzzing"
     ;;
   bench)
-    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF
     # The panel's frame benchmark needs a display: a private X server when there is none.
     display=()
     [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24")
@@ -105,7 +145,7 @@ case "$job" in
     /usr/bin/python3 tests/bench/numpy_space_fit.py
     ;;
   panel)
-    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
       echo "setup: no display to open the panel on; on a machine without a screen, take a picture of a view:" >&2
       echo "  xvfb-run -a build/release/ui/panel/nibrig-panel --screenshot space.png --view space" >&2
@@ -115,7 +155,7 @@ case "$job" in
     exec ./build/release/ui/panel/nibrig-panel "$@"
     ;;
   build)
-    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release
+    configure_and_build build/release -DCMAKE_BUILD_TYPE=Release -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF
     ;;
   *)
     echo "usage: ./setup.sh [demo|test|bench|panel|build]" >&2

@@ -6,10 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "model/io/comparison_file.hpp"
-#include "model/io/session.hpp"
-#include "model/io/triplets.hpp"
-#include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -109,57 +105,6 @@ TEST(Cli, CatalogBuildProcessesEveryRecordingOfThePaper) {
   std::size_t lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 1 + friction_files);  // header + every friction file, none dropped
-}
-
-TEST(Cli, DemoRunsOnTheBundledDefault) {
-  const auto out = nibrig::test::scratch_dir("cli_demo");
-  ::testing::internal::CaptureStdout();
-  const int code = run_cli({"demo", "-o", (out / "demo").string()});
-  const std::string text = ::testing::internal::GetCapturedStdout();
-  ASSERT_EQ(code, 0);
-  EXPECT_NE(text.find("Coulomb friction mu"), std::string::npos) << text;
-  EXPECT_TRUE(std::filesystem::exists(out / "demo" / "catalog.json"));
-  EXPECT_TRUE(std::filesystem::exists(out / "demo" / "descriptors.csv"));
-  EXPECT_TRUE(is_png(out / "demo" / "friction.png"));
-  // Mechanics: the bar against beam theory, the paper's bar with its ring-down, the styli.
-  EXPECT_NE(text.find("Euler-Bernoulli"), std::string::npos) << text;
-  EXPECT_NE(text.find("ring-down fit"), std::string::npos) << text;
-  EXPECT_TRUE(std::filesystem::exists(out / "demo" / "mechanics" / "cantilever_convergence.csv"));
-  EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "paper_bar_ring_down.png"));
-  EXPECT_TRUE(is_png(out / "demo" / "mechanics" / "stylus_frequency_responses.png"));
-  // The space: a simulated-observer study that says so, its space, judgments and figures.
-  EXPECT_NE(text.find("SIMULATED observer"), std::string::npos) << text;
-  const auto space = model::space::read_space_file(out / "demo" / "space" / "space.json");
-  EXPECT_EQ(space.stimuli.size(), 15u);
-  EXPECT_EQ(space.regions.size(), 15u);
-  EXPECT_TRUE(space.descriptor_map.has_value());
-  EXPECT_NE(space.judgments.find("SIMULATED"), std::string::npos);
-  EXPECT_GT(model::io::read_triplet_csv(out / "demo" / "space" / "judgments.csv").triplets.size(),
-            600u);  // about half of the 1365 triplets were presented in stage 1
-  EXPECT_TRUE(is_png(out / "demo" / "space" / "space.png"));
-  EXPECT_TRUE(is_png(out / "demo" / "space" / "placed_tools.png"));
-  EXPECT_TRUE(is_png(out / "demo" / "space" / "dimension_sweep.png"));
-  // The forcing model, its validation, a predicted design and a design search in that space.
-  EXPECT_NE(text.find("leave-one-out over 23 of the paper's 27 tools"), std::string::npos) << text;
-  EXPECT_NE(text.find("2 mm tools predicted from 1 and 4 mm"), std::string::npos) << text;
-  EXPECT_NE(text.find("DM95 tools predicted as the VeroClear/DM85 mix"), std::string::npos) << text;
-  EXPECT_NE(text.find("design search on protector for cryon/office"), std::string::npos) << text;
-  const auto forcing = out / "demo" / "forcing";
-  EXPECT_TRUE(std::filesystem::exists(forcing / "forcing.json"));
-  EXPECT_TRUE(is_png(forcing / "material_curves.png"));
-  EXPECT_TRUE(is_png(forcing / "predicted_spectrum.png"));
-  EXPECT_TRUE(is_png(forcing / "design_path.png"));
-  const auto predicted = nibrig::test::read_json(forcing / "predicted.json");
-  EXPECT_EQ(predicted["amplitude_m_s2"].size(), predicted["speeds_mm_s"].size());
-  EXPECT_TRUE(predicted.contains("descriptor_error_covariance"));  // placed with its error
-  const auto search = nibrig::test::read_json(forcing / "design_search.json");
-  EXPECT_GE(search["path"].size(), 9u);
-  // The rig: the simulated turntable's capture measured against the catalog, and the comparison.
-  EXPECT_NE(text.find("captured and measured as a session"), std::string::npos) << text;
-  const auto rig = out / "demo" / "rig";
-  EXPECT_TRUE(model::io::read_session(rig / "steps").complete);
-  EXPECT_GE(model::io::read_comparison_file(rig / "compare" / "comparison.json").bins_with_rows, 10u);
-  EXPECT_TRUE(is_png(rig / "compare" / "comparison.png"));
 }
 
 }  // namespace
