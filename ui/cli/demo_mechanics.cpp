@@ -3,8 +3,10 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -14,6 +16,7 @@
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/ring_down.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/numeric/parallel_for.hpp"
 #include "ui/cli/mechanics_figures.hpp"
 #include "ui/cli/mechanics_report.hpp"
 #include "ui/cli/output.hpp"
@@ -52,30 +55,42 @@ void bar_against_beam_theory(const mech::MaterialTable& materials, const std::fi
          "error\n";
   summary << "  plain 180 x 20 x 2 mm cantilever, Euler-Bernoulli " << std::setprecision(4)
           << beam[0] << ", " << beam[1] << ", " << beam[2] << " Hz; FEM (quadratic tetrahedra):\n";
-  for (const mech::Material* material : {&no_poisson, &paper}) {
-    design.region_materials["body"] = material->name;
-    for (double size : {0.008, 0.004, 0.002}) {
-      design.mesh_size = size;
-      const auto model = mech::build_design_model(design, table);
-      const auto f = model::modal::tip_driven_frequencies_hz(model.modal, 3);
-      csv << material->poisson_ratio << ',' << size * 1e3 << ',' << model.mesh.nodes.cols() << ','
-          << model.free_dofs;
-      for (double x : f) csv << ',' << x;
-      std::vector<double> errors;
-      for (std::size_t n = 0; n < 3; ++n) errors.push_back((f[n] - beam[n]) / beam[n]);
-      for (double e : errors) csv << ',' << e;
-      csv << '\n';
-      meshes.push_back({{"poisson_ratio", material->poisson_ratio},
-                        {"mesh_size_mm", size * 1e3},
-                        {"free_dofs", model.free_dofs},
-                        {"fem_hz", f},
-                        {"relative_error", errors}});
-      summary << "    nu " << material->poisson_ratio << ", " << size * 1e3 << " mm elements ("
-              << model.free_dofs << " DOFs): " << f[0] << ", " << f[1] << ", " << f[2] << " Hz ("
-              << std::showpos << 100 * (f[0] - beam[0]) / beam[0] << " %, "
-              << 100 * (f[1] - beam[1]) / beam[1] << " %, " << 100 * (f[2] - beam[2]) / beam[2]
-              << " %)" << std::noshowpos << "\n";
-    }
+  // The six meshes solved side by side (Gmsh itself is serialised inside build_design_model); the
+  // rows are written in order afterwards.
+  const std::array<const mech::Material*, 2> poisson_cases{&no_poisson, &paper};
+  const std::array<double, 3> sizes{0.008, 0.004, 0.002};
+  std::vector<std::array<double, 3>> fem_hz(poisson_cases.size() * sizes.size());
+  std::vector<std::pair<long, long>> counts(fem_hz.size());  // nodes, free DOFs
+  model::numeric::parallel_for(fem_hz.size(), 0, [&](std::size_t n) {
+    mech::Design case_design = design;
+    case_design.region_materials["body"] = poisson_cases[n / sizes.size()]->name;
+    case_design.mesh_size = sizes[n % sizes.size()];
+    const auto model = mech::build_design_model(case_design, table);
+    const auto f = model::modal::tip_driven_frequencies_hz(model.modal, 3);
+    std::copy_n(f.begin(), 3, fem_hz[n].begin());
+    counts[n] = {static_cast<long>(model.mesh.nodes.cols()), static_cast<long>(model.free_dofs)};
+  });
+  for (std::size_t n = 0; n < fem_hz.size(); ++n) {
+    const mech::Material& material = *poisson_cases[n / sizes.size()];
+    const double size = sizes[n % sizes.size()];
+    const auto& f = fem_hz[n];
+    csv << material.poisson_ratio << ',' << size * 1e3 << ',' << counts[n].first << ','
+        << counts[n].second;
+    for (double x : f) csv << ',' << x;
+    std::vector<double> errors;
+    for (std::size_t k = 0; k < 3; ++k) errors.push_back((f[k] - beam[k]) / beam[k]);
+    for (double e : errors) csv << ',' << e;
+    csv << '\n';
+    meshes.push_back({{"poisson_ratio", material.poisson_ratio},
+                      {"mesh_size_mm", size * 1e3},
+                      {"free_dofs", counts[n].second},
+                      {"fem_hz", f},
+                      {"relative_error", errors}});
+    summary << "    nu " << material.poisson_ratio << ", " << size * 1e3 << " mm elements ("
+            << counts[n].second << " DOFs): " << f[0] << ", " << f[1] << ", " << f[2] << " Hz ("
+            << std::showpos << 100 * (f[0] - beam[0]) / beam[0] << " %, "
+            << 100 * (f[1] - beam[1]) / beam[1] << " %, " << 100 * (f[2] - beam[2]) / beam[2]
+            << " %)" << std::noshowpos << "\n";
   }
   write_text_file(dir / "cantilever_convergence.csv", csv.str());
   numbers["cantilever"] = {{"euler_bernoulli_hz", beam}, {"meshes", meshes}};
@@ -117,16 +132,25 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
 }
 
 void stylus_responses(const mech::MaterialTable& materials, const std::filesystem::path& dir,
-                      std::ostringstream& summary, nlohmann::json& numbers) {
+                      std::ostringstream& summary, nlohmann::json& numbers, bool progress_bar) {
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(model::io::asset("designs")))
     if (e.path().filename().string().rfind("stylus_", 0) == 0) files.push_back(e.path());
   std::sort(files.begin(), files.end());
+  // Solved side by side; reported in file order.
+  std::vector<mech::Design> designs;
+  for (const auto& file : files) designs.push_back(mech::read_design(file, materials));
+  std::vector<std::optional<mech::DesignModel>> solved(designs.size());
+  std::optional<Progress> progress;
+  if (progress_bar) progress.emplace("stylus designs", designs.size());
+  model::numeric::parallel_for(designs.size(), 0, [&](std::size_t n) {
+    solved[n] = mech::build_design_model(designs[n], materials);
+    if (progress) progress->advance(designs[n].name);
+  });
   std::vector<std::pair<std::string, model::modal::ModalModel>> models;
-  Progress progress("stylus designs", files.size());
-  for (const auto& file : files) {
-    const auto design = mech::read_design(file, materials);
-    const auto model = mech::build_design_model(design, materials);
+  for (std::size_t n = 0; n < designs.size(); ++n) {
+    const auto& design = designs[n];
+    const auto& model = *solved[n];
     write_json_file(dir / (file_stem(design.name) + ".json"), modes_json(model));
     summary << "  " << design.name << ": first mode " << std::setprecision(4)
             << model.modal.omega[0] / (2 * M_PI) << " Hz (damping ratio " << model.modal.zeta[0]
@@ -137,7 +161,6 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
                                          {"damping_ratio", model.modal.zeta[0]},
                                          {"free_dofs", model.free_dofs}});
     models.emplace_back(design.name, model.modal);
-    progress.advance(design.name);
   }
   plot_frequency_responses(models, "Bundled stylus designs: tip force to sensor acceleration",
                            dir / "stylus_frequency_responses.png");
@@ -145,7 +168,7 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
 
 }  // namespace
 
-DemoSection run_mechanics_demo(const std::filesystem::path& report) {
+DemoSection run_mechanics_demo(const std::filesystem::path& report, bool progress_bar) {
   const auto dir = report / "mechanics";
   ensure_folder(dir);
   const auto materials = mech::read_material_table(model::io::default_materials());
@@ -156,7 +179,7 @@ DemoSection run_mechanics_demo(const std::filesystem::path& report) {
   DemoSection section;
   bar_against_beam_theory(materials, dir, summary, section.numbers);
   paper_bar_ring_down(materials, dir, summary, section.numbers);
-  stylus_responses(materials, dir, summary, section.numbers);
+  stylus_responses(materials, dir, summary, section.numbers, progress_bar);
   section.text = summary.str();
   return section;
 }

@@ -11,6 +11,7 @@
 
 namespace nibrig::ui::cli {
 
-DemoSection run_mechanics_demo(const std::filesystem::path& report);
+// progress_bar: false when another part runs beside it and owns the terminal's progress line.
+DemoSection run_mechanics_demo(const std::filesystem::path& report, bool progress_bar = true);
 
 }  // namespace nibrig::ui::cli
