@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "model/io/atomic_file.hpp"
+
 namespace nibrig::playback {
 namespace {
 
@@ -21,7 +23,8 @@ OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesy
                                   const OfflineRenderSettings& settings) {
   if (!(settings.sample_rate_hz > 0) || settings.block_frames == 0 || !(settings.seconds > 0))
     throw std::invalid_argument("an offline render needs a positive rate, block and duration");
-  const std::filesystem::path partial = wav.string() + ".partial";
+  const model::io::OutputTarget target = model::io::output_target(wav);
+  const std::filesystem::path partial = model::io::temporary_beside(target);
   // Whatever stops the render (a full disk, a renderer that throws, a failed rename) removes the
   // half file: only a finished render is left behind, under its own name.
   struct RemoveUnlessDone {
@@ -59,10 +62,8 @@ OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesy
   result.rms = std::sqrt(sum_squares / static_cast<double>(result.frames));
   if (sf_close(file.release()) != 0)
     throw std::runtime_error("cannot finish " + partial.string());
-  std::error_code error;
-  std::filesystem::rename(partial, wav, error);
-  if (error) throw std::runtime_error("cannot rename " + partial.string() + " to " + wav.string() + ": " + error.message());
-  cleanup.done = true;
+  cleanup.done = true;  // commit_output removes it whatever happens
+  model::io::commit_output(partial, target);
   return result;
 }
 

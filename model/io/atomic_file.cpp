@@ -18,27 +18,126 @@ namespace {
   throw std::runtime_error(file.string() + ": cannot " + what + " (" + std::strerror(error) + ")");
 }
 
-}  // namespace
+// Follows a chain of symbolic links to its last name, which need not exist (a dangling link names
+// the file to create). Links under /proc (/dev/stdout -> /proc/self/fd/1) end in the process's own
+// open files: `through_proc` is set, and the caller writes to the name itself.
+std::filesystem::path follow_links(const std::filesystem::path& named, bool& through_proc) {
+  std::filesystem::path path = named;
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) return path;
+    const std::filesystem::path next = std::filesystem::read_symlink(path, ec);
+    if (ec) fail(named, "follow the link " + path.string(), ec.value());
+    path = next.is_absolute() ? next : path.parent_path() / next;
+    if (path.lexically_normal().string().rfind("/proc/", 0) == 0) through_proc = true;
+  }
+  fail(named, "follow its links", ELOOP);
+}
 
-void write_file_atomically(const std::filesystem::path& target, std::string_view content) {
-  // Unique per process and call, so concurrent writers never share a temporary file.
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path temporary = target;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, "create", errno);
+void write_all(int fd, std::string_view content, const std::filesystem::path& file) {
   std::size_t written = 0;
   while (written < content.size()) {
     const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const int error = errno;
-      ::close(fd);
-      ::unlink(temporary.c_str());
-      fail(temporary, "write", error);
+      fail(file, "write", errno);
     }
     written += static_cast<std::size_t>(n);
+  }
+}
+
+void write_stream(const std::filesystem::path& file, std::string_view content) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd < 0) fail(file, "open for writing", errno);
+  try {
+    write_all(fd, content, file);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) fail(file, "close", errno);
+}
+
+}  // namespace
+
+OutputTarget output_target(const std::filesystem::path& named) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(named, ec);  // follows links, /proc's too
+  bool through_proc = false;
+  const fs::path end = follow_links(named, through_proc);
+  if (!fs::exists(status)) {
+    if (through_proc) return {named, true};
+    return {end, false};
+  }
+  switch (status.type()) {
+    case fs::file_type::regular:
+      if (through_proc) return {named, true};  // our own stdout redirected to a file
+      return {end, false};
+    case fs::file_type::character:
+    case fs::file_type::fifo:
+      return {named, true};
+    case fs::file_type::directory:
+      throw std::runtime_error(named.string() + ": is a folder; expected a file to write");
+    default:
+      throw std::runtime_error(named.string() +
+                               ": is a block device or a socket; expected a regular file, a "
+                               "character device or a pipe to write");
+  }
+}
+
+std::filesystem::path temporary_beside(const OutputTarget& target) {
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path temporary = target.stream ? std::filesystem::temp_directory_path() /
+                                                        target.path.filename()
+                                                  : target.path;
+  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  return temporary;
+}
+
+void commit_output(const std::filesystem::path& temporary, const OutputTarget& target) {
+  if (!target.stream) {
+    if (std::rename(temporary.c_str(), target.path.c_str()) != 0) {
+      const int error = errno;
+      ::unlink(temporary.c_str());
+      fail(target.path, "replace", error);
+    }
+    return;
+  }
+  const int in = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    fail(temporary, "read back", error);
+  }
+  std::string content;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(in, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    content.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(in);
+  ::unlink(temporary.c_str());
+  write_stream(target.path, content);
+}
+
+void write_file_atomically(const std::filesystem::path& named, std::string_view content) {
+  const OutputTarget target = output_target(named);
+  if (target.stream) {
+    write_stream(target.path, content);
+    return;
+  }
+  const std::filesystem::path temporary = temporary_beside(target);
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) fail(temporary, "create", errno);
+  try {
+    write_all(fd, content, temporary);
+  } catch (...) {
+    ::close(fd);
+    ::unlink(temporary.c_str());
+    throw;
   }
   // Flushed before the rename, or a crash could leave the new name pointing at empty data.
   if (::fsync(fd) != 0) {
@@ -52,11 +151,7 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
     ::unlink(temporary.c_str());
     fail(temporary, "close", error);
   }
-  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(temporary.c_str());
-    fail(target, "replace", error);
-  }
+  commit_output(temporary, target);
 }
 
 }  // namespace nibrig::model::io

@@ -1,12 +1,33 @@
-// Writing a whole small file (catalog, triplet list, session description) so that a reader never
-// sees it half written: the content goes to a temporary file beside the target, is flushed to disk,
-// and is renamed over the target in one step.
+// Writing an output file so that nothing is replaced that was not meant to be, and a reader never
+// sees it half written. What the user named decides how:
+//   - a regular file (or a new name): the content goes to a temporary file beside it, is flushed to
+//     disk, and is renamed over it in one step;
+//   - a symbolic link: the same, at the file the link points to; the link stays;
+//   - a character device or a pipe (/dev/stdout, /dev/null, a FIFO): written to as a stream;
+//   - anything else (a folder, a block device, a socket): refused before anything is written.
 #pragma once
 
 #include <filesystem>
 #include <string_view>
 
 namespace nibrig::model::io {
+
+// Where an output named `named` goes.
+struct OutputTarget {
+  std::filesystem::path path;  // the file itself: a symbolic link followed to its end
+  bool stream = false;         // a character device or a pipe: written in place, never renamed
+};
+
+// Throws std::runtime_error naming `named` when it is something that cannot be written.
+OutputTarget output_target(const std::filesystem::path& named);
+
+// Where to write a temporary whole file for `target` (beside it, so the rename stays on one file
+// system), unique per process and call.
+std::filesystem::path temporary_beside(const OutputTarget& target);
+
+// Moves a finished temporary file into place: renamed over a regular target, or copied into a
+// stream and then removed. Throws naming the target; the temporary is removed on failure.
+void commit_output(const std::filesystem::path& temporary, const OutputTarget& target);
 
 // Throws std::runtime_error naming the file and the system's reason when any step fails; the
 // temporary file is removed then.

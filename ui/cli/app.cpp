@@ -12,6 +12,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/cli/usage_errors.hpp"
 
 namespace nibrig::ui::cli {
@@ -46,6 +47,14 @@ void add_global_options(CLI::App& app, const std::shared_ptr<GlobalOptions>& glo
   for (CLI::App* sub : app.get_subcommands({})) add_global_options(*sub, global);
 }
 
+// Before any command runs: no output may be one of its own inputs.
+void check_outputs_before_running(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands({})) {
+    sub->parse_complete_callback([sub] { refuse_outputs_that_are_inputs(*sub); });
+    check_outputs_before_running(*sub);
+  }
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -71,6 +80,7 @@ int run(int argc, char** argv) {
   add_experiment_command(app, global);
   add_demo_command(app, global);
   add_global_options(app, global);
+  check_outputs_before_running(app);
 
   try {
     app.parse(argc, argv);

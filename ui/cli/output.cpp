@@ -1,6 +1,8 @@
 #include "ui/cli/output.hpp"
 
 #include <iostream>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
@@ -26,18 +28,60 @@ void write_json_file(const std::filesystem::path& path, const nlohmann::json& js
 }
 
 void say_wrote(const std::filesystem::path& path) {
-  std::cout << "wrote " << path.string() << "\n";
+  // Written into a stream (-o /dev/stdout): the confirmation stays out of what was written.
+  bool stream = false;
+  try {
+    stream = model::io::output_target(path).stream;
+  } catch (const std::exception&) {
+  }
+  (stream ? std::cerr : std::cout) << "wrote " << path.string() << "\n";
+}
+
+namespace {
+constexpr const char* kFileToWrite = "file to write";
 }
 
 CLI::Validator file_to_write() {
-  return CLI::Validator(
+  CLI::Validator validator(
       [](std::string& text) -> std::string {
-        std::error_code error;
-        if (std::filesystem::is_directory(text, error))
-          return text + ": is a folder; expected a file to write";
+        try {
+          model::io::output_target(text);  // a folder, a block device or a socket: refused here
+        } catch (const std::exception& e) {
+          return e.what();
+        }
         return {};
       },
       "FILE");
+  validator.name(kFileToWrite);
+  return validator;
+}
+
+void refuse_outputs_that_are_inputs(const CLI::App& command) {
+  std::vector<std::pair<const CLI::Option*, std::string>> outputs, inputs;
+  for (const CLI::Option* option : command.get_options()) {
+    bool is_output = false;
+    try {
+      const_cast<CLI::Option*>(option)->get_validator(kFileToWrite);
+      is_output = true;
+    } catch (const CLI::OptionNotFound&) {
+    }
+    for (const std::string& value : option->results())
+      (is_output ? outputs : inputs).emplace_back(option, value);
+  }
+  for (const auto& [output_option, output] : outputs) {
+    for (const auto& [input_option, input] : inputs) {
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(input, error)) continue;
+      if (std::filesystem::equivalent(output, input, error)) {
+        const std::string name = input_option->get_name().empty() ? "an input"
+                                                                   : input_option->get_name();
+        throw CLI::ValidationError(output_option->get_name(),
+                                   output + ": is also " + name + " of this command (" + input +
+                                       "); writing it would replace what is being read: choose "
+                                       "another file");
+      }
+    }
+  }
 }
 
 std::string recording_stem(const std::filesystem::path& recording) {

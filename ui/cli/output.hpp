@@ -16,14 +16,20 @@ void ensure_folder(const std::filesystem::path& folder);
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json);
 
-// The one confirmation every command prints after writing a file, on stdout: "wrote <path>", so a
-// script or a reader finds what was written the same way whichever command wrote it.
+// The one confirmation every command prints after writing a file: "wrote <path>", so a script or
+// a reader finds what was written the same way whichever command wrote it. On stdout, or on
+// stderr when the file was a stream (-o /dev/stdout), to stay out of what was written.
 void say_wrote(const std::filesystem::path& path);
 
-// Check for an option naming a file to write (-o, --plot, --csv): an existing folder is refused
-// while the command line is parsed, naming the option, instead of failing after the work at the
-// rename (or writing "<folder>/.partial").
+// Check for an option naming a file to write (-o, --plot, --csv): what cannot be written (a
+// folder, a block device, a socket: model/io/atomic_file.hpp) is refused while the command line
+// is parsed, naming the option, instead of failing after the work.
 CLI::Validator file_to_write();
+
+// Refuses (CLI::ValidationError naming the option) an output option of `command` checked by
+// file_to_write() that names the same file as any other option's value or positional argument:
+// `space embed s.json cat.json -o cat.json` would replace the catalog it reads.
+void refuse_outputs_that_are_inputs(const CLI::App& command);
 
 // "arm_vero_1_office.csv.gz" -> "arm_vero_1_office"; a session folder -> its name.
 std::string recording_stem(const std::filesystem::path& recording);

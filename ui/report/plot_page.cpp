@@ -5,7 +5,6 @@
 #include <plplot/plplot.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -98,25 +97,19 @@ PlotPage::PlotPage(std::string name, const std::filesystem::path& png, int width
       height_(height_px) {
   require_pngcairo();
 
-  // The temporary file sits beside the target so that the final rename stays on one file system.
-  // Creating it here also proves the folder writable: PLplot itself ends the process when it
-  // cannot open its output file.
-  const auto folder = png.has_parent_path() ? png.parent_path() : std::filesystem::path(".");
-  static std::atomic<unsigned> counter{0};
-  for (int attempt = 0; temporary_.empty(); ++attempt) {
-    const auto candidate = folder / (".nibrig-figure-" + std::to_string(getpid()) + "-" +
-                                     std::to_string(counter++) + ".tmp");
-    // O_EXCL: never reuse a file someone else made; 0666 lets the umask decide, as for any file.
-    const int fd = open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) {
-      close(fd);
-      temporary_ = candidate;
-    } else if (errno != EEXIST || attempt > 100) {
-      throw std::runtime_error(figure(name_) + ": cannot write " + png.string() +
-                               ": cannot create a file in " + folder.string() + ": " +
-                               std::strerror(errno));
-    }
+  // The temporary file sits beside the target (model/io/atomic_file.hpp: a link is followed, a
+  // device is written as a stream). Creating it here also proves the folder writable: PLplot
+  // itself ends the process when it cannot open its output file.
+  target_ = model::io::output_target(png);
+  const auto candidate = model::io::temporary_beside(target_);
+  // O_EXCL: never reuse a file someone else made; 0666 lets the umask decide, as for any file.
+  const int fd = open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    throw std::runtime_error(figure(name_) + ": cannot write " + png.string() +
+                             ": cannot create " + candidate.string() + ": " + std::strerror(errno));
   }
+  close(fd);
+  temporary_ = candidate;
 
   plgstrm(&previous_stream_);
   plmkstrm(&stream_);
@@ -272,10 +265,11 @@ void PlotPage::commit() {
   if (ec || bytes == 0) {
     throw std::runtime_error(figure(name_) + ": PLplot wrote nothing to " + temporary_.string());
   }
-  std::filesystem::rename(temporary_, png_, ec);
-  if (ec) {
-    throw std::runtime_error(figure(name_) + ": cannot write " + png_.string() + ": " +
-                             ec.message());
+  try {
+    model::io::commit_output(temporary_, target_);
+  } catch (const std::exception& e) {
+    committed_ = true;  // commit_output removed the temporary
+    throw std::runtime_error(figure(name_) + ": cannot write " + png_.string() + ": " + e.what());
   }
   committed_ = true;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/io/atomic_file.hpp"
 #include "ui/report/colour_maps.hpp"
 
 namespace nibrig::ui::report::detail {
@@ -57,6 +58,7 @@ class PlotPage {
   std::unique_lock<std::mutex> lock_;
   std::string name_;
   std::filesystem::path png_;
+  model::io::OutputTarget target_;
   std::filesystem::path temporary_;
   int width_, height_;
   int stream_ = -1;
