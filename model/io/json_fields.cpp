@@ -4,7 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <sstream>
+#include <set>
+#include <vector>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
@@ -34,6 +35,64 @@ std::string describe(const nlohmann::json& value) {
   }
 }
 
+// JSON lets a member name repeat, and nlohmann::json keeps the last: a session with
+// "tool":"vero2","tool":"cryon" was measured as cryon. The parser's callback sees every key with
+// its depth; this keeps the keys of each open object and the path to it, for the message.
+class DuplicateKeys {
+ public:
+  explicit DuplicateKeys(const std::filesystem::path& file) : file_(file) {}
+
+  bool operator()(int, nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        open_.push_back({event == Event::object_start, {}, {}, 0, child_path()});
+        break;
+      case Event::key: {
+        Container& object = open_.back();
+        object.last_key = parsed.get<std::string>();
+        if (!object.keys.insert(object.last_key).second)
+          throw FormatError(file_, place(member_path(object.path, object.last_key)),
+                            "the key " + in_quotes(object.last_key) +
+                                " appears twice in one object; each member may be named once");
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        open_.pop_back();
+        counted();
+        break;
+      case Event::value:
+        counted();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Container {
+    bool object;
+    std::set<std::string> keys;
+    std::string last_key;
+    std::size_t elements;
+    std::string path;
+  };
+
+  std::string child_path() const {
+    if (open_.empty()) return "";
+    const Container& parent = open_.back();
+    return parent.object ? member_path(parent.path, parent.last_key)
+                         : element_path(parent.path, parent.elements);
+  }
+  void counted() {
+    if (!open_.empty() && !open_.back().object) ++open_.back().elements;
+  }
+
+  const std::filesystem::path& file_;
+  std::vector<Container> open_;
+};
+
 }  // namespace
 
 nlohmann::json parse_file(const std::filesystem::path& file) {
@@ -43,15 +102,22 @@ nlohmann::json parse_file(const std::filesystem::path& file) {
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw FormatError(file, "", "cannot open for reading");
-  std::ostringstream content;
-  content << in.rdbuf();
-  const std::string text = content.str();
+  // Read up to a bound, so that /dev/zero or a runaway file is refused instead of filling memory.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxJsonBytes)
+      throw FormatError(file, "", "larger than " + std::to_string(kMaxJsonBytes >> 20) +
+                                      " MiB: no JSON file of nibrig's is near that size (the "
+                                      "bundled catalog is 1.3 MB); is this the right file?");
+  }
   if (std::all_of(text.begin(), text.end(),
                   [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) {
     throw FormatError(file, "", "empty file: expected a JSON object");
   }
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, DuplicateKeys(file));
   } catch (const nlohmann::json::parse_error& error) {
     const std::size_t byte = std::min<std::size_t>(error.byte, text.size());
     const std::size_t line =

@@ -10,7 +10,9 @@
 
 namespace nibrig::model::io::json_fields {
 
-// Parses a whole file; syntax errors name the line. An empty file is an error.
+// Parses a whole file; syntax errors name the line. An empty file, a file larger than
+// kMaxJsonBytes and a key that appears twice in one object are errors.
+inline constexpr std::size_t kMaxJsonBytes = std::size_t{256} << 20;
 nlohmann::json parse_file(const std::filesystem::path& file);
 
 // "parent.key" and "parent[i]"; an empty parent gives "key".
