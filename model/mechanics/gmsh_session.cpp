@@ -73,11 +73,7 @@ void generate_quadratic_tets(double max_size, double min_size) {
   gmsh::option::setNumber("Mesh.ElementOrder", 2);
   gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
   gmsh::option::setNumber("Mesh.Optimize", 1);
-  try {
-    gmsh::model::mesh::generate(3);
-  } catch (const std::string& message) {  // some Gmsh 4.8 failures throw a bare string
-    throw std::runtime_error("Gmsh: " + message);
-  }
+  guard_gmsh("meshing", [] { gmsh::model::mesh::generate(3); });
   // Moving edge nodes onto a curved surface can fold a small element near a tip (seen on the 2 mm
   // tip stylus at 3 mm elements); Debian's Gmsh 4.8 has no working high-order optimiser to untangle
   // it, so tet_mesh_from_gmsh straightens such elements instead (mesh_repair.hpp).

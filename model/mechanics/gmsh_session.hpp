@@ -4,7 +4,9 @@
 // TetMesh.
 #pragma once
 
+#include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,25 @@ class GmshSession {
  private:
   std::unique_lock<std::mutex> lock_;
 };
+
+// Runs `body`, which calls into Gmsh, and turns what Gmsh throws that is not a std::exception into
+// std::runtime_error("<what>: Gmsh: ..."): Gmsh 4.8 throws a bare std::string from OpenCASCADE
+// (addCylinder with a body_length of 1e3 ended the process in std::terminate). Every use of Gmsh
+// goes through it.
+template <class Body>
+auto guard_gmsh(const std::string& what, Body&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const std::exception&) {
+    throw;
+  } catch (const std::string& message) {
+    throw std::runtime_error(what + ": Gmsh: " + message);
+  } catch (const char* message) {
+    throw std::runtime_error(what + ": Gmsh: " + std::string(message != nullptr ? message : ""));
+  } catch (...) {
+    throw std::runtime_error(what + ": Gmsh failed with an error that is not a message");
+  }
+}
 
 // Sets the element size (m) and second order, and meshes the current model in 3-D. Curved
 // boundaries get their edge nodes on the true surface (isoparametric elements).

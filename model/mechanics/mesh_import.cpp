@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "model/mechanics/gmsh_session.hpp"
+#include "model/mechanics/shape_builders.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -86,13 +87,15 @@ void volume_from_stl_surface() {
   gmsh::model::geo::synchronize();
 }
 
+TetMesh import_checked_file(const std::filesystem::path& file, const MeshFileOptions& options,
+                            bool stl, bool step, bool msh);
+
 }  // namespace
 
 TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOptions& options) {
   if (!(std::isfinite(options.unit_scale) && options.unit_scale > 0))
     throw std::invalid_argument("unit scale must be positive (metres per file unit)");
-  if (!(std::isfinite(options.mesh_size) && options.mesh_size > 0))
-    throw std::invalid_argument("mesh size must be a positive length in metres");
+  validate_mesh_size(options.mesh_size);
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error)) throw file_error(file, "no such file");
   const std::string ext = lower_extension(file);
@@ -102,6 +105,14 @@ TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOption
     throw file_error(
         file, "unknown mesh format '" + ext + "' (expected .stl, .step, .stp, .brep or .msh)");
 
+  return guard_gmsh(file.string(),
+                    [&] { return import_checked_file(file, options, stl, step, msh); });
+}
+
+namespace {
+
+TetMesh import_checked_file(const std::filesystem::path& file, const MeshFileOptions& options,
+                            bool stl, bool step, bool msh) {
   GmshSession session("imported");
   const double size_in_file_units = options.mesh_size / options.unit_scale;
   if (step) {
@@ -129,5 +140,7 @@ TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOption
   mesh.nodes *= options.unit_scale;
   return mesh;
 }
+
+}  // namespace
 
 }  // namespace nibrig::model::mechanics

@@ -19,15 +19,39 @@ void require(bool ok, const std::string& shape, const std::string& field, const 
   if (!ok) throw std::invalid_argument(shape + " " + field + ": " + why);
 }
 
+// Every length of a shape lies between these: a printer resolves no finer than about 16 µm, and
+// no stylus or test bar is a metre long (the CLI's --bar has the same bound). Beyond them Gmsh's
+// geometry kernel throws or runs for minutes.
+constexpr double kShortestLength = 1e-5;  // m
+constexpr double kLongestLength = 1.0;    // m
+
 void require_positive(double value, const std::string& shape, const std::string& field) {
   std::ostringstream got;
-  got << "must be a positive length in metres, got " << value;
-  require(std::isfinite(value) && value > 0, shape, field, got.str());
+  got << "must be a length between " << kShortestLength << " and " << kLongestLength
+      << " m, got " << value;
+  require(std::isfinite(value) && value >= kShortestLength && value <= kLongestLength, shape,
+          field, got.str());
 }
 
-void require_mesh_size(double mesh_size) {
-  if (!(std::isfinite(mesh_size) && mesh_size > 0))
-    throw std::invalid_argument("mesh size must be a positive length in metres");
+// The mesh is bounded by what the FEM solves in memory: about six tetrahedra fill an element-sized
+// cube, and beyond two million of them (some nine million unknowns) the factorisation would not
+// fit. `box_volume` is the shape's bounding box (m^3).
+void require_mesh_size(double mesh_size, double box_volume, const std::string& shape) {
+  std::ostringstream why;
+  if (!(std::isfinite(mesh_size) && mesh_size >= kShortestLength && mesh_size <= kLongestLength)) {
+    why << "mesh size must be a length between " << kShortestLength << " and " << kLongestLength
+        << " m, got " << mesh_size;
+    throw std::invalid_argument(why.str());
+  }
+  constexpr double kMostElements = 2e6;
+  const double elements = 6 * box_volume / (mesh_size * mesh_size * mesh_size);
+  if (elements > kMostElements) {
+    why << "mesh size " << mesh_size << " m would cut the " << shape << " into about "
+        << elements << " elements, more than the " << kMostElements
+        << " the FEM solves in memory; choose at least "
+        << std::cbrt(6 * box_volume / kMostElements) << " m";
+    throw std::invalid_argument(why.str());
+  }
 }
 
 int single_volume(const gmsh::vectorpair& out, const std::string& what) {
@@ -85,6 +109,14 @@ void name_region(const std::string& name, const std::vector<int>& volumes) {
 
 }  // namespace
 
+void validate_mesh_size(double mesh_size) { require_mesh_size(mesh_size, 0.0, "shape"); }
+void validate_mesh_size(const BarGeometry& bar, double mesh_size) {
+  require_mesh_size(mesh_size, bar.length * bar.width * bar.thickness, "bar");
+}
+void validate_mesh_size(const StylusGeometry& s, double mesh_size) {
+  require_mesh_size(mesh_size, s.overall_length() * s.body_diameter * s.body_diameter, "stylus");
+}
+
 void validate(const BarGeometry& bar) {
   const std::string shape = "bar";
   require_positive(bar.length, shape, "length");
@@ -110,9 +142,9 @@ void validate(const BarGeometry& bar) {
   }
 }
 
-TetMesh mesh_bar(const BarGeometry& bar, double mesh_size) {
-  validate(bar);
-  require_mesh_size(mesh_size);
+namespace {
+
+TetMesh mesh_valid_bar(const BarGeometry& bar, double mesh_size) {
   const double L = bar.free_length(), w = bar.width, t = bar.thickness, r = bar.end_radius;
   GmshSession session("bar");
   namespace occ = gmsh::model::occ;
@@ -154,6 +186,15 @@ TetMesh mesh_bar(const BarGeometry& bar, double mesh_size) {
   return mesh;
 }
 
+}  // namespace
+
+TetMesh mesh_bar(const BarGeometry& bar, double mesh_size) {
+  validate(bar);
+  validate_mesh_size(bar, mesh_size);
+  return guard_gmsh("meshing the bar", [&] { return mesh_valid_bar(bar, mesh_size); });
+}
+
+
 void validate(const StylusGeometry& s) {
   const std::string shape = "stylus";
   require_positive(s.body_length, shape, "body length");
@@ -173,9 +214,9 @@ void validate(const StylusGeometry& s) {
           "must end before the grip");
 }
 
-TetMesh mesh_stylus(const StylusGeometry& s, double mesh_size) {
-  validate(s);
-  require_mesh_size(mesh_size);
+namespace {
+
+TetMesh mesh_valid_stylus(const StylusGeometry& s, double mesh_size) {
   GmshSession session("stylus");
   namespace occ = gmsh::model::occ;
   const double R = s.body_diameter / 2, r = s.tip_diameter / 2;
@@ -200,6 +241,15 @@ TetMesh mesh_stylus(const StylusGeometry& s, double mesh_size) {
   mesh.node_sets["clamp"] = nodes_in_box(mesh, {-1, -1, -1}, {s.grip_length, 1, 1});
   return mesh;
 }
+
+}  // namespace
+
+TetMesh mesh_stylus(const StylusGeometry& s, double mesh_size) {
+  validate(s);
+  validate_mesh_size(s, mesh_size);
+  return guard_gmsh("meshing the stylus", [&] { return mesh_valid_stylus(s, mesh_size); });
+}
+
 
 std::vector<int> nodes_in_box(const TetMesh& mesh, const Eigen::Vector3d& lo,
                               const Eigen::Vector3d& hi) {

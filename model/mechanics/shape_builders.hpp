@@ -50,6 +50,12 @@ struct StylusGeometry {
 void validate(const StylusGeometry& stylus);
 TetMesh mesh_stylus(const StylusGeometry& stylus, double mesh_size);
 
+// Throws std::invalid_argument when `mesh_size` is not a length in [1e-5, 1] m, or would cut the
+// shape into more elements than the FEM solves in memory (the message gives the finest that fits).
+void validate_mesh_size(double mesh_size);  // a shape not known yet: the bounds alone
+void validate_mesh_size(const BarGeometry& bar, double mesh_size);
+void validate_mesh_size(const StylusGeometry& stylus, double mesh_size);
+
 // Every node inside the axis-aligned box [lo, hi] (inclusive, with a tolerance of 1e-9 m), sorted.
 std::vector<int> nodes_in_box(const TetMesh& mesh, const Eigen::Vector3d& lo,
                               const Eigen::Vector3d& hi);

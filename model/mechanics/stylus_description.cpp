@@ -229,8 +229,18 @@ Design read_design(const std::filesystem::path& file, const MaterialTable& mater
   design.sensor = read_probe(root, "sensor", "axis", sensor, file);
   if (root.contains("mesh_size")) {
     design.mesh_size = jf::number_member(root, "mesh_size", file, "");
-    if (!(design.mesh_size > 0))
-      throw io::FormatError(file, jf::place("mesh_size"), "expected a positive length in metres");
+  }
+  try {
+    std::visit(
+        [&](const auto& shape) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, MeshFileShape>)
+            validate_mesh_size(design.mesh_size);
+          else
+            validate_mesh_size(shape, design.mesh_size);
+        },
+        design.shape);
+  } catch (const std::invalid_argument& e) {
+    throw io::FormatError(file, jf::place("mesh_size"), e.what());
   }
   if (root.contains("modes"))
     design.modes = static_cast<int>(jf::as_integer(root.at("modes"), file, "modes", 1, 1000));

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "model/io/format_error.hpp"
+#include "model/mechanics/gmsh_session.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::mechanics {
@@ -90,6 +91,49 @@ TEST(Design, BadDesignsNameTheFieldAndWhatWasExpected) {
   fails_with("file.json",
              R"("shape": {"kind": "file", "path": "nib.stl"}, "materials": {"body": "steel"})",
              "tip", "must say where its tip and sensor are");
+}
+
+// The issue's trial: a body_length of 1e3 (up to 1e300) ended in std::terminate inside Gmsh, 5 m
+// took 1.7 GB, and a mesh_size of 1e-300 never finished. Each is refused while the file is read,
+// naming the file and the field, before Gmsh is reached.
+TEST(Design, SizesNoStylusCanHaveAreRefusedWhileReading) {
+  const auto& materials = bundled_materials();
+  struct Case {
+    const char* name;
+    const char* shape;
+    const char* mesh_size;  // nullptr: the default
+    const char* field;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"km.json", R"("kind": "stylus", "body_length": 1e3)", nullptr, "shape", "body length"},
+      {"huge.json", R"("kind": "stylus", "body_length": 1e300)", nullptr, "shape", "body length"},
+      {"five_m.json", R"("kind": "stylus", "body_length": 5)", nullptr, "shape", "body length"},
+      {"thin.json", R"("kind": "stylus", "tip_diameter": 1e-300)", nullptr, "shape", "tip diameter"},
+      {"wide_bar.json", R"("kind": "bar", "width": 2)", nullptr, "shape", "width"},
+      {"fine.json", R"("kind": "stylus")", "1e-300", "mesh_size", "between"},
+      {"denormal.json", R"("kind": "stylus")", "1e-320", "mesh_size", "between"},
+      {"coarse.json", R"("kind": "stylus")", "1e3", "mesh_size", "between"},
+      {"too_many.json", R"("kind": "stylus")", "0.0001", "mesh_size", "elements"},
+  };
+  for (const Case& c : cases) {
+    std::string body = std::string(R"("shape": {)") + c.shape + R"(}, "materials": {"body": "steel"})";
+    if (c.mesh_size != nullptr) body += std::string(R"(, "mesh_size": )") + c.mesh_size;
+    EXPECT_THAT([&] { read_design(write_design(c.name, body), materials); },
+                ::testing::ThrowsMessage<io::FormatError>(
+                    AllOf(HasSubstr(c.name), HasSubstr(c.field), HasSubstr(c.expected))))
+        << c.name;
+  }
+}
+
+// Whatever Gmsh throws becomes our error naming what was being done: Gmsh 4.8 throws bare strings.
+TEST(Design, WhatGmshThrowsBecomesAnErrorNamingTheStep) {
+  EXPECT_THAT([] { guard_gmsh("meshing the stylus", []() -> int { throw std::string("boom"); }); },
+              ::testing::ThrowsMessage<std::runtime_error>(
+                  ::testing::StrEq("meshing the stylus: Gmsh: boom")));
+  EXPECT_THAT([] { guard_gmsh("reading", []() -> int { throw 42; }); },
+              ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("reading: Gmsh failed")));
+  EXPECT_EQ(guard_gmsh("adding", [] { return 7; }), 7);
 }
 
 TEST(Design, AnInlineBarMeshesAtItsThicknessButNoFinerThanAHundredthOfItsLength) {
