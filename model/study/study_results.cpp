@@ -33,18 +33,49 @@ StudyData read_study(const std::filesystem::path& folder) {
   for (const auto& s : study.definition.stimuli) names.push_back(s.name);
   const std::filesystem::path participants = folder / kParticipantsFolder;
   if (!std::filesystem::is_directory(participants)) return study;
+  // Every participant folder on disk is counted, or named in a warning that says why not: a
+  // report that drops 40 answers without a word, or merges two people under one ID, misleads.
   std::vector<std::filesystem::path> folders;
   for (const auto& entry : std::filesystem::directory_iterator(participants))
-    if (entry.is_directory() && std::filesystem::exists(entry.path() / kParticipantFile))
-      folders.push_back(entry.path());
+    if (entry.is_directory()) folders.push_back(entry.path());  // beside them: their .lock files
   std::sort(folders.begin(), folders.end());
+  const auto not_counted = [&](const std::filesystem::path& f, const std::string& why) {
+    study.warnings.push_back(f.string() + ": " + why + "; not counted");
+  };
   for (const auto& f : folders) {
+    const std::string id = f.filename().string();
+    if (!std::filesystem::exists(f / kParticipantFile)) {
+      std::string why = std::string("no ") + kParticipantFile + " (whose seed orders the answers)";
+      if (std::filesystem::exists(f / kResponsesFile)) {
+        std::size_t answers = 0;
+        try {
+          answers = read_response_file(f / kResponsesFile, names).responses.size();
+        } catch (const io::FormatError&) {
+        }
+        why += ", though " + std::string(kResponsesFile) + " holds " + std::to_string(answers) +
+               " answers";
+      }
+      not_counted(f, why);
+      continue;
+    }
     ParticipantData p;
     p.record = read_participant_file(f / kParticipantFile);
+    if (p.record.id != id) {
+      not_counted(f, std::string(kParticipantFile) + " names participant '" + p.record.id +
+                         "', not the folder's '" + id + "'");
+      continue;
+    }
     if (std::filesystem::exists(f / kResponsesFile)) {
       ResponseFile file = read_response_file(f / kResponsesFile, names);
       p.responses = std::move(file.responses);
       study.warnings.insert(study.warnings.end(), file.warnings.begin(), file.warnings.end());
+    }
+    const auto main = std::count_if(p.responses.begin(), p.responses.end(),
+                                    [](const LoggedResponse& r) { return !r.practice; });
+    if (main == 0) {
+      not_counted(f, "no answer to a main trial yet (" + std::to_string(p.responses.size()) +
+                         " practice)");
+      continue;
     }
     study.participants.push_back(std::move(p));
   }

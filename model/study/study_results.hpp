@@ -21,7 +21,7 @@ struct StudyData {
   std::filesystem::path folder;
   StudyDefinition definition;
   std::vector<ParticipantData> participants;  // by ID
-  std::vector<std::string> warnings;          // cut-off lines dropped
+  std::vector<std::string> warnings;  // cut-off lines dropped; participants not counted, and why
 };
 
 // Throws io::FormatError naming the file that is missing or malformed.

@@ -73,7 +73,9 @@ void check_session(const SessionSettings& s) {
 
 StudySession::StudySession(const SessionSettings& settings, Presenter& presenter)
     : settings_(settings), presenter_(presenter) {
-  check_session(settings_);
+  check_session(settings_);  // a clear refusal first, when there is no study or the ID is taken
+  lock_ = std::make_unique<ParticipantLock>(settings_.study, settings_.participant);
+  check_session(settings_);  // again, now that no other session can change the participant
   definition_ = read_study_file(settings_.study / kStudyFile);
   names_ = names_of(definition_);
   const std::filesystem::path folder = participant_folder(settings_.study, settings_.participant);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "model/study/participant_lock.hpp"
 #include "model/study/response_log.hpp"
 #include "model/study/study_definition.hpp"
 #include "model/study/trial_sequence.hpp"
@@ -142,6 +143,7 @@ class StudySession {
 
   SessionSettings settings_;
   Presenter& presenter_;
+  std::unique_ptr<ParticipantLock> lock_;  // held for the session's whole life
   StudyDefinition definition_;
   std::vector<std::string> names_;
   StudyTexts texts_;

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 
@@ -169,6 +170,64 @@ TEST(StudySession, ATakenIdAsksForResumeOrANewIdBeforeAnythingStarts) {
   nobody.resume = true;
   EXPECT_THROW(run_session(nobody, nothing, q), std::invalid_argument);
   EXPECT_TRUE(q.prompts.empty());
+}
+
+// Two sessions of one participant at once both appended the next trials (the 25
+// duplicates): the second is refused, naming the one that runs, and runs once that one ended.
+TEST(StudySession, ASecondSessionOfAParticipantIsRefusedNamingTheFirst) {
+  const auto study = test::make_study(nibrig::test::scratch_dir("session_locked"), small_study());
+  NothingPresented nothing;
+  for (const bool resume : {false, true}) {
+    SCOPED_TRACE(resume ? "resumed" : "new");
+    SessionSettings s = settings_for(study, "P01");
+    s.resume = resume;
+    StudySession first(s, nothing);
+    try {
+      StudySession second(s, nothing);
+      ADD_FAILURE() << "two sessions of P01 at once";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("pid " + std::to_string(::getpid())), std::string::npos)
+          << e.what();
+    }
+    first.begin();  // the new participant's record is written: the next round resumes it
+  }
+  SessionSettings s = settings_for(study, "P01");
+  s.resume = true;
+  EXPECT_NO_THROW((StudySession{s, nothing}));  // once the other session ended
+}
+
+// Every participant folder on disk is counted or named in a warning saying why not: the issue's
+// report dropped 40 answers without a word, merged two people under one ID, and failed on a
+// participant killed before the first answer.
+TEST(StudySession, TheReportCountsEveryParticipantOrSaysWhyNot) {
+  const auto study = test::make_study(nibrig::test::scratch_dir("session_counted"), small_study());
+  NothingPresented nothing;
+  for (const char* id : {"P01", "P02", "P03"}) {
+    test::StoppingParticipant p(session_truth(7), 1, 30);
+    run_session(settings_for(study, id), nothing, p);
+  }
+  test::StoppingParticipant killed(session_truth(7), 1, 1);
+  run_session(settings_for(study, "P04"), nothing, killed);
+  std::filesystem::remove(participant_folder(study, "P02") / kParticipantFile);
+  ParticipantRecord renamed = read_participant_file(participant_folder(study, "P03") / kParticipantFile);
+  renamed.id = "P01";
+  write_participant_file(participant_folder(study, "P03") / kParticipantFile, renamed);
+
+  const StudyData data = read_study(study);
+  ASSERT_EQ(data.participants.size(), 1u);
+  EXPECT_EQ(data.participants[0].record.id, "P01");
+  struct Expected {
+    const char* folder;
+    const char* why;
+  };
+  for (const Expected& e : {Expected{"P02", "answers"}, Expected{"P03", "names participant 'P01'"},
+                            Expected{"P04", "no answer to a main trial"}}) {
+    const auto named = std::find_if(data.warnings.begin(), data.warnings.end(), [&](const auto& w) {
+      return w.find(participant_folder(study, e.folder).string()) != std::string::npos;
+    });
+    ASSERT_NE(named, data.warnings.end()) << e.folder << " is neither counted nor named";
+    EXPECT_NE(named->find(e.why), std::string::npos) << *named;
+  }
 }
 
 TEST(StudySession, DecliningTheConsentRecordsNothing) {
