@@ -79,7 +79,12 @@ CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const Captu
   model::io::SessionWriter writer(options.folder, session_info_for(d, profile, options));
   model::io::CaptureRecord record = model::io::CaptureRecord{};
   record.rig = d.name;
-  rig.start(profile);
+  try {
+    rig.start(profile);
+  } catch (...) {
+    writer.discard();  // refused before anything was recorded: nothing is left behind
+    throw;
+  }
 
   RigData data;
   SlowStreams slow;
@@ -128,8 +133,12 @@ CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const Captu
     }
   } catch (...) {
     // Whatever went wrong, what was recorded stays: the record says why it ended, the folder
-    // stays .partial (readable) and the rig's motor is stopped.
+    // stays .partial (readable) and the rig's motor is stopped. Nothing recorded: nothing stays.
     rig.stop();
+    if (samples == 0) {
+      writer.discard();
+      throw;
+    }
     update_record();
     record.ended_because = "capture failed";
     try {

@@ -87,6 +87,9 @@ class SessionWriter {
   // Closes the streams, records the frame counts in session.json and renames <folder>.partial to
   // <folder> atomically; fails (std::runtime_error) without replacing anything if <folder> exists.
   void finish();
+  // Closes the streams and removes <folder>.partial: for a capture refused before it recorded
+  // anything, which leaves nothing behind. Nothing to do after finish().
+  void discard() noexcept;
 
   const std::filesystem::path& partial_folder() const { return partial_; }
   const std::filesystem::path& folder() const { return folder_; }

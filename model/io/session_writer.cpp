@@ -86,8 +86,8 @@ SessionWriter::SessionWriter(std::filesystem::path folder, SessionInfo info)
     throw std::runtime_error(
         partial_.string() +
         (ec ? ": cannot create the session folder (" + ec.message() + ")"
-            : ": a partial session already exists (an interrupted capture?); read it with "
-              "read_session or remove it"));
+            : ": a partial session already exists (an interrupted capture?); measure it with "
+              "`nibrig measure " + partial_.string() + "` or remove it"));
   }
   try {
     write_file_atomically(partial_ / kSessionJson, description);
@@ -118,6 +118,13 @@ SessionWriter::SessionWriter(std::filesystem::path folder, SessionInfo info)
 }
 
 SessionWriter::~SessionWriter() { close_streams(); }
+
+void SessionWriter::discard() noexcept {
+  if (finished_) return;
+  close_streams();
+  std::error_code ignored;
+  std::filesystem::remove_all(partial_, ignored);
+}
 
 void SessionWriter::close_streams() noexcept {
   for (auto& stream : streams_) {

@@ -86,6 +86,9 @@ int run(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return report_parse_error(app, e);
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "nibrig: interrupted: %s\n", e.what());
+    return kInterruptedExitCode;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "nibrig: error: %s\n", e.what());
     return 1;

@@ -25,6 +25,7 @@
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
 #include "rt/stroke_source.hpp"
+#include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/forcing_options.hpp"
@@ -266,6 +267,9 @@ void capture(const RigOptions& o) {
   if (player) player->report();
   std::fflush(stdout);
   say_wrote(result.folder);
+  if (interrupted.load())
+    throw Interrupted("the capture was stopped; what it recorded is kept in " +
+                      result.folder.string());
 }
 
 void compare(const RigOptions& o) {
@@ -311,6 +315,8 @@ void compare(const RigOptions& o) {
   say_wrote(run.capture.folder);
   say_wrote(json);
   say_wrote(png);
+  if (interrupted.load())
+    throw Interrupted("the capture was stopped; the comparison covers what it recorded");
 }
 
 void devices() {

@@ -80,7 +80,8 @@ TEST(RigCli, CaptureKilledWithSigkillLeavesAReadableSession) {
   EXPECT_EQ(run_cli({"measure", partial.string(), "-o", (dir / "partial.json").string()}), 0);
 }
 
-// Ctrl-C stops the motor and finishes the session with what it holds.
+// Ctrl-C stops the motor and finishes the session with what it holds, and the exit status says it
+// was interrupted (130), as for every other command.
 TEST(RigCli, CaptureInterruptedFinishesItsSession) {
   const auto dir = scratch_dir("rig_cli_interrupted");
   const auto session = dir / "stopped";
@@ -89,7 +90,7 @@ TEST(RigCli, CaptureInterruptedFinishesItsSession) {
                                session.string()});
   ASSERT_TRUE(wait_for_recorded(model::io::partial_folder_of(session), 1.0));
   ::kill(pid, SIGINT);
-  EXPECT_EQ(wait_cli(pid), 0);
+  EXPECT_EQ(wait_cli(pid), 130);
   const model::io::Session read = model::io::read_session(session);
   EXPECT_TRUE(read.complete);  // a finished folder, not a .partial one
   ASSERT_TRUE(read.info.capture.has_value());
