@@ -232,8 +232,14 @@ StudyReport report_study(const std::filesystem::path& study_folder,
     scored_against = report.fitted->file;
   }
   const SpacePredictor predictor(*scored_against, names);
-  for (const auto& p : report.study.participants)
+  for (const auto& p : report.study.participants) {
+    if (!has_main_answers(p)) {
+      report.warnings.push_back("participant " + p.record.id + ": no answer to a main trial yet (" +
+                                std::to_string(p.responses.size()) + " practice); not counted");
+      continue;
+    }
     report.participants.push_back(summarise(report.study, p, predictor));
+  }
   write_report_json(report, report_folder / kReportStatistics);
   return report;
 }

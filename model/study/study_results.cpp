@@ -70,16 +70,14 @@ StudyData read_study(const std::filesystem::path& folder) {
       p.responses = std::move(file.responses);
       study.warnings.insert(study.warnings.end(), file.warnings.begin(), file.warnings.end());
     }
-    const auto main = std::count_if(p.responses.begin(), p.responses.end(),
-                                    [](const LoggedResponse& r) { return !r.practice; });
-    if (main == 0) {
-      not_counted(f, "no answer to a main trial yet (" + std::to_string(p.responses.size()) +
-                         " practice)");
-      continue;
-    }
     study.participants.push_back(std::move(p));
   }
   return study;
+}
+
+bool has_main_answers(const ParticipantData& participant) {
+  return std::any_of(participant.responses.begin(), participant.responses.end(),
+                     [](const LoggedResponse& r) { return !r.practice; });
 }
 
 JudgmentSelection default_selection(const StudyDefinition& d) {

@@ -24,8 +24,13 @@ struct StudyData {
   std::vector<std::string> warnings;  // cut-off lines dropped; participants not counted, and why
 };
 
-// Throws io::FormatError naming the file that is missing or malformed.
+// Throws io::FormatError naming the file that is missing or malformed. A participant folder
+// without participant.json, or whose record names another ID, is left out with a warning.
 StudyData read_study(const std::filesystem::path& folder);
+
+// False for a participant stopped before the first main trial (practice only, or nothing): the
+// report leaves them out of its statistics, with a warning.
+bool has_main_answers(const ParticipantData& participant);
 
 // paper: for a two-stage plan, stage 2 and the stage-one triplets that were not ties, per
 // participant (Sec. 4.3); every_answer: every main answer. Practice is never included.
