@@ -22,14 +22,17 @@ packages=(
   libusb-1.0-0-dev libumockdev-dev  # the rig's USB controller; its tests emulate the device with umockdev
   libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
   libimgui-dev libglfw3-dev  # the panel: ImGui 1.86 + GLFW + OpenGL 3
-  # Only the test job's: its suites, a window under Xvfb, the sanitizers' runtime, fuzzers
-  libgtest-dev libgmock-dev umockdev xvfb xauth libgl1-mesa-dri libclang-rt-14-dev
+  # A window without a screen or a GPU, for the panel, its tests and its benchmark: Xvfb, Mesa
+  xvfb xauth libgl1-mesa-dri
+  # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
+  libgtest-dev libgmock-dev umockdev libclang-rt-14-dev
   # Only the bench job's: Google Benchmark, the numpy and scipy references beside it
   libbenchmark-dev python3-numpy python3-scipy
 )
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
-test_only=(libgtest-dev libgmock-dev umockdev xvfb xauth libgl1-mesa-dri libclang-rt-14-dev)
+window=(xvfb xauth libgl1-mesa-dri)
+test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev)
 bench_only=(libbenchmark-dev python3-numpy python3-scipy)
 
 # Each stage's wall time on standard error, so that a CI log says where its minutes went.
@@ -108,7 +111,8 @@ run_fuzzers() {  # each fuzzer on a core of its own; fails when any found a cras
 case "$job" in
   test) install_packages "${bench_only[@]}" ;;
   bench) install_packages "${test_only[@]}" ;;
-  *) install_packages "${test_only[@]}" "${bench_only[@]}" ;;
+  panel) install_packages "${test_only[@]}" "${bench_only[@]}" ;;
+  *) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
 esac
 stage_done "installing packages"
 # The tree a user runs (demo, panel, bench, build) and the test job's scenario tree are one: clang,
