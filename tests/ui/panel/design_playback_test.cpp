@@ -87,7 +87,8 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   };
   while (ear.recorded() < 48000) paced_frame();  // a second of the old design
   paced_frame();
-  const auto [min, max] = view.mix_slider_rect();
+  const auto slider = view.mix_slider_rect();  // named: clang 14 lambdas cannot capture bindings
+  const ImVec2 min = slider.first, max = slider.second;
   const float y = 0.5f * (min.y + max.y);
   frame([&](ImGuiIO& io) { io.MousePos = {min.x + 1.0f, y}; });
   // The press at the slider's left end leaves it where it was (0.00 at the slider's precision): the

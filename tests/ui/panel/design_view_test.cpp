@@ -50,7 +50,8 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
 
   // Drag the mix slider from its left end to its right end, as a person would.
   frame();
-  const auto [min, max] = view.mix_slider_rect();
+  const auto slider = view.mix_slider_rect();  // named: clang 14 lambdas cannot capture bindings
+  const ImVec2 min = slider.first, max = slider.second;
   const float y = 0.5f * (min.y + max.y);
   frame([&](ImGuiIO& io) { io.MousePos = {min.x + 2.0f, y}; });
   frame([&](ImGuiIO& io) { io.MousePos = {min.x + 2.0f, y}, io.MouseDown[0] = true; });

@@ -122,7 +122,8 @@ TEST(PanelWindow, TheRigsWaterfallShowsTheAnalysedLevelAtAKnownBin) {
   draw_until(window, panel, [&] { return rig.measured() && rig.measured()->rows_pushed() >= 60; }, dir / "rig.png");
   ASSERT_NE(rig.measured(), nullptr) << rig.error();
   const auto image = nibrig::test::decode_png(dir / "rig.png");
-  const auto [min, max] = rig.waterfall_rect(0);
+  const auto waterfall = rig.waterfall_rect(0);  // named: clang 14 lambdas cannot capture bindings
+  const ImVec2 min = waterfall.first, max = waterfall.second;
   const std::size_t bins = rig.measured()->bins();
   ASSERT_GT(bins, 30u);  // 0-500 Hz at 11.7 Hz
   // Newest row on top, each bin a column, nearest sampling: the pixel row 4 below the frame's edge
