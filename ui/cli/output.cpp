@@ -56,12 +56,12 @@ CLI::Validator file_to_write() {
   return validator;
 }
 
-void refuse_outputs_that_are_inputs(const CLI::App& command) {
+void refuse_outputs_that_are_inputs(CLI::App& command) {
   std::vector<std::pair<const CLI::Option*, std::string>> outputs, inputs;
-  for (const CLI::Option* option : command.get_options()) {
+  for (CLI::Option* option : command.get_options()) {
     bool is_output = false;
     try {
-      const_cast<CLI::Option*>(option)->get_validator(kFileToWrite);
+      option->get_validator(kFileToWrite);
       is_output = true;
     } catch (const CLI::OptionNotFound&) {
     }

@@ -29,7 +29,7 @@ CLI::Validator file_to_write();
 // Refuses (CLI::ValidationError naming the option) an output option of `command` checked by
 // file_to_write() that names the same file as any other option's value or positional argument:
 // `space embed s.json cat.json -o cat.json` would replace the catalog it reads.
-void refuse_outputs_that_are_inputs(const CLI::App& command);
+void refuse_outputs_that_are_inputs(CLI::App& command);
 
 // "arm_vero_1_office.csv.gz" -> "arm_vero_1_office"; a session folder -> its name.
 std::string recording_stem(const std::filesystem::path& recording);
