@@ -1,5 +1,6 @@
 #include "model/io/text_lines.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <zlib.h>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <system_error>
 
+#include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
 
 namespace nibrig::model::io {
@@ -59,7 +61,12 @@ bool TextLineReader::refill() {
     end_ -= begin_;
     begin_ = 0;
   }
-  if (end_ == buffer_.size()) buffer_.resize(buffer_.size() * 2);  // a very long line
+  if (end_ > kMaxTextLineBytes) {
+    throw FormatError(file_, line_place(line_ + 1),
+                      "a line longer than " + byte_bound_text(kMaxTextLineBytes) +
+                          ": expected a text file of short lines; is this a binary file?");
+  }
+  if (end_ == buffer_.size()) buffer_.resize(buffer_.size() * 2);  // a long line
   const auto room = static_cast<unsigned>(buffer_.size() - end_);
   const int got = gzread(gz_, buffer_.data() + end_, room);
   int code = Z_OK;
@@ -80,6 +87,13 @@ bool TextLineReader::refill() {
     return false;
   }
   end_ += static_cast<std::size_t>(got);
+  bytes_read_ += static_cast<std::size_t>(got);
+  if (bytes_read_ > kMaxTextBytes) {
+    throw FormatError(file_, line_place(line_ + 1),
+                      "more than " + byte_bound_text(kMaxTextBytes) +
+                          " of text: no recording, table or judgment file is near that size; is "
+                          "this the right file?");
+  }
   return true;
 }
 
@@ -95,6 +109,7 @@ bool TextLineReader::next(std::string& line) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       ++line_;
       terminated_ = true;
+      check_utf8(line);
       return true;
     }
     if (!pending_error_.empty()) {
@@ -108,10 +123,53 @@ bool TextLineReader::next(std::string& line) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       ++line_;
       terminated_ = false;
+      check_utf8(line);
       return true;
     }
     scan_from = begin_ + scanned;
   }
+}
+
+void TextLineReader::check_utf8(const std::string& line) const {
+  const auto bad = invalid_utf8_at(line);
+  if (!bad) return;
+  throw FormatError(file_, line_place(line_),
+                    "byte " + std::to_string(*bad + 1) + " is not UTF-8 text (" +
+                        in_quotes(std::string_view(line).substr(*bad, 8)) +
+                        "); is this a binary file?");
+}
+
+std::optional<std::size_t> invalid_utf8_at(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    std::size_t length = 0;
+    unsigned char low = 0x80, high = 0xBF;  // the allowed range of the second byte
+    if (c < 0x80) {
+      ++i;
+      continue;
+    } else if (c >= 0xC2 && c <= 0xDF) {
+      length = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+      length = 3;
+      if (c == 0xE0) low = 0xA0;   // no overlong forms
+      if (c == 0xED) high = 0x9F;  // no surrogates
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      length = 4;
+      if (c == 0xF0) low = 0x90;
+      if (c == 0xF4) high = 0x8F;  // nothing past U+10FFFF
+    } else {
+      return i;
+    }
+    if (i + length > text.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      const unsigned char lo = k == 1 ? low : 0x80, hi = k == 1 ? high : 0xBF;
+      if (next < lo || next > hi) return i;
+    }
+    i += length;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::string_view> split_fields(std::string_view line, char sep) {
@@ -130,10 +188,17 @@ std::vector<std::string_view> split_fields(std::string_view line, char sep) {
 
 std::string in_quotes(std::string_view text) {
   constexpr std::size_t kMaxShown = 40;
+  const bool utf8 = !invalid_utf8_at(text);
+  std::size_t shown = std::min(text.size(), kMaxShown);
+  if (utf8) {  // back to the start of a sequence, so that the cut leaves valid UTF-8
+    while (shown < text.size() && shown > 0 &&
+           (static_cast<unsigned char>(text[shown]) & 0xC0) == 0x80)
+      --shown;
+  }
   std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < kMaxShown; ++i) {
+  for (std::size_t i = 0; i < shown; ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
-    if (c < 0x20 || c == 0x7f) {
+    if (c < 0x20 || c == 0x7f || (!utf8 && c >= 0x80)) {
       static const char* hex = "0123456789abcdef";
       out += "\\x";
       out += hex[c >> 4];
@@ -142,7 +207,7 @@ std::string in_quotes(std::string_view text) {
       out += static_cast<char>(c);
     }
   }
-  if (text.size() > kMaxShown) out += "...";
+  if (text.size() > shown) out += "...";
   out += "'";
   return out;
 }
@@ -252,6 +317,14 @@ bool CsvReader::next(std::vector<std::string_view>& fields) {
           "blank line inside the data (expected a row like " + expected_header_ + ")");
     }
     fields = split_fields(row_, sep_);
+    // More fields than the header names is a wrong or damaged file, refused like fewer: a reader
+    // finds its columns by name and would silently take the wrong ones.
+    if (fields.size() > header_.names().size()) {
+      throw FormatError(lines_.file(), line_place(lines_.line_number()),
+                        "expected " + std::to_string(header_.names().size()) + " fields (" +
+                            expected_header_ + "), found " + std::to_string(fields.size()) +
+                            ": more fields than the header names");
+    }
     return true;
   }
   return false;

@@ -16,7 +16,13 @@ namespace nibrig::model::io {
 
 // Reads a file one line at a time; gzip-compressed and plain files alike (zlib reads plain files
 // through unchanged). A truncated or corrupt compressed stream throws a FormatError naming the line
-// at which the data broke off, instead of looking like a short but valid file.
+// at which the data broke off, instead of looking like a short but valid file. A line longer than
+// kMaxTextLineBytes or more than kMaxTextBytes in all (after decompression) is refused, so that
+// /dev/zero or a binary file is an error and not a process that fills memory. So is a line that is
+// not UTF-8: names read from it end up in JSON, which holds UTF-8 only, and in messages.
+inline constexpr std::size_t kMaxTextLineBytes = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxTextBytes = std::size_t{1} << 30;
+
 class TextLineReader {
  public:
   explicit TextLineReader(std::filesystem::path file);
@@ -38,6 +44,7 @@ class TextLineReader {
 
  private:
   bool refill();
+  void check_utf8(const std::string& line) const;
 
   std::filesystem::path file_;
   gzFile_s* gz_ = nullptr;
@@ -48,13 +55,19 @@ class TextLineReader {
   std::string
       pending_error_;  // zlib reported truncation: thrown once the buffered lines are used up
   std::size_t line_ = 0;
+  std::size_t bytes_read_ = 0;
   bool terminated_ = true;
 };
+
+// The offset of the first byte of `text` that does not belong to a well-formed UTF-8 sequence;
+// nullopt when the whole text is UTF-8 (ASCII included).
+std::optional<std::size_t> invalid_utf8_at(std::string_view text);
 
 // Splits a line at every separator; no quoting (none of the formats read here quote fields).
 std::vector<std::string_view> split_fields(std::string_view line, char sep = ',');
 
-// A field as it may appear in an error message: quoted, control bytes escaped, long text shortened.
+// A field as it may appear in an error message: quoted, control bytes and bytes that are not UTF-8
+// escaped as \xNN, long text shortened (never inside a UTF-8 sequence).
 std::string in_quotes(std::string_view text);
 
 // A finite decimal number (surrounding spaces allowed). Rejects empty fields, text, trailing
@@ -109,6 +122,7 @@ class CsvReader {
   const CsvHeader& header() const { return header_; }
 
   // The next data row split into fields (views into an internal buffer, valid until the next call).
+  // A row with more fields than the header line is a FormatError naming the line.
   bool next(std::vector<std::string_view>& fields);
 
   std::size_t line_number() const { return lines_.line_number(); }

@@ -3,9 +3,10 @@
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
+
+#include "model/io/bounded_read.hpp"
+#include "model/io/json_fields.hpp"
 
 namespace nibrig::model::io {
 
@@ -43,10 +44,8 @@ CacheKey& CacheKey::add(std::int64_t value) {
 }
 
 CacheKey& CacheKey::add_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file.string() + ": cannot be read to key a cached result");
-  const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return add(content);
+  return add(read_bounded_file(file, json_fields::kMaxJsonBytes, "an input file of a cached result",
+                               "the bundled catalog is 1.3 MB"));
 }
 
 std::string CacheKey::hex() const {

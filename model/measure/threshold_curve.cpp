@@ -4,10 +4,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 
 #include "model/io/format_error.hpp"
+#include "model/io/text_lines.hpp"
 
 namespace nibrig::model::measure {
 
@@ -61,16 +61,14 @@ ThresholdCurve::ThresholdCurve(std::vector<double> frequencies_hz,
 }
 
 ThresholdCurve ThresholdCurve::load(const std::filesystem::path& csv) {
-  std::ifstream in(csv);
-  if (!in) throw io::FormatError(csv, "", "cannot open file");
+  io::TextLineReader in(csv);
   std::vector<double> frequencies, thresholds;
   std::vector<std::size_t> lines;
   std::string source;
   bool header_seen = false;
   std::string line;
-  std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
+  while (in.next(line)) {
+    const std::size_t number = in.line_number();
     const std::string t = trim(line);
     if (t.empty()) continue;
     if (t[0] == '#') {

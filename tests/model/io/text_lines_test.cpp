@@ -190,5 +190,51 @@ TEST(CsvStem, StripsOnlyCsvEndings) {
   EXPECT_FALSE(csv_stem(".csv").has_value());
 }
 
+// Readers stop at a size no real text file reaches: /dev/zero has no line ending at all, and the
+// issue's trial saw it grow memory by 150 MB/s.
+TEST(TextLineReader, AnEndlessInputIsRefusedAtTheLineBound) {
+  TextLineReader reader("/dev/zero");
+  std::string line;
+  const std::string message = format_error_of([&] { reader.next(line); });
+  expect_message_names(message, {"/dev/zero", "line 1", "longer than 1 MiB"});
+}
+
+TEST(TextLineReader, ALineThatIsNotUtf8IsRefusedWithItsBytesEscaped) {
+  const auto dir = nibrig::test::scratch_dir("text_lines_utf8");
+  // Latin-1 'é' (0xE9) alone, an overlong '/' (C0 AF) and a UTF-16 surrogate (ED A0 80): none is
+  // UTF-8. A real multi-byte name ("Müller", "γ") is.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"caf\xE9", "byte 4"}, {"a\xC0\xAF", "byte 2"}, {"x\xED\xA0\x80", "byte 2"}};
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    const auto file = dir / ("bad" + std::to_string(i) + ".csv");
+    nibrig::test::write_text(file, "name\nM\xC3\xBCller,\xCE\xB3\n" + bad[i].first + "\n");
+    TextLineReader reader(file);
+    std::string line;
+    ASSERT_TRUE(reader.next(line));
+    ASSERT_TRUE(reader.next(line));
+    const std::string message = format_error_of([&] { reader.next(line); });
+    expect_message_names(message, {file.string(), "line 3", bad[i].second, "not UTF-8", "\\x"});
+  }
+}
+
+TEST(InQuotes, EscapesBytesThatAreNotUtf8AndCutsLongTextBetweenCharacters) {
+  EXPECT_EQ(in_quotes("ab\x01\xFF"), "'ab\\x01\\xff'");
+  EXPECT_EQ(in_quotes("M\xC3\xBCller"), "'M\xC3\xBCller'");
+  // 39 ASCII bytes then a 2-byte character: the cut at 40 falls inside it, so it moves before it.
+  const std::string shown = in_quotes(std::string(39, 'a') + "\xC3\xBC" + "tail");
+  EXPECT_EQ(shown, "'" + std::string(39, 'a') + "...'");
+  EXPECT_FALSE(invalid_utf8_at(shown).has_value());
+}
+
+TEST(CsvReader, ARowWithMoreFieldsThanTheHeaderIsRefused) {
+  const auto dir = nibrig::test::scratch_dir("csv_extra_fields");
+  nibrig::test::write_text(dir / "extra.csv", "a,b\n1,2\n3,4,5\n");
+  CsvReader reader(dir / "extra.csv", "'a,b'");
+  std::vector<std::string_view> fields;
+  ASSERT_TRUE(reader.next(fields));
+  const std::string message = format_error_of([&] { reader.next(fields); });
+  expect_message_names(message, {"extra.csv", "line 3", "expected 2 fields", "found 3"});
+}
+
 }  // namespace
 }  // namespace nibrig::model::io
