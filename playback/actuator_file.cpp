@@ -9,6 +9,7 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -143,7 +144,7 @@ void write_actuator_file(const std::filesystem::path& file, const ActuatorCalibr
       {"boost", {{"max_db", c.filter.max_boost_db}, {"limited_hz", limited}}},
       {"group_delay_100hz_s", c.filter.group_delay_100hz_s},
   };
-  model::io::write_file_atomically(file, j.dump(2) + "\n");
+  model::io::write_file_atomically(file, model::io::json_text(j, file));
 }
 
 ActuatorCalibration read_actuator_file(const std::filesystem::path& file) {

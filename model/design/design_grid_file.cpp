@@ -9,6 +9,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/user_cache.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::design {
 
@@ -72,7 +73,7 @@ void write_design_grid(const std::filesystem::path& file, const DesignResponseGr
     throw std::runtime_error(file.parent_path().string() + ": cannot create the cache folder (" +
                              error.message() + ")");
   // dump() writes each double with the digits that read back to the same double.
-  io::write_file_atomically(file, out.dump());
+  io::write_file_atomically(file, io::json_text(out, file, -1));
 }
 
 DesignResponseGrid read_design_grid(const std::filesystem::path& file,

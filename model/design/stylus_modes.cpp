@@ -13,6 +13,7 @@
 #include "model/mechanics/material_table.hpp"
 #include "model/mechanics/stylus_description.hpp"
 #include "model/modal/modal_model_checks.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -46,7 +47,7 @@ void write_stylus_modes(const std::filesystem::path& file, const StylusModes& mo
                               {"input", modes.modal.input},
                               {"output", modes.modal.output}};
   // dump() writes each double with the digits that read back to the same double.
-  io::write_file_atomically(file, out.dump());
+  io::write_file_atomically(file, io::json_text(out, file, -1));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -42,7 +43,10 @@ std::vector<double> increasing_array(const json& root, const std::string& key,
 std::vector<double> curve_at(const json& entry, const std::filesystem::path& file,
                              const std::string& at, std::size_t knots) {
   const std::string path = jf::member_path(at, "log_gain");
-  const auto values = jf::as_number_array(jf::member(entry, "log_gain", file, at), file, path);
+  // A gain of e^±50 (about 1e±22) is far outside anything a curve fitted to the catalog reaches,
+  // and the squares and sums taken of it stay finite.
+  const auto values = jf::as_number_array_in(jf::member(entry, "log_gain", file, at), file, path,
+                                             -50.0, 50.0, "a natural-log gain");
   require(values.size() == knots, file, path,
           "expected one value per knot (" + std::to_string(knots) + "), found " +
               std::to_string(values.size()));
@@ -125,7 +129,7 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
   if (!model.held_out_descriptor_errors.empty())
     out["held_out_descriptor_errors"] = descriptor_errors_json(model);
   out["notes"] = model.notes;
-  io::write_file_atomically(file, out.dump(1) + "\n");
+  io::write_file_atomically(file, io::json_text(out, file, 1));
 }
 
 ForcingModel read_forcing_model(const std::filesystem::path& file) {

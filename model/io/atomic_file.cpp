@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/io/finite_output.hpp"
 namespace nibrig::model::io {
 
 namespace {
@@ -124,6 +125,7 @@ void commit_output(const std::filesystem::path& temporary, const OutputTarget& t
 }
 
 void write_file_atomically(const std::filesystem::path& named, std::string_view content) {
+  if (named.extension() == ".csv") check_csv_finite(content, named);
   const OutputTarget target = output_target(named);
   if (target.stream) {
     write_stream(target.path, content);

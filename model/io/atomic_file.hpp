@@ -30,7 +30,8 @@ std::filesystem::path temporary_beside(const OutputTarget& target);
 void commit_output(const std::filesystem::path& temporary, const OutputTarget& target);
 
 // Throws std::runtime_error naming the file and the system's reason when any step fails; the
-// temporary file is removed then.
+// temporary file is removed then. A ".csv" file's text is first checked by check_csv_finite
+// (finite_output.hpp): every table nibrig writes goes through here.
 void write_file_atomically(const std::filesystem::path& target, std::string_view content);
 
 }  // namespace nibrig::model::io

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "model/io/atomic_file.hpp"
+#include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 
@@ -11,6 +12,14 @@ namespace nibrig::model::io {
 namespace {
 
 using namespace json_fields;
+
+// Physical ranges, so that a damaged or hand-edited catalog is refused before 1e300 turns into
+// inf in an embedding or a forcing fit.
+constexpr double kMaxMu = 10.0;
+constexpr const char* kMuRange = "a friction coefficient: a drawing tool's is below 1";
+constexpr double kMaxAmplitude = 1e4;
+constexpr const char* kAmplitudeRange =
+    "an acceleration amplitude in m/s²: 1000 g, far beyond any stylus";
 
 constexpr const char* kCatalogFormat = "nibrig-catalog";
 constexpr int kCatalogVersion = 1;
@@ -73,13 +82,12 @@ FrictionDescriptor friction_from(const nlohmann::json& json, const std::filesyst
                                  const std::string& path) {
   as_object(json, file, path);
   FrictionDescriptor f;
-  f.mu = number_member(json, "mu", file, path);
-  if (f.mu < 0.0) {
-    throw FormatError(file, place(member_path(path, "mu")),
-                      "expected a friction coefficient >= 0, found " + nlohmann::json(f.mu).dump());
-  }
-  f.mu_ci_low = number_member(json, "mu_ci_low", file, path);
-  f.mu_ci_high = number_member(json, "mu_ci_high", file, path);
+  f.mu = as_number_in(member(json, "mu", file, path), file, member_path(path, "mu"), 0.0, kMaxMu,
+                      kMuRange);
+  f.mu_ci_low = as_number_in(member(json, "mu_ci_low", file, path), file,
+                             member_path(path, "mu_ci_low"), 0.0, kMaxMu, kMuRange);
+  f.mu_ci_high = as_number_in(member(json, "mu_ci_high", file, path), file,
+                              member_path(path, "mu_ci_high"), 0.0, kMaxMu, kMuRange);
   if (f.mu_ci_low > f.mu_ci_high) {
     throw FormatError(file, place(member_path(path, "mu_ci_high")),
                       "expected the interval's upper end >= its lower end (" +
@@ -94,7 +102,8 @@ FrictionDescriptor friction_from(const nlohmann::json& json, const std::filesyst
   require_increasing(speeds_mm, file, speeds_path, "speeds");
   f.speeds_m_s = to_m(speeds_mm);
   const std::string mu_path = member_path(path, "mu_by_speed");
-  f.mu_by_speed = as_number_array(member(json, "mu_by_speed", file, path), file, mu_path);
+  f.mu_by_speed = as_number_array_in(member(json, "mu_by_speed", file, path), file, mu_path, 0.0,
+                                     kMaxMu, kMuRange);
   if (f.mu_by_speed.size() != f.speeds_m_s.size()) {
     throw FormatError(file, place(mu_path),
                       "expected one value per speed (" + std::to_string(f.speeds_m_s.size()) +
@@ -297,17 +306,12 @@ VelocitySpectrum velocity_spectrum_from_json(const nlohmann::json& json,
   }
   for (std::size_t s = 0; s < rows.size(); ++s) {
     const std::string row_path = element_path(a_path, s);
-    std::vector<double> row = as_number_array(rows[s], file, row_path);
+    std::vector<double> row =
+        as_number_array_in(rows[s], file, row_path, 0.0, kMaxAmplitude, kAmplitudeRange);
     if (row.size() != spectrum.frequencies_hz.size()) {
       throw FormatError(file, place(row_path),
                         "expected " + std::to_string(spectrum.frequencies_hz.size()) +
                             " values (one per frequency), found " + std::to_string(row.size()));
-    }
-    for (std::size_t f = 0; f < row.size(); ++f) {
-      if (row[f] < 0.0) {
-        throw FormatError(file, place(element_path(row_path, f)),
-                          "expected an amplitude >= 0, found " + nlohmann::json(row[f]).dump());
-      }
     }
     spectrum.amplitude_m_s2.push_back(std::move(row));
   }
@@ -321,13 +325,7 @@ Catalog read_catalog(const std::filesystem::path& file) {
 void write_catalog(const std::filesystem::path& file, const Catalog& catalog, JsonLayout layout) {
   const nlohmann::json json = catalog_json(catalog);
   catalog_from(json, file);  // the same checks as reading, so a written catalog always reads back
-  std::string text;
-  try {
-    text = json.dump(layout == JsonLayout::indented ? 2 : -1) + "\n";
-  } catch (const nlohmann::json::type_error& error) {
-    throw FormatError(file, "", std::string("text that is not valid UTF-8: ") + error.what());
-  }
-  write_file_atomically(file, text);
+  write_file_atomically(file, json_text(json, file, layout == JsonLayout::indented ? 2 : -1));
 }
 
 }  // namespace nibrig::model::io

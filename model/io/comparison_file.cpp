@@ -8,6 +8,7 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::io {
 namespace {
@@ -82,7 +83,7 @@ void write_comparison_file(const ComparisonFile& c, const std::filesystem::path&
                    {{"rows_analysed", c.rows_analysed},
                     {"rows_without_speed", c.rows_without_speed},
                     {"blocks_dropped", c.blocks_dropped}}}};
-  write_file_atomically(file, j.dump(2) + "\n");
+  write_file_atomically(file, json_text(j, file));
 }
 
 ComparisonFile read_comparison_file(const std::filesystem::path& file) {

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <set>
+#include <sstream>
 #include <vector>
 
+#include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
 
@@ -96,22 +97,8 @@ class DuplicateKeys {
 }  // namespace
 
 nlohmann::json parse_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) {
-    throw FormatError(file, "", "is a folder, expected a JSON file");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw FormatError(file, "", "cannot open for reading");
-  // Read up to a bound, so that /dev/zero or a runaway file is refused instead of filling memory.
-  std::string text;
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxJsonBytes)
-      throw FormatError(file, "", "larger than " + std::to_string(kMaxJsonBytes >> 20) +
-                                      " MiB: no JSON file of nibrig's is near that size (the "
-                                      "bundled catalog is 1.3 MB); is this the right file?");
-  }
+  const std::string text =
+      read_bounded_file(file, kMaxJsonBytes, "a JSON file", "the bundled catalog is 1.3 MB");
   if (std::all_of(text.begin(), text.end(),
                   [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) {
     throw FormatError(file, "", "empty file: expected a JSON object");
@@ -178,7 +165,40 @@ double as_number(const nlohmann::json& value, const std::filesystem::path& file,
   const double number = value.get<double>();
   if (!std::isfinite(number))
     throw FormatError(file, place(path), "expected a finite number, found " + value.dump());
+  if (std::fabs(number) > kMaxJsonMagnitude)
+    throw FormatError(file, place(path),
+                      "found " + value.dump() +
+                          ": beyond ±1e15, where no quantity in nibrig's files is (is the file "
+                          "damaged?)");
   return number;
+}
+
+double as_number_in(const nlohmann::json& value, const std::filesystem::path& file,
+                    const std::string& path, double low, double high, const std::string& why) {
+  // The field's own range first: it says more than the bound every number has.
+  if (!value.is_number())
+    throw FormatError(file, place(path), "expected a number, found " + describe(value));
+  const double number = value.get<double>();
+  if (!std::isfinite(number))
+    throw FormatError(file, place(path), "expected a finite number, found " + value.dump());
+  if (!(number >= low && number <= high)) {
+    std::ostringstream message;
+    message << "found " << value.dump() << ", expected " << low << " to " << high << " (" << why
+            << ")";
+    throw FormatError(file, place(path), message.str());
+  }
+  return number;
+}
+
+std::vector<double> as_number_array_in(const nlohmann::json& value,
+                                       const std::filesystem::path& file, const std::string& path,
+                                       double low, double high, const std::string& why) {
+  as_array(value, file, path);
+  std::vector<double> numbers;
+  numbers.reserve(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i)
+    numbers.push_back(as_number_in(value[i], file, element_path(path, i), low, high, why));
+  return numbers;
 }
 
 long long as_integer(const nlohmann::json& value, const std::filesystem::path& file,

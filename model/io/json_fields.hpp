@@ -35,14 +35,24 @@ const nlohmann::json& member(const nlohmann::json& object, const std::string& ke
 
 std::string as_string(const nlohmann::json& value, const std::filesystem::path& file,
                       const std::string& path);
-// A finite number (JSON has no NaN, but a reader must not trust that).
+// A finite number of magnitude at most kMaxJsonMagnitude (JSON has no NaN, but a reader must not
+// trust that; 1e300 is finite and still overflows the first square taken of it).
+inline constexpr double kMaxJsonMagnitude = 1e15;
 double as_number(const nlohmann::json& value, const std::filesystem::path& file,
                  const std::string& path);
+// A number in [low, high]; `why` says what the range means ("a friction coefficient: no drawing
+// tool's is near 10") and goes into the message.
+double as_number_in(const nlohmann::json& value, const std::filesystem::path& file,
+                    const std::string& path, double low, double high, const std::string& why);
 // A whole number in [min, max].
 long long as_integer(const nlohmann::json& value, const std::filesystem::path& file,
                      const std::string& path, long long min, long long max);
 std::vector<double> as_number_array(const nlohmann::json& value, const std::filesystem::path& file,
                                     const std::string& path);
+// Each element in [low, high], as as_number_in.
+std::vector<double> as_number_array_in(const nlohmann::json& value,
+                                       const std::filesystem::path& file, const std::string& path,
+                                       double low, double high, const std::string& why);
 
 // Shorthands for a required member of a given type.
 // Checks the "format" and "version" members every file of ours opens with: the format name must

@@ -144,7 +144,9 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
     if (std::isfinite(before) && !(best_f < before - 1e-10 * std::abs(before))) break;
   }
   if (!std::isfinite(best_f))
-    throw std::runtime_error("the objective is not finite at start " + std::to_string(start));
+    throw std::runtime_error("the objective is not finite anywhere the fit looked (start " +
+                             std::to_string(start) + ", lambda " + std::to_string(problem.lambda) +
+                             ", " + std::to_string(problem.dims) + " dimensions)");
   x = best_x;
   const double fx = best_f;
   result.coordinates =

@@ -246,8 +246,10 @@ void validate(const SpaceProblem& p) {
     throw std::invalid_argument("a " + std::to_string(p.dims) + "-D space needs at least " +
                                 std::to_string(p.dims + 1) + " stimuli, found " +
                                 std::to_string(p.stimuli));
-  if (!(p.lambda >= 0) || !std::isfinite(p.lambda))
-    throw std::invalid_argument("lambda must be zero or positive");
+  if (!(p.lambda >= 0) || !(p.lambda <= kMaxLambda))
+    throw std::invalid_argument("lambda " + std::to_string(p.lambda) + ": expected 0 to " +
+                                std::to_string(static_cast<long>(kMaxLambda)) +
+                                " (beyond, the descriptor term outweighs every judgment)");
   if (!(p.model.scale > 0) || !std::isfinite(p.model.scale))
     throw std::invalid_argument("the judgment model's scale must be positive");
   if (!(p.model.lapse >= 0 && p.model.lapse < 0.5))

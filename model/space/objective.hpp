@@ -12,6 +12,9 @@
 
 namespace nibrig::model::space {
 
+// The largest weight of the descriptor correlation (Eq. 6's λ) a problem may have.
+inline constexpr double kMaxLambda = 1e4;
+
 struct SpaceProblem {
   std::size_t stimuli = 0;
   std::size_t dims = 0;
@@ -36,7 +39,7 @@ SpaceProblem with_link_prior(SpaceProblem problem);
 
 // Throws std::invalid_argument naming the triplet or field: an index out of range, a reference
 // equal to a candidate, a negative count, descriptors of the wrong shape or with a constant column
-// (no correlation exists), λ < 0, a negative prior_sd, fewer stimuli than dims + 1.
+// (no correlation exists), λ outside [0, kMaxLambda], a negative prior_sd, fewer stimuli than dims + 1.
 void validate(const SpaceProblem& problem);
 
 // Objective at coordinates Q (dims × stimuli, one column per stimulus); when `gradient` is given it

@@ -5,6 +5,8 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/space/objective.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::space {
 
@@ -206,7 +208,7 @@ void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
                         {"levels", s.region_levels},
                         {"regions", regions}};
   }
-  io::write_file_atomically(file, out.dump(2) + "\n");
+  io::write_file_atomically(file, io::json_text(out, file));
 }
 
 SpaceFile read_space_file(const std::filesystem::path& file) {
@@ -216,7 +218,9 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
   SpaceFile s;
   s.model.scale = jf::number_member(root, "scale", file, "");
   if (!(s.model.scale > 0)) throw io::FormatError(file, jf::place("scale"), "expected a positive number");
-  s.lambda = root.contains("lambda") ? jf::number_member(root, "lambda", file, "") : 0.0;
+  s.lambda = root.contains("lambda") ? jf::as_number_in(root["lambda"], file, "lambda", 0.0,
+                                                        kMaxLambda, "the descriptor weight")
+                                     : 0.0;
   const auto& names = jf::as_array(jf::member(root, "stimuli", file, ""), file, "stimuli");
   for (std::size_t i = 0; i < names.size(); ++i)
     s.stimuli.push_back(jf::as_string(names[i], file, jf::element_path("stimuli", i)));
@@ -227,7 +231,9 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
                               "), found " + std::to_string(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string at = jf::element_path("coordinates", i);
-    const auto point = jf::as_number_array(points[i], file, at);
+    const auto point =
+        jf::as_number_array_in(points[i], file, at, -kMaxCoordinate, kMaxCoordinate,
+                               "a coordinate of a perceptual space: fitted ones span a few units");
     if (i == 0)
       s.coordinates.resize(static_cast<Eigen::Index>(point.size()),
                            static_cast<Eigen::Index>(points.size()));
@@ -236,6 +242,13 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
                             "expected " + std::to_string(s.coordinates.rows()) + " coordinates");
     for (std::size_t d = 0; d < point.size(); ++d)
       s.coordinates(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(i)) = point[d];
+  }
+  if (root.contains("dims")) {
+    const long long dims = jf::as_integer(root["dims"], file, "dims", 1, kMaxSpaceDims);
+    if (dims != s.coordinates.rows())
+      throw io::FormatError(file, jf::place("dims"),
+                            "found " + std::to_string(dims) + ", but each point has " +
+                                std::to_string(s.coordinates.rows()) + " coordinates");
   }
   read_judgment_model(root, file, s);
   if (root.contains("provenance") && root["provenance"].contains("judgments"))

@@ -16,6 +16,11 @@
 
 namespace nibrig::model::space {
 
+// The most dimensions a space file may have (as `space fit --dims`), and the largest coordinate
+// magnitude a reader takes: fitted spaces span a few units.
+inline constexpr long long kMaxSpaceDims = 10;
+inline constexpr double kMaxCoordinate = 1e3;
+
 struct SpaceFile {
   std::vector<std::string> stimuli;
   Eigen::MatrixXd coordinates;  // dims × stimuli

@@ -12,6 +12,7 @@
 #include "model/space/objective.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/space_inputs.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::study {
 namespace {
@@ -156,7 +157,7 @@ void write_report_json(const StudyReport& r, const std::filesystem::path& file) 
       j["validation"]["pearson_missing_because"] = v.no_correlation_because;
   }
   j["warnings"] = r.warnings;
-  io::write_file_atomically(file, j.dump(2) + "\n");
+  io::write_file_atomically(file, io::json_text(j, file));
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/json_fields.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -30,9 +33,8 @@ std::filesystem::path panel_settings_file() {
 PanelSettings read_panel_settings(const std::filesystem::path& file) {
   PanelSettings s;
   if (!std::filesystem::exists(file)) return s;
-  std::ifstream in(file);
   try {
-    const json j = json::parse(in);
+    const json j = model::io::json_fields::parse_file(file);
     if (!j.is_object()) throw std::runtime_error("expected an object of settings");
     if (j.contains("view")) {
       const auto v = view_named(j.at("view").get<std::string>());
@@ -73,6 +75,8 @@ PanelSettings read_panel_settings(const std::filesystem::path& file) {
       take(r, "speedup", s.rig.speedup);
       if (s.rig.kind < 0 || s.rig.kind > 2) throw std::runtime_error("rig kind must be 0, 1 or 2");
     }
+  } catch (const model::io::FormatError& e) {
+    throw std::runtime_error(std::string(e.what()) + " (the defaults are used; the file is rewritten on exit)");
   } catch (const std::exception& e) {
     throw std::runtime_error(file.string() + ": " + e.what() + " (the defaults are used; the file is rewritten on exit)");
   }
@@ -100,7 +104,7 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"input_api", s.rig.input_api}, {"input_device", s.rig.input_device},
               {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup}};
   std::filesystem::create_directories(file.parent_path());
-  model::io::write_file_atomically(file, j.dump(2) + "\n");
+  model::io::write_file_atomically(file, model::io::json_text(j, file));
 }
 
 }  // namespace nibrig::ui::panel

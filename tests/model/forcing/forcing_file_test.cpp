@@ -164,5 +164,16 @@ TEST_F(DamagedForcingFile, BadDescriptorErrorsAreNamed) {
                  "expected a number");
 }
 
+// A gain far outside what a fit reaches is refused by the reader, so that `predict` never reports an
+// infinite vibration (the trial: log_gain 1e300 gave "weighted mean vibration inf").
+TEST_F(DamagedForcingFile, AGainNoFitReachesIsNamed) {
+  auto j = good_;
+  j["tip_curves"][0]["log_gain"][1] = 1e300;
+  expect_refused(j, "tip_curves[0].log_gain[1]", "natural-log gain");
+  j = good_;
+  j["tip_curves"][0]["log_gain"][1] = -51.0;
+  expect_refused(j, "tip_curves[0].log_gain[1]", "natural-log gain");
+}
+
 }  // namespace
 }  // namespace nibrig::model::forcing

@@ -135,7 +135,7 @@ TEST(Catalog, SpectrumValidationNamesThePath) {
   json = to_json(spectrum());
   json["amplitude_m_s2"][1][0] = -0.5;
   expect_message_names(format_error_of([&] { velocity_spectrum_from_json(json, "c.json", "v"); }),
-                       {"field 'v.amplitude_m_s2[1][0]'", "expected an amplitude >= 0"});
+                       {"field 'v.amplitude_m_s2[1][0]'", "expected 0 to 10000 (an acceleration amplitude"});
   json = to_json(spectrum());
   json["speeds_mm_s"][1] = "fast";
   expect_message_names(format_error_of([&] { velocity_spectrum_from_json(json, "c.json", "v"); }),
@@ -200,6 +200,23 @@ TEST_F(CatalogMalformed, FieldErrorsNameTheJsonPath) {
                        {"field 'format'", "expected \"nibrig-catalog\""});
   expect_message_names(error_after([](nlohmann::json& j) { j.erase("notes"); }),
                        {"field 'notes'", "missing field"});
+}
+
+// Physical quantities are bounded: the trial gave μ = 1e300 and got inf from `space embed`,
+// and an amplitude of 1e300 made `forcing fit` write a file its own reader refused.
+TEST_F(CatalogMalformed, QuantitiesOutsideTheirPhysicalRangeAreNamed) {
+  expect_message_names(error_after([](nlohmann::json& j) { j["pairings"][0]["friction"]["mu"] = 1e300; }),
+                       {"field 'pairings[0].friction.mu'", "friction coefficient"});
+  expect_message_names(
+      error_after([](nlohmann::json& j) { j["pairings"][0]["friction"]["mu_by_speed"][1] = 12.0; }),
+      {"field 'pairings[0].friction.mu_by_speed[1]'", "friction coefficient"});
+  expect_message_names(
+      error_after([](nlohmann::json& j) { j["pairings"][1]["vibration"]["amplitude_m_s2"][0][1] = 1e300; }),
+      {"field 'pairings[1].vibration.amplitude_m_s2[0][1]'", "acceleration amplitude"});
+  // Any number past 1e15 is refused whatever the field: nothing in these files is that large.
+  expect_message_names(
+      error_after([](nlohmann::json& j) { j["pairings"][0]["vibration"]["weighted_power"] = 1e300; }),
+      {"field 'pairings[0].vibration.weighted_power'", "1e15"});
 }
 
 TEST_F(CatalogMalformed, EmptyFileAndBadSyntax) {

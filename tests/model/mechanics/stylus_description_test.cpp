@@ -107,7 +107,8 @@ TEST(Design, SizesNoStylusCanHaveAreRefusedWhileReading) {
   };
   const Case cases[] = {
       {"km.json", R"("kind": "stylus", "body_length": 1e3)", nullptr, "shape", "body length"},
-      {"huge.json", R"("kind": "stylus", "body_length": 1e300)", nullptr, "shape", "body length"},
+      // Past 1e15 every JSON reader refuses a number before the shape's own bound sees it.
+      {"huge.json", R"("kind": "stylus", "body_length": 1e300)", nullptr, "shape.body_length", "1e15"},
       {"five_m.json", R"("kind": "stylus", "body_length": 5)", nullptr, "shape", "body length"},
       {"thin.json", R"("kind": "stylus", "tip_diameter": 1e-300)", nullptr, "shape", "tip diameter"},
       {"wide_bar.json", R"("kind": "bar", "width": 2)", nullptr, "shape", "width"},

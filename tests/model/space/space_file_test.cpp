@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "model/io/format_error.hpp"
@@ -102,6 +103,38 @@ TEST(SpaceFile, ARegionOfTheWrongShapeIsNamed) {
   } catch (const io::FormatError& e) {
     EXPECT_NE(std::string(e.what()).find("bootstrap.regions[2].covariance"), std::string::npos)
         << e.what();
+  }
+}
+
+// A damaged or hand-edited space is refused where a number means nothing: the trial gave a
+// coordinate of 1e300 and got p_first = nan from `space predict`, and `dims` was never checked.
+TEST(SpaceFile, DimsAndCoordinatesOutsideTheirMeaningAreNamed) {
+  const auto dir = nibrig::test::scratch_dir("space_file_bounds");
+  write_space_file(dir / "space.json", example());
+  std::ifstream in(dir / "space.json");
+  const nlohmann::json good = nlohmann::json::parse(in);
+  const struct {
+    std::function<void(nlohmann::json&)> edit;
+    std::string field;
+  } cases[] = {
+      {[](nlohmann::json& j) { j["coordinates"][1][0] = 1e300; }, "coordinates[1][0]"},
+      {[](nlohmann::json& j) { j["coordinates"][0][1] = -5e3; }, "coordinates[0][1]"},
+      {[](nlohmann::json& j) { j["dims"] = -5; }, "dims"},
+      {[](nlohmann::json& j) { j["dims"] = 2.5; }, "dims"},
+      {[](nlohmann::json& j) { j["dims"] = 1e20; }, "dims"},
+      {[](nlohmann::json& j) { j["dims"] = 3; }, "dims"},  // the points have 2
+      {[](nlohmann::json& j) { j["lambda"] = 1e308; }, "lambda"},
+  };
+  for (const auto& c : cases) {
+    nlohmann::json j = good;
+    c.edit(j);
+    std::ofstream(dir / "bad.json") << j.dump(2);
+    try {
+      read_space_file(dir / "bad.json");
+      ADD_FAILURE() << "accepted a bad " << c.field;
+    } catch (const io::FormatError& e) {
+      EXPECT_NE(std::string(e.what()).find("field '" + c.field + "'"), std::string::npos) << e.what();
+    }
   }
 }
 
