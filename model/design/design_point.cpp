@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "model/io/text_lines.hpp"
+
 namespace nibrig::model::design {
 
 namespace {
@@ -83,7 +85,7 @@ DesignPoint parse_design_point(std::string_view text) {
     if (entry.substr(0, 4) == "tip=") {
       std::string_view value = trimmed(entry.substr(4));
       if (value.size() < 3 || value.substr(value.size() - 2) != "mm")
-        refuse(text, "the tip is written tip=<number>mm, found '" + std::string(entry) + "'");
+        refuse(text, "the tip is written tip=<number>mm, found " + io::in_quotes(entry));
       double mm = 0;
       if (!read_number(value.substr(0, value.size() - 2), mm) || !(mm > 0))
         refuse(text, "the tip diameter must be a positive number of mm, found '" +

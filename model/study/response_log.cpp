@@ -16,6 +16,8 @@
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/text_lines.hpp"
+#include "model/io/utc_time.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::study {
 namespace {
@@ -68,7 +70,7 @@ void write_participant_file(const std::filesystem::path& file, const Participant
   const nlohmann::json j = {{"format", kParticipantFormat}, {"version", kParticipantVersion},
                             {"id", r.id},                   {"seed", std::to_string(r.seed)},
                             {"respondent", r.respondent},   {"created_utc", r.created_utc}};
-  io::write_file_atomically(file, j.dump(2) + "\n");
+  io::write_file_atomically(file, io::json_text(j, file));
 }
 
 ParticipantRecord read_participant_file(const std::filesystem::path& file) {
@@ -87,7 +89,7 @@ ParticipantRecord read_participant_file(const std::filesystem::path& file) {
   }
   if (used == 0 || used != seed.size() || seed.front() == '-')
     throw io::FormatError(file, jf::place("seed"),
-                          "expected a whole number 0-2^64-1 as text, found '" + seed + "'");
+                          "expected a whole number 0-2^64-1 as text, found " + io::in_quotes(seed));
   r.respondent = jf::string_member(j, "respondent", file, "");
   r.created_utc = jf::string_member(j, "created_utc", file, "");
   return r;
@@ -138,7 +140,7 @@ void ResponseLog::append(const LoggedResponse& r) {
 }
 
 ResponseFile read_response_file(const std::filesystem::path& file,
-                                const std::vector<std::string>& stimuli) {
+                                const std::vector<std::string>& stimuli, int last_stage) {
   std::map<std::string, std::size_t> index_of;
   for (std::size_t i = 0; i < stimuli.size(); ++i) index_of[stimuli[i]] = i;
   io::CsvReader reader(file, kResponsesHeader);
@@ -165,16 +167,18 @@ ResponseFile read_response_file(const std::filesystem::path& file,
       throw io::FormatError(file, io::field_place(line, "trial"),
                             "expected trial " + std::to_string(out.responses.size() + 1) +
                                 " (trials are numbered in order from 1), found " +
-                                std::string(f[c_trial]));
+                                io::in_quotes(f[c_trial]));
     r.trial = static_cast<std::size_t>(trial);
     if (f[c_practice] != "0" && f[c_practice] != "1")
       throw io::FormatError(file, io::field_place(line, "practice"),
                             "expected 0 or 1, found " + io::in_quotes(f[c_practice]));
     r.practice = f[c_practice] == "1";
     const long long stage = io::parse_integer(f[c_stage], file, line, "stage");
-    if (stage < 1 || stage > 100000)
+    if (stage < 1 || stage > last_stage)
       throw io::FormatError(file, io::field_place(line, "stage"),
-                            "expected a stage of 1 or more, found " + std::string(f[c_stage]));
+                            "expected a stage from 1 to " + std::to_string(last_stage) +
+                                " (the study's plan has no other), found " +
+                                io::in_quotes(f[c_stage]));
     r.planned.stage = static_cast<int>(stage);
     auto stimulus = [&](std::size_t column, const char* field) {
       const auto it = index_of.find(std::string(f[column]));
@@ -196,12 +200,16 @@ ResponseFile read_response_file(const std::filesystem::path& file,
     r.response_s = io::parse_number(f[c_time], file, line, "response_s");
     if (r.response_s < 0)
       throw io::FormatError(file, io::field_place(line, "response_s"),
-                            "expected a time >= 0 s, found " + std::string(f[c_time]));
+                            "expected a time >= 0 s, found " + io::in_quotes(f[c_time]));
     r.plays = std::string(f[c_plays]);
     if (r.plays.find_first_not_of("RAB") != std::string::npos)
       throw io::FormatError(file, io::field_place(line, "plays"),
                             "expected the letters R, A and B (reference, left, right), found " +
                                 io::in_quotes(f[c_plays]));
+    if (!io::is_utc_iso8601(f[c_utc]))
+      throw io::FormatError(file, io::field_place(line, "answered_utc"),
+                            "expected a UTC time like 2026-11-26T04:01:02Z, found " +
+                                io::in_quotes(f[c_utc]));
     r.answered_utc = std::string(f[c_utc]);
     out.responses.push_back(std::move(r));
   }

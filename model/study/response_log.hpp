@@ -78,8 +78,9 @@ struct ResponseFile {
 
 // Reads a responses file of a study with these stimuli. Throws io::FormatError naming the file,
 // line and field: an unknown stimulus name, a trial number out of sequence, chosen other than
-// left/right, a negative response time, plays with letters other than R, A, B.
+// left/right, a negative response time, plays with letters other than R, A, B, a stage outside
+// [1, last_stage] (trial_sequence.hpp's last_stage), a time stamp now_utc_iso8601 would not write.
 ResponseFile read_response_file(const std::filesystem::path& file,
-                                const std::vector<std::string>& stimuli);
+                                const std::vector<std::string>& stimuli, int last_stage);
 
 }  // namespace nibrig::model::study

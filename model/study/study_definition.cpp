@@ -8,8 +8,11 @@
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
+#include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/text_lines.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::study {
 namespace {
@@ -27,12 +30,14 @@ std::size_t study_count(const json& object, const std::string& key,
       jf::as_integer(jf::member(object, key, file, ""), file, key, 0, kStudyMaxCount));
 }
 
-std::string read_whole_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return {};
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+// A study's instructions and consent texts; a missing one is empty (the bundled text is used).
+constexpr std::size_t kMaxStudyTextBytes = std::size_t{1} << 20;
+
+std::string read_study_text(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return {};
+  return io::read_bounded_file(file, kMaxStudyTextBytes, "a study text",
+                               "the bundled ones are a few KiB");
 }
 
 }  // namespace
@@ -112,7 +117,7 @@ void write_study_file(const std::filesystem::path& file, const StudyDefinition& 
                   {"practice", d.practice},
                   {"break_every", d.break_every},
                   {"dims", d.dims}};
-  io::write_file_atomically(file, j.dump(2) + "\n");
+  io::write_file_atomically(file, io::json_text(j, file));
 }
 
 StudyDefinition read_study_file(const std::filesystem::path& file) {
@@ -132,10 +137,10 @@ StudyDefinition read_study_file(const std::filesystem::path& file) {
   const std::string plan = jf::string_member(j, "plan", file, "");
   if (!parse_mode(mode))
     throw io::FormatError(file, jf::place("mode"),
-                          "expected actuator, rig or validation, found '" + mode + "'");
+                          "expected actuator, rig or validation, found " + io::in_quotes(mode));
   if (!parse_plan(plan))
     throw io::FormatError(file, jf::place("plan"),
-                          "expected two-stage, adaptive or file, found '" + plan + "'");
+                          "expected two-stage, adaptive or file, found " + io::in_quotes(plan));
   d.mode = *parse_mode(mode);
   d.plan = *parse_plan(plan);
   const json& listed = jf::as_array(jf::member(j, "listed_trials", file, ""), file, "listed_trials");
@@ -200,7 +205,7 @@ std::optional<std::string> study_difference(const StudyDefinition& existing,
 }
 
 StudyTexts read_study_texts(const std::filesystem::path& folder) {
-  return {read_whole_text(folder / kInstructionsFile), read_whole_text(folder / kConsentFile)};
+  return {read_study_text(folder / kInstructionsFile), read_study_text(folder / kConsentFile)};
 }
 
 }  // namespace nibrig::model::study

@@ -4,6 +4,7 @@
 
 #include "model/io/format_error.hpp"
 #include "model/space/trial_plan.hpp"
+#include "model/study/trial_sequence.hpp"
 
 namespace nibrig::model::study {
 namespace {
@@ -31,6 +32,7 @@ StudyData read_study(const std::filesystem::path& folder) {
   study.definition = read_study_file(folder / kStudyFile);
   std::vector<std::string> names;
   for (const auto& s : study.definition.stimuli) names.push_back(s.name);
+  const int last = last_stage(study.definition);
   const std::filesystem::path participants = folder / kParticipantsFolder;
   if (!std::filesystem::is_directory(participants)) return study;
   // Every participant folder on disk is counted, or named in a warning that says why not: a
@@ -49,7 +51,7 @@ StudyData read_study(const std::filesystem::path& folder) {
       if (std::filesystem::exists(f / kResponsesFile)) {
         std::size_t answers = 0;
         try {
-          answers = read_response_file(f / kResponsesFile, names).responses.size();
+          answers = read_response_file(f / kResponsesFile, names, last).responses.size();
         } catch (const io::FormatError&) {
         }
         why += ", though " + std::string(kResponsesFile) + " holds " + std::to_string(answers) +
@@ -66,7 +68,7 @@ StudyData read_study(const std::filesystem::path& folder) {
       continue;
     }
     if (std::filesystem::exists(f / kResponsesFile)) {
-      ResponseFile file = read_response_file(f / kResponsesFile, names);
+      ResponseFile file = read_response_file(f / kResponsesFile, names, last);
       p.responses = std::move(file.responses);
       study.warnings.insert(study.warnings.end(), file.warnings.begin(), file.warnings.end());
     }

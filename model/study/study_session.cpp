@@ -87,7 +87,7 @@ StudySession::StudySession(const SessionSettings& settings, Presenter& presenter
                settings_.respondent, io::now_utc_iso8601()};
   sequence_ = std::make_unique<TrialSequence>(definition_, record_.seed, settings_.threads);
   if (settings_.resume && std::filesystem::exists(responses)) {
-    ResponseFile logged = read_response_file(responses, names_);
+    ResponseFile logged = read_response_file(responses, names_, last_stage(definition_));
     result_.warnings = logged.warnings;
     for (const LoggedResponse& r : logged.responses) {
       const auto planned = sequence_->next();

@@ -74,6 +74,25 @@ PlanSizes plan_sizes(const StudyDefinition& d) {
   return sizes;
 }
 
+int last_stage(const StudyDefinition& d) {
+  if (d.mode == StudyMode::validation) return 1;
+  switch (d.plan) {
+    case PlanKind::two_stage: return 2;
+    case PlanKind::adaptive: {
+      const PlanSizes sizes = plan_sizes(d);
+      // Round 1 is the random start; each batch after it is one more round.
+      return 1 + static_cast<int>((sizes.main_trials_at_most + sizes.adaptive_batch - 1) /
+                                  sizes.adaptive_batch);
+    }
+    case PlanKind::file: {
+      int last = 1;
+      for (const auto& t : d.listed_trials) last = std::max(last, t.stage);
+      return last;
+    }
+  }
+  return 1;
+}
+
 TrialSequence::TrialSequence(StudyDefinition definition, std::uint64_t seed, unsigned threads)
     : definition_(std::move(definition)), generator_(seed) {
   validate(definition_);

@@ -31,6 +31,9 @@ struct PlanSizes {
   std::size_t adaptive_initial = 0, adaptive_batch = 0;  // adaptive
 };
 PlanSizes plan_sizes(const StudyDefinition& definition);
+// The highest stage a trial of this study can have (PlannedTrial::trial.stage): 2 for two-stage,
+// the last batch an adaptive budget allows, the highest listed, 1 for validation.
+int last_stage(const StudyDefinition& definition);
 
 class TrialSequence {
  public:

@@ -13,6 +13,7 @@ namespace nibrig::model::study {
 namespace {
 
 const std::vector<std::string> kLogStimuli{"crayon/office", "D1", "pencil/stone"};
+constexpr int kLogLastStage = 2;  // a two-stage study's
 
 LoggedResponse response(std::size_t trial, space::Choice chosen) {
   LoggedResponse r;
@@ -42,7 +43,7 @@ TEST(ResponseLog, WhatIsAppendedReadsBackTheSame) {
     ResponseLog log(file, kLogStimuli);  // reopened: appends after what is there, no 2nd header
     log.append(response(3, space::Choice::left));
   }
-  const ResponseFile read = read_response_file(file, kLogStimuli);
+  const ResponseFile read = read_response_file(file, kLogStimuli, kLogLastStage);
   EXPECT_TRUE(read.warnings.empty());
   ASSERT_EQ(read.responses.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -68,7 +69,7 @@ TEST(ResponseLog, ALineCutOffByACrashIsDroppedWithAWarningAndRemovedBeforeTheNex
   }
   // A process killed in the middle of writing trial 3.
   std::ofstream(file, std::ios::app) << "3,0,1,crayon/office,D1,pen";
-  const ResponseFile read = read_response_file(file, kLogStimuli);
+  const ResponseFile read = read_response_file(file, kLogStimuli, kLogLastStage);
   ASSERT_EQ(read.responses.size(), 2u);
   ASSERT_EQ(read.warnings.size(), 1u);
   EXPECT_NE(read.warnings[0].find("line 4 is cut off"), std::string::npos) << read.warnings[0];
@@ -77,7 +78,7 @@ TEST(ResponseLog, ALineCutOffByACrashIsDroppedWithAWarningAndRemovedBeforeTheNex
     EXPECT_TRUE(log.removed_cut_off_line());
     log.append(response(3, space::Choice::left));
   }
-  const ResponseFile after = read_response_file(file, kLogStimuli);
+  const ResponseFile after = read_response_file(file, kLogStimuli, kLogLastStage);
   EXPECT_TRUE(after.warnings.empty());
   ASSERT_EQ(after.responses.size(), 3u);
   const std::string text = contents(file);
@@ -95,12 +96,23 @@ TEST(ResponseLog, BadLinesAreRefusedNamingTheFileLineAndField) {
       {"1,0,1,crayon/office,D1,pencil/stone,left,-1,RAB,t\n", "field 'response_s'"},
       {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RXB,t\n", "field 'plays'"},
       {"1,2,1,crayon/office,D1,pencil/stone,left,1.0,RAB,t\n", "field 'practice'"},
+      {"1,0,7,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-11-26T04:00:00Z\n",
+       "field 'stage'"},
+      {"1,0,0,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-11-26T04:00:00Z\n",
+       "field 'stage'"},
+      {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RAB,yesterday\n", "field 'answered_utc'"},
+      {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-02-29T04:00:00Z\n",
+       "field 'answered_utc'"},
+      {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-11-26T24:00:00Z\n",
+       "field 'answered_utc'"},
+      {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-11-26T04:00:00Z,extra\n",
+       "expected 10 fields"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto file = dir / ("bad" + std::to_string(i) + ".csv");
     std::ofstream(file) << header << cases[i].first;
     try {
-      read_response_file(file, kLogStimuli);
+      read_response_file(file, kLogStimuli, kLogLastStage);
       ADD_FAILURE() << "accepted " << cases[i].first;
     } catch (const io::FormatError& e) {
       EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
