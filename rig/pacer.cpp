@@ -1,9 +1,23 @@
 #include "rig/pacer.hpp"
 
 #include <algorithm>
+#include <sstream>
+#include <stdexcept>
 #include <thread>
 
 namespace nibrig::rig {
+
+void Pacer::check_speedup(double speedup, const char* who) {
+  if (speedup == 0.0 || (speedup >= kMinSpeedup && speedup <= kMaxSpeedup)) return;
+  std::ostringstream message;
+  message << who << ": speed-up " << speedup << ": expected 0 (as fast as it computes) or "
+          << kMinSpeedup << " to " << kMaxSpeedup << " (1: real time)";
+  throw std::invalid_argument(message.str());
+}
+
+Pacer::Pacer(double speedup, double frame_rate_hz) : speedup_(speedup), frame_rate_(frame_rate_hz) {
+  check_speedup(speedup, "rig pacing");
+}
 
 std::uint64_t Pacer::due_at(std::chrono::steady_clock::time_point when) const {
   const double elapsed = std::chrono::duration<double>(when - started_).count();

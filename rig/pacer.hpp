@@ -10,8 +10,15 @@ namespace nibrig::rig {
 
 class Pacer {
  public:
-  // `frame_rate_hz` > 0, `speedup` >= 0 (checked by the rigs that own one).
-  Pacer(double speedup, double frame_rate_hz) : speedup_(speedup), frame_rate_(frame_rate_hz) {}
+  // A speed-up is 0 (unpaced) or in [kMinSpeedup, kMaxSpeedup]: a hundred times slower than real
+  // time is as slow as anyone watches a rig, and below that a capture would not end in a day.
+  static constexpr double kMinSpeedup = 0.01;
+  static constexpr double kMaxSpeedup = 1e6;
+  // Throws std::invalid_argument "<who>: speed-up X: expected 0 or 0.01 to 1e+06 ...".
+  static void check_speedup(double speedup, const char* who);
+
+  // `frame_rate_hz` > 0; throws for a speed-up check_speedup refuses.
+  Pacer(double speedup, double frame_rate_hz);
 
   void start() { started_ = std::chrono::steady_clock::now(); }
 

@@ -137,7 +137,6 @@ SimulatedRig::SimulatedRig(const SimulatedRigSettings& settings,
   require(positive(s.normal_full_scale_N) && positive(s.tangential_full_scale_N),
           "force full scales must be positive");
   require(positive(s.accelerometer_m_s2_per_unit), "the accelerometer scale must be positive");
-  require(non_negative(s.speedup), "speedup must be >= 0 (0: as fast as possible)");
 
   description_.kind = "simulated";
   description_.tool = tool;

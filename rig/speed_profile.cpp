@@ -34,6 +34,11 @@ SpeedProfile::SpeedProfile(std::string description, std::vector<ProfilePoint> po
       throw std::invalid_argument(point_name(i) + ": time goes backwards (" +
                                   std::to_string(p.time_s) + " s after " +
                                   std::to_string(points_[i - 1].time_s) + " s)");
+    if (p.time_s > kMaxProfileSeconds)
+      throw std::invalid_argument(point_name(i) + ": at " + std::to_string(p.time_s) +
+                                  " s, past the longest profile, " +
+                                  std::to_string(static_cast<long>(kMaxProfileSeconds)) +
+                                  " s (a day)");
     if (i > 1 && p.time_s == points_[i - 2].time_s)
       throw std::invalid_argument(point_name(i) +
                                   ": three points at one instant; a step is two points");
@@ -68,9 +73,17 @@ void check_within_motor(const SpeedProfile& profile, double max_speed_m_s) {
 }
 
 SpeedProfile fit_to_duration(const SpeedProfile& profile, double seconds) {
-  if (!(seconds > 0.0) || !std::isfinite(seconds))
-    throw std::invalid_argument("a profile's length must be a positive number of seconds");
+  if (!(seconds > 0.0) || !(seconds <= kMaxProfileSeconds))
+    throw std::invalid_argument("a profile's length must be more than 0 and at most " +
+                                std::to_string(static_cast<long>(kMaxProfileSeconds)) +
+                                " s (a day), not " + std::to_string(seconds));
   const double period = profile.duration_s();
+  if (period > 0.0 && seconds / period * static_cast<double>(profile.points().size()) >
+                          static_cast<double>(kMaxProfilePoints))
+    throw std::invalid_argument(
+        "repeating a " + std::to_string(period) + " s profile of " +
+        std::to_string(profile.points().size()) + " points for " + std::to_string(seconds) +
+        " s would take more than " + std::to_string(kMaxProfilePoints) + " breakpoints");
   std::vector<ProfilePoint> points;
   if (period <= 0.0) {  // a constant speed
     points = {{0.0, profile.points().front().speed_m_s}, {seconds, profile.points().back().speed_m_s}};

@@ -4,11 +4,18 @@
 // (PROTOCOL.md) and is written into every session, so a capture says what was asked of the motor.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace nibrig::rig {
+
+// A profile lasts at most a day: no capture is longer, and a longer one would fill memory and disk.
+inline constexpr double kMaxProfileSeconds = 86400.0;
+// fit_to_duration repeats a profile into at most this many breakpoints (a day of the paper's steps
+// is about 90 000).
+inline constexpr std::size_t kMaxProfilePoints = 1000000;
 
 struct ProfilePoint {
   double time_s = 0.0;
@@ -18,8 +25,8 @@ struct ProfilePoint {
 class SpeedProfile {
  public:
   // Throws std::invalid_argument naming the point when there is no point, the first time is not 0,
-  // a time goes backwards, more than two points share a time, or a value is not finite or a speed is
-  // negative.
+  // a time goes backwards or passes kMaxProfileSeconds, more than two points share a time, or a
+  // value is not finite or a speed is negative.
   SpeedProfile(std::string description, std::vector<ProfilePoint> points);
 
   const std::string& description() const { return description_; }
@@ -51,6 +58,8 @@ SpeedProfile study_sweep(double seconds);
 SpeedProfile read_speed_profile(const std::filesystem::path& file);
 
 // The same profile stretched or cut to `seconds` (repeating it from the start when longer).
+// Throws std::invalid_argument for `seconds` outside (0, kMaxProfileSeconds] or a repetition of
+// more than kMaxProfilePoints breakpoints.
 SpeedProfile fit_to_duration(const SpeedProfile& profile, double seconds);
 
 }  // namespace nibrig::rig

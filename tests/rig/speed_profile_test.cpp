@@ -86,5 +86,30 @@ TEST(SpeedProfile, FitToDurationRepeatsAndCuts) {
   EXPECT_DOUBLE_EQ(shorter.speed_at(0.5), 0.05);
 }
 
+// Every duration has a bound that means something (a day): the trial asked for 1e308 s,
+// and a profile file's row "1e308,100" with --speedup 0 filled a disk.
+TEST(SpeedProfile, NothingLastsLongerThanADay) {
+  const SpeedProfile ramp("ramp", {{0, 0.0}, {1, 0.1}});
+  EXPECT_NO_THROW(fit_to_duration(ramp, kMaxProfileSeconds));
+  for (const double seconds : {kMaxProfileSeconds * 1.001, 1e308, std::nan(""), 0.0, -1.0})
+    EXPECT_THROW(fit_to_duration(ramp, seconds), std::invalid_argument) << seconds;
+  EXPECT_THROW(SpeedProfile("x", {{0, 0.1}, {1e308, 0.1}}), std::invalid_argument);
+  // A tiny period repeated for a day would be billions of breakpoints.
+  EXPECT_THROW(fit_to_duration(SpeedProfile("x", {{0, 0.0}, {1e-6, 0.1}}), 3600.0),
+               std::invalid_argument);
+  const auto dir = nibrig::test::scratch_dir("speed_profile_long");
+  {
+    std::ofstream f(dir / "long.csv");
+    f << "time_s,speed_mm_s\n0,0\n1e308,100\n";
+  }
+  try {
+    read_speed_profile(dir / "long.csv");
+    FAIL() << "a profile of 1e308 s was accepted";
+  } catch (const model::io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("long.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a day"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace nibrig::rig
