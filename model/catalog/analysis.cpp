@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/io/format_error.hpp"
+
 namespace nibrig::model::catalog {
 
 namespace {
@@ -55,6 +57,20 @@ std::optional<long> gap_inside(const io::VibrationRecording& recording, std::siz
   return largest;
 }
 
+// A recording that reads well but cannot be measured (too short for one sweep, no sliding to fit)
+// is the file's fault: the error names it, as a reader's would, instead of naming only the step of
+// the pipeline that gave up.
+template <typename Work>
+auto measuring(const std::filesystem::path& source, Work&& work) {
+  try {
+    return work();
+  } catch (const io::FormatError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw io::FormatError(source, "", std::string("cannot be measured: ") + e.what());
+  }
+}
+
 }  // namespace
 
 FrictionAnalysis analyze_friction(const io::FrictionRecording& recording,
@@ -65,9 +81,10 @@ FrictionAnalysis analyze_friction(const io::FrictionRecording& recording,
   analysis.source = recording.source;
   analysis.normal_load_N = recording.name.normal_load_N;
   analysis.sample_rate_hz = recording.sample_rate_hz;
-  analysis.fit =
-      measure::fit_coulomb_friction(recording.tangential_force_N, recording.sample_rate_hz,
-                                    recording.name.normal_load_N, options.sweep);
+  analysis.fit = measuring(recording.source, [&] {
+    return measure::fit_coulomb_friction(recording.tangential_force_N, recording.sample_rate_hz,
+                                         recording.name.normal_load_N, options.sweep);
+  });
   analysis.upstream_mu =
       measure::upstream_mu(recording.tangential_force_N, recording.name.normal_load_N);
   analysis.tangential_force_N = recording.tangential_force_N;
@@ -97,8 +114,10 @@ VibrationAnalysis analyze_vibration(const io::VibrationRecording& recording,
   analysis.surface = recording.name.surface;
   analysis.source = recording.source;
   analysis.sample_rate_hz = recording.sample_rate_hz;
-  const auto segmentation = measure::segment_speed_steps(recording.acceleration_m_s2,
-                                                         recording.sample_rate_hz, options.steps);
+  const auto segmentation = measuring(recording.source, [&] {
+    return measure::segment_speed_steps(recording.acceleration_m_s2, recording.sample_rate_hz,
+                                        options.steps);
+  });
   analysis.warnings = recording.warnings;
   analysis.warnings.insert(analysis.warnings.end(), segmentation.warnings.begin(),
                            segmentation.warnings.end());

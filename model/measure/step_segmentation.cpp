@@ -356,9 +356,10 @@ StepSegmentation segment_speed_steps(std::span<const double> x, double fs, const
   const auto block = static_cast<std::size_t>(std::lround(p.block_s * fs));
   const auto frame = static_cast<std::size_t>(std::lround(p.envelope_frame_s * fs));
   if (x.size() < frame || x.size() < static_cast<std::size_t>(kept + 1) * block) {
-    throw std::runtime_error("step segmentation: " + std::to_string(x.size()) +
+    throw std::runtime_error("too short for the step protocol: " + std::to_string(x.size()) +
                              " samples cannot hold one sweep of " + std::to_string(kept) +
-                             " blocks of " + std::to_string(block) + " samples");
+                             " speed blocks of " + std::to_string(block) +
+                             " samples (is the recording cut off?)");
   }
   const Envelope env = band_envelope(x, fs, p);
   std::vector<Sweep> chosen = find_sweeps_on_frames(env, x.size(), block, kept, p.blocks_per_sweep);
