@@ -148,9 +148,9 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
                    "One or two more tools on the same surface: the engine switches between them "
                    "(A/B or triplet) every --switch-every seconds");
   play->add_option("--switch-every", a->switch_every, "Seconds between switches")
-      ->check(positive("a time in seconds"));
+      ->check(in_range(0.05, 3600, "a time in seconds"));
   play->add_option("--seconds", a->seconds, "How long to play (default: the stroke's length)")
-      ->check(positive("a length in seconds"));
+      ->check(in_range(0.001, 86400, "a length in seconds"));
   play->add_option("--actuator", a->actuator,
                    "Actuator calibration from `nibrig calibrate`: its name, or a file");
   play->callback([a, global] {
@@ -168,7 +168,7 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(whole_in_range(1, 1024, "a channel number"));
   cal->add_option("--accelerometer", c->accelerometer,
                   "m/s² per unit of input level (accelerometer sensitivity and input gain)")
-      ->check(positive("a sensitivity in m/s² per unit of input"));
+      ->check(in_range(1e-6, 1e6, "a sensitivity in m/s² per unit of input"));
   cal->add_option("-o,--output", c->output,
                   "Actuator file to write (default: the actuator store, see `nibrig calibrate "
                   "--help`)")

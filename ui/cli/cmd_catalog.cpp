@@ -137,7 +137,7 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--compact", options->compact_step_hz,
                   "Resample spectra to this frequency step (Hz), round them and write one-line "
                   "JSON, for bundling")
-      ->check(positive("a frequency step in Hz"));
+      ->check(in_range(0.01, 1000, "a frequency step in Hz"));
   cmd->add_option("--digits", options->compact_digits, "Significant digits kept with --compact")
       ->check(whole_in_range(2, 17, "a number of significant digits"))
       ->capture_default_str();

@@ -23,6 +23,7 @@
 #include "model/study/study_session.hpp"
 #include "playback/actuator_store.hpp"
 #include "playback/live_audition.hpp"
+#include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/study_actuator.hpp"
 #include "rig/study_turntable.hpp"
@@ -42,6 +43,11 @@ namespace study = model::study;
 
 // The simulated participant in time: each play after the one before by its share of the modelled
 // response time, divided by the pace (0: no waiting at all).
+// Ten times slower than a person is as slow as anyone watches a simulated participant; a million
+// times faster leaves no wait a clock can measure.
+constexpr double kSlowestPace = 0.1;
+constexpr double kFastestPace = 1e6;
+
 class PacedParticipant final : public study::Respondent {
  public:
   PacedParticipant(study::SimulatedParticipant& inner, double pace) : inner_(inner), pace_(pace) {}
@@ -296,7 +302,7 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
   run->add_option("--pace", o->pace,
                   "With --simulate: take its modelled response times divided by this (1: as a "
                   "person; default 0: no waiting)")
-      ->check(non_negative("a speed factor"));
+      ->check(off_or_in_range(kSlowestPace, kFastestPace, "a speed factor"));
   run->add_option_function<std::uint64_t>(
          "--seed", [o](const std::uint64_t& s) { o->seed = s; },
          "Seed of the participant's trial order (default: from the participant ID)")
@@ -319,7 +325,8 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
          "--rig-speedup", [o](const double& k) { o->rig_speedup = k; },
          "Simulated rig: 1 = real time, k = k times faster, 0 = as fast as it computes (default: "
          "1, and 0 with --simulate)")
-      ->check(in_range(0, 1e6, "a speed-up factor"));
+      ->check(off_or_in_range(rig::Pacer::kMinSpeedup, rig::Pacer::kMaxSpeedup,
+                              "a speed-up factor"));
   run->add_option_function<std::string>(
          "--usb", [o](const std::string& serial) { o->usb = serial; },
          "Rig mode: the USB rig controller (by serial; alone: the only one)")
@@ -329,7 +336,7 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
   run->add_option("--input-channel", o->input_channel, "USB rig: the accelerometer's input channel")
       ->check(whole_in_range(1, 64, "a channel number"));
   run->add_option("--accelerometer", o->accelerometer, "USB rig: the accelerometer's m/s² at full scale")
-      ->check(positive("m/s² per full scale"));
+      ->check(in_range(0.01, 1e6, "m/s² per full scale"));
   run->add_option("--instructions", o->instructions, "Instructions text for a new study (default: bundled)")
       ->check(CLI::ExistingFile);
   run->add_option("--consent", o->consent, "Consent text for a new study (default: bundled)")

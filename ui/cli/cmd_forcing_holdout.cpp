@@ -300,7 +300,7 @@ void add_forcing_holdout_command(CLI::App* forcing_cmd,
   add_forcing_input_options(cmd, o->inputs);
   auto* tip = cmd->add_option("--tip", o->tip_mm, "Tip diameter to hold out, mm")
                   ->capture_default_str()
-                  ->check(positive("a tip diameter in mm"));
+                  ->check(in_range(0.01, 1000, "a tip diameter in mm"));
   auto* material = cmd->add_option(
       "--material", o->material, "Hold out this material instead (e.g. DM95), predicted as a mix");
   material->excludes(tip);

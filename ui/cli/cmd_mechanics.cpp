@@ -263,27 +263,27 @@ void add_design_options(CLI::App* cmd, DesignOptions& o, bool positional) {
   cmd->add_option("--tip", o.tip, "Mesh files: tip point X,Y,Z in metres")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_number("a coordinate in metres"));
+      ->check(in_range(-10, 10, "a coordinate in metres"));
   cmd->add_option("--tip-direction", o.tip_direction,
                   "Mesh files: tip force direction (default 0,0,1)")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_number("a direction component"));
+      ->check(in_range(-1e6, 1e6, "a direction component"));
   cmd->add_option("--sensor", o.sensor, "Mesh files: sensor point X,Y,Z in metres")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_number("a coordinate in metres"));
+      ->check(in_range(-10, 10, "a coordinate in metres"));
   cmd->add_option("--sensor-axis", o.sensor_axis, "Mesh files: sensor axis (default 0,0,1)")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_number("a direction component"));
+      ->check(in_range(-1e6, 1e6, "a direction component"));
   cmd->add_option("--clamp-box", o.clamp_box,
                   "Mesh files: clamp every node in XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX (metres); .msh "
                   "files may instead "
                   "carry a physical group \"clamp\"")
       ->expected(6)
       ->delimiter(',')
-      ->check(finite_number("a coordinate in metres"));
+      ->check(in_range(-10, 10, "a coordinate in metres"));
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(file_to_write());
   cmd->add_option("--seconds", options->seconds,
                   "Length (default: two sweep periods, the trajectory's length, or 5 s)")
-      ->check(positive("a length in seconds"));
+      ->check(in_range(0.001, 3600, "a length in seconds"));
   // The voices run at about 8 kHz (rt/engine.hpp): a device rate below that cannot carry them.
   cmd->add_option("--rate", options->rate, "Sample rate in Hz")
       ->check(in_range(8000, 384000, "a sample rate in Hz"));

@@ -21,6 +21,7 @@
 #include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
 #include "rig/contact_follower.hpp"
+#include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
@@ -36,6 +37,13 @@
 
 namespace nibrig::ui::cli {
 namespace {
+
+// A capture shorter than one sensor block says nothing; the longest is the longest profile.
+constexpr double kShortestCaptureSeconds = 0.01;
+// The paper's arm pressed with 2.2 N; a hundredth of a newton is a pen resting on paper, and 50 N
+// breaks a tip.
+constexpr double kLightestLoadN = 0.01;
+constexpr double kHeaviestLoadN = 50.0;
 
 struct RigOptions {
   bool simulated = false;
@@ -97,21 +105,22 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
   cmd->add_option_function<double>(
          "--seconds", [&o](const double& s) { o.seconds = s; },
          "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
-      ->check(positive("a length in seconds"));
+      ->check(in_range(kShortestCaptureSeconds, rig::kMaxProfileSeconds, "a length in seconds"));
   cmd->add_option("--load", o.load, "The arm's normal load in N (default 2.2, the paper's)")
-      ->check(in_range(0, 50, "a load in N"));
+      ->check(in_range(kLightestLoadN, kHeaviestLoadN, "a load in N"));
   cmd->add_option("--seed", o.seed, "Seed of the simulated rig's noise")->check(any_seed());
   cmd->add_option("--speedup", o.speedup,
                   "Simulated and replayed rigs: 1 = real time, k = k times faster, 0 = as fast as "
                   "it computes")
-      ->check(in_range(0, 1e6, "a speed-up factor"));
+      ->check(off_or_in_range(rig::Pacer::kMinSpeedup, rig::Pacer::kMaxSpeedup,
+                              "a speed-up factor"));
   cmd->add_option("--input", o.input, "USB rig: the audio input the accelerometer is on (by name)");
   cmd->add_option("--input-api", o.input_api, "USB rig: the audio back end of --input (jack, alsa, pulse)");
   cmd->add_option("--input-channel", o.input_channel, "USB rig: the accelerometer's input channel (1-based)")
       ->check(whole_in_range(1, 64, "a channel number"));
   cmd->add_option("--accelerometer", o.accelerometer,
                   "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")
-      ->check(positive("m/s² per full scale"));
+      ->check(in_range(0.01, 1e6, "m/s² per full scale"));
   auto* play = cmd->add_flag("--play", o.play,
                              "Play the simulated tool on the actuator, following the turntable");
   add_device_options(cmd, o.device);

@@ -2,6 +2,7 @@
 // space_fit_command.cpp, space_validate_command.cpp, space_query_commands.cpp and
 // space_design_commands.cpp.
 #include "model/space/judgment_model.hpp"
+#include "model/space/objective.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
@@ -43,7 +44,7 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--dims", o->dims, "Dimensions (default 2)")
       ->check(whole_in_range(1, 10, "a number of dimensions"));
   fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)")
-      ->check(non_negative("a weight"));
+      ->check(in_range(0, model::space::kMaxLambda, "a weight"));
   fit->add_option("--starts", o->starts, "Random starts (default 16)")
       ->check(whole_in_range(1, 10000, "a number of starts"));
   fit->add_option("--seed", o->seed, "Seed of the first start (default 1)")->check(any_seed());
@@ -91,7 +92,7 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
       ->check(whole_in_range(1, 10, "a number of dimensions"));
   v->add_option("--lambdas", o->lambdas, "Lambdas to try (default 0)")
       ->delimiter(',')
-      ->check(non_negative("a weight"));
+      ->check(in_range(0, model::space::kMaxLambda, "a weight"));
   v->add_option("--models", o->models,
                 "Judgment models to try: names as for space fit --model, or all (default probit)")
       ->delimiter(',')

@@ -1,6 +1,7 @@
 #include "ui/cli/number_checks.hpp"
 
 #include <charconv>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -11,14 +12,20 @@
 namespace nibrig::ui::cli {
 namespace {
 
-// strtod accepts "nan", "inf" and hexadecimal: all are parsed here so that they can be refused
-// by name instead of failing later as an unexplained conversion.
+// Decimal only, as every file reader parses numbers (model/io/text_lines.hpp): hexadecimal, a
+// leading '+' and trailing text are refused, the same for whole and fractional options.
 std::optional<double> as_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size()) return std::nullopt;
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end) return std::nullopt;
   return value;
+}
+
+// Subnormal numbers lose precision and turn divisions into infinities: no quantity of ours is that
+// close to zero without being zero.
+bool computable(double value) {
+  return std::isfinite(value) && (value == 0.0 || std::fabs(value) >= DBL_MIN);
 }
 
 CLI::Validator number_check(std::string description, std::string expected,
@@ -26,7 +33,7 @@ CLI::Validator number_check(std::string description, std::string expected,
   return CLI::Validator(
       [expected, accept](std::string& text) -> std::string {
         const auto value = as_number(text);
-        if (value && std::isfinite(*value) && accept(*value)) return {};
+        if (value && computable(*value) && accept(*value)) return {};
         return text + ": expected " + expected;
       },
       std::move(description));
@@ -36,22 +43,16 @@ std::string number_text(double value) { return fmt::format("{:g}", value); }
 
 }  // namespace
 
-CLI::Validator finite_number(const std::string& what) {
-  return number_check("finite", what + ", finite", [](double) { return true; });
-}
-
-CLI::Validator non_negative(const std::string& what) {
-  return number_check(">= 0", what + ", >= 0 and finite", [](double v) { return v >= 0; });
-}
-
-CLI::Validator positive(const std::string& what) {
-  return number_check("> 0", what + ", > 0 and finite", [](double v) { return v > 0; });
-}
-
 CLI::Validator in_range(double low, double high, const std::string& what) {
   const std::string range = number_text(low) + " to " + number_text(high);
   return number_check(range, what + ", " + range,
                       [low, high](double v) { return v >= low && v <= high; });
+}
+
+CLI::Validator off_or_in_range(double low, double high, const std::string& what) {
+  const std::string range = "0 or " + number_text(low) + " to " + number_text(high);
+  return number_check(range, what + ", " + range,
+                      [low, high](double v) { return v == 0 || (v >= low && v <= high); });
 }
 
 CLI::Validator stylus_metres(const std::string& what) {

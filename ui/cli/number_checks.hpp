@@ -1,6 +1,7 @@
 // Checks for the numbers typed on the command line, shared by every command. Each check knows what
 // the number means and its unit, so a refusal names the option, the value and what was expected:
 // "--speed: -5: expected a speed in mm/s, >= 0 and finite". (CLI11's own Range lets NaN through.)
+// Numbers are decimal, as in every file nibrig reads: hexadecimal and subnormal values are refused.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,11 +12,11 @@ namespace nibrig::ui::cli {
 // `what` names the quantity with its unit ("a speed in mm/s", "a length in metres"). All of these
 // refuse NaN, infinities and text; the checks run while the command line is parsed, before any
 // command starts its work.
-CLI::Validator finite_number(const std::string& what);
-CLI::Validator non_negative(const std::string& what);
-CLI::Validator positive(const std::string& what);
-// low <= value <= high.
+// low <= value <= high. Every quantity that sets a duration, a size or a rate takes a range that
+// means something, so that neither 1e308 nor 1e-300 starts a run that never ends.
 CLI::Validator in_range(double low, double high, const std::string& what);
+// 0 (the option's "off") or low <= value <= high.
+CLI::Validator off_or_in_range(double low, double high, const std::string& what);
 // A length on a stylus or its test bar, in metres: > 0 and at most 1 m. Refused above, not warned
 // about: the usual slip is millimetres typed where metres are meant, which is 1000 times too long
 // and still gives plausible-looking modes (a 21 m "bar" rings at 0.004 Hz) that would be written to

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
+#include "model/io/finite_output.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -24,7 +25,7 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 }
 
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json) {
-  write_text_file(path, json.dump(2) + "\n");
+  write_text_file(path, model::io::json_text(json, path));
 }
 
 void say_wrote(const std::filesystem::path& path) {

@@ -27,7 +27,7 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   auto* speed = cmd->add_option_function<double>(
                        "--speed", [&o](const double& v) { o.speed_mm_s = v; },
                        "Constant tip speed in mm/s (measured: 17-250)")
-                    ->check(non_negative("a speed in mm/s"));
+                    ->check(off_or_in_range(0.01, 10000, "a speed in mm/s"));
   auto* sweep = cmd->add_flag("--sweep", o.sweep, "The rig's sweep, 17 -> 250 mm/s, 3 s period");
   auto* trajectory = cmd->add_option(
       "--trajectory", o.trajectory,
@@ -37,7 +37,7 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   cmd->add_option_function<double>(
          "--force", [&o](const double& v) { o.force_n = v; },
          "Constant normal force in N (default 2.2, the paper's)")
-      ->check(non_negative("a normal force in N"));
+      ->check(off_or_in_range(0.001, 50, "a normal force in N"));
   cmd->add_option("--seed", o.seed, "Seed of the forcing noise (same seed, same samples)")
       ->check(any_seed());
 }

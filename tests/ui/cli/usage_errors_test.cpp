@@ -82,7 +82,7 @@ TEST(CliQuiet, SilencesWarningsButNotErrors) {
   const auto dir = nibrig::test::scratch_dir("cli_quiet");
   const std::vector<std::string> render{
       "render",      "--tool",    "cryon", "--surface", "office",
-      "--speed=1e9", "--seconds", "0.05",  "-o",        (dir / "x.wav").string()};
+      "--speed=5000", "--seconds", "0.05",  "-o",        (dir / "x.wav").string()};
   std::vector<std::string> quiet{"-q"};
   quiet.insert(quiet.end(), render.begin(), render.end());
   // The same run warns without -q (so the assertion below can fail) and is silent with it.
@@ -100,7 +100,7 @@ TEST(CliGlobalOptions, AreAcceptedAfterTheCommandToo) {
   // the command, even after a nested one's options, silences it the same as before the command.
   std::vector<std::string> render{
       "render",      "--tool",    "cryon", "--surface", "office",
-      "--speed=1e9", "--seconds", "0.05",  "-o",        (dir / "x.wav").string(), "-q"};
+      "--speed=5000", "--seconds", "0.05",  "-o",        (dir / "x.wav").string(), "-q"};
   const Outcome quiet = run_quietly(render);
   EXPECT_EQ(quiet.code, 0) << quiet.err;
   EXPECT_EQ(quiet.err, "") << "-q after the command must silence the warning";
