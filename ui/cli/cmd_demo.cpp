@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "model/io/catalog_file.hpp"
+#include "model/io/folder_result.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/io/bundled_assets.hpp"
@@ -141,15 +142,28 @@ DemoSection run_descriptor_demo(const model::io::Catalog& catalog,
   return section;
 }
 
-void demo(const DemoOptions& options, unsigned threads) {
+// What the demo printed and summed up names its work folder; the user named the report's.
+std::string shown_as_report(std::string text, const std::filesystem::path& work,
+                            const std::filesystem::path& report) {
+  const std::string from = work.string(), to = report.string();
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+void demo(const DemoOptions& named, unsigned threads) {
   constexpr int max_bands = 5;
+  // Built beside the folder named and swapped in when whole: a run that fails or is stopped
+  // leaves an earlier report as it was.
+  model::io::FolderResult result(named.output, "SUMMARY.json");
+  DemoOptions options = named;
+  options.output = result.work();
   const auto catalog_path =
       options.catalog.empty() ? model::io::default_catalog() : options.catalog;
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   auto catalog = model::io::read_catalog(catalog_path);
   const std::size_t vibration_pairs =
       model::measure::weigh_catalog_vibration(catalog, threshold, max_bands);
-  ensure_folder(options.output);
 
   const auto chosen = [&](const std::string& name) {
     return options.only.empty() ||
@@ -191,8 +205,11 @@ void demo(const DemoOptions& options, unsigned threads) {
     numbers["sections"].push_back(name);
     numbers[name] = std::move(section.numbers);
   }
+  text = shown_as_report(text, options.output, named.output);
+  numbers = nlohmann::json::parse(shown_as_report(numbers.dump(), options.output, named.output));
   write_text_file(options.output / "SUMMARY.txt", text);
   write_json_file(options.output / "SUMMARY.json", numbers);
+  result.commit();
   std::cout << text;
 }
 

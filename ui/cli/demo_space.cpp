@@ -26,7 +26,8 @@ DemoSection run_space_demo(const model::io::Catalog& catalog,
   const auto dir = report / "space";
   ensure_folder(dir);
   space::SimulatedStudyOptions options;
-  options.judgments_file = (dir / "judgments.csv").string();
+  // Named beside space.json, not by its path: the report is built in a work folder and then moved.
+  options.judgments_file = "judgments.csv (beside this file)";
   options.threads = threads;
   // One bar per step; each step's bar ends its line with the step's last unit.
   auto bars = std::make_shared<std::map<std::string, std::function<void(std::size_t, std::size_t)>>>();

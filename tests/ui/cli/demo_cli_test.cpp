@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -38,6 +39,38 @@ nlohmann::json run_demo(const std::string& parts, std::filesystem::path& folder)
 // The bundled catalog as plain JSON: the numbers the demo reports, counted independently.
 nlohmann::json bundled_catalog() {
   return read_json(nibrig::test::assets_dir() / "default_catalog.json");
+}
+
+// A report is built beside the folder named and swapped in whole, so an earlier report is replaced
+// entirely or not at all (the trial: a demo killed halfway over an earlier one left a mix),
+// and a folder that holds something else is refused untouched.
+TEST(Demo, AnEarlierReportIsReplacedWholeAndAnyOtherFolderIsRefused) {
+  const auto dir = nibrig::test::scratch_dir("cli_demo_replace");
+  const auto report = dir / "demo";
+  std::filesystem::create_directories(report / "space");
+  std::ofstream(report / "SUMMARY.json") << "{\"sections\": [\"space\"]}\n";
+  std::ofstream(report / "space" / "space.json") << "{}\n";
+  ::testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli({"demo", "--only", "descriptors", "-o", report.string()}), 0);
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  EXPECT_FALSE(std::filesystem::exists(report / "space")) << "a file of the earlier report is left";
+  EXPECT_EQ(read_json(report / "SUMMARY.json")["sections"], nlohmann::json::array({"descriptors"}));
+  // What it printed names the folder the user gave, not where it was built.
+  EXPECT_NE(out.find("report: " + report.string() + "/"), std::string::npos) << out;
+  EXPECT_EQ(out.find(".partial-"), std::string::npos) << out;
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u) << "no work folder is left beside the report";
+
+  const auto other = dir / "thesis";
+  std::filesystem::create_directories(other);
+  std::ofstream(other / "chapter1.tex") << "x";
+  ::testing::internal::CaptureStderr();
+  EXPECT_NE(run_cli({"demo", "--only", "descriptors", "-o", other.string()}), 0);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find(other.string() + ": holds files but no SUMMARY.json"), std::string::npos) << err;
+  EXPECT_TRUE(std::filesystem::exists(other / "chapter1.tex"));
+  EXPECT_FALSE(std::filesystem::exists(other / "SUMMARY.json"));
 }
 
 TEST(Demo, DescriptorsOfEveryBundledPairWithFrictionAndSpectra) {
