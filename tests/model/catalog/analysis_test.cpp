@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "model/io/format_error.hpp"
 #include "model/io/session.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -111,6 +112,28 @@ TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
   ASSERT_TRUE(analysis.friction.has_value());
   // No normal-force stream was recorded, so the nominal 2.2 N load is used: μ = 0.44 / 2.2.
   EXPECT_NEAR(analysis.friction->fit.mu, 0.2, 1e-6);
+}
+
+// A recording that reads but is too short to measure names its file: the trial cut an
+// accelerometer file short and got only "step segmentation: 256 samples cannot hold ...".
+TEST(Analysis, ARecordingTooShortToMeasureNamesItsFile) {
+  io::VibrationRecording recording;
+  recording.source = "piovarci2018/vibration/arm2/arm_cut_short.csv";
+  recording.name.tool = "cut";
+  recording.name.surface = "short";
+  recording.sample_rate_hz = 1000.0;
+  recording.acceleration_m_s2.assign(256, 0.1);
+  for (std::size_t i = 0; i < 256; ++i) recording.time_s.push_back(static_cast<double>(i) / 1000.0);
+  const auto threshold =
+      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+  try {
+    analyze_vibration(recording, threshold, AnalysisOptions{});
+    FAIL() << "a quarter second was measured as a sweep";
+  } catch (const io::FormatError& e) {
+    EXPECT_EQ(e.file(), recording.source);
+    EXPECT_NE(std::string(e.what()).find("too short for the step protocol"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
