@@ -34,6 +34,9 @@ packages=(
 window=(xvfb xauth libgl1-mesa-dri)
 test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev)
 bench_only=(libbenchmark-dev python3-numpy python3-scipy)
+# The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
+# emulated USB device.
+not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2)
 
 # Each stage's wall time on standard error, so that a CI log says where its minutes went.
 stage_start=$(date +%s)
@@ -112,6 +115,7 @@ case "$job" in
   test) install_packages "${bench_only[@]}" ;;
   bench) install_packages "${test_only[@]}" ;;
   panel) install_packages "${test_only[@]}" "${bench_only[@]}" ;;
+  demo) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${not_demo[@]}" ;;
   *) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
 esac
 stage_done "installing packages"
@@ -119,11 +123,12 @@ stage_done "installing packages"
 # Release. clang compiles this code about a third faster than GCC 12 (a cold `nibrig`: 364 s with
 # GCC, 257 s with clang, 225 s with its precompiled headers), and the demo is the first wait.
 release=(build/release -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release)
+with_panel=-DNIBRIG_BUILD_PANEL=ON  # said each time: the demo's configuration of the tree leaves it OFF
 case "$job" in
   demo)
     # The command alone: the panel is `./setup.sh panel`'s.
     targets=nibrig configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF \
-      -DNIBRIG_LEAK_CHECK=OFF
+      -DNIBRIG_LEAK_CHECK=OFF -DNIBRIG_BUILD_PANEL=OFF
     ./build/release/ui/nibrig demo -o nibrig-demo
     stage_done "running the demo"
     ;;
@@ -139,7 +144,7 @@ case "$job" in
     # The faces end to end and the checks whose time is the feature (label scenario) in Release,
     # the build that plays, with LeakSanitizer linked in where the sanitizer build had it.
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=ON -DNIBRIG_TESTS=scenario \
-      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=ON
+      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=ON "$with_panel"
     # One ctest over both trees, so that one scheduler fills the cores and the JACK tests of both
     # share one lock. One test more than cores: the JACK tests mostly wait on the audio clock.
     printf 'subdirs("asan" "release")\n' >build/CTestTestfile.cmake
@@ -154,7 +159,7 @@ case "$job" in
     stage_done "fuzzing"
     ;;
   bench)
-    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF
+    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
     # The panel's frame benchmark needs a display: a private X server when there is none.
     display=()
     [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24")
@@ -163,7 +168,7 @@ case "$job" in
     /usr/bin/python3 tests/bench/numpy_space_fit.py
     ;;
   panel)
-    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF
+    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
       echo "setup: no display to open the panel on; on a machine without a screen, take a picture of a view:" >&2
       echo "  xvfb-run -a build/release/ui/panel/nibrig-panel --screenshot space.png --view space" >&2
@@ -173,7 +178,7 @@ case "$job" in
     exec ./build/release/ui/panel/nibrig-panel "$@"
     ;;
   build)
-    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF
+    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
     ;;
   *)
     echo "usage: ./setup.sh [demo|test|bench|panel|build]" >&2

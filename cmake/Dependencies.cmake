@@ -17,7 +17,9 @@ pkg_check_modules(ALSA REQUIRED IMPORTED_TARGET alsa)  # only to quiet alsa-lib'
 # The rig's USB controller (rig/usb) talks libusb 1.0.26 (Debian 12: no libusb_init_context); its tests
 # emulate the device in-process with umockdev, which nothing but those tests links.
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
-pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)
+if(NIBRIG_BUILD_TESTS)
+  pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)
+endif()
 pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot plplot-c++)
 find_package(Spectra 1.0 REQUIRED PATHS /usr/share/spectra/cmake)
 # Gmsh ships only a header and a shared library in Debian (no CMake or pkg-config file).
@@ -28,7 +30,9 @@ target_include_directories(nibrig_gmsh SYSTEM INTERFACE ${GMSH_INCLUDE_DIR})
 target_link_libraries(nibrig_gmsh INTERFACE ${GMSH_LIBRARY})
 # The panel (ui/panel): Dear ImGui 1.86, whose static library already holds the GLFW and OpenGL 3
 # back ends, a GLFW 3.3 window, and stb_image_write (compiled into libstb) for its screenshots.
-pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
-find_package(glfw3 3.3 REQUIRED)
-find_package(OpenGL REQUIRED)
-pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+if(NIBRIG_BUILD_PANEL)
+  pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+  find_package(glfw3 3.3 REQUIRED)
+  find_package(OpenGL REQUIRED)
+  pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+endif()
