@@ -20,7 +20,7 @@ constexpr double kOnsetSearch_s = 0.010;
 // SNR reported when the repetitions agree to the last bit (a noiseless simulation).
 constexpr double kSnrCeiling_db = 200.0;
 
-void require(bool condition, const std::string& message) {
+void require_sweep(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("sweep: " + message);
 }
 
@@ -65,19 +65,19 @@ std::complex<double> dtft(const std::vector<double>& g, std::size_t pre, double 
 }  // namespace
 
 void validate(const SweepSettings& s) {
-  require(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be positive");
-  require(std::isfinite(s.start_hz) && s.start_hz > 0, "start frequency must be positive");
-  require(std::isfinite(s.end_hz) && s.end_hz > s.start_hz && s.end_hz < 0.5 * s.sample_rate_hz,
+  require_sweep(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be positive");
+  require_sweep(std::isfinite(s.start_hz) && s.start_hz > 0, "start frequency must be positive");
+  require_sweep(std::isfinite(s.end_hz) && s.end_hz > s.start_hz && s.end_hz < 0.5 * s.sample_rate_hz,
           "end frequency must lie above the start and below Nyquist (" +
               std::to_string(0.5 * s.sample_rate_hz) + " Hz)");
-  require(std::isfinite(s.duration_s) && s.duration_s * s.sample_rate_hz >= 16,
+  require_sweep(std::isfinite(s.duration_s) && s.duration_s * s.sample_rate_hz >= 16,
           "duration must be at least 16 samples");
-  require(std::isfinite(s.level) && s.level > 0 && s.level <= 1, "level must lie in (0, 1]");
-  require(std::isfinite(s.fade_s) && s.fade_s >= 0 && 2 * s.fade_s <= s.duration_s,
+  require_sweep(std::isfinite(s.level) && s.level > 0 && s.level <= 1, "level must lie in (0, 1]");
+  require_sweep(std::isfinite(s.fade_s) && s.fade_s >= 0 && 2 * s.fade_s <= s.duration_s,
           "fades must be non-negative and together no longer than the sweep");
-  require(std::isfinite(s.silence_s) && s.silence_s > 0,
+  require_sweep(std::isfinite(s.silence_s) && s.silence_s > 0,
           "silence after the sweep must be positive");
-  require(s.repetitions >= 1 && s.repetitions <= 100, "repetitions must be 1 to 100");
+  require_sweep(s.repetitions >= 1 && s.repetitions <= 100, "repetitions must be 1 to 100");
 }
 
 std::size_t sweep_samples(const SweepSettings& s) {
@@ -114,16 +114,16 @@ std::vector<double> exponential_sweep(const SweepSettings& s) {
 ResponseEstimate estimate_response(const SweepSettings& s, std::span<const double> played,
                                    std::span<const double> recorded, const EstimationSettings& e) {
   validate(s);
-  require(e.pre_onset_s > 0 && e.impulse_length_s > 0 && e.onset_threshold > 0 &&
+  require_sweep(e.pre_onset_s > 0 && e.impulse_length_s > 0 && e.onset_threshold > 0 &&
               e.onset_threshold < 1 && e.points_per_octave > 0 && e.regularisation >= 0,
           "estimation settings must be positive (onset threshold below 1)");
   const double fs = s.sample_rate_hz;
   const std::size_t period = period_samples(s);
   const std::size_t repetitions = static_cast<std::size_t>(s.repetitions);
   const std::size_t n = period * repetitions;
-  require(played.size() == n, "played signal has " + std::to_string(played.size()) +
+  require_sweep(played.size() == n, "played signal has " + std::to_string(played.size()) +
                                   " samples, the settings give " + std::to_string(n));
-  require(recorded.size() >= n, "recording has " + std::to_string(recorded.size()) +
+  require_sweep(recorded.size() >= n, "recording has " + std::to_string(recorded.size()) +
                                     " samples, fewer than the " + std::to_string(n) + " played");
 
   const double L = sweep_rate_constant(s);
@@ -133,11 +133,11 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   const std::size_t pre = std::max<std::size_t>(1, to_samples(e.pre_onset_s, fs));
   const std::size_t length = to_samples(e.impulse_length_s, fs);
   const std::size_t silence = period - sweep_samples(s);
-  require(e.pre_onset_s + e.impulse_length_s < out.harmonic2_lead_s,
+  require_sweep(e.pre_onset_s + e.impulse_length_s < out.harmonic2_lead_s,
           "the 2nd harmonic's product lies " + std::to_string(out.harmonic2_lead_s) +
               " s before the response, less than the impulse length and pre-onset part: make the "
               "sweep longer or its range narrower");
-  require(length + pre < silence, "impulse length must be shorter than the silence");
+  require_sweep(length + pre < silence, "impulse length must be shorter than the silence");
 
   // Circular deconvolution by one sweep period: the recording of R back-to-back periods becomes R
   // copies of the impulse response, one per period, each preceded by its harmonics' products.
@@ -149,7 +149,7 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   const std::vector<std::complex<double>> x(fft.spectrum().begin(), fft.spectrum().end());
   double max_power = 0.0;
   for (const auto& v : x) max_power = std::max(max_power, std::norm(v));
-  require(max_power > 0, "played signal is silent");
+  require_sweep(max_power > 0, "played signal is silent");
   const double epsilon = e.regularisation * max_power;
   std::copy(recorded.begin(), recorded.begin() + static_cast<std::ptrdiff_t>(n),
             fft.real().begin());
@@ -165,7 +165,7 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   std::size_t peak = 0;
   for (std::size_t i = 1; i < search_end; ++i)
     if (std::abs(h[i]) > std::abs(h[peak])) peak = i;
-  require(std::abs(h[peak]) > 0, "the recording holds no response to the sweep");
+  require_sweep(std::abs(h[peak]) > 0, "the recording holds no response to the sweep");
   const std::size_t search = to_samples(kOnsetSearch_s, fs);
   std::size_t onset = peak;
   for (std::size_t i = peak > search ? peak - search : 0; i < peak; ++i) {
@@ -177,7 +177,7 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   out.peak_lag_samples = peak;
   out.delay_samples = onset;
   out.delay_s = static_cast<double>(onset) / fs;
-  require(onset + length < silence,
+  require_sweep(onset + length < silence,
           "delay of " + std::to_string(out.delay_s) +
               " s leaves too little of the silence for the impulse response: lengthen the silence");
 

@@ -26,7 +26,7 @@ namespace mech = model::mechanics;
 
 constexpr const char* kDefaultMaterial = "VeroClear-Piovarci2018";
 
-struct DesignOptions {
+struct StylusOptions {
   std::filesystem::path design;  // design.json or a mesh file
   std::vector<double> bar;       // LENGTH,WIDTH,THICKNESS
   double clamp = 0.030;
@@ -40,14 +40,14 @@ struct DesignOptions {
 };
 
 struct ModesOptions {
-  DesignOptions design;
+  StylusOptions design;
   std::filesystem::path output, plots;
   bool no_plots = false;
 };
 
 struct RingDownCommandOptions {
   std::filesystem::path trace;
-  DesignOptions design;
+  StylusOptions design;
   double preload = 0.05;
   bool calibrated = false;
   std::filesystem::path output, plots;
@@ -65,11 +65,11 @@ Eigen::Vector3d direction(const std::vector<double>& v, const char* option) {
   return d.normalized();
 }
 
-mech::MaterialTable load_materials(const DesignOptions& o) {
+mech::MaterialTable load_materials(const StylusOptions& o) {
   return mech::read_material_table(o.materials.empty() ? model::io::default_materials() : o.materials);
 }
 
-mech::Design design_from(const DesignOptions& o, const mech::MaterialTable& materials) {
+mech::Design design_from(const StylusOptions& o, const mech::MaterialTable& materials) {
   mech::Design design;
   if (!o.bar.empty()) {
     if (!o.design.empty())
@@ -231,7 +231,7 @@ void run_ring_down(const RingDownCommandOptions& o) {
   }
 }
 
-void add_design_options(CLI::App* cmd, DesignOptions& o, bool positional) {
+void add_design_options(CLI::App* cmd, StylusOptions& o, bool positional) {
   if (positional)
     cmd->add_option("design", o.design, "design.json, or a mesh file (.msh, .stl, .step)");
   cmd->add_option("--bar", o.bar,

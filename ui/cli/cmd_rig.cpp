@@ -328,7 +328,7 @@ void compare(const RigOptions& o) {
     throw Interrupted("the capture was stopped; the comparison covers what it recorded");
 }
 
-void devices() {
+void list_rig_controllers() {
   const auto controllers = rig::usb::list_rig_controllers();
   std::printf("rig controllers (USB %04x:%04x):%s\n", rig::usb::kVendorId, rig::usb::kProductId,
               controllers.empty() ? " none found" : "");
@@ -348,7 +348,7 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
   auto* list = rig_cmd->add_subcommand("devices", "USB rig controllers and audio inputs, by name");
   list->callback([global] {
     configure_logging(global->verbosity);
-    devices();
+    list_rig_controllers();
   });
 
   auto capture_options = std::make_shared<RigOptions>();
