@@ -252,6 +252,9 @@ TEST(ExperimentCli, BadInputIsRefusedBeforeAParticipantStarts) {
   std::ofstream(dir / "unknown_tool.txt") << "cryon/office\nquill/office\nstab/office\n";
   std::ofstream(dir / "unknown_surface.txt") << "cryon/office\ncryon/slate\nstab/office\n";
   std::ofstream(dir / "two.txt") << "cryon/office\nstab/office\n";
+  // A name that is not UTF-8 (Latin-1 'é'): the trial got a raw json.exception after the fit and
+  // a half-made study folder.
+  std::ofstream(dir / "latin1.txt") << "cryon/office\nstab/office\ncaf\xE9/office\n";
   struct Case {
     std::vector<std::string> args;
     int code;
@@ -265,6 +268,8 @@ TEST(ExperimentCli, BadInputIsRefusedBeforeAParticipantStarts) {
        "stimulus 'cryon/slate'"},
       {{"--stimuli", (dir / "two.txt").string(), "--simulate", truth.space.string()}, 1,
        "expected at least 3 stimuli"},
+      {{"--stimuli", (dir / "latin1.txt").string(), "--simulate", truth.space.string()}, 1,
+       "latin1.txt line 3: byte 4 is not UTF-8 text"},
       // No audio device by that name (or no server at all): refused before the study is made.
       {{"--stimuli", truth.stimuli.string(), "--api", "jack", "--device", "no-such-device"}, 1, "jack"},
       {{"--stimuli", truth.stimuli.string(), "--mode", "rig", "--simulate", truth.space.string()}, 2,
@@ -279,6 +284,7 @@ TEST(ExperimentCli, BadInputIsRefusedBeforeAParticipantStarts) {
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_NE(err.find(c.says), std::string::npos) << err;
     EXPECT_FALSE(fs::exists(dir / "study" / "participants" / "P01")) << c.says;
+    EXPECT_FALSE(fs::exists(dir / "study")) << c.says << ": a refused run leaves no study folder";
   }
   // A participant ID already taken asks for --resume or a new ID, and nothing is appended.
   ::testing::internal::CaptureStdout();
