@@ -77,10 +77,28 @@ void FolderResult::commit() {
                                ec.message() + ")");
   } else {
     // One step: a reader sees the old report or the new one, never neither.
-    if (::renameat2(AT_FDCWD, work_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0)
+    if (::renameat2(AT_FDCWD, work_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+      std::filesystem::remove_all(work_, ec);  // now the earlier report
+    } else if (errno == EINVAL || errno == ENOSYS) {
+      // A file system without the exchange: two renames, the earlier report moved aside first
+      // and removed only once the new one is in place.
+      const std::filesystem::path aside =
+          target_.parent_path() / ("." + target_.filename().string() + ".old-" +
+                                   std::to_string(::getpid()));
+      std::filesystem::rename(target_, aside, ec);
+      if (!ec) {
+        std::filesystem::rename(work_, target_, ec);
+        std::error_code restored;
+        if (ec) std::filesystem::rename(aside, target_, restored);  // the earlier report back
+      }
+      if (ec)
+        throw std::runtime_error(target_.string() + ": cannot move the finished report into place (" +
+                                 ec.message() + ")");
+      std::filesystem::remove_all(aside, ec);
+    } else {
       throw std::runtime_error(target_.string() + ": cannot swap in the finished report (" +
                                std::strerror(errno) + ")");
-    std::filesystem::remove_all(work_, ec);  // now the earlier report
+    }
   }
   committed_ = true;
 }
