@@ -158,29 +158,35 @@ std::string as_string(const nlohmann::json& value, const std::filesystem::path& 
   return value.get<std::string>();
 }
 
-double as_number(const nlohmann::json& value, const std::filesystem::path& file,
-                 const std::string& path) {
+namespace {
+// A JSON number that is finite; the checks both number readers start with.
+double finite_number(const nlohmann::json& value, const std::filesystem::path& file,
+                     const std::string& path) {
   if (!value.is_number())
     throw FormatError(file, place(path), "expected a number, found " + describe(value));
   const double number = value.get<double>();
   if (!std::isfinite(number))
     throw FormatError(file, place(path), "expected a finite number, found " + value.dump());
-  if (std::fabs(number) > kMaxJsonMagnitude)
-    throw FormatError(file, place(path),
-                      "found " + value.dump() +
-                          ": beyond ±1e15, where no quantity in nibrig's files is (is the file "
-                          "damaged?)");
+  return number;
+}
+}  // namespace
+
+double as_number(const nlohmann::json& value, const std::filesystem::path& file,
+                 const std::string& path) {
+  const double number = finite_number(value, file, path);
+  if (std::fabs(number) > kMaxJsonMagnitude) {
+    std::ostringstream message;
+    message << "found " << value.dump() << ": beyond ±" << kMaxJsonMagnitude
+            << ", where no quantity in nibrig's files is (is the file damaged?)";
+    throw FormatError(file, place(path), message.str());
+  }
   return number;
 }
 
 double as_number_in(const nlohmann::json& value, const std::filesystem::path& file,
                     const std::string& path, double low, double high, const std::string& why) {
-  // The field's own range first: it says more than the bound every number has.
-  if (!value.is_number())
-    throw FormatError(file, place(path), "expected a number, found " + describe(value));
-  const double number = value.get<double>();
-  if (!std::isfinite(number))
-    throw FormatError(file, place(path), "expected a finite number, found " + value.dump());
+  // The field's own range, not kMaxJsonMagnitude: it says more.
+  const double number = finite_number(value, file, path);
   if (!(number >= low && number <= high)) {
     std::ostringstream message;
     message << "found " << value.dump() << ", expected " << low << " to " << high << " (" << why

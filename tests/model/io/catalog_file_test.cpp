@@ -216,7 +216,7 @@ TEST_F(CatalogMalformed, QuantitiesOutsideTheirPhysicalRangeAreNamed) {
   // Any number past 1e15 is refused whatever the field: nothing in these files is that large.
   expect_message_names(
       error_after([](nlohmann::json& j) { j["pairings"][0]["vibration"]["weighted_power"] = 1e300; }),
-      {"field 'pairings[0].vibration.weighted_power'", "1e15"});
+      {"field 'pairings[0].vibration.weighted_power'", "1e+15"});
 }
 
 TEST_F(CatalogMalformed, EmptyFileAndBadSyntax) {

@@ -108,7 +108,7 @@ TEST(Design, SizesNoStylusCanHaveAreRefusedWhileReading) {
   const Case cases[] = {
       {"km.json", R"("kind": "stylus", "body_length": 1e3)", nullptr, "shape", "body length"},
       // Past 1e15 every JSON reader refuses a number before the shape's own bound sees it.
-      {"huge.json", R"("kind": "stylus", "body_length": 1e300)", nullptr, "shape.body_length", "1e15"},
+      {"huge.json", R"("kind": "stylus", "body_length": 1e300)", nullptr, "shape.body_length", "1e+15"},
       {"five_m.json", R"("kind": "stylus", "body_length": 5)", nullptr, "shape", "body length"},
       {"thin.json", R"("kind": "stylus", "tip_diameter": 1e-300)", nullptr, "shape", "tip diameter"},
       {"wide_bar.json", R"("kind": "bar", "width": 2)", nullptr, "shape", "width"},
