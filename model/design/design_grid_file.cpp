@@ -146,13 +146,15 @@ std::optional<DesignResponseGrid> load_cached_design_grid(const PredictionInputs
   }
 }
 
-std::optional<DesignResponseGrid> cached_design_response_grid(const PredictionInputs& inputs,
-                                                              const GridAxes& axes,
-                                                              const numeric::Progress& progress,
-                                                              std::stop_token stop,
-                                                              unsigned threads) {
-  if (auto cached = load_cached_design_grid(inputs, axes)) return cached;
-  auto grid = compute_design_response_grid(inputs.setup, axes, progress, stop, threads);
+namespace {
+
+// Computes the grid over `axes` (reusing `known`'s nodes) and caches it; nullopt when stopped.
+std::optional<DesignResponseGrid> compute_and_cache_grid(const PredictionInputs& inputs,
+                                                         const GridAxes& axes,
+                                                         const numeric::Progress& progress,
+                                                         std::stop_token stop, unsigned threads,
+                                                         const DesignResponseGrid* known) {
+  auto grid = compute_design_response_grid(inputs.setup, axes, progress, stop, threads, known);
   if (!grid) return std::nullopt;
   const std::string key = design_grid_cache_key(inputs, axes);
   try {
@@ -162,6 +164,52 @@ std::optional<DesignResponseGrid> cached_design_response_grid(const PredictionIn
                  e.what());
   }
   return grid;
+}
+
+std::size_t grid_node_count(const GridAxes& axes) {
+  return axes.fractions.size() * axes.tips_m.size();
+}
+
+}  // namespace
+
+std::optional<DesignResponseGrid> cached_design_response_grid(
+    const PredictionInputs& inputs, const GridAxes& axes, const numeric::StepProgress& progress,
+    std::stop_token stop, unsigned threads,
+    const std::function<void(const DesignResponseGrid&)>& on_coarse) {
+  if (auto cached = load_cached_design_grid(inputs, axes)) return cached;
+  const GridAxes coarse_grid_axes = coarse_axes(axes);
+  if (!on_coarse || grid_node_count(coarse_grid_axes) == grid_node_count(axes))
+    return compute_and_cache_grid(
+        inputs, axes, numeric::step_progress(progress, kFineGridStep, grid_node_count(axes)), stop,
+        threads, nullptr);
+  std::optional<DesignResponseGrid> coarse = load_cached_design_grid(inputs, coarse_grid_axes);
+  if (!coarse) {
+    coarse = compute_and_cache_grid(
+        inputs, coarse_grid_axes,
+        numeric::step_progress(progress, kCoarseGridStep, grid_node_count(coarse_grid_axes)), stop,
+        threads, nullptr);
+    if (!coarse) return std::nullopt;
+  }
+  on_coarse(*coarse);
+  // Every coarse node is a fine node solved with the same inputs (coarse_axes, the same key's
+  // inputs): exactly these remain to solve.
+  return compute_and_cache_grid(
+      inputs, axes,
+      numeric::step_progress(progress, kFineGridStep,
+                             grid_node_count(axes) - grid_node_count(coarse_grid_axes)),
+      stop, threads, &*coarse);
+}
+
+std::optional<DesignResponseGrid> cached_design_response_grid(
+    const PredictionInputs& inputs, const GridAxes& axes, const numeric::Progress& progress,
+    std::stop_token stop, unsigned threads,
+    const std::function<void(const DesignResponseGrid&)>& on_coarse) {
+  numeric::StepProgress steps;
+  if (progress)
+    steps = [progress](const std::string&, std::size_t done, std::size_t total) {
+      if (done > 0) progress(done, total);  // the steps' announcements are not units
+    };
+  return cached_design_response_grid(inputs, axes, steps, stop, threads, on_coarse);
 }
 
 }  // namespace nibrig::model::design

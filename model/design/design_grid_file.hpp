@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -44,11 +45,33 @@ DesignResponseGrid read_design_grid(const std::filesystem::path& file,
 std::optional<DesignResponseGrid> load_cached_design_grid(const PredictionInputs& inputs,
                                                           const GridAxes& axes);
 
+// The steps cached_design_response_grid announces (numeric::StepProgress): the coarse grid's
+// nodes, then the fine grid's (without on_coarse the one step is the fine grid's).
+inline constexpr const char* kCoarseGridStep = "coarse grid";
+inline constexpr const char* kFineGridStep = "fine grid";
+
 // The cached grid, else computed (compute_design_response_grid with progress, stop and threads)
-// and written to the cache. nullopt when stopped (nothing is written then). A cache that cannot be
-// written is a warning in the log, not an error: the grid computed is returned all the same.
+// and written to the cache. nullopt when stopped (nothing of the grid stopped is written then). A
+// cache that cannot be written is a warning in the log, not an error: the grid computed is
+// returned all the same.
+//
+// With on_coarse, and the grid not cached, a usable grid comes first: the coarse_axes grid, taken
+// from the cache or solved and cached (under its own key, as any grid), is passed to on_coarse;
+// the grid asked for is then solved reusing the coarse nodes (only the rest are solved), cached and
+// returned. on_coarse is not called when the grid is cached, nor for a grid of 2 × 2 nodes (its own
+// coarse grid). A stop in either phase returns nullopt; a coarse grid completed stays cached.
+//
+// Progress: each step solved is announced with done = 0 (kCoarseGridStep, then kFineGridStep) and
+// counted in the nodes it solves (5 × 7: 12, then 23); a step with nothing to solve (a cached
+// coarse grid) is not announced. The numeric::Progress form is called with those same counts, the
+// coarse grid's before on_coarse and the fine grid's after it.
+std::optional<DesignResponseGrid> cached_design_response_grid(
+    const PredictionInputs& inputs, const GridAxes& axes, const numeric::StepProgress& progress,
+    std::stop_token stop = {}, unsigned threads = 0,
+    const std::function<void(const DesignResponseGrid&)>& on_coarse = {});
 std::optional<DesignResponseGrid> cached_design_response_grid(
     const PredictionInputs& inputs, const GridAxes& axes, const numeric::Progress& progress = {},
-    std::stop_token stop = {}, unsigned threads = 0);
+    std::stop_token stop = {}, unsigned threads = 0,
+    const std::function<void(const DesignResponseGrid&)>& on_coarse = {});
 
 }  // namespace nibrig::model::design

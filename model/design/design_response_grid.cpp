@@ -91,7 +91,30 @@ std::size_t jumps_between(const SimulatedResponse& a, const SimulatedResponse& b
   return jumps;
 }
 
+// Every other node of an axis, both ends kept: n/2 + 1 of n. For odd n the indices 0, 2, .., n − 1;
+// for even n each index k·(n − 1)/(m − 1) rounded half up, distinct since that step is at least 1.
+std::vector<double> coarse_axis_nodes(const std::vector<double>& fine) {
+  const std::size_t n = fine.size(), m = n / 2 + 1;
+  std::vector<double> coarse;
+  for (std::size_t k = 0; k < m; ++k)
+    coarse.push_back(fine[(2 * k * (n - 1) + (m - 1)) / (2 * (m - 1))]);
+  return coarse;
+}
+
+// Where `value` is in `axis` exactly, or nullopt.
+std::optional<std::size_t> exact_axis_index(const std::vector<double>& axis, double value) {
+  const auto at = std::find(axis.begin(), axis.end(), value);
+  if (at == axis.end()) return std::nullopt;
+  return static_cast<std::size_t>(at - axis.begin());
+}
+
 }  // namespace
+
+GridAxes coarse_axes(const GridAxes& fine) {
+  validate(fine);
+  return {fine.material_a, fine.material_b, coarse_axis_nodes(fine.fractions),
+          coarse_axis_nodes(fine.tips_m)};
+}
 
 GridAxes even_axes(const std::string& material_a, const std::string& material_b,
                    std::size_t fraction_points, double min_tip_m, double max_tip_m,
@@ -183,11 +206,9 @@ std::size_t count_mode_jumps(const DesignResponseGrid& grid) {
   return jumps;
 }
 
-std::optional<DesignResponseGrid> compute_design_response_grid(const PredictionSetup& setup,
-                                                               const GridAxes& axes,
-                                                               const numeric::Progress& progress,
-                                                               std::stop_token stop,
-                                                               unsigned threads) {
+std::optional<DesignResponseGrid> compute_design_response_grid(
+    const PredictionSetup& setup, const GridAxes& axes, const numeric::Progress& progress,
+    std::stop_token stop, unsigned threads, const DesignResponseGrid* known) {
   validate(axes);
   if (setup.model == nullptr)
     throw std::invalid_argument("design grid: the setup needs a forcing model (its frequencies)");
@@ -205,13 +226,32 @@ std::optional<DesignResponseGrid> compute_design_response_grid(const PredictionS
   const std::size_t nt = axes.tips_m.size();
   const std::size_t count = axes.fractions.size() * nt;
   grid.nodes.resize(count);
+  // A known node is the same solve only when everything the solve depends on and the grid records
+  // is the same: the materials, mesh size, mode count, and the frequencies |H| is given at.
+  if (known != nullptr) validate(*known, "the known design grid");
+  const bool reusable = known != nullptr && known->axes.material_a == axes.material_a &&
+                        known->axes.material_b == axes.material_b &&
+                        known->mesh_size_m == grid.mesh_size_m && known->modes == grid.modes &&
+                        known->frequencies_hz == grid.frequencies_hz;
+  std::vector<std::size_t> to_solve;
+  for (std::size_t n = 0; n < count; ++n) {
+    const auto i =
+        reusable ? exact_axis_index(known->axes.fractions, axes.fractions[n / nt]) : std::nullopt;
+    const auto j =
+        reusable ? exact_axis_index(known->axes.tips_m, axes.tips_m[n % nt]) : std::nullopt;
+    if (i && j)
+      grid.nodes[n] = known->node(*i, *j);
+    else
+      to_solve.push_back(n);
+  }
   std::atomic<bool> stopped = false;
-  numeric::ProgressCounter counter(progress, count);
-  numeric::parallel_for(count, threads, [&](std::size_t n) {
+  numeric::ProgressCounter counter(progress, to_solve.size());
+  numeric::parallel_for(to_solve.size(), threads, [&](std::size_t k) {
     if (stop.stop_requested()) {
       stopped = true;
       return;
     }
+    const std::size_t n = to_solve[k];
     const DesignPoint point = grid_point(axes, axes.fractions[n / nt], axes.tips_m[n % nt]);
     try {
       grid.nodes[n] = simulate_response(setup, point);

@@ -47,12 +47,20 @@ GridAxes even_axes(const std::string& material_a, const std::string& material_b,
                    std::size_t tip_points);
 
 // The default density: 5 fractions (steps of 0.25) × 7 tips (0.5 mm) over the forcing model's
-// fitted tips 1-4 mm, 35 FEM solves (27 s on two cores at the template's 3 mm and 64 modes). At
-// every cell centre of that grid, vero–DM85 on office (bench DesignGridError, when written): |H|
-// within 0.084 dB rms (0.16 dB at worst), log10 of the weighted mean within 8.3e-4 against the
-// predictions' cross-validated 0.052 (1.6 % of it, 0.03 % of the variance), the placement within
-// 8.3e-4 against its own 0.038. Denser would buy nothing a listener or the space could tell.
+// fitted tips 1-4 mm, 35 FEM solves (27 s on two cores at the template's 3 mm and 64 modes; minutes
+// on a loaded machine, hence the coarse grid first: coarse_axes below). At every cell centre of
+// that grid, vero–DM85 on office (bench DesignGridError, when written): |H| within 0.084 dB rms
+// (0.16 dB at worst), log10 of the weighted mean within 8.3e-4 against the predictions'
+// cross-validated 0.052 (1.6 % of it, 0.03 % of the variance), the placement within 8.3e-4
+// against its own 0.038. Denser would buy nothing a listener or the space could tell.
 inline constexpr std::size_t kDefaultFractionPoints = 5, kDefaultTipPoints = 7;
+
+// The grid to show while a fine grid is solved: on each axis the fine nodes at every other index,
+// both ends kept, n/2 + 1 of the n (5 × 7 → 3 × 4: 12 of the 35 solves; an axis of 2 or 3 keeps
+// its ends). An even count cannot halve evenly; its inner nodes are the nearest to an even spread.
+// Every coarse node is a fine node, the same doubles, so the fine grid reuses its solve (`known`
+// below) and costs only the rest (23 of 35).
+GridAxes coarse_axes(const GridAxes& fine);
 
 // Throws std::invalid_argument naming the axis and the entry: fewer than 2 nodes on an axis, values
 // out of order or out of range, equal or empty materials.
@@ -92,14 +100,19 @@ void validate(const DesignResponseGrid& grid, const std::string& where);
 std::size_t count_mode_jumps(const DesignResponseGrid& grid);
 
 // Solves every node's design (simulate_response), on `threads` threads (0: one per core; Gmsh
-// meshes one at a time, assembly and eigensolve run in parallel). `progress` is called after each
-// node with done of total; `stop` is checked before each node starts, and a stop requested returns
-// std::nullopt once the nodes under way have finished (at most one node's time per thread). Throws
-// for axes validate refuses, a tip outside the forcing model's fitted tips, and what the FEM throws
-// (naming the node's design point).
+// meshes one at a time, assembly and eigensolve run in parallel). A node `known` already holds is
+// copied instead: one at exactly the same fraction and tip, in a grid of the same two materials,
+// mesh size, mode count and frequencies (a coarse grid's nodes in its fine grid). The grid records
+// nothing else of its solve, so `known` must come from this setup's template and materials (as a
+// grid cached under these inputs' key does). `progress` is called after each node solved with done
+// of total, the nodes to solve (known ones are not counted); `stop` is checked before each node
+// starts, and a stop requested returns std::nullopt once the nodes under way have finished (at most
+// one node's time per thread). Throws for axes validate refuses, a tip outside the forcing model's
+// fitted tips, a `known` grid validate refuses, and what the FEM throws (naming the node's design
+// point).
 std::optional<DesignResponseGrid> compute_design_response_grid(
     const PredictionSetup& setup, const GridAxes& axes, const numeric::Progress& progress = {},
-    std::stop_token stop = {}, unsigned threads = 0);
+    std::stop_token stop = {}, unsigned threads = 0, const DesignResponseGrid* known = nullptr);
 
 // The response at (λ, tip) inside the grid, interpolated as the header says. Throws
 // std::invalid_argument for a point outside the grid (saying by how far and the grid's range).
