@@ -71,11 +71,18 @@ void FileDialog::open(std::string title, Mode mode, std::vector<std::string> end
   popup_opened_ = false;
 }
 
+std::optional<ImVec2> FileDialog::entry_position(const std::string& name) const {
+  for (std::size_t i = 0; i < entries_.size() && i < drawn_at_.size(); ++i)
+    if (entries_[i].name == name) return drawn_at_[i];
+  return std::nullopt;
+}
+
 void FileDialog::enter(const fs::path& folder) {
   std::error_code ec;
   const fs::path absolute = fs::weakly_canonical(fs::absolute(folder, ec), ec);
   try {
     entries_ = list_folder(absolute, endings_);
+    drawn_at_.clear();  // until the new listing is drawn
     folder_ = absolute;
     error_.clear();
   } catch (const std::exception& e) {
@@ -128,31 +135,35 @@ void FileDialog::draw() {
   ImGui::TextUnformatted(folder_.c_str());
   const float footer = ImGui::GetFrameHeightWithSpacing() * 2.0f + ImGui::GetTextLineHeightWithSpacing();
   ImGui::BeginChild("entries", {0.0f, -footer}, true);
-  std::string enter_name;
-  for (const auto& e : entries_) {
+  // A click selects; a double-click opens. ImGui reports a double-click as a second press on the
+  // entry the first one selected; it is acted on after the loop, which it would invalidate.
+  std::string open_now;
+  drawn_at_.assign(entries_.size(), ImVec2{});
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const FolderEntry& e = entries_[i];
     const std::string label = e.folder ? e.name + "/" : e.name;
-    const bool selected = !e.folder && e.name == name_;
-    if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
-      if (e.folder) enter_name = e.name;
-      else {
-        std::snprintf(name_, sizeof name_, "%s", e.name.c_str());
-        if (ImGui::IsMouseDoubleClicked(0)) {
-          choose(name_);
-          break;
-        }
-      }
+    if (ImGui::Selectable(label.c_str(), e.name == name_, ImGuiSelectableFlags_AllowDoubleClick)) {
+      std::snprintf(name_, sizeof name_, "%s", e.name.c_str());
+      if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) open_now = e.name;
     }
+    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+    drawn_at_[i] = {0.5f * (low.x + high.x), 0.5f * (low.y + high.y)};
     if (!e.folder) {
       ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 90.0f);
       ImGui::TextDisabled("%s", size_text(e.bytes).c_str());
     }
   }
   ImGui::EndChild();
-  if (!enter_name.empty()) enter(folder_ / enter_name);
+  if (!open_now.empty()) choose(open_now);
   ImGui::SetNextItemWidth(-200.0f);
+  // Enter takes what the field holds, whether it was being edited (typed: the field reports that
+  // Enter itself) or not (the list had the focus after a click); one call either way.
   const bool typed = ImGui::InputText("##name", name_, sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter_key = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
   ImGui::SameLine();
-  if (ImGui::Button(mode_ == Mode::open ? "Open" : "Save") || typed) choose(name_);
+  const bool button = ImGui::Button(mode_ == Mode::open ? "Open" : "Save");
+  if (open_ && (button || typed || enter_key)) choose(name_);
   ImGui::SameLine();
   if (ImGui::Button("Cancel")) open_ = false;
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());

@@ -1,14 +1,19 @@
 // Choosing a file in the window (ImGui has no file dialog): a folder's entries, folders first,
-// filtered by what the file is for; click a name or type one, then Open or Save. A path typed
-// whole (absolute, or relative to the folder shown) is taken as it is. The listing is a library
-// call (list_folder) that tests reach without a screen, and choose() is what the buttons do.
+// filtered by what the file is for. As in every desktop file dialog, a click selects an entry (its
+// name goes into the text field), a double-click opens it (enters a folder, takes a file), and
+// Enter or Open/Save takes what is selected or typed. A path typed whole (absolute, or relative to
+// the folder shown) is taken as it is. The listing is a library call (list_folder) that tests reach
+// without a screen, and choose() is what Enter and the buttons do.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "imgui.h"
 
 namespace nibrig::ui::panel {
 
@@ -44,6 +49,11 @@ class FileDialog {
   const std::filesystem::path& folder() const { return folder_; }
   const std::vector<FolderEntry>& entries() const { return entries_; }
   const std::string& error() const { return error_; }
+  // What the text field holds: the entry last clicked, or what was typed.
+  std::string selection() const { return name_; }
+  // Where the entry of that name was drawn in the last frame (the centre of its row), for tests
+  // that click it; nullopt when it was not drawn.
+  std::optional<ImVec2> entry_position(const std::string& name) const;
 
  private:
   void enter(const std::filesystem::path& folder);
@@ -57,6 +67,7 @@ class FileDialog {
   Chosen chosen_;
   std::string error_;
   char name_[512] = {};
+  std::vector<ImVec2> drawn_at_;  // each entry's row centre in the last frame, as entries_
 };
 
 }  // namespace nibrig::ui::panel

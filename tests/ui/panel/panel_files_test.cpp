@@ -80,6 +80,101 @@ TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
   EXPECT_EQ(taken, fs::weakly_canonical(dir / "new.json"));
 }
 
+// The dialog alone in a hidden window, driven as a person would: the mouse and keys written into
+// ImGui's IO after the back end read the (unfocused, so absent) real ones. Each frame lasts 1/60 s of
+// ImGui's time whatever it takes on llvmpipe, so that two presses two frames apart are a
+// double-click (ImGui's limit: 0.30 s) and presses 30 frames apart never are.
+struct DialogWindow {
+  PanelWindow window{testing::hidden_window()};
+  FileDialog& dialog;
+  explicit DialogWindow(FileDialog& d) : dialog(d) {}
+  void frame(const std::function<void(ImGuiIO&)>& input = {}) {
+    window.begin_frame([&](ImGuiIO& io) {
+      io.DeltaTime = 1.0f / 60.0f;
+      if (input) input(io);
+    });
+    dialog.draw();
+    window.end_frame();
+  }
+  void frames(int n) {
+    for (int i = 0; i < n; ++i) frame();
+  }
+  // Presses and releases the left button on that entry `clicks` times, a frame each.
+  void click(const std::string& entry, int clicks) {
+    const auto at = dialog.entry_position(entry);
+    ASSERT_TRUE(at.has_value()) << entry << " is not drawn";
+    const ImVec2 p = *at;
+    frame([&](ImGuiIO& io) { io.MousePos = p; });
+    for (int i = 0; i < clicks; ++i) {
+      frame([&](ImGuiIO& io) { io.MousePos = p, io.MouseDown[0] = true; });
+      frame([&](ImGuiIO& io) { io.MousePos = p, io.MouseDown[0] = false; });
+    }
+    frames(30);  // half a second of ImGui's time: the next click starts afresh
+  }
+  void press(int key) {
+    frame([&](ImGuiIO& io) { io.KeysDown[key] = true; });
+    frame([&](ImGuiIO& io) { io.KeysDown[key] = false; });
+  }
+};
+
+TEST(FileDialog, InAWindowAClickSelectsADoubleClickEntersAFolderOnceOrTakesAFile) {
+  // sub/ is the first row here and inner/ the first row in sub: a double-click that entered on its
+  // first click would enter inner/ with its second, the bug of issue 29.
+  const auto dir = fs::canonical(nibrig::test::scratch_dir("file_dialog_clicks"));
+  fs::create_directories(dir / "sub" / "inner");
+  touch(dir / "top.json");
+  touch(dir / "sub" / "deep.json");
+  std::vector<fs::path> taken;
+  FileDialog dialog;
+  DialogWindow w(dialog);
+  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir, [&](const fs::path& f) { taken.push_back(f); });
+  w.frames(3);  // the modal appears and is laid out
+
+  w.click("sub", 1);
+  EXPECT_EQ(dialog.folder(), dir) << "a single click entered the folder";
+  EXPECT_EQ(dialog.selection(), "sub");
+  w.click("top.json", 1);
+  EXPECT_EQ(dialog.selection(), "top.json");
+  EXPECT_TRUE(taken.empty()) << "a single click took the file";
+  EXPECT_TRUE(dialog.is_open());
+
+  w.click("sub", 2);
+  EXPECT_EQ(dialog.folder(), dir / "sub") << "a double-click entered other than exactly one level";
+  EXPECT_EQ(dialog.selection(), "");
+  EXPECT_TRUE(taken.empty());
+
+  w.click("deep.json", 2);
+  ASSERT_EQ(taken.size(), 1u) << "a double-click on a file took it other than once";
+  EXPECT_EQ(taken[0], dir / "sub" / "deep.json");
+  EXPECT_FALSE(dialog.is_open());
+  w.frames(3);
+  EXPECT_EQ(taken.size(), 1u);
+}
+
+TEST(FileDialog, InAWindowEnterTakesTheSelectedFileOrEntersTheSelectedFolder) {
+  const auto dir = fs::canonical(nibrig::test::scratch_dir("file_dialog_enter"));
+  fs::create_directories(dir / "sub");
+  touch(dir / "top.json");
+  touch(dir / "sub" / "deep.json");
+  std::vector<fs::path> taken;
+  FileDialog dialog;
+  DialogWindow w(dialog);
+  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir, [&](const fs::path& f) { taken.push_back(f); });
+  w.frames(3);
+
+  w.click("sub", 1);
+  w.press(GLFW_KEY_ENTER);
+  EXPECT_EQ(dialog.folder(), dir / "sub") << "Enter on a selected folder did not enter it";
+  EXPECT_TRUE(taken.empty());
+  w.frames(3);
+  w.click("deep.json", 1);
+  EXPECT_TRUE(taken.empty());
+  w.press(GLFW_KEY_ENTER);
+  ASSERT_EQ(taken.size(), 1u) << "Enter on a selected file took it other than once";
+  EXPECT_EQ(taken[0], dir / "sub" / "deep.json");
+  EXPECT_FALSE(dialog.is_open());
+}
+
 // A hidden window and the panel in it, drawn until `done` or the deadline.
 struct FilesSession {
   PanelWindow window{testing::hidden_window()};
@@ -284,7 +379,7 @@ TEST(PanelKeys, CtrlNumbersShowViewsAndLettersSwitchTheComparedTools) {
   EXPECT_EQ(s.panel.current(), View::space);
 
   // Two tools compared (no device: the engine runs all the same); B switches to the second, A back.
-  s.panel.audio().play({{"cryon", "office"}, {"stab", "office"}}, rt::StrokeRequest{});
+  s.panel.audio().play({{"cryon", "office"}, {"stab", "office"}});
   ASSERT_TRUE(s.until([&] { return !s.panel.audio().making_sounds(); }));
   ASSERT_EQ(s.panel.audio().playing().size(), 2u) << s.panel.audio().error();
   EXPECT_EQ(s.panel.audio().audition().selected(), 0u);
@@ -295,7 +390,8 @@ TEST(PanelKeys, CtrlNumbersShowViewsAndLettersSwitchTheComparedTools) {
   press(GLFW_KEY_C, false);  // there is no third: nothing changes
   EXPECT_EQ(s.panel.audio().audition().selected(), 0u);
   press(GLFW_KEY_SPACE, false);
-  EXPECT_EQ(s.panel.audio().stroke_description(), "the pad");  // stopped: a contact at rest
+  EXPECT_EQ(s.panel.audio().stroke_description(), "stopped");
+  EXPECT_FALSE(s.panel.audio().sounding().has_value());
 }
 
 }  // namespace
