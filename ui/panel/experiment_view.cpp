@@ -51,6 +51,20 @@ study::SessionSettings ExperimentView::session_settings() const {
   return settings;
 }
 
+PlanRequest ExperimentView::plan_request() const {
+  PlanRequest r;
+  r.study = form_.study;
+  r.stimuli = form_.stimuli;
+  r.mode = form_.mode == 1   ? study::StudyMode::validation
+           : form_.mode == 2 ? study::StudyMode::rig
+                             : study::StudyMode::actuator;
+  r.plan = form_.adaptive ? study::PlanKind::adaptive : study::PlanKind::two_stage;
+  r.trials = static_cast<std::size_t>(form_.trials);
+  r.practice = static_cast<std::size_t>(form_.practice);
+  r.break_every = static_cast<std::size_t>(form_.break_every);
+  return r;
+}
+
 void ExperimentView::start() {
   error_.clear();
   try {
@@ -58,14 +72,7 @@ void ExperimentView::start() {
     study::check_participant_id(form_.participant);
     if (!form_.resume || !form_.stimuli.empty()) {
       if (form_.stimuli.empty()) throw std::invalid_argument("a new study needs its stimulus list");
-      study::StudyDefinition d;
-      d.stimuli = study::read_stimulus_list(form_.stimuli);
-      d.plan = form_.adaptive ? study::PlanKind::adaptive : study::PlanKind::two_stage;
-      d.mode = form_.mode == 1   ? study::StudyMode::validation
-               : form_.mode == 2 ? study::StudyMode::rig
-                                 : study::StudyMode::actuator;
-      d.practice = static_cast<std::size_t>(form_.practice);
-      d.break_every = static_cast<std::size_t>(form_.break_every);
+      const study::StudyDefinition d = definition_from_list(plan_request());
       if (std::filesystem::exists(std::filesystem::path(form_.study) / study::kStudyFile))
         study::check_session(settings);  // a taken ID is refused before the study is touched
       // An unknown tool or surface too (reading the catalog takes milliseconds; no meshing).
@@ -84,16 +91,24 @@ void ExperimentView::start() {
     auto options = sound_options_();
     options.progress = {};
     // The sounds with a ToolSounds of its own: the panel's is busy with what the other views play.
-    // The rig's simulation asks it for each stimulus it runs, on the rig's worker.
+    // The rig's simulation asks it for each stimulus it runs, on the rig's worker. The bar names
+    // the sound being made; Cancel stops the job before the next one.
     sounds_job_ = std::make_unique<BackgroundJob<Prepared>>(
         "making the stimuli's sounds", [options, stimuli = d.stimuli, on_rig](JobControl& control) {
           Prepared prepared;
+          control.message("reading the catalog and the forcing model");
           prepared.tool_sounds = std::make_shared<model::design::ToolSounds>(options);
           rig::check_study_stimuli(*prepared.tool_sounds, stimuli);
+          const auto making = [&control, &stimuli](std::size_t index) {
+            control.message(std::to_string(index + 1) + " of " + std::to_string(stimuli.size()) + " (" +
+                            stimuli[index].name + ")");
+          };
+          if (!stimuli.empty()) making(0);
           prepared.sounds = rig::study_sounds(
-              *prepared.tool_sounds, stimuli, [&control](std::size_t done, std::size_t total) {
+              *prepared.tool_sounds, stimuli, [&](std::size_t done, std::size_t total) {
+                if (control.stop_requested()) throw std::runtime_error("making the stimuli's sounds was cancelled");
                 control.progress(static_cast<double>(done) / static_cast<double>(total));
-                control.message("made " + std::to_string(done) + " of " + std::to_string(total));
+                if (done < total) making(done);
               });
           if (!on_rig) prepared.tool_sounds.reset();
           return prepared;
@@ -104,8 +119,39 @@ void ExperimentView::start() {
   }
 }
 
+std::string ExperimentView::preparing_label() const {
+  if (!sounds_job_) return {};
+  const std::string message = sounds_job_->message();
+  return sounds_job_->title() + ": " + (message.empty() ? std::string("starting") : message);
+}
+
+const PlanPreview* ExperimentView::plan() const {
+  return plan_ && plan_for_ && *plan_for_ == plan_request() ? &*plan_ : nullptr;
+}
+
+void ExperimentView::refresh_plan() {
+  if (plan_job_ && plan_job_->done()) {
+    auto result = plan_job_->take_result();
+    if (!result) {
+      result.emplace();
+      result->problem = plan_job_->error();
+    }
+    plan_ = std::move(*result);
+    plan_for_ = plan_job_for_;
+    plan_job_.reset();
+  }
+  // The form's fields change as they are typed in: the plan follows, one job at a time, each
+  // reading the files once (the UI thread reads none).
+  const PlanRequest wanted = plan_request();
+  if (plan_job_ || (plan_for_ && *plan_for_ == wanted)) return;
+  plan_job_for_ = wanted;
+  plan_job_ = std::make_unique<BackgroundJob<PlanPreview>>(
+      "working out the plan", [wanted](JobControl&) { return preview_plan(wanted); });
+}
+
 void ExperimentView::poll() {
   std::erase_if(retired_, [](const Retired& r) { return r.job->done(); });
+  std::erase_if(cancelled_sounds_, [](const auto& job) { return job->done(); });
   if (stage_ == Stage::presenting && present_job_ && present_job_->done()) {
     const std::string failed = present_job_->error();
     present_job_.reset();
@@ -228,10 +274,14 @@ void ExperimentView::stop() {
   if (presenter_) presenter_->pause();
   session_.reset();
   presenter_.reset();
-  sounds_job_.reset();
+  if (sounds_job_) {
+    sounds_job_->cancel();
+    cancelled_sounds_.push_back(std::move(sounds_job_));
+  }
   if (audio_.audition_lent()) audio_.give_back_audition();
   stage_ = Stage::setup;
   form_.resume = true;  // what the next Start most likely is
+  plan_for_.reset();    // answers were added: the measured time per trial changes
 }
 
 void ExperimentView::draw() {
@@ -254,16 +304,24 @@ void ExperimentView::draw_setup() {
   ImGui::Combo("mode", &form_.mode,
                "actuator\0validation (designs against the first stimulus)\0rig (the rig view's rig)\0");
   ImGui::Checkbox("adaptive plan (else the paper's two stages)", &form_.adaptive);
+  ImGui::InputInt("main trials (0: the plan's own size)", &form_.trials);
   ImGui::InputInt("practice trials", &form_.practice);
   ImGui::InputInt("rest every N trials (0: none)", &form_.break_every);
+  form_.trials = std::max(0, form_.trials);
   form_.practice = std::max(0, form_.practice);
   form_.break_every = std::max(0, form_.break_every);
   ImGui::Checkbox("resume this participant", &form_.resume);
   ImGui::TextDisabled("Edit instructions.txt and consent.txt in the study folder. Rig mode runs the "
                       "simulated or USB rig chosen in the rig view.");
+  refresh_plan();
+  if (const PlanPreview* p = plan()) {
+    for (const std::string& line : plan_lines(*p)) ImGui::TextWrapped("%s", line.c_str());
+  } else {
+    ImGui::TextDisabled("working out the plan...");
+  }
   if (stage_ == Stage::preparing) {
     if (progress_with_cancel("sounds", static_cast<float>(sounds_job_ ? sounds_job_->progress() : 0.0),
-                             sounds_job_ ? sounds_job_->message().c_str() : ""))
+                             preparing_label().c_str()))
       stop();
   } else if (ImGui::Button(form_.resume ? "Resume" : "Start")) {
     start();

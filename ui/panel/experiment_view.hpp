@@ -25,6 +25,7 @@
 #include "rig/study_turntable.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
+#include "ui/panel/study_plan_preview.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -50,6 +51,7 @@ class ExperimentView {
     bool adaptive = false;
     int practice = 3, break_every = 100;
     bool resume = false;
+    int trials = 0;  // main trials; 0: the plan's own size
   };
   Form& form() { return form_; }
   // What the buttons and keys do.
@@ -68,9 +70,15 @@ class ExperimentView {
 
   const std::string& error() const { return error_; }
   const model::study::StudySession* session() const { return session_.get(); }
+  // The plan of the form as it is now; nullptr while it is being worked out (draw() starts that).
+  const PlanPreview* plan() const;
+  // What the preparing stage's bar says: what is being made, which of how many.
+  std::string preparing_label() const;
 
  private:
   model::study::SessionSettings session_settings() const;  // of the form
+  PlanRequest plan_request() const;                         // of the form
+  void refresh_plan();
   void draw_setup();
   void draw_participant();
   void handle_keys();
@@ -103,6 +111,14 @@ class ExperimentView {
   Stage stage_ = Stage::setup;
   std::string error_;
   std::unique_ptr<BackgroundJob<Prepared>> sounds_job_;
+  // Sounds cancelled while one was being made: they end on their own thread (the UI does not wait
+  // for the sound in progress) and are dropped once done.
+  std::vector<std::unique_ptr<BackgroundJob<Prepared>>> cancelled_sounds_;
+  // The form's plan: one job at a time; when the form changed meanwhile, the next starts after it.
+  std::unique_ptr<BackgroundJob<PlanPreview>> plan_job_;
+  PlanRequest plan_job_for_;
+  std::optional<PlanPreview> plan_;
+  std::optional<PlanRequest> plan_for_;  // what plan_ is the plan of
   std::unique_ptr<model::study::Presenter> presenter_;
   std::unique_ptr<model::study::StudySession> session_;
   std::unique_ptr<BackgroundJob<bool>> present_job_;  // rig mode: the sweep being run
