@@ -41,6 +41,18 @@ void DevicesView::open() {
   request_.api = api_;
   request_.device = device_;
   error_ = audio_.open(request_);
+  shown_stream_.reset();  // the form shows what this one runs, even when it is the same as before
+}
+
+void DevicesView::show_what_runs(const playback::StreamInfo& info) {
+  auto stream = std::make_tuple(info.api, info.device, info.sample_rate, info.period_frames);
+  if (shown_stream_ == stream) return;  // what the person types in since stays
+  std::snprintf(api_, sizeof api_, "%s", info.api.c_str());
+  std::snprintf(device_, sizeof device_, "%s", info.device.c_str());
+  request_.api = info.api;
+  request_.device = info.device;
+  request_.period_frames = info.period_frames;
+  shown_stream_ = std::move(stream);
 }
 
 void DevicesView::draw() {
@@ -50,6 +62,8 @@ void DevicesView::draw() {
     job_.reset();
   }
   if (!listing_ && !job_) refresh();
+  if (const auto info = audio_.audition().stream_info()) show_what_runs(*info);
+  else shown_stream_.reset();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginChild("devices-choice", {avail.x * 0.5f, avail.y});
   section("Output to the actuator");
@@ -83,21 +97,55 @@ void DevicesView::draw_stream() {
   const auto& a = audio_.audition();
   const auto info = a.stream_info();
   if (!info) {
+    running_.reset();
+    monitor_.reset();
     ImGui::TextWrapped("No device open: the panel plays nowhere (choose one and press Open).");
     return;
   }
-  ImGui::Text("%s: %s, %u Hz, period %u, latency %ld frames", info->api.c_str(), info->device.c_str(), info->sample_rate,
-              info->period_frames, info->latency_frames);
   const auto stats = *a.output_stats();
   const auto engine = a.engine_stats();
+  monitor_.sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count(), engine,
+                  stats.output_underflows);
+  RunningStream r;
+  r.api = info->api;
+  r.device = info->device;
+  r.sample_rate = info->sample_rate;
+  r.period_frames = info->period_frames;
   const double period_s = info->sample_rate ? static_cast<double>(info->period_frames) / info->sample_rate : 0.0;
-  const double p99 = engine.callback_time_quantile(0.99);
+  r.period_ms = 1e3 * period_s;
+  r.latency_reported = info->latency_frames > 0;
+  r.latency_frames = r.latency_reported ? info->latency_frames : static_cast<long>(info->period_frames);
+  r.latency_ms = info->sample_rate ? 1e3 * static_cast<double>(r.latency_frames) / info->sample_rate : 0.0;
+  r.load = monitor_.load(period_s);
+  r.xruns = monitor_.xruns();
+  running_ = r;
+
+  ImGui::Text("running: %s '%s' at %u Hz", r.api.c_str(), r.device.c_str(), r.sample_rate);
+  ImGui::Text("period: %.2f ms (%u frames)", r.period_ms, r.period_frames);
+  if (r.latency_reported)
+    ImGui::TextWrapped("output latency: %.2f ms (%ld frames, as %s reports it)", r.latency_ms, r.latency_frames, r.api.c_str());
+  else
+    ImGui::TextWrapped("output latency: at least %.2f ms (one period; %s reports none)", r.latency_ms, r.api.c_str());
+  if (r.load) {
+    // Past the period a block is late: the device plays silence or the previous block.
+    const bool late = r.load->worst >= 1.0;
+    if (late) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("callback load: %.1f%% of the period on average, %.0f%% at worst (last %.0f s, %llu blocks)",
+                100.0 * r.load->mean, 100.0 * r.load->worst, r.load->window_s,
+                static_cast<unsigned long long>(r.load->blocks));
+    if (late) ImGui::PopStyleColor();
+  } else {
+    ImGui::TextUnformatted("callback load: no block has run since this view was shown");
+  }
+  // A whole minute once the view has been shown that long (to one sample's precision).
+  const bool minute = r.xruns.window_s >= StreamMonitor::kXrunWindowS - StreamMonitor::kSampleEveryS;
+  const std::string when = minute ? std::string("the last minute")
+                                  : "the last " + std::to_string(static_cast<long>(r.xruns.window_s)) +
+                                        " s (counted while this view is shown)";
+  ImGui::TextWrapped("xruns in %s: %llu from the device, %llu of our own (blocks rendered past the period)", when.c_str(),
+              static_cast<unsigned long long>(r.xruns.device), static_cast<unsigned long long>(r.xruns.own));
   ImGui::Text("status: %s", *a.output_status() == playback::OutputStatus::running ? "running" : "LOST, looking for it");
   if (!a.last_problem().empty()) ImGui::TextWrapped("last problem: %s", a.last_problem().c_str());
-  ImGui::Text("callback load: 99%% of blocks within %.0f%% of the period (max %.0f%%)",
-              period_s > 0 ? 100.0 * p99 / period_s : 0.0, period_s > 0 ? 100.0 * engine.max_callback_s / period_s : 0.0);
-  ImGui::Text("xruns: %llu underflows, %llu overruns of our own",
-              static_cast<unsigned long long>(stats.output_underflows), static_cast<unsigned long long>(engine.overruns));
   ImGui::Text("device losses: %llu, reconnects: %llu", static_cast<unsigned long long>(stats.losses),
               static_cast<unsigned long long>(stats.reconnects));
   ImGui::Text("peak output %.2f of full scale, %llu samples limited", engine.peak_output,
