@@ -64,7 +64,7 @@ std::vector<std::string> paper_descriptor_names(std::size_t dims) {
   if (dims < 1 || dims > kMaxDims)
     throw std::invalid_argument("descriptors exist for spaces of 1 to " + std::to_string(kMaxDims) +
                                 " dimensions, not " + std::to_string(dims));
-  std::vector<std::string> names{"friction_mu"};
+  std::vector<std::string> names{kFrictionDescriptor};
   if (dims == 2) names.push_back("log10_weighted_mean_vibration");
   for (std::size_t b = 1; dims >= 3 && b < dims; ++b)
     names.push_back("log10_band_" + std::to_string(b) + "_of_" + std::to_string(dims - 1) +

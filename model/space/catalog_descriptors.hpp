@@ -15,6 +15,9 @@
 
 namespace nibrig::model::space {
 
+// The first descriptor of every space: the Coulomb friction coefficient μ.
+inline constexpr const char* kFrictionDescriptor = "friction_mu";
+
 struct DescriptorTable {
   std::vector<std::string> names;  // one per column
   std::vector<std::string> rows;   // stimulus (pairing) names, "tool/surface"

@@ -45,6 +45,10 @@ inline auto step_reporter(JobControl& control, std::string prefix) {
   };
 }
 
+// Called on a job's own thread as any job ends: the window sets it to wake its idle wait, so that
+// what a job made is shown at once (panel_window.hpp).
+inline std::atomic<void (*)()> job_done_hook{nullptr};
+
 template <typename Result>
 class BackgroundJob {
  public:
@@ -62,6 +66,7 @@ class BackgroundJob {
         error_ = e.what();
       }
       done_.store(true, std::memory_order_release);
+      if (auto hook = job_done_hook.load()) hook();
     });
   }
   // Asks the job to stop and joins it (work checks stop_requested() often).

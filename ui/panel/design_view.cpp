@@ -50,12 +50,11 @@ model::space::Placement placement_of(const SceneTool& t) {
 DesignView::DesignView(PanelAudio& audio, std::filesystem::path catalog, std::filesystem::path forcing,
                        DesignSettings settings)
     : audio_(audio), catalog_(std::move(catalog)), forcing_(std::move(forcing)), settings_(std::move(settings)) {
-  space_ = std::make_unique<SpaceView>(SpaceScene{}, [this](const std::vector<ToolChoice>&, const rt::StrokeRequest&) {
+  space_ = std::make_unique<SpaceView>(SpaceScene{}, [this](const std::vector<ToolChoice>&) {
     if (!space_->chosen().empty()) set_target(space_->chosen().back());
   });
   space_->set_side_panel(false);
   space_->set_overlay([this](ImDrawList* draw, const PlotFrame& frame, int ax, int ay) { draw_overlay(draw, frame, ax, ay); });
-  stroke_.kind = 0;  // a constant speed: the design's sound heard steadily while it changes
 }
 
 DesignView::~DesignView() {
@@ -74,7 +73,7 @@ void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::
   map_ = std::move(map);
   target_.reset();
   search_.reset();
-  update_design();
+  update_design(false);
 }
 
 void DesignView::prepare() {
@@ -118,28 +117,28 @@ void DesignView::prepare() {
 void DesignView::set_design(double fraction, double tip_mm) {
   fraction_ = static_cast<float>(fraction);
   tip_mm_ = static_cast<float>(tip_mm);
-  update_design();
+  update_design(true);
 }
 
 void DesignView::set_target(std::size_t tool) {
   if (tool >= space_->scene().tools.size()) return;
   target_ = tool;
   search_.reset();
-  update_design();
+  update_design(true);
 }
 
 std::string DesignView::surface() const {
   return target_ ? space_->scene().tools[*target_].choice.surface : "office";
 }
 
-void DesignView::update_design() {
+void DesignView::update_design(bool sound) {
   if (!inputs_ || !grid_) return;
   const auto start = std::chrono::steady_clock::now();
   try {
     predicted_ = design::predict_from_grid(inputs_->setup, *grid_, fraction_, tip_mm_ * 1e-3, surface());
     // The sound first: the ear notices a late change, the eye not a placement a millisecond later.
-    if (play_) {
-      audio_.play_now(design::predicted_sound(*predicted_), stroke_.request());
+    if (play_ && sound) {
+      audio_.play_now(design::predicted_sound(*predicted_));
       last_sound_sent_ = std::chrono::steady_clock::now();
     }
     placement_.reset();
@@ -220,7 +219,7 @@ void DesignView::draw() {
       grid_ = std::move(made->grid);
       tip_mm_ = std::clamp(tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
                            static_cast<float>(grid_->axes.tips_m.back() * 1e3));
-      update_design();
+      update_design(false);
       // The interpolation's error against the full FEM, measured here in the background.
       error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
           "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points),
@@ -277,8 +276,8 @@ void DesignView::draw_controls() {
   moved |= ImGui::SliderFloat("tip mm", &tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
                               static_cast<float>(grid_->axes.tips_m.back() * 1e3), "%.2f");
   if (ImGui::Checkbox("play as it moves", &play_) && !play_) audio_.stop();
-  if (play_) moved |= stroke_widgets(stroke_);
-  if (moved) update_design();
+  if (play_ && stroke_widgets(audio_.stroke())) audio_.stroke_changed();
+  if (moved) update_design(true);
   if (predicted_) {
     ImGui::TextWrapped("%s", design::label(predicted_->point).c_str());
     ImGui::Text("mu %.3f, weighted mean %.3g, first mode %.0f Hz", predicted_->mu, predicted_->vibration.weighted_mean,

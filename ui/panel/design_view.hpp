@@ -90,7 +90,9 @@ class DesignView {
   std::pair<ImVec2, ImVec2> mix_slider_rect() const { return mix_slider_; }
 
  private:
-  void update_design();
+  // The prediction (and placement) at the sliders; `sound`: it plays too (a person moved something,
+  // never a space or grid that merely arrived).
+  void update_design(bool sound);
   void draw_controls();
   void draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const;
   std::string surface() const;
@@ -107,7 +109,6 @@ class DesignView {
   std::optional<std::size_t> target_;
   float fraction_ = 0.5f, tip_mm_ = 2.0f;
   bool play_ = true;
-  StrokeChoice stroke_;
   std::optional<model::design::PredictedTool> predicted_;
   std::optional<model::space::Placement> placement_;
   std::optional<model::design::SearchResult> search_;

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "ui/panel/devices_view.hpp"
+#include "ui/panel/frame_pacing.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/panel_options.hpp"
 #include "ui/panel/panel_settings.hpp"
@@ -49,20 +50,16 @@ int interactive(PanelWindow& window, PanelOptions options) {
   if (!options.setup.device) options.setup.device = remembered.device;
   Panel panel(options.setup);
   if (!problem.empty()) panel.set_error(problem);
-  panel.show(options.view_given ? options.view : remembered.view);
-  panel.space_view().stroke() = remembered.stroke;
-  panel.rig_view().choice() = remembered.rig;
+  if (options.view_given) remembered.view = options.view;
+  apply_panel_settings(panel, remembered);
+  FramePacing pacing;
   while (!window.should_close()) {
+    pacing.before_frame(window, panel.idle_wait_s());
     window.begin_frame();
     panel.draw();
     window.end_frame();
   }
-  PanelSettings kept;
-  kept.view = panel.current();
-  kept.device = panel.devices_view().shown_request();
-  kept.space = panel.space_file();
-  kept.stroke = panel.space_view().stroke();
-  kept.rig = panel.rig_view().choice();
+  const PanelSettings kept = panel_settings_of(panel);
   try {
     write_panel_settings(file, kept);
   } catch (const std::exception& e) {

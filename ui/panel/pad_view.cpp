@@ -22,9 +22,7 @@ void PadView::use_tool(const ToolChoice& tool) {
   tool_ = tool;
   std::snprintf(tool_text_, sizeof tool_text_, "%s", tool.tool.c_str());
   std::snprintf(surface_text_, sizeof surface_text_, "%s", tool.surface.c_str());
-  rt::StrokeRequest still;  // no motion until the pen moves
-  still.speed_m_s = 0.0;
-  audio_.play({tool_}, still);
+  audio_.play({tool_}, true);  // no motion until the pen moves
   loaded_ = true;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <stop_token>
 #include <string>
@@ -24,6 +25,10 @@
 namespace nibrig::ui::panel {
 
 namespace {
+
+// The error line's height before it scrolls: a long error is read whole, without pushing the views
+// off a small window.
+constexpr int kErrorLines = 3;
 
 constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices,
                            View::experiment};
@@ -85,10 +90,9 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   sounds.catalog = setup_.catalog;
   sounds.forcing_model = setup_.forcing;
   audio_ = std::make_unique<PanelAudio>(sounds);
-  space_view_ = std::make_unique<SpaceView>(SpaceScene{}, [this](const std::vector<ToolChoice>& tools,
-                                                                  const rt::StrokeRequest& stroke) {
-    audio_->play(tools, stroke);
-  });
+  space_view_ = std::make_unique<SpaceView>(SpaceScene{},
+                                            [this](const std::vector<ToolChoice>& tools) { audio_->play(tools); });
+  space_view_->share_stroke(&audio_->stroke(), [this] { audio_->stroke_changed(); });
   rig_view_ = std::make_unique<RigView>(setup_.catalog, setup_.forcing, sessions_folder());
   pad_view_ = std::make_unique<PadView>(*audio_);
   design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
@@ -110,7 +114,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
       });
   if (setup_.device) {
     devices_view_->set_request(*setup_.device);
-    if (const std::string e = audio_->open(*setup_.device); !e.empty()) error_ = e;
+    if (const std::string e = audio_->open(*setup_.device); !e.empty()) errors_.report(e);
   }
   if (!setup_.space.empty()) load_space(setup_.space);
   else load_default_space();
@@ -184,7 +188,7 @@ void Panel::fit_space(const SpaceFitRequest& r) {
 
 void Panel::file_job(std::string title, std::function<Apply(JobControl&)> work) {
   if (file_job_) {
-    error_ = "wait for " + file_job_->title() + " to finish";
+    errors_.report("wait for " + file_job_->title() + " to finish");
     return;
   }
   notice_.clear();
@@ -193,7 +197,7 @@ void Panel::file_job(std::string title, std::function<Apply(JobControl&)> work) 
 
 void Panel::save_space(const std::filesystem::path& file) {
   if (!space_) {
-    error_ = "there is no space to save yet";
+    errors_.report("there is no space to save yet");
     return;
   }
   file_job("saving the space", [space = *space_, file](JobControl&) -> Apply {
@@ -252,23 +256,27 @@ void Panel::save_forcing(const std::filesystem::path& file) {
 
 void Panel::open_design(const std::filesystem::path& file) {
   if (const std::string e = design_view_->open_prediction(file); !e.empty()) {
-    error_ = e;
+    errors_.report(e);
     return;
   }
+  errors_.clear();
   notice_ = "the design of " + file.string();
   show(View::design);
 }
 
 void Panel::save_design(const std::filesystem::path& file) {
-  if (const std::string e = design_view_->save_prediction(file); !e.empty()) error_ = e;
-  else notice_ = "wrote " + file.string();
+  if (const std::string e = design_view_->save_prediction(file); !e.empty()) {
+    errors_.report(e);
+  } else {
+    errors_.clear();
+    notice_ = "wrote " + file.string();
+  }
 }
 
 void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::filesystem::path catalog,
                         std::filesystem::path forcing) {
   setup_.catalog = std::move(catalog);
   setup_.forcing = std::move(forcing);
-  error_.clear();
   audio_->use_sounds(std::move(sounds));
   rig_view_->set_files(setup_.catalog, setup_.forcing);
   // The design view's grid depends on both: it starts again. The old one stops its work on its
@@ -302,6 +310,7 @@ void Panel::handle_keys() {
   for (int k = 0; k < 3; ++k)
     if (pressed(GLFW_KEY_A + k)) audio_->select(static_cast<std::size_t>(k));
   if (pressed(GLFW_KEY_SPACE)) audio_->stop();
+  if (pressed(GLFW_KEY_F12)) frame_times_window_ = !frame_times_window_;
   if (pressed(GLFW_KEY_ENTER)) space_view_->play_chosen();
 }
 
@@ -324,12 +333,13 @@ void Panel::poll_jobs() {
   std::erase_if(retired_designs_, [](const auto& view) { return !view->working(); });
   if (space_job_ && space_job_->done()) {
     if (auto loaded = space_job_->take_result()) {
-      for (const auto& w : loaded->warnings) error_ = w;
+      errors_.clear();
+      for (const auto& w : loaded->warnings) errors_.report(w);
       design_view_->set_space(loaded->scene, loaded->map);
       space_view_->set_scene(std::move(loaded->scene));
       space_ = std::move(loaded->file);
     } else {
-      error_ = space_job_->error();
+      errors_.report(space_job_->error());
     }
     space_job_.reset();
   }
@@ -337,8 +347,12 @@ void Panel::poll_jobs() {
     auto apply = file_job_->take_result();
     const std::string failed = file_job_->error();
     file_job_.reset();
-    if (apply && *apply) (*apply)(*this);
-    else error_ = failed;
+    if (apply && *apply) {
+      errors_.clear();
+      (*apply)(*this);
+    } else {
+      errors_.report(failed);
+    }
   }
 }
 
@@ -373,6 +387,8 @@ void Panel::draw_menu() {
   }
   if (ImGui::BeginMenu("Help")) {
     if (ImGui::MenuItem("Keys")) keys_window_ = true;
+    if (ImGui::MenuItem("Errors")) errors_window_ = true;
+    ImGui::MenuItem("Frame times", "F12", &frame_times_window_);
     ImGui::EndMenu();
   }
   ImGui::EndMenuBar();
@@ -397,10 +413,35 @@ std::string Panel::status_line() const {
     if (audition.output_status() == playback::OutputStatus::lost)
       device += ": LOST (" + audition.last_problem() + "), looking for it";
   }
+  // The slot heard is marked; the others are loaded, a key away.
+  const auto sounding = audio_->sounding();
   std::string playing;
-  for (std::size_t i = 0; i < audio_->playing().size(); ++i)
-    playing += (i ? ", " : "") + std::string(1, static_cast<char>('A' + i)) + ": " + audio_->names()[i];
-  return device + " | " + (playing.empty() ? "nothing playing" : playing) + " | " + audio_->stroke_description();
+  for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
+    const bool heard = sounding && audition.selected() == i;
+    playing += std::string(i ? ", " : "") + static_cast<char>('A' + i) + ": " + audio_->names()[i] +
+               (heard ? " (sounding)" : "");
+  }
+  if (playing.empty()) playing = "nothing loaded";
+  else if (!sounding) playing = "stopped (" + playing + "; Enter plays again)";
+  const std::string moving = audio_->stroke_description();
+  const std::string stroke = moving == "stopped" ? "stroke: " + audio_->chosen_stroke_description()
+                                                 : moving == "the pad" ? "moved by the pad" : "stroke: " + moving;
+  return device + " | " + playing + " | " + stroke;
+}
+
+void Panel::follow_audio_error() {
+  const std::string& now = audio_->error();
+  if (now == audio_error_seen_) return;
+  if (!now.empty()) errors_.report(now);
+  else if (errors_.current() == audio_error_seen_) errors_.clear();  // the audio's problem is over
+  audio_error_seen_ = now;
+}
+
+float Panel::status_height() const {
+  const float line = ImGui::GetFrameHeightWithSpacing();
+  const float bars = static_cast<float>((space_job_ ? 1 : 0) + (file_job_ ? 1 : 0) + (audio_->making_sounds() ? 1 : 0));
+  const float width = ImGui::GetContentRegionAvail().x;
+  return ImGui::GetStyle().ItemSpacing.y * 2.0f + line * (2.0f + bars) + errors_.height(width, kErrorLines);
 }
 
 void Panel::draw_status() {
@@ -412,21 +453,47 @@ void Panel::draw_status() {
   if (file_job_) ImGui::ProgressBar(static_cast<float>(file_job_->progress()), {-1.0f, 0.0f}, file_job_->message().c_str());
   if (audio_->making_sounds())
     ImGui::ProgressBar(static_cast<float>(audio_->making_progress()), {-1.0f, 0.0f}, audio_->making_message().c_str());
-  const std::string& problem = !error_.empty() ? error_ : audio_->error();
-  if (!problem.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", problem.c_str());
+  if (!errors_.current().empty()) errors_.draw(kErrorLines);
   else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
+  else ImGui::NewLine();
   ImGui::TextUnformatted(status_line().c_str());
   if (audio_->playing().size() > 1) {
+    const auto sounding = audio_->sounding();
     for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
       ImGui::SameLine();
       const char label[2] = {static_cast<char>('A' + i), 0};
+      const bool heard = sounding && audio_->audition().selected() == i;
+      if (heard) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
       if (ImGui::SmallButton(label)) audio_->select(i);
+      if (heard) ImGui::PopStyleColor();
     }
   }
 }
 
+double Panel::idle_wait_s() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool pressed = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
+  if (pressed || ImGui::IsAnyItemActive() || experiment_view_->fullscreen() || pad_view_->drawing() ||
+      audio_->handing_over())
+    return 0.0;
+  if (rig_view_->running()) return current_ == View::rig ? 0.0 : kProgressRefresh_s;
+  const bool working = space_job_ || file_job_ || audio_->making_sounds() || design_view_->preparing() ||
+                       design_view_->measuring_error() ||
+                       experiment_view_->stage() == ExperimentView::Stage::preparing;
+  return working ? kProgressRefresh_s : kIdleRefresh_s;
+}
+
 void Panel::draw() {
+  const auto start = std::chrono::steady_clock::now();
+  draw_views();
+  frame_ms_[frame_at_++ % kFrameTimes] =
+      std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Panel::draw_views() {
   poll_jobs();
+  follow_audio_error();
+  space_view_->set_sounding(audio_->sounding());
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   if (experiment_view_->fullscreen()) {
     // A participant in session sees the study and nothing else: no menu, tabs, status or keys of
@@ -447,7 +514,7 @@ void Panel::draw() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_MenuBar |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
   draw_menu();
-  const float status_height = ImGui::GetFrameHeightWithSpacing() * 3.0f;
+  const float status_height = this->status_height();
   if (ImGui::BeginTabBar("views")) {
     for (View v : kViews) {
       const bool select = requested_ && *requested_ == v;
@@ -473,6 +540,29 @@ void Panel::draw() {
   files_.draw();
   ImGui::End();
   draw_fit_window();
+  draw_help_windows();
+}
+
+void Panel::draw_frame_times() {
+  if (!frame_times_window_) return;
+  const std::size_t n = std::min(frame_at_, kFrameTimes);
+  float sum = 0.0f, worst = 0.0f;
+  for (std::size_t i = 0; i < n; ++i) sum += frame_ms_[i], worst = std::max(worst, frame_ms_[i]);
+  ImGui::SetNextWindowPos({ImGui::GetMainViewport()->WorkSize.x - 330.0f, 40.0f}, ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Frame times", &frame_times_window_, ImGuiWindowFlags_AlwaysAutoResize)) {
+    const float rate = ImGui::GetIO().Framerate;
+    ImGui::Text("%.1f frames/s (%.1f ms apart)", rate, rate > 0.0f ? 1000.0f / rate : 0.0f);
+    ImGui::Text("the panel's widgets: %.2f ms a frame (worst %.2f) over the last %zu", n ? sum / n : 0.0f, worst, n);
+    const double wait = idle_wait_s();
+    if (wait > 0.0) ImGui::Text("idle: drawn on input, else every %.1f s", wait);
+    else ImGui::TextUnformatted("something moves: drawn at the display's rate");
+  }
+  ImGui::End();
+}
+
+void Panel::draw_help_windows() {
+  errors_.draw_history(&errors_window_);
+  draw_frame_times();
   if (keys_window_) {
     if (ImGui::Begin("Keys", &keys_window_, ImGuiWindowFlags_AlwaysAutoResize)) {
       ImGui::TextUnformatted(
@@ -481,6 +571,7 @@ void Panel::draw() {
           "Space         stop\n"
           "Ctrl+1 ... 6  space, design, rig, pad, devices, experiment\n"
           "Ctrl+O        open a space\n"
+          "F12           frame times\n"
           "(not while a text field has the keyboard)");
     }
     ImGui::End();

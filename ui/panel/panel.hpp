@@ -5,6 +5,7 @@
 // sounds and the rig run on worker threads (background_job.hpp), the sound on the audio thread.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "model/space/descriptor_map.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/design_view.hpp"
+#include "ui/panel/error_line.hpp"
 #include "ui/panel/file_dialog.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/space_fit_form.hpp"
@@ -52,10 +54,12 @@ class Panel {
   View current() const { return current_; }
   // True once nothing is loading in the background for the view shown (screenshots wait for it).
   bool settled() const;
-  const std::string& error() const { return error_; }
-  // Shown in the error line until something else goes wrong (e.g. a settings file that could not
-  // be read).
-  void set_error(std::string error) { error_ = std::move(error); }
+  // The error line: what went wrong last, until something succeeds (then empty); every error
+  // stays in errors().history() (Help > Errors).
+  const std::string& error() const { return errors_.current(); }
+  const ErrorLine& errors() const { return errors_; }
+  // Shown in the error line (e.g. a settings file that could not be read).
+  void set_error(std::string error) { errors_.report(std::move(error)); }
   // The space file open now (empty: none yet, the default, or a fit not saved).
   const std::filesystem::path& space_file() const { return space_file_; }
   // The catalog and forcing model in use (empty: the bundled catalog, the demo's forcing model).
@@ -88,6 +92,17 @@ class Panel {
   // The status line under the views: the device and its state, what plays, the stroke.
   std::string status_line() const;
 
+  // How long the window may wait for input before the next frame (frame_pacing.hpp): 0 while
+  // something moves (the rig's waterfall, a drag, the pad, a participant's session), a tenth of a
+  // second while a job's progress is shown, else kIdleRefresh_s for the live readouts (the
+  // device's state, the status line).
+  static constexpr double kIdleRefresh_s = 0.5, kProgressRefresh_s = 0.1;
+  double idle_wait_s() const;
+  // The frame-time readout (Help > Frame times, or F12): frames per second and what the panel's
+  // own widgets cost per frame.
+  bool frame_times_shown() const { return frame_times_window_; }
+  void show_frame_times(bool shown) { frame_times_window_ = shown; }
+
   SpaceView& space_view() { return *space_view_; }
   PanelAudio& audio() { return *audio_; }
   RigView& rig_view() { return *rig_view_; }
@@ -110,6 +125,13 @@ class Panel {
   void draw_menu();
   void draw_fit_window();
   void draw_status();
+  // Height the status block under the views takes this frame (the error line wraps).
+  float status_height() const;
+  void draw_help_windows();
+  void draw_frame_times();
+  void draw_views();
+  // The audio's own error joins the error line when it changes.
+  void follow_audio_error();
 
   PanelSetup setup_;
   std::filesystem::path space_file_;
@@ -126,11 +148,16 @@ class Panel {
   std::optional<model::space::SpaceFile> space_;  // the space shown, for Save space as
   View current_ = View::space;
   std::optional<View> requested_;
-  std::string error_, notice_;
+  ErrorLine errors_;
+  std::string notice_, audio_error_seen_;
   FileDialog files_;
   SpaceFitRequest fit_request_;
   bool showing_default_ = false;
-  bool fit_window_ = false, keys_window_ = false;
+  bool fit_window_ = false, keys_window_ = false, errors_window_ = false, frame_times_window_ = false;
+  // The panel's widget time per frame (ms), the last kFrameTimes frames, for the readout.
+  static constexpr std::size_t kFrameTimes = 120;
+  std::array<float, kFrameTimes> frame_ms_{};
+  std::size_t frame_at_ = 0;
 };
 
 }  // namespace nibrig::ui::panel

@@ -9,7 +9,9 @@ namespace nibrig::ui::panel {
 
 PanelAudio::PanelAudio(model::design::ToolSoundOptions sounds)
     : audition_(rt::EngineSettings{}),
-      sounds_(std::make_shared<model::design::ToolSounds>(std::move(sounds))) {}
+      sounds_(std::make_shared<model::design::ToolSounds>(std::move(sounds))) {
+  chosen_description_ = rt::make_stroke(stroke_choice_.request()).description;
+}
 
 PanelAudio::~PanelAudio() {
   job_.reset();  // stops and joins the job before the sounds it uses go
@@ -53,7 +55,27 @@ std::string PanelAudio::use_actuator(const std::string& name_or_file) {
   }
 }
 
-void PanelAudio::play(const std::vector<ToolChoice>& tools, const rt::StrokeRequest& stroke) {
+void PanelAudio::stroke_changed() {
+  try {
+    rt::Stroke made = rt::make_stroke(stroke_choice_.request());  // a bad trajectory file, said now
+    chosen_description_ = made.description;
+    if (driver_ != Driver::stroke || lent_) return;
+    stroke_description_ = std::move(made.description);
+    audition_.attach(std::move(made.source));
+    error_.clear();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+void PanelAudio::attach_stroke() {
+  rt::Stroke made = rt::make_stroke(stroke_choice_.request());
+  stroke_description_ = made.description;
+  audition_.attach(std::move(made.source));
+  driver_ = Driver::stroke;
+}
+
+void PanelAudio::play(const std::vector<ToolChoice>& tools, bool at_rest) {
   if (tools.empty() || tools.size() > audition_.names().size()) {
     error_ = "choose one to " + std::to_string(audition_.names().size()) + " tools to play";
     return;
@@ -61,21 +83,21 @@ void PanelAudio::play(const std::vector<ToolChoice>& tools, const rt::StrokeRequ
   error_.clear();
   try {  // refused before any meshing: a pairing the catalog lacks, a malformed design point
     for (const auto& t : tools) sounds_->check(t.tool, t.surface);
-    rt::make_stroke(stroke);  // a bad trajectory file or speed, said now
+    rt::make_stroke(stroke_choice_.request());  // a bad trajectory file or speed, said now
   } catch (const std::exception& e) {
     error_ = e.what();
     return;
   }
   // One job at a time (ToolSounds loads its stylus and forcing model lazily, on one thread): a
   // request made while sounds are being made waits for them, and only the newest waiting one runs.
-  pending_ = Request{tools, stroke};
+  pending_ = Request{tools, at_rest};
   start_pending();
 }
 
 void PanelAudio::start_pending() {
   if (job_ || !pending_) return;
   requested_ = pending_->tools;
-  stroke_ = pending_->stroke;
+  requested_at_rest_ = pending_->at_rest;
   const auto tools = pending_->tools;
   pending_.reset();
   auto sounds = sounds_;
@@ -92,7 +114,7 @@ void PanelAudio::start_pending() {
 }
 
 void PanelAudio::poll() {
-  audition_.pump();  // what the engine's queue could not take last frame
+  waiting_commands_ = audition_.pump();  // what the engine's queue could not take last frame
   std::erase_if(retired_, [](const auto& job) { return job->done(); });
   if (lent_) return;
   if (!job_ || !job_->done()) return;
@@ -111,25 +133,19 @@ void PanelAudio::poll() {
     for (std::size_t i = 0; i < made->size(); ++i)
       audition_.load(i, {(*made)[i].name, (*made)[i].modal, (*made)[i].spectrum}, seed_ + i);
     audition_.select(0);
-    rt::Stroke stroke = rt::make_stroke(stroke_);
-    stroke_description_ = stroke.description;
-    audition_.attach(std::move(stroke.source));
+    if (requested_at_rest_) contact(0.0, 0.0);
+    else attach_stroke();  // the stroke as it is now, though it changed while the sounds were made
     playing_ = requested_;
   } catch (const std::exception& e) {
     error_ = e.what();
   }
 }
 
-void PanelAudio::play_now(const model::design::ToolSound& sound, const rt::StrokeRequest& stroke) {
+void PanelAudio::play_now(const model::design::ToolSound& sound) {
   try {
-    const bool moving = !playing_.empty() || stroke_description_ == "the pad";
     audition_.load(0, {sound.name, sound.modal, sound.spectrum}, seed_);
     if (audition_.selected() != 0) audition_.select(0);
-    if (!moving) {
-      rt::Stroke s = rt::make_stroke(stroke);
-      stroke_description_ = s.description;
-      audition_.attach(std::move(s.source));
-    }
+    if (driver_ == Driver::none) attach_stroke();
     playing_ = {ToolChoice{sound.name, ""}};
     error_.clear();
   } catch (const std::exception& e) {
@@ -149,13 +165,36 @@ void PanelAudio::select(std::size_t slot) {
 void PanelAudio::contact(double speed_m_s, double force_n) {
   try {
     audition_.set_contact(speed_m_s, force_n);
-    stroke_description_ = "the pad";
+    driver_ = Driver::pad;
   } catch (const std::exception& e) {
     error_ = e.what();
   }
 }
 
-void PanelAudio::stop() { contact(0.0, 0.0); }
+void PanelAudio::stop() {
+  try {
+    audition_.set_contact(0.0, 0.0);  // at rest: the voices ring out and fall silent
+    driver_ = Driver::none;
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+std::string PanelAudio::stroke_description() const {
+  switch (driver_) {
+    case Driver::stroke: return stroke_description_;
+    case Driver::pad: return "the pad";
+    case Driver::none: break;
+  }
+  return "stopped";
+}
+
+std::optional<ToolChoice> PanelAudio::sounding() const {
+  if (driver_ == Driver::none || lent_) return std::nullopt;
+  const std::size_t slot = audition_.selected();
+  if (slot >= playing_.size()) return std::nullopt;
+  return playing_[slot];
+}
 
 playback::LiveAudition& PanelAudio::lend_audition() {
   stop();

@@ -13,6 +13,7 @@
 #include "playback/live_audition.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/panel/background_job.hpp"
+#include "ui/panel/stroke_choice.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -43,21 +44,32 @@ class PanelAudio {
   // Returns the error, if any.
   std::string use_actuator(const std::string& name_or_file);
 
-  // Plays these one to three tools (slot i = tools[i], the first selected) with `stroke`: their
-  // sounds are made in the background and loaded when ready (poll()).
-  void play(const std::vector<ToolChoice>& tools, const rt::StrokeRequest& stroke);
+  // The panel's one stroke: every view plays it. After it is edited, stroke_changed() makes what
+  // sounds follow it at once (a tool stroked keeps sounding under the new stroke); a stroke that
+  // cannot be made (a trajectory file that does not read) is an error and changes nothing.
+  StrokeChoice& stroke() { return stroke_choice_; }
+  const StrokeChoice& stroke() const { return stroke_choice_; }
+  void stroke_changed();
+
+  // Plays these one to three tools (slot i = tools[i], the first selected) with the stroke: their
+  // sounds are made in the background and loaded when ready (poll()). `at_rest`: loaded and held
+  // still instead, for a live contact (the pad) to move.
+  void play(const std::vector<ToolChoice>& tools, bool at_rest = false);
   // Plays `sound` at once in slot 0 (built here: about a millisecond), crossfaded from what played;
-  // the stroke keeps running, or `stroke` starts when nothing was moving the engine. The design
+  // what moves the engine keeps moving it, or the stroke starts when nothing did. The design
   // view's path: its sounds come from the design-response grid, not from ToolSounds.
-  void play_now(const model::design::ToolSound& sound, const rt::StrokeRequest& stroke);
+  void play_now(const model::design::ToolSound& sound);
   // Switches to slot i of what is playing (A/B, triplet).
   void select(std::size_t slot);
   // A live contact (the pad): replaces the stroke until play() attaches one again.
   void contact(double speed_m_s, double force_n);
+  // Silence: the engine is held at rest until something is played again.
   void stop();
 
   // Called every frame: loads the sounds that are ready. Never blocks.
   void poll();
+  // Commands the engine's queue has not taken yet: poll() must run again soon to hand them over.
+  bool handing_over() const { return waiting_commands_ > 0; }
   bool making_sounds() const { return job_ != nullptr || pending_.has_value(); }
   double making_progress() const { return job_ ? job_->progress() : 1.0; }
   std::string making_message() const { return job_ ? job_->message() : std::string(); }
@@ -65,7 +77,12 @@ class PanelAudio {
   const std::vector<ToolChoice>& playing() const { return playing_; }
   const std::vector<std::string>& names() const { return audition_.names(); }
   const std::string& error() const { return error_; }
-  std::string stroke_description() const { return stroke_description_; }
+  // What moves the engine: the stroke's description, "the pad", or "stopped".
+  std::string stroke_description() const;
+  // The tool heard now (the selected slot), none when stopped or nothing is loaded.
+  std::optional<ToolChoice> sounding() const;
+  // The stroke chosen, in words ("constant 250.00 mm/s", "sweep ..."), whether or not it plays.
+  const std::string& chosen_stroke_description() const { return chosen_description_; }
 
   // Lends the audition to the experiment view, which loads and plays a trial's three stimuli in
   // its slots while a participant is in session: what played stops and sounds still being made are
@@ -83,22 +100,28 @@ class PanelAudio {
 
  private:
   using Sounds = std::vector<model::design::ToolSound>;
-  struct Request {
-    std::vector<ToolChoice> tools;
-    rt::StrokeRequest stroke;
-  };
+  // What moves the engine now.
+  enum class Driver { none, stroke, pad };
   void start_pending();
+  void attach_stroke();
   playback::LiveAudition audition_;
   std::shared_ptr<model::design::ToolSounds> sounds_;  // shared with the job that uses it
   std::unique_ptr<BackgroundJob<Sounds>> job_;
   std::vector<std::unique_ptr<BackgroundJob<Sounds>>> retired_;  // superseded by use_sounds, finishing
+  struct Request {
+    std::vector<ToolChoice> tools;
+    bool at_rest = false;
+  };
   std::optional<Request> pending_;
+  bool requested_at_rest_ = false;
   std::vector<ToolChoice> requested_, playing_;
-  rt::StrokeRequest stroke_;
-  std::string stroke_description_;
+  StrokeChoice stroke_choice_;
+  Driver driver_ = Driver::none;
+  std::string stroke_description_, chosen_description_;
   std::string error_;
   std::uint64_t seed_ = 1;
   bool lent_ = false;
+  std::size_t waiting_commands_ = 0;
 };
 
 }  // namespace nibrig::ui::panel

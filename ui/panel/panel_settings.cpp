@@ -9,6 +9,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/finite_output.hpp"
+#include "ui/panel/devices_view.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -105,6 +106,23 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup}};
   std::filesystem::create_directories(file.parent_path());
   model::io::write_file_atomically(file, model::io::json_text(j, file));
+}
+
+void apply_panel_settings(Panel& panel, const PanelSettings& settings) {
+  panel.show(settings.view);
+  panel.audio().stroke() = settings.stroke;
+  panel.audio().stroke_changed();
+  panel.rig_view().choice() = settings.rig;
+}
+
+PanelSettings panel_settings_of(Panel& panel) {
+  PanelSettings kept;
+  kept.view = panel.current();
+  kept.device = panel.devices_view().shown_request();
+  kept.space = panel.space_file();
+  kept.stroke = panel.audio().stroke();
+  kept.rig = panel.rig_view().choice();
+  return kept;
 }
 
 }  // namespace nibrig::ui::panel

@@ -28,4 +28,9 @@ std::filesystem::path panel_settings_file();
 PanelSettings read_panel_settings(const std::filesystem::path& file);
 void write_panel_settings(const std::filesystem::path& file, const PanelSettings& settings);
 
+// What a panel shows of `settings` once it runs (the view, the stroke every view plays, the rig's
+// choice; the device and space are PanelSetup's), and what it would remember now.
+void apply_panel_settings(Panel& panel, const PanelSettings& settings);
+PanelSettings panel_settings_of(Panel& panel);
+
 }  // namespace nibrig::ui::panel

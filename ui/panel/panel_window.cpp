@@ -6,6 +6,7 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "backends/imgui_impl_glfw.h"
 #include "backends/imgui_impl_opengl3.h"
 #include "imgui.h"
+#include "ui/panel/background_job.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -44,6 +46,7 @@ PanelWindow::PanelWindow(const WindowSettings& settings) {
     glfwTerminate();
     throw std::runtime_error("the panel cannot open an OpenGL 3.3 core window: " + why);
   }
+  glfwSetWindowSizeLimits(window_, kMinWidth, kMinHeight, GLFW_DONT_CARE, GLFW_DONT_CARE);
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(settings.vsync ? 1 : 0);
   IMGUI_CHECKVERSION();
@@ -54,9 +57,11 @@ PanelWindow::PanelWindow(const WindowSettings& settings) {
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
+  job_done_hook = &PanelWindow::wake;
 }
 
 PanelWindow::~PanelWindow() {
+  job_done_hook = nullptr;
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -65,6 +70,15 @@ PanelWindow::~PanelWindow() {
 }
 
 bool PanelWindow::should_close() const { return glfwWindowShouldClose(window_); }
+
+bool PanelWindow::wait_events(double timeout_s) {
+  const auto start = std::chrono::steady_clock::now();
+  glfwWaitEventsTimeout(timeout_s);
+  // GLFW does not say why the wait ended: one that ended early had an event.
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < timeout_s * 0.9;
+}
+
+void PanelWindow::wake() { glfwPostEmptyEvent(); }
 
 void PanelWindow::begin_frame(const std::function<void(ImGuiIO&)>& input) {
   glfwPollEvents();

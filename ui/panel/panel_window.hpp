@@ -38,6 +38,13 @@ class PanelWindow {
   // Renders the frame; with `screenshot` non-empty, writes it there as a PNG first (throws naming
   // the file when it cannot be written). Then shows it.
   void end_frame(const std::filesystem::path& screenshot = {});
+  // Sleeps until input arrives or `timeout_s` passes (an idle panel waits here instead of drawing);
+  // true when input (or a wake()) ended the wait. The events are then handled by begin_frame.
+  bool wait_events(double timeout_s);
+  // Ends a wait_events() from any thread (a job that finished has something to show).
+  static void wake();
+  // The smallest size the window may take: the layout is made to hold at it.
+  static constexpr int kMinWidth = 800, kMinHeight = 500;
   int framebuffer_width() const;
   int framebuffer_height() const;
 

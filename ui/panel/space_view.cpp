@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "model/space/catalog_descriptors.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
@@ -18,6 +19,7 @@ constexpr ImU32 kPalette[] = {IM_COL32(86, 180, 233, 255), IM_COL32(230, 159, 0,
                               IM_COL32(0, 114, 178, 255),  IM_COL32(200, 200, 200, 255)};
 
 constexpr ImU32 kPlotBackground = IM_COL32(20, 20, 24, 255);
+constexpr ImU32 kSoundingColour = IM_COL32(110, 230, 120, 255);
 
 Marker marker_of(const std::string& kind) {
   if (kind == "printed") return Marker::square;
@@ -31,31 +33,6 @@ double coordinate(const SceneTool& t, int axis) {
 }
 
 }  // namespace
-
-rt::StrokeRequest StrokeChoice::request() const {
-  rt::StrokeRequest r;
-  if (kind == 0) r.speed_m_s = speed_mm_s * 1e-3;
-  if (kind == 2) r.trajectory = trajectory;
-  r.force_n = force_n;
-  return r;
-}
-
-bool stroke_widgets(StrokeChoice& c) {
-  bool changed = false;
-  const char* kinds[] = {"constant speed", "the rig's sweep", "an artist's trajectory"};
-  changed |= ImGui::Combo("stroke", &c.kind, kinds, 3);
-  if (c.kind == 0) changed |= ImGui::SliderFloat("speed mm/s", &c.speed_mm_s, 17.0f, 250.0f, "%.0f");
-  if (c.kind == 2) {
-    char path[512];
-    std::snprintf(path, sizeof path, "%s", c.trajectory.c_str());
-    if (ImGui::InputText("trajectory", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
-      c.trajectory = path;
-      changed = true;
-    }
-  }
-  changed |= ImGui::SliderFloat("force N", &c.force_n, 0.5f, 4.0f, "%.1f");
-  return changed;
-}
 
 SpaceView::SpaceView(SpaceScene scene, Play play) : play_(std::move(play)) { set_scene(std::move(scene)); }
 
@@ -177,6 +154,10 @@ void SpaceView::draw_plot(ImVec2 size) {
       draw->AddCircle(p, 10.0f, IM_COL32(255, 255, 255, 255), 20, 2.0f);
       draw->AddText({p.x + 10.0f, p.y - 18.0f}, IM_COL32(255, 255, 255, 255), letter);
     }
+    if (sounding_ && *sounding_ == t.choice) {  // the one heard now: a second, wider ring in green
+      draw->AddCircle(p, 15.0f, kSoundingColour, 24, 3.0f);
+      draw->AddText({p.x + 17.0f, p.y - 6.0f}, kSoundingColour, "sounding");
+    }
   }
   if (overlay_) {
     draw->PushClipRect(origin, {origin.x + plot.x, origin.y + plot.y}, true);
@@ -217,7 +198,7 @@ void SpaceView::play_chosen() {
   if (chosen_.empty() || !play_) return;
   std::vector<ToolChoice> tools;
   for (std::size_t c : chosen_) tools.push_back(scene_.tools[c].choice);
-  play_(tools, stroke_.request());
+  play_(tools);
 }
 
 void SpaceView::draw_regions(ImDrawList* draw, bool one_d) const {
@@ -239,7 +220,8 @@ void SpaceView::draw_tooltip(const SceneTool& t) const {
   ImGui::Text("%s, %s", t.kind.c_str(), t.judged ? "judged" : "placed from its descriptors");
   if (t.mu) ImGui::Text("mu %.3f", *t.mu);
   if (t.noise_sigma) ImGui::Text("judged with noise sigma %.2f (1 = typical)", *t.noise_sigma);
-  for (const auto& [name, value] : t.descriptors) ImGui::Text("%s %.3g", name.c_str(), value);
+  for (const auto& [name, value] : t.descriptors)
+    if (!(t.mu && name == model::space::kFrictionDescriptor)) ImGui::Text("%s %.3g", name.c_str(), value);
   ImGui::EndTooltip();
 }
 
@@ -252,10 +234,15 @@ void SpaceView::draw_side() {
     ImGui::Combo("y axis", &axis_y_, names.data(), dims);
   }
   section("Play");
-  stroke_widgets(stroke_);
+  if (stroke_ && stroke_widgets(*stroke_) && stroke_changed_) stroke_changed_();
   ImGui::TextWrapped("%s", hint_.c_str());
-  for (std::size_t k = 0; k < chosen_.size(); ++k)
-    ImGui::BulletText("%c: %s", static_cast<char>('A' + k), scene_.tools[chosen_[k]].label.c_str());
+  for (std::size_t k = 0; k < chosen_.size(); ++k) {
+    const SceneTool& t = scene_.tools[chosen_[k]];
+    const bool sounding = sounding_ && *sounding_ == t.choice;
+    // Wrapped, not cut: a long tool name is read whole at any width.
+    ImGui::Bullet();
+    ImGui::TextWrapped("%c: %s%s", static_cast<char>('A' + k), t.label.c_str(), sounding ? "  (sounding)" : "");
+  }
   if (!chosen_.empty() && ImGui::Button("Play again")) play_chosen();
   section("Tools");
   ImGui::Text("%zu tools, %d dimension%s", scene_.tools.size(), dims, dims == 1 ? "" : "s");

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "model/space/bootstrap.hpp"
-#include "rt/stroke_request.hpp"
-#include "ui/panel/panel_audio.hpp"
 #include "ui/panel/cached_layer.hpp"
+#include "ui/panel/panel_audio.hpp"
 #include "ui/panel/plot_frame.hpp"
+#include "ui/panel/stroke_choice.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -39,21 +39,10 @@ struct SpaceScene {
   std::string model_reason;           // why that model
 };
 
-// How a stroke is chosen in the views that play tools.
-struct StrokeChoice {
-  int kind = 1;  // 0 constant speed, 1 the rig's sweep, 2 an artist's trajectory
-  float speed_mm_s = 100.0f;
-  float force_n = 2.2f;
-  std::string trajectory;
-  rt::StrokeRequest request() const;
-};
-// Its widgets; true when it changed.
-bool stroke_widgets(StrokeChoice& choice);
-
 class SpaceView {
  public:
-  // `play` is called with one to three tools and the stroke when a person asks to hear them.
-  using Play = std::function<void(const std::vector<ToolChoice>&, const rt::StrokeRequest&)>;
+  // `play` is called with one to three tools when a person asks to hear them.
+  using Play = std::function<void(const std::vector<ToolChoice>&)>;
   SpaceView(SpaceScene scene, Play play);
 
   void draw();
@@ -74,9 +63,17 @@ class SpaceView {
   int axis_x() const { return axis_x_; }
   int axis_y() const { return axis_y_; }
   void set_axes(int x, int y);
-  // Plays the chosen tools again with the stroke shown (the "Play again" button, the Enter key).
+  // Plays the chosen tools again (the "Play again" button, the Enter key).
   void play_chosen();
-  StrokeChoice& stroke() { return stroke_; }
+  // The side panel edits this stroke (the panel's one setting); `changed` is called when it does.
+  // None: the side panel shows no stroke.
+  void share_stroke(StrokeChoice* stroke, std::function<void()> changed) {
+    stroke_ = stroke;
+    stroke_changed_ = std::move(changed);
+  }
+  // The tool sounding now (marked in the plot and the side panel), if it is one of the scene's.
+  void set_sounding(std::optional<ToolChoice> tool) { sounding_ = std::move(tool); }
+  const std::optional<ToolChoice>& sounding() const { return sounding_; }
   // The colour tools on that surface are drawn in (alpha 0-255).
   ImU32 surface_colour(const std::string& surface, int alpha) const;
   // Where tool i is drawn on the screen (after a draw()).
@@ -94,7 +91,9 @@ class SpaceView {
   std::optional<std::size_t> hovered_;
   std::vector<std::size_t> chosen_;
   std::optional<PlotFrame> frame_;
-  StrokeChoice stroke_;
+  StrokeChoice* stroke_ = nullptr;
+  std::function<void()> stroke_changed_;
+  std::optional<ToolChoice> sounding_;
   CachedLayer regions_;
   Overlay overlay_;
   bool side_panel_ = true;

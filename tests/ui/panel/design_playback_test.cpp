@@ -59,6 +59,8 @@ TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds
   setup.device = DeviceRequest{"jack", "system", 1, 64};
   setup.design.error_points = 1;
   Panel panel(setup);
+  panel.audio().stroke() = StrokeChoice{0, 100.0f, 2.2f, {}};  // the offline render's constant stroke
+  panel.audio().stroke_changed();
   panel.show(View::design);
   auto& view = panel.design_view();
   const auto frame = [&](const std::function<void(ImGuiIO&)>& input = {}) {

@@ -66,7 +66,8 @@ TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameB
   PlaybackSession s(setup);
   ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
   ASSERT_TRUE(s.frames_until([&] { return s.panel.settled(); }, 60s));
-  EXPECT_EQ(s.panel.status_line().rfind("jack system | nothing playing", 0), 0u) << s.panel.status_line();
+  EXPECT_EQ(s.panel.status_line().rfind("jack system | ", 0), 0u) << s.panel.status_line();
+  EXPECT_FALSE(s.panel.audio().sounding().has_value());
   EXPECT_EQ(s.recorded_rms(4800), 0.0);  // nothing loaded: exact silence
 
   // A click on cryon on office paper: its sound is made (the stylus meshed) and it plays the sweep.
@@ -74,6 +75,10 @@ TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameB
   ASSERT_TRUE(s.frames_until([&] { return !s.panel.audio().playing().empty(); }, 300s)) << s.panel.audio().error();
   EXPECT_EQ(s.panel.audio().playing()[0], (ToolChoice{"cryon", "office"}));
   EXPECT_NE(s.panel.status_line().find("A: cryon"), std::string::npos) << s.panel.status_line();
+  // The one sounding is marked where a person looks: the status line and the space view.
+  EXPECT_EQ(s.panel.audio().sounding(), (ToolChoice{"cryon", "office"}));
+  s.frame();
+  EXPECT_EQ(s.panel.space_view().sounding(), (ToolChoice{"cryon", "office"}));
   // The crayon's sweep at the default gain: well above 1e-3 of full scale (LiveAudition's test).
   const double playing = s.recorded_rms(24000);
   EXPECT_GT(playing, 1e-3);

@@ -34,7 +34,6 @@ SpaceScene three_tools(std::size_t dims) {
 
 struct Played {
   std::vector<std::vector<ToolChoice>> calls;
-  std::vector<rt::StrokeRequest> strokes;
 };
 
 TEST(SpaceView, DrawsEachToolWhereTheSpacePlacesItWithEqualUnitsOnBothAxes) {
@@ -52,15 +51,10 @@ TEST(SpaceView, DrawsEachToolWhereTheSpacePlacesItWithEqualUnitsOnBothAxes) {
   EXPECT_NEAR((a.x - c.x) / (a.y - c.y), 1.0, 0.02);
 }
 
-TEST(SpaceView, AClickPlaysThatToolWithTheChosenStroke) {
+TEST(SpaceView, AClickPlaysThatTool) {
   testing::HeadlessImGui imgui;
   Played played;
-  SpaceView view(three_tools(2), [&](const std::vector<ToolChoice>& tools, const rt::StrokeRequest& stroke) {
-    played.calls.push_back(tools);
-    played.strokes.push_back(stroke);
-  });
-  view.stroke().kind = 0;  // constant speed
-  view.stroke().speed_mm_s = 80.0f;
+  SpaceView view(three_tools(2), [&](const std::vector<ToolChoice>& tools) { played.calls.push_back(tools); });
   imgui.frame([&] { view.draw(); });
   const ImVec2 p = *view.screen_position(1);
   imgui.mouse_to({p.x + 3.0f, p.y - 2.0f});  // near enough: within the 9 px a person aims with
@@ -69,9 +63,6 @@ TEST(SpaceView, AClickPlaysThatToolWithTheChosenStroke) {
   imgui.click({p.x + 3.0f, p.y - 2.0f}, [&] { view.draw(); });
   ASSERT_EQ(played.calls.size(), 1u);
   EXPECT_EQ(played.calls[0], (std::vector<ToolChoice>{{"vero4", "office"}}));
-  ASSERT_TRUE(played.strokes[0].speed_m_s.has_value());
-  EXPECT_NEAR(*played.strokes[0].speed_m_s, 0.080, 1e-9);
-  EXPECT_NEAR(*played.strokes[0].force_n, 2.2, 1e-6);
   // Away from every tool: nothing is hovered and a click plays nothing.
   const ImVec2 corner{view.frame()->origin().x + 2.0f, view.frame()->origin().y + view.frame()->size().y - 2.0f};
   imgui.click(corner, [&] { view.draw(); });
@@ -84,7 +75,7 @@ TEST(SpaceView, ShiftClicksBuildAComparisonOfUpToThree) {
   Played played;
   SpaceScene scene = three_tools(2);
   scene.tools.push_back(tool("stab", "note", {1.0, -2.0}));
-  SpaceView view(scene, [&](const std::vector<ToolChoice>& tools, const rt::StrokeRequest&) {
+  SpaceView view(scene, [&](const std::vector<ToolChoice>& tools) {
     played.calls.push_back(tools);
   });
   imgui.frame([&] { view.draw(); });

@@ -1,0 +1,28 @@
+// When the panel draws a frame: at the display's rate while something moves, else only on input,
+// with a timeout for the live readouts. An idle panel drawing at full rate kept half a core busy
+// under Xvfb for a picture that did not change.
+#pragma once
+
+#include "ui/panel/panel_window.hpp"
+
+namespace nibrig::ui::panel {
+
+class FramePacing {
+ public:
+  // Frames drawn at once after input, before waiting again: ImGui shows a click's or hover's
+  // effect a frame or two after the event.
+  static constexpr int kSettleFrames = 3;
+
+  // Before each frame. `wait_s` is how long the panel may wait for input (Panel::idle_wait_s(): 0
+  // while something moves): returns at once for 0 and for kSettleFrames after input, else sleeps
+  // in the window's event wait until input or the timeout.
+  void before_frame(PanelWindow& window, double wait_s);
+  // Whether the last frame followed an idle wait (the frame-time readout says so).
+  bool waited() const { return waited_; }
+
+ private:
+  int settle_ = kSettleFrames;
+  bool waited_ = false;
+};
+
+}  // namespace nibrig::ui::panel
