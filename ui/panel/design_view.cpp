@@ -37,6 +37,17 @@ std::vector<std::pair<double, double>> spread_cell_centres(const design::GridAxe
   return picked;
 }
 
+// "fine grid: 5 of 23 designs solved, about 1 min 10 s left", the time from the rate so far.
+std::string grid_progress_text(const std::string& step, std::size_t done, std::size_t total, double elapsed_s) {
+  std::string text = step + ": " + std::to_string(done) + " of " + std::to_string(total) + " designs solved";
+  if (done == 0 || done >= total) return text + (done == 0 ? " (the first sets the pace)" : "");
+  const long left = std::lround(elapsed_s / static_cast<double>(done) * static_cast<double>(total - done));
+  char eta[48];
+  if (left >= 60) std::snprintf(eta, sizeof eta, ", about %ld min %02ld s left", left / 60, left % 60);
+  else std::snprintf(eta, sizeof eta, ", about %ld s left", left);
+  return text + eta;
+}
+
 model::space::Placement placement_of(const SceneTool& t) {
   model::space::Placement p;
   p.mean = t.region.mean;
@@ -78,8 +89,10 @@ void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::
 
 void DesignView::prepare() {
   if (inputs_ || job_) return;
+  coarse_handover_ = std::make_shared<CoarseHandover>();
   job_ = std::make_unique<BackgroundJob<DesignInputs>>(
-      "design grid", [catalog = catalog_, forcing = forcing_, s = settings_](JobControl& control) {
+      "design grid", [catalog = catalog_, forcing = forcing_, s = settings_,
+                      handover = coarse_handover_](JobControl& control) {
         model::forcing::ForcingInputOptions options;
         options.catalog = catalog;
         options.mesh_size = s.mesh_size_m;
@@ -100,14 +113,24 @@ void DesignView::prepare() {
         }
         const auto axes = design::even_axes(s.material_a, s.material_b, s.fraction_points, s.min_tip_m, s.max_tip_m,
                                             s.tip_points);
-        control.message("solving the designs of the grid (cached once solved)");
+        control.message("looking for the design grid in the user cache");
+        // The time left, measured as the step goes: this machine's own rate, whatever its load.
+        auto step_start = std::chrono::steady_clock::now();
+        std::string step;
+        const model::numeric::StepProgress progress = [&](const std::string& name, std::size_t done, std::size_t total) {
+          if (name != step) step = name, step_start = std::chrono::steady_clock::now();
+          const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+          control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+          control.message(grid_progress_text(name, done, total, elapsed));
+        };
         auto grid = design::cached_design_response_grid(
-            *made.inputs, axes,
-            [&control](std::size_t done, std::size_t total) {
-              control.progress(static_cast<double>(done) / static_cast<double>(total));
-              control.message("solved " + std::to_string(done) + " of " + std::to_string(total) + " designs");
-            },
-            control.stop_token());
+            *made.inputs, axes, progress, control.stop_token(), 0,
+            [&](const design::DesignResponseGrid& coarse) {
+              std::lock_guard lock(handover->mutex);
+              handover->inputs = made.inputs;
+              handover->grid = coarse;
+              if (auto wake = job_done_hook.load()) wake();
+            });
         if (!grid) throw std::runtime_error("the design grid was cancelled");
         made.grid = std::move(*grid);
         return made;
@@ -212,36 +235,59 @@ std::string DesignView::open_prediction(const std::filesystem::path& file) {
   }
 }
 
-void DesignView::draw() {
-  if (job_ && job_->done()) {
-    if (auto made = job_->take_result()) {
-      inputs_ = std::move(made->inputs);
-      grid_ = std::move(made->grid);
+bool DesignView::design_heard() const {
+  const auto heard = audio_.sounding();
+  return heard && predicted_ && heard->tool == design::predicted_sound(*predicted_).name;
+}
+
+void DesignView::take_grids() {
+  if (coarse_handover_ && !grid_) {
+    std::lock_guard lock(coarse_handover_->mutex);
+    if (coarse_handover_->grid) {
+      inputs_ = coarse_handover_->inputs;
+      grid_ = std::move(*coarse_handover_->grid);
+      coarse_handover_->grid.reset();
+      coarse_ = true;
       tip_mm_ = std::clamp(tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
                            static_cast<float>(grid_->axes.tips_m.back() * 1e3));
       update_design(false);
-      // The interpolation's error against the full FEM, measured here in the background.
-      error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
-          "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points),
-                         map = map_, surface = surface()](JobControl& control) {
-            const std::size_t dims = map ? map->descriptor_names.size() : 2;
-            return design::measure_grid_error_at(
-                inputs_->setup, *grid_, points, surface, dims, map ? &*map : nullptr,
-                [&control](std::size_t done, std::size_t total) {
-                  control.progress(static_cast<double>(done) / static_cast<double>(total));
-                },
-                control.stop_token(), 1);
-          });
-    } else {
-      error_ = job_->error();
     }
-    job_.reset();
   }
+  if (!job_ || !job_->done()) return;
+  if (auto made = job_->take_result()) {
+    const bool heard = design_heard();
+    inputs_ = std::move(made->inputs);
+    grid_ = std::move(made->grid);
+    coarse_ = false;
+    tip_mm_ = std::clamp(tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
+                         static_cast<float>(grid_->axes.tips_m.back() * 1e3));
+    update_design(heard);  // the finer prediction replaces the one heard, if it is heard
+    // The interpolation's error against the full FEM, measured here in the background.
+    error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
+        "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points),
+                       map = map_, surface = surface()](JobControl& control) {
+          const std::size_t dims = map ? map->descriptor_names.size() : 2;
+          return design::measure_grid_error_at(
+              inputs_->setup, *grid_, points, surface, dims, map ? &*map : nullptr,
+              [&control](std::size_t done, std::size_t total) {
+                control.progress(static_cast<double>(done) / static_cast<double>(total));
+              },
+              control.stop_token(), 1);
+        });
+  } else {
+    error_ = job_->error();
+  }
+  job_.reset();
+  coarse_handover_.reset();
+}
+
+void DesignView::draw() {
+  take_grids();
   if (error_job_ && error_job_->done()) {
     if (auto e = error_job_->take_result()) grid_error_ = std::move(*e);
     error_job_.reset();
   }
-  if (!inputs_ && !job_) prepare();
+  if (!inputs_ && !job_ && error_.empty()) prepare();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginChild("design-space", {avail.x - 360.0f, avail.y});
   space_->draw();
@@ -260,8 +306,9 @@ void DesignView::draw_controls() {
   ImGui::Text("surface: %s", surface().c_str());
   section("Design");
   if (job_) {
+    if (coarse_) ImGui::TextWrapped("A coarse grid is in use while the fine one is solved:");
     if (progress_with_cancel("design-grid", static_cast<float>(job_->progress()), job_->message().c_str())) job_->cancel();
-    return;
+    if (!grid_) return;
   }
   if (!grid_) {
     if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
@@ -301,9 +348,9 @@ void DesignView::draw_controls() {
                        grid_error_->cells.size(), grid_error_->response_rms_db, grid_error_->placement_distance,
                        grid_error_->placement_sd);
   }
-  ImGui::Text("grid %zu x %zu, %s-%s, %zu mode crossings blended", grid_->axes.fractions.size(),
-              grid_->axes.tips_m.size(), grid_->axes.material_a.c_str(), grid_->axes.material_b.c_str(),
-              grid_->mode_jumps);
+  ImGui::TextWrapped("%s grid %zu x %zu, %s-%s, %zu mode crossings blended", coarse_ ? "coarse" : "the",
+                     grid_->axes.fractions.size(), grid_->axes.tips_m.size(), grid_->axes.material_a.c_str(),
+                     grid_->axes.material_b.c_str(), grid_->mode_jumps);
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
 }
 

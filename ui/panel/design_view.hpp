@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -37,8 +38,15 @@ struct DesignSettings {
 };
 
 struct DesignInputs {
-  std::unique_ptr<model::design::PredictionInputs> inputs;
+  std::shared_ptr<const model::design::PredictionInputs> inputs;
   model::design::DesignResponseGrid grid;
+};
+
+// The coarse grid the job hands over while the fine one is solved (the UI takes it when it looks).
+struct CoarseHandover {
+  std::mutex mutex;
+  std::shared_ptr<const model::design::PredictionInputs> inputs;
+  std::optional<model::design::DesignResponseGrid> grid;
 };
 
 class DesignView {
@@ -52,7 +60,10 @@ class DesignView {
   void set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map);
   // Starts loading the prediction inputs and the grid (once).
   void prepare();
+  // Ready once a grid is in use: the coarse one first (a usable view in seconds on first use),
+  // then the fine one when it has been solved.
   bool ready() const { return inputs_ != nullptr; }
+  bool coarse() const { return coarse_; }
   bool preparing() const { return job_ != nullptr; }
   bool measuring_error() const { return error_job_ != nullptr; }
   // Asks its background work (the grid, the error measurement) to stop; working() is true until
@@ -84,6 +95,9 @@ class DesignView {
   std::chrono::steady_clock::time_point last_sound_sent() const { return last_sound_sent_; }
   const std::optional<model::design::SearchResult>& last_search() const { return search_; }
   const std::optional<model::design::GridError>& grid_error() const { return grid_error_; }
+  const std::optional<model::design::DesignResponseGrid>& grid() const { return grid_; }
+  // What the grid's job says it is doing (empty when none runs).
+  std::string progress_message() const { return job_ ? job_->message() : std::string(); }
   const std::string& error() const { return error_; }
   SpaceView& space() { return *space_; }
   // Where the mix slider was last drawn (a scripted session drags it).
@@ -93,6 +107,9 @@ class DesignView {
   // The prediction (and placement) at the sliders; `sound`: it plays too (a person moved something,
   // never a space or grid that merely arrived).
   void update_design(bool sound);
+  // Whether the sound heard now is this view's design (a grid that arrives replaces it then).
+  bool design_heard() const;
+  void take_grids();
   void draw_controls();
   void draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const;
   std::string surface() const;
@@ -104,7 +121,9 @@ class DesignView {
   std::optional<model::space::DescriptorMap> map_;
   std::unique_ptr<BackgroundJob<DesignInputs>> job_;
   std::unique_ptr<BackgroundJob<model::design::GridError>> error_job_;
-  std::unique_ptr<model::design::PredictionInputs> inputs_;
+  std::shared_ptr<const model::design::PredictionInputs> inputs_;
+  std::shared_ptr<CoarseHandover> coarse_handover_;
+  bool coarse_ = false;
   std::optional<model::design::DesignResponseGrid> grid_;
   std::optional<std::size_t> target_;
   float fraction_ = 0.5f, tip_mm_ = 2.0f;

@@ -322,7 +322,8 @@ bool Panel::settled() const {
     case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
     case View::devices: return devices_view_->listing().has_value();
     case View::experiment: return experiment_view_->stage() != ExperimentView::Stage::preparing;
-    case View::design: return !space_job_ && design_view_->ready() && !design_view_->measuring_error();
+    case View::design:
+      return !space_job_ && design_view_->ready() && !design_view_->preparing() && !design_view_->measuring_error();
     case View::pad: return !file_job_;
     default: return true;
   }

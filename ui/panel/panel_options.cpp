@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ui/cli/number_checks.hpp"
+#include "ui/panel/panel_window.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -26,7 +27,8 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
       ->check(cli::whole_in_range(1, 100000, "frames"));
   app.add_option("--settle-timeout", o.settle_timeout_s,
                  "longest wait, in seconds, for the view's background work before the screenshot "
-                 "(the design grid solves for about 30 s the first time); 0: do not wait")
+                 "(the design grid is solved the first time: the window shows its progress and the "
+                 "time left, measured as it goes); 0: do not wait")
       ->check(cli::in_range(0.0, 86400.0, "seconds"));
   std::vector<long long> grid;
   app.add_option("--design-grid", grid,
@@ -40,8 +42,10 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
       ->check(cli::in_range(0.0005, 0.01, "metres"));
   app.add_option("--design-modes", o.setup.design.modes, "modes the design view solves (default: the bundled stylus's)")
       ->check(cli::whole_in_range(4, 256, "modes"));
-  app.add_option("--size", o.width, "window width in pixels")->check(cli::whole_in_range(320, 8192, "pixels"));
-  app.add_option("--height", o.height, "window height in pixels")->check(cli::whole_in_range(240, 8192, "pixels"));
+  app.add_option("--size", o.width, "window width in pixels")
+      ->check(cli::whole_in_range(PanelWindow::kMinWidth, 8192, "pixels"));
+  app.add_option("--height", o.height, "window height in pixels")
+      ->check(cli::whole_in_range(PanelWindow::kMinHeight, 8192, "pixels"));
   app.add_option("--api", o.device_api, "audio API of the actuator (jack, alsa, pulse)");
   app.add_option("--device", o.device, "audio device of the actuator, by name");
   app.add_flag("--start-rig", o.setup.start_rig,

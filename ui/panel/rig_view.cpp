@@ -231,9 +231,13 @@ void RigView::draw_waterfalls() {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const char* titles[] = {"measured (time runs down)", "simulated", "simulated - measured, +-20 dB"};
   Waterfall* falls[] = {measured_.get(), simulated_.get(), difference_.get()};
+  // Each title wraps inside its own column: in a narrow window they would run into each other.
+  float title_h = 0.0f;
+  for (const char* t : titles) title_h = std::max(title_h, ImGui::CalcTextSize(t, nullptr, false, w).y);
   for (int i = 0; i < 3; ++i) {
-    const ImVec2 min{at.x + i * (w + 20.0f), at.y + 18.0f}, max{min.x + w, min.y + h};
-    draw->AddText({min.x, at.y}, IM_COL32(230, 230, 230, 255), titles[i]);
+    const ImVec2 min{at.x + i * (w + 20.0f), at.y + title_h + 4.0f}, max{min.x + w, min.y + h};
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {min.x, at.y}, IM_COL32(230, 230, 230, 255), titles[i],
+                  nullptr, w);
     if (falls[i]) falls[i]->draw(draw, min, max);
     else draw->AddRectFilled(min, max, IM_COL32(30, 30, 34, 255));
     draw->AddRect(min, max, IM_COL32(255, 255, 255, 90));
@@ -243,7 +247,7 @@ void RigView::draw_waterfalls() {
     draw->AddText({max.x - ImGui::CalcTextSize(label).x, max.y + 2.0f}, IM_COL32(200, 200, 200, 255), label);
     rects_[i] = {min, max};
   }
-  ImGui::Dummy({avail.x, h + 40.0f});
+  ImGui::Dummy({avail.x, h + title_h + 26.0f});
 }
 
 void RigView::draw_traces() {

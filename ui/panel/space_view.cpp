@@ -83,7 +83,8 @@ void SpaceView::draw() {
 void SpaceView::draw_plot(ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 corner = ImGui::GetCursorScreenPos();
-  ImGui::TextUnformatted(scene_.title.c_str());
+  ImGui::TextUnformatted(fitted_from_the_end(scene_.title, size.x).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", scene_.title.c_str());
   if (scene_.tools.empty()) {
     ImGui::TextWrapped("No space loaded: open one (File > Open space) or wait for the default to be computed.");
     frame_.reset();
@@ -102,8 +103,14 @@ void SpaceView::draw_plot(ImVec2 size) {
     x0 = std::min(x0, x - reach), x1 = std::max(x1, x + reach);
     y0 = std::min(y0, y - reach), y1 = std::max(y1, y + reach);
   }
+  // The legend has a column of its own right of the plot: over the plot it hid the tools under it.
+  constexpr const char* kKinds[] = {"real", "printed", "commercial", "predicted"};
+  float legend = 0.0f;
+  for (const auto& s : scene_.surfaces) legend = std::max(legend, ImGui::CalcTextSize(s.c_str()).x);
+  for (const char* kind : kKinds) legend = std::max(legend, ImGui::CalcTextSize(kind).x);
+  legend += 28.0f;
   const ImVec2 origin{corner.x + 56.0f, corner.y + 44.0f};
-  const ImVec2 plot{std::max(50.0f, size.x - 76.0f), std::max(50.0f, size.y - 96.0f)};
+  const ImVec2 plot{std::max(50.0f, size.x - 76.0f - legend), std::max(50.0f, size.y - 96.0f)};
   // Equal units on both axes: distances are the model's, whichever way they point.
   DataRange xr = padded(x0, x1), yr = one_d ? DataRange{-1.0, 1.0} : padded(y0, y1);
   if (!one_d) {
@@ -166,14 +173,15 @@ void SpaceView::draw_plot(ImVec2 size) {
   }
   // The legend: surfaces by colour, kinds by marker.
   float ly = origin.y + 6.0f;
+  const float lx = origin.x + plot.x + 18.0f;
   for (const auto& s : scene_.surfaces) {
-    draw->AddCircleFilled({origin.x + plot.x - 110.0f, ly + 7.0f}, 4.0f, surface_colour(s, 255));
-    draw->AddText({origin.x + plot.x - 100.0f, ly}, IM_COL32(230, 230, 230, 255), s.c_str());
+    draw->AddCircleFilled({lx, ly + 7.0f}, 4.0f, surface_colour(s, 255));
+    draw->AddText({lx + 10.0f, ly}, IM_COL32(230, 230, 230, 255), s.c_str());
     ly += 16.0f;
   }
-  for (const char* kind : {"real", "printed", "commercial", "predicted"}) {
-    draw_marker(draw, {origin.x + plot.x - 110.0f, ly + 7.0f}, marker_of(kind), 4.0f, IM_COL32(230, 230, 230, 255), false);
-    draw->AddText({origin.x + plot.x - 100.0f, ly}, IM_COL32(230, 230, 230, 255), kind);
+  for (const char* kind : kKinds) {
+    draw_marker(draw, {lx, ly + 7.0f}, marker_of(kind), 4.0f, IM_COL32(230, 230, 230, 255), false);
+    draw->AddText({lx + 10.0f, ly}, IM_COL32(230, 230, 230, 255), kind);
     ly += 16.0f;
   }
   ImGui::SetCursorScreenPos(origin);

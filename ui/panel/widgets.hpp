@@ -1,6 +1,8 @@
 // Small widgets the views share that ImGui 1.86 lacks.
 #pragma once
 
+#include <string>
+
 #include "imgui.h"
 
 namespace nibrig::ui::panel {
@@ -12,14 +14,29 @@ inline void section(const char* title) {
   ImGui::Separator();
 }
 
-// A progress bar with its message and a Cancel button; true when Cancel was pressed.
+// A progress bar with its message and a Cancel button; true when Cancel was pressed. A message too
+// long for the bar is written whole above it (ImGui clips a bar's text at both ends), the bar then
+// showing the percentage.
 inline bool progress_with_cancel(const char* id, float fraction, const char* message) {
   ImGui::PushID(id);
-  ImGui::ProgressBar(fraction, {-90.0f, 0.0f}, message);
+  const float bar = ImGui::GetContentRegionAvail().x - 90.0f;
+  const bool fits = ImGui::CalcTextSize(message).x + 2.0f * ImGui::GetStyle().FramePadding.x <= bar;
+  if (!fits) ImGui::TextWrapped("%s", message);
+  ImGui::ProgressBar(fraction, {-90.0f, 0.0f}, fits ? message : nullptr);
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel");
   ImGui::PopID();
   return cancel;
+}
+
+// `text` as wide as `width` at most: its end kept, its start replaced by "..." (a path's file name
+// says more than its first folders).
+inline std::string fitted_from_the_end(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::size_t from = 0;
+  while (from < text.size() && ImGui::CalcTextSize(("..." + text.substr(from)).c_str()).x > width) ++from;
+  while (from < text.size() && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80) ++from;  // whole UTF-8
+  return "..." + text.substr(from);
 }
 
 }  // namespace nibrig::ui::panel
