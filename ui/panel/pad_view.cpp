@@ -11,7 +11,9 @@ namespace nibrig::ui::panel {
 
 namespace {
 
-constexpr double kSmoothing_s = 0.03;  // the speed's time constant: a mouse reports at 60-125 Hz
+// A pen held still for this long after its last event has stopped (a mouse reports at 60-1000 Hz,
+// so a gap of 50 ms is no longer a gap between events).
+constexpr double kStoppedAfter_s = 0.05;
 constexpr std::size_t kTraceLength = 600;
 
 }  // namespace
@@ -27,18 +29,33 @@ void PadView::use_tool(const ToolChoice& tool) {
 }
 
 void PadView::update_speed(bool down, ImVec2 p, double now_s) {
-  if (down && drawing_) {
-    const double dt = std::max(1e-3, now_s - last_s_);
-    const double dx = p.x - last_.x, dy = p.y - last_.y;
-    const double instant = std::sqrt(dx * dx + dy * dy) * mm_per_pixel_ / dt;
-    const double a = 1.0 - std::exp(-dt / kSmoothing_s);
-    speed_mm_s_ += a * (instant - speed_mm_s_);
-  } else {
+  if (!down) {
     speed_mm_s_ = 0.0;
+    events_ = 0;
+  } else if (!drawing_ || p.x != last_.x || p.y != last_.y) {
+    // A new pointer event: the speed over the last two events' intervals. Frames between events
+    // (the display outruns the mouse) hold it, where a per-frame difference read each frame without
+    // a move as a stop and spiked on the next; two intervals average the event timing's jitter
+    // with at most one event of lag.
+    if (events_ >= 2) {
+      const double dt = std::max(1e-3, now_s - event_s_[1]);
+      const double dx = p.x - event_[1].x, dy = p.y - event_[1].y;
+      speed_mm_s_ = std::sqrt(dx * dx + dy * dy) * mm_per_pixel_ / dt;
+    } else if (events_ == 1) {
+      const double dt = std::max(1e-3, now_s - event_s_[0]);
+      const double dx = p.x - event_[0].x, dy = p.y - event_[0].y;
+      speed_mm_s_ = std::sqrt(dx * dx + dy * dy) * mm_per_pixel_ / dt;
+    }
+    event_[1] = event_[0], event_s_[1] = event_s_[0];
+    event_[0] = p, event_s_[0] = now_s;
+    events_ = std::min(events_ + 1, 2);
+  } else if (now_s - event_s_[0] > kStoppedAfter_s) {
+    speed_mm_s_ = 0.0;  // held still on the pad: a stop, and the next move is timed from now
+    event_s_[0] = now_s;
+    events_ = 1;
   }
   drawing_ = down;
   last_ = p;
-  last_s_ = now_s;
 }
 
 void PadView::draw() {

@@ -37,7 +37,11 @@ class PadView {
   double mm_per_pixel_ = 25.4 / 96.0;
   bool drawing_ = false;
   ImVec2 last_{};
-  double last_s_ = 0.0, speed_mm_s_ = 0.0;
+  double speed_mm_s_ = 0.0;
+  // The last two pointer events while the pen is down (newest first) and how many there are.
+  ImVec2 event_[2]{};
+  double event_s_[2]{};
+  int events_ = 0;
   std::vector<std::vector<ImVec2>> strokes_;  // in canvas coordinates
   std::deque<float> trace_;                   // speed per frame, the last 600
   char tool_text_[64] = "cryon", surface_text_[64] = "office";

@@ -1,9 +1,12 @@
 // The pad driven without a window: a pen dragged at a steady speed sends that speed to the engine
-// (pixels per second × millimetres per pixel, after the 30 ms smoothing settles) and nothing once
-// it is lifted.
+// (pixels per second × millimetres per pixel) and nothing once it is lifted; a mouse that reports
+// less often than the display draws sends no spikes; a pen held still on the pad stops.
 #include "ui/panel/pad_view.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 #include "tests/ui/panel/headless_imgui.hpp"
 
@@ -27,7 +30,7 @@ TEST(PadView, ADragAtASteadySpeedDrivesTheEngineAtThatSpeed) {
     imgui.frame([&] { pad.draw(); });
   }
   ASSERT_TRUE(pad.drawing());
-  // 600 px/s × 0.25 mm/px = 150 mm/s; 40 frames are 22 time constants: settled to far below 1 %.
+  // 600 px/s × 0.25 mm/px = 150 mm/s, from the pointer's own steps: within float rounding.
   EXPECT_NEAR(pad.speed_mm_s(), 150.0, 1.5);
   EXPECT_NEAR(pad.trace().back(), 150.0f, 1.5f);
   imgui.mouse_down(false);
@@ -35,6 +38,38 @@ TEST(PadView, ADragAtASteadySpeedDrivesTheEngineAtThatSpeed) {
   EXPECT_FALSE(pad.drawing());
   EXPECT_EQ(pad.speed_mm_s(), 0.0);
   EXPECT_TRUE(audio.error().empty()) << audio.error();
+}
+
+TEST(PadView, AMouseSlowerThanTheDisplaySendsASteadySpeedWithoutSpikes) {
+  testing::HeadlessImGui imgui;
+  PanelAudio audio(model::design::ToolSoundOptions{});
+  PadView pad(audio);
+  pad.set_mm_per_pixel(0.25);
+  imgui.frame([&] { pad.draw(); });
+  ImVec2 at{300.0f, 300.0f};
+  imgui.mouse_to(at);
+  imgui.frame([&] { pad.draw(); });
+  imgui.mouse_down(true);
+  // 600 px/s again, but the pointer reports on two frames of three (40 Hz on a 60 Hz display):
+  // 10 px after one frame, 20 px after two. A difference per frame read 0 and 1200 px/s in turn.
+  std::vector<double> sent;
+  for (int frame = 1; frame <= 60; ++frame) {
+    if (frame % 3 != 0) {
+      at.x += frame % 3 == 1 ? 20.0f : 10.0f;
+      imgui.mouse_to(at);
+    }
+    imgui.frame([&] { pad.draw(); });
+    if (frame > 6) sent.push_back(pad.speed_mm_s());  // after the first two events
+  }
+  const auto [low, high] = std::minmax_element(sent.begin(), sent.end());
+  // Two intervals always span three frames here (30 px in 1/20 s): exactly 150 mm/s, within
+  // the float rounding of the positions and times.
+  EXPECT_NEAR(*low, 150.0, 1.5);
+  EXPECT_NEAR(*high, 150.0, 1.5);
+  // Held still: within 50 ms (3 frames at 60 Hz plus one) the speed is 0, the pen still down.
+  for (int frame = 0; frame < 5; ++frame) imgui.frame([&] { pad.draw(); });
+  EXPECT_TRUE(pad.drawing());
+  EXPECT_EQ(pad.speed_mm_s(), 0.0);
 }
 
 }  // namespace
