@@ -52,16 +52,20 @@ void write_stylus_modes(const std::filesystem::path& file, const StylusModes& mo
 
 }  // namespace
 
+std::filesystem::path stylus_modes_file(const std::filesystem::path& design_file,
+                                        const std::filesystem::path& cache_dir) {
+  io::CacheKey key;
+  key.add("nibrig stylus modes").add(std::int64_t{kStylusModesVersion});
+  key.add_file(io::or_default(design_file, io::default_stylus_design)).add_file(io::default_materials());
+  return cache_file(cache_dir.empty() ? io::user_cache_dir() : cache_dir, "stylus_modes", key);
+}
+
 Cached<StylusModes> stylus_modes(const std::filesystem::path& design_file,
                                  const std::filesystem::path& cache_dir) {
   const auto design = io::or_default(design_file, io::default_stylus_design);
   const auto materials_file = io::default_materials();
-  io::CacheKey key;
-  key.add("nibrig stylus modes").add(std::int64_t{kStylusModesVersion});
-  key.add_file(design).add_file(materials_file);
-  const auto dir = cache_dir.empty() ? io::user_cache_dir() : cache_dir;
   return cached_default<StylusModes>(
-      cache_file(dir, "stylus_modes", key), "stylus modes", read_stylus_modes,
+      stylus_modes_file(design_file, cache_dir), "stylus modes", read_stylus_modes,
       [&] {
         const auto materials = mechanics::read_material_table(materials_file);
         const mechanics::Design d = mechanics::read_design(design, materials);

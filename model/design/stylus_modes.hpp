@@ -26,4 +26,9 @@ struct StylusModes {
 Cached<StylusModes> stylus_modes(const std::filesystem::path& design_file,
                                  const std::filesystem::path& cache_dir = {});
 
+// Where stylus_modes keeps the modes of that design (there or not yet): its key is the design's and
+// the materials' bytes. Throws what reading them throws.
+std::filesystem::path stylus_modes_file(const std::filesystem::path& design_file,
+                                        const std::filesystem::path& cache_dir = {});
+
 }  // namespace nibrig::model::design

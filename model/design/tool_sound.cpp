@@ -73,6 +73,11 @@ ToolSound predicted_sound(PredictedTool p) {
           std::move(p.spectrum)};
 }
 
+bool ToolSounds::solves_stylus_modes() const {
+  std::error_code error;
+  return !state_->stylus && !std::filesystem::exists(stylus_modes_file(state_->options.stylus_design), error);
+}
+
 ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {
   if (names_design_point(tool)) return predicted_sound(predict(tool, surface));
   const io::VelocitySpectrum& spectrum =

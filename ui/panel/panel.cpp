@@ -452,8 +452,10 @@ void Panel::draw_status() {
       space_job_.reset();
   }
   if (file_job_) ImGui::ProgressBar(static_cast<float>(file_job_->progress()), {-1.0f, 0.0f}, file_job_->message().c_str());
-  if (audio_->making_sounds())
-    ImGui::ProgressBar(static_cast<float>(audio_->making_progress()), {-1.0f, 0.0f}, audio_->making_message().c_str());
+  if (audio_->making_sounds() &&
+      progress_with_cancel("making-sounds", static_cast<float>(audio_->making_progress()),
+                           audio_->making_message().c_str()))
+    audio_->cancel_making();
   if (!errors_.current().empty()) errors_.draw(kErrorLines);
   else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
   else ImGui::NewLine();

@@ -105,12 +105,26 @@ void PanelAudio::start_pending() {
       "making the tools' sounds", [sounds, tools](JobControl& control) {
         Sounds made;
         for (std::size_t i = 0; i < tools.size() && !control.stop_requested(); ++i) {
-          control.message("making " + tools[i].tool + " on " + tools[i].surface);
+          const std::string what = tools[i].tool + " on " + tools[i].surface;
+          if (model::design::names_design_point(tools[i].tool))
+            control.message("predicting " + what + " (the design's FEM: about a second)");
+          else if (sounds->solves_stylus_modes())
+            control.message("making " + what + ": solving the stylus's modes first (once: they are kept)");
+          else
+            control.message("making " + what);
           made.push_back(sounds->sound(tools[i].tool, tools[i].surface));
           control.progress(static_cast<double>(i + 1) / static_cast<double>(tools.size()));
         }
         return made;
       });
+}
+
+void PanelAudio::cancel_making() {
+  if (job_) {
+    job_->cancel();
+    retired_.push_back(std::move(job_));
+  }
+  pending_.reset();
 }
 
 void PanelAudio::poll() {

@@ -71,6 +71,8 @@ class PanelAudio {
   // Commands the engine's queue has not taken yet: poll() must run again soon to hand them over.
   bool handing_over() const { return waiting_commands_ > 0; }
   bool making_sounds() const { return job_ != nullptr || pending_.has_value(); }
+  // Drops the sounds being made (the Cancel beside their bar); what plays keeps playing.
+  void cancel_making();
   double making_progress() const { return job_ ? job_->progress() : 1.0; }
   std::string making_message() const { return job_ ? job_->message() : std::string(); }
   // What is loaded and playing (slot order), and the last error (a tool refused, a device lost).

@@ -31,8 +31,11 @@ TEST(StylusModes, AMissSolvesAndWritesAndAHitReadsExactlyWhatTheFemGives) {
   std::filesystem::remove_all(dir / "cache");
   const auto design = coarse_stylus(dir);
 
+  EXPECT_FALSE(std::filesystem::exists(stylus_modes_file(design, dir / "cache")));
   const auto miss = stylus_modes(design, dir / "cache");
   EXPECT_TRUE(miss.computed);
+  // Where a face looks to know whether a click will solve the modes first.
+  EXPECT_EQ(stylus_modes_file(design, dir / "cache"), miss.file);
   EXPECT_TRUE(miss.warnings.empty());
   EXPECT_TRUE(std::filesystem::exists(miss.file));
   const auto hit = stylus_modes(design, dir / "cache");
