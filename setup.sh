@@ -167,7 +167,9 @@ case "$job" in
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
     # The panel's frame benchmark needs a display: a private X server when there is none.
     display=()
-    [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24")
+    # -noreset: the benchmarks open one window after another, and a server that resets as its last
+    # client leaves refused the next one ("Failed to open display").
+    [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a -s "-screen 0 1280x800x24 -noreset")
     "${display[@]}" ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
     /usr/bin/python3 tests/bench/scipy_spectrogram.py
     /usr/bin/python3 tests/bench/numpy_space_fit.py

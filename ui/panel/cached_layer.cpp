@@ -1,5 +1,7 @@
 #include "ui/panel/cached_layer.hpp"
 
+#include "ui/panel/panel_window.hpp"
+
 #define GL_GLEXT_PROTOTYPES
 #include <GLFW/glfw3.h>
 #include <GL/glext.h>
@@ -41,6 +43,7 @@ void CachedLayer::update(std::uint64_t key, ImVec2 origin, ImVec2 size, ImU32 ba
     width_ = width;
     height_ = height;
   }
+  PanelWindow::contents_changed();  // the texture's pixels change under the same draw commands
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, width, height);
   const ImVec4 bg = ImGui::ColorConvertU32ToFloat4(background);

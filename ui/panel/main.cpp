@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
     settings.height = options->height;
     settings.visible = options->screenshot.empty();
     settings.vsync = options->screenshot.empty();
+    settings.skip_unchanged = options->screenshot.empty();
     PanelWindow window(settings);
     if (options->screenshot.empty()) return interactive(window, *options);
     Panel panel(options->setup);  // a picture uses nothing remembered: the same every time

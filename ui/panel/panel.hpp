@@ -96,7 +96,7 @@ class Panel {
   // something moves (the rig's waterfall, a drag, the pad, a participant's session), a tenth of a
   // second while a job's progress is shown, else kIdleRefresh_s for the live readouts (the
   // device's state, the status line).
-  static constexpr double kIdleRefresh_s = 0.5, kProgressRefresh_s = 0.1;
+  static constexpr double kIdleRefresh_s = 1.0, kProgressRefresh_s = 0.1;
   double idle_wait_s() const;
   // The frame-time readout (Help > Frame times, or F12): frames per second and what the panel's
   // own widgets cost per frame.

@@ -6,6 +6,7 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <stdexcept>
@@ -19,6 +20,37 @@
 namespace nibrig::ui::panel {
 
 namespace {
+
+// Set when the window system asks for the window's contents again (uncovered, resized): the next
+// frame renders even if nothing in it changed.
+std::atomic<bool> contents_lost{true};
+
+// FNV-1a over what a frame draws: every vertex, index and command (clip rectangle, texture,
+// counts), and the display's size.
+std::uint64_t draw_data_hash(const ImDrawData* data) {
+  std::uint64_t h = 1469598103934665603ULL;
+  const auto mix = [&h](const void* bytes, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(bytes);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ULL;
+  };
+  mix(&data->DisplaySize, sizeof data->DisplaySize);
+  mix(&data->FramebufferScale, sizeof data->FramebufferScale);
+  for (int l = 0; l < data->CmdListsCount; ++l) {
+    const ImDrawList* list = data->CmdLists[l];
+    mix(list->VtxBuffer.Data, static_cast<std::size_t>(list->VtxBuffer.Size) * sizeof(ImDrawVert));
+    mix(list->IdxBuffer.Data, static_cast<std::size_t>(list->IdxBuffer.Size) * sizeof(ImDrawIdx));
+    for (const ImDrawCmd& cmd : list->CmdBuffer) {
+      mix(&cmd.ClipRect, sizeof cmd.ClipRect);
+      mix(&cmd.TextureId, sizeof cmd.TextureId);
+      mix(&cmd.VtxOffset, sizeof cmd.VtxOffset);
+      mix(&cmd.IdxOffset, sizeof cmd.IdxOffset);
+      mix(&cmd.ElemCount, sizeof cmd.ElemCount);
+      const bool callback = cmd.UserCallback != nullptr;
+      mix(&callback, sizeof callback);
+    }
+  }
+  return h;
+}
 
 std::string glfw_error() {
   const char* description = nullptr;
@@ -47,6 +79,8 @@ PanelWindow::PanelWindow(const WindowSettings& settings) {
     throw std::runtime_error("the panel cannot open an OpenGL 3.3 core window: " + why);
   }
   glfwSetWindowSizeLimits(window_, kMinWidth, kMinHeight, GLFW_DONT_CARE, GLFW_DONT_CARE);
+  skip_unchanged_ = settings.skip_unchanged;
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow*) { contents_lost = true; });
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(settings.vsync ? 1 : 0);
   IMGUI_CHECKVERSION();
@@ -80,6 +114,8 @@ bool PanelWindow::wait_events(double timeout_s) {
 
 void PanelWindow::wake() { glfwPostEmptyEvent(); }
 
+void PanelWindow::contents_changed() { contents_lost = true; }
+
 void PanelWindow::begin_frame(const std::function<void(ImGuiIO&)>& input) {
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
@@ -90,6 +126,15 @@ void PanelWindow::begin_frame(const std::function<void(ImGuiIO&)>& input) {
 
 void PanelWindow::end_frame(const std::filesystem::path& screenshot) {
   ImGui::Render();
+  if (skip_unchanged_ && screenshot.empty()) {
+    const std::uint64_t hash = draw_data_hash(ImGui::GetDrawData());
+    if (hash == shown_hash_ && !contents_lost.exchange(false)) {
+      ++skipped_;
+      return;
+    }
+    shown_hash_ = hash;
+  }
+  ++rendered_;
   const int width = framebuffer_width(), height = framebuffer_height();
   glViewport(0, 0, width, height);
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);

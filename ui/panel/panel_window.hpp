@@ -3,6 +3,8 @@
 // frame back as a PNG before it is shown (`--screenshot`, the tests, the README's pictures).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -19,6 +21,10 @@ struct WindowSettings {
   bool visible = true;  // a hidden window still renders (screenshots)
   bool vsync = true;
   std::filesystem::path ini_file;  // ImGui's window layout; empty: none kept
+  // A frame whose draw lists are those of the frame shown is not rendered again: on a machine
+  // without a GPU the rasteriser, not the widgets, is what an idle refresh costs. Screenshots
+  // always render.
+  bool skip_unchanged = false;
 };
 
 class PanelWindow {
@@ -38,11 +44,16 @@ class PanelWindow {
   // Renders the frame; with `screenshot` non-empty, writes it there as a PNG first (throws naming
   // the file when it cannot be written). Then shows it.
   void end_frame(const std::filesystem::path& screenshot = {});
+  // Frames rendered and frames skipped as unchanged (WindowSettings::skip_unchanged).
+  std::size_t frames_rendered() const { return rendered_; }
+  std::size_t frames_skipped() const { return skipped_; }
   // Sleeps until input arrives or `timeout_s` passes (an idle panel waits here instead of drawing);
   // true when input (or a wake()) ended the wait. The events are then handled by begin_frame.
   bool wait_events(double timeout_s);
   // Ends a wait_events() from any thread (a job that finished has something to show).
   static void wake();
+  // The next frame renders though its draw commands are unchanged: a texture they show changed.
+  static void contents_changed();
   // The smallest size the window may take: the layout is made to hold at it.
   static constexpr int kMinWidth = 800, kMinHeight = 500;
   int framebuffer_width() const;
@@ -51,6 +62,9 @@ class PanelWindow {
  private:
   GLFWwindow* window_ = nullptr;
   std::string ini_file_;  // ImGui keeps the pointer
+  bool skip_unchanged_ = false;
+  std::uint64_t shown_hash_ = 0;  // of the draw data on screen
+  std::size_t rendered_ = 0, skipped_ = 0;
 };
 
 // Reads the current framebuffer (bottom-up in GL) and writes it top-down as an RGB PNG.

@@ -1,5 +1,7 @@
 #include "ui/panel/waterfall.hpp"
 
+#include "ui/panel/panel_window.hpp"
+
 #define GL_GLEXT_PROTOTYPES
 #include <GLFW/glfw3.h>
 #include <GL/glext.h>
@@ -71,6 +73,7 @@ void Waterfall::upload() {
     return;
   }
   if (uploaded_ == pushed_) return;
+  PanelWindow::contents_changed();  // new rows under the same draw commands
   glBindTexture(GL_TEXTURE_2D, texture_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // Only the rows pushed since the last upload (all of them if more than the ring holds).
