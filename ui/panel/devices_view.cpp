@@ -92,14 +92,12 @@ void DevicesView::draw() {
   ImGui::EndChild();
 }
 
-void DevicesView::draw_stream() {
-  section("Stream");
+void DevicesView::sample() {
   const auto& a = audio_.audition();
   const auto info = a.stream_info();
   if (!info) {
     running_.reset();
     monitor_.reset();
-    ImGui::TextWrapped("No device open: the panel plays nowhere (choose one and press Open).");
     return;
   }
   const auto stats = *a.output_stats();
@@ -119,7 +117,19 @@ void DevicesView::draw_stream() {
   r.load = monitor_.load(period_s);
   r.xruns = monitor_.xruns();
   running_ = r;
+}
 
+void DevicesView::draw_stream() {
+  section("Stream");
+  sample();
+  if (!running_) {
+    ImGui::TextWrapped("No device open: the panel plays nowhere (choose one and press Open).");
+    return;
+  }
+  const RunningStream& r = *running_;
+  const auto& a = audio_.audition();
+  const auto stats = *a.output_stats();
+  const auto engine = a.engine_stats();
   ImGui::Text("running: %s '%s' at %u Hz", r.api.c_str(), r.device.c_str(), r.sample_rate);
   ImGui::Text("period: %.2f ms (%u frames)", r.period_ms, r.period_frames);
   if (r.latency_reported)
@@ -135,13 +145,13 @@ void DevicesView::draw_stream() {
                 static_cast<unsigned long long>(r.load->blocks));
     if (late) ImGui::PopStyleColor();
   } else {
-    ImGui::TextUnformatted("callback load: no block has run since this view was shown");
+    ImGui::TextUnformatted("callback load: no block has run in the last seconds");
   }
   // A whole minute once the view has been shown that long (to one sample's precision).
   const bool minute = r.xruns.window_s >= StreamMonitor::kXrunWindowS - StreamMonitor::kSampleEveryS;
   const std::string when = minute ? std::string("the last minute")
                                   : "the last " + std::to_string(static_cast<long>(r.xruns.window_s)) +
-                                        " s (counted while this view is shown)";
+                                        " s (counted since the stream opened)";
   ImGui::TextWrapped("xruns in %s: %llu from the device, %llu of our own (blocks rendered past the period)", when.c_str(),
               static_cast<unsigned long long>(r.xruns.device), static_cast<unsigned long long>(r.xruns.own));
   ImGui::Text("status: %s", *a.output_status() == playback::OutputStatus::running ? "running" : "LOST, looking for it");

@@ -55,6 +55,9 @@ class DevicesView {
   const std::string& error() const { return error_; }
   const std::optional<DeviceListing>& listing() const { return listing_; }
   const std::optional<RunningStream>& running() const { return running_; }
+  // Reads the stream's counters into running() (the view does when drawn; the panel every frame
+  // otherwise, so that "xruns in the last minute" covers the minute, whichever view was shown).
+  void sample();
 
  private:
   void draw_listing();

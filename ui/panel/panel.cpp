@@ -497,6 +497,7 @@ void Panel::draw_views() {
   poll_jobs();
   follow_audio_error();
   space_view_->set_sounding(audio_->sounding());
+  if (current_ != View::devices) devices_view_->sample();
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   if (experiment_view_->fullscreen()) {
     // A participant in session sees the study and nothing else: no menu, tabs, status or keys of

@@ -174,6 +174,7 @@ void SpaceView::draw_plot(ImVec2 size) {
   // The legend: surfaces by colour, kinds by marker.
   float ly = origin.y + 6.0f;
   const float lx = origin.x + plot.x + 18.0f;
+  legend_left_ = lx - 6.0f;
   for (const auto& s : scene_.surfaces) {
     draw->AddCircleFilled({lx, ly + 7.0f}, 4.0f, surface_colour(s, 255));
     draw->AddText({lx + 10.0f, ly}, IM_COL32(230, 230, 230, 255), s.c_str());
@@ -222,14 +223,28 @@ void SpaceView::draw_regions(ImDrawList* draw, bool one_d) const {
   }
 }
 
+std::vector<std::string> tooltip_lines(const SceneTool& t) {
+  std::vector<std::string> lines{t.label, t.kind + ", " + (t.judged ? "judged" : "placed from its descriptors")};
+  char text[160];
+  if (t.mu) {
+    std::snprintf(text, sizeof text, "mu %.3f", *t.mu);
+    lines.emplace_back(text);
+  }
+  if (t.noise_sigma) {
+    std::snprintf(text, sizeof text, "judged with noise sigma %.2f (1 = typical)", *t.noise_sigma);
+    lines.emplace_back(text);
+  }
+  for (const auto& [name, value] : t.descriptors) {
+    if (t.mu && name == model::space::kFrictionDescriptor) continue;
+    std::snprintf(text, sizeof text, "%s %.3g", name.c_str(), value);
+    lines.emplace_back(text);
+  }
+  return lines;
+}
+
 void SpaceView::draw_tooltip(const SceneTool& t) const {
   ImGui::BeginTooltip();
-  ImGui::Text("%s", t.label.c_str());
-  ImGui::Text("%s, %s", t.kind.c_str(), t.judged ? "judged" : "placed from its descriptors");
-  if (t.mu) ImGui::Text("mu %.3f", *t.mu);
-  if (t.noise_sigma) ImGui::Text("judged with noise sigma %.2f (1 = typical)", *t.noise_sigma);
-  for (const auto& [name, value] : t.descriptors)
-    if (!(t.mu && name == model::space::kFrictionDescriptor)) ImGui::Text("%s %.3g", name.c_str(), value);
+  for (const std::string& line : tooltip_lines(t)) ImGui::TextUnformatted(line.c_str());
   ImGui::EndTooltip();
 }
 

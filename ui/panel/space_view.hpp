@@ -39,6 +39,10 @@ struct SpaceScene {
   std::string model_reason;           // why that model
 };
 
+// What a tool's tooltip says, line by line: its name, kind, μ, how it was judged, its descriptors
+// (μ once, though it is a descriptor too).
+std::vector<std::string> tooltip_lines(const SceneTool& tool);
+
 class SpaceView {
  public:
   // `play` is called with one to three tools when a person asks to hear them.
@@ -78,6 +82,8 @@ class SpaceView {
   ImU32 surface_colour(const std::string& surface, int alpha) const;
   // Where tool i is drawn on the screen (after a draw()).
   std::optional<ImVec2> screen_position(std::size_t tool) const;
+  // Where the legend's column starts, right of the plot (after a draw()).
+  float legend_left() const { return legend_left_; }
 
  private:
   void draw_plot(ImVec2 size);
@@ -94,6 +100,7 @@ class SpaceView {
   StrokeChoice* stroke_ = nullptr;
   std::function<void()> stroke_changed_;
   std::optional<ToolChoice> sounding_;
+  float legend_left_ = 0.0f;
   CachedLayer regions_;
   Overlay overlay_;
   bool side_panel_ = true;

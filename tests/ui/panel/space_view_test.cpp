@@ -1,9 +1,14 @@
 // The space view driven without a window: each tool is drawn where the space places it (equal units
-// on both axes), hovering finds it, a click plays exactly it with the chosen stroke, shift-clicks
+// on both axes), hovering finds it, a click plays exactly it, shift-clicks
 // build an A/B or triplet comparison of up to three, and the axes of a 3-D space can be chosen.
 #include "ui/panel/space_view.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "model/space/catalog_descriptors.hpp"
+#include "ui/panel/panel_window.hpp"
 
 #include <cmath>
 
@@ -102,6 +107,37 @@ TEST(SpaceView, TheAxesOfAThreeDimensionalSpaceCanBeChosen) {
   EXPECT_LT(y0, y2);
   EXPECT_LT(y2, y1);
   EXPECT_NEAR((y1 - y0) / (y1 - y2), 3.0 / 1.5, 0.02);
+}
+
+TEST(SpaceView, AtTheSmallestWindowTheLegendStaysRightOfEveryTool) {
+  // The window's minimum (PanelWindow::kMinWidth x kMinHeight), the side panel beside the plot.
+  testing::HeadlessImGui imgui(static_cast<float>(PanelWindow::kMinWidth), static_cast<float>(PanelWindow::kMinHeight));
+  SpaceScene scene = three_tools(2);
+  scene.tools.push_back(tool("stab", "note", {6.0, 0.5}));  // the rightmost, where the legend was drawn
+  SpaceView view(scene, {});
+  imgui.frame([&] { view.draw(); });
+  ASSERT_TRUE(view.frame().has_value());
+  for (std::size_t i = 0; i < view.scene().tools.size(); ++i) {
+    // A marker is 5 px across its centre at most.
+    EXPECT_LT(view.screen_position(i)->x + 5.0f, view.legend_left()) << view.scene().tools[i].label;
+  }
+  EXPECT_LE(view.frame()->origin().x + view.frame()->size().x, view.legend_left());
+}
+
+TEST(SpaceView, TheTooltipSaysMuOnceThoughItIsADescriptorToo) {
+  SceneTool t = tool("cryon", "office", {0.3, -1.0});
+  t.mu = 0.3;
+  t.descriptors = {{model::space::kFrictionDescriptor, 0.3}, {"log10_weighted_mean_vibration", -1.2}};
+  const auto lines = tooltip_lines(t);
+  const auto mu_lines = std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.rfind("mu ", 0) == 0 || l.rfind(model::space::kFrictionDescriptor, 0) == 0;
+  });
+  EXPECT_EQ(mu_lines, 1);
+  // The other descriptor is kept, with its value.
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "log10_weighted_mean_vibration -1.2"), lines.end());
+  t.mu.reset();  // no mu of its own: the descriptor says it
+  const auto without = tooltip_lines(t);
+  EXPECT_NE(std::find(without.begin(), without.end(), "friction_mu 0.3"), without.end());
 }
 
 }  // namespace
