@@ -29,6 +29,8 @@ namespace {
 // The error line's height before it scrolls: a long error is read whole, without pushing the views
 // off a small window.
 constexpr int kErrorLines = 3;
+// Room kept right of the status line for its A, B, C buttons.
+constexpr float kStatusButtons = 90.0f;
 
 constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices,
                            View::experiment};
@@ -442,7 +444,9 @@ float Panel::status_height() const {
   const float line = ImGui::GetFrameHeightWithSpacing();
   const float bars = static_cast<float>((space_job_ ? 1 : 0) + (file_job_ ? 1 : 0) + (audio_->making_sounds() ? 1 : 0));
   const float width = ImGui::GetContentRegionAvail().x;
-  return ImGui::GetStyle().ItemSpacing.y * 2.0f + line * (2.0f + bars) + errors_.height(width, kErrorLines);
+  // The status line wraps (long tool names are read whole), the buttons A-C beside it.
+  const float status = ImGui::CalcTextSize(status_line().c_str(), nullptr, false, width - kStatusButtons).y;
+  return ImGui::GetStyle().ItemSpacing.y * 3.0f + line * (1.0f + bars) + status + errors_.height(width, kErrorLines);
 }
 
 void Panel::draw_status() {
@@ -459,7 +463,9 @@ void Panel::draw_status() {
   if (!errors_.current().empty()) errors_.draw(kErrorLines);
   else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
   else ImGui::NewLine();
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x - kStatusButtons);
   ImGui::TextUnformatted(status_line().c_str());
+  ImGui::PopTextWrapPos();
   if (audio_->playing().size() > 1) {
     const auto sounding = audio_->sounding();
     for (std::size_t i = 0; i < audio_->playing().size(); ++i) {
