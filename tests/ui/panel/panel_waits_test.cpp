@@ -1,0 +1,76 @@
+// What a person waiting is told, in a real window: the first click on a tool with nothing in the
+// user cache says that the stylus's modes are being solved (and kept), and its Cancel drops the
+// sound being made; F12 shows the frame times.
+#include <gtest/gtest.h>
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <thread>
+
+#include "model/design/stylus_modes.hpp"
+#include "tests/ui/panel/panel_test_setup.hpp"
+#include "tests/ui/panel/test_space.hpp"
+#include "ui/panel/panel.hpp"
+
+namespace nibrig::ui::panel {
+namespace {
+
+struct WaitSession {
+  PanelWindow window{testing::hidden_window()};
+  Panel panel;
+  explicit WaitSession(const PanelSetup& setup) : panel(setup) {}
+  void frame(const std::function<void(ImGuiIO&)>& input = {}) {
+    window.begin_frame(input);
+    panel.draw();
+    window.end_frame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  bool until(const std::function<bool()>& done) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!done() && std::chrono::steady_clock::now() < deadline) frame();
+    return done();
+  }
+};
+
+TEST(PanelWaits, TheFirstClickSaysTheStylusModesAreSolvedAndCancelDropsIt) {
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_waits";
+  std::filesystem::remove_all(dir);
+  ::setenv("NIBRIG_CACHE", (dir / "cache").c_str(), 1);  // empty: nothing solved yet
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  WaitSession s(setup);
+  ASSERT_TRUE(s.until([&] { return s.panel.settled(); }));
+  ASSERT_FALSE(std::filesystem::exists(model::design::stylus_modes_file({})));
+
+  s.panel.audio().play({{"cryon", "office"}});
+  ASSERT_TRUE(s.until([&] { return !s.panel.audio().making_message().empty(); }));
+  EXPECT_NE(s.panel.audio().making_message().find("solving the stylus's modes"), std::string::npos)
+      << s.panel.audio().making_message();
+  s.panel.audio().cancel_making();
+  s.frame();
+  EXPECT_FALSE(s.panel.audio().making_sounds());
+  EXPECT_TRUE(s.panel.audio().playing().empty());
+  EXPECT_FALSE(s.panel.audio().sounding().has_value());
+
+  // Asked again, it is made and sounds; the modes are kept, so a later click says nothing of them.
+  s.panel.audio().play({{"cryon", "office"}});
+  ASSERT_TRUE(s.until([&] { return s.panel.audio().sounding().has_value(); })) << s.panel.audio().error();
+  EXPECT_TRUE(std::filesystem::exists(model::design::stylus_modes_file({})));
+
+  // F12: the frame-time readout, and again to hide it.
+  const auto press = [&](int key) {
+    s.frame([&](ImGuiIO& io) { io.KeysDown[key] = true; });
+    s.frame([&](ImGuiIO& io) { io.KeysDown[key] = false; });
+  };
+  EXPECT_FALSE(s.panel.frame_times_shown());
+  press(GLFW_KEY_F12);
+  EXPECT_TRUE(s.panel.frame_times_shown());
+  press(GLFW_KEY_F12);
+  EXPECT_FALSE(s.panel.frame_times_shown());
+}
+
+}  // namespace
+}  // namespace nibrig::ui::panel
