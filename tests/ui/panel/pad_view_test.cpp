@@ -13,17 +13,27 @@
 namespace nibrig::ui::panel {
 namespace {
 
-TEST(PadView, ADragAtASteadySpeedDrivesTheEngineAtThatSpeed) {
+// A pad at 0.25 mm a pixel, the pen put down somewhere inside the canvas (below the tool row).
+struct PenDown {
   testing::HeadlessImGui imgui;
-  PanelAudio audio(model::design::ToolSoundOptions{});
-  PadView pad(audio);
-  pad.set_mm_per_pixel(0.25);
-  imgui.frame([&] { pad.draw(); });
-  // Somewhere inside the canvas, which starts below the tool row.
+  PanelAudio audio{model::design::ToolSoundOptions{}};
+  PadView pad{audio};
   ImVec2 at{300.0f, 300.0f};
-  imgui.mouse_to(at);
-  imgui.frame([&] { pad.draw(); });
-  imgui.mouse_down(true);
+  PenDown() {
+    pad.set_mm_per_pixel(0.25);
+    imgui.frame([&] { pad.draw(); });
+    imgui.mouse_to(at);
+    imgui.frame([&] { pad.draw(); });
+    imgui.mouse_down(true);
+  }
+};
+
+TEST(PadView, ADragAtASteadySpeedDrivesTheEngineAtThatSpeed) {
+  PenDown p;  // named, not bound: clang 14 lambdas cannot capture structured bindings
+  auto& imgui = p.imgui;
+  auto& audio = p.audio;
+  auto& pad = p.pad;
+  auto& at = p.at;
   for (int frame = 0; frame < 40; ++frame) {  // 10 px per 1/60 s frame: 600 px/s
     at.x += 10.0f;
     imgui.mouse_to(at);
@@ -41,15 +51,10 @@ TEST(PadView, ADragAtASteadySpeedDrivesTheEngineAtThatSpeed) {
 }
 
 TEST(PadView, AMouseSlowerThanTheDisplaySendsASteadySpeedWithoutSpikes) {
-  testing::HeadlessImGui imgui;
-  PanelAudio audio(model::design::ToolSoundOptions{});
-  PadView pad(audio);
-  pad.set_mm_per_pixel(0.25);
-  imgui.frame([&] { pad.draw(); });
-  ImVec2 at{300.0f, 300.0f};
-  imgui.mouse_to(at);
-  imgui.frame([&] { pad.draw(); });
-  imgui.mouse_down(true);
+  PenDown p;  // named, not bound: clang 14 lambdas cannot capture structured bindings
+  auto& imgui = p.imgui;
+  auto& pad = p.pad;
+  auto& at = p.at;
   // 600 px/s again, but the pointer reports on two frames of three (40 Hz on a 60 Hz display):
   // 10 px after one frame, 20 px after two. A difference per frame read 0 and 1200 px/s in turn.
   std::vector<double> sent;
