@@ -124,4 +124,9 @@ TrialEstimate estimate_trials(const StudyDefinition& definition, const Eigen::Ma
   return estimate;
 }
 
+Eigen::MatrixXd estimate_space(std::size_t dims, std::size_t stimuli) {
+  std::mt19937_64 generator(1);
+  return space::random_space(dims, stimuli, generator);
+}
+
 }  // namespace nibrig::model::study

@@ -86,4 +86,10 @@ TrialEstimate estimate_trials(const StudyDefinition& definition, const Eigen::Ma
                               std::size_t runs, std::uint64_t seed, unsigned threads = 0,
                               const space::JudgmentModel& model = {});
 
+// The estimate a face gives before a study starts: kEstimateRuns simulated participants; when no
+// space of the stimuli is known, they answer from estimate_space: a random space of the usual
+// spread (seeded 1), the same for every face that says it.
+inline constexpr std::size_t kEstimateRuns = 5;
+Eigen::MatrixXd estimate_space(std::size_t dims, std::size_t stimuli);
+
 }  // namespace nibrig::model::study

@@ -75,21 +75,28 @@ struct PanelUnderTest {
   }
 };
 
-void BM_PanelIdle(benchmark::State& state) {
-  PanelUnderTest p(state);
-  if (!p.ui) return;
+// The process's CPU (% of a core) and the frames per second while the loop runs `seconds` of wall
+// time per benchmark iteration, each frame given `input`; reported as counters.
+void count_cpu(benchmark::State& state, PanelUnderTest& p, double seconds,
+               const std::function<void(ImGuiIO&)>& input = {}) {
   double cpu = 0.0, wall = 0.0;
   std::size_t frames = 0;
   for (auto _ : state) {
     const double cpu0 = process_cpu_s();
     const auto start = Clock::now();
-    while (Clock::now() - start < std::chrono::seconds(5)) p.frame(), ++frames;
+    while (std::chrono::duration<double>(Clock::now() - start).count() < seconds) p.frame(input), ++frames;
     glFinish();
     cpu += process_cpu_s() - cpu0;
     wall += std::chrono::duration<double>(Clock::now() - start).count();
   }
   state.counters["core_percent"] = 100.0 * cpu / wall;
   state.counters["fps"] = static_cast<double>(frames) / wall;
+}
+
+void BM_PanelIdle(benchmark::State& state) {
+  PanelUnderTest p(state);
+  if (!p.ui) return;
+  count_cpu(state, p, 5.0);
 }
 BENCHMARK(BM_PanelIdle)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
@@ -131,18 +138,8 @@ void BM_PanelHeldStill(benchmark::State& state) {
     io.MouseDown[0] = true;
   };
   p.frame(held);
-  double cpu = 0.0, wall = 0.0;
-  std::size_t frames = 0;
-  for (auto _ : state) {
-    const double cpu0 = process_cpu_s();
-    const auto start = Clock::now();
-    while (Clock::now() - start < std::chrono::seconds(3)) p.frame(held), ++frames;
-    cpu += process_cpu_s() - cpu0;
-    wall += std::chrono::duration<double>(Clock::now() - start).count();
-  }
+  count_cpu(state, p, 3.0, held);
   p.frame();
-  state.counters["core_percent"] = 100.0 * cpu / wall;
-  state.counters["fps"] = static_cast<double>(frames) / wall;
 }
 BENCHMARK(BM_PanelHeldStill)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 

@@ -118,7 +118,7 @@ rig::RigRequest turntable_request(const ExperimentRunOptions& o, const study::St
 void say_estimate(const study::StudyDefinition& d, const Eigen::MatrixXd& truth,
                   const model::space::JudgmentModel& model, std::uint64_t seed, unsigned threads,
                   const std::string& whose) {
-  const study::TrialEstimate e = study::estimate_trials(d, truth, 5, seed, threads, model);
+  const study::TrialEstimate e = study::estimate_trials(d, truth, study::kEstimateRuns, seed, threads, model);
   std::cout << fmt::format(
       "{} stimuli, {} plan, {} mode: about {:.0f} trials with {} practice ({}-{} over {} simulated "
       "participants answering from {})\n",
@@ -187,8 +187,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
                                      model::space::family_name(judging.family), o.lapse_rate);
   } else {
     // No space to answer from: the estimate asks observers of a random space of the usual spread.
-    std::mt19937_64 generator(1);
-    truth = model::space::random_space(definition.dims, definition.stimuli.size(), generator);
+    truth = study::estimate_space(definition.dims, definition.stimuli.size());
   }
   std::optional<playback::OutputSettings> device;
   if (!simulated && !on_rig) device = output_settings(o.device, "nibrig-experiment");

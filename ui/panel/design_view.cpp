@@ -37,15 +37,12 @@ std::vector<std::pair<double, double>> spread_cell_centres(const design::GridAxe
   return picked;
 }
 
-// "fine grid: 5 of 23 designs solved, about 1 min 10 s left", the time from the rate so far.
+// "fine grid: 5 of 23 designs solved, about 70 s left", the time from the rate so far.
 std::string grid_progress_text(const std::string& step, std::size_t done, std::size_t total, double elapsed_s) {
   std::string text = step + ": " + std::to_string(done) + " of " + std::to_string(total) + " designs solved";
   if (done == 0 || done >= total) return text + (done == 0 ? " (the first sets the pace)" : "");
-  const long left = std::lround(elapsed_s / static_cast<double>(done) * static_cast<double>(total - done));
-  char eta[48];
-  if (left >= 60) std::snprintf(eta, sizeof eta, ", about %ld min %02ld s left", left / 60, left % 60);
-  else std::snprintf(eta, sizeof eta, ", about %ld s left", left);
-  return text + eta;
+  const double left = elapsed_s / static_cast<double>(done) * static_cast<double>(total - done);
+  return text + ", about " + duration_words(left) + " left";
 }
 
 model::space::Placement placement_of(const SceneTool& t) {

@@ -24,7 +24,7 @@ class FramePacing {
   // rest of the period when the last frame was not rendered), else sleeps in the window's event
   // wait until input or the timeout.
   void before_frame(PanelWindow& window, double wait_s);
-  // Whether the last frame followed an idle wait (the frame-time readout says so).
+  // Whether the last frame followed an idle wait (the panel's benchmark counts them).
   bool waited() const { return waited_; }
 
  private:

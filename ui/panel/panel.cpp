@@ -440,16 +440,16 @@ void Panel::follow_audio_error() {
   audio_error_seen_ = now;
 }
 
-float Panel::status_height() const {
+float Panel::status_height(const std::string& status) const {
   const float line = ImGui::GetFrameHeightWithSpacing();
   const float bars = static_cast<float>((space_job_ ? 1 : 0) + (file_job_ ? 1 : 0) + (audio_->making_sounds() ? 1 : 0));
   const float width = ImGui::GetContentRegionAvail().x;
   // The status line wraps (long tool names are read whole), the buttons A-C beside it.
-  const float status = ImGui::CalcTextSize(status_line().c_str(), nullptr, false, width - kStatusButtons).y;
-  return ImGui::GetStyle().ItemSpacing.y * 3.0f + line * (1.0f + bars) + status + errors_.height(width, kErrorLines);
+  const float text = ImGui::CalcTextSize(status.c_str(), nullptr, false, width - kStatusButtons).y;
+  return ImGui::GetStyle().ItemSpacing.y * 3.0f + line * (1.0f + bars) + text + errors_.height(width, kErrorLines);
 }
 
-void Panel::draw_status() {
+void Panel::draw_status(const std::string& status) {
   ImGui::Separator();
   if (space_job_) {
     if (progress_with_cancel("space-job", static_cast<float>(space_job_->progress()), space_job_->message().c_str()))
@@ -464,7 +464,7 @@ void Panel::draw_status() {
   else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
   else ImGui::NewLine();
   ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x - kStatusButtons);
-  ImGui::TextUnformatted(status_line().c_str());
+  ImGui::TextUnformatted(status.c_str());
   ImGui::PopTextWrapPos();
   if (audio_->playing().size() > 1) {
     const auto sounding = audio_->sounding();
@@ -524,7 +524,8 @@ void Panel::draw_views() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_MenuBar |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
   draw_menu();
-  const float status_height = this->status_height();
+  const std::string status = status_line();  // once a frame: laid out, then drawn
+  const float status_height = this->status_height(status);
   if (ImGui::BeginTabBar("views")) {
     for (View v : kViews) {
       const bool select = requested_ && *requested_ == v;
@@ -546,7 +547,7 @@ void Panel::draw_views() {
     ImGui::EndTabBar();
   }
   if (requested_ && current_ == *requested_) requested_.reset();
-  draw_status();
+  draw_status(status);
   files_.draw();
   ImGui::End();
   draw_fit_window();

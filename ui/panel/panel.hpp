@@ -124,9 +124,9 @@ class Panel {
   void poll_jobs();
   void draw_menu();
   void draw_fit_window();
-  void draw_status();
-  // Height the status block under the views takes this frame (the error line wraps).
-  float status_height() const;
+  void draw_status(const std::string& status);
+  // Height the status block under the views takes this frame with `status` (it and the error line wrap).
+  float status_height(const std::string& status) const;
   void draw_help_windows();
   void draw_frame_times();
   void draw_views();

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <random>
 #include <system_error>
 
 #include "model/space/simulated_observer.hpp"
@@ -11,6 +10,7 @@
 #include "model/study/study_results.hpp"
 #include "model/study/trial_sequence.hpp"
 #include "rt/stroke_source.hpp"
+#include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -20,15 +20,6 @@ namespace {
 
 // A trial is a triplet: the reference, A and B, each felt at least once before an answer counts.
 constexpr double kPlanPreviewStimuliPerTrial = 3.0;
-
-// "40 s", "6.5 min", "42 min": a duration as a person reads it.
-std::string plan_preview_duration(double seconds) {
-  char text[32];
-  if (seconds < 120.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
-  else if (seconds < 600.0) std::snprintf(text, sizeof text, "%.1f min", seconds / 60.0);
-  else std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
-  return text;
-}
 
 // The mean time to an answer over every answered trial of the study in `folder` and how many there
 // were; {0, 0} when there is no study or no answer yet, or it cannot be read (Start says why).
@@ -59,12 +50,6 @@ study::StudyDefinition definition_from_list(const PlanRequest& r) {
   return d;
 }
 
-study::TrialEstimate runner_estimate(const study::StudyDefinition& d) {
-  std::mt19937_64 generator(kPlanEstimateSeed);
-  const Eigen::MatrixXd truth = model::space::random_space(d.dims, d.stimuli.size(), generator);
-  return study::estimate_trials(d, truth, kPlanEstimateRuns, kPlanEstimateSeed);
-}
-
 PlanPreview preview_plan(const PlanRequest& r) {
   PlanPreview p;
   std::error_code ec;
@@ -88,8 +73,9 @@ PlanPreview preview_plan(const PlanRequest& r) {
     }
     p.stimuli = d.stimuli.size();
     p.practice = std::min(d.practice, model::space::triplet_count(d.stimuli.size()));
-    p.at_most = study::TrialSequence(d, kPlanEstimateSeed).expected_at_most();
-    p.estimate = runner_estimate(d);
+    // As `nibrig experiment run` says them before a study starts (seed 1 where it has none).
+    p.at_most = study::TrialSequence(d, 1).expected_at_most();
+    p.estimate = study::estimate_trials(d, study::estimate_space(d.dims, d.stimuli.size()), study::kEstimateRuns, 1);
   } catch (const std::exception& e) {
     p.problem = e.what();
     return p;
@@ -119,13 +105,13 @@ std::vector<std::string> plan_lines(const PlanPreview& p) {
     std::snprintf(time, sizeof time,
                   "expected duration: about %s (%.0f trials x %.1f s, the mean time to an answer over the "
                   "%zu trials answered in this study), rests besides",
-                  plan_preview_duration(p.expected_s()).c_str(), p.estimate.mean, p.seconds_per_trial,
+                  duration_words(p.expected_s()).c_str(), p.estimate.mean, p.seconds_per_trial,
                   p.answers_measured);
   else
     std::snprintf(time, sizeof time,
                   "expected duration: at least %s (%.0f trials x %.0f s: each stimulus felt once through "
                   "the %.0f s sweep); measured once this study has answers",
-                  plan_preview_duration(p.expected_s()).c_str(), p.estimate.mean, p.seconds_per_trial,
+                  duration_words(p.expected_s()).c_str(), p.estimate.mean, p.seconds_per_trial,
                   rt::SweepStroke::kPaperPeriod);
   return {size, time};
 }

@@ -28,12 +28,6 @@ struct PlanRequest {
 // read_stimulus_list and validate throw.
 model::study::StudyDefinition definition_from_list(const PlanRequest& request);
 
-// The runner's estimate: simulated participants answering from a random space of the usual spread,
-// with seeds 1, 2, ..., as `nibrig experiment run` makes it before a study starts.
-inline constexpr std::size_t kPlanEstimateRuns = 5;
-inline constexpr std::uint64_t kPlanEstimateSeed = 1;
-model::study::TrialEstimate runner_estimate(const model::study::StudyDefinition& definition);
-
 struct PlanPreview {
   std::string problem;  // why there is no plan to show (one line); empty when there is one
   bool from_folder = false;  // the plan is the study folder's own (no list in the form)

@@ -1,6 +1,7 @@
 // Small widgets the views share that ImGui 1.86 lacks.
 #pragma once
 
+#include <cstdio>
 #include <string>
 
 #include "imgui.h"
@@ -37,6 +38,15 @@ inline std::string fitted_from_the_end(const std::string& text, float width) {
   while (from < text.size() && ImGui::CalcTextSize(("..." + text.substr(from)).c_str()).x > width) ++from;
   while (from < text.size() && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80) ++from;  // whole UTF-8
   return "..." + text.substr(from);
+}
+
+// "40 s", "6.5 min", "42 min": a duration as a person reads it.
+inline std::string duration_words(double seconds) {
+  char text[32];
+  if (seconds < 120.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 600.0) std::snprintf(text, sizeof text, "%.1f min", seconds / 60.0);
+  else std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+  return text;
 }
 
 }  // namespace nibrig::ui::panel

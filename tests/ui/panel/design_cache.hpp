@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <string>
 #include <thread>
 
 #include "tests/ui/panel/panel_test_setup.hpp"
@@ -30,6 +31,18 @@ inline PanelSetup design_setup(const std::filesystem::path& dir) {
   PanelSetup setup;
   setup.space = write_descriptor_space(dir);
   setup.design = coarse_design();
+  return setup;
+}
+
+// The design view on a real JACK server (the actuator at a 64-frame period), in a fresh scratch
+// folder `name`, reading the shared cache; one cell centre checked against the FEM.
+inline PanelSetup jack_design_setup(const std::string& name) {
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / name;
+  std::filesystem::remove_all(dir);
+  use_shared_design_cache();
+  PanelSetup setup = design_setup(dir);
+  setup.device = DeviceRequest{"jack", "system", 1, 64};
+  setup.design.error_points = 1;
   return setup;
 }
 

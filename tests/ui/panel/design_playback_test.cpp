@@ -51,13 +51,8 @@ double correlation(const float* a, const float* b, std::size_t n) {
 
 TEST(DesignPlayback, DraggingTheMixSliderChangesTheSignalWithinFiftyMilliseconds) {
   nibrig::testing::JackServer server;
-  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_design_playback";
-  std::filesystem::remove_all(dir);
-  testing::use_shared_design_cache();
+  const PanelSetup setup = testing::jack_design_setup("panel_design_playback");
   PanelWindow window(testing::hidden_window());
-  PanelSetup setup = testing::design_setup(dir);
-  setup.device = DeviceRequest{"jack", "system", 1, 64};
-  setup.design.error_points = 1;
   Panel panel(setup);
   panel.audio().stroke() = StrokeChoice{0, 100.0f, 2.2f, {}};  // the offline render's constant stroke
   panel.audio().stroke_changed();

@@ -64,13 +64,8 @@ StrokeChoice constant_250() {
 
 TEST(PanelStroke, TheDesignViewPlaysTheStrokeChosenAfterItStartedAndAfterARelaunch) {
   nibrig::testing::JackServer server;
-  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_stroke";
-  std::filesystem::remove_all(dir);
-  testing::use_shared_design_cache();
+  const PanelSetup setup = testing::jack_design_setup("panel_stroke");
   PanelWindow window(testing::hidden_window());
-  PanelSetup setup = testing::design_setup(dir);
-  setup.device = DeviceRequest{"jack", "system", 1, 64};
-  setup.design.error_points = 1;
   const std::string constant = rt::make_stroke(constant_250().request()).description;
   {
     Panel panel(setup);
@@ -106,11 +101,11 @@ TEST(PanelStroke, TheDesignViewPlaysTheStrokeChosenAfterItStartedAndAfterARelaun
     // only by the texture's randomness. The bounds sit between the two, a third from each.
     EXPECT_GT(spread_sweep, kSweepSpread);
     EXPECT_LT(spread_constant, kConstantSpread);
-    write_panel_settings(dir / "panel.json", panel_settings_of(panel));
+    write_panel_settings(setup.space.parent_path() / "panel.json", panel_settings_of(panel));
   }
   // Relaunched with what it remembered: the design view plays the stroke the person left.
   Panel again(setup);
-  apply_panel_settings(again, read_panel_settings(dir / "panel.json"));
+  apply_panel_settings(again, read_panel_settings(setup.space.parent_path() / "panel.json"));
   EXPECT_EQ(again.audio().stroke(), constant_250());
   const auto frame = [&] {
     window.begin_frame();
