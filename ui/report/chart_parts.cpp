@@ -247,13 +247,13 @@ void draw_legend(PlotPage& page, const std::vector<LegendEntry>& entries,
     }
     if (e.kind == LegendEntry::Kind::region) {
       std::vector<double> xs, ys;
-      ellipse_polygon(x + 0.5 * sw, y, 0.5 * sw - 0.5 * e.stroke.width_px, half, 0.0, 72, xs, ys);
+      ellipse_polygon(x + 0.5 * sw, y, 0.5 * sw - 0.5 * e.outline.width_px, half, 0.0, 72, xs, ys);
       page.colour(e.colour, region_alpha);
       page.fill(xs, ys);
       xs.push_back(xs.front()), ys.push_back(ys.front());
       page.colour(e.colour);
-      page.line_width(e.stroke.width_px);
-      page.dashes(e.stroke.dashes_px);
+      page.line_width(e.outline.width_px);
+      page.dashes(e.outline.dashes_px);
       page.polyline(xs, ys);
       page.dashes({});
     }

@@ -85,7 +85,7 @@ double title_room(const std::string& title, const Style& st);
 void draw_title(PlotPage& page, const std::string& title, const Style& st);
 
 // How a line is drawn: its width and, if not solid, alternating dash and gap lengths (px).
-struct Stroke {
+struct LineStyle {
   double width_px = 1.0;
   std::vector<double> dashes_px;
 };
@@ -104,14 +104,14 @@ void draw_ring(PlotPage& page, double x, double y, double radius, Rgb colour);
 
 struct LegendEntry {
   // marker: a dot on an upright bar (a point with its interval); point: a dot alone; open_point: a
-  // ring; region: a small ellipse, pale inside, outlined with `stroke`.
+  // ring; region: a small ellipse, pale inside, outlined with `outline`.
   enum class Kind { line, marker, band, point, open_point, region };
   std::string label;
   Rgb colour;
   Kind kind;
   bool with_marker = false;  // a line with a dot on it
   bool with_band = false;    // a line over its shaded band
-  Stroke stroke{};           // region outlines only
+  LineStyle outline{};       // region outlines only
 };
 
 struct LegendLayout {

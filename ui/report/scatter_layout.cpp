@@ -60,7 +60,7 @@ void open_up(double& lo, double& hi) {
 
 }  // namespace
 
-Stroke region_stroke(std::size_t k, const Style& st) {
+LineStyle region_outline(std::size_t k, const Style& st) {
   const double s = st.scale;
   switch (k % 4) {
     case 0:
@@ -107,10 +107,10 @@ ScatterFrame layout_scatter(const ScatterPlot& plot) {
   for (std::size_t g = 0; g < groups.size(); ++g)
     f.legend.push_back({groups[g], palette[g % palette.size()], LegendEntry::Kind::point});
   for (std::size_t k = 0; k < styles; ++k) {
-    f.region_strokes.push_back(region_stroke(k, st));
+    f.region_outlines.push_back(region_outline(k, st));
     if (k < plot.region_labels.size()) {
       LegendEntry e{plot.region_labels[k], legend_region_grey, LegendEntry::Kind::region};
-      e.stroke = f.region_strokes.back();
+      e.outline = f.region_outlines.back();
       f.legend.push_back(e);
     }
   }
@@ -144,7 +144,7 @@ ScatterFrame layout_scatter(const ScatterPlot& plot) {
     for (std::size_t k = 0; k < p.regions.size(); ++k) {
       const auto& e = p.regions[k];
       const auto [hx, hy] = ellipse_half_extents(e);
-      const double line = f.region_strokes[k].width_px;
+      const double line = f.region_outlines[k].width_px;
       keep.push_back({e.centre_x - hx, e.centre_y - hy, line, 0.0, line, 0.0});
       keep.push_back({e.centre_x + hx, e.centre_y + hy, 0.0, line, 0.0, line});
       x_lo = std::min(x_lo, e.centre_x - hx), x_hi = std::max(x_hi, e.centre_x + hx);

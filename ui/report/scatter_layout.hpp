@@ -23,7 +23,7 @@ struct ScatterFrame {
   double legend_top = 0.0;  // page y of the legend's first row
   AxesLayout axes;
   Mapping mapping;                     // data to page pixels (origin bottom left)
-  std::vector<Stroke> region_strokes;  // style k of the regions
+  std::vector<LineStyle> region_outlines;  // style k of the regions
   double marker_radius = 0.0, label_cap = 0.0;
   PlacementOptions placement{};
   std::vector<LabelRequest> label_requests;  // of each point, page pixels
@@ -31,7 +31,7 @@ struct ScatterFrame {
 };
 
 // The outline of region style k: the first solid and heaviest, then dashed, dotted, dash-dotted.
-Stroke region_stroke(std::size_t k, const Style& st);
+LineStyle region_outline(std::size_t k, const Style& st);
 
 // Half-extents along x and y of an ellipse's bounding box.
 std::pair<double, double> ellipse_half_extents(const Ellipse& e);

@@ -64,7 +64,7 @@ void region_polygon(const Ellipse& e, const Mapping& m, std::vector<double>& xs,
 void draw_regions(PlotPage& page, const ScatterPlot& plot, const ScatterFrame& f) {
   // All fills before any outline, so that no fill hides an outline; the widest style (listed last,
   // e.g. 95 %) first, so that inner regions tint over outer ones.
-  std::size_t styles = f.region_strokes.size();
+  std::size_t styles = f.region_outlines.size();
   for (std::size_t k = styles; k-- > 0;) {
     for (std::size_t i = 0; i < plot.points.size(); ++i) {
       if (k >= plot.points[i].regions.size()) continue;
@@ -75,8 +75,8 @@ void draw_regions(PlotPage& page, const ScatterPlot& plot, const ScatterFrame& f
     }
   }
   for (std::size_t k = styles; k-- > 0;) {
-    page.line_width(f.region_strokes[k].width_px);
-    page.dashes(f.region_strokes[k].dashes_px);
+    page.line_width(f.region_outlines[k].width_px);
+    page.dashes(f.region_outlines[k].dashes_px);
     for (std::size_t i = 0; i < plot.points.size(); ++i) {
       if (k >= plot.points[i].regions.size()) continue;
       std::vector<double> xs, ys;

@@ -227,7 +227,7 @@ TEST(ReportScatterPlot, TheLegendListsGroupsRegionStylesAndHollowOnlyWhenUsed) {
   // The region styles differ in width or dashes, so that they read apart in one colour.
   const auto st = detail::Style::for_size({});
   for (std::size_t k = 1; k < 4; ++k) {
-    const auto a = detail::region_stroke(k - 1, st), b = detail::region_stroke(k, st);
+    const auto a = detail::region_outline(k - 1, st), b = detail::region_outline(k, st);
     EXPECT_TRUE(a.width_px != b.width_px || a.dashes_px != b.dashes_px) << k;
   }
 }
