@@ -28,7 +28,7 @@ struct DefaultsOptions {
   // worker threads, never two at once: a window posts it to its own thread.
   numeric::StepProgress progress;
   // Stops the computation with numeric::Cancelled; nothing is stored then.
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 template <typename T>

@@ -35,19 +35,19 @@ Cached<forcing::ForcingModel> default_forcing_model(const DefaultsOptions& o) {
       [&] {
         const std::string designs = "designs simulated";
         if (o.progress) o.progress(designs, 0, 0);
-        numeric::throw_if_cancelled(o.cancel, "forcing model");
+        numeric::throw_if_cancelled(o.stop, "forcing model");
         // Designs are solved one after another on this thread, so a cancel thrown here stops the
         // next mesh from starting.
         const forcing::ForcingInputs inputs = forcing::load_forcing_inputs(
             default_forcing_inputs(o),
             [&](const forcing::DesignResponse&, std::size_t done, std::size_t total) {
               if (o.progress) o.progress(designs, done, total);
-              numeric::throw_if_cancelled(o.cancel, "forcing model");
+              numeric::throw_if_cancelled(o.stop, "forcing model");
             });
         const auto fit_progress = numeric::step_progress(o.progress, "forcing fit", 1);
         forcing::ForcingModel model = forcing::fit_forcing_for_prediction(inputs).model;
         if (fit_progress) fit_progress(1, 1);
-        numeric::throw_if_cancelled(o.cancel, "forcing model");
+        numeric::throw_if_cancelled(o.stop, "forcing model");
         return model;
       },
       [](const std::filesystem::path& f, const forcing::ForcingModel& m) {

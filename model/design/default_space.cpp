@@ -29,7 +29,7 @@ space::SimulatedStudyOptions default_study_options(const DefaultsOptions& o) {
   study.bootstrap_resamples = o.bootstrap_resamples;
   study.threads = o.threads;
   study.progress = o.progress;
-  study.cancel = o.cancel;
+  study.stop = o.stop;
   return study;
 }
 

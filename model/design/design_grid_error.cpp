@@ -8,6 +8,7 @@
 
 #include "model/design/design_search.hpp"
 #include "model/modal/frequency_response.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "model/numeric/parallel_for.hpp"
 #include "model/space/catalog_descriptors.hpp"
 
@@ -101,6 +102,7 @@ GridError measure_grid_error_at(const PredictionSetup& setup, const DesignRespon
     cells[n] = at;
     counter.finished();
   });
+  numeric::throw_if_cancelled(stop, "grid error");
   result.descriptor_error.assign(dims, 0.0);
   for (auto& cell : cells) {
     if (!cell) continue;

@@ -48,8 +48,8 @@ struct GridError {
 // Predicts every cell centre both ways (predict_from_grid and predict_tool, the latter an FEM solve
 // each, in parallel on `threads`), on `surface`, with descriptors of a `dims`-dimensional space
 // (1-6) and, when `map` is given (with dims = its descriptor count), the placements. `progress`
-// counts cells; a stop requested returns what was measured so far (cells may be fewer). Throws
-// what predict_tool throws, naming the cell.
+// counts cells; a stop requested throws numeric::Cancelled once the cells under way are measured.
+// Throws what predict_tool throws, naming the cell.
 GridError measure_grid_error(const PredictionSetup& setup, const DesignResponseGrid& grid,
                              const std::string& surface, std::size_t dims,
                              const space::DescriptorMap* map = nullptr,

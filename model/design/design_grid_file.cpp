@@ -148,17 +148,15 @@ std::optional<DesignResponseGrid> load_cached_design_grid(const PredictionInputs
 
 namespace {
 
-// Computes the grid over `axes` (reusing `known`'s nodes) and caches it; nullopt when stopped.
-std::optional<DesignResponseGrid> compute_and_cache_grid(const PredictionInputs& inputs,
-                                                         const GridAxes& axes,
-                                                         const numeric::Progress& progress,
-                                                         std::stop_token stop, unsigned threads,
-                                                         const DesignResponseGrid* known) {
-  auto grid = compute_design_response_grid(inputs.setup, axes, progress, stop, threads, known);
-  if (!grid) return std::nullopt;
+// Computes the grid over `axes` (reusing `known`'s nodes) and caches it.
+DesignResponseGrid compute_and_cache_grid(const PredictionInputs& inputs, const GridAxes& axes,
+                                          const numeric::Progress& progress, std::stop_token stop,
+                                          unsigned threads, const DesignResponseGrid* known) {
+  DesignResponseGrid grid =
+      compute_design_response_grid(inputs.setup, axes, progress, stop, threads, known);
   const std::string key = design_grid_cache_key(inputs, axes);
   try {
-    write_design_grid(design_grid_cache_file(key), *grid, key);
+    write_design_grid(design_grid_cache_file(key), grid, key);
   } catch (const std::exception& e) {
     spdlog::warn("the design grid was computed but cannot be cached (it is recomputed next time): {}",
                  e.what());
@@ -172,11 +170,11 @@ std::size_t grid_node_count(const GridAxes& axes) {
 
 }  // namespace
 
-std::optional<DesignResponseGrid> cached_design_response_grid(
+DesignResponseGrid cached_design_response_grid(
     const PredictionInputs& inputs, const GridAxes& axes, const numeric::StepProgress& progress,
     std::stop_token stop, unsigned threads,
     const std::function<void(const DesignResponseGrid&)>& on_coarse) {
-  if (auto cached = load_cached_design_grid(inputs, axes)) return cached;
+  if (auto cached = load_cached_design_grid(inputs, axes)) return std::move(*cached);
   const GridAxes coarse_grid_axes = coarse_axes(axes);
   if (!on_coarse || grid_node_count(coarse_grid_axes) == grid_node_count(axes))
     return compute_and_cache_grid(
@@ -188,7 +186,6 @@ std::optional<DesignResponseGrid> cached_design_response_grid(
         inputs, coarse_grid_axes,
         numeric::step_progress(progress, kCoarseGridStep, grid_node_count(coarse_grid_axes)), stop,
         threads, nullptr);
-    if (!coarse) return std::nullopt;
   }
   on_coarse(*coarse);
   // Every coarse node is a fine node solved with the same inputs (coarse_axes, the same key's
@@ -200,7 +197,7 @@ std::optional<DesignResponseGrid> cached_design_response_grid(
       stop, threads, &*coarse);
 }
 
-std::optional<DesignResponseGrid> cached_design_response_grid(
+DesignResponseGrid cached_design_response_grid(
     const PredictionInputs& inputs, const GridAxes& axes, const numeric::Progress& progress,
     std::stop_token stop, unsigned threads,
     const std::function<void(const DesignResponseGrid&)>& on_coarse) {

@@ -59,17 +59,18 @@ inline constexpr const char* kFineGridStep = "fine grid";
 // from the cache or solved and cached (under its own key, as any grid), is passed to on_coarse;
 // the grid asked for is then solved reusing the coarse nodes (only the rest are solved), cached and
 // returned. on_coarse is not called when the grid is cached, nor for a grid of 2 × 2 nodes (its own
-// coarse grid). A stop in either phase returns nullopt; a coarse grid completed stays cached.
+// coarse grid). A stop in either phase throws numeric::Cancelled; a coarse grid completed stays
+// cached.
 //
 // Progress: each step solved is announced with done = 0 (kCoarseGridStep, then kFineGridStep) and
 // counted in the nodes it solves (5 × 7: 12, then 23); a step with nothing to solve (a cached
 // coarse grid) is not announced. The numeric::Progress form is called with those same counts, the
 // coarse grid's before on_coarse and the fine grid's after it.
-std::optional<DesignResponseGrid> cached_design_response_grid(
+DesignResponseGrid cached_design_response_grid(
     const PredictionInputs& inputs, const GridAxes& axes, const numeric::StepProgress& progress,
     std::stop_token stop = {}, unsigned threads = 0,
     const std::function<void(const DesignResponseGrid&)>& on_coarse = {});
-std::optional<DesignResponseGrid> cached_design_response_grid(
+DesignResponseGrid cached_design_response_grid(
     const PredictionInputs& inputs, const GridAxes& axes, const numeric::Progress& progress = {},
     std::stop_token stop = {}, unsigned threads = 0,
     const std::function<void(const DesignResponseGrid&)>& on_coarse = {});

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "model/design/tip_bracket.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "model/numeric/parallel_for.hpp"
 
 namespace nibrig::model::design {
@@ -206,9 +207,10 @@ std::size_t count_mode_jumps(const DesignResponseGrid& grid) {
   return jumps;
 }
 
-std::optional<DesignResponseGrid> compute_design_response_grid(
-    const PredictionSetup& setup, const GridAxes& axes, const numeric::Progress& progress,
-    std::stop_token stop, unsigned threads, const DesignResponseGrid* known) {
+DesignResponseGrid compute_design_response_grid(const PredictionSetup& setup, const GridAxes& axes,
+                                                const numeric::Progress& progress,
+                                                std::stop_token stop, unsigned threads,
+                                                const DesignResponseGrid* known) {
   validate(axes);
   if (setup.model == nullptr)
     throw std::invalid_argument("design grid: the setup needs a forcing model (its frequencies)");
@@ -244,13 +246,9 @@ std::optional<DesignResponseGrid> compute_design_response_grid(
     else
       to_solve.push_back(n);
   }
-  std::atomic<bool> stopped = false;
   numeric::ProgressCounter counter(progress, to_solve.size());
   numeric::parallel_for(to_solve.size(), threads, [&](std::size_t k) {
-    if (stop.stop_requested()) {
-      stopped = true;
-      return;
-    }
+    if (stop.stop_requested()) return;
     const std::size_t n = to_solve[k];
     const DesignPoint point = grid_point(axes, axes.fractions[n / nt], axes.tips_m[n % nt]);
     try {
@@ -260,7 +258,7 @@ std::optional<DesignResponseGrid> compute_design_response_grid(
     }
     counter.finished();
   });
-  if (stopped) return std::nullopt;
+  numeric::throw_if_cancelled(stop, "design grid");
   validate(grid, "the computed design grid");
   grid.mode_jumps = count_mode_jumps(grid);
   if (grid.mode_jumps > 0)

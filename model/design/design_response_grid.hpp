@@ -106,13 +106,14 @@ std::size_t count_mode_jumps(const DesignResponseGrid& grid);
 // nothing else of its solve, so `known` must come from this setup's template and materials (as a
 // grid cached under these inputs' key does). `progress` is called after each node solved with done
 // of total, the nodes to solve (known ones are not counted); `stop` is checked before each node
-// starts, and a stop requested returns std::nullopt once the nodes under way have finished (at most
-// one node's time per thread). Throws for axes validate refuses, a tip outside the forcing model's
-// fitted tips, a `known` grid validate refuses, and what the FEM throws (naming the node's design
-// point).
-std::optional<DesignResponseGrid> compute_design_response_grid(
-    const PredictionSetup& setup, const GridAxes& axes, const numeric::Progress& progress = {},
-    std::stop_token stop = {}, unsigned threads = 0, const DesignResponseGrid* known = nullptr);
+// starts, and a stop requested throws numeric::Cancelled once the nodes under way have finished
+// (at most one node's time per thread). Throws for axes validate refuses, a tip outside the forcing
+// model's fitted tips, a `known` grid validate refuses, and what the FEM throws (naming the node's
+// design point).
+DesignResponseGrid compute_design_response_grid(const PredictionSetup& setup, const GridAxes& axes,
+                                                const numeric::Progress& progress = {},
+                                                std::stop_token stop = {}, unsigned threads = 0,
+                                                const DesignResponseGrid* known = nullptr);
 
 // The response at (λ, tip) inside the grid, interpolated as the header says. Throws
 // std::invalid_argument for a point outside the grid (saying by how far and the grid's range).

@@ -122,7 +122,7 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
   result.refit_objectives.resize(result.aligned.size());
   numeric::ProgressCounter counter(progress, result.aligned.size());
   numeric::parallel_for(result.aligned.size(), options.threads, [&](std::size_t k) {
-    if (numeric::cancel_requested(options.cancel)) return;
+    if (options.stop.stop_requested()) return;
     std::mt19937_64 generator(options.seed + static_cast<unsigned>(k));
     const SpaceProblem resampled = resample(problem, responses, generator);
     FitOptions fit_options;
@@ -135,7 +135,7 @@ BootstrapResult bootstrap_space(const SpaceProblem& problem, const Eigen::Matrix
     result.refit_objectives[k] = fit.objective;
     counter.finished();
   });
-  numeric::throw_if_cancelled(options.cancel, "bootstrap refits");
+  numeric::throw_if_cancelled(options.stop, "bootstrap refits");
   for (Eigen::Index s = 0; s < reference.cols(); ++s)
     result.regions.push_back(summarise(result.aligned, s, options.levels));
   return result;

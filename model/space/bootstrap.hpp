@@ -21,7 +21,7 @@ struct BootstrapOptions {
   int starts = 1;
   std::vector<double> levels{0.68, 0.95};
   // When set, refits not yet begun are skipped and the bootstrap throws numeric::Cancelled.
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 // A stimulus's cloud: the ellipsoid {x : (x − mean)ᵀ covariance⁻¹ (x − mean) ≤ radius[k]²} holds

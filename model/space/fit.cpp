@@ -209,12 +209,12 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
   std::vector<StartResult> results(static_cast<std::size_t>(options.starts));
   numeric::ProgressCounter counter(progress, results.size());
   numeric::parallel_for(results.size(), options.threads, [&](std::size_t s) {
-    if (numeric::cancel_requested(options.cancel)) return;
+    if (options.stop.stop_requested()) return;
     results[s] = run_start(as_fitted, options, static_cast<int>(s));
     counter.finished();
   });
   // Checked after the join, so that no worker still writes into `results` when the caller unwinds.
-  numeric::throw_if_cancelled(options.cancel, "space fit");
+  numeric::throw_if_cancelled(options.stop, "space fit");
 
   FitResult fit;
   for (std::size_t s = 0; s < results.size(); ++s) {

@@ -29,7 +29,7 @@ struct FitOptions {
   bool spectral_start = true;
   // When set, starts not yet begun are skipped and the fit throws numeric::Cancelled (a start
   // already running finishes first: one start takes a fraction of a second).
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 struct FitResult {

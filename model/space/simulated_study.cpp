@@ -53,17 +53,17 @@ SimulatedStudy run_simulated_study(const io::Catalog& catalog,
   study.problem.lambda = o.lambda;
   study.problem.descriptors = study.descriptors.values;
 
-  numeric::throw_if_cancelled(o.cancel, "simulated study");
+  numeric::throw_if_cancelled(o.stop, "simulated study");
   FitOptions fit_options;
   fit_options.threads = o.threads;
-  fit_options.cancel = o.cancel;
+  fit_options.stop = o.stop;
   study.fit = fit_space(study.problem, fit_options,
                         numeric::step_progress(o.progress, "space fit starts",
                                                static_cast<std::size_t>(fit_options.starts)));
   BootstrapOptions b;
   b.resamples = o.bootstrap_resamples;
   b.threads = o.threads;
-  b.cancel = o.cancel;
+  b.stop = o.stop;
   study.bootstrap = bootstrap_space(
       study.problem, study.fit.coordinates, b,
       numeric::step_progress(o.progress, "bootstrap refits",
@@ -101,7 +101,7 @@ std::vector<SweepPoint> sweep_simulated_study(const SimulatedStudy& study,
   sweep.lambdas = {0.0, o.lambda};
   sweep.cross_validation.fit.starts = 4;
   sweep.cross_validation.fit.threads = o.threads;
-  sweep.cross_validation.fit.cancel = o.cancel;
+  sweep.cross_validation.fit.stop = o.stop;
   const std::size_t folds = sweep.dims.size() * sweep.lambdas.size() *
                             static_cast<std::size_t>(sweep.cross_validation.folds);
   return sweep_dimensions(

@@ -52,7 +52,7 @@ struct SimulatedStudyOptions {
   // Steps "space fit starts" then "bootstrap refits".
   numeric::StepProgress progress;
   // Checked between the stages and before every fit start and refit; throws numeric::Cancelled.
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 struct SimulatedStudy {

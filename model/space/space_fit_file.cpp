@@ -28,7 +28,7 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
   options.starts = settings.starts;
   options.seed = settings.seed;
   options.threads = settings.threads;
-  options.cancel = settings.cancel;
+  options.stop = settings.stop;
   const auto start = std::chrono::steady_clock::now();
   FittedSpace out;
   SpaceProblem problem = in.problem;
@@ -83,7 +83,7 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
     b.resamples = settings.bootstrap;
     b.seed = settings.seed;
     b.threads = settings.threads;
-    b.cancel = settings.cancel;
+    b.stop = settings.stop;
     const auto b_start = std::chrono::steady_clock::now();
     const BootstrapResult regions =
         bootstrap_space(fitted_problem, out.fit.coordinates, b, step(progress, kBootstrapStep));

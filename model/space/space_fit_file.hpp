@@ -29,7 +29,7 @@ struct SpaceFitSettings {
   std::vector<ModelFamily> candidates = every_family();
   int folds = 5;
   int choice_starts = 2;
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 // Called as each start or refit finishes: the step (kChoiceStep, kFitStep, then kBootstrapStep), how many of it

@@ -225,7 +225,7 @@ StudyReport report_study(const std::filesystem::path& study_folder,
     fit.seed = settings.seed;
     fit.threads = settings.threads;
     fit.bootstrap = settings.bootstrap;
-    fit.cancel = settings.cancel;
+    fit.stop = settings.stop;
     report.fitted = space::fit_space_file(inputs, judgments_file, descriptors, fit, settings.progress);
     report.warnings.insert(report.warnings.end(), report.fitted->warnings.begin(),
                            report.fitted->warnings.end());

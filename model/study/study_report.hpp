@@ -28,7 +28,7 @@ struct StudyReportSettings {
   // The space a validation study is scored against (required for one, ignored otherwise).
   std::filesystem::path validation_space;
   space::StepProgress progress;
-  numeric::CancelFlag cancel = nullptr;
+  std::stop_token stop;
 };
 
 struct ParticipantSummary {

@@ -140,7 +140,8 @@ BENCHMARK(BM_DesignGridFullPredictTool)->Iterations(3)->Unit(benchmark::kMillise
 void BM_DesignGridCompute(benchmark::State& state) {
   auto& b = bench();
   std::size_t nodes = 0;
-  for (auto _ : state) nodes = design::compute_design_response_grid(b.setup, default_axes())->nodes.size();
+  for (auto _ : state)
+    nodes = design::compute_design_response_grid(b.setup, default_axes()).nodes.size();
   state.counters["nodes"] = static_cast<double>(nodes);
 }
 BENCHMARK(BM_DesignGridCompute)->Iterations(1)->Unit(benchmark::kSecond);

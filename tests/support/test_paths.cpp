@@ -36,4 +36,16 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
   return out;
 }
 
+ScopedCacheDir::ScopedCacheDir(std::filesystem::path dir) {
+  if (const char* old = std::getenv("NIBRIG_CACHE")) old_ = old;
+  ::setenv("NIBRIG_CACHE", dir.c_str(), 1);
+}
+
+ScopedCacheDir::~ScopedCacheDir() {
+  if (old_)
+    ::setenv("NIBRIG_CACHE", old_->c_str(), 1);
+  else
+    ::unsetenv("NIBRIG_CACHE");
+}
+
 }  // namespace nibrig::test

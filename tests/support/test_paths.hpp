@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,18 @@ std::filesystem::path assets_dir();
 
 // The entries of a folder, in the order the file system lists them; none when it does not exist.
 std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir);
+
+// NIBRIG_CACHE pointed at `dir` for one scope, and put back as it was after it: the user cache of
+// what a test computes is its own.
+class ScopedCacheDir {
+ public:
+  explicit ScopedCacheDir(std::filesystem::path dir);
+  ~ScopedCacheDir();
+  ScopedCacheDir(const ScopedCacheDir&) = delete;
+  ScopedCacheDir& operator=(const ScopedCacheDir&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
 
 }  // namespace nibrig::test

@@ -96,11 +96,9 @@ void DesignView::prepare() {
         options.modes = s.modes;
         DesignInputs made;
         if (forcing.empty()) {  // the demo's forcing model, fitted once and kept in the user cache
-          std::atomic<bool> cancel{false};
-          std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
           design::DefaultsOptions defaults;
           defaults.catalog = catalog;
-          defaults.cancel = &cancel;
+          defaults.stop = control.stop_token();
           defaults.progress = step_reporter(control, "the default forcing model (fitted once, then kept): ");
           auto model = design::default_forcing_model(defaults);
           made.inputs = design::load_prediction_inputs(options, model.file, std::move(model.value));
@@ -120,7 +118,7 @@ void DesignView::prepare() {
           control.progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
           control.message(grid_progress_text(name, done, total, elapsed));
         };
-        auto grid = design::cached_design_response_grid(
+        made.grid = design::cached_design_response_grid(
             *made.inputs, axes, progress, control.stop_token(), 0,
             [&](const design::DesignResponseGrid& coarse) {
               std::lock_guard lock(handover->mutex);
@@ -128,8 +126,6 @@ void DesignView::prepare() {
               handover->grid = coarse;
               if (auto wake = job_done_hook.load()) wake();
             });
-        if (!grid) throw std::runtime_error("the design grid was cancelled");
-        made.grid = std::move(*grid);
         return made;
       });
 }

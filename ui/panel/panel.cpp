@@ -149,12 +149,9 @@ void Panel::load_default_space() {
   showing_default_ = true;
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "the default space", [catalog = setup_.catalog](JobControl& control) {
-        // The cancel flag the model checks follows the job's stop request.
-        std::atomic<bool> cancel{false};
-        std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
         model::design::DefaultsOptions options;
         options.catalog = catalog;
-        options.cancel = &cancel;
+        options.stop = control.stop_token();
         options.progress = step_reporter(control, "the default space (computed once, then kept): ");
         return panel::load_default_space(options);
       });
@@ -165,8 +162,6 @@ void Panel::fit_space(const SpaceFitRequest& r) {
   showing_default_ = false;
   space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
       "fitting a space", [r, catalog = setup_.catalog](JobControl& control) {
-        std::atomic<bool> cancel{false};
-        std::stop_callback on_stop(control.stop_token(), [&cancel] { cancel = true; });
         control.message("reading " + r.judgments.string());
         const std::filesystem::path descriptors =
             r.descriptors ? model::io::or_default(catalog, model::io::default_catalog) : std::filesystem::path();
@@ -178,7 +173,7 @@ void Panel::fit_space(const SpaceFitRequest& r) {
         settings.bootstrap = r.bootstrap;
         settings.choose_model = r.model == "auto";
         if (!settings.choose_model) settings.model = model::space::parse_family(r.model);
-        settings.cancel = &cancel;
+        settings.stop = control.stop_token();
         auto fitted = model::space::fit_space_file(inputs, r.judgments, descriptors, settings,
                                                    fit_progress(control, fit_steps(settings)));
         auto loaded = loaded_space_of(std::move(fitted.file), catalog,

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
+#include <stop_token>
 #include <fstream>
 #include <map>
 
@@ -80,13 +80,13 @@ TEST(DefaultForcing, EveryInputFileIsInTheKey) {
 TEST(DefaultForcing, ACancelledComputationLeavesNoFile) {
   DefaultsOptions o;
   o.cache_dir = nibrig::test::scratch_dir("default_forcing_cancel") / "cache";
-  std::atomic<bool> cancel{false};
-  o.cancel = &cancel;
+  std::stop_source cancel;
+  o.stop = cancel.get_token();
   std::size_t designs = 0;
   o.progress = [&](const std::string& step, std::size_t done, std::size_t) {
     if (step != "designs simulated" || done == 0) return;
     designs = done;
-    cancel = true;  // after the first design: the next one is never meshed
+    cancel.request_stop();  // after the first design: the next one is never meshed
   };
   EXPECT_THROW(default_forcing_model(o), numeric::Cancelled);
   EXPECT_EQ(designs, 1u);

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <stop_token>
 
 #include "model/io/bundled_assets.hpp"
 #include "tests/support/test_paths.hpp"
@@ -133,21 +133,21 @@ TEST(DefaultSpace, ASpaceThatCannotBeKeptIsStillReturned) {
 
 TEST(DefaultSpace, ACancelledComputationLeavesNoFile) {
   const auto cache = nibrig::test::scratch_dir("default_space_cancel") / "cache";
-  std::atomic<bool> cancel{false};
+  std::stop_source cancel;
   DefaultsOptions o = quick(cache);
   o.bootstrap_resamples = 200;  // so that the cancel lands mid-bootstrap
-  o.cancel = &cancel;
+  o.stop = cancel.get_token();
   o.progress = [&](const std::string& step, std::size_t done, std::size_t) {
-    if (step == "bootstrap refits" && done == 2) cancel = true;
+    if (step == "bootstrap refits" && done == 2) cancel.request_stop();
   };
   EXPECT_THROW(default_space(o), numeric::Cancelled);
   EXPECT_TRUE(files_in(cache).empty());
   // Nor does a cancel after the space was kept take it away: the next call reads it.
-  cancel = false;
+  o.stop = {};
   o.progress = {};
   o.bootstrap_resamples = 8;
   ASSERT_TRUE(default_space(o).computed);
-  cancel = true;
+  o.stop = cancel.get_token();
   EXPECT_FALSE(default_space(o).computed);
 }
 

@@ -89,7 +89,7 @@ const DesignResponseGrid& real_grid() {
         });
     EXPECT_EQ(calls, 9u);  // one call per node, counted in order
     EXPECT_EQ(last_total, 9u);
-    return *g;
+    return g;
   }();
   return grid;
 }

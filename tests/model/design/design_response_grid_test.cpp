@@ -13,6 +13,7 @@
 
 #include "model/design/design_grid_file.hpp"
 #include "model/io/format_error.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "tests/model/design/hand_made_forcing_model.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -228,10 +229,10 @@ TEST(DesignResponseGrid, AStopBeforeTheFirstNodeComputesNothing) {
   std::stop_source stop;
   stop.request_stop();
   std::size_t calls = 0;
-  const auto grid = compute_design_response_grid(
-      inputs->setup, even_axes("vero", "DM85", 2, 0.001, 0.004, 2),
-      [&](std::size_t, std::size_t) { ++calls; }, stop.get_token());
-  EXPECT_FALSE(grid);
+  EXPECT_THROW(compute_design_response_grid(
+                   inputs->setup, even_axes("vero", "DM85", 2, 0.001, 0.004, 2),
+                   [&](std::size_t, std::size_t) { ++calls; }, stop.get_token()),
+               numeric::Cancelled);
   EXPECT_EQ(calls, 0u);
   // A tip range beyond the model's fitted tips is refused before any FEM.
   EXPECT_THROW(compute_design_response_grid(inputs->setup,

@@ -3,7 +3,7 @@
 // returning a result computed from part of the work.
 #include <gtest/gtest.h>
 
-#include <atomic>
+#include <stop_token>
 
 #include "model/space/bootstrap.hpp"
 #include "model/space/fit.hpp"
@@ -16,41 +16,42 @@ SpaceProblem small_study() {
   return testing::every_triplet_judged(testing::random_truth(2, 7, 5), 6, 3);
 }
 
-TEST(SpaceCancellation, AFlagSetBeforehandStartsNoFit) {
-  const std::atomic<bool> cancel{true};
+TEST(SpaceCancellation, AStopRequestedBeforehandStartsNoFit) {
+  std::stop_source cancel;
+  cancel.request_stop();
   FitOptions options;
-  options.cancel = &cancel;
+  options.stop = cancel.get_token();
   std::size_t calls = 0;
   EXPECT_THROW(fit_space(small_study(), options, [&](std::size_t, std::size_t) { ++calls; }),
                numeric::Cancelled);
   EXPECT_EQ(calls, 0u);
 }
 
-TEST(SpaceCancellation, AFlagSetMidwayStopsTheRemainingRefits) {
+TEST(SpaceCancellation, AStopRequestedMidwayStopsTheRemainingRefits) {
   const SpaceProblem problem = small_study();
   const FitResult fit = fit_space(problem);
-  std::atomic<bool> cancel{false};
+  std::stop_source cancel;
   BootstrapOptions options;
   options.resamples = 200;
   options.threads = 2;
-  options.cancel = &cancel;
+  options.stop = cancel.get_token();
   std::size_t reported = 0;
   EXPECT_THROW(bootstrap_space(problem, fit.coordinates, options,
                                [&](std::size_t done, std::size_t) {
                                  reported = done;
-                                 if (done == 3) cancel = true;
+                                 if (done == 3) cancel.request_stop();
                                }),
                numeric::Cancelled);
-  // Refits already running when the flag was set still finish (one per thread), none after.
+  // Refits already running when the stop was requested still finish (one per thread), none after.
   EXPECT_GE(reported, 3u);
   EXPECT_LE(reported, 3u + options.threads);
 }
 
-TEST(SpaceCancellation, AnUnsetFlagChangesNothing) {
+TEST(SpaceCancellation, AWatchedTokenChangesNothing) {
   const SpaceProblem problem = small_study();
-  const std::atomic<bool> cancel{false};
+  std::stop_source cancel;
   FitOptions options;
-  options.cancel = &cancel;
+  options.stop = cancel.get_token();
   const FitResult watched = fit_space(problem, options);
   const FitResult plain = fit_space(problem);
   EXPECT_EQ(watched.coordinates, plain.coordinates);  // same seeds, same arithmetic

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <map>
+#include <stop_token>
 
 #include "model/space/synthetic_study.hpp"
 #include "tests/support/test_paths.hpp"
@@ -84,15 +84,15 @@ TEST(SimulatedStudy, ReportsEachStepAndIsTheSameWhetherWatchedOrNot) {
 }
 
 TEST(SimulatedStudy, CancelledDuringTheBootstrapThrowsCancelled) {
-  std::atomic<bool> cancel{false};
+  std::stop_source cancel;
   SimulatedStudyOptions o = quick();
   o.bootstrap_resamples = 200;
-  o.cancel = &cancel;
+  o.stop = cancel.get_token();
   std::size_t refits = 0;
   o.progress = [&](const std::string& step, std::size_t done, std::size_t) {
     if (step != "bootstrap refits") return;
     refits = done;
-    if (done == 2) cancel = true;
+    if (done == 2) cancel.request_stop();
   };
   EXPECT_THROW(run_simulated_study(catalog(), catalog_file(), o), numeric::Cancelled);
   EXPECT_LT(refits, 200u);

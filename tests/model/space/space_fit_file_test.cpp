@@ -77,9 +77,10 @@ TEST(SpaceFitFile, HoldsTheFitItsDescriptorMapAndRegions) {
 TEST(SpaceFitFile, ACancelledFitThrowsCancelled) {
   const auto judgments = judged(kEight, "space_fit_file_cancel");
   const auto in = read_space_inputs(judgments, {}, 2, 0.0);
-  std::atomic<bool> cancel{true};
+  std::stop_source cancel;
+  cancel.request_stop();
   SpaceFitSettings settings;
-  settings.cancel = &cancel;
+  settings.stop = cancel.get_token();
   EXPECT_THROW(fit_space_file(in, judgments, {}, settings), numeric::Cancelled);
 }
 
