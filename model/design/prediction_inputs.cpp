@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "model/design/default_forcing.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/mechanics/material_table.hpp"
@@ -20,8 +21,15 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
   } else if (!forcing_file.empty()) {
     in->model = forcing::read_forcing_model(forcing_file);
   } else {
-    spdlog::info("no forcing model given: fitting one to the catalog first");
-    in->model = forcing::fit_forcing_for_prediction(forcing::load_forcing_inputs(options, progress)).model;
+    DefaultsOptions defaults;
+    defaults.catalog = options.catalog;
+    defaults.stylus_design = options.design_template;
+    defaults.materials = options.materials;
+    const ForcingResolution resolution{options.modes, options.mesh_size};
+    Cached<forcing::ForcingModel> model = default_forcing_model(defaults, resolution, progress);
+    spdlog::info("no forcing model given: the catalog's default one, {} {}",
+                 model.computed ? "fitted now and kept in" : "read from", model.file.string());
+    in->model = std::move(model.value);
   }
   in->threshold = measure::ThresholdCurve::load(io::default_threshold_curve());
   if (in->model.held_out_descriptor_errors.empty()) {

@@ -1,7 +1,6 @@
 // What predicting a design needs, read from files once: the catalog (for μ), the forcing model
-// (from `nibrig forcing fit`, or fitted to the catalog when none is given), the materials, the
-// printed tools' template and the detection threshold. Shared by every face that predicts:
-// predict, design, the voices of render and audition, the demo, next the panel.
+// (a forcing file, or the default model of these inputs: model/design/default_forcing.hpp), the
+// materials, the printed tools' template and the detection threshold.
 #pragma once
 
 #include <filesystem>
@@ -30,10 +29,11 @@ struct PredictionInputs {
 };
 
 // `options` names the catalog, template, materials and the designs' modes and mesh size (empty or
-// 0: the bundled ones and the template's); `forcing_file` the model (empty: fit the catalog now,
-// ~8 s, said in the log, with `progress` as its designs are simulated); `fitted`, when given, is
-// used as the model instead. A model without held-out descriptor errors (a file from before them)
-// is used with a warning: its predictions are placed as if their descriptors were measured.
+// 0: the bundled ones and the template's); `forcing_file` the model (empty: the default model
+// fitted to the catalog at the same modes and mesh size, read from the user cache or fitted and
+// kept there, with `progress` as its designs are simulated); `fitted`, when given, is used instead.
+// A model without held-out descriptor errors (a file from before them) is used with a warning: its
+// predictions are placed as if their descriptors were measured.
 std::unique_ptr<PredictionInputs> load_prediction_inputs(
     const forcing::ForcingInputOptions& options, const std::filesystem::path& forcing_file,
     std::optional<forcing::ForcingModel> fitted = std::nullopt,

@@ -83,7 +83,7 @@ void run_design(const DesignOptions& o) {
   }
 
   if (o.forcing_model.empty() && warnings_shown())  // seconds of silence otherwise, as in predict
-    std::cerr << "fitting the forcing model to the catalog (no --forcing given)...\n";
+    std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
   const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& model = inputs->model;
   range.min_tip_m = model.tip_log_gain.begin()->first;

@@ -78,11 +78,11 @@ void run_predict(const PredictOptions& o) {
   } else {
     point = design::parse_design_point(o.design);
   }
-  // The time reported includes the fit: without --forcing it is most of the wait (seconds), and a
-  // time that leaves it out hides where the wait went.
+  // The time reported includes reading or fitting the default forcing model: a first fit is most of
+  // the wait, and a time that leaves it out hides where the wait went.
   const auto start = std::chrono::steady_clock::now();
   if (o.forcing_model.empty() && warnings_shown())
-    std::cerr << "fitting the forcing model to the catalog (no --forcing given)...\n";
+    std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
   const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
   const auto& catalog = inputs->catalog;
   const auto& threshold = *inputs->threshold;

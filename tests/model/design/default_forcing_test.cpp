@@ -1,16 +1,18 @@
-// The panel's default forcing model: computed on a cache miss (designs simulated, then the fit) and
-// written under its key, read back on a hit without computing, keyed by every input file, and
-// leaving nothing behind when cancelled. The model is the demo's (54 exemplars, 1.98 dB).
+// The default forcing model: computed on a cache miss (designs simulated, then the fit) and written
+// under its key, read back on a hit without computing (also by load_prediction_inputs without a
+// forcing file), keyed by every input file and the resolution, and leaving nothing behind when
+// cancelled. The model is the demo's (54 exemplars, 1.98 dB).
 // The corrupt-file path is the one default_space_test.cpp checks (cached_default.hpp): a second
 // forcing computation would double this suite's time under the sanitizers.
 #include "model/design/default_forcing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <stop_token>
 #include <fstream>
 #include <map>
+#include <stop_token>
 
+#include "model/design/prediction_inputs.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -53,6 +55,20 @@ TEST(DefaultForcing, AMissComputesAndWritesAndAHitReadsWithoutComputing) {
   const auto& b = second.value.surface_forcing.at("office");
   ASSERT_EQ(a.size(), b.size());
   EXPECT_NEAR(b[3][5], a[3][5], 1e-12 * a[3][5]);
+
+  // Predicting without a forcing file at the same resolution takes this model from the cache: no
+  // second file, no design simulated, the same numbers.
+  const nibrig::test::ScopedCacheDir cache(o.cache_dir);
+  forcing::ForcingInputOptions at_default;
+  at_default.modes = kDefaultForcingModes;
+  at_default.mesh_size = kDefaultForcingMeshSize;
+  std::size_t designs = 0;
+  const auto inputs = load_prediction_inputs(at_default, "", std::nullopt,
+                                             [&](const forcing::DesignResponse&, std::size_t,
+                                                 std::size_t) { ++designs; });
+  EXPECT_EQ(designs, 0u);
+  EXPECT_EQ(files_in(o.cache_dir), std::vector<std::filesystem::path>{first.file});
+  EXPECT_NEAR(inputs->model.residual_rms_db, first.value.residual_rms_db, 1e-12);
 }
 
 TEST(DefaultForcing, EveryInputFileIsInTheKey) {
@@ -71,6 +87,10 @@ TEST(DefaultForcing, EveryInputFileIsInTheKey) {
     std::ofstream(o.*member, std::ios::app) << ' ';
     EXPECT_NE(default_forcing_key(o).hex(), key) << bundled;
   }
+  // The designs' resolution is an input too; the default one is the key above.
+  EXPECT_EQ(default_forcing_key({}, {kDefaultForcingModes, kDefaultForcingMeshSize}).hex(), key);
+  EXPECT_NE(default_forcing_key({}, {16, kDefaultForcingMeshSize}).hex(), key);
+  EXPECT_NE(default_forcing_key({}, {kDefaultForcingModes, 0.003}).hex(), key);
   // How the space is computed is not the forcing model's business.
   DefaultsOptions refits;
   refits.bootstrap_resamples = 8;

@@ -68,8 +68,8 @@ TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(out / "p.png"));
 }
 
-TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
-  // The fit is most of the wait; before, it was silent and left out of the reported time.
+TEST(PredictCli, WithoutForcingItSaysWhichModelAndCountsItInItsTime) {
+  // The default model's fit, when it is not in the user cache yet, is most of the wait.
   const auto out = nibrig::test::scratch_dir("cli_predict_fits");
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
@@ -80,7 +80,7 @@ TEST(PredictCli, WithoutForcingItSaysItFitsAndCountsTheFitInItsTime) {
   const std::string text = ::testing::internal::GetCapturedStdout();
   const std::string err = ::testing::internal::GetCapturedStderr();
   ASSERT_EQ(code, 0) << err;
-  EXPECT_NE(err.find("fitting the forcing model to the catalog (no --forcing given)"),
+  EXPECT_NE(err.find("no --forcing given: the catalog's default forcing model"),
             std::string::npos)
       << err;
   // "...; 4.2 s" at the end of the first line: the command's own time, fit included, so at least
