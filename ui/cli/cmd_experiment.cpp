@@ -1,7 +1,7 @@
 // `nibrig experiment run` and `nibrig experiment report`: triplet studies (the paper's Sec. 4.2
 // and 6.1) with a person at the terminal or a simulated participant, on the actuator or the
 // turntable. The study, its order, log, resume and report are model/study; the presenters are
-// rig/study_actuator and rig/study_turntable; this file holds options and presentation.
+// rig/actuator_presenter and rig/turntable_presenter; this file holds options and presentation.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -25,8 +25,8 @@
 #include "playback/live_audition.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/study_actuator.hpp"
-#include "rig/study_turntable.hpp"
+#include "rig/actuator_presenter.hpp"
+#include "rig/turntable_presenter.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/experiment_commands.hpp"
 #include "ui/cli/experiment_terminal.hpp"

@@ -1,6 +1,6 @@
 // The work of `nibrig experiment run|report` (registered in cmd_experiment.cpp): a triplet study
 // with a person at the terminal or a simulated participant, on the actuator or the turntable, and
-// its report. The study itself is model/study; the presenters are rig/study_*.
+// its report. The study itself is model/study; the presenters are rig/*_presenter.
 #pragma once
 
 #include <filesystem>

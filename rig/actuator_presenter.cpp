@@ -1,4 +1,4 @@
-#include "rig/study_actuator.hpp"
+#include "rig/actuator_presenter.hpp"
 
 #include <stdexcept>
 
