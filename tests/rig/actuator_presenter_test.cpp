@@ -102,7 +102,7 @@ TEST(StudyActuatorJack, TheCaptureHearsTheStimuliInTheOrderTheParticipantAskedFo
   d.listed_trials = {{0, 1, 2, 1}};
   const auto dir = nibrig::test::scratch_dir("study_actuator_jack");
   const auto folder = study::test::make_study(dir, d);
-  study::SessionSettings settings;
+  study::StudySettings settings;
   settings.study = folder;
   settings.participant = "P01";
 
@@ -116,7 +116,7 @@ TEST(StudyActuatorJack, TheCaptureHearsTheStimuliInTheOrderTheParticipantAskedFo
   jack_nframes_t answered_at = 0;
   ScriptedParticipant participant(script, hold,
                                   [&] { answered_at = jack_frame_time(ear.client()); });
-  ASSERT_TRUE(study::run_session(settings, presenter, participant).complete);
+  ASSERT_TRUE(study::run_study(settings, presenter, participant).complete);
   ASSERT_TRUE(ear.wait_full(20s));
   std::vector<float> asked = ear.samples(0);
   for (const auto& c : ear.cycles())

@@ -145,7 +145,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
                                            "; use another folder for a new study");
 
   // 2. Everything that can be refused is refused before the participant starts.
-  study::SessionSettings session;
+  study::StudySettings session;
   session.study = o.output;
   session.participant = o.participant;
   session.seed = o.seed;
@@ -153,7 +153,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
   session.threads = threads;
   try {
     study::check_participant_id(o.participant);
-    if (study_exists) study::check_session(session);
+    if (study_exists) study::check_study_settings(session);
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--participant", e.what());
   }
@@ -198,7 +198,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
       o.instructions.empty() ? model::io::asset("experiment/instructions.txt") : o.instructions,
       o.consent.empty() ? model::io::asset("experiment/consent.txt") : o.consent);
   try {
-    study::check_session(session);
+    study::check_study_settings(session);
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--participant", e.what());
   }
@@ -251,7 +251,7 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
 
   // 5. The session.
   const auto start = std::chrono::steady_clock::now();
-  const study::SessionResult r = study::run_session(session, *presenter, *respondent);
+  const study::StudyResult r = study::run_study(session, *presenter, *respondent);
   for (const auto& w : r.warnings) spdlog::warn("{}", w);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -42,8 +42,8 @@ void ExperimentView::operator_done() {
   desk_->changed.notify_all();
 }
 
-study::SessionSettings ExperimentView::session_settings() const {
-  study::SessionSettings settings;
+study::StudySettings ExperimentView::session_settings() const {
+  study::StudySettings settings;
   settings.study = form_.study;
   settings.participant = form_.participant;
   settings.resume = form_.resume;
@@ -68,19 +68,19 @@ PlanRequest ExperimentView::plan_request() const {
 void ExperimentView::start() {
   error_.clear();
   try {
-    const study::SessionSettings settings = session_settings();
+    const study::StudySettings settings = session_settings();
     study::check_participant_id(form_.participant);
     if (!form_.resume || !form_.stimuli.empty()) {
       if (form_.stimuli.empty()) throw std::invalid_argument("a new study needs its stimulus list");
       const study::StudyDefinition d = definition_from_list(plan_request());
       if (std::filesystem::exists(std::filesystem::path(form_.study) / study::kStudyFile))
-        study::check_session(settings);  // a taken ID is refused before the study is touched
+        study::check_study_settings(settings);  // a taken ID is refused before the study is touched
       // An unknown tool or surface too (reading the catalog takes milliseconds; no meshing).
       rig::check_study_stimuli(model::design::ToolSounds(sound_options_()), d.stimuli);
       study::create_or_join_study(form_.study, d, model::io::asset("experiment/instructions.txt"),
                                   model::io::asset("experiment/consent.txt"));
     }
-    study::check_session(settings);
+    study::check_study_settings(settings);
     definition_ = study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
     const study::StudyDefinition& d = definition_;
     const bool on_rig = d.mode == study::StudyMode::rig;
@@ -172,7 +172,7 @@ void ExperimentView::poll() {
     return;
   }
   try {
-    const study::SessionSettings settings = session_settings();
+    const study::StudySettings settings = session_settings();
     const study::StudyDefinition& d = definition_;  // as start() read it
     if (d.mode == study::StudyMode::rig) {
       desk_ = std::make_shared<OperatorDesk>();

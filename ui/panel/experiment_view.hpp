@@ -76,7 +76,7 @@ class ExperimentView {
   std::string preparing_label() const;
 
  private:
-  model::study::SessionSettings session_settings() const;  // of the form
+  model::study::StudySettings session_settings() const;  // of the form
   PlanRequest plan_request() const;                         // of the form
   void refresh_plan();
   void draw_setup();
