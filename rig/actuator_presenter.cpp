@@ -26,7 +26,7 @@ std::vector<model::design::ToolSound> study_sounds(
   return made;
 }
 
-std::unique_ptr<rt::StrokeSource> ActuatorPresenter::study_sweep() {
+std::unique_ptr<rt::StrokeSource> ActuatorPresenter::study_sweep_stroke() {
   return std::make_unique<rt::SweepStroke>();
 }
 
