@@ -173,8 +173,14 @@ bool StudySession::answer(space::Choice choice, std::optional<double> response_s
 
 bool StudySession::complete() const { return result_.complete; }
 
+void StudySession::pause() { presenter_.pause(); }
+
 StudyResult run_study(const StudySettings& settings, Presenter& presenter, Respondent& respondent) {
   StudySession session(settings, presenter);
+  return run_study(session, respondent);
+}
+
+StudyResult run_study(StudySession& session, Respondent& respondent) {
   if (!respondent.agree(session.texts())) {
     StudyResult declined = session.result();
     declined.declined = true;
@@ -184,7 +190,7 @@ StudyResult run_study(const StudySettings& settings, Presenter& presenter, Respo
   while (const auto prompt = session.current()) {
     const Answer a = respondent.answer(*prompt, [&session](Role role) { session.play(role); });
     if (a.choice == space::Choice::none) {
-      presenter.pause();
+      session.pause();
       return session.result();  // stopped: this trial is not kept
     }
     if (session.answer(a.choice, a.response_s))

@@ -138,6 +138,8 @@ class StudySession {
   const std::string& plays() const noexcept { return plays_; }
   bool complete() const;
   const StudyResult& result() const noexcept { return result_; }
+  // Silences the presenter: the participant stopped.
+  void pause();
 
  private:
   void prepare_current();
@@ -160,5 +162,7 @@ class StudySession {
 // Runs (or resumes) one participant until the plan is complete or the respondent stops: a
 // StudySession driven by a Respondent. Throws as StudySession.
 StudyResult run_study(const StudySettings& settings, Presenter& presenter, Respondent& respondent);
+// The same with a session already open (by rig::start_study, say), not yet begun.
+StudyResult run_study(StudySession& session, Respondent& respondent);
 
 }  // namespace nibrig::model::study
