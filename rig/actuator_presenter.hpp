@@ -17,16 +17,6 @@
 
 namespace nibrig::rig {
 
-// Refuses, before any meshing, a stimulus whose tool or surface the catalog lacks or whose design
-// point is malformed: std::invalid_argument naming the stimulus and what ToolSounds::check says.
-void check_study_stimuli(const model::design::ToolSounds& sounds,
-                         const std::vector<model::study::Stimulus>& stimuli);
-
-// The sound of every stimulus, in order; progress(done, total) after each.
-std::vector<model::design::ToolSound> study_sounds(
-    model::design::ToolSounds& sounds, const std::vector<model::study::Stimulus>& stimuli,
-    const std::function<void(std::size_t, std::size_t)>& progress = {});
-
 class ActuatorPresenter final : public model::study::Presenter {
  public:
   using StrokeMaker = std::function<std::unique_ptr<rt::StrokeSource>()>;
