@@ -63,7 +63,7 @@ SpeedProfile profile_named(const std::string& name_or_file, std::optional<double
   if (seconds && !(*seconds > 0.0))
     throw std::invalid_argument("a capture lasts a positive number of seconds");
   if (name_or_file == "steps") return paper_steps(seconds.value_or(42.0));
-  if (name_or_file == "sweep") return study_sweep(seconds.value_or(6.0));
+  if (name_or_file == "sweep") return study_sweep_profile(seconds.value_or(6.0));
   const std::filesystem::path file(name_or_file);
   if (!std::filesystem::exists(file))
     throw std::invalid_argument("--profile " + name_or_file +

@@ -127,7 +127,7 @@ SpeedProfile paper_steps(double seconds) {
   return seconds > 0.0 ? fit_to_duration(one, seconds) : one;
 }
 
-SpeedProfile study_sweep(double seconds) {
+SpeedProfile study_sweep_profile(double seconds) {
   using rt::SweepStroke;
   const double half = SweepStroke::kPaperPeriod / 2.0;
   SpeedProfile one("sweep 17-250 mm/s, 3 s period",

@@ -52,7 +52,7 @@ void check_within_motor(const SpeedProfile& profile, double max_speed_m_s);
 // extends the whole (whole sweeps: 14 s each) and is rounded up to at least one sweep when zero.
 SpeedProfile paper_steps(double seconds = 0.0);
 // The user study's sweep (Sec. 8): 17 → 250 → 17 mm/s, linearly, a 3 s period, for `seconds`.
-SpeedProfile study_sweep(double seconds);
+SpeedProfile study_sweep_profile(double seconds);
 // A CSV file `time_s,speed_mm_s` (header line required, # comments allowed). Throws
 // model::io::FormatError naming the file and line.
 SpeedProfile read_speed_profile(const std::filesystem::path& file);

@@ -48,7 +48,7 @@ std::filesystem::path participant_folder(const std::filesystem::path& study, con
   return study / kParticipantsFolder / id;
 }
 
-void check_session(const SessionSettings& s) {
+void check_study_settings(const StudySettings& s) {
   check_participant_id(s.participant);
   if (!std::filesystem::exists(s.study / kStudyFile))
     throw std::invalid_argument(s.study.string() + " holds no study (" + kStudyFile + ")");
@@ -71,11 +71,12 @@ void check_session(const SessionSettings& s) {
   }
 }
 
-StudySession::StudySession(const SessionSettings& settings, Presenter& presenter)
+StudySession::StudySession(const StudySettings& settings, Presenter& presenter)
     : settings_(settings), presenter_(presenter) {
-  check_session(settings_);  // a clear refusal first, when there is no study or the ID is taken
+  // A clear refusal first, when there is no study or the ID is taken.
+  check_study_settings(settings_);
   lock_ = std::make_unique<ParticipantLock>(settings_.study, settings_.participant);
-  check_session(settings_);  // again, now that no other session can change the participant
+  check_study_settings(settings_);  // again, now that no other session can change the participant
   definition_ = read_study_file(settings_.study / kStudyFile);
   names_ = names_of(definition_);
   const std::filesystem::path folder = participant_folder(settings_.study, settings_.participant);
@@ -172,11 +173,16 @@ bool StudySession::answer(space::Choice choice, std::optional<double> response_s
 
 bool StudySession::complete() const { return result_.complete; }
 
-SessionResult run_session(const SessionSettings& settings, Presenter& presenter,
-                          Respondent& respondent) {
+void StudySession::pause() { presenter_.pause(); }
+
+StudyResult run_study(const StudySettings& settings, Presenter& presenter, Respondent& respondent) {
   StudySession session(settings, presenter);
+  return run_study(session, respondent);
+}
+
+StudyResult run_study(StudySession& session, Respondent& respondent) {
   if (!respondent.agree(session.texts())) {
-    SessionResult declined = session.result();
+    StudyResult declined = session.result();
     declined.declined = true;
     return declined;
   }
@@ -184,7 +190,7 @@ SessionResult run_session(const SessionSettings& settings, Presenter& presenter,
   while (const auto prompt = session.current()) {
     const Answer a = respondent.answer(*prompt, [&session](Role role) { session.play(role); });
     if (a.choice == space::Choice::none) {
-      presenter.pause();
+      session.pause();
       return session.result();  // stopped: this trial is not kept
     }
     if (session.answer(a.choice, a.response_s))

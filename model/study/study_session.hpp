@@ -83,7 +83,7 @@ StudyDefinition create_or_join_study(const std::filesystem::path& folder,
                                      const std::filesystem::path& instructions,
                                      const std::filesystem::path& consent);
 
-struct SessionSettings {
+struct StudySettings {
   std::filesystem::path study;  // the folder
   std::string participant;
   std::optional<std::uint64_t> seed;  // new participant: default seed_of_participant; resume: must match
@@ -98,9 +98,9 @@ std::filesystem::path participant_folder(const std::filesystem::path& study, con
 // Checks, before anyone starts, that the session can run: the study exists; a new participant's
 // ID is not taken (else "asks for --resume or a new ID"); a resumed one exists and its seed is the
 // one given. Throws std::invalid_argument saying which.
-void check_session(const SessionSettings& settings);
+void check_study_settings(const StudySettings& settings);
 
-struct SessionResult {
+struct StudyResult {
   std::size_t resumed_at = 0;   // trials answered before this session
   std::size_t answered = 0;     // in this session
   bool complete = false;        // every trial of the plan answered
@@ -112,11 +112,12 @@ struct SessionResult {
 // panel's frames): constructed, it has checked the session and replayed a resumed log; begin()
 // after the consent; then for each trial current(), play() as often as asked, answer(). Each answer
 // is on disk before answer() returns and the next trial is prepared (its stimuli loaded through the
-// presenter). Throws what check_session throws; on resume io::FormatError naming the responses file
-// and the trial where a logged trial is not the one the plan gives (another study or seed).
+// presenter). Throws what check_study_settings throws; on resume io::FormatError naming the
+// responses file and the trial where a logged trial is not the one the plan gives (another study
+// or seed).
 class StudySession {
  public:
-  StudySession(const SessionSettings& settings, Presenter& presenter);
+  StudySession(const StudySettings& settings, Presenter& presenter);
   ~StudySession();
   StudySession(const StudySession&) = delete;
   StudySession& operator=(const StudySession&) = delete;
@@ -136,12 +137,14 @@ class StudySession {
   // The current trial's plays so far ("RAB").
   const std::string& plays() const noexcept { return plays_; }
   bool complete() const;
-  const SessionResult& result() const noexcept { return result_; }
+  const StudyResult& result() const noexcept { return result_; }
+  // Silences the presenter: the participant stopped.
+  void pause();
 
  private:
   void prepare_current();
 
-  SessionSettings settings_;
+  StudySettings settings_;
   Presenter& presenter_;
   std::unique_ptr<ParticipantLock> lock_;  // held for the session's whole life
   StudyDefinition definition_;
@@ -150,7 +153,7 @@ class StudySession {
   ParticipantRecord record_;
   std::unique_ptr<TrialSequence> sequence_;
   std::unique_ptr<ResponseLog> log_;
-  SessionResult result_;
+  StudyResult result_;
   std::size_t main_done_ = 0;
   std::string plays_;
   std::chrono::steady_clock::time_point trial_start_;
@@ -158,7 +161,8 @@ class StudySession {
 
 // Runs (or resumes) one participant until the plan is complete or the respondent stops: a
 // StudySession driven by a Respondent. Throws as StudySession.
-SessionResult run_session(const SessionSettings& settings, Presenter& presenter,
-                          Respondent& respondent);
+StudyResult run_study(const StudySettings& settings, Presenter& presenter, Respondent& respondent);
+// The same with a session already open (by rig::start_study, say), not yet begun.
+StudyResult run_study(StudySession& session, Respondent& respondent);
 
 }  // namespace nibrig::model::study

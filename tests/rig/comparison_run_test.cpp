@@ -26,7 +26,8 @@ ComparisonRun compare_vero2_with(model::design::ToolSounds& sounds, const std::s
   options.capture.folder = folder;
   options.seed = 12;  // another seed: the same tool, other forcing noise, as a real tool would be
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-  return run_comparison(rig, study_sweep(12.0), sounds.sound(tool, "office"), threshold, options);
+  return run_comparison(rig, study_sweep_profile(12.0), sounds.sound(tool, "office"), threshold,
+                        options);
 }
 
 // The comparison tells the same tool from another: vero2 measured on the simulated rig lies close

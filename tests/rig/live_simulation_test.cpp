@@ -53,7 +53,7 @@ TEST(LiveSimulation, RunsSampleForSampleBesideASimulatedRigOfTheSameTool) {
   settings.speedup = 0.0;
   settings.seed = 5;
   SimulatedRig rig(settings, testing::bundled_sound("cryon", "office"), "cryon", "office");
-  rig.start(study_sweep(3.0));
+  rig.start(study_sweep_profile(3.0));
   LiveSimulation live(testing::bundled_sound("cryon", "office"), 48000.0, 1000.0, SimulatedRig::tool_seed(5));
   std::vector<float> measured, simulated;
   RigData batch;

@@ -66,10 +66,10 @@ TEST(ReplayRig, SessionReplayedIsCapturedUnchanged) {
   SimulatedRig simulated(settings, sounds.sound("vero2", "office"), "vero2", "office");
   CaptureOptions first;
   first.folder = dir / "original";
-  capture_session(simulated, study_sweep(2.0), first);
+  capture_session(simulated, study_sweep_profile(2.0), first);
 
   ReplayRig replay(dir / "original", 0.0);
-  EXPECT_EQ(replay.recorded_profile().description(), study_sweep(2.0).description());
+  EXPECT_EQ(replay.recorded_profile().description(), study_sweep_profile(2.0).description());
   CaptureOptions second;
   second.folder = dir / "replayed";
   const CaptureResult result = capture_session(replay, replay.recorded_profile(), second);

@@ -41,7 +41,7 @@ RigData run(Rig& rig, const SpeedProfile& profile) {
 }
 
 TEST(SimulatedRig, IsDeterministicForASeedAndDeliversBothStreamsOnOneTimeline) {
-  const SpeedProfile profile = study_sweep(1.0);
+  const SpeedProfile profile = study_sweep_profile(1.0);
   SimulatedRig a(fast(7), testing::bundled_sound("vero2", "office"), "vero2", "office");
   SimulatedRig b(fast(7), testing::bundled_sound("vero2", "office"), "vero2", "office");
   SimulatedRig c(fast(8), testing::bundled_sound("vero2", "office"), "vero2", "office");
@@ -115,7 +115,7 @@ TEST(SimulatedRig, RealTimePacingFollowsTheClock) {
   s.speedup = 1.0;
   SimulatedRig rig(s, testing::bundled_sound("vero2", "office"), "vero2", "office");
   const auto start = std::chrono::steady_clock::now();
-  const RigData d = run(rig, study_sweep(0.5));
+  const RigData d = run(rig, study_sweep_profile(0.5));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(d.frames.size(), 500u);
   EXPECT_GE(wall, 0.49);  // the last block is due at 0.49 s

@@ -29,14 +29,14 @@ TEST(SpeedProfile, PaperStepsHoldSixSpeedsAfterARestAndRepeatWhole) {
 }
 
 TEST(SpeedProfile, StudySweepIsATriangleOverThePapersRange) {
-  const SpeedProfile sweep = study_sweep(6.0);
+  const SpeedProfile sweep = study_sweep_profile(6.0);
   EXPECT_DOUBLE_EQ(sweep.speed_at(0.0), 0.017);
   EXPECT_DOUBLE_EQ(sweep.speed_at(1.5), 0.250);
   EXPECT_DOUBLE_EQ(sweep.speed_at(0.75), (0.017 + 0.250) / 2);
   EXPECT_DOUBLE_EQ(sweep.speed_at(4.5), 0.250);
   EXPECT_DOUBLE_EQ(sweep.max_speed_m_s(), 0.250);
   // Cut a third of the way down from the top (1.5 s) to the bottom (3 s).
-  EXPECT_DOUBLE_EQ(study_sweep(2.0).speed_at(2.0), 0.250 - (0.250 - 0.017) / 3.0);
+  EXPECT_DOUBLE_EQ(study_sweep_profile(2.0).speed_at(2.0), 0.250 - (0.250 - 0.017) / 3.0);
 }
 
 TEST(SpeedProfile, RefusesPointsThatAreNotAProfile) {

@@ -1,7 +1,8 @@
 // `nibrig experiment run` and `nibrig experiment report`: triplet studies (the paper's Sec. 4.2
 // and 6.1) with a person at the terminal or a simulated participant, on the actuator or the
-// turntable. The study, its order, log, resume and report are model/study; the presenters are
-// rig/study_actuator and rig/study_turntable; this file holds options and presentation.
+// turntable. The study, its order, log, resume and report are model/study; starting a session (the
+// checks, the folder, the sounds, the presenter) is rig/study_start; this file holds options and
+// presentation.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -15,7 +16,6 @@
 
 #include "model/design/design_search.hpp"
 #include "model/design/tool_sound.hpp"
-#include "model/io/bundled_assets.hpp"
 #include "model/space/simulated_observer.hpp"
 #include "model/space/space_file.hpp"
 #include "model/study/simulated_participant.hpp"
@@ -25,8 +25,7 @@
 #include "playback/live_audition.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/study_actuator.hpp"
-#include "rig/study_turntable.hpp"
+#include "rig/study_start.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/experiment_commands.hpp"
 #include "ui/cli/experiment_terminal.hpp"
@@ -95,7 +94,8 @@ study::StudyDefinition definition_from(const ExperimentRunOptions& o) {
   return d;
 }
 
-rig::RigRequest turntable_request(const ExperimentRunOptions& o, const study::Stimulus& s) {
+// The rig of rig mode, without its tool: the start sets each stimulus's.
+rig::RigRequest turntable_request(const ExperimentRunOptions& o) {
   rig::RigRequest r;
   if (o.usb) {
     r.kind = rig::RigKind::usb;
@@ -109,9 +109,23 @@ rig::RigRequest turntable_request(const ExperimentRunOptions& o, const study::St
     // A simulated participant does not wait for the turntable; a person feels it in real time.
     r.speedup = o.rig_speedup.value_or(o.simulate.empty() ? 1.0 : 0.0);
   }
-  r.tool = s.tool;
-  r.surface = s.surface;
   return r;
+}
+
+// A refused start as the option at fault; a stimulus the catalog lacks stays a plain error, as
+// any unknown tool is elsewhere.
+[[noreturn]] void throw_as_option(const rig::StudyStartRefused& e) {
+  using Field = rig::StudyStartRefused::Field;
+  switch (e.field()) {
+    case Field::participant: throw CLI::ValidationError("--participant", e.what());
+    case Field::definition: throw CLI::ValidationError("--stimuli", e.what());
+    case Field::folder: throw CLI::ValidationError("-o", e.what());
+    case Field::rig:
+      throw CLI::ValidationError("--mode",
+                                 std::string(e.what()) + ": --simulated-rig or --usb [SERIAL]");
+    case Field::stimulus: break;
+  }
+  throw e;
 }
 
 // What the trial count will be, from five simulated participants judging `truth` by `model`.
@@ -129,45 +143,62 @@ void say_estimate(const study::StudyDefinition& d, const Eigen::MatrixXd& truth,
 }  // namespace
 
 void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
-  const std::filesystem::path study_file = o.output / study::kStudyFile;
-  const bool study_exists = std::filesystem::exists(study_file);
-  // 1. The study: from the list, or on --resume the folder's own.
-  study::StudyDefinition definition;
-  if (!o.stimuli.empty())
-    definition = definition_from(o);
-  else if (study_exists)
-    definition = study::read_study_file(study_file);
-  else
-    throw CLI::ValidationError("--stimuli", "a new study needs its stimulus list (one tool/surface a line)");
-  if (study_exists && !o.stimuli.empty())
-    if (const auto difference = study::study_difference(study::read_study_file(study_file), definition))
-      throw CLI::ValidationError("-o", o.output.string() + " holds another study: " + *difference +
-                                           "; use another folder for a new study");
+  const bool simulated = !o.simulate.empty();
+  // 1. The start: the study from the list (or on --resume the folder's own), and the presenters'
+  // inputs. The person at the terminal is made once nothing more can be refused.
+  rig::StudyStartRequest request;
+  if (!o.stimuli.empty()) request.definition = definition_from(o);
+  request.settings.study = o.output;
+  request.settings.participant = o.participant;
+  request.settings.seed = o.seed;
+  request.settings.resume = o.resume;
+  request.settings.threads = threads;
+  request.instructions = o.instructions;
+  request.consent = o.consent;
+  request.sounds = {o.catalog, o.design, o.forcing_model, design_progress()};
+  std::unique_ptr<TerminalParticipant> person;
+  std::optional<playback::OutputSettings> device;
+  std::unique_ptr<playback::LiveAudition> audition;
+  if (!simulated) {
+    request.audition = [&o, &device, &audition]() -> playback::LiveAudition& {
+      rt::EngineSettings settings;
+      settings.sample_rate_hz = device->sample_rate;
+      audition = std::make_unique<playback::LiveAudition>(settings);
+      audition->open(*device);
+      if (!o.actuator.empty()) {
+        const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
+        audition->use_actuator(calibration, calibration.name);
+      }
+      const auto info = *audition->stream_info();
+      std::printf("playing on %s '%s' at %u Hz\n", info.api.c_str(), info.device.c_str(),
+                  info.sample_rate);
+      return *audition;
+    };
+  }
+  if (o.simulated_rig || o.usb) request.rig = [&o] { return turntable_request(o); };
+  // A person's operator confirms each mount with Enter; a simulated study only says it.
+  request.mount = [&person](const std::string& message) {
+    std::printf("operator: %s%s\n", message.c_str(), person ? " (Enter when done)" : "");
+    if (person) person->wait_for_enter();
+  };
+  request.notice = [](const std::string& message) {
+    std::printf("operator: %s\n", message.c_str());
+  };
 
   // 2. Everything that can be refused is refused before the participant starts.
-  study::SessionSettings session;
-  session.study = o.output;
-  session.participant = o.participant;
-  session.seed = o.seed;
-  session.resume = o.resume;
-  session.threads = threads;
+  std::optional<rig::StudyStart> start;
   try {
-    study::check_participant_id(o.participant);
-    if (study_exists) study::check_session(session);
-  } catch (const std::invalid_argument& e) {
-    throw CLI::ValidationError("--participant", e.what());
+    start.emplace(std::move(request));
+  } catch (const rig::StudyStartRefused& e) {
+    throw_as_option(e);
   }
-  const bool simulated = !o.simulate.empty();
-  const bool on_rig = definition.mode == study::StudyMode::rig;
-  if (on_rig && !o.simulated_rig && !o.usb)
-    throw CLI::ValidationError("--mode", "rig mode needs its rig: --simulated-rig or --usb [SERIAL]");
-  model::design::ToolSounds sounds({o.catalog, o.design, o.forcing_model, design_progress()});
-  rig::check_study_stimuli(sounds, definition.stimuli);
+  const study::StudyDefinition& definition = start->definition();
   std::optional<study::SimulatedParticipant> simulated_participant;
   Eigen::MatrixXd truth;
   model::space::JudgmentModel judging;  // the paper's, unless the space judged by another
   if (simulated) {
     const model::space::SpaceFile space = model::space::read_space_file(o.simulate);
+    model::design::ToolSounds& sounds = start->tool_sounds();
     // A design point is placed where its predicted descriptors put it (seconds each: the FEM).
     const study::PlaceOther predicted = [&](const study::Stimulus& s) -> std::optional<Eigen::VectorXd> {
       if (!model::design::names_design_point(s.tool) || !space.descriptor_map) return std::nullopt;
@@ -182,31 +213,26 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
     const auto record = study::participant_folder(o.output, o.participant) / study::kParticipantFile;
     if (o.resume && !o.seed && std::filesystem::exists(record)) seed = study::read_participant_file(record).seed;
     simulated_participant.emplace(truth, options, seed, judging);
-    session.respondent = "simulated from " + o.simulate.string() +
-                         fmt::format(" (judging by {}, lapse rate {} besides)",
-                                     model::space::family_name(judging.family), o.lapse_rate);
+    start->record_respondent("simulated from " + o.simulate.string() +
+                             fmt::format(" (judging by {}, lapse rate {} besides)",
+                                         model::space::family_name(judging.family), o.lapse_rate));
   } else {
     // No space to answer from: the estimate asks observers of a random space of the usual spread.
     truth = study::estimate_space(definition.dims, definition.stimuli.size());
   }
-  std::optional<playback::OutputSettings> device;
-  if (!simulated && !on_rig) device = output_settings(o.device, "nibrig-experiment");
-
-  // 3. The study folder, the participant.
-  study::create_or_join_study(
-      o.output, definition,
-      o.instructions.empty() ? model::io::asset("experiment/instructions.txt") : o.instructions,
-      o.consent.empty() ? model::io::asset("experiment/consent.txt") : o.consent);
-  try {
-    study::check_session(session);
-  } catch (const std::invalid_argument& e) {
-    throw CLI::ValidationError("--participant", e.what());
-  }
+  if (!simulated && definition.mode != study::StudyMode::rig)
+    device = output_settings(o.device, "nibrig-experiment");
   say_estimate(definition, truth, judging, o.seed.value_or(1), threads,
                simulated ? o.simulate.string() : "a random space");
 
-  // 4. Who answers, and what they feel.
-  std::unique_ptr<TerminalParticipant> person;
+  // 3. The study folder, the stimuli's sounds, who answers and what they feel.
+  rig::ReadyStudy ready;
+  try {
+    start->prepare(progress_bar("making the stimuli's sounds"));
+    ready = start->ready();
+  } catch (const rig::StudyStartRefused& e) {
+    throw_as_option(e);
+  }
   std::unique_ptr<PacedParticipant> paced;
   study::Respondent* respondent = nullptr;
   if (simulated) {
@@ -216,45 +242,13 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
     person = std::make_unique<TerminalParticipant>(STDIN_FILENO, stdout);
     respondent = person.get();
   }
-  std::unique_ptr<playback::LiveAudition> audition;
-  std::unique_ptr<study::Presenter> presenter;
-  if (on_rig) {
-    // A person's operator confirms each mount with Enter; a simulated study only says it.
-    const rig::TurntablePresenter::OperatorPrompt mount = [&person](const std::string& message) {
-      std::printf("operator: %s%s\n", message.c_str(), person ? " (Enter when done)" : "");
-      if (person) person->wait_for_enter();
-    };
-    const rig::TurntablePresenter::OperatorNotice notice = [](const std::string& message) {
-      std::printf("operator: %s\n", message.c_str());
-    };
-    presenter = std::make_unique<rig::TurntablePresenter>(
-        definition.stimuli,
-        [&o, &sounds](const study::Stimulus& s) { return rig::open_rig(turntable_request(o, s), sounds); },
-        mount, notice);
-  } else if (device) {
-    auto bar = progress_bar("making the stimuli's sounds");
-    std::vector<model::design::ToolSound> made = rig::study_sounds(sounds, definition.stimuli, bar);
-    rt::EngineSettings settings;
-    settings.sample_rate_hz = device->sample_rate;
-    audition = std::make_unique<playback::LiveAudition>(settings);
-    audition->open(*device);
-    if (!o.actuator.empty()) {
-      const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
-      audition->use_actuator(calibration, calibration.name);
-    }
-    const auto info = *audition->stream_info();
-    std::printf("playing on %s '%s' at %u Hz\n", info.api.c_str(), info.device.c_str(), info.sample_rate);
-    presenter = std::make_unique<rig::ActuatorPresenter>(*audition, std::move(made));
-  } else {
-    presenter = std::make_unique<study::NothingPresented>();
-  }
 
-  // 5. The session.
-  const auto start = std::chrono::steady_clock::now();
-  const study::SessionResult r = study::run_session(session, *presenter, *respondent);
+  // 4. The session.
+  const auto began = std::chrono::steady_clock::now();
+  const study::StudyResult r = study::run_study(*ready.session, *respondent);
   for (const auto& w : r.warnings) spdlog::warn("{}", w);
   const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   if (r.declined) {
     std::cout << "the participant declined: nothing was recorded\n";
     return;

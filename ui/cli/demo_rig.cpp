@@ -60,7 +60,7 @@ DemoSection run_rig_demo(const std::filesystem::path& catalog_file, const std::f
   ensure_folder(folder / "compare");
   options.capture.folder = folder / "compare" / "session";
   const rig::ComparisonRun run =
-      rig::run_comparison(swept, rig::study_sweep(6.0), sound, threshold, options);
+      rig::run_comparison(swept, rig::study_sweep_profile(6.0), sound, threshold, options);
   model::io::write_comparison_file(rig::comparison_report(kTool, kSurface, run.table, run.settings),
                                    folder / "compare" / "comparison.json");
   write_comparison_figure(run, std::string(kTool) + " on " + kSurface + " (simulated rig) against " + run.simulated,

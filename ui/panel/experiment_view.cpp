@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "imgui.h"
-#include "model/io/bundled_assets.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
@@ -42,8 +41,8 @@ void ExperimentView::operator_done() {
   desk_->changed.notify_all();
 }
 
-study::SessionSettings ExperimentView::session_settings() const {
-  study::SessionSettings settings;
+study::StudySettings ExperimentView::study_settings() const {
+  study::StudySettings settings;
   settings.study = form_.study;
   settings.participant = form_.participant;
   settings.resume = form_.resume;
@@ -65,55 +64,74 @@ PlanRequest ExperimentView::plan_request() const {
   return r;
 }
 
+namespace {
+
+// The form's field a refused start points at.
+const char* experiment_form_field(rig::StudyStartRefused::Field field) {
+  switch (field) {
+    case rig::StudyStartRefused::Field::participant: return "participant ID";
+    case rig::StudyStartRefused::Field::definition: return "stimulus list";
+    case rig::StudyStartRefused::Field::folder: return "study folder";
+    case rig::StudyStartRefused::Field::stimulus: return "stimulus list";
+    case rig::StudyStartRefused::Field::rig: return "mode";
+  }
+  return "form";
+}
+
+}  // namespace
+
 void ExperimentView::start() {
   error_.clear();
   try {
-    const study::SessionSettings settings = session_settings();
-    study::check_participant_id(form_.participant);
-    if (!form_.resume || !form_.stimuli.empty()) {
-      if (form_.stimuli.empty()) throw std::invalid_argument("a new study needs its stimulus list");
-      const study::StudyDefinition d = definition_from_list(plan_request());
-      if (std::filesystem::exists(std::filesystem::path(form_.study) / study::kStudyFile))
-        study::check_session(settings);  // a taken ID is refused before the study is touched
-      // An unknown tool or surface too (reading the catalog takes milliseconds; no meshing).
-      rig::check_study_stimuli(model::design::ToolSounds(sound_options_()), d.stimuli);
-      study::create_or_join_study(form_.study, d, model::io::asset("experiment/instructions.txt"),
-                                  model::io::asset("experiment/consent.txt"));
-    }
-    study::check_session(settings);
-    definition_ = study::read_study_file(std::filesystem::path(form_.study) / study::kStudyFile);
-    const study::StudyDefinition& d = definition_;
-    const bool on_rig = d.mode == study::StudyMode::rig;
-    if (on_rig) {
-      if (!rig_) throw std::invalid_argument("this panel has no rig to run a study in rig mode");
-      rig_();  // refuses a rig that cannot present (the replay rig) now, in the form
-    }
-    auto options = sound_options_();
-    options.progress = {};
-    // The sounds with a ToolSounds of its own: the panel's is busy with what the other views play.
-    // The rig's simulation asks it for each stimulus it runs, on the rig's worker. The bar names
-    // the sound being made; Cancel stops the job before the next one.
-    sounds_job_ = std::make_unique<BackgroundJob<Prepared>>(
-        "making the stimuli's sounds", [options, stimuli = d.stimuli, on_rig](JobControl& control) {
-          Prepared prepared;
-          control.message("reading the catalog and the forcing model");
-          prepared.tool_sounds = std::make_shared<model::design::ToolSounds>(options);
-          rig::check_study_stimuli(*prepared.tool_sounds, stimuli);
+    rig::StudyStartRequest request;
+    request.settings = study_settings();
+    if (!form_.stimuli.empty()) request.definition = definition_from_list(plan_request());
+    // The sounds with a ToolSounds of the start's own: the panel's is busy with what the other
+    // views play. The rig's simulation asks it for each stimulus it runs, on the rig's worker.
+    request.sounds = sound_options_();
+    request.sounds.progress = {};
+    request.audition = [this]() -> playback::LiveAudition& { return audio_.lend_audition(); };
+    request.rig = rig_;  // asked for in rig mode only: refuses a rig that cannot present (replay)
+    // The rig's worker asks and waits; Stop abandons the desk so that it stops waiting.
+    desk_ = std::make_shared<OperatorDesk>();
+    request.mount = [desk = desk_](const std::string& message) {
+      std::unique_lock lock(desk->mutex);
+      desk->request = message;
+      desk->done = false;
+      desk->changed.wait(lock, [&] { return desk->done || desk->abandoned; });
+      if (desk->abandoned) throw std::runtime_error("stopped while the operator mounted a tool");
+    };
+    request.notice = [desk = desk_](const std::string& message) {
+      std::lock_guard lock(desk->mutex);
+      desk->notice = message;
+    };
+    // Every refusal here, in the form, before anything is written.
+    auto checked = std::make_shared<rig::StudyStart>(std::move(request));
+    const bool on_rig = checked->definition().mode == study::StudyMode::rig;
+    // The folder, then the sounds (none in rig mode: the rig's simulation makes its own). The bar
+    // names the sound being made; Cancel stops the job before the next one.
+    sounds_job_ = std::make_unique<BackgroundJob<std::shared_ptr<rig::StudyStart>>>(
+        on_rig ? "joining the study" : "making the stimuli's sounds",
+        [checked, on_rig](JobControl& control) {
+          const std::vector<study::Stimulus>& stimuli = checked->definition().stimuli;
           const auto making = [&control, &stimuli](std::size_t index) {
             control.message(std::to_string(index + 1) + " of " + std::to_string(stimuli.size()) + " (" +
                             stimuli[index].name + ")");
           };
-          if (!stimuli.empty()) making(0);
-          prepared.sounds = rig::study_sounds(
-              *prepared.tool_sounds, stimuli, [&](std::size_t done, std::size_t total) {
-                if (control.stop_requested()) throw std::runtime_error("making the stimuli's sounds was cancelled");
-                control.progress(static_cast<double>(done) / static_cast<double>(total));
-                if (done < total) making(done);
-              });
-          if (!on_rig) prepared.tool_sounds.reset();
-          return prepared;
+          if (on_rig)
+            control.message("the study folder");
+          else if (!stimuli.empty())
+            making(0);
+          checked->prepare([&](std::size_t done, std::size_t total) {
+            if (control.stop_requested()) throw std::runtime_error("making the stimuli's sounds was cancelled");
+            control.progress(static_cast<double>(done) / static_cast<double>(total));
+            if (done < total) making(done);
+          });
+          return checked;
         });
     stage_ = Stage::preparing;
+  } catch (const rig::StudyStartRefused& e) {
+    error_ = std::string(experiment_form_field(e.field())) + ": " + e.what();
   } catch (const std::exception& e) {
     error_ = e.what();
   }
@@ -172,42 +190,16 @@ void ExperimentView::poll() {
     return;
   }
   try {
-    const study::SessionSettings settings = session_settings();
-    const study::StudyDefinition& d = definition_;  // as start() read it
-    if (d.mode == study::StudyMode::rig) {
-      desk_ = std::make_shared<OperatorDesk>();
-      const rig::RigRequest base = rig_();
-      // The worker asks and waits; Stop abandons the desk so that it stops waiting.
-      const auto mount = [desk = desk_](const std::string& message) {
-        std::unique_lock lock(desk->mutex);
-        desk->request = message;
-        desk->done = false;
-        desk->changed.wait(lock, [&] { return desk->done || desk->abandoned; });
-        if (desk->abandoned) throw std::runtime_error("stopped while the operator mounted a tool");
-      };
-      const auto notice = [desk = desk_](const std::string& message) {
-        std::lock_guard lock(desk->mutex);
-        desk->notice = message;
-      };
-      presenter_ = std::make_unique<rig::TurntablePresenter>(
-          d.stimuli,
-          [base, sounds = prepared->tool_sounds](const study::Stimulus& s) {
-            rig::RigRequest r = base;
-            r.tool = s.tool;
-            r.surface = s.surface;
-            return rig::open_rig(r, *sounds);
-          },
-          mount, notice);
-    } else {
-      presenter_ = std::make_unique<rig::ActuatorPresenter>(audio_.lend_audition(),
-                                                            std::move(prepared->sounds));
-    }
-    session_ = std::make_unique<study::StudySession>(settings, *presenter_);
+    // On the UI thread: the actuator's presenter borrows the panel's audition.
+    rig::ReadyStudy ready = (*prepared)->ready();
+    presenter_ = std::move(ready.presenter);
+    session_ = std::move(ready.session);
     stage_ = Stage::consent;
   } catch (const std::exception& e) {
     error_ = e.what();
+    session_.reset();
     presenter_.reset();
-    audio_.give_back_audition();
+    if (audio_.audition_lent()) audio_.give_back_audition();
     stage_ = Stage::setup;
   }
 }

@@ -21,8 +21,7 @@
 #include "model/design/tool_sound.hpp"
 #include "model/study/study_session.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/study_actuator.hpp"
-#include "rig/study_turntable.hpp"
+#include "rig/study_start.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/study_plan_preview.hpp"
@@ -76,7 +75,7 @@ class ExperimentView {
   std::string preparing_label() const;
 
  private:
-  model::study::SessionSettings session_settings() const;  // of the form
+  model::study::StudySettings study_settings() const;  // of the form
   PlanRequest plan_request() const;                         // of the form
   void refresh_plan();
   void draw_setup();
@@ -89,10 +88,6 @@ class ExperimentView {
     std::condition_variable changed;
     std::string request, notice;
     bool done = false, abandoned = false;
-  };
-  struct Prepared {
-    std::vector<model::design::ToolSound> sounds;
-    std::shared_ptr<model::design::ToolSounds> tool_sounds;
   };
   // A session stopped while the turntable ran: kept until its sweep ends on its own thread.
   // The job is declared last so that it is destroyed (joined) first, before what it uses.
@@ -107,13 +102,13 @@ class ExperimentView {
   std::function<model::design::ToolSoundOptions()> sound_options_;
   RigChoiceRequest rig_;
   Form form_;
-  model::study::StudyDefinition definition_;  // the study start() found or made
   Stage stage_ = Stage::setup;
   std::string error_;
-  std::unique_ptr<BackgroundJob<Prepared>> sounds_job_;
+  // The checked start, its folder and sounds prepared on the job; readied in poll().
+  std::unique_ptr<BackgroundJob<std::shared_ptr<rig::StudyStart>>> sounds_job_;
   // Sounds cancelled while one was being made: they end on their own thread (the UI does not wait
   // for the sound in progress) and are dropped once done.
-  std::vector<std::unique_ptr<BackgroundJob<Prepared>>> cancelled_sounds_;
+  std::vector<std::unique_ptr<BackgroundJob<std::shared_ptr<rig::StudyStart>>>> cancelled_sounds_;
   // The form's plan: one job at a time; when the form changed meanwhile, the next starts after it.
   std::unique_ptr<BackgroundJob<PlanPreview>> plan_job_;
   PlanRequest plan_job_for_;

@@ -85,7 +85,7 @@ PlanPreview preview_plan(const PlanRequest& r) {
     p.seconds_per_trial = measured_s;
     p.answers_measured = answers;
   } else {
-    // The actuator plays the study's sweep and the turntable runs the same one (study_turntable).
+    // The actuator plays the study's sweep and the turntable runs the same one (TurntablePresenter).
     p.seconds_per_trial = kPlanPreviewStimuliPerTrial * rt::SweepStroke::kPaperPeriod;
   }
   return p;

@@ -13,8 +13,8 @@
 namespace nibrig::model::study {
 namespace {
 
-SessionSettings simulated_session(const std::filesystem::path& study, const std::string& id) {
-  SessionSettings s;
+StudySettings simulated_session(const std::filesystem::path& study, const std::string& id) {
+  StudySettings s;
   s.study = study;
   s.participant = id;
   s.respondent = "simulated";
@@ -53,7 +53,7 @@ TEST(StudyReport, ATwoStageRunWithASimulatedParticipantRecoversItsSpaceAsTheSynt
   const auto study = test::make_study(dir, d);
   SimulatedParticipant participant(truth, {}, 4);
   NothingPresented nothing;
-  ASSERT_TRUE(run_session(simulated_session(study, "S01"), nothing, participant).complete);
+  ASSERT_TRUE(run_study(simulated_session(study, "S01"), nothing, participant).complete);
   StudyReportSettings settings;
   settings.bootstrap = 20;
   const StudyReport report = report_study(study, dir / "report", settings);
@@ -106,7 +106,7 @@ TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
   NothingPresented nothing;
   for (int k = 0; k < 12; ++k) {
     SimulatedParticipant p(truth, {}, 100 + static_cast<std::uint64_t>(k));
-    run_session(simulated_session(study, "V" + std::to_string(k)), nothing, p);
+    run_study(simulated_session(study, "V" + std::to_string(k)), nothing, p);
   }
   StudyReportSettings settings;
   EXPECT_THROW(report_study(study, dir / "report", settings), std::invalid_argument)

@@ -23,8 +23,8 @@ Eigen::MatrixXd session_truth(std::size_t stimuli) {
   return space::random_space(2, stimuli, generator);
 }
 
-SessionSettings settings_for(const std::filesystem::path& study, const std::string& id) {
-  SessionSettings s;
+StudySettings settings_for(const std::filesystem::path& study, const std::string& id) {
+  StudySettings s;
   s.study = study;
   s.participant = id;
   s.seed = 5;
@@ -55,7 +55,7 @@ TEST(StudySession, AnUninterruptedRunAnswersEveryTrialOnDiskWithPlaysAndRests) {
   const auto study = test::make_study(nibrig::test::scratch_dir("session_full"), small_study());
   test::StoppingParticipant p(session_truth(7), 99);
   NothingPresented nothing;
-  const SessionResult r = run_session(settings_for(study, "P01"), nothing, p);
+  const StudyResult r = run_study(settings_for(study, "P01"), nothing, p);
   EXPECT_TRUE(r.complete);
   EXPECT_EQ(p.seen_texts.instructions, "Which is closer to the reference?\n");
   EXPECT_EQ(p.seen_texts.consent, "I agree.\n");
@@ -83,16 +83,16 @@ TEST(StudySession, StoppedAndResumedGivesTheSameJudgmentsAsOneSession) {
   const auto parts = test::make_study(dir / "parts", small_study());
   NothingPresented nothing;
   test::StoppingParticipant one(session_truth(7), 99);
-  run_session(settings_for(whole, "P01"), nothing, one);
+  run_study(settings_for(whole, "P01"), nothing, one);
 
   test::StoppingParticipant first(session_truth(7), 99, 40);
-  const SessionResult stopped = run_session(settings_for(parts, "P01"), nothing, first);
+  const StudyResult stopped = run_study(settings_for(parts, "P01"), nothing, first);
   EXPECT_FALSE(stopped.complete);
   EXPECT_EQ(stopped.answered, 39u);  // trial 40 was in progress: not kept
-  SessionSettings again = settings_for(parts, "P01");
+  StudySettings again = settings_for(parts, "P01");
   again.resume = true;
   test::StoppingParticipant second(session_truth(7), 99);
-  const SessionResult resumed = run_session(again, nothing, second);
+  const StudyResult resumed = run_study(again, nothing, second);
   EXPECT_TRUE(resumed.complete);
   EXPECT_EQ(resumed.resumed_at, 39u);
   EXPECT_EQ(second.prompts.front(), 40u);
@@ -106,7 +106,7 @@ TEST(StudySession, KilledWithSigkillAtARandomTrialAndResumedGivesTheSameJudgment
   const auto killed = test::make_study(dir / "killed", small_study());
   NothingPresented nothing;
   test::StoppingParticipant one(session_truth(7), 99);
-  const SessionResult full = run_session(settings_for(whole, "P01"), nothing, one);
+  const StudyResult full = run_study(settings_for(whole, "P01"), nothing, one);
   std::random_device entropy;
   const std::size_t kill_at = 2 + entropy() % (full.answered - 2);
   SCOPED_TRACE("killed while trial " + std::to_string(kill_at) + " was being answered");
@@ -129,7 +129,7 @@ TEST(StudySession, KilledWithSigkillAtARandomTrialAndResumedGivesTheSameJudgment
       test::StoppingParticipant inner_;
       std::size_t at_;
     } dying(kill_at);
-    run_session(settings_for(killed, "P01"), nothing, dying);
+    run_study(settings_for(killed, "P01"), nothing, dying);
     _exit(0);  // not reached
   }
   int status = 0;
@@ -139,11 +139,11 @@ TEST(StudySession, KilledWithSigkillAtARandomTrialAndResumedGivesTheSameJudgment
   ASSERT_EQ(partial.participants.size(), 1u);
   EXPECT_EQ(partial.participants[0].responses.size(), kill_at - 1) << "every answer before the kill";
 
-  SessionSettings again = settings_for(killed, "P01");
+  StudySettings again = settings_for(killed, "P01");
   again.resume = true;
   again.seed.reset();  // the participant's file has it
   test::StoppingParticipant rest(session_truth(7), 99);
-  EXPECT_TRUE(run_session(again, nothing, rest).complete);
+  EXPECT_TRUE(run_study(again, nothing, rest).complete);
   EXPECT_EQ(judgments_text(whole, "P01", dir / "whole.csv"),
             judgments_text(killed, "P01", dir / "killed.csv"));
 }
@@ -152,23 +152,23 @@ TEST(StudySession, ATakenIdAsksForResumeOrANewIdBeforeAnythingStarts) {
   const auto study = test::make_study(nibrig::test::scratch_dir("session_taken"), small_study());
   NothingPresented nothing;
   test::StoppingParticipant p(session_truth(7), 1, 5);
-  run_session(settings_for(study, "P01"), nothing, p);
+  run_study(settings_for(study, "P01"), nothing, p);
   test::StoppingParticipant q(session_truth(7), 1);
   try {
-    run_session(settings_for(study, "P01"), nothing, q);
+    run_study(settings_for(study, "P01"), nothing, q);
     ADD_FAILURE() << "a taken ID was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--resume"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("new participant ID"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(q.prompts.empty()) << "refused before the first trial";
-  SessionSettings other_seed = settings_for(study, "P01");
+  StudySettings other_seed = settings_for(study, "P01");
   other_seed.resume = true;
   other_seed.seed = 6;
-  EXPECT_THROW(run_session(other_seed, nothing, q), std::invalid_argument);
-  SessionSettings nobody = settings_for(study, "P02");
+  EXPECT_THROW(run_study(other_seed, nothing, q), std::invalid_argument);
+  StudySettings nobody = settings_for(study, "P02");
   nobody.resume = true;
-  EXPECT_THROW(run_session(nobody, nothing, q), std::invalid_argument);
+  EXPECT_THROW(run_study(nobody, nothing, q), std::invalid_argument);
   EXPECT_TRUE(q.prompts.empty());
 }
 
@@ -179,7 +179,7 @@ TEST(StudySession, ASecondSessionOfAParticipantIsRefusedNamingTheFirst) {
   NothingPresented nothing;
   for (const bool resume : {false, true}) {
     SCOPED_TRACE(resume ? "resumed" : "new");
-    SessionSettings s = settings_for(study, "P01");
+    StudySettings s = settings_for(study, "P01");
     s.resume = resume;
     StudySession first(s, nothing);
     try {
@@ -191,7 +191,7 @@ TEST(StudySession, ASecondSessionOfAParticipantIsRefusedNamingTheFirst) {
     }
     first.begin();  // the new participant's record is written: the next round resumes it
   }
-  SessionSettings s = settings_for(study, "P01");
+  StudySettings s = settings_for(study, "P01");
   s.resume = true;
   EXPECT_NO_THROW((StudySession{s, nothing}));  // once the other session ended
 }
@@ -204,10 +204,10 @@ TEST(StudySession, TheReportCountsEveryParticipantOrSaysWhyNot) {
   NothingPresented nothing;
   for (const char* id : {"P01", "P02", "P03"}) {
     test::StoppingParticipant p(session_truth(7), 1, 30);
-    run_session(settings_for(study, id), nothing, p);
+    run_study(settings_for(study, id), nothing, p);
   }
   test::StoppingParticipant killed(session_truth(7), 1, 1);
-  run_session(settings_for(study, "P04"), nothing, killed);
+  run_study(settings_for(study, "P04"), nothing, killed);
   std::filesystem::remove(participant_folder(study, "P02") / kParticipantFile);
   ParticipantRecord renamed = read_participant_file(participant_folder(study, "P03") / kParticipantFile);
   renamed.id = "P01";
@@ -239,7 +239,7 @@ TEST(StudySession, DecliningTheConsentRecordsNothing) {
   NothingPresented nothing;
   test::StoppingParticipant p(session_truth(7), 1);
   p.agrees = false;
-  EXPECT_TRUE(run_session(settings_for(study, "P01"), nothing, p).declined);
+  EXPECT_TRUE(run_study(settings_for(study, "P01"), nothing, p).declined);
   EXPECT_TRUE(p.prompts.empty());
   EXPECT_FALSE(std::filesystem::exists(participant_folder(study, "P01")));
 }

@@ -31,7 +31,7 @@ class TurntablePresenter final : public model::study::Presenter {
 
   TurntablePresenter(std::vector<model::study::Stimulus> stimuli, RigOpener open,
                      OperatorPrompt mount, OperatorNotice notice = {},
-                     SpeedProfile profile = study_sweep(3.0));
+                     SpeedProfile profile = study_sweep_profile(3.0));
 
   void prepare(const model::study::PlannedTrial& trial) override;
   // Runs the profile once with the stimulus mounted. Throws std::runtime_error naming the rig and

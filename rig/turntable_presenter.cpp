@@ -1,4 +1,4 @@
-#include "rig/study_turntable.hpp"
+#include "rig/turntable_presenter.hpp"
 
 #include <stdexcept>
 

@@ -2,7 +2,7 @@
 // reference, A and B in an order of their own, and an independent JACK client hears exactly that
 // order; the study's log records it too. The three stimuli are one tool at three levels 12 dB
 // apart, so that a window's level says which one sounds.
-#include "rig/study_actuator.hpp"
+#include "rig/actuator_presenter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,7 +102,7 @@ TEST(StudyActuatorJack, TheCaptureHearsTheStimuliInTheOrderTheParticipantAskedFo
   d.listed_trials = {{0, 1, 2, 1}};
   const auto dir = nibrig::test::scratch_dir("study_actuator_jack");
   const auto folder = study::test::make_study(dir, d);
-  study::SessionSettings settings;
+  study::StudySettings settings;
   settings.study = folder;
   settings.participant = "P01";
 
@@ -116,7 +116,7 @@ TEST(StudyActuatorJack, TheCaptureHearsTheStimuliInTheOrderTheParticipantAskedFo
   jack_nframes_t answered_at = 0;
   ScriptedParticipant participant(script, hold,
                                   [&] { answered_at = jack_frame_time(ear.client()); });
-  ASSERT_TRUE(study::run_session(settings, presenter, participant).complete);
+  ASSERT_TRUE(study::run_study(settings, presenter, participant).complete);
   ASSERT_TRUE(ear.wait_full(20s));
   std::vector<float> asked = ear.samples(0);
   for (const auto& c : ear.cycles())

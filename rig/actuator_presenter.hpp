@@ -17,25 +17,15 @@
 
 namespace nibrig::rig {
 
-// Refuses, before any meshing, a stimulus whose tool or surface the catalog lacks or whose design
-// point is malformed: std::invalid_argument naming the stimulus and what ToolSounds::check says.
-void check_study_stimuli(const model::design::ToolSounds& sounds,
-                         const std::vector<model::study::Stimulus>& stimuli);
-
-// The sound of every stimulus, in order; progress(done, total) after each.
-std::vector<model::design::ToolSound> study_sounds(
-    model::design::ToolSounds& sounds, const std::vector<model::study::Stimulus>& stimuli,
-    const std::function<void(std::size_t, std::size_t)>& progress = {});
-
 class ActuatorPresenter final : public model::study::Presenter {
  public:
   using StrokeMaker = std::function<std::unique_ptr<rt::StrokeSource>()>;
   // The study's stroke (Sec. 8): 17 → 250 → 17 mm/s over 3 s at 2.2 N, repeated while it plays.
-  static std::unique_ptr<rt::StrokeSource> study_sweep();
+  static std::unique_ptr<rt::StrokeSource> study_sweep_stroke();
 
   // `audition` needs three slots. sounds: one per stimulus of the study, in its order.
   ActuatorPresenter(playback::LiveAudition& audition, std::vector<model::design::ToolSound> sounds,
-                    StrokeMaker stroke = study_sweep, std::uint64_t seed = 1);
+                    StrokeMaker stroke = study_sweep_stroke, std::uint64_t seed = 1);
 
   void prepare(const model::study::PlannedTrial& trial) override;
   void present(model::study::Role role) override;

@@ -2,7 +2,7 @@
 // when it changes, and every stimulus asked for runs the study's sweep on the rig (here the
 // simulated rig, simulating the stimulus). A rig that ends a sweep early (unplugged) stops the
 // session with every earlier answer kept.
-#include "rig/study_turntable.hpp"
+#include "rig/turntable_presenter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,8 +50,8 @@ std::unique_ptr<Rig> simulated_rig_of(const study::Stimulus& s) {
                                         s.surface);
 }
 
-study::SessionSettings turntable_session(const std::filesystem::path& folder) {
-  study::SessionSettings s;
+study::StudySettings turntable_session(const std::filesystem::path& folder) {
+  study::StudySettings s;
   s.study = folder;
   s.participant = "P01";
   return s;
@@ -64,7 +64,7 @@ TEST(StudyTurntable, TellsTheOperatorWhatToMountAndRunsASweepForEveryStimulusAsk
   TurntablePresenter presenter(turntable_study().stimuli, simulated_rig_of, tell, tell);
   // Trial 1 asks for the reference twice in a row (mounted once), trial 2 alternates.
   ScriptedTurntableParticipant participant({"RRAB", "RARB"});
-  ASSERT_TRUE(study::run_session(turntable_session(folder), presenter, participant).complete);
+  ASSERT_TRUE(study::run_study(turntable_session(folder), presenter, participant).complete);
   EXPECT_EQ(presenter.runs(), 8u);
   EXPECT_EQ(presenter.mounts(), 3u + 4u);
   ASSERT_GE(told.size(), 3u);
@@ -107,7 +107,7 @@ TEST(StudyTurntable, ARigUnpluggedMidSweepStopsTheSessionAndKeepsEveryEarlierAns
       [](const std::string&) {});
   ScriptedTurntableParticipant participant({"RAB", "RAB"});
   try {
-    study::run_session(turntable_session(folder), presenter, participant);
+    study::run_study(turntable_session(folder), presenter, participant);
     ADD_FAILURE() << "the unplugged rig went unnoticed";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("unplugged"), std::string::npos) << e.what();

@@ -1,32 +1,10 @@
-#include "rig/study_actuator.hpp"
+#include "rig/actuator_presenter.hpp"
 
 #include <stdexcept>
 
 namespace nibrig::rig {
 
-void check_study_stimuli(const model::design::ToolSounds& sounds,
-                         const std::vector<model::study::Stimulus>& stimuli) {
-  for (const auto& s : stimuli) {
-    try {
-      sounds.check(s.tool, s.surface);
-    } catch (const std::exception& e) {
-      throw std::invalid_argument("stimulus '" + s.name + "': " + e.what());
-    }
-  }
-}
-
-std::vector<model::design::ToolSound> study_sounds(
-    model::design::ToolSounds& sounds, const std::vector<model::study::Stimulus>& stimuli,
-    const std::function<void(std::size_t, std::size_t)>& progress) {
-  std::vector<model::design::ToolSound> made;
-  for (const auto& s : stimuli) {
-    made.push_back(sounds.sound(s.tool, s.surface));
-    if (progress) progress(made.size(), stimuli.size());
-  }
-  return made;
-}
-
-std::unique_ptr<rt::StrokeSource> ActuatorPresenter::study_sweep() {
+std::unique_ptr<rt::StrokeSource> ActuatorPresenter::study_sweep_stroke() {
   return std::make_unique<rt::SweepStroke>();
 }
 
