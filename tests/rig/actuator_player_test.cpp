@@ -110,17 +110,18 @@ TEST(ActuatorPlayer, TheActuatorFollowsTheSimulatedRigsSpeedThroughJack) {
     measured.push_back(player_rms(heard.data() + from, to - from));
     expected.push_back(offline_player_rms(sound, s.speed_m_s, rig_settings.normal_load_N));
   }
-  for (std::size_t i = 0; i < measured.size(); ++i) {
-    // The forcing is noise: a 0.9 s window of a few resonances' response varies by about a dB
-    // between seeds, and the rig adds its encoder and force noise (0.3 mm/s, 5 mN rms).
-    EXPECT_NEAR(player_db(measured[i] / expected[i]), 0.0, 2.0)
+  // 2 dB: the forcing is noise, seeded otherwise offline, over a window of most of a second, and
+  // the rig adds its motor's settling and its encoder and force noise (0.3 mm/s, 5 mN rms); the
+  // steps heard came within 0.8 dB of the offline level, run after run.
+  constexpr double kPlayerToleranceDb = 2.0;
+  for (std::size_t i = 0; i < measured.size(); ++i)
+    EXPECT_NEAR(player_db(measured[i] / expected[i]), 0.0, kPlayerToleranceDb)
         << "step " << i << " at " << kPlayerSteps[i].speed_m_s * 1e3 << " mm/s: heard " << measured[i]
         << ", offline " << expected[i];
-  }
-  // Following both ways: the fast step is louder than the slow ones by what the engine says.
-  EXPECT_NEAR(player_db(measured[1] / measured[0]), player_db(expected[1] / expected[0]), 3.0);
-  EXPECT_NEAR(player_db(measured[1] / measured[2]), player_db(expected[1] / expected[2]), 3.0);
-  EXPECT_GT(player_db(expected[1] / expected[0]), 6.0);  // the steps differ by more than the tolerance
+  // The steps lie further apart than twice the tolerance (10 and 7.5 dB from the fast one), so an
+  // actuator that kept any other step's speed, or lagged a step behind, fails above.
+  EXPECT_GT(player_db(expected[1] / expected[0]), 2.0 * kPlayerToleranceDb);
+  EXPECT_GT(player_db(expected[1] / expected[2]), 2.0 * kPlayerToleranceDb);
 
   // Turned off, the actuator's port goes; turned on again, it comes back.
   player.stop();
