@@ -49,9 +49,10 @@ struct RigActuatorTarget {
 // in the feed and tried again only when asked again.
 class RigActuatorSwitch {
  public:
-  RigActuatorSwitch(std::unique_ptr<rig::ActuatorPlayer> player, std::shared_ptr<std::atomic<bool>> wanted,
-                    std::shared_ptr<RigFeed> feed)
-      : player_(std::move(player)), wanted_(std::move(wanted)), feed_(std::move(feed)) {}
+  // `player` null: `why_not` says why the simulation cannot play on the actuator in this run.
+  RigActuatorSwitch(std::unique_ptr<rig::ActuatorPlayer> player, std::string why_not,
+                    std::shared_ptr<std::atomic<bool>> wanted, std::shared_ptr<RigFeed> feed)
+      : player_(std::move(player)), why_not_(std::move(why_not)), wanted_(std::move(wanted)), feed_(std::move(feed)) {}
   ~RigActuatorSwitch() {
     player_.reset();
     say(false, "");
@@ -65,7 +66,7 @@ class RigActuatorSwitch {
       if (player_) player_->stop();
       say(false, "");
     } else if (!player_) {
-      say(false, "no device is open: choose one in the devices view and start the rig again");
+      say(false, why_not_);
     } else {
       try {
         player_->play();
@@ -85,6 +86,7 @@ class RigActuatorSwitch {
     feed_->actuator_state = std::move(state);
   }
   std::unique_ptr<rig::ActuatorPlayer> player_;
+  std::string why_not_;
   std::shared_ptr<std::atomic<bool>> wanted_;
   std::shared_ptr<RigFeed> feed_;
   bool asked_ = false;
@@ -121,14 +123,21 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     feed->rig_name = opened->description().name;
     feed->simulated_name = sound.name;
   }
+  // Made whether or not it plays yet, since it must listen to the rig from its start; a calibration
+  // that no longer reads keeps the simulation off the actuator, not the rig from running.
   std::unique_ptr<rig::ActuatorPlayer> player;
+  std::string why_not = "no device is open: choose one in the devices view and start the rig again";
   if (target.device) {
     rig::ActuatorPlayerSettings settings;
     settings.device = *target.device;
     settings.actuator = target.actuator;
-    player = std::make_unique<rig::ActuatorPlayer>(*opened, sound, settings);
+    try {
+      player = std::make_unique<rig::ActuatorPlayer>(*opened, sound, settings);
+    } catch (const std::exception& e) {
+      why_not = e.what();
+    }
   }
-  RigActuatorSwitch actuator(std::move(player), play_wanted, feed);
+  RigActuatorSwitch actuator(std::move(player), std::move(why_not), play_wanted, feed);
   actuator.apply();
   rig::ComparisonRunOptions options;
   options.capture.folder = folder;

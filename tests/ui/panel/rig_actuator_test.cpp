@@ -10,6 +10,7 @@
 
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
+#include "tests/support/test_paths.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
@@ -82,8 +83,9 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   ASSERT_TRUE(s.frames_until([&] { return rig.actuator_playing() || !rig.actuator_state().empty(); }, 30s));
   ASSERT_TRUE(rig.actuator_playing()) << rig.actuator_state();
   EXPECT_NE(rig.actuator_state().find("playing cryon"), std::string::npos) << rig.actuator_state();
-  // Half a second of the crayon's sweep (17-250 mm/s over 3 s) at the engine's default gain: well
-  // above 1e-3 of full scale, as the audition's own sweep (live_audition_test) and the CLI's --play.
+  // Half a second of the crayon's sweep (17-250 mm/s over 3 s) at the engine's default gain: the
+  // actuator player's own test hears 0.014 of full scale at 30 mm/s, so 1e-3 lies ten times below
+  // the quietest half second of the sweep, and is no silence (exact zero, above and below).
   EXPECT_GT(s.actuator_rms(24000), 1e-3);
 
   rig.choice().play_on_actuator = false;
@@ -94,6 +96,29 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   rig.stop();
   ASSERT_TRUE(s.frames_until([&] { return !rig.running(); }, 30s));
   EXPECT_TRUE(rig.error().empty()) << rig.error();
+}
+
+// With no device open the run still goes, and the view says why the actuator stays silent.
+TEST(RigViewActuator, WithoutADeviceTheRigRunsAndSaysWhyTheActuatorIsSilent) {
+  RigView view({}, {}, nibrig::test::scratch_dir("rig_view_no_device"));
+  view.choice().tool = "cryon";
+  view.choice().surface = "office";
+  view.choice().profile = "sweep";
+  view.choice().seconds = 2.0f;
+  view.choice().speedup = 8.0f;
+  view.choice().play_on_actuator = true;
+  view.start();
+  const auto deadline = std::chrono::steady_clock::now() + 300s;
+  while (view.running() && view.actuator_state().empty() && std::chrono::steady_clock::now() < deadline) {
+    view.take_feed();
+    std::this_thread::sleep_for(10ms);
+  }
+  EXPECT_FALSE(view.actuator_playing());
+  EXPECT_NE(view.actuator_state().find("no device is open"), std::string::npos) << view.actuator_state();
+  while (view.running() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(10ms);
+  EXPECT_FALSE(view.running());
+  view.take_feed();
+  EXPECT_FALSE(view.speed_trace().empty());  // the rig ran its profile all the same
 }
 
 }  // namespace
