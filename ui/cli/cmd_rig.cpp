@@ -13,19 +13,15 @@
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/comparison_file.hpp"
-#include "playback/actuator_store.hpp"
 #include "playback/audio_devices.hpp"
-#include "playback/audio_output.hpp"
-#include "playback/playback_session.hpp"
+#include "rig/actuator_player.hpp"
 #include "rig/capture.hpp"
 #include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
-#include "rig/contact_follower.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
-#include "rt/stroke_source.hpp"
 #include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
@@ -176,52 +172,35 @@ OpenedRig open_rig(const RigOptions& o, model::design::ToolSounds& sounds,
   return opened;
 }
 
-// What the actuator plays with --play: the simulated tool's engine on the device, following the
-// turntable frame by frame.
-class Player {
- public:
-  Player(const RigOptions& o, const model::design::ToolSound& sound, rig::Rig& rig) : rig_(rig) {
-    const playback::OutputSettings device = output_settings(o.device, "nibrig-rig-play");
-    rt::EngineSettings settings;
-    settings.sample_rate_hz = device.sample_rate;
-    settings.slots = 1;
-    session_ = std::make_unique<playback::PlaybackSession>(
-        settings, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
-        std::make_unique<rt::ConstantStroke>(0.0, 0.0), o.seed);
-    if (!o.actuator.empty()) {
-      const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
-      const auto filter = session_->use_actuator(calibration);
-      std::printf("actuator '%s': inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
-                  calibration.name.c_str(), filter.max_deviation_db, calibration.design.band_low_hz,
-                  calibration.design.band_high_hz);
-    }
-    follower_ = std::make_unique<rig::ContactFollower>(session_->engine());
-    output_ = std::make_unique<playback::AudioOutput>(*follower_, device);
-    listener_ = [this](const rig::SensorFrame& f) { follower_->follow(f); };
-    rig_.set_frame_listener(&listener_);
-    const auto info = output_->stream_info();
-    std::printf("playing %s on %s '%s' channel %u, %u-frame periods, following the turntable\n",
-                sound.name.c_str(), info.api.c_str(), info.device.c_str(), device.output_channel,
-                info.period_frames);
-  }
-  ~Player() { rig_.set_frame_listener(nullptr); }
+// --play: the simulated tool on the actuator, following the turntable (rig/actuator_player.hpp),
+// saying what it plays on before the run and how closely it followed after it.
+std::unique_ptr<rig::ActuatorPlayer> play_on_actuator(const RigOptions& o, const model::design::ToolSound& sound,
+                                                      rig::Rig& rig) {
+  rig::ActuatorPlayerSettings settings;
+  settings.device = output_settings(o.device, "nibrig-rig-play");
+  settings.actuator = o.actuator;
+  settings.seed = o.seed;
+  auto player = std::make_unique<rig::ActuatorPlayer>(rig, sound, settings);
+  if (const auto& calibration = player->actuator())
+    std::printf("actuator '%s': inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
+                calibration->name.c_str(), player->inverse_filter()->max_deviation_db,
+                calibration->design.band_low_hz, calibration->design.band_high_hz);
+  player->play();
+  const auto info = *player->stream_info();
+  std::printf("playing %s on %s '%s' channel %u, %u-frame periods, following the turntable\n",
+              sound.name.c_str(), info.api.c_str(), info.device.c_str(), settings.device.output_channel,
+              info.period_frames);
+  return player;
+}
 
-  void report() const {
-    const rig::FollowLatency l = follower_->latency();
-    const auto info = output_->stream_info();
-    std::printf("actuator followed %llu contacts: from frame to engine mean %.2f ms, max %.2f ms "
-                "(one period is %.2f ms)\n",
-                static_cast<unsigned long long>(l.contacts), l.mean_s * 1e3, l.max_s * 1e3,
-                1e3 * info.period_frames / info.sample_rate);
-  }
-
- private:
-  rig::Rig& rig_;
-  std::unique_ptr<playback::PlaybackSession> session_;
-  std::unique_ptr<rig::ContactFollower> follower_;
-  std::unique_ptr<playback::AudioOutput> output_;
-  rig::FrameListener listener_;
-};
+void report_following(const rig::ActuatorPlayer& player) {
+  const rig::FollowLatency l = player.latency();
+  const auto info = *player.stream_info();
+  std::printf("actuator followed %llu contacts: from frame to engine mean %.2f ms, max %.2f ms "
+              "(one period is %.2f ms)\n",
+              static_cast<unsigned long long>(l.contacts), l.mean_s * 1e3, l.max_s * 1e3,
+              1e3 * info.period_frames / info.sample_rate);
+}
 
 // The tool the simulation plays: --design when given, else what is mounted.
 std::string simulated_tool(const RigOptions& o, const rig::Rig& rig) {
@@ -255,11 +234,11 @@ void capture(const RigOptions& o) {
   std::printf("%s\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
               opened.profile->description().c_str(), opened.profile->duration_s());
   std::fflush(stdout);
-  std::unique_ptr<Player> player;
+  std::unique_ptr<rig::ActuatorPlayer> player;
   if (o.play) {
     const std::string tool = simulated_tool(o, rig), surface = mounted_surface(o, rig);
     sounds.check(tool, surface);
-    player = std::make_unique<Player>(o, sounds.sound(tool, surface), rig);
+    player = play_on_actuator(o, sounds.sound(tool, surface), rig);
   }
   rig::CaptureOptions options;
   options.folder = o.output;
@@ -273,7 +252,7 @@ void capture(const RigOptions& o) {
   InterruptScope scope;
   const rig::CaptureResult result = rig::capture_session(rig, *opened.profile, options);
   print_record(result, rig.description());
-  if (player) player->report();
+  if (player) report_following(*player);
   std::fflush(stdout);
   say_wrote(result.folder);
   if (interrupted.load())
@@ -294,8 +273,8 @@ void compare(const RigOptions& o) {
               simulated.name.c_str(), simulated.modes.c_str(), opened.profile->description().c_str(),
               opened.profile->duration_s());
   std::fflush(stdout);
-  std::unique_ptr<Player> player;
-  if (o.play) player = std::make_unique<Player>(o, simulated, rig);
+  std::unique_ptr<rig::ActuatorPlayer> player;
+  if (o.play) player = play_on_actuator(o, simulated, rig);
 
   ensure_folder(o.output);
   rig::ComparisonRunOptions options;
@@ -311,7 +290,7 @@ void compare(const RigOptions& o) {
   InterruptScope scope;
   const rig::ComparisonRun run = rig::run_comparison(rig, *opened.profile, simulated, threshold, options);
   print_record(run.capture, rig.description());
-  if (player) player->report();
+  if (player) report_following(*player);
   print_comparison_table(run.table);
   std::fflush(stdout);
 

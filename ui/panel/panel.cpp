@@ -96,6 +96,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
                                             [this](const std::vector<ToolChoice>& tools) { audio_->play(tools); });
   space_view_->share_stroke(&audio_->stroke(), [this] { audio_->stroke_changed(); });
   rig_view_ = std::make_unique<RigView>(setup_.catalog, setup_.forcing, sessions_folder());
+  rig_view_->play_through(audio_.get());
   pad_view_ = std::make_unique<PadView>(*audio_);
   design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);

@@ -27,15 +27,21 @@ void PanelAudio::use_sounds(std::shared_ptr<model::design::ToolSounds> sounds) {
   sounds_ = std::move(sounds);
 }
 
-std::string PanelAudio::open(const DeviceRequest& device) {
+playback::OutputSettings output_settings_of(const DeviceRequest& device, std::string stream_name) {
   playback::OutputSettings settings;
   settings.api = device.api;
   settings.device = device.device;
   settings.output_channel = device.output_channel;
   settings.period_frames = device.period_frames;
-  settings.stream_name = "nibrig-panel";
+  settings.stream_name = std::move(stream_name);
+  return settings;
+}
+
+std::string PanelAudio::open(const DeviceRequest& device) {
+  device_.reset();
   try {
-    audition_.open(settings);
+    audition_.open(output_settings_of(device, "nibrig-panel"));
+    device_ = device;
     return {};
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -43,7 +49,10 @@ std::string PanelAudio::open(const DeviceRequest& device) {
   }
 }
 
-void PanelAudio::close() { audition_.close(); }
+void PanelAudio::close() {
+  audition_.close();
+  device_.reset();
+}
 
 std::string PanelAudio::use_actuator(const std::string& name_or_file) {
   try {

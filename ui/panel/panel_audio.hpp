@@ -31,6 +31,9 @@ struct DeviceRequest {
   unsigned period_frames = 256;
 };
 
+// What `open` asks of the back end for `device`, under the JACK client name `stream_name`.
+playback::OutputSettings output_settings_of(const DeviceRequest& device, std::string stream_name);
+
 class PanelAudio {
  public:
   explicit PanelAudio(model::design::ToolSoundOptions sounds);
@@ -39,6 +42,8 @@ class PanelAudio {
   // Opens the device (the audition keeps playing what it played). Returns the error, if any.
   std::string open(const DeviceRequest& device);
   void close();
+  // The device open now, as it was asked for; nullopt when none is.
+  const std::optional<DeviceRequest>& device() const { return device_; }
   const playback::LiveAudition& audition() const { return audition_; }
   // Plays through a stored actuator calibration (by name) or an actuator file from now on.
   // Returns the error, if any.
@@ -107,6 +112,7 @@ class PanelAudio {
   void start_pending();
   void attach_stroke();
   playback::LiveAudition audition_;
+  std::optional<DeviceRequest> device_;
   std::shared_ptr<model::design::ToolSounds> sounds_;  // shared with the job that uses it
   std::unique_ptr<BackgroundJob<Sounds>> job_;
   std::vector<std::unique_ptr<BackgroundJob<Sounds>>> retired_;  // superseded by use_sounds, finishing

@@ -74,6 +74,7 @@ PanelSettings read_panel_settings(const std::filesystem::path& file) {
       take(r, "input_device", s.rig.input_device);
       take(r, "input_channel", s.rig.input_channel);
       take(r, "speedup", s.rig.speedup);
+      take(r, "play_on_actuator", s.rig.play_on_actuator);
       if (s.rig.kind < 0 || s.rig.kind > 2) throw std::runtime_error("rig kind must be 0, 1 or 2");
     }
   } catch (const model::io::FormatError& e) {
@@ -103,7 +104,8 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"profile", s.rig.profile},     {"seconds", s.rig.seconds},
               {"replay", s.rig.replay},       {"usb_serial", s.rig.usb_serial},
               {"input_api", s.rig.input_api}, {"input_device", s.rig.input_device},
-              {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup}};
+              {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup},
+              {"play_on_actuator", s.rig.play_on_actuator}};
   std::filesystem::create_directories(file.parent_path());
   model::io::write_file_atomically(file, model::io::json_text(j, file));
 }

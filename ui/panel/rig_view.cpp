@@ -8,6 +8,7 @@
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/measure/threshold_curve.hpp"
+#include "rig/actuator_player.hpp"
 #include "ui/panel/plot_frame.hpp"
 #include "ui/panel/widgets.hpp"
 
@@ -37,9 +38,64 @@ void input_text(const char* label, std::string& value) {
   if (ImGui::InputText(label, buffer, sizeof buffer)) value = buffer;
 }
 
+// Where a run's simulation plays: the device the panel plays on (none: nowhere) and its actuator.
+struct RigActuatorTarget {
+  std::optional<playback::OutputSettings> device;
+  std::string actuator;  // a calibration's name or file; empty: none
+};
+
+// The run's player, turned on and off as the view asks: called on the capture's thread between
+// blocks of frames, so the player is only ever touched there. A device that does not open is said
+// in the feed and tried again only when asked again.
+class RigActuatorSwitch {
+ public:
+  // `player` null: `why_not` says why the simulation cannot play on the actuator in this run.
+  RigActuatorSwitch(std::unique_ptr<rig::ActuatorPlayer> player, std::string why_not,
+                    std::shared_ptr<std::atomic<bool>> wanted, std::shared_ptr<RigFeed> feed)
+      : player_(std::move(player)), why_not_(std::move(why_not)), wanted_(std::move(wanted)), feed_(std::move(feed)) {}
+  ~RigActuatorSwitch() {
+    player_.reset();
+    say(false, "");
+  }
+
+  void apply() {
+    const bool wanted = wanted_->load();
+    if (wanted == asked_) return;
+    asked_ = wanted;
+    if (!wanted) {
+      if (player_) player_->stop();
+      say(false, "");
+    } else if (!player_) {
+      say(false, why_not_);
+    } else {
+      try {
+        player_->play();
+        const auto info = *player_->stream_info();
+        say(true, "playing " + player_->sound_name() + " on " + info.api + " '" + info.device + "' channel " +
+                      std::to_string(player_->device().output_channel));
+      } catch (const std::exception& e) {
+        say(false, e.what());
+      }
+    }
+  }
+
+ private:
+  void say(bool playing, std::string state) {
+    std::lock_guard lock(feed_->mutex);
+    feed_->actuator_playing = playing;
+    feed_->actuator_state = std::move(state);
+  }
+  std::unique_ptr<rig::ActuatorPlayer> player_;
+  std::string why_not_;
+  std::shared_ptr<std::atomic<bool>> wanted_;
+  std::shared_ptr<RigFeed> feed_;
+  bool asked_ = false;
+};
+
 rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& catalog,
                               const std::filesystem::path& forcing, const std::filesystem::path& folder,
                               const std::shared_ptr<RigFeed>& feed, const std::atomic<bool>* cancel,
+                              const RigActuatorTarget& target, const std::shared_ptr<std::atomic<bool>>& play_wanted,
                               JobControl& control) {
   model::design::ToolSoundOptions sound_options;
   sound_options.catalog = catalog;
@@ -67,6 +123,22 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     feed->rig_name = opened->description().name;
     feed->simulated_name = sound.name;
   }
+  // Made whether or not it plays yet, since it must listen to the rig from its start; a calibration
+  // that no longer reads keeps the simulation off the actuator, not the rig from running.
+  std::unique_ptr<rig::ActuatorPlayer> player;
+  std::string why_not = "no device is open: choose one in the devices view and start the rig again";
+  if (target.device) {
+    rig::ActuatorPlayerSettings settings;
+    settings.device = *target.device;
+    settings.actuator = target.actuator;
+    try {
+      player = std::make_unique<rig::ActuatorPlayer>(*opened, sound, settings);
+    } catch (const std::exception& e) {
+      why_not = e.what();
+    }
+  }
+  RigActuatorSwitch actuator(std::move(player), std::move(why_not), play_wanted, feed);
+  actuator.apply();
   rig::ComparisonRunOptions options;
   options.capture.folder = folder;
   options.capture.tool = c.tool;
@@ -78,7 +150,8 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     feed->progress = p;
   };
   std::size_t decimate = 0;
-  options.on_data = [feed, decimate](const rig::RigData& data) mutable {
+  options.on_data = [feed, decimate, &actuator](const rig::RigData& data) mutable {
+    actuator.apply();
     std::lock_guard lock(feed->mutex);
     for (const auto& f : data.frames)
       if (decimate++ % 10 == 0) {  // 1 kHz frames, 100 Hz traces
@@ -123,14 +196,28 @@ void RigView::start() {
   speed_mm_s_.clear(), force_n_.clear();
   table_.reset();
   const auto folder = sessions_ / ("rig-" + timestamp());
+  RigActuatorTarget target;
+  if (audio_ && audio_->device()) {
+    target.device = output_settings_of(*audio_->device(), "nibrig-panel-rig");
+    target.actuator = audio_->audition().actuator();
+  }
+  play_wanted_->store(false);  // said again below, once the run exists
   job_ = std::make_unique<BackgroundJob<rig::ComparisonRun>>(
-      "rig", [c = choice_, catalog = catalog_, forcing = forcing_, folder, feed = feed_,
-              cancel = cancel_](JobControl& control) {
-        return run_on_rig(c, catalog, forcing, folder, feed, cancel.get(), control);
+      "rig", [c = choice_, catalog = catalog_, forcing = forcing_, folder, feed = feed_, cancel = cancel_, target,
+              wanted = play_wanted_](JobControl& control) {
+        return run_on_rig(c, catalog, forcing, folder, feed, cancel.get(), target, wanted, control);
       });
+  follow_play_choice();
 }
 
 void RigView::stop() { cancel_->store(true); }
+
+void RigView::follow_play_choice() {
+  const bool turned_on = choice_.play_on_actuator && !play_wanted_->load();
+  play_wanted_->store(choice_.play_on_actuator);
+  // What the audition plays would sound on the actuator beside the simulation: it falls silent.
+  if (turned_on && running() && audio_) audio_->stop();
+}
 
 void RigView::take_feed() {
   std::vector<float> measured, simulated;
@@ -149,6 +236,8 @@ void RigView::take_feed() {
     progress_ = feed_->progress;
     rig_name_ = feed_->rig_name;
     simulated_name_ = feed_->simulated_name;
+    actuator_playing_ = feed_->actuator_playing;
+    actuator_state_ = feed_->actuator_state;
   }
   if (shown_hz_.empty() || measured.empty()) return;
   const std::size_t shown = shown_hz_.size();
@@ -178,6 +267,7 @@ void RigView::draw() {
     }
     job_.reset();
   }
+  follow_play_choice();
   take_feed();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginChild("rig-controls", {320.0f, avail.y});
@@ -208,6 +298,11 @@ void RigView::draw_controls() {
   if (choice_.kind != 1) input_text("profile", choice_.profile);
   ImGui::SliderFloat("seconds", &choice_.seconds, 0.0f, 60.0f, "%.0f");
   if (choice_.kind != 2) ImGui::SliderFloat("speed-up", &choice_.speedup, 1.0f, 8.0f, "%.0f x");
+  ImGui::Checkbox("play the simulation on the actuator", &choice_.play_on_actuator);
+  if (!actuator_state_.empty()) {
+    if (actuator_playing_) ImGui::TextWrapped("%s", actuator_state_.c_str());
+    else ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", actuator_state_.c_str());
+  }
   if (!running()) {
     if (ImGui::Button("Start")) start();
   } else {

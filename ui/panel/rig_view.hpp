@@ -3,6 +3,8 @@
 // the speed and force traces, and the live comparison's distance per speed. The run is
 // rig::run_comparison on a worker thread; the analysis thread's rows reach the UI through a feed
 // that the worker fills and the UI empties each frame (neither ever waits on the audio thread).
+// While the rig runs, the simulation can play on the actuator (rig::ActuatorPlayer, on the device
+// the panel plays on), turned on and off as it runs.
 #pragma once
 
 #include <atomic>
@@ -17,6 +19,7 @@
 #include "rig/comparison_run.hpp"
 #include "rig/rig_request.hpp"
 #include "ui/panel/background_job.hpp"
+#include "ui/panel/panel_audio.hpp"
 #include "ui/panel/waterfall.hpp"
 
 namespace nibrig::ui::panel {
@@ -32,6 +35,7 @@ struct RigChoice {
   std::string input_api, input_device;
   int input_channel = 1;
   float speedup = 1.0f;  // the simulated and replay rigs: 1 = real time
+  bool play_on_actuator = false;  // the simulation plays on the actuator while the rig runs
 };
 
 // The rig the choice names, as rig::open_rig takes it (the rig view's run, the experiment's rig mode).
@@ -46,6 +50,8 @@ struct RigFeed {
   std::optional<rig::ComparisonTable> table;
   rig::CaptureProgress progress;
   std::string rig_name, simulated_name;
+  bool actuator_playing = false;
+  std::string actuator_state;  // what the actuator plays, or why it does not
 };
 
 class RigView {
@@ -61,6 +67,9 @@ class RigView {
     catalog_ = std::move(catalog);
     forcing_ = std::move(forcing);
   }
+  // The simulation plays on `audio`'s device and actuator calibration, as they are when a run
+  // starts, and `audio` falls silent when the actuator plays the simulation. Null: it plays nowhere.
+  void play_through(PanelAudio* audio) { audio_ = audio; }
   bool running() const { return job_ && !job_->done(); }
   // Of the run going on (0 before the capture starts), or 1 after it.
   double progress() const { return job_ ? job_->progress() : 1.0; }
@@ -70,6 +79,9 @@ class RigView {
   const std::string& finished() const { return finished_; }
   // The speed trace as drawn (mm/s at 100 Hz, the newest last).
   const std::vector<float>& speed_trace() const { return speed_mm_s_; }
+  // Whether the run's simulation plays on the actuator now, and what it plays or why it does not.
+  bool actuator_playing() const { return actuator_playing_; }
+  const std::string& actuator_state() const { return actuator_state_; }
   // For tests: the waterfalls (null before the first rows) and the last table.
   const Waterfall* measured() const { return measured_.get(); }
   const Waterfall* simulated() const { return simulated_.get(); }
@@ -86,11 +98,15 @@ class RigView {
   void draw_waterfalls();
   void draw_traces();
   void draw_table();
+  // Hands the play choice to the run, silencing the audition when it turns on.
+  void follow_play_choice();
 
   std::filesystem::path catalog_, forcing_, sessions_;
   RigChoice choice_;
   std::shared_ptr<RigFeed> feed_ = std::make_shared<RigFeed>();
   std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
+  std::shared_ptr<std::atomic<bool>> play_wanted_ = std::make_shared<std::atomic<bool>>(false);
+  PanelAudio* audio_ = nullptr;
   std::unique_ptr<BackgroundJob<rig::ComparisonRun>> job_;
   std::unique_ptr<Waterfall> measured_, simulated_, difference_;
   std::pair<ImVec2, ImVec2> rects_[3];
@@ -99,6 +115,8 @@ class RigView {
   std::optional<rig::ComparisonTable> table_;
   rig::CaptureProgress progress_;
   std::string rig_name_, simulated_name_, error_, finished_;
+  bool actuator_playing_ = false;
+  std::string actuator_state_;
 };
 
 }  // namespace nibrig::ui::panel

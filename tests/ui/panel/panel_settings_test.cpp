@@ -27,6 +27,7 @@ TEST(PanelSettings, WhatWasKeptComesBack) {
   s.rig.kind = 1;
   s.rig.replay = "/sessions/one";
   s.rig.speedup = 4.0f;
+  s.rig.play_on_actuator = true;
   write_panel_settings(file, s);
   const PanelSettings back = read_panel_settings(file);
   EXPECT_EQ(back.view, View::rig);
@@ -40,6 +41,7 @@ TEST(PanelSettings, WhatWasKeptComesBack) {
   EXPECT_EQ(back.rig.kind, 1);
   EXPECT_EQ(back.rig.replay, "/sessions/one");
   EXPECT_EQ(back.rig.speedup, 4.0f);
+  EXPECT_TRUE(back.rig.play_on_actuator);
 }
 
 TEST(PanelSettings, AMissingFileGivesTheDefaultsAndADamagedOneSaysWhere) {
