@@ -1,7 +1,7 @@
 // What predicting a design needs, read from files once: the catalog (for μ), the forcing model
 // (from `nibrig forcing fit`, or fitted to the catalog when none is given), the materials, the
-// printed tools' template and the detection threshold. Shared by every face that predicts:
-// predict, design, the voices of render and audition, the demo, next the panel.
+// printed tools' template and the detection threshold. Shared by every face that predicts
+// (predict, design, the voices of designs played, the demo).
 #pragma once
 
 #include <filesystem>
@@ -31,7 +31,7 @@ struct PredictionInputs {
 
 // `options` names the catalog, template, materials and the designs' modes and mesh size (empty or
 // 0: the bundled ones and the template's); `forcing_file` the model (empty: fit the catalog now,
-// ~8 s, said in the log, with `progress` as its designs are simulated); `fitted`, when given, is
+// said in the log, with `progress` as its designs are simulated); `fitted`, when given, is
 // used as the model instead. A model without held-out descriptor errors (a file from before them)
 // is used with a warning: its predictions are placed as if their descriptors were measured.
 std::unique_ptr<PredictionInputs> load_prediction_inputs(

@@ -57,7 +57,7 @@ struct JudgmentModel {
   Eigen::VectorXd log_noise;  // η per stimulus; empty: every σ_i = 1
 };
 
-// The family and its fitted parts in words, for a person reading a report or the panel:
+// The family and its fitted parts in words, for a person reading a report or a window:
 // "logistic+lapse+noise, lapse 0.043, noise per stimulus 0.71 to 1.52 (sigma, 1 = typical)".
 std::string describe_model(const JudgmentModel& model);
 
