@@ -1,4 +1,5 @@
-// End-to-end tests of the `nibrig` command, run in-process on real recordings.
+// End-to-end tests of the `nibrig` command on real recordings, each run as the built `nibrig` in a
+// child process (cli_harness.hpp).
 #include <gtest/gtest.h>
 
 #include <fstream>
