@@ -84,7 +84,7 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
   // dummy driver's xruns are not ours and not counted). Until the forcing generator spread its
   // hop over the calls, 0-22 blocks a minute took up to 4 ms here: every warm voice moved its
   // frames in the same callback. Since then the largest block takes 0.25-0.36 ms of CPU time
-  // under the flood, with the machine's two cores otherwise busy (see the issue note).
+  // under the flood, with the machine's two cores otherwise busy.
   // Under the sanitizers, every block costs 3-7 times its Release time and ASan's own work (its
   // shadow memory's first touches, its allocator's bookkeeping for the other threads) lands in
   // the callback now and then: on this machine, 1-8 blocks of 44,000 took 1.7-4.8 ms of CPU
