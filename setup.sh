@@ -38,9 +38,9 @@ bench_only=(libbenchmark-dev python3-numpy python3-scipy)
 # emulated USB device.
 not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2)
 
-# ccache pays only from a warm cache: through a cold one a first build took 196 s instead of 167
-# (the demo's `nibrig`, on two cores), and CI and a new user always start cold. So it is used
-# where its cache folder already exists: `mkdir -p ~/.cache/ccache` turns it on for rebuilds.
+# ccache pays only from a warm cache: through a cold one a first build is slower, and CI and a new
+# user always start cold. So it is used where its cache folder already exists:
+# `mkdir -p ~/.cache/ccache` turns it on for rebuilds.
 [ -d "${CCACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/ccache}" ] || export CCACHE_DISABLE=1
 
 # Each stage's wall time on standard error, so that a CI log says where its minutes went.
@@ -125,8 +125,7 @@ case "$job" in
 esac
 stage_done "installing packages"
 # The tree a user runs (demo, panel, bench, build) and the test job's scenario tree are one: clang,
-# Release. clang compiles this code about a third faster than GCC 12 (a cold `nibrig`: 364 s with
-# GCC, 257 s with clang, 225 s with its precompiled headers), and the demo is the first wait.
+# Release. clang compiles this code faster than GCC 12, and the demo is the first wait.
 release=(build/release -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release)
 with_panel=-DNIBRIG_BUILD_PANEL=ON  # said each time: the demo's configuration of the tree leaves it OFF
 case "$job" in
@@ -142,8 +141,8 @@ case "$job" in
     # machine-wide registry of 8 servers; with no jackd running, the registry can go.
     if ! pgrep -x jackd >/dev/null; then rm -f /dev/shm/jack-shm-registry /dev/shm/jack_sem.*nibrig-test-*; fi
     # Two trees, each test in one (README, "Tests"). The libraries' own suites (label unit) under
-    # ASan+UBSan, compiled by clang: the same sources took GCC 2.2 times as long with the
-    # sanitizers, most of CI's time. Line tables only (-g1): reports still name file and line.
+    # ASan+UBSan, compiled by clang, which builds them with the sanitizers in well under GCC's
+    # time. Line tables only (-g1): reports still name file and line.
     configure_and_build build/asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DNIBRIG_SANITIZE=ON -DNIBRIG_TESTS=unit -DNIBRIG_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
     # The faces end to end and the checks whose time is the feature (label scenario) in Release,

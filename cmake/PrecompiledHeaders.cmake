@@ -1,12 +1,11 @@
 # Precompiled headers beside the unity build, for clang's Release build (the tree a user plays):
 # the third-party headers most sources of a target include (Eigen, nlohmann::json, spdlog, CLI11)
-# parsed, and their common templates instantiated, once per target instead of once per unit.
-# Measured cold on two cores, building `nibrig` with clang 14: 257 s without, 234 s with one per
-# target, 225 s with the model parts sharing one (they compile with the same flags, all but
-# space's -fno-math-errno; a part given flags or definitions of its own needs a header of its own).
-# Not under the sanitizers: there the instrumented code generation dominates, and the ASan tree
-# with them (its test suites' too) took 664 s against 624 s without. Not with GCC 12: through a precompiled header it
-# reports libstdc++'s std::string internals as array-bounds errors in our code.
+# parsed, and their common templates instantiated, once per target instead of once per unit. The
+# model parts share one, as they compile with the same flags (all but space's -fno-math-errno; a
+# part given flags or definitions of its own needs a header of its own).
+# Not under the sanitizers, where instrumented code generation dominates and they do not pay; not
+# with GCC 12, which through a precompiled header reports libstdc++'s std::string internals as
+# array-bounds errors in our code.
 # A file must still include what it uses; -DNIBRIG_UNITY_BUILD=OFF with GCC checks that.
 set(nibrig_pch_common <string> <vector> <map> <optional> <functional> <filesystem> <algorithm>
                       <stdexcept> <cmath> <Eigen/Dense> <nlohmann/json.hpp> <spdlog/spdlog.h>)

@@ -1,7 +1,7 @@
 // A player that keeps running while a person works: one engine with a voice per slot (a tool, or
 // the two or three of an A/B or triplet comparison), a stroke or a live contact, on a device by
-// name or on none at all (a screenshot, a machine without audio). The panel plays what is clicked,
-// dragged and drawn here; a test reaches all of it without a window. No call waits for the audio
+// name or on none at all (a screenshot, a machine without audio). What a person clicks, drags and
+// draws is played here; a test reaches all of it without a window. No call waits for the audio
 // thread: what the engine's queue cannot take yet is held and handed over by a later call or pump().
 #pragma once
 
@@ -58,7 +58,7 @@ class LiveAudition {
   InverseFilter use_actuator(const ActuatorCalibration& calibration, std::string name);
   const std::string& actuator() const noexcept { return actuator_; }
   rt::EngineStats engine_stats() const { return engine_->stats(); }
-  // Hands over what the engine's queue refused before (the panel calls it every frame); how many
+  // Hands over what the engine's queue refused before (call it every frame); how many
   // commands still wait.
   std::size_t pump();
   double sample_rate() const noexcept { return engine_->sample_rate(); }

@@ -1,7 +1,6 @@
 // One presentation through the real-time engine: a tool, or the two or three of an A/B or triplet
 // presentation, each a voice in its own slot, moved by one stroke, optionally through an actuator's
-// inverse filter — then rendered to a WAV file or played on a device. Render, audition and the
-// demo assemble their engines here; the rig, the panel and the experiment runner are next.
+// inverse filter — then rendered to a WAV file or played on a device.
 #pragma once
 
 #include <cstdint>

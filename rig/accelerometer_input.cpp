@@ -63,7 +63,7 @@ std::size_t AccelerometerInput::read(std::vector<float>& into) {
   // The ring drops what arrives while it is full (~2.7 s: a reader that waited, as a USB rig does
   // between opening and starting), and the stamps count every sample the device sent: the next
   // sample's index counts the dropped ones too, or host_time_of would place everything after them
-  // that many samples early (a 25 s wait put a whole capture before the motor's start). Read when
+  // that many samples early (after a long wait, a whole capture before the motor's start). Read when
   // the ring is empty, the count holds for the next sample; during a capture the reader drains the
   // ring every few milliseconds and nothing is dropped.
   samples_read_ = samples_delivered_ + stream_->stats().capture_dropped;

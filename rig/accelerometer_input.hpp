@@ -48,10 +48,9 @@ class AccelerometerInput {
   // Host time (s, steady clock) at which sample `index` (counted from the stream's first) was
   // captured: the stamp of the callback that delivered it, less the latency the stamps do not
   // include. Call it as samples are read (it knows the last few hundred callbacks). The stamp of
-  // the very block, not a line through many: measured through JACK's dummy driver, whose clock
-  // wanders with the machine's load by thousands of ppm, the block's own stamp put an impulse
-  // within 0.02 ms of when it entered the graph where a 2 s line fit missed by up to 3.5 ms; a
-  // crystal's drift of tens of ppm is nothing within one block.
+  // the very block, not a line through many: a clock that wanders with the machine's load (JACK's
+  // dummy driver) makes a line fitted over seconds miss by milliseconds, while a crystal's drift of
+  // tens of ppm is nothing within one block.
   double host_time_of(double index) const;
   // The stamps fitted as a clock: the interface's drift against the host, and how much the stamps
   // scatter about it (reported with a capture).

@@ -1,8 +1,8 @@
 // A live comparison as a whole: a rig runs its profile into a session (rig/capture.hpp) while the
 // simulation of a tool, driven by the measured speed and force (rig/live_simulation.hpp), runs
 // beside it, and both streams go to the analysis (rig/live_comparison.hpp), whose table and
-// waterfall rows a face shows as they come and reports at the end. The command line's `rig
-// compare`, the demo and the panel all run it here.
+// waterfall rows a face shows as they come and reports at the end. Every face that compares a
+// tool with its simulation on a rig runs it here.
 #pragma once
 
 #include <cstdint>

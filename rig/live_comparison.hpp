@@ -1,4 +1,4 @@
-// The live comparison of a rig capture (issue 16): the capture thread hands measured and simulated
+// The live comparison of a rig capture: the capture thread hands measured and simulated
 // acceleration and the measured speed over a lock-free queue, an analysis thread of its own runs
 // the two streaming spectrograms and the speed-binned comparison, and a UI takes the new waterfall
 // rows and the per-bin table whenever it draws. Neither the capture thread nor the UI ever waits

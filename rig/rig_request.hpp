@@ -1,6 +1,6 @@
 // A rig as a person asks for it — "the simulated rig with vero2 on office", "the USB controller
-// NR-0001 with the accelerometer on input 1 of Scarlett", "replay this session" — opened for every
-// face alike (the CLI, the panel, the experiment runner), with its speed profile.
+// NR-0001 with the accelerometer on input 1 of Scarlett", "replay this session" — opened the same
+// way for every face, with its speed profile.
 #pragma once
 
 #include <cstdint>

@@ -22,11 +22,11 @@ class TurntablePresenter final : public model::study::Presenter {
   // The rig with this stimulus mounted: the simulated rig simulates it, the USB rig has whatever
   // the operator mounted.
   using RigOpener = std::function<std::unique_ptr<Rig>(const model::study::Stimulus&)>;
-  // Tells the operator what to mount and returns once they have (a terminal waits for Enter, the
-  // panel for a button); called on the thread that presents.
+  // Tells the operator what to mount and returns once they have (a terminal waits for Enter, a
+  // window for a button); called on the thread that presents.
   using OperatorPrompt = std::function<void(const std::string& message)>;
   // Tells the operator a trial's three tools; must not wait (it is called where the trial is
-  // prepared, the panel's UI thread among them).
+  // prepared, a window's UI thread among them).
   using OperatorNotice = std::function<void(const std::string& message)>;
 
   TurntablePresenter(std::vector<model::study::Stimulus> stimuli, RigOpener open,

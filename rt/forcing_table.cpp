@@ -42,8 +42,8 @@ void check(const model::io::VelocitySpectrum& t, double sample_rate_hz, double w
 
 // Linear interpolation of (f, a) at the rising points step, 2·step, … out.size()·step, 0 outside
 // [f.front(), f.back()]. The points rise, so the segment each falls in is found by walking on, not
-// by a search per point: a table has 2^15 to 2^16 bins per speed, and a voice is built at every
-// move of the panel's design sliders.
+// by a search per point: a table has 2^15 to 2^16 bins per speed, and a voice may be built at
+// every move of a design slider.
 void interpolate_rising(const std::vector<double>& f, const std::vector<double>& a, double step,
                         std::span<double> out) {
   std::size_t after = 0;  // the first frequency above the point's

@@ -1,8 +1,7 @@
 // A stroke as a person asks for it — a constant speed, the rig's sweep or an artist's recorded
 // trajectory, with the paper's normal force or another — made into the source the engine fills its
 // blocks from, with a line that says what it is and how long it naturally lasts. Every face that
-// plays a tool (render, audition, the demo, next the panel and the experiment runner) makes its
-// strokes here. Runs on a control thread: it may read a file and throw.
+// plays a tool makes its strokes here. Runs on a control thread: it may read a file and throw.
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// What a face opens on without asking (the panel's default space and forcing model): the inputs
+// What a face opens on without asking (a default space and forcing model): the inputs
 // and the progress and cancel hooks every default takes, and the one way each is kept in the user
 // cache (model/io/user_cache.hpp): read when a file of its key is there and readable, else
 // computed, then stored atomically under that key.

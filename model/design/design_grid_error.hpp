@@ -1,6 +1,6 @@
 // How far the design-response grid's interpolation is from the full FEM prediction, measured where
 // it is worst placed to be right: at every cell's centre, the point farthest from the four nodes it
-// is interpolated from. Stated in what the panel shows: |H| in dB, the descriptors in their own
+// is interpolated from. Stated in what a person compares: |H| in dB, the descriptors in their own
 // units (μ, log10 of the weighted vibration), and the place in the perceptual space in space units
 // (one unit: 75 % preference). Set beside the descriptors' cross-validated error
 // (descriptor_uncertainty.hpp), it says whether the grid is dense enough: an interpolation error

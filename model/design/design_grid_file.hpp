@@ -1,5 +1,5 @@
-// The design-response grid kept between runs (model/io/FORMATS.md, "Design-response grid"): the
-// panel computes it once (about 20 s) and reads it back in milliseconds. The file's name is the
+// The design-response grid kept between runs (model/io/FORMATS.md, "Design-response grid"):
+// computed once, then read back instead of solved again. The file's name is the
 // cache key of every input the grid depends on, so a changed input is a different file and a
 // stale grid is never read; the file also holds its key, so a file copied or renamed by hand is
 // refused rather than trusted.

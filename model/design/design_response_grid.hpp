@@ -1,9 +1,9 @@
-// The panel's live Design view moves a design through the perceptual space as a slider moves,
-// within 50 ms; a full prediction meshes and solves the stylus (about a second). So everything of a
-// design that needs the FEM — its response |H| on the forcing model's grid and its modes — is
-// computed once over a grid of (mix fraction λ between two materials, tip diameter), and any point
-// inside the grid is interpolated from the four nodes around it; the rest of a prediction
-// (spectrum, μ, descriptors, placement) is cheap and done exactly as predict_tool does it.
+// Predictions of a design as fast as a slider moves: a full prediction meshes and solves the
+// stylus, far too slow to follow one. So everything of a design that needs the FEM — its response
+// |H| on the forcing model's grid and its modes — is computed once over a grid of (mix fraction λ
+// between two materials, tip diameter), and any point inside the grid is interpolated from the four
+// nodes around it; the rest of a prediction (spectrum, μ, descriptors, placement) is cheap and done
+// exactly as predict_tool does it.
 //
 // What is interpolated, bilinearly in (λ, tip) inside a cell:
 // - ln|H| at each frequency (|H| spans decades; its logarithm varies far more evenly);
@@ -47,12 +47,10 @@ GridAxes even_axes(const std::string& material_a, const std::string& material_b,
                    std::size_t tip_points);
 
 // The default density: 5 fractions (steps of 0.25) × 7 tips (0.5 mm) over the forcing model's
-// fitted tips 1-4 mm, 35 FEM solves (27 s on two cores at the template's 3 mm and 64 modes; minutes
-// on a loaded machine, hence the coarse grid first: coarse_axes below). At every cell centre of
-// that grid, vero–DM85 on office (bench DesignGridError, when written): |H| within 0.084 dB rms
-// (0.16 dB at worst), log10 of the weighted mean within 8.3e-4 against the predictions'
-// cross-validated 0.052 (1.6 % of it, 0.03 % of the variance), the placement within 8.3e-4
-// against its own 0.038. Denser would buy nothing a listener or the space could tell.
+// fitted tips 1-4 mm, 35 FEM solves (slow enough to show a coarse grid first: coarse_axes below).
+// Its interpolation error at every cell centre is a small fraction of the predictions' own
+// cross-validated error (bench DesignGridError), so a denser grid would buy nothing a listener or
+// the space could tell.
 inline constexpr std::size_t kDefaultFractionPoints = 5, kDefaultTipPoints = 7;
 
 // The grid to show while a fine grid is solved: on each axis the fine nodes at every other index,
@@ -120,7 +118,7 @@ DesignResponseGrid compute_design_response_grid(const PredictionSetup& setup, co
 SimulatedResponse interpolate_response(const DesignResponseGrid& grid, double fraction,
                                        double tip_m);
 
-// The cheap path the panel calls per slider move: predict_from_response with the interpolated
+// The cheap path, once per slider move: predict_from_response with the interpolated
 // response. Throws as interpolate_response and predict_from_response do, and when the grid's
 // frequencies are not the setup's forcing model's (a grid of another model).
 PredictedTool predict_from_grid(const PredictionSetup& setup, const DesignResponseGrid& grid,

@@ -38,7 +38,7 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
 
 using Evaluate = std::function<Candidate(const DesignPoint&)>;
 
-// Called after each candidate is evaluated (each is an FEM prediction, about a second), with
+// Called after each candidate is evaluated (each is an FEM prediction, the slow part), with
 // done = 1, 2, ... and a total fixed for the whole search: the most candidates it can evaluate,
 // known from its options before the first. The count reaches the total unless the optimum lies at
 // the edge of the range, where fewer candidates remain to refine: a face ends its bar when the

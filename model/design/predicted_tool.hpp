@@ -86,8 +86,8 @@ PredictedTool predict_tool(const PredictionSetup& setup, const DesignPoint& poin
                            const mechanics::Design* own_design = nullptr);
 
 // predict_tool in its two steps, for callers that get the stylus's response elsewhere (the
-// design-response grid interpolates it): the FEM step, about a second, and everything after it,
-// milliseconds. predict_tool(setup, p, s) equals predict_from_response(setup, p, s,
+// design-response grid interpolates it): the FEM step, the slow one, and everything after it,
+// which is cheap. predict_tool(setup, p, s) equals predict_from_response(setup, p, s,
 // simulate_response(setup, p)) exactly.
 struct SimulatedResponse {
   std::string design_name;

@@ -1,6 +1,6 @@
 // The prediction file (`nibrig predict` output, FORMATS.md "Prediction"): a predicted design as the
 // keys `nibrig measure` writes for a recording, so the two compare directly, with the design and
-// the error of its descriptors. Written and read by every face (the CLI, the panel's Save design).
+// the error of its descriptors. Every face that saves or opens a design reads and writes it here.
 #pragma once
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 // acceleration spectrum it is driven with. A catalog tool is its measured spectrum through the
 // modes of a stylus design (by default the bundled printed stylus with a 2 mm tip); a design point
 // ("DM85:0.5,vero:0.5,tip=2mm") is predicted (Sec. 5.3) with its own modes. Every face that plays
-// a tool (render, audition, the demo, next the rig, the panel and the experiment runner) asks here.
+// a tool asks here.
 #pragma once
 
 #include <filesystem>
@@ -42,7 +42,7 @@ const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
 struct ToolSoundOptions {
   std::filesystem::path catalog;        // empty: the bundled one
   std::filesystem::path stylus_design;  // modes of catalog tools; empty: the bundled 2 mm stylus
-  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog (~8 s) first
+  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog first
   forcing::DesignProgress progress;     // of that fit's simulated designs
 };
 

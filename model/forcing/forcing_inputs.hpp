@@ -1,7 +1,7 @@
 // What fitting the forcing model starts from, read from files once: the catalog's printed-tool
 // exemplars with the simulated response of each tool's design, and the notes that say where
 // everything came from. Shared by every face that fits (`forcing fit`, `loo`, `holdout`, the
-// on-the-fly fit of predict and design, the demo, next the panel).
+// on-the-fly fit of predict and design, the demo).
 #pragma once
 
 #include <cstddef>

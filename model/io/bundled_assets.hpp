@@ -1,6 +1,6 @@
 // Where the bundled assets are (the default catalog, materials, stylus designs, threshold curve):
-// $NIBRIG_ASSETS, else the repository's assets/ folder this binary was built from. Every face (the
-// command line, the panel, the experiment runner) finds its defaults here.
+// $NIBRIG_ASSETS, else the repository's assets/ folder this binary was built from. Every face
+// finds its defaults here.
 #pragma once
 
 #include <filesystem>

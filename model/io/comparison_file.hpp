@@ -1,5 +1,5 @@
-// comparison.json: what a live comparison of a real tool with its simulation found (issue 16,
-// `nibrig rig compare --report DIR`), per speed bin how far the simulated spectrum was from the
+// comparison.json: what a live comparison of a real tool with its simulation found
+// (`nibrig rig compare --report DIR`), per speed bin how far the simulated spectrum was from the
 // measured one, so that a run can be set beside the catalog's repeatability and beside other runs.
 // FORMATS.md, "Live comparison", describes the file.
 #pragma once

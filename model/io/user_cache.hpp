@@ -1,5 +1,5 @@
 // Where results that take seconds to compute and depend only on their inputs are kept between runs
-// (the panel's default space and forcing model, its design-response grid), and the keys that say
+// (the default space and forcing model, the design-response grid), and the keys that say
 // which inputs they were computed from: a result is reused only when every input is byte-equal.
 #pragma once
 

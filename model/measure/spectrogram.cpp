@@ -40,7 +40,7 @@ void prefer_huge_pages(void* data, std::size_t bytes) {
 
 // values = sqrt(values · factor) over rows × bins values (factor per bin). Square roots are most of
 // a spectrogram's arithmetic: std::sqrt one value at a time (all SpectrumAnalyzer::amplitude can
-// do, since it must keep errno) took a third of the time, which AVX's four lanes cut to a fraction.
+// do, since it must keep errno) is a large share of the time, which AVX's four lanes cut down.
 // (AVX-512's eight would do more, but GCC 12's header for them trips its own maybe-uninitialized
 // warning.) IEEE square roots and products are correctly rounded in every form, so the path taken
 // changes no value.

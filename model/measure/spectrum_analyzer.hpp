@@ -21,9 +21,8 @@ std::vector<double> window_coefficients(Window window, std::size_t length);
 // power_spectral_density() non-const: use one analyzer per thread. The plan is made with
 // FFTW_ESTIMATE: planning costs microseconds and gives the same plan on every run. FFTW_MEASURE
 // would time candidate algorithms (milliseconds or more per size, choice varying from run to run)
-// to make the transforms about 20 % faster — but the transforms are only ~15 % of a spectrogram's
-// time (1024 points: 8.5 vs 6.9 ms of ~55 ms for a minute at 48 kHz, see
-// tests/bench/bench_spectrogram.cpp).
+// to make the transforms somewhat faster — but the transforms are a small part of a spectrogram's
+// time (tests/bench/README.md).
 class SpectrumAnalyzer {
  public:
   // segment_length >= 2, else std::invalid_argument.

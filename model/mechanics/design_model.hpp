@@ -1,6 +1,6 @@
 // From a design to its modal model: mesh, assemble, solve for the lowest modes, read them at the
-// tip and sensor, apply Rayleigh damping. The one pipeline the CLI, the demo, the ring-down fit and
-// (later) the real-time voices share; it records how long each stage took.
+// tip and sensor, apply Rayleigh damping. The one pipeline every user of the FEM shares (a stylus's
+// modes, the ring-down fit, predicted designs); it records how long each stage took.
 #pragma once
 
 #include <vector>

@@ -62,7 +62,7 @@ Probe default_sensor(const StylusGeometry& stylus);
 Design bar_design(const BarGeometry& bar, const std::string& material);
 
 // Elements as thick as the bar: the first three bending frequencies are then within 0.1 % of the
-// converged ones (demo: cantilever_convergence.csv), about 2 s for a 180 mm bar. No finer than a
+// converged ones (demo: cantilever_convergence.csv) at a modest cost. No finer than a
 // hundredth of the free length, so that a very thin bar does not mesh into millions of elements.
 double bar_mesh_size(const BarGeometry& bar);
 

@@ -17,8 +17,8 @@ std::vector<std::complex<double>> discrete_frequency_response(const ModalModel& 
   check_modal_model(model, caller);
   check_sample_rate(sample_rate_hz, caller);
   const double h = 1.0 / sample_rate_hz;
-  // z⁻¹ = e^{−j2πf h} once per frequency, not once per mode: a voice is built at every slider move
-  // in the panel, and the sine and cosine were most of its cost.
+  // z⁻¹ = e^{−j2πf h} once per frequency, not once per mode: a voice may be built at every slider
+  // move, and the sine and cosine were most of its cost.
   std::vector<std::complex<double>> delay(frequencies.size());
   for (std::size_t k = 0; k < frequencies.size(); ++k) {
     const double f = frequencies[k];

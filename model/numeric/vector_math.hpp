@@ -2,8 +2,8 @@
 // libmvec's vector functions (four lanes with AVX2, two otherwise; within 4 ulp, as glibc documents
 // them), elsewhere the scalar std:: functions. Loops that need one of these per element (the
 // perceptual space's likelihood: an erfc, an exp and a log or two for each of 23,000 triplets an
-// evaluation) gather the arguments into a block and call these once, where the scalar calls took
-// about 40 % of an evaluation.
+// evaluation) gather the arguments into a block and call these once, as the scalar calls are much
+// of an evaluation's time.
 #pragma once
 
 #include <cstddef>

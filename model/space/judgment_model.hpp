@@ -3,14 +3,14 @@
 // Beside it, the parts a fit may add, each chosen only where it predicts unseen judgments better
 // (space validate, space fit --model auto):
 // - the link: logistic (heavier tails than probit's: a confidently wrong answer costs less), or
-// Student-t
-//   kernels as t-STE uses (van der Maaten & Weinberger 2012), P(a) = K(x_a)/(K(x_a)+K(x_b)),
-//   K(x) = (1 + x²/α)^−(α+1)/2 with α = dims − 1 (at least 1), x = s·distance;
+//   Student-t kernels as t-STE uses (van der Maaten & Weinberger 2012),
+//   P(a) = K(x_a)/(K(x_a)+K(x_b)), K(x) = (1 + x²/α)^−(α+1)/2 with α = dims − 1 (at least 1),
+//   x = s·distance;
 // - a lapse rate ε: a share of answers given at random, P' = ε/2 + (1−ε)·P;
 // - a noise per stimulus σ_i = e^{η_i} (the paper notes that pencils and charcoal wear and are
-// judged
-//   less consistently): a triplet's distances are divided by σ_t = √((σ_r² + σ_a² + σ_b²)/3), with
-//   a weak prior η_i ~ N(0, 0.5²) that keeps a rarely judged stimulus's noise near the others'.
+//   judged less consistently): a triplet's distances are divided by
+//   σ_t = √((σ_r² + σ_a² + σ_b²)/3), with a weak prior η_i ~ N(0, 0.5²) that keeps a rarely
+//   judged stimulus's noise near the others'.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,7 +57,7 @@ struct JudgmentModel {
   Eigen::VectorXd log_noise;  // η per stimulus; empty: every σ_i = 1
 };
 
-// The family and its fitted parts in words, for a person reading a report or the panel:
+// The family and its fitted parts in words, for a person reading a report or a window:
 // "logistic+lapse+noise, lapse 0.043, noise per stimulus 0.71 to 1.52 (sigma, 1 = typical)".
 std::string describe_model(const JudgmentModel& model);
 

@@ -11,9 +11,8 @@ inline constexpr double kSqrt2 = 1.4142135623730951;
 inline constexpr double kLogSqrt2Pi = 0.91893853320467274;  // log √(2π)
 // Below this Φ(x) = erfc(−x/√2)/2 nears erfc's underflow (Φ(−37.5) ≈ 1e-307), and the continued
 // fraction is used instead. erfc of a large argument keeps its full relative precision until then
-// (it is not 1 − erf), so the bound sits far out: at −5, as it once was, a fitted Lagunas space
-// sent a third of its triplets through sixty divisions each, and an evaluation inside a fit took
-// 1.5 times one at a random start.
+// (it is not 1 − erf), so the bound sits far out: nearer the middle, the many confident triplets of
+// a fitted space would each go through the slower continued fraction.
 inline constexpr double kNormalTail = -30.0;
 
 // log of the standard normal CDF; finite for every finite x.

@@ -18,8 +18,8 @@ std::string triplet_name(std::size_t t) { return "triplet " + std::to_string(t);
 
 // Where a triplet's two distances come from and where ∂nll/∂d_a, ∂nll/∂d_b go, with the space's
 // columns as vectors of D coordinates: fixed for 1-3 dimensions (the spaces people fit), so the
-// offsets live in registers and the loops unroll; Eigen::Dynamic otherwise. Fixed sizes took the
-// Lagunas 3-D evaluation from 122 to 98 ns a triplet.
+// offsets live in registers and the loops unroll; Eigen::Dynamic otherwise (bench
+// SpaceStartLagunas3D measures an evaluation).
 //
 // TripletOffsets: each triplet's two offsets from its reference, and their gradient added to the
 // three columns at once. The likelihood loop measures a whole block before it pulls on any, so a

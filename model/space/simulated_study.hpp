@@ -1,4 +1,4 @@
-// The perceptual space `nibrig demo` and the panel start from while no human judgments of drawing
+// The perceptual space the faces start from while no human judgments of drawing
 // tools are bundled: an observer whose perception is the catalog's descriptors answers the paper's
 // two-stage triplet experiment (Sec. 4.3) on 15 tool/surface pairs, and the answers are fitted
 // with bootstrap regions and a descriptor map, as a real study would be. Deterministic in its seed.

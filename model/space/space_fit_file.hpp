@@ -1,6 +1,6 @@
 // A space fitted from judgments, as its file holds it: the fit, its statistics, the descriptor map
 // when the judged stimuli have descriptors and are enough to learn it, and on request bootstrap
-// regions. One call for every face that fits (`nibrig space fit`, the panel's Fit), with progress
+// regions. One call for every face that fits a space, with progress
 // named by step and a cancel flag that both the fit and the bootstrap honour.
 #pragma once
 

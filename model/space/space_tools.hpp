@@ -1,7 +1,6 @@
 // Every tool a face draws in a perceptual space, in one list: the judged stimuli at their fitted
 // coordinates with their bootstrap regions, and every other catalog pairing placed from its
-// descriptors with the descriptor map's prediction uncertainty (Fig. 9 and 15 in one). What the
-// panel draws and lets a person click; `nibrig demo`'s placed_tools.png shows the same tools.
+// descriptors with the descriptor map's prediction uncertainty (Fig. 9 and 15 in one).
 #pragma once
 
 #include <Eigen/Core>

@@ -72,7 +72,7 @@ inline LinkTerms link_terms(double alpha, double xa, double xb, bool log_a_wante
       // e^{±u} = r^{(α+1)/2}, r = the smaller of w_a/w_b and w_b/w_a (w = α + x²), is ≤ 1 and,
       // with α a whole number (dims − 1), a power of √r: no exponential, and no overflow however
       // far apart the two are. Then log(1 + k) for the likelier side, and log r as well for the
-      // other only where an answer took it (three transcendentals a triplet before, one to two now).
+      // other only where an answer took it: one or two transcendentals a triplet, not three.
       const double wa = alpha + xa * xa, wb = alpha + xb * xb;
       const bool a_likelier = wa <= wb;
       const double r = a_likelier ? wa / wb : wb / wa, root = std::sqrt(r);

@@ -1,5 +1,5 @@
-// One participant's session of a study, the same for every face (a terminal, the panel's
-// Experiment view, a simulated participant): the trials in their order, each stimulus played when
+// One participant's session of a study, the same for every face (a terminal, a window, a
+// simulated participant): the trials in their order, each stimulus played when
 // the participant asks for it, each answer appended to disk the moment it is given, rests every N
 // trials, and a session killed at any point continued where it stopped. Where the stimuli come
 // from (the actuator, the rig, nothing) and who answers are the two interfaces below.
@@ -61,7 +61,7 @@ struct Answer {
   std::optional<double> response_s;
 };
 
-// Who answers: a person at a terminal or in the panel, or a simulated participant.
+// Who answers: a person at a terminal or in a window, or a simulated participant.
 class Respondent {
  public:
   virtual ~Respondent() = default;
@@ -108,8 +108,8 @@ struct StudyResult {
   std::vector<std::string> warnings;  // a cut-off line dropped, ...
 };
 
-// One participant's session step by step, for a face that drives it from its own loop (the
-// panel's frames): constructed, it has checked the session and replayed a resumed log; begin()
+// One participant's session step by step, for a face that drives it from its own loop (a
+// window's frames): constructed, it has checked the session and replayed a resumed log; begin()
 // after the consent; then for each trial current(), play() as often as asked, answer(). Each answer
 // is on disk before answer() returns and the next trial is prepared (its stimuli loaded through the
 // presenter). Throws what check_study_settings throws; on resume io::FormatError naming the

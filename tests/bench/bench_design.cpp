@@ -1,4 +1,4 @@
-// Cost of the forcing model and of design by search (issue 6): simulating the nine printed
+// Cost of the forcing model and of design by search: simulating the nine printed
 // designs' responses, the fit of Eq. 10 plus the leave-one-out over the paper's tools, and one line
 // search (every candidate meshed, solved and predicted at the template's full resolution, 3 mm and
 // 64 modes). The space of the search is made from the catalog's descriptors (as in

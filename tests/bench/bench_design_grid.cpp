@@ -1,4 +1,4 @@
-// The panel's live Design view (issue 17): what a slider move costs through the design-response
+// A design moved live by its sliders: what a slider move costs through the design-response
 // grid, beside the full prediction it stands in for, at the template's full resolution (3 mm, 64
 // modes) and the default grid (5 fractions × 7 tips, vero–DM85, 1-4 mm):
 // - DesignGridSliderToPlacement: interpolated |H| and modes, spectrum, μ, descriptors, placement;

@@ -2,7 +2,7 @@
 // measured and simulated stream, fed in audio-sized blocks, each row pair added to the speed-binned
 // comparison, and the per-bin table recomputed ten times a second as the thread publishes it. The
 // `core_percent` counter is the analysing thread's own CPU time per second of audio, in percent of
-// one core (the thread's clock, so that other load on the machine does not count): the issue asks
+// one core (the thread's clock, so that other load on the machine does not count): the budget is
 // < 5 %.
 #include <benchmark/benchmark.h>
 #include <time.h>

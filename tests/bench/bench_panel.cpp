@@ -1,7 +1,7 @@
 // What a frame of the panel costs on this machine's OpenGL (Mesa llvmpipe under Xvfb: no GPU): the
 // space with 200 tools and their 68/95 % regions beside two live spectrograms, each taking a new row
 // per frame (the analysis makes one every 21 ms), drawn and rendered to the end (glFinish). Beside
-// it, in the same run, an empty frame: the window, ImGui and the swap alone. The issue asks >= 60
+// it, in the same run, an empty frame: the window, ImGui and the swap alone. The goal is >= 60
 // frames per second (`fps`). Run under a display: `xvfb-run -a -s '-screen 0 1280x800x24'` (setup.sh
 // bench does).
 #include <benchmark/benchmark.h>

@@ -1,7 +1,7 @@
 // What the whole panel costs when nothing happens, and what waiting for input costs when something
 // does: the real Panel on a space of 62 tools, in a window as nibrig-panel opens it (visible, vsync
 // asked for; Xvfb has no vertical blank, so nothing paces the frames but the loop). Each loop runs
-// once at full rate (the frame loop before issue 29: `/0`) and once paced (FramePacing with
+// once at full rate (the frame loop unpaced: `/0`) and once paced (FramePacing with
 // Panel::idle_wait_s(), and frames whose draw lists did not change not rendered again: `/1`), in
 // the same run:
 // - PanelIdle: the process's CPU time over 5 s of wall time with nothing moving (`core_percent`,

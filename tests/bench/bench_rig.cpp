@@ -1,4 +1,4 @@
-// The rig's budgets (issue 16): a 10-minute capture at 1 kHz force and 48 kHz acceleration that
+// The rig's budgets: a 10-minute capture at 1 kHz force and 48 kHz acceleration that
 // drops nothing, and from a speed frame to the actuator's engine taking it within one audio period
 // + 1 ms.
 #include <benchmark/benchmark.h>

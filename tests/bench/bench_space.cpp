@@ -1,6 +1,6 @@
 // Cost of fitting a perceptual space: the paper's study size (15 stimuli, every one of the 1365
 // triplets, a simulated observer) in 2-D with 16 starts, 1000 bootstrap refits of it (Fig. 9), and
-// the Lagunas et al. 2019 training split (100 materials) in 3-D. Targets (issue 4): < 0.1 s,
+// the Lagunas et al. 2019 training split (100 materials) in 3-D. Targets: < 0.1 s,
 // < 20 s, < 10 s on this 2-core machine.
 #include <benchmark/benchmark.h>
 

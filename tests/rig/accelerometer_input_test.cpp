@@ -29,8 +29,8 @@ AccelerometerSettings jack_input(const std::string& stream) {
 
 // The captured samples are what was played, in full-scale units (the scale to m/s² is the
 // session's calibration): a 0.5 full-scale sine reads 0.5. And the clock puts the captured impulse
-// on the host clock within 2 ms (the goal for the whole rig) of when JACK says it was in
-// the graph — the accelerometer's half of the rig's time base.
+// on the host clock within 2 ms (the whole rig's goal) of when JACK says it was in the graph — the
+// accelerometer's half of the rig's time base.
 TEST(AccelerometerInput, CapturesWhatJackPlaysAndTimesItOnTheHostClock) {
   nibrig::testing::JackServer server;
   testing::JackFeeder feeder("feeder", 0.5, 440.0);

@@ -1,5 +1,5 @@
 // A rig's pacing is real time times a speed-up that a clock can keep: 0 (unpaced) or 0.01 to 1e6.
-// The trial set --speedup 1e-320, and the capture waited forever.
+// A speed-up of 1e-320 would make a capture wait forever.
 #include "rig/pacer.hpp"
 
 #include <gtest/gtest.h>

@@ -124,7 +124,7 @@ TEST(SimulatedRig, RealTimePacingFollowsTheClock) {
 // The acceptance check of the simulated rig: captured with the paper's protocol (three sweeps of six
 // 2 s steps) and measured as any session, vero2 on office lies within the tool's repeatability of
 // its catalog spectrum. The bound is that repeatability (about 2.3 dB RMS between recordings of one
-// tool, issue 16); what remains is the engine's forcing noise and the rig's added noise and motor line.
+// tool); what remains is the engine's forcing noise and the rig's added noise and motor line.
 TEST(SimulatedRig, CaptureOfACatalogToolMeasuresAsItsCatalogSpectrum) {
   const auto dir = nibrig::test::scratch_dir("simulated_capture_measured");
   SimulatedRig rig(fast(3), testing::bundled_sound("vero2", "office"), "vero2", "office");

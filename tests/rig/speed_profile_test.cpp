@@ -86,8 +86,8 @@ TEST(SpeedProfile, FitToDurationRepeatsAndCuts) {
   EXPECT_DOUBLE_EQ(shorter.speed_at(0.5), 0.05);
 }
 
-// Every duration has a bound that means something (a day): the trial asked for 1e308 s,
-// and a profile file's row "1e308,100" with --speedup 0 filled a disk.
+// Every duration has a bound that means something (a day): 1e308 s, or a profile file's row
+// "1e308,100" with --speedup 0, would fill a disk.
 TEST(SpeedProfile, NothingLastsLongerThanADay) {
   const SpeedProfile ramp("ramp", {{0, 0.0}, {1, 0.1}});
   EXPECT_NO_THROW(fit_to_duration(ramp, kMaxProfileSeconds));

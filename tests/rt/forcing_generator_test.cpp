@@ -111,7 +111,7 @@ TEST(ForcingGenerator, AutocorrelationShowsNoPeriodUpToTenSeconds) {
   EXPECT_LT(std::abs(worst), 0.1);
   std::printf("max |r(τ)| over 0.25-10 s: %.4f\n", std::abs(worst));
 
-  // The reference the issue warns about: a fixed-phase sum of sinusoids on a 1 Hz grid with the
+  // The reference to avoid: a fixed-phase sum of sinusoids on a 1 Hz grid with the
   // same spectrum repeats every second, and this measure sees it.
   std::vector<double> comb(20 * 8000, 0.0);
   for (int f = 6; f <= 498; ++f)

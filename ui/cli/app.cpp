@@ -60,9 +60,10 @@ void check_outputs_before_running(CLI::App& app) {
 int run(int argc, char** argv) {
   auto global = std::make_shared<GlobalOptions>();
   CLI::App app{
-      "nibrig: perception-aware modelling of digital drawing tools.\n"
-      "Measures tools on surfaces (friction, vibration spectra), builds tool catalogs of physical\n"
-      "descriptors, and reports them. Implements Piovarci et al., SIGGRAPH 2018."};
+      "nibrig: styli that feel like real drawing tools (Piovarci et al., SIGGRAPH 2018, extended).\n"
+      "Measures tools on surfaces into catalogs; auditions a simulated tool on an actuator; runs\n"
+      "the live comparison on the turntable rig; fits the perceptual space, predicts printed\n"
+      "styli and searches for a design; runs triplet studies with people."};
   app.set_version_flag("--version", "nibrig 0.1.0");
   app.require_subcommand(1);
   app.parse_complete_callback([global] { configure_logging(global->verbosity); });

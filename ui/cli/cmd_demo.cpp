@@ -170,8 +170,8 @@ void demo(const DemoOptions& named, unsigned threads) {
            std::find(options.only.begin(), options.only.end(), name) != options.only.end();
   };
   // The mechanics part needs nothing the others make and is mostly FEM solves: it runs beside
-  // them (figures are drawn one at a time: ui/report's PlotPage holds PLplot's lock), which takes
-  // a quarter off the demo's time on two cores. Its lines still come second in the summary.
+  // them (figures are drawn one at a time: ui/report's PlotPage holds PLplot's lock), which
+  // shortens the demo on more than one core. Its lines still come second in the summary.
   std::future<DemoSection> mechanics;
   const bool beside = chosen("mechanics") && std::any_of(kSections.begin(), kSections.end(),
                                                          [&](const std::string& name) {

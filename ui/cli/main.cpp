@@ -1,4 +1,4 @@
-// Entry point of the `nibrig` command: everything lives in ui/cli/app.cpp so that tests can run it.
+// Entry point of the `nibrig` command; the command itself is run() in ui/cli/app.cpp.
 #include "ui/cli/app.hpp"
 
 int main(int argc, char** argv) { return nibrig::ui::cli::run(argc, argv); }

@@ -1,6 +1,6 @@
 // A part of a view that changes only when its inputs do (the space's regions and grid: hundreds of
-// ellipses) painted once into an OpenGL texture and drawn as one image every frame after. On Mesa's
-// llvmpipe the 400 ellipses of 200 tools cost 12 ms a frame drawn live; as an image, nothing.
+// ellipses) painted once into an OpenGL texture and drawn as one image every frame after: on a
+// software rasteriser (Mesa's llvmpipe) hundreds of ellipses drawn live are much of a frame.
 // Without an OpenGL context (the headless tests) it is not available and views paint live.
 #pragma once
 

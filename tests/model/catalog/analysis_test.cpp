@@ -114,8 +114,8 @@ TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
   EXPECT_NEAR(analysis.friction->fit.mu, 0.2, 1e-6);
 }
 
-// A recording that reads but is too short to measure names its file: the trial cut an
-// accelerometer file short and got only "step segmentation: 256 samples cannot hold ...".
+// A recording that reads but is too short to measure names its file, not only the step
+// segmentation's "256 samples cannot hold ...".
 TEST(Analysis, ARecordingTooShortToMeasureNamesItsFile) {
   io::VibrationRecording recording;
   recording.source = "piovarci2018/vibration/arm2/arm_cut_short.csv";

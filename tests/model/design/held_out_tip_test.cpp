@@ -7,7 +7,7 @@
 // What the data allow: the fitted tip curves differ by at most ~1 dB, well under the 2.3 dB that
 // two measurements of one print differ by, so interpolating t instead of taking a neighbour's
 // changes a prediction by hundredths of a dB — the simulated baselines cannot be told apart from
-// the interpolation here (see the issue note). What the model does show is that a prediction for a
+// the interpolation here. What the model does show is that a prediction for a
 // tool never measured is closer than its measured neighbours are.
 #include <gtest/gtest.h>
 

@@ -165,7 +165,7 @@ TEST_F(DamagedForcingFile, BadDescriptorErrorsAreNamed) {
 }
 
 // A gain far outside what a fit reaches is refused by the reader, so that `predict` never reports an
-// infinite vibration (the trial: log_gain 1e300 gave "weighted mean vibration inf").
+// infinite vibration (a log_gain of 1e300 would give "weighted mean vibration inf").
 TEST_F(DamagedForcingFile, AGainNoFitReachesIsNamed) {
   auto j = good_;
   j["tip_curves"][0]["log_gain"][1] = 1e300;

@@ -26,8 +26,8 @@ std::size_t entries(const fs::path& folder) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder), {}));
 }
 
-// Each kind of name an output can be given, and what must become of it: the trial turned a
-// device node and a symlink into regular files. `after` is what the name must still be.
+// Each kind of name an output can be given, and what must become of it: a device node or a symlink
+// must not become a regular file. `after` is what the name must still be.
 struct Case {
   const char* what;
   void (*make)(const fs::path& name, const fs::path& folder);

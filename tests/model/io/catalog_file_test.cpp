@@ -202,8 +202,8 @@ TEST_F(CatalogMalformed, FieldErrorsNameTheJsonPath) {
                        {"field 'notes'", "missing field"});
 }
 
-// Physical quantities are bounded: the trial gave μ = 1e300 and got inf from `space embed`,
-// and an amplitude of 1e300 made `forcing fit` write a file its own reader refused.
+// Physical quantities are bounded: μ = 1e300 would give inf in `space embed`, and an amplitude of
+// 1e300 would make `forcing fit` write a file its own reader refuses.
 TEST_F(CatalogMalformed, QuantitiesOutsideTheirPhysicalRangeAreNamed) {
   expect_message_names(error_after([](nlohmann::json& j) { j["pairings"][0]["friction"]["mu"] = 1e300; }),
                        {"field 'pairings[0].friction.mu'", "friction coefficient"});

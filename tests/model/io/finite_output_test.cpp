@@ -1,6 +1,6 @@
 // What nibrig writes holds no NaN, no infinity and no text that is not UTF-8: the writer refuses,
-// naming the file and the field, and an earlier file of that name is kept (the trial saw a
-// forcing.json that its own reader then refused).
+// naming the file and the field, and an earlier file of that name is kept: nibrig never writes a
+// file its own reader refuses.
 #include "model/io/finite_output.hpp"
 
 #include <gtest/gtest.h>

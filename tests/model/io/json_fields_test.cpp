@@ -44,8 +44,7 @@ TEST(JsonParseFile, AKeyNamedTwiceInOneObjectIsRefusedWithItsPath) {
   }
 }
 
-// /dev/zero never ends: the reader stops at its bound and names the file, instead of growing
-// (the trial saw 150 MB/s).
+// /dev/zero never ends: the reader stops at its bound and names the file, instead of growing.
 TEST(JsonParseFile, AnEndlessInputStopsAtTheBoundNamingTheFile) {
   try {
     parse_file("/dev/zero");

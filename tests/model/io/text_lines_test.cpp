@@ -190,8 +190,8 @@ TEST(CsvStem, StripsOnlyCsvEndings) {
   EXPECT_FALSE(csv_stem(".csv").has_value());
 }
 
-// Readers stop at a size no real text file reaches: /dev/zero has no line ending at all, and the
-// issue's trial saw it grow memory by 150 MB/s.
+// Readers stop at a size no real text file reaches: /dev/zero has no line ending at all, and an
+// unbounded line would grow memory until the machine runs out.
 TEST(TextLineReader, AnEndlessInputIsRefusedAtTheLineBound) {
   TextLineReader reader("/dev/zero");
   std::string line;

@@ -93,9 +93,9 @@ TEST(Design, BadDesignsNameTheFieldAndWhatWasExpected) {
              "tip", "must say where its tip and sensor are");
 }
 
-// The trial: a body_length of 1e3 (up to 1e300) ended in std::terminate inside Gmsh, 5 m
-// took 1.7 GB, and a mesh_size of 1e-300 never finished. Each is refused while the file is read,
-// naming the file and the field, before Gmsh is reached.
+// Sizes no stylus has (a body_length of 1e3 m ends inside Gmsh, a mesh_size of 1e-300 never
+// finishes) are refused while the file is read, naming the file and the field, before Gmsh is
+// reached.
 TEST(Design, SizesNoStylusCanHaveAreRefusedWhileReading) {
   const auto& materials = bundled_materials();
   struct Case {

@@ -106,8 +106,8 @@ TEST(SpaceFile, ARegionOfTheWrongShapeIsNamed) {
   }
 }
 
-// A damaged or hand-edited space is refused where a number means nothing: the trial gave a
-// coordinate of 1e300 and got p_first = nan from `space predict`, and `dims` was never checked.
+// A damaged or hand-edited space is refused where a number means nothing: a coordinate of 1e300
+// would give p_first = nan in `space predict`, and `dims` must match the coordinates.
 TEST(SpaceFile, DimsAndCoordinatesOutsideTheirMeaningAreNamed) {
   const auto dir = nibrig::test::scratch_dir("space_file_bounds");
   write_space_file(dir / "space.json", example());

@@ -172,8 +172,8 @@ TEST(StudySession, ATakenIdAsksForResumeOrANewIdBeforeAnythingStarts) {
   EXPECT_TRUE(q.prompts.empty());
 }
 
-// Two sessions of one participant at once both appended the next trials (the 25
-// duplicates): the second is refused, naming the one that runs, and runs once that one ended.
+// Two sessions of one participant at once would both append the next trials (duplicates in the
+// log): the second is refused, naming the one that runs, and runs once that one ended.
 TEST(StudySession, ASecondSessionOfAParticipantIsRefusedNamingTheFirst) {
   const auto study = test::make_study(nibrig::test::scratch_dir("session_locked"), small_study());
   NothingPresented nothing;
@@ -196,9 +196,9 @@ TEST(StudySession, ASecondSessionOfAParticipantIsRefusedNamingTheFirst) {
   EXPECT_NO_THROW((StudySession{s, nothing}));  // once the other session ended
 }
 
-// Every participant folder on disk is counted or named in a warning saying why not: the issue's
-// report dropped 40 answers without a word, merged two people under one ID, and failed on a
-// participant killed before the first answer.
+// Every participant folder on disk is counted or named in a warning saying why not: a report must
+// not drop answers without a word, merge two people under one ID, or fail on a participant killed
+// before the first answer.
 TEST(StudySession, TheReportCountsEveryParticipantOrSaysWhyNot) {
   const auto study = test::make_study(nibrig::test::scratch_dir("session_counted"), small_study());
   NothingPresented nothing;

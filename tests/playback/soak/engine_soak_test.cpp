@@ -81,15 +81,13 @@ TEST(EnginePlayback, AMinuteUnderAFloodOfUpdatesAllocatesNothingAndNeverOverruns
   const auto device = output.stats();
   EXPECT_EQ(renderer.allocations(), 0u) << "over " << renderer.calls() << " callbacks";
   // Overruns are CPU time above the period, measured inside the callback (preemption and the
-  // dummy driver's xruns are not ours and not counted). Until the forcing generator spread its
-  // hop over the calls, 0-22 blocks a minute took up to 4 ms here: every warm voice moved its
-  // frames in the same callback. Since then the largest block takes 0.25-0.36 ms of CPU time
-  // under the flood, with the machine's two cores otherwise busy (see the issue note).
-  // Under the sanitizers, every block costs 3-7 times its Release time and ASan's own work (its
-  // shadow memory's first touches, its allocator's bookkeeping for the other threads) lands in
-  // the callback now and then: on this machine, 1-8 blocks of 44,000 took 1.7-4.8 ms of CPU
-  // time, with the tests' JACK server real-time or not, the engine built a file at a time or not.
-  // There one block in 2000 is allowed; the Release build, the one that plays, must have none.
+  // dummy driver's xruns are not ours and not counted). The forcing generator spreads its hop over
+  // the calls, so no callback moves every warm voice's frames at once and even the largest block
+  // under the flood stays well inside the period.
+  // Under the sanitizers every block costs several times its Release time, and ASan's own work (its
+  // shadow memory's first touches, its allocator's bookkeeping for the other threads) lands in the
+  // callback now and then, a few blocks in tens of thousands: there one block in 2000 is allowed;
+  // the Release build, the one that plays, must have none.
 #if defined(__SANITIZE_ADDRESS__)
   EXPECT_LE(stats.overruns, renderer.calls() / 2000)
 #else

@@ -1,5 +1,5 @@
-// End-to-end tests of `nibrig render`, `devices` and `audition`, in-process; the device commands
-// run against a private JACK server with the dummy driver.
+// End-to-end tests of `nibrig render`, `devices` and `audition`, each run as the built `nibrig` in a
+// child process (cli_harness.hpp); the device commands run against a private JACK server with the dummy driver.
 #include <gtest/gtest.h>
 #include <sndfile.h>
 

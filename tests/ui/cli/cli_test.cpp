@@ -1,4 +1,5 @@
-// End-to-end tests of the `nibrig` command, run in-process on real recordings.
+// End-to-end tests of the `nibrig` command on real recordings, each run as the built `nibrig` in a
+// child process (cli_harness.hpp).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -25,7 +26,7 @@ TEST(Cli, MeasureFrictionWritesMuAndFigures) {
   EXPECT_EQ(j["kind"], "friction");
   EXPECT_EQ(j["tool"], "p2h");
   // The paper reports μ between 0.13 and 0.33 for its pairs; a wide margin since the paper's
-  // numbers come from a different contact window (see the issue note for the comparison).
+  // numbers come from a different contact window.
   EXPECT_GT(j["mu"].get<double>(), 0.05);
   EXPECT_LT(j["mu"].get<double>(), 0.6);
   EXPECT_LE(j["mu_ci95"][0].get<double>(), j["mu"].get<double>());

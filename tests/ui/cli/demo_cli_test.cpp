@@ -42,7 +42,7 @@ nlohmann::json bundled_catalog() {
 }
 
 // A report is built beside the folder named and swapped in whole, so an earlier report is replaced
-// entirely or not at all (the trial: a demo killed halfway over an earlier one left a mix),
+// entirely or not at all (a demo killed halfway over an earlier one must not leave a mix),
 // and a folder that holds something else is refused untouched.
 TEST(Demo, AnEarlierReportIsReplacedWholeAndAnyOtherFolderIsRefused) {
   const auto dir = nibrig::test::scratch_dir("cli_demo_replace");

@@ -1,4 +1,4 @@
-// End-to-end tests of `nibrig experiment run|report`, in the forms the issue gives: a simulated
+// End-to-end tests of `nibrig experiment run|report`, in the forms a user types: a simulated
 // participant through a whole two-stage study on the actuator and on the simulated rig (recovering
 // its space as `space synth` does for the same size), a run killed with SIGKILL and resumed, a
 // person's keys at the terminal on a real JACK server, and the input refused before anyone starts.

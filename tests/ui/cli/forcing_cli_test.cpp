@@ -1,4 +1,5 @@
-// End-to-end tests of `nibrig forcing fit|loo`, in-process, on the bundled catalog.
+// End-to-end tests of `nibrig forcing fit|loo` on the bundled catalog, each run as the built
+// `nibrig` in a child process (cli_harness.hpp).
 #include <gtest/gtest.h>
 
 #include <fstream>

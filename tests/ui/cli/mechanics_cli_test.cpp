@@ -1,4 +1,5 @@
-// End-to-end tests of `nibrig mechanics`, in-process, on bundled designs and inline bars.
+// End-to-end tests of `nibrig mechanics` on bundled designs and inline bars, each run as the built
+// `nibrig` in a child process (cli_harness.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

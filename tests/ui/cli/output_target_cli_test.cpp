@@ -1,6 +1,6 @@
 // What `-o` names is written as what it is (model/io/atomic_file.hpp): a link is written through,
 // a device or a pipe as a stream, and an output that is also the command's input is refused
-// before anything runs. The trial turned a device node into a 142 KB regular file.
+// before anything runs: a device node must never become a regular file.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 

@@ -1,6 +1,6 @@
-// End-to-end tests of `nibrig predict`, in-process, on the bundled catalog: a forcing model is
-// fitted once (coarse designs, as in forcing_cli_test), then a mix, a designer's stylus file and
-// bad designs are predicted with it.
+// End-to-end tests of `nibrig predict` on the bundled catalog, each run as the built `nibrig` in a
+// child process (cli_harness.hpp): a forcing model is fitted once (coarse designs, as in
+// forcing_cli_test), then a mix, a designer's stylus file and bad designs are predicted with it.
 #include <gtest/gtest.h>
 #include <sndfile.h>
 

@@ -1,5 +1,5 @@
-// `nibrig rig`: the exact commands of issue 16, a capture killed with SIGKILL and one stopped with
-// Ctrl-C, and the clear lines bad requests get.
+// `nibrig rig`: the commands as README gives them, a capture killed with SIGKILL and one stopped
+// with Ctrl-C, and the clear lines bad requests get.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -33,7 +33,7 @@ bool wait_for_recorded(const std::filesystem::path& partial, double seconds) {
   return false;
 }
 
-// The command as the issue writes it, then measured as any session.
+// A capture as a user types it, then measured as any session.
 TEST(RigCli, SimulatedCaptureOfTheIssueIsASessionThatMeasureReads) {
   const auto dir = scratch_dir("rig_cli_capture");
   const auto session = dir / "vero2_office";
@@ -152,7 +152,7 @@ TEST(RigCli, BadRequestsGetOneClearLine) {
   EXPECT_FALSE(std::filesystem::exists(dir / "s.partial"));
 }
 
-// The comparison as the issue writes it: a report with the distance per speed, its figure, and the
+// A comparison as a user types it: a report with the distance per speed, its figure, and the
 // session it was measured on.
 TEST(RigCli, CompareOfTheIssueWritesTheDistancePerSpeed) {
   const auto dir = scratch_dir("rig_cli_compare") / "report";

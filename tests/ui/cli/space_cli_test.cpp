@@ -1,4 +1,5 @@
-// End-to-end tests of `nibrig space fit|predict`, in-process.
+// End-to-end tests of `nibrig space fit|predict`, each run as the built `nibrig` in a child process
+// (cli_harness.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

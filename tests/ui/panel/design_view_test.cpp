@@ -1,9 +1,9 @@
 // The design view in a real window on Xvfb, with a coarse design grid (3 × 3 designs on a 4 mm
 // mesh with 32 modes, solved once for the design tests: design_cache.hpp): once the grid is ready,
 // dragging the mix slider moves the predicted design through the space (its marker is drawn where
-// it is placed), every move reaches a placement and a loaded sound well within the 50 ms the issue
-// allows, a search draws its path, the design is saved and opened again, and the interpolation's
-// error against the FEM is measured.
+// it is placed), every move reaches a placement and a loaded sound well within the 50 ms budget,
+// a search draws its path, the design is saved and opened again, and the interpolation's error
+// against the FEM is measured.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   const Eigen::VectorXd to = view.placement()->mean;
   // VeroClear and DM85 tips lie apart in the space (μ and vibration differ): the design moved.
   EXPECT_GT((to - from).norm(), 0.05) << "from " << from.transpose() << " to " << to.transpose();
-  EXPECT_LT(view.last_update_ms(), 50.0);  // slider → placement and voice, the issue's budget
+  EXPECT_LT(view.last_update_ms(), 50.0);  // slider → placement and voice: the budget
   RecordProperty("slider_to_placement_and_voice_ms", std::to_string(view.last_update_ms()));
 
   // The picture: the design's white diamond where the space view maps its placement.

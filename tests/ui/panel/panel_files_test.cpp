@@ -119,7 +119,7 @@ struct DialogWindow {
 
 TEST(FileDialog, InAWindowAClickSelectsADoubleClickEntersAFolderOnceOrTakesAFile) {
   // sub/ is the first row here and inner/ the first row in sub: a double-click that entered on its
-  // first click would enter inner/ with its second, the bug of issue 29.
+  // first click would enter inner/ with its second.
   const auto dir = fs::canonical(nibrig::test::scratch_dir("file_dialog_clicks"));
   fs::create_directories(dir / "sub" / "inner");
   touch(dir / "top.json");
