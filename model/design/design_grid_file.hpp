@@ -51,8 +51,8 @@ inline constexpr const char* kCoarseGridStep = "coarse grid";
 inline constexpr const char* kFineGridStep = "fine grid";
 
 // The cached grid, else computed (compute_design_response_grid with progress, stop and threads)
-// and written to the cache. nullopt when stopped (nothing of the grid stopped is written then). A
-// cache that cannot be written is a warning in the log, not an error: the grid computed is
+// and written to the cache. A stop throws numeric::Cancelled (nothing of the grid stopped is
+// written then). A cache that cannot be written is a warning in the log, not an error: the grid computed is
 // returned all the same.
 //
 // With on_coarse, and the grid not cached, a usable grid comes first: the coarse_axes grid, taken

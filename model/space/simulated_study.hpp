@@ -81,7 +81,7 @@ SimulatedStudy run_simulated_study(const io::Catalog& catalog,
 // The demo's Fig. 8 for the study: 5-fold cross-validated error of 1-3 dimensions at λ = 0 and the
 // study's λ (4 starts per fold), the axes tied to the paper's descriptors of each dimensionality.
 // A separate call: the space does not depend on it and it takes as long as the study. Reports the
-// step "cross-validation folds" and honours the cancel flag of `options`.
+// step "cross-validation folds" and honours the stop token of `options`.
 std::vector<SweepPoint> sweep_simulated_study(const SimulatedStudy& study,
                                               const io::Catalog& catalog,
                                               const std::filesystem::path& catalog_file,

@@ -1,7 +1,7 @@
 // A space fitted from judgments, as its file holds it: the fit, its statistics, the descriptor map
 // when the judged stimuli have descriptors and are enough to learn it, and on request bootstrap
 // regions. One call for every face that fits a space, with progress
-// named by step and a cancel flag that both the fit and the bootstrap honour.
+// named by step and a stop token that both the fit and the bootstrap honour.
 #pragma once
 
 #include <filesystem>
