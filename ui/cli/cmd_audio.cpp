@@ -4,13 +4,12 @@
 // inverse filter, which audition then applies.
 #include <spdlog/spdlog.h>
 
-#include <chrono>
 #include <cstdio>
-#include <thread>
 
 #include "model/design/tool_sound.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/actuator_store.hpp"
+#include "playback/alternation.hpp"
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
 #include "playback/live_audition.hpp"
@@ -80,27 +79,14 @@ void audition(const AuditionOptions& o) {
               names[0].c_str(), modes.c_str(), info.api.c_str(), info.device.c_str(),
               device.output_channel, info.sample_rate, info.period_frames,
               stroke.description.c_str());
-  const auto start = std::chrono::steady_clock::now();
-  double next_switch = o.switch_every;
-  bool reported_loss = false;
-  for (;;) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    audition.pump();
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (t >= seconds) break;
-    if (tools.size() > 1 && t >= next_switch) {
-      audition.select((audition.selected() + 1) % tools.size());
-      next_switch += o.switch_every;
-      std::printf("%6.2f s: now %s\n", t, names[audition.selected()].c_str());
-    }
-    const auto status = audition.output_status();
-    if (status == playback::OutputStatus::lost && !reported_loss) {
-      std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, audition.last_problem().c_str());
-      reported_loss = true;
-    } else if (status == playback::OutputStatus::running) {
-      reported_loss = false;
-    }
-  }
+  playback::AlternationEvents events;
+  events.switched = [&names](double t, std::size_t slot) {
+    std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
+  };
+  events.device_lost = [](double t, const std::string& problem) {
+    std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, problem.c_str());
+  };
+  playback::play_in_turn(audition, {seconds, o.switch_every}, events);
   const auto e = audition.engine_stats();
   const auto d = *audition.output_stats();
   std::printf("played %.1f s: %llu callbacks; engine overruns %llu; callback median <= %.1f us, 99th "
