@@ -64,11 +64,11 @@ void LiveAudition::deliver(Pending pending) {
   pump();
 }
 
-void LiveAudition::load(std::size_t slot, const SessionVoice& voice, std::uint64_t seed) {
+void LiveAudition::load(std::size_t slot, const model::modal::VoiceSource& voice, std::uint64_t seed) {
   if (slot >= names_.size())
     throw std::invalid_argument("slot " + std::to_string(slot) + " out of range (" +
                                 std::to_string(names_.size()) + " slots)");
-  auto built = rt::build_voice(voice.name, voice.modal, voice.spectrum, engine_->internal_rate(), seed);
+  auto built = rt::build_voice(voice, engine_->internal_rate(), seed);
   const std::string name = built->name();
   auto held = std::make_shared<std::unique_ptr<rt::Voice>>(std::move(built));
   deliver({false, [this, slot, held] { return engine_->load(slot, std::move(*held)); }});

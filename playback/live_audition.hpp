@@ -1,8 +1,8 @@
-// A player that keeps running while a person works: one engine with a voice per slot (a tool, or
-// the two or three of an A/B or triplet comparison), a stroke or a live contact, on a device by
-// name or on none at all (a screenshot, a machine without audio). What a person clicks, drags and
-// draws is played here; a test reaches all of it without a window. No call waits for the audio
-// thread: what the engine's queue cannot take yet is held and handed over by a later call or pump().
+// The live player: one engine with a voice per slot (a tool, or the two or three of an A/B or
+// triplet comparison), a stroke or a live contact, on a device by name or on none at all (a
+// screenshot, a machine without audio), its tools and slot changed while it plays. No call waits
+// for the audio thread: what the engine's queue cannot take yet is held and handed over by a later
+// call or pump(). An engine rendered to a file instead is a PreparedEngine (prepared_engine.hpp).
 #pragma once
 
 #include <cstdint>
@@ -13,8 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "model/modal/voice_source.hpp"
+#include "playback/actuator_file.hpp"
 #include "playback/audio_output.hpp"
-#include "playback/playback_session.hpp"
 #include "rt/engine.hpp"
 #include "rt/stroke_source.hpp"
 
@@ -43,7 +44,7 @@ class LiveAudition {
   // The voice of `voice` (built here, on the calling thread: milliseconds) into `slot`, crossfaded
   // in when `slot` is the one selected. Throws std::invalid_argument for a slot out of range and
   // what rt::build_voice throws.
-  void load(std::size_t slot, const SessionVoice& voice, std::uint64_t seed);
+  void load(std::size_t slot, const model::modal::VoiceSource& voice, std::uint64_t seed);
   void select(std::size_t slot);
   std::size_t selected() const noexcept { return selected_; }
   // The name of the voice in each slot ("" for none yet).
@@ -53,13 +54,13 @@ class LiveAudition {
   void attach(std::unique_ptr<rt::StrokeSource> stroke);
   void set_contact(double speed_m_s, double normal_force_n);
   // Through the actuator's inverse filter from now on (the output level becomes a trim), as
-  // PlaybackSession::use_actuator; returns the filter, whose flatness a face shows. `name` says
+  // PreparedEngine::use_actuator; returns the filter, whose flatness a face shows. `name` says
   // which calibration is in use (actuator()).
   InverseFilter use_actuator(const ActuatorCalibration& calibration, std::string name);
   const std::string& actuator() const noexcept { return actuator_; }
   rt::EngineStats engine_stats() const { return engine_->stats(); }
-  // Hands over what the engine's queue refused before (call it every frame); how many
-  // commands still wait.
+  // Hands over what the engine's queue refused before (call it regularly, e.g. once a frame); how
+  // many commands still wait.
   std::size_t pump();
   double sample_rate() const noexcept { return engine_->sample_rate(); }
 

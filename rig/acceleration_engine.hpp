@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rt/stroke_source.hpp"
 
 namespace nibrig::rig {
@@ -17,18 +17,16 @@ namespace nibrig::rig {
 // only its 5 Hz DC blocker acts — as an accelerometer's own AC coupling would.
 inline constexpr double kEngineHeadroom_m_s2 = 500.0;
 
-// A one-voice session playing `sound` at `rate_hz`, moved by `stroke`, with output in units of
+// A one-voice engine playing `sound` at `rate_hz`, moved by `stroke`, with output in units of
 // kEngineHeadroom_m_s2.
-inline std::unique_ptr<playback::PlaybackSession> acceleration_session(
+inline std::unique_ptr<playback::PreparedEngine> acceleration_engine(
     const model::design::ToolSound& sound, double rate_hz, std::unique_ptr<rt::StrokeSource> stroke,
     std::uint64_t seed) {
   rt::EngineSettings settings;
   settings.sample_rate_hz = rate_hz;
   settings.slots = 1;
   settings.output_level_per_m_s2 = 1.0 / kEngineHeadroom_m_s2;
-  return std::make_unique<playback::PlaybackSession>(
-      settings, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
-      std::move(stroke), seed);
+  return std::make_unique<playback::PreparedEngine>(settings, sound, std::move(stroke), seed);
 }
 
 }  // namespace nibrig::rig

@@ -1,7 +1,7 @@
 #include "rig/actuator_player.hpp"
 
 #include "playback/actuator_store.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rt/stroke_source.hpp"
 
 namespace nibrig::rig {
@@ -12,14 +12,13 @@ ActuatorPlayer::ActuatorPlayer(Rig& rig, const model::design::ToolSound& sound,
   rt::EngineSettings engine;
   engine.sample_rate_hz = settings.device.sample_rate;
   engine.slots = 1;
-  session_ = std::make_unique<playback::PlaybackSession>(
-      engine, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
-      std::make_unique<rt::ConstantStroke>(0.0, 0.0), settings.seed);
+  engine_ = std::make_unique<playback::PreparedEngine>(
+      engine, sound, std::make_unique<rt::ConstantStroke>(0.0, 0.0), settings.seed);
   if (!settings.actuator.empty()) {
     calibration_ = playback::read_actuator_file(playback::find_actuator(settings.actuator));
-    filter_ = session_->use_actuator(*calibration_);
+    filter_ = engine_->use_actuator(*calibration_);
   }
-  follower_ = std::make_unique<ContactFollower>(session_->engine());
+  follower_ = std::make_unique<ContactFollower>(engine_->engine());
   listener_ = [this](const SensorFrame& f) { follower_->follow(f); };
   rig_.set_frame_listener(&listener_);
 }

@@ -17,7 +17,7 @@
 #include "rig/rig.hpp"
 
 namespace nibrig::playback {
-class PlaybackSession;
+class PreparedEngine;
 }
 
 namespace nibrig::rig {
@@ -63,7 +63,7 @@ class ActuatorPlayer {
   std::string sound_name_;
   std::optional<playback::ActuatorCalibration> calibration_;
   std::optional<playback::InverseFilter> filter_;
-  std::unique_ptr<playback::PlaybackSession> session_;
+  std::unique_ptr<playback::PreparedEngine> engine_;
   std::unique_ptr<ContactFollower> follower_;
   std::unique_ptr<playback::AudioOutput> output_;
   FrameListener listener_;

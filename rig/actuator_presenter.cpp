@@ -21,7 +21,7 @@ void ActuatorPresenter::prepare(const model::study::PlannedTrial& planned) {
   for (std::size_t slot = 0; slot < 3; ++slot) {
     const model::design::ToolSound& s = sounds_.at(stimuli[slot]);
     // A seed per trial and slot: the forcing noise is not the same sample for sample in every trial.
-    audition_.load(slot, {s.name, s.modal, s.spectrum}, seed_ + 3 * stimuli[slot] + slot);
+    audition_.load(slot, s, seed_ + 3 * stimuli[slot] + slot);
   }
 }
 

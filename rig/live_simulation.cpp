@@ -15,8 +15,8 @@ LiveSimulation::LiveSimulation(const model::design::ToolSound& sound, double acc
     throw std::invalid_argument("live simulation: rates must be positive");
   samples_per_frame_ = acceleration_rate_hz / frame_rate_hz;
   // The engine starts with the live contact at rest and follows every set_contact.
-  session_ = acceleration_session(sound, acceleration_rate_hz,
-                                  std::make_unique<rt::ConstantStroke>(0.0, 0.0), seed);
+  session_ = acceleration_engine(sound, acceleration_rate_hz,
+                                 std::make_unique<rt::ConstantStroke>(0.0, 0.0), seed);
   pending_.reserve(4096);
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rig/rig.hpp"
 
 namespace nibrig::rig {
@@ -30,7 +30,7 @@ class LiveSimulation {
   std::uint64_t samples() const { return samples_; }
 
  private:
-  std::unique_ptr<playback::PlaybackSession> session_;
+  std::unique_ptr<playback::PreparedEngine> session_;
   double samples_per_frame_;
   std::vector<SensorFrame> pending_;  // frames not yet rendered, the first being frame first_
   std::uint64_t first_ = 0;           // index of pending_[0] among all frames received

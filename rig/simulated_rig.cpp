@@ -88,9 +88,9 @@ struct SimulatedRig::Simulation {
   Simulation(const SimulatedRigSettings& s, const model::design::ToolSound& sound,
              const SpeedProfile& profile)
       : track(profile, s.frame_rate_hz, s.motor_time_constant_s),
-        session(acceleration_session(sound, s.acceleration_rate_hz,
-                                     std::make_unique<MotorStroke>(track, s.normal_load_N),
-                                     SimulatedRig::tool_seed(s.seed))),
+        session(acceleration_engine(sound, s.acceleration_rate_hz,
+                                    std::make_unique<MotorStroke>(track, s.normal_load_N),
+                                    SimulatedRig::tool_seed(s.seed))),
         sensor_noise(s.seed ^ 0x5eed5eedULL) {}
 
   double noise() noexcept {
@@ -105,7 +105,7 @@ struct SimulatedRig::Simulation {
   }
 
   MotorTrack track;
-  std::unique_ptr<playback::PlaybackSession> session;
+  std::unique_ptr<playback::PreparedEngine> session;
   rt::GaussianNoise sensor_noise;
   double spare = 0.0;
   bool spare_ready = false;

@@ -9,6 +9,7 @@
 
 #include "model/io/velocity_spectrum.hpp"
 #include "model/modal/modal_model.hpp"
+#include "model/modal/voice_source.hpp"
 #include "rt/voice.hpp"
 
 namespace nibrig::rt {
@@ -23,5 +24,11 @@ std::unique_ptr<Voice> build_voice(std::string name, const model::modal::ModalMo
                                    const model::io::VelocitySpectrum& acceleration,
                                    double internal_rate_hz, std::uint64_t seed,
                                    double regularisation = 1e-3);
+
+// The voice of `source`, named as it is.
+inline std::unique_ptr<Voice> build_voice(const model::modal::VoiceSource& source,
+                                          double internal_rate_hz, std::uint64_t seed) {
+  return build_voice(source.name, source.modal, source.spectrum, internal_rate_hz, seed);
+}
 
 }  // namespace nibrig::rt

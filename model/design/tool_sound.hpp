@@ -1,8 +1,8 @@
 // "Tool X on surface Y" made into what a real-time voice plays: the modes of a stylus and the
 // acceleration spectrum it is driven with. A catalog tool is its measured spectrum through the
 // modes of a stylus design (by default the bundled printed stylus with a 2 mm tip); a design point
-// ("DM85:0.5,vero:0.5,tip=2mm") is predicted (Sec. 5.3) with its own modes. Every face that plays
-// a tool asks here.
+// ("DM85:0.5,vero:0.5,tip=2mm") is predicted (Sec. 5.3) with its own modes. Whatever plays a tool
+// asks here.
 #pragma once
 
 #include <filesystem>
@@ -15,15 +15,12 @@
 #include "model/io/catalog_file.hpp"
 #include "model/io/velocity_spectrum.hpp"
 #include "model/modal/modal_model.hpp"
+#include "model/modal/voice_source.hpp"
 
 namespace nibrig::model::design {
 
-struct ToolSound {
-  std::string name;   // "cryon on office", "predicted DM85:0.5,vero:0.5,tip=2mm on office"
-  std::string modes;  // the design whose modes shape it
-  modal::ModalModel modal;
-  io::VelocitySpectrum spectrum;
-};
+// A tool's sound is what a voice is made of, as it is: the engine and players take it unchanged.
+using ToolSound = modal::VoiceSource;
 
 // What a voice plays for a predicted design: its modes and predicted spectrum, named "predicted
 // <point> on <surface>". The one naming for a full prediction and for one from the design grid.
@@ -42,7 +39,7 @@ const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
 struct ToolSoundOptions {
   std::filesystem::path catalog;        // empty: the bundled one
   std::filesystem::path stylus_design;  // modes of catalog tools; empty: the bundled 2 mm stylus
-  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog first
+  std::filesystem::path forcing_model;  // for design points; empty: fit the catalog (~8 s) first
   forcing::DesignProgress progress;     // of that fit's simulated designs
 };
 

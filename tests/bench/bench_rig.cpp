@@ -10,7 +10,7 @@
 
 #include "model/design/tool_sound.hpp"
 #include "playback/audio_output.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rig/capture.hpp"
 #include "rig/contact_follower.hpp"
 #include "rig/simulated_rig.hpp"
@@ -59,10 +59,8 @@ void BM_RigFrameToContact(benchmark::State& state) {
   nibrig::testing::JackServer server({48000, 64});
   rt::EngineSettings engine_settings;
   engine_settings.slots = 1;
-  playback::PlaybackSession session(
-      engine_settings,
-      std::vector<playback::SessionVoice>{{cryon_office().name, cryon_office().modal, cryon_office().spectrum}},
-      std::make_unique<rt::ConstantStroke>(0.0, 0.0), 1);
+  playback::PreparedEngine session(engine_settings, cryon_office(),
+                                   std::make_unique<rt::ConstantStroke>(0.0, 0.0), 1);
   rig::ContactFollower follower(session.engine());
   playback::OutputSettings output;
   output.api = "jack";

@@ -61,9 +61,9 @@ TEST(LiveAudition, PlaysTheLoadedToolSwitchesSlotsAndFallsSilentWhenTheContactSt
   const auto before = record("audition:outport 0", 9600);
   EXPECT_EQ(rms_of_last(before, before.size(), before.size()), 0.0);
 
-  audition.load(0, {"cryon", small_stylus(), cryon_on_note()}, 7);
+  audition.load(0, {"cryon", "small stylus", small_stylus(), cryon_on_note()}, 7);
   const auto louder = four_times(cryon_on_note());
-  audition.load(1, {"cryon x4", small_stylus(), louder}, 8);
+  audition.load(1, {"cryon x4", "small stylus", small_stylus(), louder}, 8);
   audition.set_contact(0.1, 2.2);
   EXPECT_EQ(audition.names()[0], "cryon");
   const auto cryon = record("audition:outport 0", 24000);
@@ -100,7 +100,7 @@ TEST(LiveAudition, ACommandNeverWaitsForTheAudioThread) {
     std::this_thread::sleep_for(10ms);
   ASSERT_EQ(audition.output_status(), OutputStatus::lost);
   for (int i = 0; i < 1000; ++i) audition.set_contact(0.05, 2.2);
-  audition.load(1, {"cryon", small_stylus(), cryon_on_note()}, 1);
+  audition.load(1, {"cryon", "small stylus", small_stylus(), cryon_on_note()}, 1);
   for (int i = 0; i < 500; ++i) audition.select(i % 2);
   const std::size_t held = audition.pump();
   EXPECT_GT(held, 0u);  // the queue (256 commands) filled; the rest waits here
@@ -118,12 +118,13 @@ TEST(LiveAudition, WithoutADeviceEveryCommandStillGoesThrough) {
   EXPECT_FALSE(audition.output_stats().has_value());
   // More commands than the engine's queue holds: each is drained by the caller.
   for (int i = 0; i < 600; ++i) audition.set_contact(0.05 + 1e-4 * i, 2.2);
-  audition.load(2, {"cryon", small_stylus(), cryon_on_note()}, 1);
+  audition.load(2, {"cryon", "small stylus", small_stylus(), cryon_on_note()}, 1);
   audition.select(2);
   EXPECT_EQ(audition.selected(), 2u);
   EXPECT_EQ(audition.names()[2], "cryon");
   EXPECT_THROW(audition.select(3), std::invalid_argument);
-  EXPECT_THROW(audition.load(3, {"cryon", small_stylus(), cryon_on_note()}, 1), std::invalid_argument);
+  EXPECT_THROW(audition.load(3, {"cryon", "small stylus", small_stylus(), cryon_on_note()}, 1),
+               std::invalid_argument);
 }
 
 }  // namespace

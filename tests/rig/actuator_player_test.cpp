@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rig/simulated_rig.hpp"
 #include "rig/speed_profile.hpp"
 #include "rt/stroke_source.hpp"
@@ -45,9 +45,8 @@ double offline_player_rms(const model::design::ToolSound& sound, double speed_m_
   rt::EngineSettings settings;
   settings.sample_rate_hz = kPlayerRateHz;
   settings.slots = 1;
-  playback::PlaybackSession session(
-      settings, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
-      std::make_unique<rt::ConstantStroke>(speed_m_s, load_N), 11);
+  playback::PreparedEngine session(settings, sound,
+                                   std::make_unique<rt::ConstantStroke>(speed_m_s, load_N), 11);
   const auto total = static_cast<std::size_t>(1.5 * kPlayerRateHz);
   std::vector<float> out(total);
   for (std::size_t at = 0; at < total; at += 64) session.engine().render(out.data() + at, std::min<std::size_t>(64, total - at));

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "rt/stroke_source.hpp"
 #include "tests/rig/bundled_sound.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -15,13 +15,12 @@
 namespace nibrig::rig {
 namespace {
 
-std::unique_ptr<playback::PlaybackSession> cryon_session() {
+std::unique_ptr<playback::PreparedEngine> cryon_session() {
   const model::design::ToolSound& sound = testing::bundled_sound("cryon", "office");
   rt::EngineSettings settings;
   settings.slots = 1;
-  return std::make_unique<playback::PlaybackSession>(
-      settings, std::vector<playback::SessionVoice>{{sound.name, sound.modal, sound.spectrum}},
-      std::make_unique<rt::ConstantStroke>(0.0, 0.0), 1);
+  return std::make_unique<playback::PreparedEngine>(
+      settings, sound, std::make_unique<rt::ConstantStroke>(0.0, 0.0), 1);
 }
 
 double rms(const std::vector<float>& x) {

@@ -4,16 +4,15 @@
 // inverse filter, which audition then applies.
 #include <spdlog/spdlog.h>
 
-#include <chrono>
 #include <cstdio>
-#include <thread>
 
 #include "model/design/tool_sound.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/actuator_store.hpp"
+#include "playback/alternation.hpp"
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/live_audition.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
@@ -53,54 +52,43 @@ void audition(const AuditionOptions& o) {
   tools.insert(tools.end(), o.also.begin(), o.also.end());
   for (const auto& tool : tools) sounds.check(tool, o.stroke.surface);  // before any work
   rt::Stroke stroke = make_stroke(o.stroke);
-  std::vector<model::design::ToolSound> made;
-  for (const auto& tool : tools) made.push_back(sounds.sound(tool, o.stroke.surface));
-  std::vector<playback::SessionVoice> voices;
-  for (const auto& s : made) voices.push_back({s.name, s.modal, s.spectrum});
   rt::EngineSettings settings;
   settings.sample_rate_hz = device.sample_rate;
-  playback::PlaybackSession session(settings, voices, std::move(stroke.source), o.stroke.seed);
-  rt::Engine& engine = session.engine();
-  const std::vector<std::string>& names = session.names();
+  settings.slots = tools.size();
+  playback::LiveAudition audition(settings);
+  std::string modes;
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    const model::design::ToolSound sound = sounds.sound(tools[i], o.stroke.surface);
+    if (i == 0) modes = sound.modes;
+    audition.load(i, sound, o.stroke.seed + i);
+  }
+  audition.attach(std::move(stroke.source));
+  const std::vector<std::string>& names = audition.names();
   if (!o.actuator.empty()) {
     const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
-    const auto filter = session.use_actuator(calibration);
+    const auto filter = audition.use_actuator(calibration, calibration.name);
     std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
                 calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db,
                 calibration.design.band_low_hz, calibration.design.band_high_hz);
   }
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
 
-  playback::AudioOutput output(engine, device);
-  const auto info = output.stream_info();
+  audition.open(device);
+  const auto info = *audition.stream_info();
   std::printf("playing %s through %s on %s '%s' channel %u at %u Hz, %u-frame periods; %s\n",
-              names[0].c_str(), made[0].modes.c_str(), info.api.c_str(), info.device.c_str(),
+              names[0].c_str(), modes.c_str(), info.api.c_str(), info.device.c_str(),
               device.output_channel, info.sample_rate, info.period_frames,
               stroke.description.c_str());
-  const auto start = std::chrono::steady_clock::now();
-  std::size_t slot = 0;
-  double next_switch = o.switch_every;
-  for (;;) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    engine.collect();
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (t >= seconds) break;
-    if (tools.size() > 1 && t >= next_switch) {
-      slot = (slot + 1) % tools.size();
-      engine.select(slot);
-      next_switch += o.switch_every;
-      std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
-    }
-    static bool reported_loss = false;
-    if (output.status() == playback::OutputStatus::lost && !reported_loss) {
-      std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, output.last_problem().c_str());
-      reported_loss = true;
-    } else if (output.status() == playback::OutputStatus::running) {
-      reported_loss = false;
-    }
-  }
-  const auto e = engine.stats();
-  const auto d = output.stats();
+  playback::AlternationEvents events;
+  events.switched = [&names](double t, std::size_t slot) {
+    std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
+  };
+  events.device_lost = [](double t, const std::string& problem) {
+    std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, problem.c_str());
+  };
+  playback::play_in_turn(audition, {seconds, o.switch_every}, events);
+  const auto e = audition.engine_stats();
+  const auto d = *audition.output_stats();
   std::printf("played %.1f s: %llu callbacks; engine overruns %llu; callback median <= %.1f us, 99th "
               "percentile <= %.1f us, max %.1f us; peak %.3f of full scale, %llu samples limited; "
               "device underflows %llu, losses %llu, reconnects %llu\n",

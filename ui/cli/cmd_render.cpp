@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/number_checks.hpp"
@@ -31,8 +31,7 @@ void render(const RenderOptions& o) {
   const model::design::ToolSound sound = sounds.sound(o.stroke.tool, o.stroke.surface);
   rt::EngineSettings settings;
   settings.sample_rate_hz = o.rate;
-  playback::PlaybackSession session(settings, {{sound.name, sound.modal, sound.spectrum}},
-                                    std::move(stroke.source), o.stroke.seed);
+  playback::PreparedEngine session(settings, sound, std::move(stroke.source), o.stroke.seed);
   const std::string& name = session.names().front();
   const std::string& modes = sound.modes;
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;

@@ -11,8 +11,9 @@
 #include "playback/audio_devices.hpp"
 #include "playback/audio_output.hpp"
 #include "model/design/tool_sound.hpp"
+#include "playback/live_audition.hpp"
 #include "playback/offline_render.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 
@@ -48,27 +49,31 @@ std::optional<playback::OutputSettings> available_output() {
   return std::nullopt;
 }
 
-// A tool's sound moved by the rig's sweep, in a session of its own.
-playback::PlaybackSession sweep_session(const model::design::ToolSound& sound, double sample_rate_hz) {
+// A tool's sound moved by the rig's sweep, in an engine of its own.
+playback::PreparedEngine sweep_engine(const model::design::ToolSound& sound, double sample_rate_hz) {
   rt::EngineSettings settings;
   settings.sample_rate_hz = sample_rate_hz;
-  return playback::PlaybackSession(settings, {{sound.name, sound.modal, sound.spectrum}},
-                                   std::make_unique<rt::SweepStroke>(), 1);
+  return playback::PreparedEngine(settings, sound, std::make_unique<rt::SweepStroke>(), 1);
 }
 
-// Each tool for one sweep through the device, one after another.
+// Each tool for one sweep through the device, one after another, each from the sweep's start.
 DemoSection play_all(model::design::ToolSounds& sounds,
                      const std::vector<std::pair<std::string, std::string>>& pairs,
                      const playback::OutputSettings& device) {
-  std::uint64_t overruns = 0, underflows = 0;
+  rt::EngineSettings settings;
+  settings.sample_rate_hz = device.sample_rate;
+  settings.slots = 1;
+  playback::LiveAudition audition(settings);
+  audition.open(device);
   for (const auto& [tool, surface] : pairs) {
-    auto session = sweep_session(sounds.sound(tool, surface), device.sample_rate);
-    playback::AudioOutput output(session.engine(), device);
+    audition.load(0, sounds.sound(tool, surface), 1);
+    audition.attach(std::make_unique<rt::SweepStroke>());
     std::printf("playing %s on %s\n", tool.c_str(), surface.c_str());
     std::this_thread::sleep_for(std::chrono::duration<double>(rt::SweepStroke::kPaperPeriod));
-    overruns += session.engine().stats().overruns;
-    underflows += output.stats().output_underflows;
+    audition.pump();
   }
+  const std::uint64_t overruns = audition.engine_stats().overruns;
+  const std::uint64_t underflows = audition.output_stats()->output_underflows;
   return {"  played every tool through " + device.api + " '" + device.device + "': " +
               std::to_string(overruns) + " engine overruns, " + std::to_string(underflows) +
               " device underflows\n",
@@ -98,7 +103,7 @@ DemoSection run_render_demo(const model::io::Catalog& catalog,
   for (const auto& [tool, surface] : pairs) {
     const model::design::ToolSound sound = sounds.sound(tool, surface);
     modes = sound.modes;  // the same stylus for every catalog tool
-    auto session = sweep_session(sound, rt::EngineSettings{}.sample_rate_hz);
+    auto session = sweep_engine(sound, rt::EngineSettings{}.sample_rate_hz);
     const double seconds = rt::SweepStroke::kPaperPeriod;
     const std::size_t block_frames = playback::OfflineRenderSettings{}.block_frames;
     const auto start = std::chrono::steady_clock::now();

@@ -154,7 +154,7 @@ void PanelAudio::poll() {
   }
   try {
     for (std::size_t i = 0; i < made->size(); ++i)
-      audition_.load(i, {(*made)[i].name, (*made)[i].modal, (*made)[i].spectrum}, seed_ + i);
+      audition_.load(i, (*made)[i], seed_ + i);
     audition_.select(0);
     if (requested_at_rest_) contact(0.0, 0.0);
     else attach_stroke();  // the stroke as it is now, though it changed while the sounds were made
@@ -166,7 +166,7 @@ void PanelAudio::poll() {
 
 void PanelAudio::play_now(const model::design::ToolSound& sound) {
   try {
-    audition_.load(0, {sound.name, sound.modal, sound.spectrum}, seed_);
+    audition_.load(0, sound, seed_);
     if (audition_.selected() != 0) audition_.select(0);
     if (driver_ == Driver::none) attach_stroke();
     playing_ = {ToolChoice{sound.name, ""}};

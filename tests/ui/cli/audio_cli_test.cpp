@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 #include <sndfile.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <vector>
 
+#include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -86,6 +90,36 @@ TEST(AudioCli, DevicesAndAuditionUseTheJackServerByName) {
   ASSERT_EQ(code, 0) << text;
   EXPECT_NE(text.find("now stab on office"), std::string::npos) << text;
   EXPECT_NE(text.find("engine overruns"), std::string::npos) << text;
+}
+
+// What audition plays reaches the device: an independent JACK client records its port while it
+// switches between two tools.
+TEST(AudioCli, AuditionIsHeardOnTheJackPortWhileItSwitchesTools) {
+  nibrig::testing::JackServer server;
+  playback::testing::JackRecorder ear("audition-ear", 1, 48000);  // 1 s
+  ::testing::internal::CaptureStdout();
+  const pid_t pid = test::start_cli({"audition", "--tool", "cryon", "--surface", "office", "--also",
+                                     "stab", "--switch-every", "0.5", "--speed", "120", "--api",
+                                     "jack", "--device", "sys", "--seconds", "3"});
+  // The port appears once the stream is open, after the stylus's modes are solved or read.
+  bool connected = false;
+  for (int i = 0; i < 3000 && !connected; ++i) {
+    connected = ear.connect("nibrig-audition:outport 0", 0);
+    if (!connected) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ear.start();
+  const int code = test::wait_cli(pid);
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  ASSERT_TRUE(connected) << "the audition's JACK port never appeared";
+  EXPECT_NE(text.find("now stab on office"), std::string::npos) << text;
+  EXPECT_NE(text.find("now cryon on office"), std::string::npos) << text;  // and back
+  float peak = 0.0f;
+  for (std::size_t i = 0; i < ear.recorded(); ++i) peak = std::max(peak, std::abs(ear.samples(0)[i]));
+  EXPECT_GT(ear.recorded(), 24000u);  // at least half a second of the run was heard
+  // Both tools at 120 mm/s peak near 0.1 of full scale at the default gain (as `render` writes
+  // them) and silence is 0: 1e-3 tells the tools from nothing with a wide margin either side.
+  EXPECT_GT(peak, 1e-3f);
 }
 
 TEST(AudioCli, AuditionSaysWhichDevicesExistWhenTheNameIsWrong) {

@@ -17,7 +17,7 @@
 #include <thread>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/ui/panel/design_cache.hpp"
@@ -35,8 +35,8 @@ using namespace std::chrono_literals;
 // rendered offline from the voice's start for `seconds`.
 std::vector<float> offline(const model::design::PredictedTool& tool, double seconds) {
   const auto sound = model::design::predicted_sound(tool);
-  playback::PlaybackSession session(rt::EngineSettings{}, {{sound.name, sound.modal, sound.spectrum}},
-                                    std::make_unique<rt::ConstantStroke>(0.1, 2.2), 1);
+  playback::PreparedEngine session(rt::EngineSettings{}, sound,
+                                   std::make_unique<rt::ConstantStroke>(0.1, 2.2), 1);
   std::vector<float> out(static_cast<std::size_t>(seconds * 48000.0) / 64 * 64);
   for (std::size_t at = 0; at < out.size(); at += 64) session.engine().render(out.data() + at, 64);
   return out;

@@ -15,7 +15,7 @@
 #include "model/design/prediction_file.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "playback/playback_session.hpp"
+#include "playback/prepared_engine.hpp"
 #include "tests/ui/panel/design_cache.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
@@ -112,8 +112,8 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   view.set_design(1.0, 2.5);
   {
     const auto sound = model::design::predicted_sound(*view.predicted());
-    playback::PlaybackSession session(rt::EngineSettings{}, {{sound.name, sound.modal, sound.spectrum}},
-                                      std::make_unique<rt::ConstantStroke>(0.1, 2.2), 1);
+    playback::PreparedEngine session(rt::EngineSettings{}, sound,
+                                     std::make_unique<rt::ConstantStroke>(0.1, 2.2), 1);
     std::vector<float> out(24000);
     for (std::size_t at = 0; at < out.size(); at += 64) session.engine().render(out.data() + at, 64);
     double onset = 0.0, later = 0.0;

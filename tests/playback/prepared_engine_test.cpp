@@ -1,7 +1,7 @@
-// The playback session every face assembles its engine with: it must play exactly what an engine
-// assembled by hand from the same voices, seeds and stroke plays, so that moving render, audition
-// and the demo onto it changed none of their outputs.
-#include "playback/playback_session.hpp"
+// The prepared engine render and the demo write their WAVs with: it must play exactly what an
+// engine assembled by hand from the same voices, seeds and stroke plays, so that assembling it here
+// changes none of their outputs.
+#include "playback/prepared_engine.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,15 +36,15 @@ std::vector<float> render(rt::Engine& engine, std::size_t frames) {
   return out;
 }
 
-TEST(PlaybackSession, PlaysWhatAnEngineAssembledByHandPlays) {
+TEST(PreparedEngine, PlaysWhatAnEngineAssembledByHandPlays) {
   const auto stylus = small_stylus();
-  PlaybackSession session(rt::EngineSettings{},
-                          {{"stab", stylus, note_spectrum("stab")},
-                           {"cryon", stylus, note_spectrum("cryon")},
-                           {"vero2", stylus, note_spectrum("vero2")}},
-                          std::make_unique<rt::SweepStroke>(), 5);
-  EXPECT_EQ(session.names(), (std::vector<std::string>{"stab", "cryon", "vero2"}));
-  EXPECT_EQ(session.engine().slots(), 3u);
+  const std::vector<model::modal::VoiceSource> voices{
+      {"stab", "small stylus", stylus, note_spectrum("stab")},
+      {"cryon", "small stylus", stylus, note_spectrum("cryon")},
+      {"vero2", "small stylus", stylus, note_spectrum("vero2")}};
+  PreparedEngine prepared(rt::EngineSettings{}, voices, std::make_unique<rt::SweepStroke>(), 5);
+  EXPECT_EQ(prepared.names(), (std::vector<std::string>{"stab", "cryon", "vero2"}));
+  EXPECT_EQ(prepared.engine().slots(), 3u);
 
   // By hand: voice i seeded 5 + i in slot i, slot 0 selected, the sweep attached.
   rt::EngineSettings settings;
@@ -57,23 +57,22 @@ TEST(PlaybackSession, PlaysWhatAnEngineAssembledByHandPlays) {
   engine.attach(std::make_unique<rt::SweepStroke>());
 
   // Half a second, then a switch to the triplet's third tool: the same samples, to the bit.
-  EXPECT_EQ(render(session.engine(), 24000), render(engine, 24000));
-  ASSERT_TRUE(session.engine().select(2));
+  EXPECT_EQ(render(prepared.engine(), 24000), render(engine, 24000));
+  ASSERT_TRUE(prepared.engine().select(2));
   ASSERT_TRUE(engine.select(2));
-  const auto switched = render(session.engine(), 24000);
+  const auto switched = render(prepared.engine(), 24000);
   EXPECT_EQ(switched, render(engine, 24000));
   float loudest = 0;
   for (float x : switched) loudest = std::max(loudest, std::abs(x));
   EXPECT_GT(loudest, 1e-4f);  // a tool is heard, so the equality above compares sound
 }
 
-TEST(PlaybackSession, RefusesASessionWithNothingToPlayOrNoStroke) {
-  const auto stylus = small_stylus();
-  EXPECT_THROW(PlaybackSession(rt::EngineSettings{}, {}, std::make_unique<rt::SweepStroke>(), 1),
+TEST(PreparedEngine, RefusesAnEngineWithNothingToPlayOrNoStroke) {
+  const model::modal::VoiceSource stab{"stab", "small stylus", small_stylus(), note_spectrum("stab")};
+  EXPECT_THROW(PreparedEngine(rt::EngineSettings{}, std::span<const model::modal::VoiceSource>{},
+                              std::make_unique<rt::SweepStroke>(), 1),
                std::invalid_argument);
-  EXPECT_THROW(PlaybackSession(rt::EngineSettings{}, {{"stab", stylus, note_spectrum("stab")}},
-                               nullptr, 1),
-               std::invalid_argument);
+  EXPECT_THROW(PreparedEngine(rt::EngineSettings{}, stab, nullptr, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,16 +1,17 @@
-// One presentation through the real-time engine: a tool, or the two or three of an A/B or triplet
-// presentation, each a voice in its own slot, moved by one stroke, optionally through an actuator's
-// inverse filter — then rendered to a WAV file or played on a device.
+// An engine made ready before it runs: a voice per slot (a tool, or the two or three of an A/B or
+// triplet presentation), one stroke, optionally an actuator's inverse filter. Its owner renders it:
+// into a WAV file, or block by block as the rig's simulation does. What plays while a person
+// works, and changes tools as they choose, is the LiveAudition (live_audition.hpp).
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "model/io/velocity_spectrum.hpp"
-#include "model/modal/modal_model.hpp"
+#include "model/modal/voice_source.hpp"
 #include "playback/actuator_file.hpp"
 #include "playback/offline_render.hpp"
 #include "rt/engine.hpp"
@@ -18,21 +19,17 @@
 
 namespace nibrig::playback {
 
-// What a voice is made of: a stylus's modes driven by an acceleration spectrum (rt/voice_builder.hpp).
-// The session builds the voice, so the references need to live only through its constructor.
-struct SessionVoice {
-  std::string name;
-  const model::modal::ModalModel& modal;
-  const model::io::VelocitySpectrum& spectrum;
-};
-
-class PlaybackSession {
+class PreparedEngine {
  public:
-  // An engine with `settings` (with a slot per voice), voice i with forcing
-  // noise seeded seed + i in slot i, slot 0 selected and `stroke` attached. Throws
+  // An engine with `settings` (with a slot per voice), the voice of voices[i] (rt::build_voice)
+  // with forcing noise seeded seed + i in slot i, slot 0 selected and `stroke` attached. The voices
+  // are built here, so `voices` need live only through the constructor. Throws
   // std::invalid_argument for no voice, no stroke, or what the engine and voice builder refuse.
-  PlaybackSession(rt::EngineSettings settings, const std::vector<SessionVoice>& voices,
-                  std::unique_ptr<rt::StrokeSource> stroke, std::uint64_t seed);
+  PreparedEngine(rt::EngineSettings settings, std::span<const model::modal::VoiceSource> voices,
+                 std::unique_ptr<rt::StrokeSource> stroke, std::uint64_t seed);
+  PreparedEngine(rt::EngineSettings settings, const model::modal::VoiceSource& voice,
+                 std::unique_ptr<rt::StrokeSource> stroke, std::uint64_t seed)
+      : PreparedEngine(settings, std::span(&voice, 1), std::move(stroke), seed) {}
 
   rt::Engine& engine() noexcept { return *engine_; }
   const std::vector<std::string>& names() const noexcept { return names_; }
