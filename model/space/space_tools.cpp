@@ -52,6 +52,43 @@ const char* kind_name(ToolKind kind) {
   return "unknown";
 }
 
+std::vector<PlacedPairing> place_catalog(const SpaceFile& space, const io::Catalog& catalog,
+                                         const std::filesystem::path& catalog_file,
+                                         const DescriptorErrors& descriptor_errors) {
+  if (!space.descriptor_map)
+    throw std::invalid_argument(
+        "the space has no descriptor map: placing tools needs a space fitted with descriptors");
+  const DescriptorMap& map = *space.descriptor_map;
+  const std::size_t count = map.descriptor_names.size();
+  if (count < 1 || count > 6 || paper_descriptor_names(count) != map.descriptor_names) {
+    std::string names;
+    for (const auto& n : map.descriptor_names) names += (names.empty() ? "" : ", ") + n;
+    throw std::invalid_argument(
+        "the space's descriptor map uses [" + names +
+        "]; placing catalog tools needs the paper's descriptors of one dimensionality "
+        "(model/space/catalog_descriptors.hpp)");
+  }
+  const DescriptorTable all = descriptors_of_catalog(catalog, catalog_file, count);
+  std::vector<PlacedPairing> out;
+  out.reserve(all.rows.size());
+  for (std::size_t i = 0; i < all.rows.size(); ++i) {
+    PlacedPairing p;
+    p.pairing = all.rows[i];
+    p.judged =
+        std::find(space.stimuli.begin(), space.stimuli.end(), p.pairing) != space.stimuli.end();
+    const std::string tool_id = p.pairing.substr(0, p.pairing.find('/'));
+    for (const auto& tool : catalog.tools)
+      if (tool.id == tool_id) p.kind = tool_kind(tool.kind);
+    p.descriptors = all.values.row(static_cast<Eigen::Index>(i)).transpose();
+    const auto error = descriptor_errors.find(p.pairing);
+    p.placement = error == descriptor_errors.end()
+                      ? place_from_descriptors(map, p.descriptors)
+                      : place_from_descriptors(map, p.descriptors, error->second);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 SpaceTools space_tools(const SpaceFile& space, const io::Catalog& catalog,
                        const std::filesystem::path& catalog_file) {
   SpaceTools out;
@@ -83,31 +120,18 @@ SpaceTools space_tools(const SpaceFile& space, const io::Catalog& catalog,
   }
   if (!space.descriptor_map) return out;
 
-  const DescriptorMap& map = *space.descriptor_map;
-  const std::size_t count = map.descriptor_names.size();
-  if (count < 1 || count > 6 || paper_descriptor_names(count) != map.descriptor_names) {
-    std::string names;
-    for (const auto& n : map.descriptor_names) names += (names.empty() ? "" : ", ") + n;
-    throw std::invalid_argument(
-        "the space's descriptor map uses [" + names +
-        "]; placing catalog tools needs the paper's descriptors of one dimensionality "
-        "(model/space/catalog_descriptors.hpp)");
-  }
-  const DescriptorTable all = descriptors_of_catalog(catalog, catalog_file, count);
-  for (std::size_t i = 0; i < all.rows.size(); ++i) {
-    if (std::find(space.stimuli.begin(), space.stimuli.end(), all.rows[i]) != space.stimuli.end())
-      continue;
+  for (PlacedPairing& placed : place_catalog(space, catalog, catalog_file)) {
+    if (placed.judged) continue;
     SpaceTool t;
-    t.pairing = all.rows[i];
+    t.pairing = std::move(placed.pairing);
     const auto slash = t.pairing.find('/');
     t.tool_id = t.pairing.substr(0, slash);
     t.surface_id = t.pairing.substr(slash + 1);
     describe(t, catalog);
-    t.descriptors = all.values.row(static_cast<Eigen::Index>(i)).transpose();
-    const Placement placement = place_from_descriptors(map, t.descriptors);
-    t.position = placement.mean;
+    t.descriptors = std::move(placed.descriptors);
+    t.position = placed.placement.mean;
     t.region_source = RegionSource::descriptor_map;
-    t.region = gaussian_region(placement.mean, placement.covariance, out.levels);
+    t.region = gaussian_region(placed.placement.mean, placed.placement.covariance, out.levels);
     t.ellipses = ellipses_of(*t.region);
     out.tools.push_back(std::move(t));
   }

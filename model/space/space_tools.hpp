@@ -1,10 +1,12 @@
-// Every tool a face draws in a perceptual space, in one list: the judged stimuli at their fitted
-// coordinates with their bootstrap regions, and every other catalog pairing placed from its
-// descriptors with the descriptor map's prediction uncertainty (Fig. 9 and 15 in one).
+// Tools in a perceptual space. place_catalog places every catalog pairing from its descriptors
+// through the space's descriptor map (Fig. 15), a predicted tool with its descriptor error;
+// space_tools lists every tool to draw: the judged stimuli at their fitted coordinates with their
+// bootstrap regions, then the other pairings as placed, with their prediction regions.
 #pragma once
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,12 +59,32 @@ struct SpaceTools {
                                  // catalog order
 };
 
+// A catalog pairing placed from its descriptors.
+struct PlacedPairing {
+  std::string pairing;  // "tool/surface"
+  ToolKind kind = ToolKind::unknown;  // the catalog's kind of its tool; predicted for a prediction
+  bool judged = false;  // also a stimulus of the space: placed from its descriptors all the same
+  Eigen::VectorXd descriptors;  // the map's descriptors, in its order
+  Placement placement;
+};
+
+// The error covariance of a predicted tool's descriptors (the map's descriptors, in its order),
+// by pairing name: carried into its placement.
+using DescriptorErrors = std::map<std::string, Eigen::MatrixXd>;
+
+// Every pairing of the catalog that has every descriptor the space's map needs (both friction and
+// vibration), in catalog order, judged or not. Throws std::invalid_argument when the space has no
+// descriptor map, or when its descriptors are not the paper's descriptors of some dimensionality
+// (catalog_descriptors.hpp), naming them; io::FormatError naming `catalog_file` as
+// descriptors_of_catalog does; std::invalid_argument from place_from_descriptors for an error
+// covariance of the wrong size.
+std::vector<PlacedPairing> place_catalog(const SpaceFile& space, const io::Catalog& catalog,
+                                         const std::filesystem::path& catalog_file,
+                                         const DescriptorErrors& descriptor_errors = {});
+
 // A stimulus not named "tool/surface" by catalog ids gets what its name gives (kind unknown, no μ).
-// Pairings are placed only when the space has a descriptor map and the catalog pairing has every
-// descriptor the map needs (both friction and vibration); without a map the list holds the
-// stimuli alone. Throws std::invalid_argument when the map's descriptors are not the paper's
-// descriptors of some dimensionality (catalog_descriptors.hpp), naming them; io::FormatError
-// naming `catalog_file` as descriptors_of_catalog does.
+// The other pairings are place_catalog's, placed only when the space has a descriptor map; without
+// a map the list holds the stimuli alone. Throws as place_catalog.
 SpaceTools space_tools(const SpaceFile& space, const io::Catalog& catalog,
                        const std::filesystem::path& catalog_file);
 

@@ -6,10 +6,10 @@
 
 #include <chrono>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "model/design/design_search.hpp"
+#include "model/design/design_search_file.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
 #include "model/io/bundled_assets.hpp"
@@ -136,9 +136,10 @@ void run_design(const DesignOptions& o) {
                              result.evaluated[last_of_scan].distance);
   }
 
-  nlohmann::json j = search_json(result, o.target, o.surface, how, seconds, o.runners_up);
-  j["space"] = o.space_file.string();
-  write_json_file(o.output, j);
+  ensure_folder(o.output.parent_path());
+  design::write_design_search(o.output, result,
+                              {o.target, o.surface, how, seconds,
+                               static_cast<std::size_t>(o.runners_up), o.space_file.string()});
   say_wrote(o.output);
   if (!o.plot.empty()) {
     ensure_folder(o.plot.parent_path());

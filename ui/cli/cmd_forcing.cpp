@@ -7,11 +7,11 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "model/forcing/curve_jackknife.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/leave_one_out.hpp"
+#include "model/forcing/leave_one_out_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
@@ -111,30 +111,6 @@ void run_fit(const FitCommandOptions& o) {
   }
 }
 
-std::string loo_csv(const forcing::LeaveOneOut& loo, const std::vector<double>& speeds_m_s) {
-  std::ostringstream csv;
-  csv << "tool,surface,predictable,rms_db,baseline_rms_db";
-  for (double v : speeds_m_s) csv << fmt::format(",rms_db_{:g}_mm_s", v * 1e3);
-  csv << ",weighted_mean_error_percent,reason\n";
-  for (const auto& r : loo.results) {
-    csv << r.tool << ',' << r.surface << ',' << (r.predictable ? "yes" : "no") << ',';
-    if (r.predictable)
-      csv << fmt::format("{},{}", r.rms_db, r.baseline_rms_db);
-    else
-      csv << ',';
-    for (std::size_t s = 0; s < speeds_m_s.size(); ++s)
-      csv << ',' << (r.predictable ? fmt::format("{}", r.rms_db_by_speed[s]) : "");
-    csv << ','
-        << (r.descriptor_error
-                ? fmt::format("{}", forcing::percent_off(r.descriptor_error->log10_weighted_mean))
-                : "");
-    std::string reason = r.reason;
-    std::replace(reason.begin(), reason.end(), '"', '\'');
-    csv << ",\"" << reason << "\"\n";
-  }
-  return csv.str();
-}
-
 void run_loo(const LooCommandOptions& o) {
   ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
@@ -182,7 +158,8 @@ void run_loo(const LooCommandOptions& o) {
     std::cout << worst << "\n";
   }
   if (!o.output.empty()) {
-    write_text_file(o.output, loo_csv(loo, speeds));
+    ensure_folder(o.output.parent_path());
+    forcing::write_leave_one_out_csv(o.output, loo, speeds);
     say_wrote(o.output);
   }
 }

@@ -15,8 +15,8 @@
 #include <functional>
 #include <iostream>
 #include <span>
-#include <sstream>
 
+#include "model/design/hold_out_file.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/design/material_hold_out.hpp"
 #include "model/forcing/curve_jackknife.hpp"
@@ -54,37 +54,9 @@ struct HoldoutView {
   const forcing::ForcingModel* model = nullptr;
   std::span<const design::InterpolatedPrediction> predictions;
   std::array<std::string, 2> neighbour;                   // "1 mm", "4 mm" or "vero", "DM85"
-  std::array<std::string, 2> csv_baseline, csv_measured;  // column names
+  design::HoldOutColumns columns;                         // of the CSV
   std::function<design::DesignPoint(const design::InterpolatedPrediction&)> point_of;
 };
-
-// One row per held-out tool and speed, and one per tool over all speeds (speed "all").
-std::string holdout_csv(const HoldoutView& v) {
-  const auto& speeds_m_s = v.model->speeds_m_s;
-  std::ostringstream csv;
-  csv << "tool,surface,speed_mm_s,interpolated_rms_db," << v.csv_baseline[0] << ','
-      << v.csv_baseline[1] << ',' << v.csv_measured[0] << ',' << v.csv_measured[1]
-      << ",not_predictable\n";
-  for (const auto& r : v.predictions) {
-    const auto& c = r.comparison;
-    const auto measured = [](double rms) {
-      return rms < 0 ? std::string() : fmt::format("{}", rms);
-    };
-    if (!r.not_predictable.empty()) {
-      csv << fmt::format("{},{},all,,,,,,\"{}\"\n", r.tool, r.surface, r.not_predictable);
-      continue;
-    }
-    for (std::size_t s = 0; s < speeds_m_s.size(); ++s)
-      csv << fmt::format("{},{},{:g},{},{},{},,,\n", r.tool, r.surface, speeds_m_s[s] * 1e3,
-                         c.interpolated.rms_db_by_speed[s], c.baselines[0].error.rms_db_by_speed[s],
-                         c.baselines[1].error.rms_db_by_speed[s]);
-    csv << fmt::format("{},{},all,{},{},{},{},{},\n", r.tool, r.surface, c.interpolated.rms_db,
-                       c.baselines[0].error.rms_db, c.baselines[1].error.rms_db,
-                       measured(r.measured_neighbour_rms_db[0]),
-                       measured(r.measured_neighbour_rms_db[1]));
-  }
-  return csv.str();
-}
 
 // The per-knot tables of what the data resolve: values over their standard errors, in dB.
 constexpr int kLabelWidth = 34;
@@ -187,7 +159,8 @@ void report_holdout(const HoldoutView& v, std::span<const forcing::ForcingExempl
   std::cout << "\n";
 
   if (!o.output.empty()) {
-    write_text_file(o.output, holdout_csv(v));
+    ensure_folder(o.output.parent_path());
+    design::write_hold_out_csv(o.output, v.predictions, v.model->speeds_m_s, v.columns);
     say_wrote(o.output);
   }
   if (!o.plots.empty()) {
@@ -222,9 +195,7 @@ void run_tip_holdout(const HoldoutOptions& o) {
   v.model = &held.model;
   v.predictions = held.predictions;
   v.neighbour = {lower, upper};
-  v.csv_baseline = {fmt::format("tip_{:g}mm_curve_rms_db", held.lower_tip_m * 1e3),
-                    fmt::format("tip_{:g}mm_curve_rms_db", held.upper_tip_m * 1e3)};
-  v.csv_measured = {"measured_lower_tip_rms_db", "measured_upper_tip_rms_db"};
+  v.columns = design::tip_hold_out_columns(held.lower_tip_m, held.upper_tip_m);
   v.point_of = [](const design::InterpolatedPrediction& r) {
     return design::DesignPoint{{{r.material, 1.0}}, r.tip_diameter_m};
   };
@@ -262,8 +233,7 @@ void run_material_holdout(const HoldoutOptions& o) {
   v.model = &held.model;
   v.predictions = held.predictions;
   v.neighbour = {first, second};
-  v.csv_baseline = {first + "_curve_rms_db", second + "_curve_rms_db"};
-  v.csv_measured = {"measured_" + first + "_rms_db", "measured_" + second + "_rms_db"};
+  v.columns = design::material_hold_out_columns(first, second);
   v.point_of = [&](const design::InterpolatedPrediction& r) {
     return held.point_at(r.tip_diameter_m);
   };

@@ -9,6 +9,7 @@
 #include "model/io/acceleration_trace.hpp"
 #include "model/mechanics/beam_theory.hpp"
 #include "model/mechanics/design_model.hpp"
+#include "model/mechanics/mode_report.hpp"
 #include "model/mechanics/ring_down.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/modal/frequency_response.hpp"
@@ -128,7 +129,7 @@ mech::DesignModel build(const mech::Design& design, const mech::MaterialTable& m
 
 std::string modes_table(const mech::DesignModel& m) {
   std::ostringstream out;
-  const auto& material = body_material(m);
+  const auto& material = mech::body_material(m);
   out << m.design.name << ": " << material.name << " (E " << material.youngs_modulus / 1e9
       << " GPa, density " << material.density << " kg/m^3), damping alpha " << m.damping.mass
       << " 1/s, lambda " << m.damping.stiffness << " s from " << m.damping_source << "\n";
@@ -170,7 +171,8 @@ void run_modes(const ModesOptions& o) {
   const mech::DesignModel model = build(design_from(o.design, materials), materials);
   std::cout << modes_table(model);
   if (!o.output.empty()) {
-    write_json_file(o.output, modes_json(model));
+    ensure_folder(o.output.parent_path());
+    mech::write_mode_report(o.output, model);
     say_wrote(o.output);
   }
   if (!o.no_plots) {
@@ -188,7 +190,7 @@ void run_ring_down(const RingDownCommandOptions& o) {
   const model::io::AccelerationTrace trace = model::io::read_acceleration_trace(o.trace);
   const mech::DesignModel model = build(design_from(o.design, materials), materials);
   mech::RingDownOptions fit_options;
-  fit_options.reference_modulus = body_material(model).youngs_modulus;
+  fit_options.reference_modulus = mech::body_material(model).youngs_modulus;
   fit_options.preload = o.preload;
   fit_options.mass_damping = model.damping.mass;
   fit_options.fit_gain = !o.calibrated;

@@ -1,6 +1,5 @@
 // `nibrig space ...`: registers the perceptual-space subcommands; the work is in
-// space_fit_command.cpp, space_validate_command.cpp, space_query_commands.cpp and
-// space_design_commands.cpp.
+// cmd_space_fit.cpp, cmd_space_validate.cpp, cmd_space_query.cpp and cmd_space_design.cpp.
 #include "model/space/judgment_model.hpp"
 #include "model/space/objective.hpp"
 #include "ui/cli/commands.hpp"

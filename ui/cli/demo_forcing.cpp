@@ -6,6 +6,7 @@
 
 #include "model/design/default_forcing.hpp"
 #include "model/design/design_search.hpp"
+#include "model/design/design_search_file.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/design/material_hold_out.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
@@ -112,8 +113,8 @@ DemoSection run_forcing_demo(const std::filesystem::path& catalog_file,
           line);
       const double seconds = seconds_since(search_start);
       const std::string how = fmt::format("along the line {} -> {}", kFrom, kTo);
-      write_json_file(dir / "design_search.json",
-                      search_json(result, kTarget, kSearchSurface, how, seconds, 4));
+      design::write_design_search(dir / "design_search.json", result,
+                                  {kTarget, kSearchSurface, how, seconds, 4, ""});
       const auto last = static_cast<std::size_t>(line.scan_points - 1);
       write_search_plot(space, kTarget, nullptr, result, {0, last}, kSearchSurface,
                         dir / "design_path.png");

@@ -14,6 +14,7 @@
 #include "model/io/acceleration_trace.hpp"
 #include "model/mechanics/beam_theory.hpp"
 #include "model/mechanics/design_model.hpp"
+#include "model/mechanics/mode_report.hpp"
 #include "model/mechanics/ring_down.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/numeric/parallel_for.hpp"
@@ -100,7 +101,7 @@ void paper_bar_ring_down(const mech::MaterialTable& materials, const std::filesy
                          std::ostringstream& summary, nlohmann::json& numbers) {
   mech::Design design = mech::read_design(model::io::asset("designs/paper_bar.json"), materials);
   const auto bar = mech::build_design_model(design, materials);
-  write_json_file(dir / "paper_bar.json", modes_json(bar));
+  mech::write_mode_report(dir / "paper_bar.json", bar);
 
   // The paper publishes its fitted values but not its trace: a trace simulated at those values,
   // with 3 % sensor noise, stands in for it and is fitted from the datasheet modulus.
@@ -151,7 +152,7 @@ void stylus_responses(const mech::MaterialTable& materials, const std::filesyste
   for (std::size_t n = 0; n < designs.size(); ++n) {
     const auto& design = designs[n];
     const auto& model = *solved[n];
-    write_json_file(dir / (file_stem(design.name) + ".json"), modes_json(model));
+    mech::write_mode_report(dir / (file_stem(design.name) + ".json"), model);
     summary << "  " << design.name << ": first mode " << std::setprecision(4)
             << model.modal.omega[0] / (2 * M_PI) << " Hz (damping ratio " << model.modal.zeta[0]
             << "), " << model.free_dofs << " DOFs, "

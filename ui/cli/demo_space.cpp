@@ -2,15 +2,14 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
 
 #include "model/io/triplets.hpp"
-#include "model/space/catalog_descriptors.hpp"
 #include "model/space/simulated_study.hpp"
 #include "model/space/space_file.hpp"
+#include "model/space/space_tools.hpp"
 #include "model/space/synthetic_study.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
@@ -48,14 +47,9 @@ DemoSection run_space_demo(const model::io::Catalog& catalog,
   write_sweep_plot(points, "SIMULATED observer: cross-validated error", dir / "dimension_sweep.png");
 
   // Every other catalog pairing placed from its descriptors (Fig. 15).
-  const space::DescriptorTable all = space::descriptors_of_catalog(catalog, catalog_file, 2);
   std::vector<PlacedTool> placed;
-  for (std::size_t i = 0; i < all.rows.size(); ++i)
-    if (std::find(file.stimuli.begin(), file.stimuli.end(), all.rows[i]) == file.stimuli.end())
-      placed.push_back({all.rows[i], space::place_from_descriptors(
-                                         *file.descriptor_map,
-                                         all.values.row(static_cast<Eigen::Index>(i)).transpose()),
-                        "", true});
+  for (const auto& p : space::place_catalog(file, catalog, catalog_file))
+    if (!p.judged) placed.push_back({p.pairing, p.placement, "", true});
   write_space_plot(file, {}, "Perceptual space of a SIMULATED observer (2-D, 68/95 % bootstrap)",
                    dir / "space.png");
   write_space_plot(file, placed, "SIMULATED observer: every catalog tool placed from descriptors",

@@ -27,34 +27,6 @@ std::string describe_descriptors(const design::PredictedTool& tool) {
   return mu + ", " + vibration;
 }
 
-nlohmann::json candidate_json(const design::Candidate& c) {
-  return {{"design", design::to_string(c.point)},
-          {"distance", c.distance},
-          {"distance_sd", c.distance_sd},
-          {"mu", c.mu},
-          {"weighted_mean", c.weighted_mean},
-          {"coordinates", std::vector<double>(c.placement.mean.data(),
-                                              c.placement.mean.data() + c.placement.mean.size())}};
-}
-
-nlohmann::json search_json(const design::SearchResult& result, const std::string& target,
-                           const std::string& surface, const std::string& how, double seconds,
-                           int runners_up) {
-  nlohmann::json j;
-  j["kind"] = "design_search";
-  j["target"] = target;
-  j["surface"] = surface;
-  j["search"] = how;
-  j["seconds"] = seconds;
-  j["optimum"] = candidate_json(result.best());
-  j["runners_up"] = nlohmann::json::array();
-  for (std::size_t k : result.runners_up(static_cast<std::size_t>(runners_up)))
-    j["runners_up"].push_back(candidate_json(result.evaluated[k]));
-  j["path"] = nlohmann::json::array();
-  for (const auto& c : result.evaluated) j["path"].push_back(candidate_json(c));
-  return j;
-}
-
 void write_search_plot(const model::space::SpaceFile& space, const std::string& target,
                        const model::space::Placement* placed_target,
                        const design::SearchResult& result, const std::vector<std::size_t>& ends,

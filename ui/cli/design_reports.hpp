@@ -1,10 +1,9 @@
 // What `nibrig predict`, `nibrig design` and the demo show of predicted designs: their descriptors
-// in a line, the search JSON, and the search's path in the space (Fig. 17). The prediction file
-// itself is model/design/prediction_file.hpp.
+// in a line and the search's path in the space (Fig. 17). The prediction file and the search's
+// JSON are model/design/prediction_file.hpp and design_search_file.hpp.
 #pragma once
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "model/design/design_search.hpp"
@@ -19,15 +18,6 @@ namespace nibrig::ui::cli {
 // their cross-validated error (± one standard deviation; none printed when the tool has none, a
 // measured μ having no interpolation error).
 std::string describe_descriptors(const model::design::PredictedTool& tool);
-
-// One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates.
-nlohmann::json candidate_json(const model::design::Candidate& candidate);
-
-// kind "design_search": target, surface, search (how), seconds, optimum, runners_up (distinct
-// designs, SearchResult::runners_up), path (every candidate in the order evaluated).
-nlohmann::json search_json(const model::design::SearchResult& result, const std::string& target,
-                           const std::string& surface, const std::string& how, double seconds,
-                           int runners_up);
 
 // The space's judged stimuli, the target when it was placed rather than judged, every candidate
 // (the path; `ends` of them labelled, e.g. the two designs of a line search) and the optimum with

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <set>
 
+#include "model/space/catalog_descriptors.hpp"
 #include "model/space/simulated_study.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -107,6 +108,78 @@ TEST(SpaceTools, WithoutBootstrapOrMapTheStimuliHaveNoRegionAndNothingIsPlaced) 
     EXPECT_EQ(t.region_source, RegionSource::none);
     EXPECT_FALSE(t.region.has_value());
     EXPECT_TRUE(t.ellipses.empty());
+  }
+}
+
+TEST(PlaceCatalog, EveryPairingInCatalogOrderJudgedOrNotAsTheMapPlacesIt) {
+  const std::vector<PlacedPairing> placed = place_catalog(space(), catalog(), catalog_file());
+  const DescriptorTable all = descriptors_of_catalog(catalog(), catalog_file(), 2);
+  ASSERT_EQ(placed.size(), all.rows.size());
+  std::size_t judged = 0;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    EXPECT_EQ(placed[i].pairing, all.rows[i]);
+    const bool stimulus = std::find(space().stimuli.begin(), space().stimuli.end(),
+                                    placed[i].pairing) != space().stimuli.end();
+    EXPECT_EQ(placed[i].judged, stimulus) << placed[i].pairing;
+    judged += placed[i].judged ? 1 : 0;
+    // The same arithmetic on the same numbers: exact.
+    const Placement p = place_from_descriptors(*space().descriptor_map,
+                                               all.values.row(static_cast<Eigen::Index>(i)).transpose());
+    EXPECT_EQ(placed[i].placement.mean, p.mean) << placed[i].pairing;
+    EXPECT_EQ(placed[i].placement.covariance, p.covariance) << placed[i].pairing;
+  }
+  EXPECT_EQ(judged, space().stimuli.size());
+  // space_tools draws the same placements for the tools that were not judged.
+  const SpaceTools tools = space_tools(space(), catalog(), catalog_file());
+  for (const auto& p : placed)
+    if (!p.judged) EXPECT_EQ(find(tools, p.pairing).position, p.placement.mean) << p.pairing;
+}
+
+TEST(PlaceCatalog, APredictedToolIsKnownByItsKindAndCarriesItsDescriptorError) {
+  // A predicted tool as `nibrig predict` adds it to a catalog: kind "predicted", with the
+  // descriptors of a measured pairing so that the two compare.
+  io::Catalog with_prediction = catalog();
+  const io::Pairing measured = *std::find_if(
+      with_prediction.pairings.begin(), with_prediction.pairings.end(),
+      [](const io::Pairing& p) { return p.friction && p.vibration; });
+  io::ToolEntry entry;
+  entry.id = "pred:vero:1,tip=2mm";
+  entry.name = "predicted vero:1,tip=2mm";
+  entry.kind = "predicted";
+  with_prediction.tools.push_back(entry);
+  io::Pairing pairing = measured;
+  pairing.tool = entry.id;
+  with_prediction.pairings.push_back(pairing);
+  const std::string name = pairing_name(pairing);
+  Eigen::MatrixXd error = Eigen::MatrixXd::Zero(2, 2);
+  error(0, 0) = 0.01 * 0.01;
+  error(1, 1) = 0.1 * 0.1;
+  const std::vector<PlacedPairing> placed =
+      place_catalog(space(), with_prediction, catalog_file(), {{name, error}});
+  const auto at = [&](const std::string& n) {
+    return *std::find_if(placed.begin(), placed.end(),
+                         [&](const PlacedPairing& p) { return p.pairing == n; });
+  };
+  const PlacedPairing predicted = at(name), twin = at(pairing_name(measured));
+  EXPECT_EQ(predicted.kind, ToolKind::predicted);
+  EXPECT_NE(twin.kind, ToolKind::predicted);
+  EXPECT_FALSE(predicted.judged);
+  // Same descriptors, same mean; the descriptor error only widens the region, by the exact
+  // J·Σ·Jᵀ the map adds (descriptor_map_test checks that term itself).
+  EXPECT_EQ(predicted.placement.mean, twin.placement.mean);
+  const Placement expected = place_from_descriptors(*space().descriptor_map, twin.descriptors, error);
+  EXPECT_EQ(predicted.placement.covariance, expected.covariance);
+  EXPECT_GT(predicted.placement.covariance.trace(), twin.placement.covariance.trace());
+}
+
+TEST(PlaceCatalog, RefusesASpaceWithoutADescriptorMap) {
+  SpaceFile bare = space();
+  bare.descriptor_map.reset();
+  try {
+    place_catalog(bare, catalog(), catalog_file());
+    FAIL() << "placed tools without a map";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("no descriptor map"), std::string::npos) << e.what();
   }
 }
 

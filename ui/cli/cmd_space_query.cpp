@@ -3,60 +3,36 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
-#include <iomanip>
 #include <iostream>
-#include <map>
-#include <random>
-#include <sstream>
 
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
-#include "model/space/catalog_descriptors.hpp"
-#include "model/space/prediction_scores.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/design/prediction_file.hpp"
-#include "ui/cli/design_reports.hpp"
+#include "model/space/catalog_descriptors.hpp"
+#include "model/space/prediction_scores.hpp"
+#include "model/space/query_csv.hpp"
+#include "model/space/space_inputs.hpp"
+#include "model/space/space_tools.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
-#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
 namespace space = model::space;
-
-namespace {
-
-// A name as one CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
-}  // namespace
 
 void run_space_predict(const SpaceQueryOptions& o) {
   const space::SpaceFile s = space::read_space_file(o.space_file);
   const model::io::TripletSet queries = model::io::read_triplet_queries(o.queries);
   space::StimulusLocator locator(s, o.space_file, o.catalog);
   const std::vector<space::QueryPrediction> p = space::predict_queries(s, queries, locator, o.queries);
-  std::ostringstream csv;
-  csv << "reference,a,b,p_first" << (o.catalog.empty() ? "" : ",p_first_sd") << '\n'
-      << std::setprecision(10);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto& t = queries.triplets[i];
-    csv << csv_field(queries.stimuli[t.reference]) << ',' << csv_field(queries.stimuli[t.a]) << ','
-        << csv_field(queries.stimuli[t.b]) << ',' << p[i].p;
-    if (!o.catalog.empty()) csv << ',' << p[i].sd;
-    csv << '\n';
-  }
+  const bool with_sd = !o.catalog.empty();
   if (o.output.empty()) {
-    std::cout << csv.str();
+    std::cout << space::prediction_csv_text(queries, p, with_sd);
   } else {
-    write_text_file(o.output, csv.str());
+    ensure_folder(o.output.parent_path());
+    space::write_prediction_csv(o.output, queries, p, with_sd);
     say_wrote(o.output);
   }
 }
@@ -115,7 +91,7 @@ void run_space_embed(const SpaceEmbedOptions& o) {
                                 " has no descriptor map: fit it with --descriptors catalog.json");
   model::io::Catalog catalog = model::io::read_catalog(o.catalog);
   // A predicted tool's descriptor error, by its stimulus name, carried into its placement.
-  std::map<std::string, Eigen::MatrixXd> descriptor_errors;
+  space::DescriptorErrors descriptor_errors;
   if (!o.predicted.empty()) {
     const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
     for (const auto& file : o.predicted) {
@@ -134,45 +110,26 @@ void run_space_embed(const SpaceEmbedOptions& o) {
       catalog.pairings.push_back(std::move(read.pairing));
     }
   }
-  const space::DescriptorTable table =
-      space::descriptors_of_catalog(catalog, o.catalog, s.descriptor_map->descriptor_names.size());
-  if (table.names != s.descriptor_map->descriptor_names)
-    throw std::invalid_argument(o.catalog.string() + " does not provide the descriptors of " +
-                                o.space_file.string());
-  std::vector<PlacedTool> placed;
-  std::ostringstream csv;
-  const auto dims = s.coordinates.rows();
-  csv << "stimulus,judged";
-  for (Eigen::Index d = 0; d < dims; ++d) csv << ",axis" << d + 1 << ",axis" << d + 1 << "_sd";
-  csv << '\n' << std::setprecision(8);
-  for (std::size_t i = 0; i < table.rows.size(); ++i) {
-    const bool judged =
-        std::find(s.stimuli.begin(), s.stimuli.end(), table.rows[i]) != s.stimuli.end();
-    const Eigen::VectorXd descriptors = table.values.row(static_cast<Eigen::Index>(i)).transpose();
-    const auto error = descriptor_errors.find(table.rows[i]);
-    const space::Placement p =
-        error == descriptor_errors.end()
-            ? space::place_from_descriptors(*s.descriptor_map, descriptors)
-            : space::place_from_descriptors(*s.descriptor_map, descriptors, error->second);
-    csv << csv_field(table.rows[i]) << ',' << (judged ? "yes" : "no");
-    for (Eigen::Index d = 0; d < dims; ++d)
-      csv << ',' << p.mean(d) << ',' << std::sqrt(p.covariance(d, d));
-    csv << '\n';
-    const bool predicted = table.rows[i].rfind("pred:", 0) == 0;
-    if (!judged) placed.push_back({table.rows[i], p, predicted ? "predicted" : "", true});
-  }
-  std::cout << fmt::format("{} catalog pairings placed ({} of them judged in {})\n",
-                           table.rows.size(), table.rows.size() - placed.size(),
-                           o.space_file.filename().string());
+  const std::vector<space::PlacedPairing> placed =
+      space::place_catalog(s, catalog, o.catalog, descriptor_errors);
+  std::vector<PlacedTool> drawn;
+  for (const auto& p : placed)
+    if (!p.judged)
+      drawn.push_back(
+          {p.pairing, p.placement, p.kind == space::ToolKind::predicted ? "predicted" : "", true});
+  std::cout << fmt::format("{} catalog pairings placed ({} of them judged in {})\n", placed.size(),
+                           placed.size() - drawn.size(), o.space_file.filename().string());
+  const auto dims = static_cast<std::size_t>(s.coordinates.rows());
   if (o.output.empty()) {
-    std::cout << csv.str();
+    std::cout << space::embed_csv_text(placed, dims);
   } else {
-    write_text_file(o.output, csv.str());
+    ensure_folder(o.output.parent_path());
+    space::write_embed_csv(o.output, placed, dims);
     say_wrote(o.output);
   }
   if (!o.plot.empty()) {
     ensure_folder(o.plot.parent_path());
-    write_space_plot(s, placed, "Tools placed from their descriptors", o.plot);
+    write_space_plot(s, drawn, "Tools placed from their descriptors", o.plot);
     say_wrote(o.plot);
   }
 }

@@ -1,0 +1,36 @@
+// The design search's report (`nibrig design -o`, FORMATS.md "Prediction"): the optimum, the
+// runners-up and every candidate in the order evaluated, each with its design, distance to the
+// target, predicted descriptors and place in the space.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "model/design/design_search.hpp"
+
+namespace nibrig::model::design {
+
+// What the search was: its target and surface, how it searched (in words), how long it took and
+// how many runners-up to report; the space file it searched in, empty when not named.
+struct DesignSearchDescription {
+  std::string target, surface, search;
+  double seconds = 0.0;
+  std::size_t runners_up = 4;
+  std::string space;
+};
+
+// One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates.
+nlohmann::json candidate_json(const Candidate& candidate);
+
+// kind "design_search": target, surface, search, seconds, space (when named), optimum, runners_up
+// (distinct designs, SearchResult::runners_up), path (every candidate in the order evaluated).
+nlohmann::json design_search_json(const SearchResult& result,
+                                  const DesignSearchDescription& description);
+
+// Written atomically; throws io::UnwritableOutput naming a field that is not finite,
+// std::runtime_error naming the file when it cannot be written.
+void write_design_search(const std::filesystem::path& file, const SearchResult& result,
+                         const DesignSearchDescription& description);
+
+}  // namespace nibrig::model::design
