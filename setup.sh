@@ -94,7 +94,8 @@ run_fuzzer() {  # $1 = fuzz binary; its seeds are copied to a folder of its own,
   name=$(basename "$bin")
   corpus=$root/tests/fuzz/corpus/${name#fuzz_}
   work=$(mktemp -d)
-  cp -r "$corpus"/. "$work"/ 2>/dev/null || true
+  [ -d "$corpus" ] || { echo "fuzz: $name has no seeds in $corpus"; return 1; }
+  cp -r "$corpus"/. "$work"/
   # Every CSV seed also as a .gz twin, made here rather than committed: the readers take gzip
   # through zlib, so the compressed path is fuzzed from every format.
   for seed in "$work"/*.csv; do [ -f "$seed" ] && gzip -c "$seed" >"$seed.gz"; done

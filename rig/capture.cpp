@@ -43,9 +43,9 @@ struct SlowStreams {
 
 }  // namespace
 
-model::io::SessionInfo session_info_for(const RigDescription& rig, const SpeedProfile& profile,
+model::io::RigSessionInfo session_info_for(const RigDescription& rig, const SpeedProfile& profile,
                                         const CaptureOptions& options) {
-  model::io::SessionInfo info;
+  model::io::RigSessionInfo info;
   info.tool = options.tool.empty() ? rig.tool : options.tool;
   info.surface = options.surface.empty() ? rig.surface : options.surface;
   if (info.tool.empty() || info.surface.empty())
@@ -76,7 +76,7 @@ model::io::SessionInfo session_info_for(const RigDescription& rig, const SpeedPr
 CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const CaptureOptions& options) {
   const RigDescription& d = rig.description();
   check_within_motor(profile, d.max_speed_m_s);  // before any folder exists
-  model::io::SessionWriter writer(options.folder, session_info_for(d, profile, options));
+  model::io::RigSessionWriter writer(options.folder, session_info_for(d, profile, options));
   model::io::CaptureRecord record = model::io::CaptureRecord{};
   record.rig = d.name;
   try {

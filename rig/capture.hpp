@@ -1,5 +1,5 @@
 // A capture: a rig runs a speed profile and everything it delivers goes into a session folder
-// (model/io/session.hpp) as it arrives, block by block, with the capture record (frames, drops,
+// (model/io/rig_session.hpp) as it arrives, block by block, with the capture record (frames, drops,
 // saturation, alignment) kept current in session.json. Killed, crashed or unplugged, the .partial
 // folder still reads up to its last block; a finished capture is renamed to its folder.
 #pragma once
@@ -10,7 +10,7 @@
 #include <functional>
 #include <string>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "rig/rig.hpp"
 
 namespace nibrig::rig {
@@ -50,7 +50,7 @@ CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const Captu
 
 // The session header a capture writes for this rig and profile (tool, surface, rates, units,
 // calibration, profile points).
-model::io::SessionInfo session_info_for(const RigDescription& rig, const SpeedProfile& profile,
+model::io::RigSessionInfo session_info_for(const RigDescription& rig, const SpeedProfile& profile,
                                         const CaptureOptions& options);
 
 }  // namespace nibrig::rig

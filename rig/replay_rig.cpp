@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "model/io/paper_vibration.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/measure/step_segmentation.hpp"
 
 namespace nibrig::rig {
@@ -20,7 +20,7 @@ struct Recording {
 };
 
 Recording from_session(const std::filesystem::path& folder) {
-  const model::io::Session session = model::io::read_session(folder);
+  const model::io::RigSession session = model::io::read_rig_session(folder);
   const auto& info = session.info;
   if (session.speed_m_s.empty() || session.acceleration.empty())
     throw std::invalid_argument(folder.string() +

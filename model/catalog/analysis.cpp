@@ -143,7 +143,7 @@ VibrationAnalysis analyze_vibration(const io::VibrationRecording& recording,
   return analysis;
 }
 
-SessionAnalysis analyze_session(const io::Session& session,
+SessionAnalysis analyze_session(const io::RigSession& session,
                                 const measure::ThresholdCurve& threshold,
                                 const AnalysisOptions& options) {
   SessionAnalysis analysis;

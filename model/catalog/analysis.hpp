@@ -12,7 +12,7 @@
 #include "model/io/catalog_file.hpp"
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_vibration.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/measure/friction.hpp"
 #include "model/measure/spectrogram.hpp"
@@ -63,7 +63,7 @@ VibrationAnalysis analyze_vibration(const io::VibrationRecording& recording,
 
 // A rig session has its own speed signal (binned continuously) and both force components.
 struct SessionAnalysis {
-  io::SessionInfo info;
+  io::RigSessionInfo info;
   std::filesystem::path source;
   bool complete = true;
   std::optional<FrictionAnalysis> friction;
@@ -71,7 +71,7 @@ struct SessionAnalysis {
   std::vector<std::string> warnings;  // what could not be measured, and why
 };
 
-SessionAnalysis analyze_session(const io::Session& session,
+SessionAnalysis analyze_session(const io::RigSession& session,
                                 const measure::ThresholdCurve& threshold,
                                 const AnalysisOptions& options);
 

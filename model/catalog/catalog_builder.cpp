@@ -12,7 +12,7 @@
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_recording.hpp"
 #include "model/io/paper_vibration.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 
 namespace nibrig::model::catalog {
 
@@ -129,7 +129,7 @@ CatalogBuild build_catalog(const FoundRecordings& recordings,
                 analyze_vibration(io::read_paper_vibration(file.path), threshold, options);
             break;
           case RecordingKind::session:
-            sessions[i] = analyze_session(io::read_session(file.path), threshold, options);
+            sessions[i] = analyze_session(io::read_rig_session(file.path), threshold, options);
             break;
         }
       } catch (...) {

@@ -7,7 +7,7 @@
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/io/text_lines.hpp"
 
 namespace nibrig::model::io {
@@ -17,7 +17,7 @@ constexpr std::size_t kFewestSamples = 16;
 constexpr double kStepTolerance = 0.01;  // relative to the median step
 
 AccelerationTrace read_session_trace(const std::filesystem::path& folder) {
-  const Session session = read_session(folder);
+  const RigSession session = read_rig_session(folder);
   AccelerationTrace trace;
   trace.sample_rate_hz = session.info.acceleration_rate_hz;
   const double scale = session.info.calibration.accelerometer_m_s2_per_unit;

@@ -6,7 +6,7 @@
 // Build and run (clang):
 //   clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address -I. tests/fuzz/fuzz_csv_readers.cpp \
 //     model/io/*.cpp -lz -lsndfile -o /tmp/fuzz_csv
-//   /tmp/fuzz_csv -max_total_time=60 /tmp/csv_corpus tests/fuzz/corpus/csv
+//   /tmp/fuzz_csv -max_total_time=60 /tmp/csv_corpus tests/fuzz/corpus/csv_readers
 // (the first folder receives new inputs, so the seeds in the repository stay as they are).
 #include <cstdint>
 #include <cstdlib>

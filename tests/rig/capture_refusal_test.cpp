@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "rig/capture.hpp"
 #include "rig/rig.hpp"
 #include "tests/support/test_paths.hpp"
@@ -68,7 +68,7 @@ TEST(CaptureRefusal, NothingRecordedLeavesNothingAndSomethingRecordedIsKept) {
     EXPECT_EQ(std::filesystem::exists(model::io::partial_folder_of(dir / "session")),
               c.partial_kept);
     if (c.partial_kept) {
-      const auto kept = model::io::read_session(model::io::partial_folder_of(dir / "session"));
+      const auto kept = model::io::read_rig_session(model::io::partial_folder_of(dir / "session"));
       EXPECT_EQ(kept.acceleration.size(), 3u * 480u);
     }
   }

@@ -6,7 +6,7 @@
 
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
 #include "tests/support/test_paths.hpp"
@@ -41,7 +41,7 @@ TEST(ComparisonRun, TellsTheSameToolFromAnotherAndKeepsTheSession) {
   const ComparisonRun other = compare_vero2_with(sounds, "stab", dir / "other");
 
   EXPECT_TRUE(same.capture.complete);
-  EXPECT_TRUE(model::io::read_session(same.capture.folder).complete);
+  EXPECT_TRUE(model::io::read_rig_session(same.capture.folder).complete);
   EXPECT_TRUE(same.table.finished);
   EXPECT_EQ(same.table.blocks_dropped, 0u);
   EXPECT_GE(same.table.summary.bins_with_rows, 8u);  // the sweep crosses most of the 12 bins

@@ -20,7 +20,7 @@ namespace {
 model::catalog::SessionAnalysis measure_session(const std::filesystem::path& folder) {
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   const model::catalog::AnalysisOptions options;
-  return model::catalog::analyze_session(model::io::read_session(folder), threshold, options);
+  return model::catalog::analyze_session(model::io::read_rig_session(folder), threshold, options);
 }
 
 // The acceptance check of the replay rig and of the whole capture-and-measure chain: the paper's
@@ -74,8 +74,8 @@ TEST(ReplayRig, SessionReplayedIsCapturedUnchanged) {
   second.folder = dir / "replayed";
   const CaptureResult result = capture_session(replay, replay.recorded_profile(), second);
   EXPECT_TRUE(result.complete);
-  const auto a = model::io::read_session(dir / "original");
-  const auto b = model::io::read_session(dir / "replayed");
+  const auto a = model::io::read_rig_session(dir / "original");
+  const auto b = model::io::read_rig_session(dir / "replayed");
   EXPECT_EQ(a.acceleration, b.acceleration);
   EXPECT_EQ(a.speed_m_s, b.speed_m_s);
   EXPECT_EQ(a.normal_force_N, b.normal_force_N);

@@ -11,7 +11,7 @@
 #include "model/design/tool_sound.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "rig/capture.hpp"
 #include "tests/rig/bundled_sound.hpp"
@@ -136,7 +136,7 @@ TEST(SimulatedRig, CaptureOfACatalogToolMeasuresAsItsCatalogSpectrum) {
   EXPECT_EQ(result.record.frames, 42000u);
   EXPECT_EQ(result.record.dropped_frames, 0u);
 
-  const model::io::Session session = model::io::read_session(result.folder);
+  const model::io::RigSession session = model::io::read_rig_session(result.folder);
   EXPECT_TRUE(session.complete);
   EXPECT_EQ(session.acceleration.size(), 42u * 48000u);
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());

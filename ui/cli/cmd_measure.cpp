@@ -7,7 +7,7 @@
 
 #include "model/catalog/catalog_builder.hpp"
 #include "model/io/paper_recording.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
@@ -95,7 +95,7 @@ void measure(const MeasureOptions& options) {
       break;
     }
     case catalog::RecordingKind::session: {
-      const auto session = model::io::read_session(options.recording);
+      const auto session = model::io::read_rig_session(options.recording);
       if (!session.complete) {
         spdlog::warn("{}: the session was cut short; analysing what was recorded",
                      options.recording.string());

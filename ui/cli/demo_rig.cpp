@@ -9,7 +9,7 @@
 #include "model/forcing/leave_one_out.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/comparison_file.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
@@ -47,7 +47,7 @@ DemoSection run_rig_demo(const std::filesystem::path& catalog_file, const std::f
   capture.folder = folder / "steps";
   const rig::CaptureResult captured = rig::capture_session(stepped, rig::paper_steps(42.0), capture);
   const model::catalog::AnalysisOptions analysis_options;
-  const auto analysis = model::catalog::analyze_session(model::io::read_session(captured.folder),
+  const auto analysis = model::catalog::analyze_session(model::io::read_rig_session(captured.folder),
                                                         threshold, analysis_options);
   const auto& expected = model::design::pairing_spectrum(sounds.catalog(), catalog_file, kTool, kSurface);
   const double step = expected.frequencies_hz[1] - expected.frequencies_hz[0];
@@ -71,7 +71,7 @@ DemoSection run_rig_demo(const std::filesystem::path& catalog_file, const std::f
   DemoSection section;
   section.numbers = {{"tool", kTool},
                      {"surface", kSurface},
-                     {"steps_session_complete", model::io::read_session(captured.folder).complete},
+                     {"steps_session_complete", model::io::read_rig_session(captured.folder).complete},
                      {"steps_rms_db_from_catalog", rms_db},
                      {"comparison_mean_distance_db", run.table.summary.mean_lsd_db},
                      {"comparison_speed_bins", run.table.summary.bins_with_rows},

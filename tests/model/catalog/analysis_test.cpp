@@ -7,7 +7,7 @@
 #include <random>
 
 #include "model/io/format_error.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::catalog {
@@ -17,8 +17,8 @@ namespace {
 // sees a 100 Hz sinusoid whose amplitude is 10 s^-1 x speed (stored in raw units at 0.5 m/s^2 per
 // unit, so the calibration must be applied), and after 2 s the tangential force is 0.25 x the 2 N
 // load.
-io::Session write_and_read_synthetic_session(const std::filesystem::path& folder) {
-  io::SessionInfo info;
+io::RigSession write_and_read_synthetic_session(const std::filesystem::path& folder) {
+  io::RigSessionInfo info;
   info.tool = "synthetic";
   info.surface = "bench";
   info.normal_load_N = 2.0;
@@ -29,7 +29,7 @@ io::Session write_and_read_synthetic_session(const std::filesystem::path& folder
   const double duration_s = 20.0;
   auto speed_at = [&](double t) { return 0.020 + (0.240 - 0.020) * t / duration_s; };
 
-  io::SessionWriter writer(folder, info);
+  io::RigSessionWriter writer(folder, info);
   std::vector<float> block;
   for (int i = 0; i < static_cast<int>(duration_s * info.acceleration_rate_hz); ++i) {
     const double t = i / info.acceleration_rate_hz;
@@ -53,7 +53,7 @@ io::Session write_and_read_synthetic_session(const std::filesystem::path& folder
   writer.append_normal_force(normal);
   writer.append_tangential_force(tangential);
   writer.finish();
-  return io::read_session(folder);
+  return io::read_rig_session(folder);
 }
 
 TEST(AnalyzeSession, RecoversFrictionAndTheSpeedDependentSpectrum) {
@@ -88,7 +88,7 @@ TEST(AnalyzeSession, RecoversFrictionAndTheSpeedDependentSpectrum) {
 
 TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
   const auto dir = nibrig::test::scratch_dir("analyze_partial");
-  io::SessionInfo info;
+  io::RigSessionInfo info;
   info.tool = "t";
   info.surface = "s";
   info.normal_load_N = 2.2;
@@ -96,13 +96,13 @@ TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
   info.speed_rate_hz = 100.0;
   info.force_rate_hz = 1000.0;
   {
-    io::SessionWriter writer(dir / "cut", info);
+    io::RigSessionWriter writer(dir / "cut", info);
     std::vector<float> force(10000);
     for (std::size_t i = 0; i < force.size(); ++i) force[i] = i < 2000 ? 0.0f : 0.44f;
     writer.append_tangential_force(force);
     // No finish(): the capture was interrupted.
   }
-  const auto session = io::read_session(io::partial_folder_of(dir / "cut"));
+  const auto session = io::read_rig_session(io::partial_folder_of(dir / "cut"));
   EXPECT_FALSE(session.complete);
   const auto threshold =
       measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "tests/model/io/io_test_files.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -37,7 +37,7 @@ TEST(AccelerationTrace, CsvRoundTripKeepsRateAndSamples) {
 
 TEST(AccelerationTrace, SessionFolderGivesCalibratedAcceleration) {
   const auto folder = nibrig::test::scratch_dir("trace_session") / "ring";
-  SessionInfo info;
+  RigSessionInfo info;
   info.tool = "bar";
   info.surface = "none";
   info.normal_load_N = 0.0;
@@ -46,7 +46,7 @@ TEST(AccelerationTrace, SessionFolderGivesCalibratedAcceleration) {
   info.force_rate_hz = 100;
   info.calibration.accelerometer_m_s2_per_unit = 9.80665 * 16;  // a ±16 g sensor at full scale
   {
-    SessionWriter writer(folder, info);
+    RigSessionWriter writer(folder, info);
     std::vector<float> samples(400, 0.25f);
     writer.append_acceleration(samples);
     writer.finish();

@@ -13,7 +13,7 @@
 #include <thread>
 #include <utility>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "rig/capture.hpp"
 #include "rig/usb_rig.hpp"
 #include "tests/rig/jack_feeder.hpp"
@@ -177,7 +177,7 @@ TEST(UsbRig, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
   EXPECT_NE(result.record.ended_because.find("unplugged"), std::string::npos) << result.record.ended_because;
   EXPECT_GE(result.record.seconds, 1.0);
   EXPECT_LT(result.record.seconds, 5.0);  // it stopped at the unplug, far before the 10 s profile
-  const model::io::Session session = model::io::read_session(result.folder);
+  const model::io::RigSession session = model::io::read_rig_session(result.folder);
   EXPECT_TRUE(session.complete);  // finished (renamed), though the profile was not
   EXPECT_EQ(session.info.capture->ended_because, result.record.ended_because);
   EXPECT_NEAR(static_cast<double>(session.acceleration.size()) / 48.0,

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "model/io/comparison_file.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
@@ -217,7 +217,7 @@ TEST(Demo, TheSimulatedRigIsCapturedMeasuredAndComparedLive) {
   const auto summary = run_demo("rig", out);
   const auto& r = summary["rig"];
   const auto rig = out / "rig";
-  EXPECT_TRUE(model::io::read_session(rig / "steps").complete);
+  EXPECT_TRUE(model::io::read_rig_session(rig / "steps").complete);
   EXPECT_EQ(r["steps_session_complete"], true);
   const auto comparison = model::io::read_comparison_file(rig / "compare" / "comparison.json");
   EXPECT_GE(comparison.bins_with_rows, 10u);

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "model/io/comparison_file.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
@@ -40,7 +40,7 @@ TEST(RigCli, SimulatedCaptureOfTheIssueIsASessionThatMeasureReads) {
   ASSERT_EQ(run_cli({"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office",
                      "--profile", "sweep", "--seconds", "6", "-o", session.string()}),
             0);
-  const model::io::Session read = model::io::read_session(session);
+  const model::io::RigSession read = model::io::read_rig_session(session);
   EXPECT_TRUE(read.complete);
   EXPECT_EQ(read.speed_m_s.size(), 6000u);
   EXPECT_EQ(read.acceleration.size(), 6u * 48000u);
@@ -66,7 +66,7 @@ TEST(RigCli, CaptureKilledWithSigkillLeavesAReadableSession) {
   ::kill(pid, SIGKILL);
   EXPECT_EQ(wait_cli(pid), 128 + SIGKILL);
   ASSERT_TRUE(recorded) << "the capture never reported 3 s recorded";
-  const model::io::Session read = model::io::read_session(partial);
+  const model::io::RigSession read = model::io::read_rig_session(partial);
   EXPECT_FALSE(read.complete);
   EXPECT_GE(read.acceleration.size(), 3u * 48000u);
   // The streams were written block by block together: at most one 100 ms batch apart.
@@ -91,7 +91,7 @@ TEST(RigCli, CaptureInterruptedFinishesItsSession) {
   ASSERT_TRUE(wait_for_recorded(model::io::partial_folder_of(session), 1.0));
   ::kill(pid, SIGINT);
   EXPECT_EQ(wait_cli(pid), 130);
-  const model::io::Session read = model::io::read_session(session);
+  const model::io::RigSession read = model::io::read_rig_session(session);
   EXPECT_TRUE(read.complete);  // a finished folder, not a .partial one
   ASSERT_TRUE(read.info.capture.has_value());
   EXPECT_EQ(read.info.capture->ended_because, "interrupted");
@@ -179,7 +179,7 @@ TEST(RigCli, CompareOfTheIssueWritesTheDistancePerSpeed) {
   EXPECT_GE(with_rows, 10u);  // the sweep crosses the 12 bins over 17-250 mm/s
   EXPECT_LT(report.mean_lsd_db, 4.0);
   EXPECT_TRUE(is_png(dir / "comparison.png"));
-  EXPECT_TRUE(model::io::read_session(dir / "session").complete);
+  EXPECT_TRUE(model::io::read_rig_session(dir / "session").complete);
 }
 
 // A design point simulated against the tool on the rig (its prediction needs the forcing model,

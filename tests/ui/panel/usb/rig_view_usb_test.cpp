@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "rig/speed_profile.hpp"
 #include "tests/rig/jack_feeder.hpp"
 #include "tests/rig/usb/emulated_rig.hpp"

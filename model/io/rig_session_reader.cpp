@@ -4,8 +4,8 @@
 
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
-#include "model/io/session.hpp"
-#include "model/io/session_json.hpp"
+#include "model/io/rig_session.hpp"
+#include "model/io/rig_session_json.hpp"
 
 namespace nibrig::model::io {
 
@@ -112,7 +112,7 @@ std::vector<float> read_stream(const std::filesystem::path& wav, double expected
 
 }  // namespace
 
-Session read_session(const std::filesystem::path& folder) {
+RigSession read_rig_session(const std::filesystem::path& folder) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) {
     const std::filesystem::path partial = partial_folder_of(folder);
@@ -124,7 +124,7 @@ Session read_session(const std::filesystem::path& folder) {
     throw FormatError(folder, "",
                       "no session folder (expected a folder with session.json and WAV streams)");
   }
-  Session session;
+  RigSession session;
   session.folder = folder;
   std::filesystem::path name = folder.lexically_normal();
   if (name.filename().empty()) name = name.parent_path();

@@ -1,4 +1,4 @@
-// session.json of a rig session (see session.hpp): conversion between SessionInfo and JSON, and the
+// session.json of a rig session (see session.hpp): conversion between RigSessionInfo and JSON, and the
 // checks both the writer (before recording) and the reader (after) apply to it.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 
 namespace nibrig::model::io::session_json {
 
@@ -27,16 +27,16 @@ struct Problem {
 
 // The first thing wrong with `info`, if any (empty tool, rates that are not whole positive hertz,
 // non-positive calibration factors, ...).
-std::optional<Problem> check(const SessionInfo& info);
+std::optional<Problem> check(const RigSessionInfo& info);
 
 // The rate session.json declares for stream k of kStreams.
-double rate_of(const SessionInfo& info, std::size_t stream);
+double rate_of(const RigSessionInfo& info, std::size_t stream);
 
 // frames: written by finish(), one count per stream; absent while recording.
-nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4>* frames);
+nlohmann::json to_json(const RigSessionInfo& info, const std::array<std::int64_t, 4>* frames);
 
 struct Parsed {
-  SessionInfo info;
+  RigSessionInfo info;
   std::optional<std::array<std::int64_t, 4>> frames;
 };
 

@@ -15,7 +15,7 @@
 namespace nibrig::model::io {
 
 // How a capture went: which rig recorded it and what went wrong on the way. The capture keeps it
-// current in session.json while recording (SessionWriter::update_capture), so a capture cut short
+// current in session.json while recording (RigSessionWriter::update_capture), so a capture cut short
 // still says how much it kept and why it ended.
 struct CaptureRecord {
   std::string rig;                    // "simulated rig, seed 1", "USB rig controller NR-0001"
@@ -28,7 +28,7 @@ struct CaptureRecord {
   std::string ended_because;          // empty while recording
 };
 
-struct SessionInfo {
+struct RigSessionInfo {
   std::string tool, surface;
   double normal_load_N = 0.0;
   // WAV files store whole-number rates, so these must be whole numbers of hertz.
@@ -63,15 +63,15 @@ inline constexpr const char* kTangentialForceWav = "tangential_force.wav";
 // Records one session. Every append goes straight to its WAV file and the WAV header is rewritten
 // after each block, so the .partial folder is valid at every moment. Not thread-safe: one capture
 // thread appends.
-class SessionWriter {
+class RigSessionWriter {
  public:
   // Creates <folder>.partial with session.json and the four empty streams. Throws
-  // std::invalid_argument for an unusable SessionInfo and std::runtime_error when <folder> or
+  // std::invalid_argument for an unusable RigSessionInfo and std::runtime_error when <folder> or
   // <folder>.partial already exists or cannot be created.
-  SessionWriter(std::filesystem::path folder, SessionInfo info);
-  ~SessionWriter();  // without finish(): closes the streams and leaves <folder>.partial readable
-  SessionWriter(const SessionWriter&) = delete;
-  SessionWriter& operator=(const SessionWriter&) = delete;
+  RigSessionWriter(std::filesystem::path folder, RigSessionInfo info);
+  ~RigSessionWriter();  // without finish(): closes the streams and leaves <folder>.partial readable
+  RigSessionWriter(const RigSessionWriter&) = delete;
+  RigSessionWriter& operator=(const RigSessionWriter&) = delete;
 
   // Each throws std::invalid_argument for a non-finite sample (nothing of the block is written),
   // std::runtime_error on a write failure and std::logic_error after finish().
@@ -101,13 +101,13 @@ class SessionWriter {
 
   std::filesystem::path folder_;
   std::filesystem::path partial_;
-  SessionInfo info_;
+  RigSessionInfo info_;
   std::vector<std::unique_ptr<Stream>> streams_;  // acceleration, speed, normal, tangential
   bool finished_ = false;
 };
 
-struct Session {
-  SessionInfo info;
+struct RigSession {
+  RigSessionInfo info;
   std::vector<float> acceleration, speed_m_s, normal_force_N, tangential_force_N;
   bool complete = false;  // false for a <folder>.partial left by an interrupted capture
   std::filesystem::path folder;
@@ -119,7 +119,7 @@ struct Session {
 // Throws FormatError for a missing or invalid session.json (naming the field), a WAV file that is
 // not mono float32, has the wrong sample rate, holds NaN or infinite samples, or (finished
 // sessions) holds a different number of frames than session.json records.
-Session read_session(const std::filesystem::path& folder);
+RigSession read_rig_session(const std::filesystem::path& folder);
 
 // The path of the .partial folder a writer uses for `folder`.
 std::filesystem::path partial_folder_of(const std::filesystem::path& folder);

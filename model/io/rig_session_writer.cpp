@@ -10,9 +10,9 @@
 #include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "model/io/utc_time.hpp"
-#include "model/io/session_json.hpp"
+#include "model/io/rig_session_json.hpp"
 
 namespace nibrig::model::io {
 
@@ -44,7 +44,7 @@ void rename_no_replace(const std::filesystem::path& from, const std::filesystem:
 
 }  // namespace
 
-struct SessionWriter::Stream {
+struct RigSessionWriter::Stream {
   std::filesystem::path path;
   const char* name = "";
   SNDFILE* file = nullptr;
@@ -65,7 +65,7 @@ std::filesystem::path partial_folder_of(const std::filesystem::path& folder) {
   return partial;
 }
 
-SessionWriter::SessionWriter(std::filesystem::path folder, SessionInfo info)
+RigSessionWriter::RigSessionWriter(std::filesystem::path folder, RigSessionInfo info)
     : folder_(without_trailing_separator(folder)),
       partial_(partial_folder_of(folder_)),
       info_(std::move(info)) {
@@ -117,16 +117,16 @@ SessionWriter::SessionWriter(std::filesystem::path folder, SessionInfo info)
   }
 }
 
-SessionWriter::~SessionWriter() { close_streams(); }
+RigSessionWriter::~RigSessionWriter() { close_streams(); }
 
-void SessionWriter::discard() noexcept {
+void RigSessionWriter::discard() noexcept {
   if (finished_) return;
   close_streams();
   std::error_code ignored;
   std::filesystem::remove_all(partial_, ignored);
 }
 
-void SessionWriter::close_streams() noexcept {
+void RigSessionWriter::close_streams() noexcept {
   for (auto& stream : streams_) {
     if (stream->file != nullptr) {
       sf_close(stream->file);
@@ -135,7 +135,7 @@ void SessionWriter::close_streams() noexcept {
   }
 }
 
-void SessionWriter::append(Stream& stream, std::span<const float> samples) {
+void RigSessionWriter::append(Stream& stream, std::span<const float> samples) {
   if (finished_) {
     throw std::logic_error(partial_.string() + ": append to " + stream.name + " after finish()");
   }
@@ -156,26 +156,26 @@ void SessionWriter::append(Stream& stream, std::span<const float> samples) {
   }
 }
 
-void SessionWriter::append_acceleration(std::span<const float> samples) {
+void RigSessionWriter::append_acceleration(std::span<const float> samples) {
   append(*streams_[0], samples);
 }
-void SessionWriter::append_speed(std::span<const float> samples_m_s) {
+void RigSessionWriter::append_speed(std::span<const float> samples_m_s) {
   append(*streams_[1], samples_m_s);
 }
-void SessionWriter::append_normal_force(std::span<const float> samples_N) {
+void RigSessionWriter::append_normal_force(std::span<const float> samples_N) {
   append(*streams_[2], samples_N);
 }
-void SessionWriter::append_tangential_force(std::span<const float> samples_N) {
+void RigSessionWriter::append_tangential_force(std::span<const float> samples_N) {
   append(*streams_[3], samples_N);
 }
 
-void SessionWriter::update_capture(const CaptureRecord& record) {
+void RigSessionWriter::update_capture(const CaptureRecord& record) {
   if (finished_) throw std::logic_error(partial_.string() + ": update_capture after finish()");
   info_.capture = record;
   write_file_atomically(partial_ / kSessionJson, dump_json(session_json::to_json(info_, nullptr)));
 }
 
-void SessionWriter::finish() {
+void RigSessionWriter::finish() {
   if (finished_) throw std::logic_error(folder_.string() + ": finish() called twice");
   finished_ = true;
   std::array<std::int64_t, 4> frames{};

@@ -1,4 +1,4 @@
-#include "model/io/session_json.hpp"
+#include "model/io/rig_session_json.hpp"
 
 #include <cmath>
 
@@ -29,7 +29,7 @@ std::optional<Problem> check_positive(double value, const char* field) {
 
 }  // namespace
 
-std::optional<Problem> check(const SessionInfo& info) {
+std::optional<Problem> check(const RigSessionInfo& info) {
   if (info.tool.empty()) return Problem{"tool", "expected a tool id, found an empty string"};
   if (info.surface.empty())
     return Problem{"surface", "expected a surface id, found an empty string"};
@@ -66,7 +66,7 @@ std::optional<Problem> check(const SessionInfo& info) {
   return std::nullopt;
 }
 
-double rate_of(const SessionInfo& info, std::size_t stream) {
+double rate_of(const RigSessionInfo& info, std::size_t stream) {
   switch (stream) {
     case 0:
       return info.acceleration_rate_hz;
@@ -77,7 +77,7 @@ double rate_of(const SessionInfo& info, std::size_t stream) {
   }
 }
 
-nlohmann::json to_json(const SessionInfo& info, const std::array<std::int64_t, 4>* frames) {
+nlohmann::json to_json(const RigSessionInfo& info, const std::array<std::int64_t, 4>* frames) {
   nlohmann::json json = {
       {"format", kFormat},
       {"version", kVersion},
@@ -125,7 +125,7 @@ Parsed from_json(const nlohmann::json& json, const std::filesystem::path& file) 
   as_object(json, file, "");
   check_format_and_version(json, file, kFormat, kVersion);
   Parsed parsed;
-  SessionInfo& info = parsed.info;
+  RigSessionInfo& info = parsed.info;
   info.tool = string_member(json, "tool", file, "");
   info.surface = string_member(json, "surface", file, "");
   info.normal_load_N = number_member(json, "normal_load_N", file, "");

@@ -1,12 +1,12 @@
-// libFuzzer target for read_session: the input is session.json, a NUL byte, then WAV bytes used for
-// all four streams (so one set of rates in the JSON fits them all). Each input is read both as a
-// finished folder and as a .partial one. A FormatError is the expected answer to bad bytes;
+// libFuzzer target for read_rig_session: the input is session.json, a NUL byte, then WAV bytes
+// used for all four streams (so one set of rates in the JSON fits them all). Each input is read
+// both as a finished folder and as a .partial one. A FormatError is the expected answer to bad bytes;
 // anything else (another exception, a crash, a sanitizer report) is a bug in the reader.
 //
 // Build and run (clang):
-//   clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address -I. tests/fuzz/fuzz_session_reader.cpp \
+//   clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address -I. tests/fuzz/fuzz_rig_session_reader.cpp \
 //     model/io/*.cpp -lz -lsndfile -o /tmp/fuzz_session
-//   /tmp/fuzz_session -max_total_time=60 /tmp/session_corpus tests/fuzz/corpus/session
+//   /tmp/fuzz_session -max_total_time=60 /tmp/session_corpus tests/fuzz/corpus/rig_session_reader
 // (the first folder receives new inputs, so the seeds in the repository stay as they are).
 #include <algorithm>
 #include <cstdint>
@@ -15,7 +15,7 @@
 #include <fstream>
 
 #include "model/io/format_error.hpp"
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 #include "tests/fuzz/scratch_folder.hpp"
 
 namespace {
@@ -46,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       write_file(folder / stream, wav, end);
     }
     try {
-      io::read_session(folder);
+      io::read_rig_session(folder);
     } catch (const io::FormatError&) {
       // The reader recognised bad input and said so.
     }

@@ -1,4 +1,4 @@
-#include "model/io/session.hpp"
+#include "model/io/rig_session.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -21,8 +21,8 @@ namespace {
 using nibrig::test::expect_message_names;
 using nibrig::test::format_error_of;
 
-SessionInfo rig_info() {
-  SessionInfo info;
+RigSessionInfo rig_info() {
+  RigSessionInfo info;
   info.tool = "p2h";
   info.surface = "office";
   info.normal_load_N = 2.2;
@@ -56,7 +56,7 @@ std::vector<float> block(int stream, std::size_t block_index, std::size_t size) 
 constexpr std::size_t kAccelBlock = 480;  // 10 ms at 48 kHz
 constexpr std::size_t kSlowBlock = 10;    // 10 ms at 1 kHz (speed), 20 ms at 500 Hz (forces)
 
-void write_blocks(SessionWriter& writer, std::size_t index) {
+void write_blocks(RigSessionWriter& writer, std::size_t index) {
   writer.append_acceleration(block(0, index, kAccelBlock));
   writer.append_speed(block(1, index, kSlowBlock));
   writer.append_normal_force(block(2, index, kSlowBlock));
@@ -94,17 +94,17 @@ std::uint32_t wav_data_bytes(const std::filesystem::path& file) {
   }
 }
 
-TEST(Session, WriteFinishReadRoundTrip) {
+TEST(RigSession, WriteFinishReadRoundTrip) {
   const auto dir = nibrig::test::scratch_dir("session_round_trip");
   const auto folder = dir / "p2h_office";
   {
-    SessionWriter writer(folder, rig_info());
+    RigSessionWriter writer(folder, rig_info());
     EXPECT_TRUE(std::filesystem::is_directory(dir / "p2h_office.partial"));
     for (std::size_t b = 0; b < 25; ++b) write_blocks(writer, b);
     writer.finish();
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "p2h_office.partial"));
-  const Session session = read_session(folder);
+  const RigSession session = read_rig_session(folder);
   EXPECT_TRUE(session.complete);
   EXPECT_TRUE(session.warnings.empty());
   EXPECT_EQ(session.info.tool, "p2h");
@@ -123,7 +123,7 @@ TEST(Session, WriteFinishReadRoundTrip) {
 
 // A capture keeps its record current while recording: a .partial folder says how far it got, and the
 // finished session keeps the last record. A session without one reads with none.
-TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
+TEST(RigSession, CaptureRecordIsKeptCurrentAndReadBack) {
   const auto dir = nibrig::test::scratch_dir("session_capture_record");
   const auto folder = dir / "rig";
   CaptureRecord record;
@@ -135,10 +135,10 @@ TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
   record.fault_frames = 1;
   record.alignment_error_ms = 0.125;
   {
-    SessionWriter writer(folder, rig_info());
+    RigSessionWriter writer(folder, rig_info());
     for (std::size_t b = 0; b < 3; ++b) write_blocks(writer, b);
     writer.update_capture(record);
-    const Session partial = read_session(dir / "rig.partial");
+    const RigSession partial = read_rig_session(dir / "rig.partial");
     ASSERT_TRUE(partial.info.capture.has_value());
     EXPECT_EQ(partial.info.capture->frames, 250u);
     EXPECT_EQ(partial.info.capture->ended_because, "");  // still recording when it was written
@@ -148,7 +148,7 @@ TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
     writer.finish();
     EXPECT_THROW(writer.update_capture(record), std::logic_error);
   }
-  const Session session = read_session(folder);
+  const RigSession session = read_rig_session(folder);
   ASSERT_TRUE(session.info.capture.has_value());
   const CaptureRecord& read = *session.info.capture;
   EXPECT_EQ(read.rig, "simulated rig, seed 3");
@@ -162,16 +162,16 @@ TEST(Session, CaptureRecordIsKeptCurrentAndReadBack) {
 
   const auto plain = dir / "plain";
   {
-    SessionWriter writer(plain, rig_info());
+    RigSessionWriter writer(plain, rig_info());
     write_blocks(writer, 0);
     writer.finish();
   }
-  EXPECT_FALSE(read_session(plain).info.capture.has_value());
+  EXPECT_FALSE(read_rig_session(plain).info.capture.has_value());
 }
 
 // The real thing: a capture process killed with SIGKILL while it writes. Everything it reported as
 // written before the kill must be readable from the .partial folder, with no partial block.
-TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
+TEST(RigSession, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
   const auto dir = nibrig::test::scratch_dir("session_killed");
   const auto folder = dir / "killed";
   constexpr int kReportedBlocks = 40;
@@ -182,7 +182,7 @@ TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
   if (child == 0) {
     ::close(pipe_fds[0]);
     try {
-      SessionWriter writer(folder, rig_info());
+      RigSessionWriter writer(folder, rig_info());
       // Keeps writing until killed; reports each finished block.
       for (std::size_t b = 0;; ++b) {
         write_blocks(writer, b);
@@ -205,7 +205,7 @@ TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
 
   EXPECT_FALSE(std::filesystem::exists(folder));
-  const Session session = read_session(partial_folder_of(folder));
+  const RigSession session = read_rig_session(partial_folder_of(folder));
   EXPECT_FALSE(session.complete);
   EXPECT_EQ(session.info.tool, "p2h");
   expect_stream(session.acceleration, 0, kAccelBlock, kReportedBlocks);
@@ -218,25 +218,25 @@ TEST(Session, KilledCaptureKeepsEveryBlockWrittenBeforeTheKill) {
             kReportedBlocks * kSlowBlock * sizeof(float));
 
   // Reading the finished name points at what the interrupted capture left.
-  expect_message_names(format_error_of([&] { read_session(folder); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder); }),
                        {"killed", "no session folder", "killed.partial"});
 }
 
-TEST(Session, WriterWithoutFinishLeavesAReadablePartialFolder) {
+TEST(RigSession, WriterWithoutFinishLeavesAReadablePartialFolder) {
   const auto dir = nibrig::test::scratch_dir("session_unfinished");
   {
-    SessionWriter writer(dir / "s", rig_info());
+    RigSessionWriter writer(dir / "s", rig_info());
     for (std::size_t b = 0; b < 3; ++b) write_blocks(writer, b);
   }
-  const Session session = read_session(dir / "s.partial");
+  const RigSession session = read_rig_session(dir / "s.partial");
   EXPECT_FALSE(session.complete);
   expect_stream(session.acceleration, 0, kAccelBlock, 3);
   EXPECT_EQ(session.acceleration.size(), 3 * kAccelBlock);
 }
 
-TEST(Session, FinishNeverReplacesAnExistingFolder) {
+TEST(RigSession, FinishNeverReplacesAnExistingFolder) {
   const auto dir = nibrig::test::scratch_dir("session_existing");
-  SessionWriter writer(dir / "s", rig_info());
+  RigSessionWriter writer(dir / "s", rig_info());
   write_blocks(writer, 0);
   std::filesystem::create_directory(dir / "s");  // appeared while recording (even empty)
   try {
@@ -246,30 +246,30 @@ TEST(Session, FinishNeverReplacesAnExistingFolder) {
     expect_message_names(error.what(), {"already exists", "s.partial"});
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / "s"));
-  EXPECT_EQ(read_session(dir / "s.partial").acceleration.size(), kAccelBlock);
+  EXPECT_EQ(read_rig_session(dir / "s.partial").acceleration.size(), kAccelBlock);
 }
 
-TEST(Session, WriterRefusesBadInfoExistingFoldersAndBadSamples) {
+TEST(RigSession, WriterRefusesBadInfoExistingFoldersAndBadSamples) {
   const auto dir = nibrig::test::scratch_dir("session_refusals");
-  SessionInfo fractional_rate = rig_info();
+  RigSessionInfo fractional_rate = rig_info();
   fractional_rate.speed_rate_hz = 999.5;
-  EXPECT_THROW(SessionWriter(dir / "a", fractional_rate), std::invalid_argument);
-  SessionInfo no_tool = rig_info();
+  EXPECT_THROW(RigSessionWriter(dir / "a", fractional_rate), std::invalid_argument);
+  RigSessionInfo no_tool = rig_info();
   no_tool.tool.clear();
-  EXPECT_THROW(SessionWriter(dir / "a", no_tool), std::invalid_argument);
+  EXPECT_THROW(RigSessionWriter(dir / "a", no_tool), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.partial"));
 
   std::filesystem::create_directory(dir / "taken");
-  EXPECT_THROW(SessionWriter(dir / "taken", rig_info()), std::runtime_error);
+  EXPECT_THROW(RigSessionWriter(dir / "taken", rig_info()), std::runtime_error);
   std::filesystem::create_directory(dir / "left.partial");
-  EXPECT_THROW(SessionWriter(dir / "left", rig_info()), std::runtime_error);
+  EXPECT_THROW(RigSessionWriter(dir / "left", rig_info()), std::runtime_error);
 
-  SessionWriter writer(dir / "b", rig_info());
+  RigSessionWriter writer(dir / "b", rig_info());
   const std::vector<float> with_nan = {0.1f, std::numeric_limits<float>::quiet_NaN()};
   EXPECT_THROW(writer.append_speed(with_nan), std::invalid_argument);
   writer.finish();
   EXPECT_THROW(writer.append_speed(std::vector<float>{0.1f}), std::logic_error);
-  EXPECT_TRUE(read_session(dir / "b").speed_m_s.empty());  // the NaN block was not written
+  EXPECT_TRUE(read_rig_session(dir / "b").speed_m_s.empty());  // the NaN block was not written
 }
 
 // Malformed sessions: start from a valid finished one and break one thing.
@@ -278,7 +278,7 @@ class SessionMalformed : public ::testing::Test {
   void SetUp() override {
     dir_ = nibrig::test::scratch_dir("session_malformed");
     folder_ = dir_ / "s";
-    SessionWriter writer(folder_, rig_info());
+    RigSessionWriter writer(folder_, rig_info());
     for (std::size_t b = 0; b < 4; ++b) write_blocks(writer, b);
     writer.finish();
     std::ifstream in(folder_ / "session.json");
@@ -304,20 +304,20 @@ class SessionMalformed : public ::testing::Test {
 
 TEST_F(SessionMalformed, MissingSessionJson) {
   std::filesystem::remove(folder_ / "session.json");
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"session.json", "missing", "expected the session description"});
 }
 
 TEST_F(SessionMalformed, EmptySessionJson) {
   nibrig::test::write_text(folder_ / "session.json", "");
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"session.json", "empty file", "expected a JSON object"});
 }
 
 TEST_F(SessionMalformed, BadJsonSyntaxNamesTheLine) {
   nibrig::test::write_text(folder_ / "session.json",
                    "{\n  \"format\": \"nibrig-session\",\n  \"tool\": ,\n}\n");
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"session.json", "line 3", "invalid JSON"});
 }
 
@@ -326,17 +326,17 @@ TEST_F(SessionMalformed, BadFieldIsNamed) {
   j["speed_rate_hz"] = "fast";
   set_json(j);
   expect_message_names(
-      format_error_of([&] { read_session(folder_); }),
+      format_error_of([&] { read_rig_session(folder_); }),
       {"session.json", "field 'speed_rate_hz'", "expected a number, found the string 'fast'"});
   j = json();
   j["calibration"].erase("lever_factor");
   set_json(j);
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"session.json", "field 'calibration.lever_factor'", "missing field"});
   j = json();
   j["force_rate_hz"] = 0;
   set_json(j);
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"field 'force_rate_hz'", "expected a whole number of hertz"});
 }
 
@@ -345,14 +345,14 @@ TEST_F(SessionMalformed, WrongSampleRate) {
   j["speed_rate_hz"] = 2000;
   set_json(j);
   expect_message_names(
-      format_error_of([&] { read_session(folder_); }),
+      format_error_of([&] { read_rig_session(folder_); }),
       {"speed.wav", "header", "wrong sample rate: expected 2000 Hz (session.json), found 1000 Hz"});
 }
 
 TEST_F(SessionMalformed, NonFloatWav) {
   write_wav("normal_force.wav", SF_FORMAT_WAV | SF_FORMAT_PCM_16, 500, block(2, 0, 40));
   expect_message_names(
-      format_error_of([&] { read_session(folder_); }),
+      format_error_of([&] { read_rig_session(folder_); }),
       {"normal_force.wav", "header", "expected 32-bit float samples, found 16-bit integer"});
 }
 
@@ -360,7 +360,7 @@ TEST_F(SessionMalformed, NaNSamples) {
   std::vector<float> samples = block(3, 0, 40);
   samples[17] = std::numeric_limits<float>::quiet_NaN();
   write_wav("tangential_force.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 500, samples);
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"tangential_force.wav", "sample 17", "expected a finite value, found NaN"});
 }
 
@@ -372,22 +372,22 @@ TEST_F(SessionMalformed, StereoWav) {
   SNDFILE* file = sf_open((folder_ / "speed.wav").c_str(), SFM_WRITE, &info);
   ASSERT_NE(file, nullptr);
   sf_close(file);
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"speed.wav", "expected 1 channel, found 2"});
 }
 
 TEST_F(SessionMalformed, FrameCountDiffersFromSessionJson) {
   write_wav("speed.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1000, block(1, 0, 30));
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"speed.wav", "expected 40 frames (session.json), found 30"});
 }
 
 TEST_F(SessionMalformed, MissingOrGarbageStream) {
   std::filesystem::remove(folder_ / "acceleration.wav");
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"acceleration.wav", "missing", "expected a mono float32 WAV stream"});
   nibrig::test::write_text(folder_ / "acceleration.wav", "RIFF nonsense");
-  expect_message_names(format_error_of([&] { read_session(folder_); }),
+  expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"acceleration.wav", "expected a WAV file"});
 }
 
