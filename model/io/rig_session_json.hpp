@@ -1,4 +1,4 @@
-// session.json of a rig session (see session.hpp): conversion between RigSessionInfo and JSON, and the
+// session.json of a rig session (rig_session.hpp): conversion between RigSessionInfo and JSON, and the
 // checks both the writer (before recording) and the reader (after) apply to it.
 #pragma once
 

@@ -16,7 +16,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/stroke_options.hpp"
 

@@ -31,7 +31,7 @@
 #include "ui/cli/experiment_terminal.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 

@@ -28,7 +28,7 @@
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {

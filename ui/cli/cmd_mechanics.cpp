@@ -17,7 +17,7 @@
 #include "ui/cli/logging.hpp"
 #include "ui/cli/mechanics_figures.hpp"
 #include "ui/cli/mechanics_report.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 
 namespace nibrig::ui::cli {

@@ -25,7 +25,7 @@
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/interpolation_report.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/report/figures.hpp"

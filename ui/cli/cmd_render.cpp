@@ -9,7 +9,7 @@
 #include "playback/prepared_engine.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/stroke_options.hpp"
 

@@ -4,7 +4,7 @@
 #include "model/space/objective.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/space_commands.hpp"
 

@@ -1,7 +1,7 @@
 #include "ui/cli/device_options.hpp"
 
 #include "playback/audio_devices.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 

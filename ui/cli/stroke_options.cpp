@@ -6,7 +6,7 @@
 
 #include "rt/reference_load.hpp"
 #include "ui/cli/forcing_options.hpp"
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 

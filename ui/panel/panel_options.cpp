@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 #include "ui/panel/panel_window.hpp"
 
 namespace nibrig::ui::panel {
@@ -24,28 +24,28 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
   app.add_option("--view", view, "the view shown first (space, design, rig, pad, devices)")
       ->check(CLI::IsMember({"space", "design", "rig", "pad", "devices", "experiment"}));
   app.add_option("--frames", o.frames, "frames drawn before the screenshot, once the view has loaded")
-      ->check(cli::whole_in_range(1, 100000, "frames"));
+      ->check(whole_in_range(1, 100000, "frames"));
   app.add_option("--settle-timeout", o.settle_timeout_s,
                  "longest wait, in seconds, for the view's background work before the screenshot "
                  "(the design grid is solved the first time: the window shows its progress and the "
                  "time left, measured as it goes); 0: do not wait")
-      ->check(cli::in_range(0.0, 86400.0, "seconds"));
+      ->check(in_range(0.0, 86400.0, "seconds"));
   std::vector<long long> grid;
   app.add_option("--design-grid", grid,
                  "designs the design view solves: mix points and tip points (default 5,7); fewer solve "
                  "faster, with a larger interpolation error (the view measures it)")
       ->delimiter(',')
       ->expected(2)
-      ->check(cli::whole_in_range(2, 50, "points"));
+      ->check(whole_in_range(2, 50, "points"));
   app.add_option("--design-mesh", o.setup.design.mesh_size_m,
                  "element size the design view meshes its styli with, in metres (default: the bundled stylus's)")
-      ->check(cli::in_range(0.0005, 0.01, "metres"));
+      ->check(in_range(0.0005, 0.01, "metres"));
   app.add_option("--design-modes", o.setup.design.modes, "modes the design view solves (default: the bundled stylus's)")
-      ->check(cli::whole_in_range(4, 256, "modes"));
+      ->check(whole_in_range(4, 256, "modes"));
   app.add_option("--size", o.width, "window width in pixels")
-      ->check(cli::whole_in_range(PanelWindow::kMinWidth, 8192, "pixels"));
+      ->check(whole_in_range(PanelWindow::kMinWidth, 8192, "pixels"));
   app.add_option("--height", o.height, "window height in pixels")
-      ->check(cli::whole_in_range(PanelWindow::kMinHeight, 8192, "pixels"));
+      ->check(whole_in_range(PanelWindow::kMinHeight, 8192, "pixels"));
   app.add_option("--api", o.device_api, "audio API of the actuator (jack, alsa, pulse)");
   app.add_option("--device", o.device, "audio device of the actuator, by name");
   app.add_flag("--start-rig", o.setup.start_rig,

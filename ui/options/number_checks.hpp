@@ -1,13 +1,14 @@
-// Checks for the numbers typed on the command line, shared by every command. Each check knows what
-// the number means and its unit, so a refusal names the option, the value and what was expected:
-// "--speed: -5: expected a speed in mm/s, >= 0 and finite". (CLI11's own Range lets NaN through.)
+// Checks for the numbers typed on a command line, shared by every command of both faces. Each check
+// knows what the number means and its unit, so a refusal names the option, the value and what was
+// expected: "--speed: -5: expected a speed in mm/s, >= 0 and finite". (CLI11's own Range lets NaN
+// through.)
 // Numbers are decimal, as in every file nibrig reads: hexadecimal and subnormal values are refused.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
 
-namespace nibrig::ui::cli {
+namespace nibrig::ui {
 
 // `what` names the quantity with its unit ("a speed in mm/s", "a length in metres"). All of these
 // refuse NaN, infinities and text; the checks run while the command line is parsed, before any
@@ -27,4 +28,4 @@ CLI::Validator whole_in_range(long long low, long long high, const std::string& 
 // Any seed an unsigned option holds (CLI11 would wrap "-1" around into a seed silently).
 CLI::Validator any_seed();
 
-}  // namespace nibrig::ui::cli
+}  // namespace nibrig::ui

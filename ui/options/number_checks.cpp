@@ -1,4 +1,4 @@
-#include "ui/cli/number_checks.hpp"
+#include "ui/options/number_checks.hpp"
 
 #include <charconv>
 #include <cfloat>
@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-namespace nibrig::ui::cli {
+namespace nibrig::ui {
 namespace {
 
 // Decimal only, as every file reader parses numbers (model/io/text_lines.hpp): hexadecimal, a
@@ -78,4 +78,4 @@ CLI::Validator whole_in_range(long long low, long long high, const std::string& 
 
 CLI::Validator any_seed() { return whole_in_range(0, 4294967295LL, "a seed"); }
 
-}  // namespace nibrig::ui::cli
+}  // namespace nibrig::ui
