@@ -4,57 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cmath>
-#include <functional>
-#include <thread>
 
-#include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
-#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
+#include "tests/ui/panel/windowed_panel.hpp"
 #include "ui/panel/panel.hpp"
-#include "ui/panel/panel_window.hpp"
 
 namespace nibrig::ui::panel {
 namespace {
 
 using namespace std::chrono_literals;
-
-struct PlaybackSession {
-  PanelWindow window;
-  Panel panel;
-  PlaybackSession(const PanelSetup& setup) : window(testing::hidden_window()), panel(setup) {}
-  void frame(const std::function<void(ImGuiIO&)>& input = {}) {
-    window.begin_frame(input);
-    panel.draw();
-    window.end_frame();
-    std::this_thread::sleep_for(2ms);
-  }
-  // Frames until `done` (true) or the timeout (false).
-  bool frames_until(const std::function<bool()>& done, std::chrono::seconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (!done()) {
-      if (std::chrono::steady_clock::now() > deadline) return false;
-      frame();
-    }
-    return true;
-  }
-  void click(ImVec2 at) {
-    frame([&](ImGuiIO& io) { io.MousePos = at; });
-    frame([&](ImGuiIO& io) { io.MousePos = at, io.MouseDown[0] = true; });
-    frame([&](ImGuiIO& io) { io.MousePos = at, io.MouseDown[0] = false; });
-  }
-  // RMS of `frames` of the panel's output recorded by a bare libjack client, the panel drawing on.
-  double recorded_rms(std::size_t frames) {
-    playback::testing::JackRecorder ear("ear", 1, frames);
-    EXPECT_TRUE(ear.connect("nibrig-panel:outport 0", 0));
-    ear.start();
-    EXPECT_TRUE(frames_until([&] { return ear.recorded() >= frames; }, 30s)) << ear.recorded() << " recorded";
-    double sum = 0.0;
-    for (float s : ear.samples(0)) sum += double(s) * s;
-    return std::sqrt(sum / static_cast<double>(frames));
-  }
-};
 
 TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameBack) {
   nibrig::testing::JackServer server;
@@ -63,7 +22,7 @@ TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameB
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   setup.device = DeviceRequest{"jack", "system", 1, 64};
-  PlaybackSession s(setup);
+  testing::WindowedPanel s(setup);
   ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
   ASSERT_TRUE(s.frames_until([&] { return s.panel.settled(); }, 60s));
   EXPECT_EQ(s.panel.status_line().rfind("jack system | ", 0), 0u) << s.panel.status_line();

@@ -4,55 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cmath>
-#include <functional>
 #include <thread>
 
-#include "tests/playback/jack_recorder.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
-#include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
+#include "tests/ui/panel/windowed_panel.hpp"
 #include "ui/panel/panel.hpp"
-#include "ui/panel/panel_window.hpp"
 #include "ui/panel/rig_view.hpp"
 
 namespace nibrig::ui::panel {
 namespace {
 
 using namespace std::chrono_literals;
-
-struct RigActuatorSession {
-  PanelWindow window;
-  Panel panel;
-  explicit RigActuatorSession(const PanelSetup& setup) : window(testing::hidden_window()), panel(setup) {}
-  void frame() {
-    window.begin_frame();
-    panel.draw();
-    window.end_frame();
-    std::this_thread::sleep_for(2ms);
-  }
-  bool frames_until(const std::function<bool()>& done, std::chrono::seconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (!done()) {
-      if (std::chrono::steady_clock::now() > deadline) return false;
-      frame();
-    }
-    return true;
-  }
-  // RMS of `frames` of what reaches the actuator: the audition's port and, while it exists, the
-  // rig's player's, mixed into one input as the device's own port would mix them.
-  double actuator_rms(std::size_t frames) {
-    playback::testing::JackRecorder actuator("actuator", 1, frames);
-    EXPECT_TRUE(actuator.connect("nibrig-panel:outport 0", 0));
-    actuator.connect("nibrig-panel-rig:outport 0", 0);
-    actuator.start();
-    EXPECT_TRUE(frames_until([&] { return actuator.recorded() >= frames; }, 30s)) << actuator.recorded();
-    double sum = 0.0;
-    for (float s : actuator.samples(0)) sum += double(s) * s;
-    return std::sqrt(sum / static_cast<double>(frames));
-  }
-};
 
 TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurnedOff) {
   nibrig::testing::JackServer server;
@@ -61,7 +25,11 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   setup.device = DeviceRequest{"jack", "system", 1, 64};
-  RigActuatorSession s(setup);
+  testing::WindowedPanel s(setup);
+  // What reaches the actuator: the audition's port and, while it exists, the rig's player's.
+  const auto actuator_rms = [&s](std::size_t frames) {
+    return s.recorded_rms(frames, {"nibrig-panel:outport 0", "nibrig-panel-rig:outport 0"});
+  };
   ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
   s.panel.show(View::rig);
   RigView& rig = s.panel.rig_view();
@@ -77,7 +45,7 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   ASSERT_TRUE(s.frames_until([&] { return rig.progress() > 0.0 || !rig.running(); }, 300s));
   ASSERT_TRUE(rig.running()) << rig.error();
   EXPECT_FALSE(rig.actuator_playing());
-  EXPECT_EQ(s.actuator_rms(4800), 0.0);  // the audition has nothing loaded: exact silence
+  EXPECT_EQ(actuator_rms(4800), 0.0);  // the audition has nothing loaded: exact silence
 
   rig.choice().play_on_actuator = true;
   ASSERT_TRUE(s.frames_until([&] { return rig.actuator_playing() || !rig.actuator_state().empty(); }, 30s));
@@ -86,12 +54,12 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   // Half a second of the crayon's sweep (17-250 mm/s over 3 s) at the engine's default gain: the
   // actuator player's own test hears 0.014 of full scale at 30 mm/s, so 1e-3 lies ten times below
   // the quietest half second of the sweep, and is no silence (exact zero, above and below).
-  EXPECT_GT(s.actuator_rms(24000), 1e-3);
+  EXPECT_GT(actuator_rms(24000), 1e-3);
 
   rig.choice().play_on_actuator = false;
   ASSERT_TRUE(s.frames_until([&] { return !rig.actuator_playing(); }, 30s));
   EXPECT_TRUE(rig.running());  // the rig goes on; only the actuator fell silent
-  EXPECT_EQ(s.actuator_rms(4800), 0.0);  // the player's client is gone, the audition silent
+  EXPECT_EQ(actuator_rms(4800), 0.0);  // the player's client is gone, the audition silent
 
   rig.stop();
   ASSERT_TRUE(s.frames_until([&] { return !rig.running(); }, 30s));
