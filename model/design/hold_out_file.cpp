@@ -13,12 +13,6 @@ namespace {
 
 constexpr std::size_t kHoldOutColumnCount = 9;
 
-std::optional<double> hold_out_number(const std::string& field, const std::filesystem::path& file,
-                                      std::size_t line, const std::string& column) {
-  if (field.empty()) return std::nullopt;
-  return io::parse_number(field, file, line, column);
-}
-
 }  // namespace
 
 HoldOutColumns tip_hold_out_columns(double lower_tip_m, double upper_tip_m) {
@@ -82,10 +76,10 @@ HoldOutTable read_hold_out_csv(const std::filesystem::path& file) {
     row.tool = f[0];
     row.surface = f[1];
     if (f[2] != "all") row.speed_mm_s = io::parse_number(f[2], file, line, h[2]);
-    row.interpolated_rms_db = hold_out_number(f[3], file, line, h[3]);
+    row.interpolated_rms_db = io::parse_optional_number(f[3], file, line, h[3]);
     for (std::size_t k = 0; k < 2; ++k) {
-      row.baseline_rms_db[k] = hold_out_number(f[4 + k], file, line, h[4 + k]);
-      row.measured_rms_db[k] = hold_out_number(f[6 + k], file, line, h[6 + k]);
+      row.baseline_rms_db[k] = io::parse_optional_number(f[4 + k], file, line, h[4 + k]);
+      row.measured_rms_db[k] = io::parse_optional_number(f[6 + k], file, line, h[6 + k]);
     }
     row.not_predictable = f[8];
     table.rows.push_back(std::move(row));

@@ -17,12 +17,6 @@ namespace {
 constexpr const char* kLooSpeedPrefix = "rms_db_";
 constexpr const char* kLooSpeedSuffix = "_mm_s";
 
-std::optional<double> loo_number(const std::string& field, const std::filesystem::path& file,
-                                 std::size_t line, const std::string& column) {
-  if (field.empty()) return std::nullopt;
-  return io::parse_number(field, file, line, column);
-}
-
 }  // namespace
 
 std::string leave_one_out_csv_text(const LeaveOneOut& loo, const std::vector<double>& speeds_m_s) {
@@ -84,11 +78,11 @@ LeaveOneOutTable read_leave_one_out_csv(const std::filesystem::path& file) {
       throw io::FormatError(file, io::field_place(line, "predictable"),
                             "expected yes or no, found " + io::in_quotes(f[2]));
     row.predictable = f[2] == "yes";
-    row.rms_db = loo_number(f[3], file, line, h[3]);
-    row.baseline_rms_db = loo_number(f[4], file, line, h[4]);
+    row.rms_db = io::parse_optional_number(f[3], file, line, h[3]);
+    row.baseline_rms_db = io::parse_optional_number(f[4], file, line, h[4]);
     for (std::size_t s = 0; s < speeds; ++s)
-      row.rms_db_by_speed.push_back(loo_number(f[5 + s], file, line, h[5 + s]));
-    row.weighted_mean_error_percent = loo_number(f[5 + speeds], file, line, h[5 + speeds]);
+      row.rms_db_by_speed.push_back(io::parse_optional_number(f[5 + s], file, line, h[5 + s]));
+    row.weighted_mean_error_percent = io::parse_optional_number(f[5 + speeds], file, line, h[5 + speeds]);
     row.reason = f[6 + speeds];
     table.rows.push_back(std::move(row));
   }

@@ -242,6 +242,13 @@ double parse_number(std::string_view field, const std::filesystem::path& file, s
   return value;
 }
 
+std::optional<double> parse_optional_number(std::string_view field,
+                                            const std::filesystem::path& file, std::size_t line,
+                                            std::string_view column) {
+  if (field.empty()) return std::nullopt;
+  return parse_number(field, file, line, column);
+}
+
 long long parse_integer(std::string_view field, const std::filesystem::path& file, std::size_t line,
                         std::string_view column) {
   const std::string_view text = trim(field);

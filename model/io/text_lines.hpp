@@ -76,6 +76,11 @@ std::string in_quotes(std::string_view text);
 double parse_number(std::string_view field, const std::filesystem::path& file, std::size_t line,
                     std::string_view column);
 
+// The same, where an empty field means no number (a table's cell with nothing to report).
+std::optional<double> parse_optional_number(std::string_view field,
+                                            const std::filesystem::path& file, std::size_t line,
+                                            std::string_view column);
+
 // A whole number written without a fraction or exponent (counts, millisecond timestamps).
 long long parse_integer(std::string_view field, const std::filesystem::path& file, std::size_t line,
                         std::string_view column);
