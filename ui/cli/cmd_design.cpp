@@ -173,7 +173,7 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->expected(2);
   cmd->add_option("--mix", o->mix, "The two materials of the range search")->capture_default_str();
   cmd->add_option("--forcing", o->forcing_model,
-                  "Forcing model from `nibrig forcing fit` (default: fit the catalog now)");
+                  "Forcing model from `nibrig forcing fit` (default: the catalog's, cached)");
   cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
   cmd->add_option("--template", o->inputs.design_template,
                   "Stylus the designs are built on (default: assets/designs/stylus_vero_tip2mm.json)");

@@ -156,7 +156,7 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--surface", o->surface, "Surface id (office, note, stone, glass, ...)")
       ->required();
   cmd->add_option("--forcing", o->forcing_model,
-                  "Forcing model from `nibrig forcing fit` (default: fit the catalog now)");
+                  "Forcing model from `nibrig forcing fit` (default: the catalog's, cached)");
   cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
   cmd->add_option("--template", o->inputs.design_template,
                   "Stylus the design points are built on (default: "

@@ -18,8 +18,8 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   cmd->add_option("--surface", o.surface, "Surface id (e.g. office, note, stone, glass)")->required();
   cmd->add_option("--catalog", o.catalog, "Catalog JSON (default: the bundled one)");
   cmd->add_option("--forcing", o.forcing_model,
-                  "Forcing model for design points (`nibrig forcing fit`; default: fit the "
-                  "catalog first)");
+                  "Forcing model for design points (`nibrig forcing fit`; default: the "
+                  "catalog's, cached)");
   cmd->add_option("--design", o.design,
                   "Stylus design JSON whose modes shape the vibration (default: assets/designs/"
                   "stylus_vero_tip2mm.json)");
