@@ -117,7 +117,7 @@ void BM_DesignGridSliderToVoice(benchmark::State& state) {
   for (auto _ : state) {
     const auto [fraction, tip] = slider(k++);
     auto sound = design::predicted_sound(design::predict_from_grid(b.setup, g, fraction, tip, "office"));
-    auto voice = nibrig::rt::build_voice(sound.name, sound.modal, sound.spectrum, rate, k);
+    auto voice = nibrig::rt::build_voice(sound, rate, k);
     benchmark::DoNotOptimize(voice.get());
   }
   state.counters["modes"] = g.modes;
