@@ -6,7 +6,6 @@
 #include <chrono>
 
 #include "tests/support/jack_server.hpp"
-#include "tests/ui/panel/test_space.hpp"
 #include "tests/ui/panel/windowed_panel.hpp"
 #include "ui/panel/panel.hpp"
 
@@ -17,12 +16,7 @@ using namespace std::chrono_literals;
 
 TEST(PanelPlayback, AClickedToolPlaysOnTheDeviceAndPlaysAgainAfterTheServerCameBack) {
   nibrig::testing::JackServer server;
-  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_playback";
-  std::filesystem::remove_all(dir);
-  PanelSetup setup;
-  setup.space = testing::write_small_space(dir);
-  setup.device = DeviceRequest{"jack", "system", 1, 64};
-  testing::WindowedPanel s(setup);
+  testing::WindowedPanel s(testing::small_space_on_jack("panel_playback"));
   ASSERT_TRUE(s.panel.error().empty()) << s.panel.error();
   ASSERT_TRUE(s.frames_until([&] { return s.panel.settled(); }, 60s));
   EXPECT_EQ(s.panel.status_line().rfind("jack system | ", 0), 0u) << s.panel.status_line();

@@ -8,7 +8,6 @@
 
 #include "tests/support/jack_server.hpp"
 #include "tests/support/test_paths.hpp"
-#include "tests/ui/panel/test_space.hpp"
 #include "tests/ui/panel/windowed_panel.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/rig_view.hpp"
@@ -20,12 +19,7 @@ using namespace std::chrono_literals;
 
 TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurnedOff) {
   nibrig::testing::JackServer server;
-  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_rig_actuator";
-  std::filesystem::remove_all(dir);
-  PanelSetup setup;
-  setup.space = testing::write_small_space(dir);
-  setup.device = DeviceRequest{"jack", "system", 1, 64};
-  testing::WindowedPanel s(setup);
+  testing::WindowedPanel s(testing::small_space_on_jack("panel_rig_actuator"));
   // What reaches the actuator: the audition's port and, while it exists, the rig's player's.
   const auto actuator_rms = [&s](std::size_t frames) {
     return s.recorded_rms(frames, {"nibrig-panel:outport 0", "nibrig-panel-rig:outport 0"});

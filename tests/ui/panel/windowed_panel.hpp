@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -13,10 +14,22 @@
 
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
+#include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/panel_window.hpp"
 
 namespace nibrig::ui::panel::testing {
+
+// A panel opening a small space (written under the build tree's scratch/`name`) on the test JACK
+// server's device, 64 frames a period.
+inline PanelSetup small_space_on_jack(const std::string& name) {
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / name;
+  std::filesystem::remove_all(dir);
+  PanelSetup setup;
+  setup.space = write_small_space(dir);
+  setup.device = DeviceRequest{"jack", "system", 1, 64};
+  return setup;
+}
 
 struct WindowedPanel {
   PanelWindow window;
