@@ -1,0 +1,121 @@
+/* The rig controller's firmware: the loop that joins the rig's protocol state, the speed loop, the
+ * board and the USB device. Interrupts only capture (frames, milliseconds, encoder edges, ADC
+ * conversions); everything else runs here. */
+#include <avr/interrupt.h>
+
+#include "board.h"
+#include "frame_fifo.h"
+#include "rig_device.h"
+#include "speed_loop.h"
+#include "usb_device.h"
+
+/* A packet leaves at the latest this long after its oldest frame was sampled (PROTOCOL.md allows
+ * 10 ms): the bound on the stream's latency at any rate. */
+#define STREAM_MAX_WAIT_US 4000u
+
+static struct rig rig;
+static struct frame_fifo fifo;
+static struct speed_estimator estimator;
+static struct speed_controller controller;
+static struct motor_guard guard;
+static uint16_t applied_rate;
+static uint8_t bootloader_asked;
+
+static void on_vendor_request(const uint8_t setup[8], const uint8_t *data, struct rig_reply *reply) {
+  if (data == 0 && !(setup[0] & 0x80) && (setup[6] | setup[7])) {
+    rig_refuse(&rig, setup[1], RIG_REFUSE_LENGTH);
+    reply->stall = 1;
+    return;
+  }
+  rig_control(&rig, setup, data, (uint32_t)board_clock_us(), reply);
+  if (reply->persist) board_persist_store_begin(&rig.persist);
+}
+
+/* Frames from the captured samples; the sequence also counts what the board could not capture. */
+static void make_frames(void) {
+  rig.sequence += board_take_lost_samples();
+  struct board_sample s;
+  while (board_take_sample(&s)) {
+    struct rig_adc_means adc;
+    /* Reciprocals instead of divisions: the AVR divides floats in software. */
+    static const float per[9] = {0.0f, 1.0f, 1.0f / 2, 1.0f / 3, 1.0f / 4, 1.0f / 5, 1.0f / 6, 1.0f / 7, 1.0f / 8};
+    for (uint8_t c = 0; c < 2; ++c) {
+      /* No conversion this period (the highest rates): the channel holds its last mean. */
+      static float last[2];
+      const uint8_t n = s.conversions[c];
+      if (n > 0) last[c] = (float)s.force_sum[c] * (n < 9 ? per[n] : 1.0f / (float)n);
+      adc.force_counts[c] = last[c];
+    }
+    struct rig_frame scratch;
+    struct rig_frame *f = rig.streaming ? frame_fifo_slot(&fifo) : 0;
+    rig_sample(&rig, s.t_us, &adc, f ? f : &scratch);
+    if (f) frame_fifo_push(&fifo);
+  }
+  if (rig.zero_taken) {
+    rig.zero_taken = 0;
+    board_persist_store_begin(&rig.persist);
+  }
+}
+
+static void run_speed_loop(void) {
+  const uint8_t ms = board_take_ms();
+  if (ms == 0) return;
+  const uint32_t now = (uint32_t)board_clock_us();
+  struct board_encoder e;
+  board_encoder_read(&e);
+  rig.speed_mm_s = rig_speed_from_counts(&rig, speed_estimate(&estimator, e.count, e.last_edge_us, now));
+  rig_tick_ms(&rig, now);
+  const float target = rig_speed_target(&rig);
+  const float duty = speed_controller_step(&controller, target, rig.speed_mm_s, 1e-3f * (float)ms);
+  switch (motor_guard_check(&guard, duty, target, rig.speed_mm_s, board_motor_current_A(), board_driver_fault(),
+                            e.edges, e.glitches)) {
+    case MOTOR_OK: break;
+    case MOTOR_ENCODER_FAULT: rig_fault(&rig, RIG_FAULT_ENCODER); break;
+    default: rig_fault(&rig, RIG_FAULT_MOTOR); break;
+  }
+  board_motor(rig_speed_target(&rig) > 0.0f ? duty : 0.0f);
+  board_led(rig.mode == RIG_SPEED || rig.mode == RIG_PROFILE);
+}
+
+static void stream(void) {
+  if (!rig.streaming) {
+    frame_fifo_clear(&fifo);
+  } else if (usb_device_configured() && usb_stream_idle() && frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US)) {
+    usb_stream_start(frame_fifo_take_packet(&fifo, usb_stream_buffer()));
+  }
+  usb_stream_service();
+}
+
+int main(void) {
+  struct rig_persist persist;
+  board_init();
+  if (!board_persist_load(&persist)) {
+    rig_persist_defaults(&persist);
+    board_new_serial(persist.serial);
+    board_persist_store_begin(&persist);
+  }
+  rig_init(&rig, &persist, (uint32_t)board_clock_us());
+  speed_controller_init(&controller);
+  applied_rate = rig.frame_rate_hz;
+  board_set_frame_rate(applied_rate);
+  usb_device_init(on_vendor_request, rig.persist.serial);
+  sei();
+  for (;;) {
+    board_kick_watchdog();
+    switch (usb_device_poll()) {
+      case USB_BUS_RESET: rig.streaming = 0; break; /* a new host asks for the stream itself */
+      case USB_BOOTLOADER_ASKED: bootloader_asked = 1; break;
+      case USB_NOTHING: break;
+    }
+    if (rig.frame_rate_hz != applied_rate) {
+      applied_rate = rig.frame_rate_hz;
+      board_set_frame_rate(applied_rate);
+    }
+    make_frames();
+    stream();
+    run_speed_loop();
+    stream();
+    board_persist_store_step();
+    if (bootloader_asked && usb_stream_idle()) board_enter_bootloader();
+  }
+}

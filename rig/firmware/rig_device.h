@@ -1,0 +1,166 @@
+/* The rig controller's protocol state (rig/PROTOCOL.md): requests, mode, profile, calibration,
+ * refusals, the watchdog and the frames' values. Plain C with no hardware in it, so that the same
+ * file runs on the ATmega32U4 and in the host's tests; the board supplies time, ADC means and the
+ * encoder's speed, and persists what `rig_persist` holds. */
+#ifndef NIBRIG_RIG_DEVICE_H
+#define NIBRIG_RIG_DEVICE_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RIG_PROTOCOL_VERSION 0x0101u
+#define RIG_FIRMWARE_VERSION "1.1.0"
+#define RIG_MAX_POINTS 64u
+#define RIG_MAX_SPEED_MM_S 300.0f
+#define RIG_MIN_RATE_HZ 1000u
+#define RIG_MAX_RATE_HZ 4000u
+#define RIG_WATCHDOG_MS 500u
+#define RIG_ADC_FULL_COUNTS 1023.0f
+#define RIG_SERIAL_BYTES 16u
+#define RIG_FRAME_BYTES 28u
+#define RIG_BOOTLOADER_KEY 0x4E42u
+
+enum rig_request {
+  RIG_IDENTIFY = 0x01,
+  RIG_GET_STATUS = 0x02,
+  RIG_SET_STREAMING = 0x03,
+  RIG_SET_SPEED = 0x10,
+  RIG_START_PROFILE = 0x11,
+  RIG_STOP = 0x12,
+  RIG_PROFILE_BEGIN = 0x20,
+  RIG_PROFILE_WRITE = 0x21,
+  RIG_PROFILE_END = 0x22,
+  RIG_PROFILE_READ = 0x23,
+  RIG_ZERO_FORCE = 0x30,
+  RIG_SET_FRAME_RATE = 0x31,
+  RIG_GET_CALIBRATION = 0x32,
+  RIG_SET_CALIBRATION = 0x33,
+  RIG_GET_GEOMETRY = 0x34,
+  RIG_SET_GEOMETRY = 0x35,
+  RIG_SET_SERIAL = 0x36,
+  RIG_ENTER_BOOTLOADER = 0x40
+};
+
+enum rig_refusal { RIG_REFUSE_NONE = 0, RIG_REFUSE_UNKNOWN, RIG_REFUSE_LENGTH, RIG_REFUSE_RANGE, RIG_REFUSE_ORDER };
+enum rig_mode { RIG_IDLE = 0, RIG_SPEED = 1, RIG_PROFILE = 2, RIG_PROFILE_DONE = 3 };
+enum rig_fault { RIG_FAULT_NONE = 0, RIG_FAULT_MOTOR = 1, RIG_FAULT_ENCODER = 2, RIG_FAULT_WATCHDOG = 3 };
+enum rig_flag {
+  RIG_NORMAL_SATURATED = 1u << 0,
+  RIG_TANGENTIAL_SATURATED = 1u << 1,
+  RIG_ENCODER_FAULT = 1u << 2,
+  RIG_MOTOR_FAULT = 1u << 3,
+  RIG_WATCHDOG_STOPPED = 1u << 4,
+  RIG_PROFILE_RUNNING = 1u << 5
+};
+
+/* Packed as the AVR lays structs out anyway (it has no alignment), so that the host's tests read
+ * the firmware's memory with these same definitions. */
+#pragma pack(push, 1)
+
+/* What the device keeps across power cycles (the board stores it in EEPROM). */
+struct rig_persist {
+  float counts_per_N[2]; /* normal, tangential */
+  float lever;
+  float zero_counts[2];
+  float counts_per_rev;
+  float radius_mm;
+  char serial[RIG_SERIAL_BYTES];
+};
+
+struct rig_point {
+  uint32_t t_ms;
+  float mm_s;
+};
+
+/* The answer to one control request. */
+struct rig_reply {
+  uint8_t stall;     /* refused: STALL the pipe */
+  uint8_t len;       /* IN: bytes in `data` */
+  uint8_t data[64];
+  uint8_t persist;   /* the persistent part changed: store it */
+  uint8_t bootloader;/* after the status stage, detach and start the bootloader */
+};
+
+/* The ADC's means over one frame period, in counts (0..1023). */
+struct rig_adc_means {
+  float force_counts[2];
+};
+
+struct rig_frame {
+  uint64_t t_us;
+  uint32_t sequence;
+  float speed_mm_s;
+  float force_N[2];
+  uint16_t flags;
+};
+
+struct rig {
+  struct rig_persist persist;
+  uint8_t streaming;
+  uint8_t mode;
+  uint8_t fault;
+  uint16_t sticky_flags; /* watchdog and fault flags until the next start */
+  uint16_t frame_rate_hz;
+  float target_mm_s;
+  float speed_mm_s; /* the encoder's, as the board last measured */
+  uint32_t sequence;
+  uint32_t last_control_us;
+  uint32_t profile_start_us;
+  uint16_t profile_expected; /* points announced by PROFILE_BEGIN */
+  uint16_t profile_received;
+  uint16_t profile_held; /* a complete profile, or 0 */
+  uint16_t profile_cursor;
+  struct rig_point profile[RIG_MAX_POINTS];
+  uint8_t refused_request;
+  uint8_t refusal;
+  /* ZERO_FORCE: the means of this many frames become the zero. */
+  uint16_t zeroing_frames_left;
+  uint16_t zeroing_frames;
+  float zeroing_sum[2];
+  uint8_t zero_taken; /* a new zero is in `persist`: store it */
+  /* From `persist`, kept so that a frame costs no division (the AVR divides floats in software). */
+  float newtons_per_count[2];
+  float full_scale_N[2];
+  float mm_per_count;
+};
+
+#pragma pack(pop)
+
+/* Factory values: the reference design's parts (rig/HARDWARE.md). */
+void rig_persist_defaults(struct rig_persist *p);
+/* 0 when `p` holds values the device can use (finite, positive, a printable serial). */
+int rig_persist_valid(const struct rig_persist *p);
+
+void rig_init(struct rig *r, const struct rig_persist *p, uint32_t now_us);
+
+/* One vendor control request: `setup` is the 8-byte setup packet, `data` an OUT request's data
+ * stage (wLength bytes). An OUT request longer than 64 bytes never reaches here: the USB layer
+ * refuses it with rig_refuse(). */
+void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uint32_t now_us,
+                 struct rig_reply *reply);
+void rig_refuse(struct rig *r, uint8_t request, enum rig_refusal why);
+
+/* Every millisecond: the watchdog, the profile's target, the mode. */
+void rig_tick_ms(struct rig *r, uint32_t now_us);
+/* A fault the board saw (motor or encoder): the motor stops until the next start. */
+void rig_fault(struct rig *r, enum rig_fault fault);
+/* The speed the loop is to reach now (0 when stopped). */
+float rig_speed_target(const struct rig *r);
+
+/* One frame from the frame period's ADC means; advances the sequence. Also feeds ZERO_FORCE. */
+void rig_sample(struct rig *r, uint64_t t_us, const struct rig_adc_means *adc, struct rig_frame *f);
+/* The frame's 28 bytes as PROTOCOL.md lays them out. */
+void rig_frame_encode(const struct rig_frame *f, uint8_t out[RIG_FRAME_BYTES]);
+/* The largest force either channel can report, N (for IDENTIFY and the saturation flag). */
+float rig_force_full_scale(const struct rig *r, int channel);
+/* Surface speed under the tip from encoder counts per second. */
+float rig_speed_from_counts(const struct rig *r, float counts_per_s);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
