@@ -1,17 +1,15 @@
 // A rig controller that exists only in the test process: umockdev shows libusb a USB device
-// (1209:000a) and hands every usbfs ioctl on its node to this object, which answers as a device
-// built from rig/PROTOCOL.md would — control requests, a bulk stream sampled on its own microsecond
-// clock, the watchdog — and misbehaves on demand (STALL, silence, lost and reordered frames,
-// unplug and replug). Run the test binary under umockdev-wrapper.
+// (1209:000a, usbfs_device.hpp) whose transfers this object answers as a device built from
+// rig/PROTOCOL.md would — control requests, a bulk stream sampled on its own microsecond clock,
+// the watchdog — and misbehaves on demand (STALL, silence, lost and reordered frames, unplug and
+// replug). Run the test binary under umockdev-wrapper.
 #pragma once
-
-#include <umockdev.h>
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <deque>
-#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -21,6 +19,7 @@
 #include "rig/sensor_frame.hpp"
 #include "rig/speed_profile.hpp"
 #include "rig/usb/usb_protocol.hpp"
+#include "tests/rig/usb/usbfs_device.hpp"
 
 namespace nibrig::rig::usb::testing {
 
@@ -78,43 +77,27 @@ class EmulatedRig {
   static constexpr double kLoadN = 2.2;  // the arm's load: the paper's normal force
   static constexpr double kForceFullScaleN = 20.0;
 
-  struct Urb {
-    UMockdevIoctlData* data = nullptr;  // the client's usbdevfs_urb, resolved (our reference)
-  };
-  struct Port {  // one opened device node: its URBs in the device and done
-    bool alive = true;
-    std::deque<Urb> pending_in;       // bulk IN waiting for a packet
-    std::deque<Urb> pending_control;  // control requests the device leaves unanswered
-    std::deque<Urb> done;        // to be reaped
-    std::deque<Urb> discarded;
-  };
   struct Reply {
     bool stall = false;
     bool ignore = false;
     std::vector<std::uint8_t> data;
   };
 
-  static gboolean on_ioctl(UMockdevIoctlBase* base, UMockdevIoctlClient* client, gpointer self);
-  gboolean handle_ioctl(UMockdevIoctlClient* client);
   Reply control(const std::uint8_t* setup, const std::uint8_t* data);
   Reply refuse(std::uint8_t request, Refusal why);
-  void add_to_testbed();
-  std::string devnode() const;
-  std::string syspath() const;
+  void answer_control();
   void firmware_loop();
   void sample_until(std::uint64_t now_us);
   void send_packets(std::uint64_t now_us);
   std::uint64_t clock_us() const;
 
-  UMockdevTestbed* testbed_;
   EmulatedRigConfig config_;
-  UMockdevIoctlBase* handler_ = nullptr;
   std::chrono::steady_clock::time_point power_up_;
-  std::vector<std::string> attached_;
+  UsbfsDevice usbfs_;
 
-  mutable std::mutex mutex_;  // the ioctl thread, the firmware thread and the test's own
-  std::map<std::string, Port> ports_;
-  std::string current_devnode_;
+  mutable std::mutex mutex_;  // the firmware thread's and the test's own
+  std::condition_variable wake_;
+  bool submitted_ = false;
   bool plugged_ = true;
   // Device state (PROTOCOL.md).
   bool streaming_ = false;
@@ -153,19 +136,6 @@ class EmulatedRig {
 
   std::atomic<bool> running_{true};
   std::thread firmware_;
-};
-
-// A fresh umockdev testbed for one test (its own /sys and /dev), released at the end.
-class Testbed {
- public:
-  Testbed() : testbed_(umockdev_testbed_new()) {}
-  ~Testbed() { g_object_unref(testbed_); }
-  Testbed(const Testbed&) = delete;
-  Testbed& operator=(const Testbed&) = delete;
-  UMockdevTestbed* get() const { return testbed_; }
-
- private:
-  UMockdevTestbed* testbed_;
 };
 
 }  // namespace nibrig::rig::usb::testing
