@@ -26,13 +26,16 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
   libgtest-dev libgmock-dev umockdev libclang-rt-14-dev
+  # The rig controller's firmware in rig/firmware: Debian's AVR toolchain builds it, and simavr runs it
+  # in the tests; libsimavr's pkg-config file needs libelf's
+  gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev
   # Only the bench job's: Google Benchmark, the numpy and scipy references beside it
   libbenchmark-dev python3-numpy python3-scipy
 )
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
 window=(xvfb xauth libgl1-mesa-dri)
-test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev)
+test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
 bench_only=(libbenchmark-dev python3-numpy python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.
@@ -127,7 +130,7 @@ esac
 stage_done "installing packages"
 # The tree a user runs (demo, panel, bench, build) and the test job's scenario tree are one: clang,
 # Release. clang compiles this code faster than GCC 12, and the demo is the first wait.
-release=(build/release -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release)
+release=(build/release -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release)
 with_panel=-DNIBRIG_BUILD_PANEL=ON  # said each time: the demo's configuration of the tree leaves it OFF
 case "$job" in
   demo)
@@ -144,8 +147,9 @@ case "$job" in
     # Two trees, each test in one (README, "Tests"). The libraries' own suites (label unit) under
     # ASan+UBSan, compiled by clang, which builds them with the sanitizers in well under GCC's
     # time. Line tables only (-g1): reports still name file and line.
-    configure_and_build build/asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DNIBRIG_SANITIZE=ON -DNIBRIG_TESTS=unit -DNIBRIG_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+    configure_and_build build/asan -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DNIBRIG_SANITIZE=ON -DNIBRIG_TESTS=unit -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_BUILD_FIRMWARE=ON \
+      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
     # The faces end to end and the checks whose time is the feature (label scenario) in Release,
     # the build that plays, with LeakSanitizer linked in where the sanitizer build had it.
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=ON -DNIBRIG_TESTS=scenario \

@@ -20,6 +20,10 @@ pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
 if(NIBRIG_BUILD_TESTS)
   pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)
 endif()
+# The firmware's tests run its ELF on simavr's ATmega32U4 (libsimavr 1.6, which needs libelf).
+if(NIBRIG_BUILD_TESTS AND NIBRIG_BUILD_FIRMWARE)
+  pkg_check_modules(SIMAVR REQUIRED IMPORTED_TARGET simavr)
+endif()
 pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot plplot-c++)
 find_package(Spectra 1.0 REQUIRED PATHS /usr/share/spectra/cmake)
 # Gmsh ships only a header and a shared library in Debian (no CMake or pkg-config file).

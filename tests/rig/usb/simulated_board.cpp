@@ -1,0 +1,331 @@
+#include "tests/rig/usb/simulated_board.hpp"
+
+#include <simavr/avr_adc.h>
+#include <simavr/avr_eeprom.h>
+#include <simavr/avr_extint.h>
+#include <simavr/avr_ioport.h>
+#include <simavr/avr_usb.h>
+#include <simavr/sim_elf.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+
+namespace nibrig::rig::usb::testing {
+namespace {
+
+constexpr std::uint32_t kFrequency = 16'000'000;
+constexpr avr_cycle_count_t kPhysicsCycles = 800;  // 50 us: 20 steps a frame at 1 kHz
+constexpr std::uint32_t kDataSpace = 0x800000;      // avr-gcc's offset of RAM addresses in the ELF
+// ATmega32U4 registers (data-space addresses, avr/iom32u4.h).
+constexpr std::uint16_t kUeintx = 0xE8, kUenum = 0xE9;
+constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0x91, kTcnt3 = 0x94, kPortb = 0x25;
+constexpr double kAvccMillivolts = 5000.0;
+
+std::uint64_t read_u64(const std::vector<std::uint8_t>& b) {
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(b[i]) << (8 * i);
+  return v;
+}
+
+}  // namespace
+
+SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::uint8_t>& eeprom,
+                               TurntablePhysics physics)
+    : physics_(physics) {
+  // elf_firmware_t's layout follows ELF_SYMBOLS, which the header and the library agree on (1).
+  auto firmware = std::make_unique<elf_firmware_t>();
+  std::memset(firmware.get(), 0, sizeof(elf_firmware_t));
+  if (elf_read_firmware(elf.c_str(), firmware.get()) != 0) {
+    throw std::runtime_error("simavr cannot read the firmware " + elf);
+  }
+  for (std::uint32_t i = 0; i < firmware->symbolcount; ++i) {
+    symbols_.emplace_back(firmware->symbol[i]->symbol, firmware->symbol[i]->addr);
+  }
+  avr_ = avr_make_mcu_by_name("atmega32u4");
+  if (avr_ == nullptr) throw std::runtime_error("simavr has no atmega32u4 core");
+  avr_init(avr_);
+  avr_->log = LOG_NONE;
+  avr_->frequency = kFrequency;
+  avr_->vcc = avr_->avcc = avr_->aref = static_cast<std::uint32_t>(kAvccMillivolts);
+  avr_load_firmware(avr_, firmware.get());
+  if (!eeprom.empty()) {
+    avr_eeprom_desc_t desc{const_cast<std::uint8_t*>(eeprom.data()), 0, static_cast<std::uint32_t>(eeprom.size())};
+    avr_ioctl(avr_, AVR_IOCTL_EEPROM_SET, &desc);
+  }
+  for (const auto& [name, address] : symbols_) {
+    if (name == "clock_overflows") clock_overflows_address_ = address - kDataSpace;
+    if (name == "next_frame_ticks") next_frame_address_ = address - kDataSpace;
+  }
+  if (clock_overflows_address_ == 0 || next_frame_address_ == 0) {
+    throw std::runtime_error(elf + " is not the rig controller's firmware (no device clock symbols)");
+  }
+  // The encoder's INT0/INT1 run on any edge. simavr keeps raising a low-level interrupt for as long
+  // as a pin stays low once it saw the pin fall in that mode (the reset state, before the firmware
+  // chose its edges); the encoder's pins rest low, so that would never stop.
+  avr_extint_set_strict_lvl_trig(avr_, 0, 0);
+  avr_extint_set_strict_lvl_trig(avr_, 1, 0);
+  // The driver is awake and well (nFAULT high); the encoder's pins start low (its first state).
+  set_pin('D', 4, true);
+  step_physics(0.0);
+  avr_cycle_timer_register(avr_, kPhysicsCycles, &SimulatedBoard::on_physics, this);
+}
+
+SimulatedBoard::~SimulatedBoard() {
+  avr_terminate(avr_);
+  std::free(avr_);
+}
+
+void SimulatedBoard::run_to_cycle(std::uint64_t cycle) {
+  while (avr_->cycle < cycle) {
+    const int state = avr_run(avr_);
+    if (state == cpu_Done || state == cpu_Crashed) throw std::runtime_error("the simulated firmware stopped");
+  }
+}
+
+void SimulatedBoard::run_us(double us) { run_to_cycle(avr_->cycle + static_cast<std::uint64_t>(us * 16.0)); }
+
+std::uint16_t SimulatedBoard::reg16(std::uint16_t low_address) const {
+  return static_cast<std::uint16_t>(avr_->data[low_address] | (avr_->data[low_address + 1] << 8));
+}
+
+// An I/O register as the firmware would read it: simavr computes some (a timer's count) on access.
+std::uint8_t SimulatedBoard::read_io(std::uint16_t address) const {
+  const auto& io = avr_->io[AVR_DATA_TO_IO(address)];
+  return io.r.c != nullptr ? io.r.c(avr_, address, io.r.param) : avr_->data[address];
+}
+
+std::uint64_t SimulatedBoard::device_us_at_cycle(std::uint64_t cycle) const {
+  // Timer 3 counts cycles / 8 from where it started; the firmware's clock is its count / 2.
+  std::uint32_t overflows = 0;
+  std::memcpy(&overflows, &avr_->data[clock_overflows_address_], sizeof overflows);
+  const std::uint8_t low = read_io(kTcnt3);  // first: reading the low byte latches the high one
+  const std::uint16_t count = static_cast<std::uint16_t>(low | (read_io(kTcnt3 + 1) << 8));
+  const std::uint64_t ticks = (static_cast<std::uint64_t>(overflows) << 16) | count;
+  const std::uint64_t started = avr_->cycle - ticks * 8;
+  return cycle < started ? 0 : (cycle - started) / 16;
+}
+
+std::uint64_t SimulatedBoard::device_us() const { return device_us_at_cycle(avr_->cycle); }
+
+std::uint64_t SimulatedBoard::cycle_at_device_us(std::uint64_t device_us) const {
+  return avr_->cycle + (device_us - this->device_us()) * 16;
+}
+
+std::uint64_t SimulatedBoard::next_frame_device_us() const {
+  return read_u64(read_symbol("next_frame_ticks", 8)) / 2;
+}
+
+void SimulatedBoard::pulse_force(std::uint64_t frame_end_us, double extra_N) {
+  pulse_ = std::make_pair(frame_end_us, extra_N);
+}
+
+void SimulatedBoard::set_pin(char port, int pin, bool high) {
+  avr_irq_t* irq = avr_io_getirq(avr_, AVR_IOCTL_IOPORT_GETIRQ(port), pin);
+  avr_raise_irq(irq, high ? 1 : 0);
+}
+
+avr_cycle_count_t SimulatedBoard::on_physics(avr_t*, avr_cycle_count_t when, void* self) {
+  static_cast<SimulatedBoard*>(self)->step_physics(static_cast<double>(kPhysicsCycles) / kFrequency);
+  return when + kPhysicsCycles;
+}
+
+void SimulatedBoard::step_physics(double dt_s) {
+  const TurntablePhysics& p = physics_;
+  // The H-bridge in PH/EN mode: EN (OC1A) high drives, low brakes (both low sides on); asleep, it
+  // lets the motor coast.
+  const bool awake = avr_->data[kPortb] & (1 << 6);
+  const bool pwm_on = avr_->data[kTccr1a] & (1 << 7);
+  const std::uint16_t top = reg16(kIcr1);
+  duty_ = pwm_on && top > 0 ? std::min(1.0, static_cast<double>(reg16(kOcr1a)) / top) : 0.0;
+  const double direction = (avr_->data[kPortb] & (1 << 4)) ? -1.0 : 1.0;
+  const double volts = direction * duty_ * p.supply_V;
+  current_A_ = awake ? (volts - p.volts_per_rad_s * omega_) / p.winding_ohm : 0.0;
+  const double drive = p.torque_per_A * current_A_;
+  const double load = p.friction_Nm + mu_ * normal_N_ * p.track_radius_m;
+  if (omega_ == 0.0 && std::abs(drive) <= load) {
+    // Held by static friction.
+  } else {
+    const double before = omega_;
+    omega_ += (drive - std::copysign(load, omega_ != 0.0 ? omega_ : drive)) / p.inertia_kg_m2 * dt_s;
+    if (before != 0.0 && std::signbit(before) != std::signbit(omega_)) omega_ = 0.0;  // friction stops, never reverses
+  }
+  theta_ += omega_ * dt_s;
+
+  // The encoder: A leads B going forward (00, 10, 11, 01).
+  const auto count = static_cast<long long>(std::floor(theta_ / (2.0 * M_PI) * p.counts_per_rev));
+  while (encoder_count_ != count) {
+    encoder_count_ += count > encoder_count_ ? 1 : -1;
+    static constexpr bool kA[4] = {false, true, true, false};
+    static constexpr bool kB[4] = {false, false, true, true};
+    const int phase = static_cast<int>(((encoder_count_ % 4) + 4) % 4);
+    if (encoder_pins_[0] != kA[phase]) set_pin('D', 0, encoder_pins_[0] = kA[phase]);
+    if (encoder_pins_[1] != kB[phase]) set_pin('D', 1, encoder_pins_[1] = kB[phase]);
+  }
+
+  // The analog side: motor current, then the two bridges through their amplifiers.
+  avr_irq_t* adc = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
+  auto millivolts = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 5.0) * 1000.0 + 0.5); };
+  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts(std::abs(current_A_) * p.current_V_per_A));
+  double normal = normal_N_;
+  if (pulse_ && avr_->data[kTccr3b] != 0) {
+    // The frame ending at pulse_->first averages the period before it.
+    const std::uint64_t now = device_us();
+    std::uint16_t period_ticks = 0;
+    const auto raw = read_symbol("frame_period_ticks", 2);
+    period_ticks = static_cast<std::uint16_t>(raw[0] | (raw[1] << 8));
+    const std::uint64_t start = pulse_->first - period_ticks / 2;
+    if (now > start && now <= pulse_->first) normal += pulse_->second;
+    if (now > pulse_->first) pulse_.reset();
+  }
+  const double tangential = omega_ != 0.0 ? std::copysign(mu_ * normal_N_, omega_) : 0.0;
+  avr_raise_irq(adc + ADC_IRQ_ADC7, millivolts(p.amplifier_zero_V + normal * p.amplifier_V_per_N));
+  avr_raise_irq(adc + ADC_IRQ_ADC6, millivolts(p.amplifier_zero_V + tangential * p.amplifier_V_per_N));
+}
+
+std::vector<std::uint8_t> SimulatedBoard::read_symbol(const std::string& name, std::size_t size) const {
+  for (const auto& [symbol, address] : symbols_) {
+    if (symbol == name && address >= kDataSpace) {
+      const std::uint32_t at = address - kDataSpace;
+      return {avr_->data + at, avr_->data + at + size};
+    }
+  }
+  throw std::runtime_error("the firmware has no variable '" + name + "'");
+}
+
+std::vector<std::uint8_t> SimulatedBoard::eeprom() const {
+  std::vector<std::uint8_t> bytes(1024);
+  avr_eeprom_desc_t desc{bytes.data(), 0, static_cast<std::uint32_t>(bytes.size())};
+  avr_ioctl(avr_, AVR_IOCTL_EEPROM_GET, &desc);
+  if (desc.ee != nullptr && desc.ee != bytes.data()) std::memcpy(bytes.data(), desc.ee, bytes.size());
+  return bytes;
+}
+
+// --- USB, as the host controller drives it ---
+
+void SimulatedBoard::begin_control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out,
+                                   std::size_t in_capacity) {
+  setup_ = setup;
+  out_ = out;
+  in_.clear();
+  in_capacity_ = in_capacity;
+  out_sent_ = 0;
+  outcome_ = 0;
+  avr_io_usb io{0, 8, setup_.data()};
+  avr_ioctl(avr_, AVR_IOCTL_USB_SETUP, &io);
+  const bool in = setup_[0] & 0x80;
+  const std::size_t length = setup_[6] | (setup_[7] << 8);
+  stage_ = in ? (length > 0 ? Stage::kDataIn : Stage::kStatusIn) : (length > 0 ? Stage::kDataOut : Stage::kStatusIn);
+}
+
+// One transaction of the transfer in progress; the outcome once its status stage is done.
+std::optional<ControlOutcome> SimulatedBoard::step_control() {
+  std::uint8_t buffer[64];
+  const bool in = setup_[0] & 0x80;
+  switch (stage_) {
+    case Stage::kIdle: return std::nullopt;
+    case Stage::kDataIn: {
+      avr_io_usb io{0, sizeof buffer, buffer};
+      const int r = avr_ioctl(avr_, AVR_IOCTL_USB_READ, &io);
+      if (r == AVR_IOCTL_USB_NAK) return std::nullopt;
+      if (r == AVR_IOCTL_USB_STALL) {
+        stage_ = Stage::kIdle;
+        return ControlOutcome{-EPIPE, {}};
+      }
+      in_.insert(in_.end(), buffer, buffer + io.sz);
+      const std::size_t length = setup_[6] | (setup_[7] << 8);
+      if (io.sz < 64 || in_.size() >= length) stage_ = Stage::kStatusOut;
+      return std::nullopt;
+    }
+    case Stage::kDataOut: {
+      // A real controller NAKs the data while the SETUP sits unread in the endpoint's bank; simavr
+      // would write the data over it. So the data waits until the firmware has taken the SETUP.
+      if (out_sent_ == 0 && setup_unread()) return std::nullopt;
+      const std::size_t n = std::min<std::size_t>(64, out_.size() - out_sent_);
+      std::memcpy(buffer, out_.data() + out_sent_, n);
+      avr_io_usb io{0, static_cast<std::uint32_t>(n), buffer};
+      const int r = avr_ioctl(avr_, AVR_IOCTL_USB_WRITE, &io);
+      if (r == AVR_IOCTL_USB_NAK) return std::nullopt;
+      if (r == AVR_IOCTL_USB_STALL) {
+        stage_ = Stage::kIdle;
+        return ControlOutcome{-EPIPE, {}};
+      }
+      out_sent_ += n;
+      if (out_sent_ >= out_.size()) stage_ = Stage::kStatusIn;
+      return std::nullopt;
+    }
+    case Stage::kStatusIn: {  // after an OUT (or no) data stage: the device's zero-length IN
+      avr_io_usb io{0, sizeof buffer, buffer};
+      const int r = avr_ioctl(avr_, AVR_IOCTL_USB_READ, &io);
+      if (r == AVR_IOCTL_USB_NAK) return std::nullopt;
+      stage_ = Stage::kIdle;
+      return ControlOutcome{r == AVR_IOCTL_USB_STALL ? -EPIPE : 0, {}};
+    }
+    case Stage::kStatusOut: {  // after an IN data stage: the host's zero-length OUT
+      avr_io_usb io{0, 0, buffer};
+      const int r = avr_ioctl(avr_, AVR_IOCTL_USB_WRITE, &io);
+      if (r == AVR_IOCTL_USB_NAK) return std::nullopt;
+      stage_ = Stage::kIdle;
+      if (r == AVR_IOCTL_USB_STALL) return ControlOutcome{-EPIPE, {}};
+      if (in_.size() > in_capacity_ && in) in_.resize(in_capacity_);
+      return ControlOutcome{0, in_};
+    }
+  }
+  return std::nullopt;
+}
+
+// EP0's RXSTPI, read as the firmware would with EP0 selected (its UENUM put back after).
+bool SimulatedBoard::setup_unread() const {
+  const std::uint8_t selected = avr_->data[kUenum];
+  avr_->data[kUenum] = 0;
+  const bool unread = read_io(kUeintx) & (1 << 3);
+  avr_->data[kUenum] = selected;
+  return unread;
+}
+
+ControlOutcome SimulatedBoard::control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out,
+                                       std::size_t in_capacity) {
+  begin_control(setup, out, in_capacity);
+  // A host gives a control transfer 5 s; simulated time, so this is about the firmware, not the machine.
+  const std::uint64_t deadline = avr_->cycle + 5ull * kFrequency;
+  while (avr_->cycle < deadline) {
+    run_us(20.0);
+    if (auto outcome = step_control()) return *outcome;
+  }
+  stage_ = Stage::kIdle;
+  throw std::runtime_error("the simulated firmware did not complete a control transfer in 5 s");
+}
+
+std::optional<std::vector<std::uint8_t>> SimulatedBoard::bulk_in_packet(std::uint8_t endpoint) {
+  std::uint8_t buffer[64];
+  avr_io_usb io{static_cast<std::uint8_t>(endpoint & 0x7F), sizeof buffer, buffer};
+  const int r = avr_ioctl(avr_, AVR_IOCTL_USB_READ, &io);
+  // simavr answers a NAK on a bulk endpoint as an empty packet: the firmware never sends one.
+  if (r != AVR_IOCTL_USB_OK || io.sz == 0) return std::nullopt;
+  return std::vector<std::uint8_t>(buffer, buffer + io.sz);
+}
+
+std::vector<std::uint8_t> SimulatedBoard::enumerate(int address) {
+  // Attached (the firmware cleared DETACH at start-up), then the bus reset and the kernel's requests.
+  run_us(20'000.0);
+  avr_ioctl(avr_, AVR_IOCTL_USB_RESET, nullptr);
+  run_us(1'000.0);
+  auto require = [](const ControlOutcome& o, const char* what) {
+    if (o.status != 0) throw std::runtime_error(std::string("the simulated firmware refused ") + what);
+    return o.in;
+  };
+  std::vector<std::uint8_t> descriptors = require(control({0x80, 6, 0, 1, 0, 0, 18, 0}, {}, 18), "GET_DESCRIPTOR(device)");
+  require(control({0x00, 5, static_cast<std::uint8_t>(address), 0, 0, 0, 0, 0}), "SET_ADDRESS");
+  const auto head = require(control({0x80, 6, 0, 2, 0, 0, 9, 0}, {}, 9), "GET_DESCRIPTOR(configuration)");
+  if (head.size() < 4) throw std::runtime_error("the simulated firmware's configuration descriptor is short");
+  const std::uint8_t total = head[2];
+  const auto configuration = require(control({0x80, 6, 0, 2, 0, 0, total, 0}, {}, total), "GET_DESCRIPTOR(configuration)");
+  descriptors.insert(descriptors.end(), configuration.begin(), configuration.end());
+  require(control({0x00, 9, 1, 0, 0, 0, 0, 0}), "SET_CONFIGURATION");
+  return descriptors;
+}
+
+}  // namespace nibrig::rig::usb::testing

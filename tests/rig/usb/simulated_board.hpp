@@ -1,0 +1,118 @@
+// The reference rig controller's board with its firmware running: simavr's ATmega32U4 executes the
+// ELF that rig/firmware builds, and this object is the world around the chip (rig/HARDWARE.md):
+// the gearmotor and turntable driven by the PWM pin through the H-bridge, the encoder's quadrature
+// edges from the turntable's angle, the motor current into the ADC, and the two load cells' amplified
+// bridge voltages from a force the test sets or the contact's mu*N. Its USB port is driven as a host
+// controller would: control transfers in stages, bulk IN packet by packet. Not thread-safe: one
+// thread runs the simulation and talks to the port.
+#pragma once
+
+#include <simavr/sim_avr.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nibrig::rig::usb::testing {
+
+// The turntable's mechanics and electrics reflected to the output shaft: a Pololu 37D 70:1 12 V
+// gearmotor (stall 5.5 A and 2.65 N m, no load 150 rpm at 0.2 A) turning a disc, the tip 60 mm out.
+struct TurntablePhysics {
+  double supply_V = 12.0;
+  double winding_ohm = 12.0 / 5.5;
+  double torque_per_A = 2.65 / 5.5;
+  double volts_per_rad_s = 0.736;  // (12 V - 0.2 A * R) / 15.7 rad/s
+  double friction_Nm = 0.096;      // 0.2 A at no load
+  double inertia_kg_m2 = 0.009;    // the rotor through the gearbox dominates the disc
+  double track_radius_m = 0.060;
+  double counts_per_rev = 4480.0;  // 64 counts a motor turn, times 70
+  double current_V_per_A = 1.65;   // DRV8876 IPROPI, 1100 uA/A into 1.5 kOhm
+  double amplifier_V_per_N = 0.255;
+  double amplifier_zero_V = 2.5;  // the amplifier's reference (HARDWARE.md)
+};
+
+struct ControlOutcome {
+  int status = 0;  // 0, or -EPIPE for a STALL
+  std::vector<std::uint8_t> in;
+};
+
+class SimulatedBoard {
+ public:
+  // Loads the ELF and powers the board up with `eeprom` (empty: erased, as a new chip).
+  explicit SimulatedBoard(const std::string& elf, const std::vector<std::uint8_t>& eeprom = {},
+                          TurntablePhysics physics = {});
+  ~SimulatedBoard();
+  SimulatedBoard(const SimulatedBoard&) = delete;
+  SimulatedBoard& operator=(const SimulatedBoard&) = delete;
+
+  // Runs the chip for `us` of simulated time (also: until `cycle` is reached).
+  void run_us(double us);
+  void run_to_cycle(std::uint64_t cycle);
+  std::uint64_t cycle() const { return avr_->cycle; }
+  double sim_us() const { return static_cast<double>(avr_->cycle) / 16.0; }
+  // The firmware's own clock (timer 3) at the current instant, and at a simulated instant.
+  std::uint64_t device_us() const;
+  std::uint64_t device_us_at_cycle(std::uint64_t cycle) const;
+  std::uint64_t cycle_at_device_us(std::uint64_t device_us) const;
+  // The device time of the next frame the firmware will sample.
+  std::uint64_t next_frame_device_us() const;
+
+  // The world around the chip.
+  void set_normal_force(double newtons) { normal_N_ = newtons; }
+  void set_friction(double mu) { mu_ = mu; }
+  // Extra normal force over the frame period that ends at device time `frame_end_us`: the frame
+  // sampled then carries all of it, no other frame any of it.
+  void pulse_force(std::uint64_t frame_end_us, double extra_N);
+  double surface_speed_m_s() const { return omega_ * physics_.track_radius_m; }
+  double duty() const { return duty_; }
+  double motor_current_A() const { return current_A_; }
+  const TurntablePhysics& physics() const { return physics_; }
+
+  // USB, as the host controller: reset and enumerate (returns the device and configuration
+  // descriptors); control transfers stepwise (begin, then step until an outcome) or whole.
+  std::vector<std::uint8_t> enumerate(int address);
+  void begin_control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out,
+                     std::size_t in_capacity);
+  bool control_busy() const { return stage_ != Stage::kIdle; }
+  std::optional<ControlOutcome> step_control();
+  ControlOutcome control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out = {},
+                         std::size_t in_capacity = 0);
+  // One USB packet from a bulk IN endpoint, or nothing (NAK).
+  std::optional<std::vector<std::uint8_t>> bulk_in_packet(std::uint8_t endpoint);
+
+  // Memory: a firmware variable by its ELF symbol, and the EEPROM.
+  std::vector<std::uint8_t> read_symbol(const std::string& name, std::size_t size) const;
+  std::vector<std::uint8_t> eeprom() const;
+
+ private:
+  enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };
+  static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
+  void step_physics(double dt_s);
+  void set_pin(char port, int pin, bool high);
+  std::uint16_t reg16(std::uint16_t low_address) const;
+  std::uint8_t read_io(std::uint16_t address) const;
+  bool setup_unread() const;
+
+  TurntablePhysics physics_;
+  avr_t* avr_ = nullptr;
+  std::vector<std::pair<std::string, std::uint32_t>> symbols_;
+  std::uint32_t clock_overflows_address_ = 0;
+  std::uint32_t next_frame_address_ = 0;
+
+  double normal_N_ = 2.2;  // the paper's load
+  double mu_ = 0.3;
+  std::optional<std::pair<std::uint64_t, double>> pulse_;  // frame end, extra newtons
+  double omega_ = 0.0, theta_ = 0.0, duty_ = 0.0, current_A_ = 0.0;
+  long long encoder_count_ = 0;
+  std::array<bool, 2> encoder_pins_{};
+
+  Stage stage_ = Stage::kIdle;
+  std::array<std::uint8_t, 8> setup_{};
+  std::vector<std::uint8_t> out_, in_;
+  std::size_t in_capacity_ = 0, out_sent_ = 0;
+  int outcome_ = 0;
+};
+
+}  // namespace nibrig::rig::usb::testing
