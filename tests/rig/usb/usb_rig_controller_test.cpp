@@ -108,7 +108,7 @@ TEST(UsbRigController, ListsEveryControllerWithSerialBusAndVersion) {
   EXPECT_EQ(found[0].problem, "");
   EXPECT_EQ(found[1].serial, "NIB-B");
   EXPECT_EQ(found[1].address, 3);
-  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.0, firmware emulated-1.0)");
+  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.1, firmware emulated-1.1)");
 }
 
 TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
@@ -122,7 +122,7 @@ TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
   const std::string message = error_of([] { UsbRigController rig({.serial = "NIB-X"}); });
   EXPECT_EQ(message,
             "no nibrig rig controller (USB 1209:000a) with serial NIB-X; found: NIB-A (bus 1, "
-            "address 2, protocol 1.0, firmware emulated-1.0)");
+            "address 2, protocol 1.1, firmware emulated-1.1)");
 }
 
 TEST(UsbRigController, OpensTheOneWithTheSerialAskedFor) {
