@@ -321,7 +321,8 @@ void list_rig_controllers() {
 
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto* rig_cmd = app.add_subcommand(
-      "rig", "The turntable rig: list devices, capture sessions, compare with the simulation");
+      "rig", "The turntable rig: list devices, capture sessions, compare with the simulation, set up and "
+             "flash a USB controller");
   rig_cmd->require_subcommand(1);
 
   auto* list = rig_cmd->add_subcommand("devices", "USB rig controllers and audio inputs, by name");
@@ -359,6 +360,8 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
     configure_logging(global->verbosity);
     compare(*compare_options);
   });
+
+  add_rig_setup_commands(rig_cmd, global);
 }
 
 }  // namespace nibrig::ui::cli
