@@ -138,6 +138,18 @@ TEST(FirmwareFlash, NoBootloaderPortNamesTheSerialPortsThereAndWhatToDo) {
   EXPECT_TRUE(device.entered_bootloader());
 }
 
+TEST(FirmwareFlash, AMissingAvrdudeSaysHowToInstallIt) {
+  const auto hex = nibrig::test::scratch_dir("firmware_flash_no_avrdude") / "nibrig-rig.hex";
+  write_intel_hex(hex, flash_test_image(16));
+  std::string message;
+  try {
+    run_avrdude("/nonexistent/avrdude", "/dev/ttyACM0", hex);
+  } catch (const FirmwareFlashError& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message, "cannot run '/nonexistent/avrdude': is avrdude installed? (Debian: apt-get install avrdude)");
+}
+
 TEST(FirmwareFlash, AMissingHexSaysHowToBuildIt) {
   std::string message;
   try {
