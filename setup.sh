@@ -20,6 +20,7 @@ packages=(
   libplplot-dev plplot-driver-cairo
   librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libusb-1.0-0-dev libumockdev-dev  # the rig's USB controller; its tests emulate the device with umockdev
+  avrdude  # `nibrig rig flash` writes the controller's firmware with it; its tests run it on a pty
   libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
   libimgui-dev libglfw3-dev  # the panel: ImGui 1.86 + GLFW + OpenGL 3
   # A window without a screen or a GPU, for the panel, its tests and its benchmark: Xvfb, Mesa
@@ -39,7 +40,7 @@ test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev gcc-avr binutil
 bench_only=(libbenchmark-dev python3-numpy python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.
-not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2)
+not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2 avrdude)
 
 # ccache pays only from a warm cache: through a cold one a first build is slower, and CI and a new
 # user always start cold. So it is used where its cache folder already exists:

@@ -65,8 +65,8 @@ struct DeviceList {
 std::string describe(const RigControllerInfo& info) {
   const std::string where = "bus " + std::to_string(info.bus) + ", address " + std::to_string(info.address);
   if (!info.problem.empty()) return "? (" + where + ": " + info.problem + ")";
-  return info.serial + " (" + where + ", protocol " + std::to_string(info.protocol_version >> 8) +
-         "." + std::to_string(info.protocol_version & 0xFFu) + ", firmware " + info.firmware + ")";
+  return info.serial + " (" + where + ", protocol " + version_text(info.protocol_version) + ", firmware " +
+         info.firmware + ")";
 }
 
 std::vector<RigControllerInfo> list_rig_controllers(libusb_context* context) {

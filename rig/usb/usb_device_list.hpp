@@ -23,7 +23,7 @@ struct RigControllerInfo {
   std::string problem;  // why it could not be opened or identified; empty when fine
 };
 
-// "NIB-0001 (bus 1, address 2, protocol 1.0, firmware 1.0.0)".
+// "NIB-0001 (bus 1, address 2, protocol 1.1, firmware 1.1.0)".
 std::string describe(const RigControllerInfo& info);
 
 // Every rig controller on the bus, each opened for a moment to identify it. Throws UsbRigError only

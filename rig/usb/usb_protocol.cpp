@@ -79,6 +79,10 @@ std::string request_name(std::uint8_t request) {
     case Request::kSetFrameRate: name = "SET_FRAME_RATE"; break;
     case Request::kGetCalibration: name = "GET_CALIBRATION"; break;
     case Request::kSetCalibration: name = "SET_CALIBRATION"; break;
+    case Request::kGetGeometry: name = "GET_GEOMETRY"; break;
+    case Request::kSetGeometry: name = "SET_GEOMETRY"; break;
+    case Request::kSetSerial: name = "SET_SERIAL"; break;
+    case Request::kEnterBootloader: name = "ENTER_BOOTLOADER"; break;
   }
   char code[8];
   std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(request));
@@ -175,6 +179,51 @@ std::array<std::uint8_t, kCalibrationBytes> encode_calibration(const ForceCalibr
 ForceCalibration decode_calibration(std::span<const std::uint8_t> b) {
   require_length(b, kCalibrationBytes, "GET_CALIBRATION");
   return {get_f32(&b[0]), get_f32(&b[4]), get_f32(&b[8])};
+}
+
+std::string version_text(std::uint16_t version) {
+  return std::to_string(version >> 8) + "." + std::to_string(version & 0xFFu);
+}
+
+std::string serial_problem(const std::string& serial) {
+  if (serial.empty()) return "a serial cannot be empty";
+  if (serial.size() > kSerialBytes) {
+    return "'" + serial + "' is " + std::to_string(serial.size()) + " characters; a serial holds at most 16";
+  }
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    const auto c = static_cast<unsigned char>(serial[i]);
+    if (c < 0x21 || c > 0x7E) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(c));
+      return "character " + std::to_string(i + 1) + " of the serial is byte " + code +
+             "; a serial is printable ASCII without spaces (0x21..0x7E)";
+    }
+  }
+  return {};
+}
+
+std::array<std::uint8_t, kGeometryBytes> encode_geometry(const Geometry& g) {
+  std::array<std::uint8_t, kGeometryBytes> b{};
+  put_f32(&b[0], g.counts_per_revolution);
+  put_f32(&b[4], g.track_radius_m * kMmPerM);
+  return b;
+}
+
+Geometry decode_geometry(std::span<const std::uint8_t> b) {
+  require_length(b, kGeometryBytes, "GET_GEOMETRY");
+  return {get_f32(&b[0]), get_f32(&b[4]) / kMmPerM};
+}
+
+std::array<std::uint8_t, kSerialBytes> encode_serial(const std::string& serial) {
+  if (const std::string problem = serial_problem(serial); !problem.empty()) throw UsbRigError(problem);
+  std::array<std::uint8_t, kSerialBytes> b{};
+  put_text(b.data(), serial, "the serial");
+  return b;
+}
+
+std::string decode_serial(std::span<const std::uint8_t> b) {
+  require_length(b, kSerialBytes, "SET_SERIAL");
+  return get_text(b.data());
 }
 
 std::array<std::uint8_t, 4> encode_speed(double speed_m_s) {

@@ -21,7 +21,11 @@ inline constexpr int kInterface = 0;
 inline constexpr std::uint8_t kStreamEndpoint = 0x81;
 inline constexpr std::uint8_t kRequestTypeIn = 0xC0;   // vendor, device, device to host
 inline constexpr std::uint8_t kRequestTypeOut = 0x40;  // vendor, device, host to device
-inline constexpr std::uint16_t kProtocolVersion = 0x0100;
+inline constexpr std::uint16_t kProtocolVersion = 0x0101;
+// The version that added GET/SET_GEOMETRY, SET_SERIAL and ENTER_BOOTLOADER.
+inline constexpr std::uint16_t kGeometryVersion = 0x0101;
+// ENTER_BOOTLOADER's wValue ("NB"): a stray request must not take the device off the bus.
+inline constexpr std::uint16_t kBootloaderKey = 0x4E42;
 
 enum class Request : std::uint8_t {
   kIdentify = 0x01,
@@ -38,6 +42,10 @@ enum class Request : std::uint8_t {
   kSetFrameRate = 0x31,
   kGetCalibration = 0x32,
   kSetCalibration = 0x33,
+  kGetGeometry = 0x34,
+  kSetGeometry = 0x35,
+  kSetSerial = 0x36,
+  kEnterBootloader = 0x40,
 };
 // "IDENTIFY (0x01)": how errors name a request.
 std::string request_name(std::uint8_t request);
@@ -53,6 +61,8 @@ std::string fault_text(std::uint8_t fault);
 inline constexpr std::size_t kIdentityBytes = 52;
 inline constexpr std::size_t kStatusBytes = 16;
 inline constexpr std::size_t kCalibrationBytes = 12;
+inline constexpr std::size_t kGeometryBytes = 8;
+inline constexpr std::size_t kSerialBytes = 16;
 inline constexpr std::size_t kPointBytes = 8;
 inline constexpr std::size_t kMaxPointsPerRequest = 8;
 inline constexpr std::size_t kPacketHeaderBytes = 4;
@@ -90,6 +100,19 @@ struct ForceCalibration {
   double lever_factor = 0.0;
 };
 
+// What turns encoder counts into surface speed (PROTOCOL.md "Geometry").
+struct Geometry {
+  double counts_per_revolution = 0.0;
+  double track_radius_m = 0.0;
+};
+
+// "1.0": how errors name a protocol version.
+std::string version_text(std::uint16_t version);
+
+// Why a serial cannot be sent by SET_SERIAL (empty, longer than 16, a byte outside 0x21..0x7E), or
+// empty when it can: one rule for the host's check and the emulated device's refusal.
+std::string serial_problem(const std::string& serial);
+
 // Encoders give the exact bytes of PROTOCOL.md; decoders throw UsbRigError naming the layout and
 // what was wrong (too short a reply, an unknown major version is the driver's call, not theirs).
 std::array<std::uint8_t, kIdentityBytes> encode_identity(const Identity& identity);
@@ -98,6 +121,12 @@ std::array<std::uint8_t, kStatusBytes> encode_status(const DeviceStatus& status)
 DeviceStatus decode_status(std::span<const std::uint8_t> bytes);
 std::array<std::uint8_t, kCalibrationBytes> encode_calibration(const ForceCalibration& calibration);
 ForceCalibration decode_calibration(std::span<const std::uint8_t> bytes);
+std::array<std::uint8_t, kGeometryBytes> encode_geometry(const Geometry& geometry);
+Geometry decode_geometry(std::span<const std::uint8_t> bytes);
+// SET_SERIAL's 16 bytes; throws UsbRigError with serial_problem's reason.
+std::array<std::uint8_t, kSerialBytes> encode_serial(const std::string& serial);
+// The text before the padding, as sent (not checked: the device checks).
+std::string decode_serial(std::span<const std::uint8_t> bytes);
 std::array<std::uint8_t, 4> encode_speed(double speed_m_s);
 double decode_speed(std::span<const std::uint8_t> bytes);
 

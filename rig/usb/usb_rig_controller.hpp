@@ -89,6 +89,17 @@ class UsbRigController {
   DeviceStatus device_status();
   ForceCalibration calibration();
   void set_calibration(const ForceCalibration& calibration);
+  // Version 1.1's requests (PROTOCOL.md "Version 1.1"). A 1.0 device is not asked: the error names
+  // its version and the one the request needs.
+  Geometry geometry();
+  // Refuses a value that is not finite or not above 0 before the device does, naming it.
+  void set_geometry(const Geometry& geometry);
+  // The device keeps the new serial; identity() reports it from here on, but the driver still
+  // reconnects to the serial it opened (a replug after a rename needs a new controller).
+  void set_serial(const std::string& serial);
+  // The device leaves the bus for its bootloader: this controller sees it unplugged. Refused by the
+  // device while the motor runs.
+  void enter_bootloader();
 
   // Consumer side (one thread): the frames decoded so far, oldest first, up to out.size(). No
   // libusb call, no lock, no allocation.
@@ -117,6 +128,8 @@ class UsbRigController {
     ControlChannel channel(handle_, "the rig controller " + serial_, options_.control_timeout_ms);
     return f(channel);
   }
+  // Throws unless the device speaks at least `version` (the request's).
+  void require_version(Request request, std::uint16_t version) const;
   void event_loop();
   void start_streaming();  // event thread or constructor: claim, SET_STREAMING(1), submit the pool
   void close_device();     // event thread: after every transfer is back

@@ -1,6 +1,7 @@
 // The rig controller's control requests (PROTOCOL.md "Control requests"), from the caller's
 // thread: the host-side range checks that give the clearest message, then the request itself.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "rig/usb/usb_rig_controller.hpp"
@@ -113,6 +114,49 @@ void UsbRigController::set_calibration(const ForceCalibration& calibration) {
   with_channel([&](ControlChannel& c) {
     c.out(Request::kSetCalibration, 0, 0, encode_calibration(calibration));
   });
+}
+
+void UsbRigController::require_version(Request request, std::uint16_t version) const {
+  const Identity id = identity();
+  if (id.protocol_version < version) {
+    throw UsbRigError("the rig controller " + serial_ + " speaks protocol " + version_text(id.protocol_version) +
+                      "; " + request_name(static_cast<std::uint8_t>(request)) + " needs " +
+                      version_text(version) + " (`nibrig rig flash` updates its firmware)");
+  }
+}
+
+Geometry UsbRigController::geometry() {
+  require_version(Request::kGetGeometry, kGeometryVersion);
+  return with_channel([&](ControlChannel& c) {
+    return decode_geometry(c.in(Request::kGetGeometry, 0, 0, kGeometryBytes, kGeometryBytes));
+  });
+}
+
+void UsbRigController::set_geometry(const Geometry& geometry) {
+  require_version(Request::kSetGeometry, kGeometryVersion);
+  if (!(std::isfinite(geometry.counts_per_revolution) && geometry.counts_per_revolution > 0.0)) {
+    throw UsbRigError("encoder counts per revolution " + std::to_string(geometry.counts_per_revolution) +
+                      ": the rig controller " + serial_ + " needs a finite number above 0");
+  }
+  if (!(std::isfinite(geometry.track_radius_m) && geometry.track_radius_m > 0.0)) {
+    throw UsbRigError("track radius " + std::to_string(geometry.track_radius_m * 1000.0) +
+                      " mm: the rig controller " + serial_ + " needs a finite radius above 0");
+  }
+  with_channel([&](ControlChannel& c) { c.out(Request::kSetGeometry, 0, 0, encode_geometry(geometry)); });
+}
+
+void UsbRigController::set_serial(const std::string& serial) {
+  require_version(Request::kSetSerial, kGeometryVersion);
+  const auto bytes = encode_serial(serial);
+  with_channel([&](ControlChannel& c) {
+    c.out(Request::kSetSerial, 0, 0, bytes);
+    identity_ = c.identify();
+  });
+}
+
+void UsbRigController::enter_bootloader() {
+  require_version(Request::kEnterBootloader, kGeometryVersion);
+  with_channel([&](ControlChannel& c) { c.out(Request::kEnterBootloader, kBootloaderKey, 0); });
 }
 
 }  // namespace nibrig::rig::usb

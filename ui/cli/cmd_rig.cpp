@@ -20,6 +20,7 @@
 #include "rig/comparison_run.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
+#include "rig/usb/bootloader_port.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
 #include "ui/cli/app.hpp"
@@ -312,6 +313,11 @@ void list_rig_controllers() {
   std::printf("rig controllers (USB %04x:%04x):%s\n", rig::usb::kVendorId, rig::usb::kProductId,
               controllers.empty() ? " none found" : "");
   for (const auto& c : controllers) std::printf("  %s\n", rig::usb::describe(c).c_str());
+  // A board whose reset was just pressed waits in its bootloader for `rig flash --port`.
+  if (const auto waiting = rig::usb::bootloader_ports(); !waiting.empty()) {
+    std::printf("bootloaders waiting for an upload (`nibrig rig flash --port PORT`):\n");
+    for (const auto& p : waiting) std::printf("  %s\n", rig::usb::describe(p).c_str());
+  }
   std::printf("audio inputs (an accelerometer on an input channel):\n");
   for (const auto& api : playback::list_devices())
     std::printf("%s\n", playback::describe_devices(api).c_str());
@@ -321,7 +327,8 @@ void list_rig_controllers() {
 
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto* rig_cmd = app.add_subcommand(
-      "rig", "The turntable rig: list devices, capture sessions, compare with the simulation");
+      "rig", "The turntable rig: list devices, capture sessions, compare with the simulation, set up and "
+             "flash a USB controller");
   rig_cmd->require_subcommand(1);
 
   auto* list = rig_cmd->add_subcommand("devices", "USB rig controllers and audio inputs, by name");
@@ -359,6 +366,8 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
     configure_logging(global->verbosity);
     compare(*compare_options);
   });
+
+  add_rig_setup_commands(rig_cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

@@ -73,6 +73,13 @@ class EmulatedRig {
   unsigned frames_duplicated() const;  // sent a second time on request
   bool streaming() const;               // SET_STREAMING's state
 
+  // Version 1.1 and calibration (emulated_rig_requests.cpp). What lies on the arm, at the tip:
+  // from the first call on, the frames' forces come from the sensor model of the block below
+  // through the device's calibration, so that a calibration changes what the frames read.
+  void place_on_arm(double normal_N, double tangential_N);
+  Geometry geometry() const;
+  bool entered_bootloader() const;  // ENTER_BOOTLOADER was accepted
+
  private:
   static constexpr double kLoadN = 2.2;  // the arm's load: the paper's normal force
   static constexpr double kForceFullScaleN = 20.0;
@@ -133,6 +140,29 @@ class EmulatedRig {
   std::uint64_t tapped_at_us_ = 0;
   std::optional<std::pair<std::uint8_t, Refusal>> refuse_next_;
   bool ignore_next_ = false;
+
+  // Version 1.1 and the force sensors behind the calibration (emulated_rig_requests.cpp). The
+  // bridges' true counts per newton and offsets differ from the calibration the device starts
+  // with, so that only a calibration makes the frames read the load. The frames' forces are
+  // kLoadN − force_zero_N_ (normal) and 0.3 times that (tangential): the model sets force_zero_N_
+  // so that the loaded channel reads what the device reports; with a load on the tangential
+  // channel alone, the normal frames carry the tangential reading / 0.3 and mean nothing.
+  struct ArmLoad {
+    double normal_N = 0.0;
+    double tangential_N = 0.0;
+  };
+  std::optional<ArmLoad> arm_load_;
+  static constexpr double kTrueNormalCountsPerN = 1150.0;
+  static constexpr double kTrueTangentialCountsPerN = 880.0;
+  static constexpr double kNormalOffsetCounts = 310.0;
+  static constexpr double kTangentialOffsetCounts = -125.0;
+  double normal_zero_counts_ = 0.0;
+  double tangential_zero_counts_ = 0.0;
+  Geometry geometry_{4480.0, 0.060};
+  bool entered_bootloader_ = false;
+  void apply_arm_model();  // under mutex_
+  Reply control_1_1(std::uint8_t request, unsigned value, bool in, unsigned length,
+                    std::span<const std::uint8_t> payload);
 
   std::atomic<bool> running_{true};
   std::thread firmware_;

@@ -1,6 +1,7 @@
 // The emulated rig's answers to PROTOCOL.md's control requests, with the checks the document
 // asks of a device (lengths, ranges, order), so that the driver's error paths meet a real refusal.
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "tests/rig/usb/emulated_rig.hpp"
@@ -46,7 +47,7 @@ EmulatedRig::Reply EmulatedRig::control(const std::uint8_t* setup, const std::ui
       id.max_frame_rate_hz = 4000;
       id.watchdog_timeout_ms = 500;
       id.serial = config_.serial;
-      id.firmware = "emulated-1.0";
+      id.firmware = "emulated-" + version_text(config_.protocol_version);
       const auto bytes = encode_identity(id);
       return {false, false, {bytes.begin(), bytes.end()}};
     }
@@ -127,7 +128,13 @@ EmulatedRig::Reply EmulatedRig::control(const std::uint8_t* setup, const std::ui
     }
     case Request::kZeroForce:
       if (!out_length(0)) return refuse(request, Refusal::kLength);
-      force_zero_N_ = kLoadN;  // the tip is taken to be lifted: what it reads now is the zero
+      if (arm_load_) {  // the sensor model: what the bridges read now is their zero
+        normal_zero_counts_ = kNormalOffsetCounts + kTrueNormalCountsPerN * arm_load_->normal_N;
+        tangential_zero_counts_ = kTangentialOffsetCounts + kTrueTangentialCountsPerN * arm_load_->tangential_N;
+        apply_arm_model();
+      } else {
+        force_zero_N_ = kLoadN;  // the tip is taken to be lifted: what it reads now is the zero
+      }
       return {};
     case Request::kSetFrameRate:
       if (!out_length(0)) return refuse(request, Refusal::kLength);
@@ -146,10 +153,82 @@ EmulatedRig::Reply EmulatedRig::control(const std::uint8_t* setup, const std::ui
         if (!(std::isfinite(v) && v > 0.0)) return refuse(request, Refusal::kRange);
       }
       calibration_ = c;
+      apply_arm_model();
       return {};
     }
+    case Request::kGetGeometry:
+    case Request::kSetGeometry:
+    case Request::kSetSerial:
+    case Request::kEnterBootloader:
+      if (config_.protocol_version < kGeometryVersion) break;  // a 1.0 device: unknown
+      return control_1_1(request, value, in, length, payload);
   }
   return refuse(request, Refusal::kUnknown);
+}
+
+// PROTOCOL.md "Version 1.1": geometry, serial, bootloader.
+EmulatedRig::Reply EmulatedRig::control_1_1(std::uint8_t request, unsigned value, bool in, unsigned length,
+                                            std::span<const std::uint8_t> payload) {
+  switch (static_cast<Request>(request)) {
+    case Request::kGetGeometry: {
+      if (!in || length < kGeometryBytes) return refuse(request, Refusal::kLength);
+      const auto bytes = encode_geometry(geometry_);
+      return {false, false, {bytes.begin(), bytes.end()}};
+    }
+    case Request::kSetGeometry: {
+      if (in || length != kGeometryBytes) return refuse(request, Refusal::kLength);
+      const Geometry g = decode_geometry(payload);
+      for (double v : {g.counts_per_revolution, g.track_radius_m}) {
+        if (!(std::isfinite(v) && v > 0.0)) return refuse(request, Refusal::kRange);
+      }
+      geometry_ = g;
+      return {};
+    }
+    case Request::kSetSerial: {
+      if (in || length != kSerialBytes) return refuse(request, Refusal::kLength);
+      const std::string serial = decode_serial(payload);
+      if (!serial_problem(serial).empty()) return refuse(request, Refusal::kRange);
+      config_.serial = serial;  // IDENTIFY reports it from now on
+      return {};
+    }
+    case Request::kEnterBootloader:
+      if (in || length != 0) return refuse(request, Refusal::kLength);
+      if (value != kBootloaderKey) return refuse(request, Refusal::kRange);
+      if (mode_ == Mode::kSpeed || mode_ == Mode::kProfile) return refuse(request, Refusal::kOrder);
+      // The real board now leaves the bus; here the test unplugs it, as it plays the hardware.
+      entered_bootloader_ = true;
+      return {};
+    default:
+      return refuse(request, Refusal::kUnknown);
+  }
+}
+
+// The device's formula (PROTOCOL.md "Force sensor") over the bridges' counts for the load placed.
+void EmulatedRig::apply_arm_model() {
+  if (!arm_load_) return;
+  const double normal_counts = kNormalOffsetCounts + kTrueNormalCountsPerN * arm_load_->normal_N;
+  const double tangential_counts = kTangentialOffsetCounts + kTrueTangentialCountsPerN * arm_load_->tangential_N;
+  const double normal = (normal_counts - normal_zero_counts_) / calibration_.normal_counts_per_N * calibration_.lever_factor;
+  const double tangential =
+      (tangential_counts - tangential_zero_counts_) / calibration_.tangential_counts_per_N * calibration_.lever_factor;
+  const bool tangential_only = arm_load_->normal_N == 0.0 && arm_load_->tangential_N != 0.0;
+  force_zero_N_ = kLoadN - (tangential_only ? tangential / 0.3 : normal);
+}
+
+void EmulatedRig::place_on_arm(double normal_N, double tangential_N) {
+  std::lock_guard lock(mutex_);
+  arm_load_ = ArmLoad{normal_N, tangential_N};
+  apply_arm_model();
+}
+
+Geometry EmulatedRig::geometry() const {
+  std::lock_guard lock(mutex_);
+  return geometry_;
+}
+
+bool EmulatedRig::entered_bootloader() const {
+  std::lock_guard lock(mutex_);
+  return entered_bootloader_;
 }
 
 }  // namespace nibrig::rig::usb::testing

@@ -31,13 +31,13 @@ template <typename Device>
 struct Design;
 template <>
 struct Design<EmulatedRig> {
-  static constexpr std::uint16_t kProtocol = 0x0100;
+  static constexpr std::uint16_t kProtocol = kProtocolVersion;
   static constexpr const char* kRates = "500 to 4000 Hz";
   static constexpr bool kBuffersSeconds = true;  // holds 8 s of frames while the host does not read
 };
 template <>
 struct Design<FirmwareRig> {
-  static constexpr std::uint16_t kProtocol = 0x0101;
+  static constexpr std::uint16_t kProtocol = 0x0101;  // RIG_PROTOCOL_VERSION
   static constexpr const char* kRates = "1000 to 4000 Hz";
   static constexpr bool kBuffersSeconds = false;  // the ATmega32U4's RAM holds 16 frames
 };
@@ -144,7 +144,7 @@ TEST(UsbRigController, ListsEveryControllerWithSerialBusAndVersion) {
   EXPECT_EQ(found[0].problem, "");
   EXPECT_EQ(found[1].serial, "NIB-B");
   EXPECT_EQ(found[1].address, 3);
-  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.0, firmware emulated-1.0)");
+  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.1, firmware emulated-1.1)");
 }
 
 TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
@@ -158,7 +158,7 @@ TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
   const std::string message = error_of([] { UsbRigController rig({.serial = "NIB-X"}); });
   EXPECT_EQ(message,
             "no nibrig rig controller (USB 1209:000a) with serial NIB-X; found: NIB-A (bus 1, "
-            "address 2, protocol 1.0, firmware emulated-1.0)");
+            "address 2, protocol 1.1, firmware emulated-1.1)");
 }
 
 TYPED_TEST(UsbRigControllerOn, OpensTheOneWithTheSerialAskedFor) {
