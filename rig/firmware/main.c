@@ -60,9 +60,9 @@ static void make_frames(void) {
 static void run_speed_loop(void) {
   const uint8_t ms = board_take_ms();
   if (ms == 0) return;
-  const uint32_t now = (uint32_t)board_clock_us();
   struct board_encoder e;
   board_encoder_read(&e);
+  const uint32_t now = (uint32_t)board_clock_us(); /* after the encoder: its last edge is not later */
   rig.speed_mm_s = rig_speed_from_counts(&rig, speed_estimate(&estimator, e.count, e.last_edge_us, now));
   rig_tick_ms(&rig, now);
   const float target = rig_speed_target(&rig);

@@ -24,11 +24,14 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
   }
   if (dc == 0 || dt == 0) return 0.0f;
   float rate = (float)dc * 1e6f / (float)dt;
-  /* No edge for longer than one count takes at this rate: the turntable has slowed since. */
-  const uint32_t quiet = now_us - last_edge_us;
-  if (quiet > 0) {
+  /* No edge for much longer than one count takes at this rate: the turntable has slowed since, and
+   * the time since the last edge bounds its speed. "Much": quadrature edges are never evenly spaced
+   * (an encoder's phase error, the edges' own timing), so one and a half periods. An edge stamped
+   * after `now_us` was taken (the interrupt came in between) is no quiet at all. */
+  const int32_t quiet = (int32_t)(now_us - last_edge_us);
+  if (quiet > 0 && (float)quiet * fabsf(rate) > 1.5e6f) {
     const float bound = 1e6f / (float)quiet;
-    if (fabsf(rate) > bound) rate = rate > 0 ? bound : -bound;
+    rate = rate > 0 ? bound : -bound;
   }
   return rate;
 }

@@ -1,5 +1,8 @@
 #include "tests/rig/usb/firmware_rig.hpp"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -67,6 +70,13 @@ std::uint64_t FirmwareRig::device_us_at(std::chrono::steady_clock::time_point ho
 }
 
 void FirmwareRig::run() {
+  // The board is hardware to the host: it must keep real time whatever else the machine runs. A
+  // loaded machine (the test job compiles and runs suites on both cores) fell 10-100 ms behind, and
+  // the time base then measured the lag. Real-time priority where allowed (root, as in CI), below
+  // the JACK server's; elsewhere the default.
+  sched_param priority{};
+  priority.sched_priority = 20;
+  pthread_setschedparam(pthread_self(), SCHED_FIFO, &priority);
   const double cycles_per_host_us = 16.0 * (1.0 + config_.clock_ppm * 1e-6);
   while (running_) {
     std::unique_lock lock(mutex_);

@@ -1,5 +1,5 @@
-// The whole rig at once: the USB controller emulated through umockdev and the accelerometer through
-// a real JACK server, captured together. A tap on the arm (a one-frame force pulse in the device's
+// The whole rig at once: the USB controller (emulated, and the real firmware on the simulated
+// board, both through umockdev) and the accelerometer through a real JACK server, captured together. A tap on the arm (a one-frame force pulse in the device's
 // stream, on the device's own clock, running 80 ppm fast) and an impulse into the accelerometer
 // input at the same host instant must land together on the capture's timeline: the time base's
 // alignment error, measured.
@@ -11,19 +11,39 @@
 #include <cmath>
 #include <filesystem>
 #include <thread>
+#include <type_traits>
 #include <utility>
 
 #include "model/io/rig_session.hpp"
 #include "rig/capture.hpp"
 #include "rig/usb_rig.hpp"
 #include "tests/rig/jack_feeder.hpp"
+#include "model/catalog/analysis.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/measure/threshold_curve.hpp"
 #include "tests/rig/usb/emulated_rig.hpp"
+#include "tests/rig/usb/firmware_rig.hpp"
 #include "tests/support/jack_server.hpp"
 
 namespace nibrig::rig {
 namespace {
 
 using namespace std::chrono_literals;
+
+template <typename Device>
+class UsbRigOn : public ::testing::Test {};
+struct DeviceName {
+  template <typename Device>
+  static std::string GetName(int) {
+    return std::is_same_v<Device, usb::testing::EmulatedRig> ? "Emulator" : "Firmware";
+  }
+};
+#ifdef NIBRIG_FIRMWARE_ELF
+using Devices = ::testing::Types<usb::testing::EmulatedRig, usb::testing::FirmwareRig>;
+#else
+using Devices = ::testing::Types<usb::testing::EmulatedRig>;
+#endif
+TYPED_TEST_SUITE(UsbRigOn, Devices, DeviceName);
 
 // The emulated controller, with the accelerometer input on JACK stream `stream`, which the test
 // patches a feeder client into (no converter delays it: its latency is 0, not system:capture's).
@@ -37,12 +57,12 @@ UsbRigSettings fed_by_jack(const std::string& stream) {
   return settings;
 }
 
-TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
+TYPED_TEST(UsbRigOn, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   nibrig::testing::JackServer server;
   usb::testing::Testbed testbed;
   usb::testing::EmulatedRigConfig config;
   config.clock_ppm = 80.0;  // a crystal within the usual ±100 ppm
-  usb::testing::EmulatedRig device(testbed.get(), config);
+  TypeParam device(testbed.get(), config);
   testing::JackFeeder feeder("tap-feeder", 0.01, 440.0);
 
   const UsbRigSettings settings = fed_by_jack("usb-rig-accel");
@@ -95,8 +115,8 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   }
   ASSERT_GT(weight, 3.0) << "the tap was not found in the frames";
   // 2 %: the device times are whole microseconds (0.05 % of a frame) and the forces floats.
-  RecordProperty("tap_weight_N", std::to_string(weight));
-  RecordProperty("expected_tap_weight_N", std::to_string(expected_weight));
+  ::testing::Test::RecordProperty("tap_weight_N", std::to_string(weight));
+  ::testing::Test::RecordProperty("expected_tap_weight_N", std::to_string(expected_weight));
   EXPECT_NEAR(weight, expected_weight, 0.02 * expected_weight);
   const double tap_on_timeline_s = moment / weight / 1000.0;
   std::size_t impulse = 0;
@@ -112,8 +132,8 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
   const double truth = feeder.impulse_host_s() - tapped_host_s;
   const double measured = impulse_on_timeline_s - tap_on_timeline_s;
   const double error_ms = (measured - truth) * 1e3;
-  RecordProperty("alignment_error_ms", std::to_string(error_ms));
-  RecordProperty("reported_alignment_error_ms", std::to_string(rig.health().alignment_error_ms));
+  ::testing::Test::RecordProperty("alignment_error_ms", std::to_string(error_ms));
+  ::testing::Test::RecordProperty("reported_alignment_error_ms", std::to_string(rig.health().alignment_error_ms));
   EXPECT_LT(std::abs(error_ms), 2.0);
   EXPECT_NEAR(tap_host_s, tapped_host_s, 0.0015);  // the device tapped the frame due then
   EXPECT_TRUE(std::isfinite(rig.health().alignment_error_ms));
@@ -123,10 +143,10 @@ TEST(UsbRig, ForceTapAndAccelerometerImpulseLandTogetherOnTheTimeline) {
 // as a face does while it meshes the simulated tool: the capture's timeline must still be the
 // motor's. The samples the full ring dropped once went uncounted, so every session frame was
 // looked up that much before the start, where the turntable stood (a 25 s wait: speed 0 throughout).
-TEST(UsbRig, AWaitBeforeTheStartLongerThanTheInputRingKeepsTheTimeline) {
+TYPED_TEST(UsbRigOn, AWaitBeforeTheStartLongerThanTheInputRingKeepsTheTimeline) {
   nibrig::testing::JackServer server;
   usb::testing::Testbed testbed;
-  usb::testing::EmulatedRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
+  TypeParam device(testbed.get(), usb::testing::EmulatedRigConfig{});
   testing::JackFeeder feeder("wait-feeder", 0.01, 440.0);
   UsbRig rig(fed_by_jack("wait-accel"));
   ASSERT_TRUE(feeder.connect("wait-accel:inport 0"));
@@ -148,15 +168,16 @@ TEST(UsbRig, AWaitBeforeTheStartLongerThanTheInputRingKeepsTheTimeline) {
 
 // Unplugged in the middle of a capture: the capture ends, the session is finished with everything
 // received, and its record says why and how much.
-TEST(UsbRig, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
+TYPED_TEST(UsbRigOn, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
   nibrig::testing::JackServer server;
   usb::testing::Testbed testbed;
-  usb::testing::EmulatedRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
+  TypeParam device(testbed.get(), usb::testing::EmulatedRigConfig{});
   testing::JackFeeder feeder("unplug-feeder", 0.1, 440.0);
   const UsbRigSettings settings = fed_by_jack("unplug-accel");
   UsbRig rig(settings);
   ASSERT_TRUE(feeder.connect("unplug-accel:inport 0"));
-  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "usb_rig_unplugged";
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" /
+                   (std::string("usb_rig_unplugged_") + DeviceName::GetName<TypeParam>(0));
   std::filesystem::remove_all(dir);
   CaptureOptions options;
   options.folder = dir / "session";
@@ -183,6 +204,41 @@ TEST(UsbRig, UnpluggedMidCaptureFinishesTheSessionWithWhatWasKept) {
   EXPECT_NEAR(static_cast<double>(session.acceleration.size()) / 48.0,
               static_cast<double>(session.speed_m_s.size()), 48.0);  // the streams end together
 }
+
+#ifdef NIBRIG_FIRMWARE_ELF
+// The acceptance of the firmware: one sweep of the paper's measurement protocol captured through the
+// real firmware and the real driver, exactly as `nibrig rig capture --usb` does it (capture_session
+// on a UsbRig), read back and analysed as `nibrig measure` does. The simulated contact has mu = 0.3
+// under the paper's 2.2 N, so the friction the analysis finds is the firmware's force chain measured.
+TEST(UsbRigOnFirmware, ASweepCapturedThroughTheFirmwareReadsBackWithMeasure) {
+  nibrig::testing::JackServer server;
+  usb::testing::Testbed testbed;
+  usb::testing::FirmwareRig device(testbed.get(), usb::testing::EmulatedRigConfig{});
+  testing::JackFeeder feeder("sweep-feeder", 0.1, 440.0);
+  UsbRig rig(fed_by_jack("sweep-accel"));
+  ASSERT_TRUE(feeder.connect("sweep-accel:inport 0"));
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "usb_rig_firmware_sweep";
+  std::filesystem::remove_all(dir);
+  CaptureOptions options;
+  options.folder = dir / "session";
+  options.tool = "cryon";
+  options.surface = "office";
+  const SpeedProfile sweep = paper_steps();  // one sweep: 2 s at rest, six 2 s steps 17..250 mm/s
+  const CaptureResult result = capture_session(rig, sweep, options);
+  ASSERT_TRUE(result.complete) << result.record.ended_because;
+
+  const model::io::RigSession session = model::io::read_rig_session(result.folder);
+  EXPECT_TRUE(session.complete);
+  EXPECT_NEAR(static_cast<double>(session.speed_m_s.size()) / 1000.0, sweep.duration_s(), 0.01);
+  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+  const auto analysis = model::catalog::analyze_session(session, threshold, model::catalog::AnalysisOptions{});
+  ASSERT_TRUE(analysis.friction.has_value()) << (analysis.warnings.empty() ? "" : analysis.warnings.front());
+  // The ADC's counts are whole: the tangential force (0.66 N) is 34 counts above its zero and the
+  // normal (2.2 N) 115, so one count of either moves mu by at most 3 %.
+  EXPECT_NEAR(analysis.friction->fit.mu, 0.3, 0.03 * 0.3);
+  RecordProperty("mu", std::to_string(analysis.friction->fit.mu));
+}
+#endif
 
 }  // namespace
 }  // namespace nibrig::rig
