@@ -85,6 +85,8 @@ class SimulatedBoard {
   // Memory: a firmware variable by its ELF symbol, and the EEPROM.
   std::vector<std::uint8_t> read_symbol(const std::string& name, std::size_t size) const;
   std::vector<std::uint8_t> eeprom() const;
+  // One byte of the data space (registers and RAM) as it lies there now.
+  std::uint8_t data(std::uint16_t address) const { return avr_->data[address]; }
 
  private:
   enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };

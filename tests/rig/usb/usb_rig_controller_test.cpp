@@ -15,7 +15,9 @@
 
 #include "rig/usb/usb_rig_error.hpp"
 #include "tests/rig/usb/emulated_rig.hpp"
+#ifdef NIBRIG_FIRMWARE_ELF
 #include "tests/rig/usb/firmware_rig.hpp"
+#endif
 
 namespace nibrig::rig::usb {
 namespace {
@@ -23,7 +25,6 @@ namespace {
 using namespace std::chrono_literals;
 using testing::EmulatedRig;
 using testing::EmulatedRigConfig;
-using testing::FirmwareRig;
 using testing::Testbed;
 
 // What the two devices are built to do differently.
@@ -35,12 +36,14 @@ struct Design<EmulatedRig> {
   static constexpr const char* kRates = "500 to 4000 Hz";
   static constexpr bool kBuffersSeconds = true;  // holds 8 s of frames while the host does not read
 };
+#ifdef NIBRIG_FIRMWARE_ELF
 template <>
-struct Design<FirmwareRig> {
+struct Design<testing::FirmwareRig> {
   static constexpr std::uint16_t kProtocol = 0x0101;  // RIG_PROTOCOL_VERSION
   static constexpr const char* kRates = "1000 to 4000 Hz";
   static constexpr bool kBuffersSeconds = false;  // the ATmega32U4's RAM holds 16 frames
 };
+#endif
 
 template <typename Device>
 class UsbRigControllerOn : public ::testing::Test {};
@@ -51,7 +54,7 @@ struct DeviceName {
   }
 };
 #ifdef NIBRIG_FIRMWARE_ELF
-using Devices = ::testing::Types<EmulatedRig, FirmwareRig>;
+using Devices = ::testing::Types<EmulatedRig, testing::FirmwareRig>;
 #else
 using Devices = ::testing::Types<EmulatedRig>;
 #endif

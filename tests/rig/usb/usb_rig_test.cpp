@@ -22,7 +22,9 @@
 #include "model/io/bundled_assets.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "tests/rig/usb/emulated_rig.hpp"
+#ifdef NIBRIG_FIRMWARE_ELF
 #include "tests/rig/usb/firmware_rig.hpp"
+#endif
 #include "tests/support/jack_server.hpp"
 
 namespace nibrig::rig {
