@@ -52,6 +52,9 @@ SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::ui
   avr_->frequency = kFrequency;
   avr_->vcc = avr_->avcc = avr_->aref = static_cast<std::uint32_t>(kAvccMillivolts);
   avr_load_firmware(avr_, firmware.get());
+  // Copied into the chip's flash and EEPROM by now.
+  std::free(firmware->flash);
+  std::free(firmware->eeprom);
   if (!eeprom.empty()) {
     avr_eeprom_desc_t desc{const_cast<std::uint8_t*>(eeprom.data()), 0, static_cast<std::uint32_t>(eeprom.size())};
     avr_ioctl(avr_, AVR_IOCTL_EEPROM_SET, &desc);

@@ -162,7 +162,7 @@ void UsbfsDevice::complete_control(std::uint64_t id, int status, const std::vect
   usbdevfs_urb* u = urb_of(it->data);
   const std::size_t room = static_cast<std::size_t>(std::max(0, u->buffer_length - 8));
   const std::size_t n = std::min(room, in.size());
-  std::memcpy(static_cast<std::uint8_t*>(u->buffer) + 8, in.data(), n);
+  if (n > 0) std::memcpy(static_cast<std::uint8_t*>(u->buffer) + 8, in.data(), n);
   u->status = status;
   u->actual_length = status == 0 ? static_cast<int>(n) : 0;
   port.done.push_back(*it);
