@@ -1,0 +1,143 @@
+// The round trip measured on a real JACK server whose output is patched back to its input, checked
+// against the latency JACK reports for the path plus the one period RtAudio's JACK back end holds
+// the input back (recipes: RtAudio hands its callback input one period old).
+#include "playback/round_trip_run.hpp"
+
+#include <gtest/gtest.h>
+#include <jack/jack.h>
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "tests/playback/jack_stream_settings.hpp"
+#include "tests/support/jack_server.hpp"
+
+namespace nibrig::playback {
+namespace {
+
+// A bare libjack client that wires the graph and reads the latencies JACK reports on it.
+class RoundTripPatchbay {
+ public:
+  RoundTripPatchbay() {
+    jack_status_t status{};
+    client_ = jack_client_open("round-trip-patchbay", JackNoStartServer, &status);
+    if (client_ == nullptr) throw std::runtime_error("round trip test: cannot open a JACK client");
+  }
+  ~RoundTripPatchbay() { jack_client_close(client_); }
+  RoundTripPatchbay(const RoundTripPatchbay&) = delete;
+  RoundTripPatchbay& operator=(const RoundTripPatchbay&) = delete;
+
+  void connect(const std::string& from, const std::string& to) {
+    if (jack_connect(client_, from.c_str(), to.c_str()) != 0)
+      throw std::runtime_error("round trip test: cannot connect '" + from + "' to '" + to + "'");
+  }
+  // The port's latency range in one direction; throws when the port is not there.
+  jack_latency_range_t latency(const std::string& port, jack_latency_callback_mode_t mode) {
+    jack_port_t* p = jack_port_by_name(client_, port.c_str());
+    if (p == nullptr) throw std::runtime_error("round trip test: no JACK port '" + port + "'");
+    jack_latency_range_t range{};
+    jack_port_get_latency_range(p, mode, &range);
+    return range;
+  }
+
+ private:
+  jack_client_t* client_ = nullptr;
+};
+
+RoundTripSettings round_trip_on_jack(const std::string& stream) {
+  RoundTripSettings settings;
+  settings.device = testing::jack_settings(stream);
+  settings.device.input_channel = 1;
+  settings.impulses = 20;
+  settings.interval_s = 0.1;
+  return settings;
+}
+
+// Every impulse must be found at `expected` frames. The path is digital and JACK's frame clock
+// exact, so the tolerance is zero samples; only an xrun may move a block (JACK then hands it a
+// cycle late, audio_output_loopback_test), so with xruns reported up to 10 % of the impulses may
+// lie within one period of it.
+void expect_round_trip(const RoundTripResult& r, long expected, int period) {
+  SCOPED_TRACE(::testing::Message()
+               << "period " << period << ": found " << r.stats.found << " of " << r.stats.played
+               << ", mean " << r.stats.mean_samples << ", worst " << r.stats.worst_samples
+               << ", expected " << expected << "; " << r.xruns << " xruns");
+  EXPECT_EQ(r.stream.period_frames, static_cast<unsigned>(period));
+  ASSERT_EQ(r.stats.played, 20u);
+  EXPECT_EQ(r.stats.found, r.stats.played);
+  std::size_t exact = 0;
+  for (const auto& found : r.impulses) {
+    if (!found) continue;
+    const long lag = static_cast<long>(found->lag_samples);
+    exact += lag == expected ? 1 : 0;
+    EXPECT_LE(std::abs(lag - expected), period);
+    // A scaled copy: the correlation is 1 but for float rounding.
+    EXPECT_GT(found->correlation, 0.999);
+  }
+  if (r.xruns == 0) {
+    EXPECT_EQ(exact, r.stats.found);
+    EXPECT_EQ(r.stats.stddev_samples, 0.0);
+  } else {
+    EXPECT_GE(exact * 10, r.stats.found * 9);
+  }
+  const double ms = 1e3 * static_cast<double>(expected) / r.stream.sample_rate;
+  if (exact == r.stats.found) EXPECT_NEAR(r.mean_ms, ms, 1e-9);
+}
+
+class RoundTripOnJack : public ::testing::TestWithParam<int> {};
+
+// The stream's output port patched straight to its input port: JACK reports the latency of both
+// ports on that path, and RtAudio adds its period.
+TEST_P(RoundTripOnJack, OutputPatchedToInputMeasuresJacksReportPlusRtAudiosPeriod) {
+  const int period = GetParam();
+  nibrig::testing::JackServer server({48000, period, 0});
+  RoundTripPatchbay patchbay;
+  const std::string stream = "round-trip-" + std::to_string(period);
+  RoundTripSettings settings = round_trip_on_jack(stream);
+  long reported_min = -1, reported_max = -1;
+  settings.on_open = [&](const StreamInfo&) {
+    patchbay.connect(stream + ":outport 0", stream + ":inport 0");
+    const auto out = patchbay.latency(stream + ":outport 0", JackPlaybackLatency);
+    const auto in = patchbay.latency(stream + ":inport 0", JackCaptureLatency);
+    reported_min = static_cast<long>(out.min + in.min);
+    reported_max = static_cast<long>(out.max + in.max);
+  };
+  const auto results = measure_round_trips(settings, {static_cast<unsigned>(period)});
+  ASSERT_EQ(results.size(), 1u);
+  ::testing::Test::RecordProperty("jack_reported_frames", std::to_string(reported_max));
+  ::testing::Test::RecordProperty("mean_frames", std::to_string(results[0].stats.mean_samples));
+  // The two ends of a range agree, or "what JACK reports" would be a span, not one figure.
+  ASSERT_EQ(reported_min, reported_max);
+  expect_round_trip(results[0], reported_max + period, period);
+}
+
+// Through JACK's loopback driver (jackd -L), which copies what its playback port received in one
+// cycle to its capture port in the next: one period of its own. Its ports report the latencies of a
+// sound card (capture one period, playback two in asynchronous mode), which that copy does not
+// have; the test records them beside the measurement and checks the copy's one period.
+TEST_P(RoundTripOnJack, ThroughJacksLoopbackDriverMeasuresItsCycleAndRtAudiosPeriod) {
+  const int period = GetParam();
+  nibrig::testing::JackServer server({48000, period, 1});
+  RoundTripPatchbay patchbay;
+  const std::string stream = "round-trip-loop-" + std::to_string(period);
+  RoundTripSettings settings = round_trip_on_jack(stream);
+  long reported = -1;
+  settings.on_open = [&](const StreamInfo&) {
+    patchbay.connect(stream + ":outport 0", "loopback:playback_1");
+    patchbay.connect("loopback:capture_1", stream + ":inport 0");
+    reported = static_cast<long>(patchbay.latency("loopback:playback_1", JackPlaybackLatency).max +
+                                 patchbay.latency("loopback:capture_1", JackCaptureLatency).max);
+  };
+  const auto results = measure_round_trips(settings, {static_cast<unsigned>(period)});
+  ASSERT_EQ(results.size(), 1u);
+  ::testing::Test::RecordProperty("jack_reported_frames", std::to_string(reported));
+  ::testing::Test::RecordProperty("mean_frames", std::to_string(results[0].stats.mean_samples));
+  expect_round_trip(results[0], 2L * period, period);
+}
+
+INSTANTIATE_TEST_SUITE_P(Periods, RoundTripOnJack, ::testing::Values(64, 256),
+                         [](const auto& info) { return "period" + std::to_string(info.param); });
+
+}  // namespace
+}  // namespace nibrig::playback
