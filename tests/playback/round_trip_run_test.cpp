@@ -64,7 +64,7 @@ void expect_round_trip(const RoundTripResult& r, long expected, int period) {
                << ", mean " << r.stats.mean_samples << ", worst " << r.stats.worst_samples
                << ", expected " << expected << "; " << r.xruns << " xruns");
   EXPECT_EQ(r.stream.period_frames, static_cast<unsigned>(period));
-  ASSERT_EQ(r.stats.played, 20u);
+  ASSERT_GT(r.stats.played, 0u);
   EXPECT_EQ(r.stats.found, r.stats.played);
   std::size_t exact = 0;
   for (const auto& found : r.impulses) {
@@ -134,6 +134,30 @@ TEST_P(RoundTripOnJack, ThroughJacksLoopbackDriverMeasuresItsCycleAndRtAudiosPer
   ::testing::Test::RecordProperty("jack_reported_frames", std::to_string(reported));
   ::testing::Test::RecordProperty("mean_frames", std::to_string(results[0].stats.mean_samples));
   expect_round_trip(results[0], 2L * period, period);
+}
+
+// The input taken from another device by name: the stream plays to `system` and records from
+// `loopback` (RtAudio lists each JACK client with physical ports as a device and connects the
+// stream to the ones named); the test adds the one patch from the output to the loopback, so the
+// impulses can only come back through the input device named.
+TEST(RoundTripOnJackDevices, RecordsFromTheInputDeviceNamed) {
+  nibrig::testing::JackServer server({48000, 64, 1});
+  RoundTripPatchbay patchbay;
+  RoundTripSettings settings = round_trip_on_jack("round-trip-devices");
+  settings.device.connect_ports = true;
+  settings.device.input_device = "loop";  // a unique part of the name, as for `device`
+  settings.impulses = 5;
+  std::string input_device;
+  settings.on_open = [&](const StreamInfo& info) {
+    input_device = info.input_device;
+    patchbay.connect("round-trip-devices:outport 0", "loopback:playback_1");
+  };
+  const auto results = measure_round_trips(settings);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].stream.device, "system");
+  EXPECT_EQ(input_device, "loopback");
+  EXPECT_EQ(results[0].stream.input_device, "loopback");
+  expect_round_trip(results[0], 2L * 64, 64);
 }
 
 INSTANTIATE_TEST_SUITE_P(Periods, RoundTripOnJack, ::testing::Values(64, 256),
