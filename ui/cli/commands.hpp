@@ -23,6 +23,7 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
