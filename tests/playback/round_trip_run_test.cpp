@@ -82,7 +82,9 @@ void expect_round_trip(const RoundTripResult& r, long expected, int period) {
     EXPECT_GE(exact * 10, r.stats.found * 9);
   }
   const double ms = 1e3 * static_cast<double>(expected) / r.stream.sample_rate;
-  if (exact == r.stats.found) EXPECT_NEAR(r.mean_ms, ms, 1e-9);
+  if (exact == r.stats.found) {
+    EXPECT_NEAR(r.mean_ms, ms, 1e-9);
+  }
 }
 
 class RoundTripOnJack : public ::testing::TestWithParam<int> {};

@@ -82,7 +82,9 @@ TEST(PanelRoundTrip, TheDevicesViewMeasuresOnAJobAndShowsTheFigures) {
   char mean[32];
   std::snprintf(mean, sizeof mean, "%.3f", r.mean_ms);
   EXPECT_EQ(rows[0][3], mean);
-  if (r.xruns == 0) EXPECT_EQ(rows[0][3], "5.333");
+  if (r.xruns == 0) {
+    EXPECT_EQ(rows[0][3], "5.333");
+  }
   EXPECT_EQ(rows[0][6], std::to_string(r.xruns));
   // The view as a person sees it, kept beside the test's other output for a look.
   const auto picture = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" /
