@@ -56,7 +56,7 @@ class ImpulseTrain final : public rt::BlockRenderer {
   std::size_t frame_ = 0;            // audio thread only
 };
 
-void check(const RoundTripSettings& s) {
+void check_round_trip_settings(const RoundTripSettings& s) {
   if (!s.device.input_channel)
     throw std::invalid_argument("the round trip needs an input channel to find the impulses in");
   if (s.impulses < 1 || s.impulses > 100000)
@@ -72,10 +72,10 @@ void check(const RoundTripSettings& s) {
                                 std::to_string(s.level));
 }
 
-double to_ms(double samples, unsigned rate) { return 1e3 * samples / rate; }
+double round_trip_ms(double samples, unsigned rate) { return 1e3 * samples / rate; }
 
-RoundTripResult measure_one(const RoundTripSettings& settings, unsigned period,
-                            const std::vector<double>& pulse, std::stop_token stop) {
+RoundTripResult measure_round_trip_once(const RoundTripSettings& settings, unsigned period,
+                                        const std::vector<double>& pulse, std::stop_token stop) {
   OutputSettings device = settings.device;
   device.period_frames = period;
   const auto interval =
@@ -135,10 +135,10 @@ RoundTripResult measure_one(const RoundTripSettings& settings, unsigned period,
   result.impulses = find_impulses(pulse, played_at, recorded, search);
   result.stats = summarise_round_trips(result.impulses);
   const unsigned rate = result.stream.sample_rate;
-  result.mean_ms = to_ms(result.stats.mean_samples, rate);
-  result.stddev_ms = to_ms(result.stats.stddev_samples, rate);
-  result.min_ms = to_ms(static_cast<double>(result.stats.min_samples), rate);
-  result.worst_ms = to_ms(static_cast<double>(result.stats.worst_samples), rate);
+  result.mean_ms = round_trip_ms(result.stats.mean_samples, rate);
+  result.stddev_ms = round_trip_ms(result.stats.stddev_samples, rate);
+  result.min_ms = round_trip_ms(static_cast<double>(result.stats.min_samples), rate);
+  result.worst_ms = round_trip_ms(static_cast<double>(result.stats.worst_samples), rate);
   return result;
 }
 
@@ -148,14 +148,14 @@ std::vector<RoundTripResult> measure_round_trips(const RoundTripSettings& settin
                                                  const std::vector<unsigned>& periods,
                                                  const RoundTripProgress& progress,
                                                  std::stop_token stop) {
-  check(settings);
+  check_round_trip_settings(settings);
   const std::vector<double> pulse = round_trip_pulse(settings.level);
   const std::vector<unsigned> asked =
       periods.empty() ? std::vector<unsigned>{settings.device.period_frames} : periods;
   std::vector<RoundTripResult> results;
   for (unsigned period : asked) {
     if (period == 0) throw std::invalid_argument("period: expected a positive number of frames");
-    RoundTripResult r = measure_one(settings, period, pulse, stop);
+    RoundTripResult r = measure_round_trip_once(settings, period, pulse, stop);
     if (stop.stop_requested()) break;
     results.push_back(std::move(r));
     if (progress) progress(results.size(), asked.size(), results.back());
