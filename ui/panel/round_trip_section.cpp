@@ -101,15 +101,14 @@ void RoundTripSection::draw(const DeviceRequest& output) {
   section("Round trip (output to input, measured)");
   ImGui::TextWrapped(
       "Plays impulses on the output above (through the actuator and its accelerometer, or a "
-      "loopback "
-      "cable) and finds each in the input by its correlation with the pulse; impulses not found "
-      "are "
-      "counted, not averaged in.");
-  ImGui::InputText("input device (empty: the same)", input_device_, sizeof input_device_);
+      "loopback cable) and finds each in the input by its correlation with the pulse; impulses "
+      "not found are counted, not averaged in. No input device: the output's. Several periods: "
+      "64, 256.");
+  ImGui::InputText("input device (by name)", input_device_, sizeof input_device_);
   int channel = static_cast<int>(request_.input_channel);
   if (ImGui::InputInt("input channel", &channel))
     request_.input_channel = static_cast<unsigned>(std::max(1, channel));
-  ImGui::InputText("periods (frames, e.g. 64, 256)", periods_, sizeof periods_);
+  ImGui::InputText("periods (frames)", periods_, sizeof periods_);
   if (ImGui::InputInt("impulses per period", &request_.impulses))
     request_.impulses = std::clamp(request_.impulses, 1, 100000);
   if (job_) {
