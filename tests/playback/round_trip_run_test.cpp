@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 #include <jack/jack.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "tests/playback/jack_stream_settings.hpp"
 #include "tests/support/jack_server.hpp"
@@ -43,6 +46,67 @@ class RoundTripPatchbay {
 
  private:
   jack_client_t* client_ = nullptr;
+};
+
+// A JACK client that delays its input by a fixed number of frames and declares that latency on its
+// ports through JACK's latency callback, as a plugin host or a network bridge does: hardware in the
+// path that this machine does not have, whose latency JACK then reports.
+class RoundTripDelayLine {
+ public:
+  explicit RoundTripDelayLine(std::size_t frames) : line_(frames, 0.0f) {
+    jack_status_t status{};
+    client_ = jack_client_open("round-trip-delay", JackNoStartServer, &status);
+    if (client_ == nullptr)
+      throw std::runtime_error("round trip test: cannot open the delay client");
+    in_ = jack_port_register(client_, "in", JACK_DEFAULT_AUDIO_TYPE, JackPortIsInput, 0);
+    out_ = jack_port_register(client_, "out", JACK_DEFAULT_AUDIO_TYPE, JackPortIsOutput, 0);
+    if (in_ == nullptr || out_ == nullptr ||
+        jack_set_process_callback(client_, &process, this) != 0 ||
+        jack_set_latency_callback(client_, &latency, this) != 0 || jack_activate(client_) != 0) {
+      jack_client_close(client_);
+      throw std::runtime_error("round trip test: cannot set the delay client up");
+    }
+  }
+  ~RoundTripDelayLine() { jack_client_close(client_); }
+  RoundTripDelayLine(const RoundTripDelayLine&) = delete;
+  RoundTripDelayLine& operator=(const RoundTripDelayLine&) = delete;
+
+ private:
+  static int process(jack_nframes_t frames, void* self) noexcept {
+    auto& d = *static_cast<RoundTripDelayLine*>(self);
+    const auto* in = static_cast<const float*>(jack_port_get_buffer(d.in_, frames));
+    auto* out = static_cast<float*>(jack_port_get_buffer(d.out_, frames));
+    for (jack_nframes_t i = 0; i < frames; ++i) {
+      out[i] = d.line_[d.at_];
+      d.line_[d.at_] = in[i];
+      d.at_ = (d.at_ + 1) % d.line_.size();
+    }
+    return 0;
+  }
+  // What arrives at `out` was captured the delay earlier than at `in`; what enters `in` is played
+  // the delay later than what leaves `out`.
+  static void latency(jack_latency_callback_mode_t mode, void* self) noexcept {
+    auto& d = *static_cast<RoundTripDelayLine*>(self);
+    const auto delay = static_cast<jack_nframes_t>(d.line_.size());
+    jack_latency_range_t range{};
+    if (mode == JackCaptureLatency) {
+      jack_port_get_latency_range(d.in_, mode, &range);
+      range.min += delay;
+      range.max += delay;
+      jack_port_set_latency_range(d.out_, mode, &range);
+    } else {
+      jack_port_get_latency_range(d.out_, mode, &range);
+      range.min += delay;
+      range.max += delay;
+      jack_port_set_latency_range(d.in_, mode, &range);
+    }
+  }
+
+  std::vector<float> line_;
+  std::size_t at_ = 0;
+  jack_client_t* client_ = nullptr;
+  jack_port_t* in_ = nullptr;
+  jack_port_t* out_ = nullptr;
 };
 
 RoundTripSettings round_trip_on_jack(const std::string& stream) {
@@ -112,6 +176,46 @@ TEST_P(RoundTripOnJack, OutputPatchedToInputMeasuresJacksReportPlusRtAudiosPerio
   // The two ends of a range agree, or "what JACK reports" would be a span, not one figure.
   ASSERT_EQ(reported_min, reported_max);
   expect_round_trip(results[0], reported_max + period, period);
+}
+
+// Through a client that delays by 100 frames (not a whole number of periods) and declares it, as a
+// plugin host does: JACK reports those 100 frames across its ports. A loop of clients has one
+// connection JACK delivers a cycle late (the stream runs before the delay that feeds it back), a
+// period JACK's latencies leave out; RtAudio adds its own. The round trip is the report plus two
+// periods, to the sample.
+TEST_P(RoundTripOnJack, ThroughADelayThatDeclaresItsLatencyMeasuresJacksReportPlusRtAudiosPeriod) {
+  const int period = GetParam();
+  nibrig::testing::JackServer server({48000, period, 0});
+  RoundTripPatchbay patchbay;
+  RoundTripDelayLine delay(100);
+  const std::string stream = "round-trip-delay-" + std::to_string(period);
+  RoundTripSettings settings = round_trip_on_jack(stream);
+  long reported_min = -1, reported_max = -1;
+  settings.on_open = [&](const StreamInfo&) {
+    patchbay.connect(stream + ":outport 0", "round-trip-delay:in");
+    patchbay.connect("round-trip-delay:out", stream + ":inport 0");
+    // The loop feeds the stream's inputs back to its outputs in JACK's default latency
+    // propagation, so the ports' capture latencies grow with each pass; what the path adds between
+    // the stream's ports is the difference across it. Read until two reads 20 ms apart agree, as
+    // a pass may land between the two ports' reads.
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      const auto out = patchbay.latency("round-trip-delay:out", JackCaptureLatency);
+      const auto in = patchbay.latency("round-trip-delay:in", JackCaptureLatency);
+      const long min = static_cast<long>(out.min) - static_cast<long>(in.min);
+      const long max = static_cast<long>(out.max) - static_cast<long>(in.max);
+      if (min == reported_min && max == reported_max) break;
+      reported_min = min;
+      reported_max = max;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  };
+  const auto results = measure_round_trips(settings, {static_cast<unsigned>(period)});
+  ASSERT_EQ(results.size(), 1u);
+  ::testing::Test::RecordProperty("jack_reported_frames", std::to_string(reported_max));
+  ::testing::Test::RecordProperty("mean_frames", std::to_string(results[0].stats.mean_samples));
+  ASSERT_EQ(reported_min, reported_max);
+  EXPECT_EQ(reported_max, 100);
+  expect_round_trip(results[0], reported_max + 2L * period, period);
 }
 
 // Through JACK's loopback driver (jackd -L), which copies what its playback port received in one
