@@ -1,6 +1,7 @@
 // The round trip measured on a real JACK server whose output is patched back to its input, checked
 // against the latency JACK reports for the path plus the one period RtAudio's JACK back end holds
-// the input back (recipes: RtAudio hands its callback input one period old).
+// the input back (recipes: RtAudio hands its callback input one period old), and the cycle a loop
+// through other clients costs.
 #include "playback/round_trip_run.hpp"
 
 #include <gtest/gtest.h>
