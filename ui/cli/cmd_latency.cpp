@@ -28,22 +28,23 @@ struct LatencyOptions {
 
 void print_latency_table(const std::vector<playback::RoundTripResult>& results) {
   // "api says": the stream latency the back end reports (RtAudio's), beside what was measured.
-  std::printf("%-6s %-20s %-20s %6s %6s %7s %9s %9s %9s %9s %9s\n", "api", "output", "input",
-              "rate", "period", "found", "mean ms", "sd ms", "worst ms", "mean smp", "api says");
+  std::printf("%-6s %-16s %-16s %6s %6s %7s %8s %8s %8s %9s %8s %9s %8s\n", "api", "output",
+              "input", "rate", "period", "found", "mean ms", "sd ms", "worst ms", "mean smp",
+              "sd smp", "worst smp", "api says");
   for (const auto& r : results) {
     const std::string& input =
         r.stream.input_device.empty() ? r.stream.device : r.stream.input_device;
-    std::printf("%-6s %-20s %-20s %6u %6u %3zu/%-3zu ", r.stream.api.c_str(),
+    std::printf("%-6s %-16s %-16s %6u %6u %3zu/%-3zu ", r.stream.api.c_str(),
                 r.stream.device.c_str(), input.c_str(), r.stream.sample_rate,
                 r.stream.period_frames, r.stats.found, r.stats.played);
     // With nothing found there is no round trip to show, and a 0 would read as one.
     if (r.stats.found > 0) {
-      std::printf("%9.3f %9.3f %9.3f %9.1f", r.mean_ms, r.stddev_ms, r.worst_ms,
-                  r.stats.mean_samples);
+      std::printf("%8.3f %8.3f %8.3f %9.1f %8.1f %9zu", r.mean_ms, r.stddev_ms, r.worst_ms,
+                  r.stats.mean_samples, r.stats.stddev_samples, r.stats.worst_samples);
     } else {
-      std::printf("%9s %9s %9s %9s", "-", "-", "-", "-");
+      std::printf("%8s %8s %8s %9s %8s %9s", "-", "-", "-", "-", "-", "-");
     }
-    std::printf(" %9ld\n", r.stream.latency_frames);
+    std::printf(" %8ld\n", r.stream.latency_frames);
   }
   for (const auto& r : results) {
     const std::string row = "period " + std::to_string(r.period_asked);
@@ -117,7 +118,10 @@ void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->footer(
       "Each impulse is a 255-sample maximum-length sequence; it is found where its normalised\n"
       "cross-correlation with the input peaks after it was played. One whose peak stays under\n"
-      "--threshold is counted as not found and left out of mean, sd and worst case.");
+      "--threshold is counted as not found and left out of mean, sd and worst case.\n"
+      "smp: samples (frames) at the stream's rate. api says: the stream's latency in frames as "
+      "the\n"
+      "audio back end reports it, beside what was measured.");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     latency(*o);

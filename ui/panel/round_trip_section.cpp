@@ -128,8 +128,8 @@ void RoundTripSection::draw(const DeviceRequest& output) {
 void RoundTripSection::draw_table() {
   shown_rows_.clear();
   if (results_.empty()) return;
-  static constexpr const char* kHeads[] = {"device", "period",   "found", "mean ms",
-                                           "sd ms",  "worst ms", "xruns"};
+  static constexpr const char* kHeads[] = {
+      "device", "period", "found", "mean ms", "sd ms", "worst ms", "frames: mean, worst", "xruns"};
   constexpr int columns = static_cast<int>(std::size(kHeads));
   if (!ImGui::BeginTable("round-trip", columns,
                          ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp))
@@ -147,6 +147,9 @@ void RoundTripSection::draw_table() {
     // Nothing found leaves no round trip: a dash, where a 0 would read as one.
     for (double ms : {r.mean_ms, r.stddev_ms, r.worst_ms})
       row.push_back(r.stats.found > 0 ? round_trip_cell("%.3f", ms) : "-");
+    row.push_back(r.stats.found > 0 ? round_trip_cell("%.1f", r.stats.mean_samples) + ", " +
+                                          std::to_string(r.stats.worst_samples)
+                                    : "-");
     row.push_back(std::to_string(r.xruns));
     ImGui::TableNextRow();
     for (const auto& cell : row) {
