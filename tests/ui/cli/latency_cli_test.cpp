@@ -47,15 +47,16 @@ TEST(LatencyCliJack, MeasuresTheLoopbackDriversCycleAndRtAudiosPeriod) {
   const LatencyRow row = latency_row(text);
   EXPECT_EQ(row.period, 128u) << text;
   EXPECT_EQ(row.played, 10u) << text;
-  EXPECT_EQ(row.found, 10u) << text;
   // One cycle in the loopback driver and one period in RtAudio's JACK back end: 256 frames, 5.333
-  // ms (round_trip_run_test). An xrun may hand a block a cycle late, so with xruns reported one
-  // impulse of the ten may be a period later: the mean within 12.8 frames, the worst within one
-  // period.
+  // ms (round_trip_run_test). An xrun may hand a block a cycle late or spoil it, so with xruns
+  // reported one impulse of the ten may be missing or a period later: the mean within 12.8 frames,
+  // the worst within one period.
   if (text.find("xrun") == std::string::npos) {
+    EXPECT_EQ(row.found, 10u) << text;
     EXPECT_NEAR(row.mean_samples, 256.0, 0.05) << text;
     EXPECT_NEAR(row.worst_ms, 256.0 / 48.0, 0.001) << text;
   } else {
+    EXPECT_GE(row.found, 9u) << text;
     EXPECT_GE(row.mean_samples, 256.0) << text;
     EXPECT_LE(row.mean_samples, 256.0 + 12.8) << text;
     EXPECT_LE(row.worst_ms, 384.0 / 48.0 + 0.001) << text;

@@ -61,14 +61,15 @@ TEST(PanelRoundTrip, TheDevicesViewMeasuresOnAJobAndShowsTheFigures) {
   ASSERT_EQ(results.size(), 1u);
   const auto& r = results[0];
   EXPECT_EQ(r.stream.device, "loopback");
-  EXPECT_EQ(r.stats.found, 10u);
 
   // One cycle in the loopback driver and one period in RtAudio's JACK back end: 256 frames
-  // (round_trip_run_test). An xrun may hand a block a cycle late: with xruns, up to one impulse of
-  // ten a period later, the mean then within 12.8 frames.
+  // (round_trip_run_test). An xrun may hand a block a cycle late or spoil it: with xruns, up to one
+  // impulse of ten missing or a period later, the mean then within 12.8 frames.
   if (r.xruns == 0) {
+    EXPECT_EQ(r.stats.found, 10u);
     EXPECT_EQ(r.stats.mean_samples, 256.0);
   } else {
+    EXPECT_GE(r.stats.found, 9u);
     EXPECT_GE(r.stats.mean_samples, 256.0);
     EXPECT_LE(r.stats.mean_samples, 256.0 + 12.8);
   }
@@ -79,7 +80,7 @@ TEST(PanelRoundTrip, TheDevicesViewMeasuresOnAJobAndShowsTheFigures) {
   ASSERT_EQ(rows[0].size(), 8u);
   EXPECT_EQ(rows[0][0], "jack 'loopback'");
   EXPECT_EQ(rows[0][1], "128");
-  EXPECT_EQ(rows[0][2], "10/10");
+  EXPECT_EQ(rows[0][2], std::to_string(r.stats.found) + "/10");
   char mean[32];
   std::snprintf(mean, sizeof mean, "%.3f", r.mean_ms);
   EXPECT_EQ(rows[0][3], mean);
