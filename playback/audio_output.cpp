@@ -39,8 +39,9 @@ std::string rates_text(const std::vector<unsigned>& rates) {
 
 struct AudioOutput::Impl {
   OutputSettings settings;
-  std::string api;     // resolved short name
-  std::string device;  // resolved exact name: what a reopen looks for
+  std::string api;           // resolved short name
+  std::string device;        // resolved exact name: what a reopen looks for
+  std::string input_device;  // the same for the input; equal to device unless one was named
   RtAudio::Api api_id = RtAudio::UNSPECIFIED;
   std::unique_ptr<SampleRing> ring;
   std::unique_ptr<rt::SpscQueue<CaptureStamp>> stamps;
@@ -67,14 +68,26 @@ struct AudioOutput::Impl {
     std::string text = api + " device '" + device + "' at " + std::to_string(settings.sample_rate) +
                        " Hz, period " + std::to_string(settings.period_frames) +
                        " frames, output channel " + std::to_string(settings.output_channel);
-    if (settings.input_channel)
+    if (settings.input_channel) {
       text += ", input channel " + std::to_string(*settings.input_channel);
+      if (input_device != device) text += " of '" + input_device + "'";
+    }
     return text;
   }
 
   void set_problem(std::string text) {
     std::lock_guard lock(info_mutex);
     problem = std::move(text);
+  }
+
+  void validate_input(const DeviceInfo& d) const {
+    if (settings.input_channel &&
+        (*settings.input_channel < 1 || *settings.input_channel > d.input_channels)) {
+      throw DeviceError("input channel " + std::to_string(*settings.input_channel) +
+                        " is out of range: " + api + " device '" + d.name + "' has " +
+                        std::to_string(d.input_channels) + " input channels (1-based)");
+    }
+    if (d.name != device) validate_rate(d);
   }
 
   void validate(const DeviceInfo& d) const {
@@ -84,12 +97,11 @@ struct AudioOutput::Impl {
                         " is out of range: " + who + " has " + std::to_string(d.output_channels) +
                         " output channels (1-based)");
     }
-    if (settings.input_channel &&
-        (*settings.input_channel < 1 || *settings.input_channel > d.input_channels)) {
-      throw DeviceError("input channel " + std::to_string(*settings.input_channel) +
-                        " is out of range: " + who + " has " + std::to_string(d.input_channels) +
-                        " input channels (1-based)");
-    }
+    validate_rate(d);
+  }
+
+  void validate_rate(const DeviceInfo& d) const {
+    const std::string who = api + " device '" + d.name + "'";
     const auto& rates = d.sample_rates;
     if (std::find(rates.begin(), rates.end(), settings.sample_rate) == rates.end()) {
       std::string text = who + " does not support " + std::to_string(settings.sample_rate) +
@@ -127,14 +139,22 @@ struct AudioOutput::Impl {
     const unsigned index = it->index;
     const DeviceInfo& found = it->info;
     validate(found);
+    auto input = it;
+    if (settings.input_channel && input_device != device) {
+      input = std::find_if(table.devices.begin(), table.devices.end(),
+                           [&](const ProbedDevice& d) { return d.info.name == input_device; });
+      if (input == table.devices.end())
+        throw DeviceError(api + " input device '" + input_device + "' is not there");
+    }
+    validate_input(input->info);
 
     RtAudio::StreamParameters out;
     out.deviceId = index;
     out.nChannels = found.output_channels;
     out.firstChannel = 0;
     RtAudio::StreamParameters in;
-    in.deviceId = index;
-    in.nChannels = settings.input_channel ? found.input_channels : 0;
+    in.deviceId = input->index;
+    in.nChannels = settings.input_channel ? input->info.input_channels : 0;
     in.firstChannel = 0;
     RtAudio::StreamOptions options;
     options.flags = RTAUDIO_NONINTERLEAVED;
@@ -174,8 +194,14 @@ struct AudioOutput::Impl {
       throw DeviceError("cannot start " + asked() + ": " + e.what());
     }
 
-    StreamInfo opened{api,          device, settings.sample_rate, frames, found.output_channels,
-                      in.nChannels, 0};
+    StreamInfo opened;
+    opened.api = api;
+    opened.device = device;
+    opened.sample_rate = settings.sample_rate;
+    opened.period_frames = frames;
+    opened.output_channels = found.output_channels;
+    opened.input_channels = in.nChannels;
+    if (settings.input_channel) opened.input_device = input_device;
     try {
       opened.latency_frames = fresh->getStreamLatency();
     } catch (const RtAudioError&) {
@@ -333,8 +359,16 @@ AudioOutput::AudioOutput(rt::BlockRenderer& renderer, OutputSettings settings)
   m.settings = std::move(settings);
   m.api = choice.api;
   m.device = choice.device.name;
+  m.input_device = m.device;
   m.api_id = RtAudio::getCompiledApiByName(m.api);
   m.validate(choice.device);
+  if (m.settings.input_channel) {
+    const DeviceInfo input = m.settings.input_device.empty()
+                                 ? choice.device
+                                 : choose_device(m.api, m.settings.input_device).device;
+    m.input_device = input.name;
+    m.validate_input(input);
+  }
 
   m.state.renderer = &renderer;
   if (m.settings.input_channel) {

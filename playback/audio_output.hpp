@@ -27,6 +27,9 @@ struct OutputSettings {
   bool connect_ports = true;  // JACK: connect to the device's ports (false: leave unconnected)
   std::chrono::milliseconds retry_interval{200};  // how often a lost device is looked for
   std::chrono::milliseconds stall_timeout{1000};  // no callback for this long counts as a loss
+  // The device to capture from, by the same rule as `device`; empty: `device` itself. Another
+  // device runs on its own clock unless the back end links the two.
+  std::string input_device;
 };
 
 // What was actually opened (a back end may round the period; JACK imposes its own).
@@ -36,8 +39,9 @@ struct StreamInfo {
   unsigned sample_rate = 0;
   unsigned period_frames = 0;
   unsigned output_channels = 0;  // of the device, all opened
-  unsigned input_channels = 0;   // of the device; 0 when not capturing
+  unsigned input_channels = 0;   // of the input device; 0 when not capturing
   long latency_frames = 0;       // as RtAudio reports it
+  std::string input_device;      // the device captured from; empty when not capturing
 };
 
 enum class OutputStatus {

@@ -109,6 +109,9 @@ void JackServer::start() {
   } else {
     args.emplace_back("--no-realtime");
   }
+  if (settings_.loopback_ports > 0) {
+    args.insert(args.end(), {"-L", std::to_string(settings_.loopback_ports)});
+  }
   args.insert(args.end(), {"-d", "dummy", "-r", rate, "-p", period});
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());

@@ -13,13 +13,16 @@ namespace nibrig::testing {
 struct JackServerSettings {
   int sample_rate = 48000;
   int period = 64;
+  // Ports of JACK's own loopback driver (jackd -L): what is played to loopback:playback_N comes
+  // back at loopback:capture_N a cycle later. 0: none.
+  int loopback_ports = 0;
 };
 
 class JackServer {
  public:
-  // Starts `jackd -n <unique name> [--realtime -P 70 | --no-realtime] -d dummy -r <rate>
-  // -p <period>` (real-time when this process may use SCHED_FIFO) and waits until a client can
-  // connect (up to 10 s). Throws std::runtime_error with the server's log on failure.
+  // Starts `jackd -n <unique name> [--realtime -P 70 | --no-realtime] [-L <loopback ports>]
+  // -d dummy -r <rate> -p <period>` (real-time when this process may use SCHED_FIFO) and waits
+  // until a client can connect (up to 10 s). Throws std::runtime_error with the server's log on failure.
   explicit JackServer(const JackServerSettings& settings = {});
   ~JackServer();
   JackServer(const JackServer&) = delete;

@@ -85,6 +85,7 @@ void DevicesView::draw() {
   }
   ImGui::Text("in use: %s", audio_.audition().actuator().empty() ? "none (the output is the requested m/s2 times a plain gain)"
                                                                 : audio_.audition().actuator().c_str());
+  round_trip_.draw(shown_request());
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("devices-listing", {0.0f, avail.y});

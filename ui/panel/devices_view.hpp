@@ -1,9 +1,10 @@
 // View 5, devices: the audio API, device and output channel by name, the period; what runs, in
 // words read at a glance (the period and the output latency in ms, the callback's load as a share
 // of the period, the xruns of the last minute) and the device losses; the actuator calibration in
-// use; the USB rig controllers on the bus. Once a stream is open the form shows what it runs (a back
-// end may impose its own period: JACK its server's), not what was asked. Listing devices probes
-// servers (JACK may take a second), so it runs in the background when asked.
+// use; the chain's round trip, measured on request (RoundTripSection); the USB rig controllers on
+// the bus. Once a stream is open the form shows what it runs (a back end may impose its own period:
+// JACK its server's), not what was asked. Listing devices probes servers (JACK may take a second),
+// so it runs in the background when asked.
 #pragma once
 
 #include <chrono>
@@ -17,6 +18,7 @@
 #include "rig/usb/usb_device_list.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
+#include "ui/panel/round_trip_section.hpp"
 #include "ui/panel/stream_monitor.hpp"
 
 namespace nibrig::ui::panel {
@@ -55,6 +57,9 @@ class DevicesView {
   const std::string& error() const { return error_; }
   const std::optional<DeviceListing>& listing() const { return listing_; }
   const std::optional<RunningStream>& running() const { return running_; }
+  RoundTripSection& round_trip() { return round_trip_; }
+  const RoundTripSection& round_trip() const { return round_trip_; }
+  bool measuring() const { return round_trip_.running(); }
   // Reads the stream's counters into running() (the view does when drawn; the panel every frame
   // otherwise, so that "xruns in the last minute" covers the minute, whichever view was shown).
   void sample();
@@ -74,6 +79,7 @@ class DevicesView {
   std::optional<std::tuple<std::string, std::string, unsigned, unsigned>> shown_stream_;
   StreamMonitor monitor_;
   std::optional<RunningStream> running_;
+  RoundTripSection round_trip_;
   std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
 };
 

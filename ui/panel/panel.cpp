@@ -483,6 +483,7 @@ double Panel::idle_wait_s() const {
     return 0.0;
   if (rig_view_->running()) return current_ == View::rig ? 0.0 : kProgressRefresh_s;
   const bool working = space_job_ || file_job_ || audio_->making_sounds() || design_view_->preparing() ||
+                       devices_view_->measuring() ||
                        design_view_->measuring_error() ||
                        experiment_view_->stage() == ExperimentView::Stage::preparing;
   return working ? kProgressRefresh_s : kIdleRefresh_s;
