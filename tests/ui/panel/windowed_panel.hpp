@@ -65,7 +65,9 @@ struct WindowedPanel {
     bool first = true;
     for (const auto& port : ports) {
       const bool connected = ear.connect(port, 0);
-      if (first) EXPECT_TRUE(connected) << port;
+      if (first) {
+        EXPECT_TRUE(connected) << port;
+      }
       first = false;
     }
     ear.start();
