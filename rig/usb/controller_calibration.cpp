@@ -133,6 +133,9 @@ ControllerCalibrationResult calibrate_controller(UsbRigController& rig, const Co
   if (steps.zero) {
     prompt("Lift the tip off the surface and take every weight off the arm");
     rig.zero_force();
+    // The device averages up to 100 ms for its zero (PROTOCOL.md): nothing goes on the arm before
+    // that is over, or the weight is zeroed away.
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
   }
   if (steps.normal_weight_N) {
     prompt("Put the " + calibration_newtons(*steps.normal_weight_N) + " weight on the tip, pressing straight down");

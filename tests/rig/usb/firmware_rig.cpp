@@ -38,9 +38,10 @@ std::string firmware_elf() {
 #endif
 }
 
-FirmwareRig::FirmwareRig(UMockdevTestbed* testbed, EmulatedRigConfig config) : config_(std::move(config)) {
+FirmwareRig::FirmwareRig(UMockdevTestbed* testbed, EmulatedRigConfig config, TurntablePhysics physics)
+    : config_(std::move(config)) {
   if (firmware_elf().empty()) throw std::runtime_error("the firmware was not built (NIBRIG_BUILD_FIRMWARE)");
-  board_ = std::make_unique<SimulatedBoard>(firmware_elf(), eeprom_with_serial(config_.serial));
+  board_ = std::make_unique<SimulatedBoard>(firmware_elf(), eeprom_with_serial(config_.serial), physics);
   const std::vector<std::uint8_t> descriptors = board_->enumerate(config_.address);
   // From here on the chip runs in step with the host's clock (its crystal `clock_ppm` fast).
   paced_from_ = std::chrono::steady_clock::now();
@@ -232,6 +233,12 @@ std::uint64_t FirmwareRig::tapped_at_us() const {
 void FirmwareRig::set_normal_force(double newtons) {
   std::lock_guard lock(mutex_);
   board_->set_normal_force(newtons);
+}
+
+void FirmwareRig::place_on_arm(double normal_N, double tangential_N) {
+  std::lock_guard lock(mutex_);
+  board_->set_normal_force(normal_N);
+  board_->set_tangential_pull(tangential_N);
 }
 
 std::vector<std::uint8_t> FirmwareRig::rig_memory() const { return board_->read_symbol("rig", sizeof(struct rig)); }

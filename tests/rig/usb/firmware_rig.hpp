@@ -33,7 +33,7 @@ class FirmwareRig {
  public:
   // Writes `config.serial` into the board's EEPROM (as `nibrig rig calibrate --serial` would),
   // boots the firmware, enumerates it, then adds it to the testbed and runs it in real time.
-  FirmwareRig(UMockdevTestbed* testbed, EmulatedRigConfig config);
+  FirmwareRig(UMockdevTestbed* testbed, EmulatedRigConfig config, TurntablePhysics physics = {});
   ~FirmwareRig();
   FirmwareRig(const FirmwareRig&) = delete;
   FirmwareRig& operator=(const FirmwareRig&) = delete;
@@ -51,6 +51,8 @@ class FirmwareRig {
   void tap(std::uint64_t device_us, double extra_N);
   std::uint64_t tapped_at_us() const;
   void set_normal_force(double newtons);
+  // What rests on the arm: a weight on the tip, and one pulling along the track (calibration).
+  void place_on_arm(double normal_N, double tangential_N);
   std::chrono::steady_clock::time_point power_up() const { return power_up_; }
   std::uint64_t device_us_at(std::chrono::steady_clock::time_point host) const;
 

@@ -184,7 +184,7 @@ void SimulatedBoard::step_physics(double dt_s) {
     if (now > start && now <= pulse_->first) normal += pulse_->second;
     if (now > pulse_->first) pulse_.reset();
   }
-  const double tangential = omega_ != 0.0 ? std::copysign(mu_ * normal_N_, omega_) : 0.0;
+  const double tangential = (omega_ != 0.0 ? std::copysign(mu_ * normal_N_, omega_) : 0.0) + pull_N_;
   avr_raise_irq(adc + ADC_IRQ_ADC7, millivolts(p.amplifier_zero_V + normal * p.amplifier_V_per_N));
   avr_raise_irq(adc + ADC_IRQ_ADC6, millivolts(p.amplifier_zero_V + tangential * p.amplifier_V_per_N));
 }

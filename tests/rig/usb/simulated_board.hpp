@@ -62,6 +62,8 @@ class SimulatedBoard {
   // The world around the chip.
   void set_normal_force(double newtons) { normal_N_ = newtons; }
   void set_friction(double mu) { mu_ = mu; }
+  // A force along the track on the tool at rest (a weight over a pulley), added to the contact's.
+  void set_tangential_pull(double newtons) { pull_N_ = newtons; }
   // Extra normal force over the frame period that ends at device time `frame_end_us`: the frame
   // sampled then carries all of it, no other frame any of it.
   void pulse_force(std::uint64_t frame_end_us, double extra_N);
@@ -105,6 +107,7 @@ class SimulatedBoard {
 
   double normal_N_ = 2.2;  // the paper's load
   double mu_ = 0.3;
+  double pull_N_ = 0.0;
   std::optional<std::pair<std::uint64_t, double>> pulse_;  // frame end, extra newtons
   double omega_ = 0.0, theta_ = 0.0, duty_ = 0.0, current_A_ = 0.0;
   long long encoder_count_ = 0;
