@@ -33,6 +33,13 @@ struct TurntablePhysics {
   double amplifier_zero_V = 2.5;  // the amplifier's reference (HARDWARE.md)
 };
 
+// One run of the frame interrupt: the cycle its compare match was due (the frame's nominal sampling
+// instant) and the cycle the chip entered it.
+struct FrameInterrupt {
+  std::uint64_t due_cycle = 0;
+  std::uint64_t entry_cycle = 0;
+};
+
 struct ControlOutcome {
   int status = 0;  // 0, or -EPIPE for a STALL
   std::vector<std::uint8_t> in;
@@ -58,6 +65,11 @@ class SimulatedBoard {
   std::uint64_t cycle_at_device_us(std::uint64_t device_us) const;
   // The device time of the next frame the firmware will sample.
   std::uint64_t next_frame_device_us() const;
+  // The cycle at which the device clock read 0: device time t us is this plus 16 t cycles.
+  std::uint64_t clock_start_cycle() const;
+  // Every frame interrupt from now on, for the sampling instant's jitter.
+  void record_frame_interrupts();
+  const std::vector<FrameInterrupt>& frame_interrupts() const { return frame_interrupts_; }
 
   // The world around the chip.
   void set_normal_force(double newtons) { normal_N_ = newtons; }
@@ -65,6 +77,10 @@ class SimulatedBoard {
   // Extra normal force over the frame period that ends at device time `frame_end_us`: the frame
   // sampled then carries all of it, no other frame any of it.
   void pulse_force(std::uint64_t frame_end_us, double extra_N);
+  // Faults of the world: the turntable held still (a jammed disc), the encoder's cable pulled (its
+  // pins stay where they were).
+  void jam(bool held) { jammed_ = held; }
+  void disconnect_encoder(bool disconnected) { encoder_disconnected_ = disconnected; }
   double surface_speed_m_s() const { return omega_ * physics_.track_radius_m; }
   double duty() const { return duty_; }
   double motor_current_A() const { return current_A_; }
@@ -89,6 +105,7 @@ class SimulatedBoard {
  private:
   enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };
   static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
+  static void on_frame_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
   void step_physics(double dt_s);
   void set_pin(char port, int pin, bool high);
   std::uint16_t reg16(std::uint16_t low_address) const;
@@ -107,6 +124,10 @@ class SimulatedBoard {
   double omega_ = 0.0, theta_ = 0.0, duty_ = 0.0, current_A_ = 0.0;
   long long encoder_count_ = 0;
   std::array<bool, 2> encoder_pins_{};
+  bool jammed_ = false, encoder_disconnected_ = false;
+  bool recording_interrupts_ = false;
+  std::vector<FrameInterrupt> frame_interrupts_;
+  mutable std::optional<std::uint64_t> clock_start_cycle_;
 
   Stage stage_ = Stage::kIdle;
   std::array<std::uint8_t, 8> setup_{};
