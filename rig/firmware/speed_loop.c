@@ -2,10 +2,15 @@
 
 #include <math.h>
 
-/* Estimating over at least this many counts keeps the quantisation under 1/16 of the speed; never
- * over more than 50 ms, so the loop still sees a change quickly at the slowest speed. */
+/* Estimating over 16 counts keeps an encoder's uneven edges (its channels' phase and duty errors)
+ * under a few per cent of the speed; at the slowest speeds that would take too long (79 ms at
+ * 17 mm/s, a lag the loop cannot live with), so 10 ms and a whole quadrature cycle (4 counts, over
+ * which those errors cancel) also do; never more than 50 ms. */
 #define SPEED_MIN_COUNTS 16
+#define SPEED_CYCLE_COUNTS 4
+#define SPEED_ENOUGH_SPAN_US 10000u
 #define SPEED_MAX_SPAN_MS 50u
+#define SPEED_MAX_SPAN_US 50000u
 
 float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edge_us, uint32_t now_us) {
   e->head = e->head + 1u == SPEED_HISTORY ? 0 : (uint8_t)(e->head + 1u);
@@ -18,14 +23,21 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
   uint8_t i = e->head;
   for (uint8_t k = 1; k < e->filled && k <= SPEED_MAX_SPAN_MS; ++k) {
     i = i == 0 ? SPEED_HISTORY - 1u : (uint8_t)(i - 1u); /* no division: the AVR has none */
+    /* An edge from before a standstill belongs to no part of this motion: starting from rest,
+     * counts over the time since it would read a fraction of the speed. */
+    const uint32_t span = last_edge_us - e->edge_us[i];
+    if (span > SPEED_MAX_SPAN_US) break;
     dc = count - e->count[i];
-    dt = last_edge_us - e->edge_us[i];
-    if (dc >= SPEED_MIN_COUNTS || dc <= -SPEED_MIN_COUNTS) break;
+    dt = span;
+    const int32_t magnitude = dc < 0 ? -dc : dc;
+    if (magnitude >= SPEED_MIN_COUNTS || (magnitude >= SPEED_CYCLE_COUNTS && dt >= SPEED_ENOUGH_SPAN_US)) break;
   }
   if (dc == 0 || dt == 0) return 0.0f;
   float rate = (float)dc * 1e6f / (float)dt;
-  /* No edge for longer than one count takes at this rate: the turntable has slowed since. */
-  const uint32_t quiet = now_us - last_edge_us;
+  /* No edge for longer than one count takes at this rate: the turntable has slowed since. An edge
+   * may land between the caller's reading of the clock and of the encoder, leaving the last edge
+   * after `now`: that is no quiet at all, not four thousand seconds of it. */
+  const int32_t quiet = (int32_t)(now_us - last_edge_us);
   if (quiet > 0) {
     const float bound = 1e6f / (float)quiet;
     if (fabsf(rate) > bound) rate = rate > 0 ? bound : -bound;
@@ -34,14 +46,17 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
 }
 
 void speed_controller_init(struct speed_controller *c) {
-  /* The reference gearmotor turns the 60 mm track at 942 mm/s with no load at 12 V and needs
-   * 0.2 A (a duty of 0.036 across its 2.2 ohm) to overcome its gearbox; its mechanical time
-   * constant with the disc is about 55 ms. The PI's zero sits on that pole, putting the closed
-   * loop's bandwidth near 70 rad/s (a rise time near 30 ms). */
+  /* The reference gearmotor turns the 60 mm track at 942 mm/s with no load at 12 V. The offset
+   * overcomes its gearbox (0.2 A, a duty of 0.036 across its 2.2 ohm) and the contact's friction
+   * at the paper's 2.2 N and a mu near 0.3 (0.08 A more), so that the integral trims only what
+   * differs. Its mechanical time constant with the disc is about 55 ms and the PI's zero sits on
+   * that pole, putting the closed loop's bandwidth near 45 rad/s: higher, the slowest speed
+   * overshoots, as the first edges of a start from rest come 15 ms apart (measured on the
+   * simulated board, tests/rig/usb/board_speed_loop_test.cpp). */
   c->kff = 1.0f / 942.0f;
-  c->offset = 0.036f;
-  c->kp = 0.004f;
-  c->ki = 0.07f;
+  c->offset = 0.051f;
+  c->kp = 0.0025f;
+  c->ki = 0.045f;
   c->integral = 0.0f;
 }
 
@@ -52,7 +67,10 @@ float speed_controller_step(struct speed_controller *c, float target, float meas
   }
   const float error = target - measured;
   const float base = c->kff * target + c->offset + c->kp * error;
-  float integral = c->integral + c->ki * error * dt_s;
+  /* The feed-forward carries a step; the integral only trims what it misses near the target. Fed
+   * the whole step's error on the way up, it would hold that area as a surplus and overshoot. */
+  const float band = target * 0.2f > 5.0f ? target * 0.2f : 5.0f;
+  float integral = c->integral + (fabsf(error) <= band ? c->ki * error * dt_s : 0.0f);
   float duty = base + integral;
   /* Integrate only while the output is not pinned: no wind-up during a step or a stall. */
   if (duty > 1.0f) {
