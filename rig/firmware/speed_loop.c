@@ -18,6 +18,10 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
   e->edge_us[e->head] = last_edge_us;
   if (e->filled < SPEED_HISTORY) ++e->filled;
 
+  /* No edge for 50 ms: slower than a count in 50 ms (1.7 mm/s on the reference disc), which reads
+   * as standing still, with no need to search the history every millisecond at rest. */
+  if (now_us - last_edge_us > SPEED_MAX_SPAN_US && (int32_t)(now_us - last_edge_us) > 0) return 0.0f;
+
   int32_t dc = 0;
   uint32_t dt = 0;
   uint8_t i = e->head;
@@ -38,9 +42,9 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
    * may land between the caller's reading of the clock and of the encoder, leaving the last edge
    * after `now`: that is no quiet at all, not four thousand seconds of it. */
   const int32_t quiet = (int32_t)(now_us - last_edge_us);
-  if (quiet > 0) {
-    const float bound = 1e6f / (float)quiet;
-    if (fabsf(rate) > bound) rate = rate > 0 ? bound : -bound;
+  if (quiet > 0 && fabsf(rate) * (float)quiet > 1e6f) {
+    const float bound = 1e6f / (float)quiet; /* divided only when it bounds: the AVR divides slowly */
+    rate = rate > 0 ? bound : -bound;
   }
   return rate;
 }
@@ -57,16 +61,27 @@ void speed_controller_init(struct speed_controller *c) {
   c->offset = 0.051f;
   c->kp = 0.0025f;
   c->ki = 0.045f;
+  c->kacc = 0.055f / 942.0f;
   c->integral = 0.0f;
+  c->last_target = 0.0f;
 }
+
+/* Beyond this a target's change is a step, which the loop takes as fast as the motor can. */
+#define SPEED_RAMP_MAX_MM_S2 2000.0f
 
 float speed_controller_step(struct speed_controller *c, float target, float measured, float dt_s) {
   if (target <= 0.0f) {
     c->integral = 0.0f;
+    c->last_target = 0.0f;
     return 0.0f;
   }
   const float error = target - measured;
-  const float base = c->kff * target + c->offset + c->kp * error;
+  float base = c->kff * target + c->offset + c->kp * error;
+  /* Following a profile's ramp takes the torque that accelerates the disc; left to the integral,
+   * it stays there as a surplus where the ramp ends, and the speed overshoots the hold after it. */
+  const float change = target - c->last_target;
+  c->last_target = target;
+  if (change != 0.0f && fabsf(change) <= SPEED_RAMP_MAX_MM_S2 * dt_s) base += c->kacc * change / dt_s;
   /* The feed-forward carries a step; the integral only trims what it misses near the target. Fed
    * the whole step's error on the way up, it would hold that area as a surplus and overshoot. */
   const float band = target * 0.2f > 5.0f ? target * 0.2f : 5.0f;
