@@ -99,18 +99,29 @@ float speed_controller_step(struct speed_controller *c, float target, float meas
   return duty;
 }
 
+/* The reference gearmotor's stall current at full duty (12 V across 2.2 ohm); a held rotor draws
+ * that times the duty, and 70 % of it still means no back-EMF worth the name (the winding warms, the
+ * supply sags). Below a duty of 0.05 the motor is not driven at all. */
+#define MOTOR_STALL_A 5.5f
+#define MOTOR_HELD_FRACTION 0.7f
+#define MOTOR_DRIVEN_DUTY 0.05f
+
 enum motor_verdict motor_guard_check(struct motor_guard *g, float duty, float target, float measured, float current_A,
                                      int driver_fault, uint16_t edges, uint16_t glitches) {
   if (driver_fault) return MOTOR_DRIVER_FAULT;
   if (glitches > 0) return MOTOR_ENCODER_FAULT;
-  /* Full drive and almost no motion for half a second: blocked. */
-  g->stall_ms = (duty >= 0.9f && measured < 0.1f * target) ? (uint16_t)(g->stall_ms + 1u) : 0u;
-  if (g->stall_ms >= 500u) return MOTOR_STALL;
   /* Above 2 A for 100 ms: beyond what the turntable ever needs, and the driver's continuous rating. */
   g->overcurrent_ms = current_A > 2.0f ? (uint16_t)(g->overcurrent_ms + 1u) : 0u;
   if (g->overcurrent_ms >= 100u) return MOTOR_OVERCURRENT;
-  /* Driven well above the friction and drawing current, but no edge for 300 ms: the encoder is lost. */
-  g->silent_ms = (duty >= 0.3f && current_A > 0.3f && edges == 0) ? (uint16_t)(g->silent_ms + 1u) : 0u;
+  /* Driven, yet no edge and no speed: either the disc is held, or it turns and the encoder is not
+   * heard. The current tells them apart at any duty: a held rotor has no back-EMF and draws what
+   * the duty drives through the winding alone; a turning one draws far less. Full drive is no
+   * sign of either: at the slowest speeds the duty is a tenth. */
+  const int driven = target > 0.0f && duty >= MOTOR_DRIVEN_DUTY && edges == 0 && measured < 0.1f * target;
+  const int held = current_A >= MOTOR_HELD_FRACTION * MOTOR_STALL_A * duty;
+  g->stall_ms = driven && held ? (uint16_t)(g->stall_ms + 1u) : 0u;
+  g->silent_ms = driven && !held ? (uint16_t)(g->silent_ms + 1u) : 0u;
+  if (g->stall_ms >= 500u) return MOTOR_STALL;
   if (g->silent_ms >= 300u) return MOTOR_ENCODER_FAULT;
   return MOTOR_OK;
 }
