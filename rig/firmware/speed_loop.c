@@ -38,12 +38,14 @@ float speed_estimate(struct speed_estimator *e, int32_t count, uint32_t last_edg
   }
   if (dc == 0 || dt == 0) return 0.0f;
   float rate = (float)dc * 1e6f / (float)dt;
-  /* No edge for longer than one count takes at this rate: the turntable has slowed since. An edge
-   * may land between the caller's reading of the clock and of the encoder, leaving the last edge
-   * after `now`: that is no quiet at all, not four thousand seconds of it. */
+  /* No edge for longer than two counts take at this rate: the turntable has slowed since, to at
+   * most two counts over that time. (One count's time is no sign: an encoder's edges are unevenly
+   * spaced, and a deceleration makes the next one late by a little.) An edge may land between the
+   * caller's reading of the clock and of the encoder, leaving the last edge after `now`: that is
+   * no quiet at all, not four thousand seconds of it. */
   const int32_t quiet = (int32_t)(now_us - last_edge_us);
-  if (quiet > 0 && fabsf(rate) * (float)quiet > 1e6f) {
-    const float bound = 1e6f / (float)quiet; /* divided only when it bounds: the AVR divides slowly */
+  if (quiet > 0 && fabsf(rate) * (float)quiet > 2e6f) {
+    const float bound = 2e6f / (float)quiet; /* divided only when it bounds: the AVR divides slowly */
     rate = rate > 0 ? bound : -bound;
   }
   return rate;
