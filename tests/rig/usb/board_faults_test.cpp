@@ -33,7 +33,9 @@ void expect_stopped_since(const BoardHost& host, std::uint16_t flag, double from
   }
   EXPECT_GT(frames, 0);
   for (const TrueSpeed& s : host.true_speeds()) {
-    if (s.sim_us >= from_us + 2000.0) EXPECT_EQ(s.duty, 0.0) << "at " << s.sim_us << " us";
+    if (s.sim_us >= from_us + 2000.0) {
+      EXPECT_EQ(s.duty, 0.0) << "at " << s.sim_us << " us";
+    }
   }
 }
 
