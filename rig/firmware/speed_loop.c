@@ -66,10 +66,13 @@ void speed_controller_init(struct speed_controller *c) {
   c->kacc = 0.055f / 942.0f;
   c->integral = 0.0f;
   c->last_target = 0.0f;
+  c->step_hold_s = 0.0f;
 }
 
-/* Beyond this a target's change is a step, which the loop takes as fast as the motor can. */
+/* Beyond this a target's change is a step, which the loop takes as fast as the motor can, within
+ * about a tenth of a second. */
 #define SPEED_RAMP_MAX_MM_S2 2000.0f
+#define SPEED_STEP_HOLD_S 0.05f
 
 float speed_controller_step(struct speed_controller *c, float target, float measured, float dt_s) {
   if (target <= 0.0f) {
@@ -84,10 +87,15 @@ float speed_controller_step(struct speed_controller *c, float target, float meas
   const float change = target - c->last_target;
   c->last_target = target;
   if (change != 0.0f && fabsf(change) <= SPEED_RAMP_MAX_MM_S2 * dt_s) base += c->kacc * change / dt_s;
-  /* The feed-forward carries a step; the integral only trims what it misses near the target. Fed
-   * the whole step's error on the way up, it would hold that area as a surplus and overshoot. */
+  /* The feed-forward carries a step; for a while after one the integral only trims what it misses
+   * near the target. Fed the whole step's error on the way up, it would hold that area as a surplus
+   * and overshoot. After that while it integrates everything, so that a load the feed-forward does
+   * not know, which leaves the speed far short, is made up. */
+  if (change != 0.0f && fabsf(change) > SPEED_RAMP_MAX_MM_S2 * dt_s) c->step_hold_s = SPEED_STEP_HOLD_S;
   const float band = target * 0.2f > 5.0f ? target * 0.2f : 5.0f;
-  float integral = c->integral + (fabsf(error) <= band ? c->ki * error * dt_s : 0.0f);
+  const int hold = c->step_hold_s > 0.0f;
+  if (hold) c->step_hold_s -= dt_s;
+  float integral = c->integral + (!hold || fabsf(error) <= band ? c->ki * error * dt_s : 0.0f);
   float duty = base + integral;
   /* Integrate only while the output is not pinned: no wind-up during a step or a stall. */
   if (duty > 1.0f) {

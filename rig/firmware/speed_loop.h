@@ -28,6 +28,7 @@ struct speed_controller {
   float kacc;   /* duty per mm/s^2 of a ramp: the motor's time constant over its no-load speed */
   float integral;
   float last_target;
+  float step_hold_s; /* after a step, the integral trims only near the target for this long */
 };
 
 void speed_controller_init(struct speed_controller *c);
