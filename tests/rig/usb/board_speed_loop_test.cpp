@@ -75,7 +75,7 @@ class BoardSpeedLoop : public ::testing::Test {
   // needs: the paper's sweeps hold each speed about a second, so the speed must have settled well
   // within 0.2 s, must not overshoot by more than 10 % (a brief speed the sweep did not ask for),
   // and must hold the target within 1 % (the speed bins' resolution is coarser).
-  void step_to(double from, double to, const std::string& name) {
+  void step_to(double from, double to, const std::string& name, double settling_limit_ms = 200.0) {
     host_.clear_records();
     host_.set_speed_mm_s(static_cast<float>(to));
     const double t0 = host_.sim_us();
@@ -94,7 +94,7 @@ class BoardSpeedLoop : public ::testing::Test {
       RecordProperty(key + "_settling_ms", std::to_string(r.settling_ms));
       RecordProperty(key + "_steady_error_pct", std::to_string(100 * r.steady_error));
       const StepResponse& checked = r;
-      EXPECT_LT(checked.settling_ms, 200.0) << key;
+      EXPECT_LT(checked.settling_ms, settling_limit_ms) << key;
       EXPECT_LT(checked.overshoot, 0.10) << key;
       EXPECT_LT(std::abs(checked.steady_error), 0.01) << key;
       // A rise that is measured at all: the step happened and the loop moved the disc. (The
@@ -105,6 +105,17 @@ class BoardSpeedLoop : public ::testing::Test {
 
   BoardHost host_;
 };
+
+// A load the feed-forward does not know: the normal force over twice the paper's 2.2 N on a
+// grippier material (mu 0.6), the contact's torque four times what the loop's offset assumes. At
+// 17 mm/s the feed-forward then leaves the disc barely turning and the integral must find the load,
+// which it does from 50 ms after the step: settled within 0.4 s, still well inside a 1 s hold.
+TEST_F(BoardSpeedLoop, StepsUnderALoadItWasNotTunedFor) {
+  host_.board().set_normal_force(5.0);
+  host_.board().set_friction(0.6);
+  step_to(0.0, 17.0, "heavy_rest_to_17", 400.0);
+  step_to(17.0, 250.0, "heavy_17_to_250");
+}
 
 TEST_F(BoardSpeedLoop, StepsFromRestTo17AndOnTo250) {
   step_to(0.0, 17.0, "rest_to_17");
