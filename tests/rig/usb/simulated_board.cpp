@@ -198,7 +198,7 @@ void SimulatedBoard::step_physics(double dt_s) {
   // The analog side: motor current, then the two bridges through their amplifiers.
   avr_irq_t* adc = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
   auto millivolts = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 5.0) * 1000.0 + 0.5); };
-  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts(std::abs(current_A_) * p.current_V_per_A));
+  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts((std::abs(current_A_) + extra_current_A_) * p.current_V_per_A));
   double normal = normal_N_;
   if (pulse_ && avr_->data[kTccr3b] != 0) {
     // The frame ending at pulse_->first averages the period before it.

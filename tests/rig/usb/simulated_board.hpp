@@ -81,6 +81,9 @@ class SimulatedBoard {
   // pins stay where they were).
   void jam(bool held) { jammed_ = held; }
   void disconnect_encoder(bool disconnected) { encoder_disconnected_ = disconnected; }
+  // Current the motor's sense resistor carries beyond the motor's own (a winding shorting, a
+  // binding gearbox), until set back to 0.
+  void add_motor_current(double amps) { extra_current_A_ = amps; }
   double surface_speed_m_s() const { return omega_ * physics_.track_radius_m; }
   double duty() const { return duty_; }
   double motor_current_A() const { return current_A_; }
@@ -125,6 +128,7 @@ class SimulatedBoard {
   long long encoder_count_ = 0;
   std::array<bool, 2> encoder_pins_{};
   bool jammed_ = false, encoder_disconnected_ = false;
+  double extra_current_A_ = 0.0;
   bool recording_interrupts_ = false;
   std::vector<FrameInterrupt> frame_interrupts_;
   mutable std::optional<std::uint64_t> clock_start_cycle_;
