@@ -185,7 +185,12 @@ void SimulatedBoard::step_physics(double dt_s) {
   theta_ += omega_ * dt_s;
 
   // The encoder: A leads B going forward (00, 10, 11, 01).
-  const auto count = static_cast<long long>(std::floor(theta_ / (2.0 * M_PI) * p.counts_per_rev));
+  // Edge k sits at k counts plus its channel's error: A rises at 0 and falls at 2 (its duty), B at
+  // 1 and 3 (its phase). The count is the last edge passed.
+  const double position = theta_ / (2.0 * M_PI) * p.counts_per_rev;
+  const double edge_error[4] = {0.0, p.encoder_phase_error, p.encoder_duty_error, p.encoder_phase_error};
+  auto count = static_cast<long long>(std::floor(position)) + 1;
+  while (static_cast<double>(count) + edge_error[((count % 4) + 4) % 4] > position) --count;
   while (!encoder_disconnected_ && encoder_count_ != count) {
     encoder_count_ += count > encoder_count_ ? 1 : -1;
     static constexpr bool kA[4] = {false, true, true, false};

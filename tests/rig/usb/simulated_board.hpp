@@ -28,6 +28,10 @@ struct TurntablePhysics {
   double inertia_kg_m2 = 0.009;    // the rotor through the gearbox dominates the disc
   double track_radius_m = 0.060;
   double counts_per_rev = 4480.0;  // 64 counts a motor turn, times 70
+  // A real encoder's edges sit off their even places, in counts: channel B's phase against A, and
+  // A's duty cycle (its falling edge). 0: a perfect encoder.
+  double encoder_phase_error = 0.0;
+  double encoder_duty_error = 0.0;
   double current_V_per_A = 1.65;   // DRV8876 IPROPI, 1100 uA/A into 1.5 kOhm
   double amplifier_V_per_N = 0.255;
   double amplifier_zero_V = 2.5;  // the amplifier's reference (HARDWARE.md)
