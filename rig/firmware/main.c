@@ -50,6 +50,9 @@ static void make_frames(void) {
     struct rig_frame *f = rig.streaming ? frame_fifo_slot(&fifo) : 0;
     rig_sample(&rig, s.t_us, &adc, f ? f : &scratch);
     if (f) frame_fifo_push(&fifo);
+    /* The endpoint takes 64 bytes at a time: between frames too, or at 4 kHz the loop cannot hand
+     * the USB controller the stream's bytes as fast as they are made. */
+    usb_stream_service();
   }
   if (rig.zero_taken) {
     rig.zero_taken = 0;
@@ -80,7 +83,8 @@ static void run_speed_loop(void) {
 static void stream(void) {
   if (!rig.streaming) {
     frame_fifo_clear(&fifo);
-  } else if (usb_device_configured() && usb_stream_idle() && frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US)) {
+  } else if (usb_device_configured() && usb_stream_idle() && frame_fifo_count(&fifo) > 0 &&
+             frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US)) {
     usb_stream_start(frame_fifo_take_packet(&fifo, usb_stream_buffer()));
   }
   usb_stream_service();

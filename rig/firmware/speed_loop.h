@@ -24,8 +24,11 @@ struct speed_controller {
   float kp;     /* duty per mm/s of error */
   float ki;     /* duty per mm of accumulated error */
   float kff;    /* duty per mm/s of target: the motor's no-load speed, inverted */
-  float offset; /* duty that overcomes the gearbox's friction */
+  float offset; /* duty that overcomes the gearbox's and the contact's friction */
+  float kacc;   /* duty per mm/s^2 of a ramp: the motor's time constant over its no-load speed */
   float integral;
+  float last_target;
+  float step_hold_s; /* after a step, the integral trims only near the target for this long */
 };
 
 void speed_controller_init(struct speed_controller *c);

@@ -6,6 +6,7 @@
 #include <simavr/avr_ioport.h>
 #include <simavr/avr_usb.h>
 #include <simavr/sim_elf.h>
+#include <simavr/sim_interrupts.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -24,6 +25,7 @@ constexpr std::uint32_t kDataSpace = 0x800000;      // avr-gcc's offset of RAM a
 constexpr std::uint16_t kUeintx = 0xE8, kUenum = 0xE9;
 constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0x91, kTcnt3 = 0x94, kPortb = 0x25;
 constexpr double kAvccMillivolts = 5000.0;
+constexpr std::uint8_t kTimer3CompareAVector = 32;  // TIMER3_COMPA_vect_num, the frame interrupt
 
 std::uint64_t read_u64(const std::vector<std::uint8_t>& b) {
   std::uint64_t v = 0;
@@ -101,14 +103,23 @@ std::uint8_t SimulatedBoard::read_io(std::uint16_t address) const {
   return io.r.c != nullptr ? io.r.c(avr_, address, io.r.param) : avr_->data[address];
 }
 
-std::uint64_t SimulatedBoard::device_us_at_cycle(std::uint64_t cycle) const {
-  // Timer 3 counts cycles / 8 from where it started; the firmware's clock is its count / 2.
+// Timer 3 counts cycles / 8 from where it started; the firmware's clock is its count / 2. Kept once
+// the timer runs and its count is far from an overflow the firmware has not yet counted; simavr
+// computes the count from the start's cycle, so this is that cycle to within the prescaler's 8.
+std::uint64_t SimulatedBoard::clock_start_cycle() const {
+  if (clock_start_cycle_) return *clock_start_cycle_;
   std::uint32_t overflows = 0;
   std::memcpy(&overflows, &avr_->data[clock_overflows_address_], sizeof overflows);
   const std::uint8_t low = read_io(kTcnt3);  // first: reading the low byte latches the high one
   const std::uint16_t count = static_cast<std::uint16_t>(low | (read_io(kTcnt3 + 1) << 8));
   const std::uint64_t ticks = (static_cast<std::uint64_t>(overflows) << 16) | count;
   const std::uint64_t started = avr_->cycle - ticks * 8;
+  if (avr_->data[kTccr3b] != 0 && count > 0x0100 && count < 0xFF00) clock_start_cycle_ = started;
+  return started;
+}
+
+std::uint64_t SimulatedBoard::device_us_at_cycle(std::uint64_t cycle) const {
+  const std::uint64_t started = clock_start_cycle();
   return cycle < started ? 0 : (cycle - started) / 16;
 }
 
@@ -131,6 +142,22 @@ void SimulatedBoard::set_pin(char port, int pin, bool high) {
   avr_raise_irq(irq, high ? 1 : 0);
 }
 
+void SimulatedBoard::record_frame_interrupts() {
+  if (recording_interrupts_) return;
+  recording_interrupts_ = true;
+  // simavr raises a vector's "running" IRQ to 1 as the chip enters its handler.
+  avr_irq_t* irqs = avr_get_interrupt_irq(avr_, kTimer3CompareAVector);
+  avr_irq_register_notify(irqs + AVR_INT_IRQ_RUNNING, &SimulatedBoard::on_frame_interrupt, this);
+}
+
+void SimulatedBoard::on_frame_interrupt(avr_irq_t*, std::uint32_t value, void* self) {
+  auto* board = static_cast<SimulatedBoard*>(self);
+  if (value != 1) return;
+  // On entry the handler has not yet moved next_frame_ticks on: it holds this frame's due tick.
+  const std::uint64_t due_tick = read_u64(board->read_symbol("next_frame_ticks", 8));
+  board->frame_interrupts_.push_back({board->clock_start_cycle() + due_tick * 8, board->avr_->cycle});
+}
+
 avr_cycle_count_t SimulatedBoard::on_physics(avr_t*, avr_cycle_count_t when, void* self) {
   static_cast<SimulatedBoard*>(self)->step_physics(static_cast<double>(kPhysicsCycles) / kFrequency);
   return when + kPhysicsCycles;
@@ -149,7 +176,9 @@ void SimulatedBoard::step_physics(double dt_s) {
   current_A_ = awake ? (volts - p.volts_per_rad_s * omega_) / p.winding_ohm : 0.0;
   const double drive = p.torque_per_A * current_A_;
   const double load = p.friction_Nm + mu_ * normal_N_ * p.track_radius_m;
-  if (omega_ == 0.0 && std::abs(drive) <= load) {
+  if (jammed_) {
+    omega_ = 0.0;
+  } else if (omega_ == 0.0 && std::abs(drive) <= load) {
     // Held by static friction.
   } else {
     const double before = omega_;
@@ -159,8 +188,13 @@ void SimulatedBoard::step_physics(double dt_s) {
   theta_ += omega_ * dt_s;
 
   // The encoder: A leads B going forward (00, 10, 11, 01).
-  const auto count = static_cast<long long>(std::floor(theta_ / (2.0 * M_PI) * p.counts_per_rev));
-  while (encoder_count_ != count) {
+  // Edge k sits at k counts plus its channel's error: A rises at 0 and falls at 2 (its duty), B at
+  // 1 and 3 (its phase). The count is the last edge passed.
+  const double position = theta_ / (2.0 * M_PI) * p.counts_per_rev;
+  const double edge_error[4] = {0.0, p.encoder_phase_error, p.encoder_duty_error, p.encoder_phase_error};
+  auto count = static_cast<long long>(std::floor(position)) + 1;
+  while (static_cast<double>(count) + edge_error[((count % 4) + 4) % 4] > position) --count;
+  while (!encoder_disconnected_ && encoder_count_ != count) {
     encoder_count_ += count > encoder_count_ ? 1 : -1;
     static constexpr bool kA[4] = {false, true, true, false};
     static constexpr bool kB[4] = {false, false, true, true};
@@ -172,7 +206,7 @@ void SimulatedBoard::step_physics(double dt_s) {
   // The analog side: motor current, then the two bridges through their amplifiers.
   avr_irq_t* adc = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
   auto millivolts = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 5.0) * 1000.0 + 0.5); };
-  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts(std::abs(current_A_) * p.current_V_per_A));
+  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts((std::abs(current_A_) + extra_current_A_) * p.current_V_per_A));
   double normal = normal_N_;
   if (pulse_ && avr_->data[kTccr3b] != 0) {
     // The frame ending at pulse_->first averages the period before it.

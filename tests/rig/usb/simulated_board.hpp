@@ -28,9 +28,20 @@ struct TurntablePhysics {
   double inertia_kg_m2 = 0.009;    // the rotor through the gearbox dominates the disc
   double track_radius_m = 0.060;
   double counts_per_rev = 4480.0;  // 64 counts a motor turn, times 70
+  // A real encoder's edges sit off their even places, in counts: channel B's phase against A, and
+  // A's duty cycle (its falling edge). 0: a perfect encoder.
+  double encoder_phase_error = 0.0;
+  double encoder_duty_error = 0.0;
   double current_V_per_A = 1.65;   // DRV8876 IPROPI, 1100 uA/A into 1.5 kOhm
   double amplifier_V_per_N = 0.255;
   double amplifier_zero_V = 2.5;  // the amplifier's reference (HARDWARE.md)
+};
+
+// One run of the frame interrupt: the cycle its compare match was due (the frame's nominal sampling
+// instant) and the cycle the chip entered it.
+struct FrameInterrupt {
+  std::uint64_t due_cycle = 0;
+  std::uint64_t entry_cycle = 0;
 };
 
 struct ControlOutcome {
@@ -58,6 +69,11 @@ class SimulatedBoard {
   std::uint64_t cycle_at_device_us(std::uint64_t device_us) const;
   // The device time of the next frame the firmware will sample.
   std::uint64_t next_frame_device_us() const;
+  // The cycle at which the device clock read 0: device time t us is this plus 16 t cycles.
+  std::uint64_t clock_start_cycle() const;
+  // Every frame interrupt from now on, for the sampling instant's jitter.
+  void record_frame_interrupts();
+  const std::vector<FrameInterrupt>& frame_interrupts() const { return frame_interrupts_; }
 
   // The world around the chip.
   void set_normal_force(double newtons) { normal_N_ = newtons; }
@@ -67,6 +83,13 @@ class SimulatedBoard {
   // Extra normal force over the frame period that ends at device time `frame_end_us`: the frame
   // sampled then carries all of it, no other frame any of it.
   void pulse_force(std::uint64_t frame_end_us, double extra_N);
+  // Faults of the world: the turntable held still (a jammed disc), the encoder's cable pulled (its
+  // pins stay where they were).
+  void jam(bool held) { jammed_ = held; }
+  void disconnect_encoder(bool disconnected) { encoder_disconnected_ = disconnected; }
+  // Current the motor's sense resistor carries beyond the motor's own (a winding shorting, a
+  // binding gearbox), until set back to 0.
+  void add_motor_current(double amps) { extra_current_A_ = amps; }
   double surface_speed_m_s() const { return omega_ * physics_.track_radius_m; }
   double duty() const { return duty_; }
   double motor_current_A() const { return current_A_; }
@@ -93,6 +116,7 @@ class SimulatedBoard {
  private:
   enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };
   static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
+  static void on_frame_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
   void step_physics(double dt_s);
   void set_pin(char port, int pin, bool high);
   std::uint16_t reg16(std::uint16_t low_address) const;
@@ -112,6 +136,11 @@ class SimulatedBoard {
   double omega_ = 0.0, theta_ = 0.0, duty_ = 0.0, current_A_ = 0.0;
   long long encoder_count_ = 0;
   std::array<bool, 2> encoder_pins_{};
+  bool jammed_ = false, encoder_disconnected_ = false;
+  double extra_current_A_ = 0.0;
+  bool recording_interrupts_ = false;
+  std::vector<FrameInterrupt> frame_interrupts_;
+  mutable std::optional<std::uint64_t> clock_start_cycle_;
 
   Stage stage_ = Stage::kIdle;
   std::array<std::uint8_t, 8> setup_{};
