@@ -50,8 +50,8 @@ static void make_frames(void) {
     struct rig_frame *f = rig.streaming ? frame_fifo_slot(&fifo) : 0;
     rig_sample(&rig, s.t_us, &adc, f ? f : &scratch);
     if (f) frame_fifo_push(&fifo);
-    /* The endpoint takes 64 bytes at a time: between frames too, or at 4 kHz the loop cannot hand
-     * the USB controller the stream's bytes as fast as they are made. */
+    /* The endpoint takes 64 bytes at a time: between frames too, or at the highest rates the loop
+     * cannot hand the USB controller the stream's bytes as fast as they are made. */
     usb_stream_service();
   }
   if (rig.zero_taken) {

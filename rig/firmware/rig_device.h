@@ -16,7 +16,9 @@ extern "C" {
 #define RIG_MAX_POINTS 64u
 #define RIG_MAX_SPEED_MM_S 300.0f
 #define RIG_MIN_RATE_HZ 1000u
-#define RIG_MAX_RATE_HZ 4000u
+/* At 4 kHz the chip has no cycle to spare: about 6 % of the frames were lost on the simulated board
+ * (the frames' soft-float work, the endpoint's byte copies, the frame interrupt's 64-bit sums). */
+#define RIG_MAX_RATE_HZ 3000u
 #define RIG_WATCHDOG_MS 500u
 #define RIG_ADC_FULL_COUNTS 1023.0f
 #define RIG_SERIAL_BYTES 16u

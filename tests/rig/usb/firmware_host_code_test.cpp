@@ -223,7 +223,7 @@ std::vector<std::uint8_t> firmware_f32s(std::initializer_list<float> values) {
 TEST_F(FirmwareRequests, ValuesOutOfRangeAreRangeRefusals) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   for (std::uint16_t v : {2, 0xFFFF}) expect_refused(out(Request::kSetStreaming, v, 0, {}), 0x03, Refusal::kRange);
-  for (std::uint16_t v : {0, 999, 4001, 0xFFFF}) expect_refused(out(Request::kSetFrameRate, v, 0, {}), 0x31, Refusal::kRange);
+  for (std::uint16_t v : {0, 999, 3001, 4000, 0xFFFF}) expect_refused(out(Request::kSetFrameRate, v, 0, {}), 0x31, Refusal::kRange);
   for (std::uint16_t v : {0, 65, 0xFFFF}) expect_refused(out(Request::kProfileBegin, v, 0, {}), 0x20, Refusal::kRange);
   for (std::uint16_t v : {0, 0x4E41, 0x424E}) expect_refused(out(Request::kEnterBootloader, v, 0, {}), 0x40, Refusal::kRange);
   for (float v : {-1.0f, 300.01f, inf, nan}) expect_refused(out(Request::kSetSpeed, 0, 0, firmware_f32s({v})), 0x10, Refusal::kRange);

@@ -40,7 +40,7 @@ struct Design<EmulatedRig> {
 template <>
 struct Design<testing::FirmwareRig> {
   static constexpr std::uint16_t kProtocol = 0x0101;  // RIG_PROTOCOL_VERSION
-  static constexpr const char* kRates = "1000 to 4000 Hz";
+  static constexpr const char* kRates = "1000 to 3000 Hz";
   static constexpr bool kBuffersSeconds = false;  // the ATmega32U4's RAM holds 16 frames
 };
 #endif
