@@ -74,27 +74,25 @@ void BoardHost::run_us(double us) {
 
 ControlOutcome BoardHost::out(Request request, std::uint16_t value, std::uint16_t index,
                               const std::vector<std::uint8_t>& data) {
-  while (keepalive_in_flight_) run_us(kBoardHostSliceUs);
-  board_.begin_control(board_host_setup(false, request, value, index, static_cast<std::uint16_t>(data.size())), data, 0);
-  last_request_us_ = board_.sim_us();
-  const double deadline = board_.sim_us() + kBoardHostTransferLimitUs;
-  while (board_.sim_us() < deadline) {
-    slice();
-    if (auto outcome = board_.step_control()) return *outcome;
-  }
-  throw std::runtime_error("the simulated firmware did not complete " + request_name(static_cast<std::uint8_t>(request)));
+  return carry(board_host_setup(false, request, value, index, static_cast<std::uint16_t>(data.size())), data, 0);
 }
 
 ControlOutcome BoardHost::in(Request request, std::uint16_t length, std::uint16_t value, std::uint16_t index) {
+  return carry(board_host_setup(true, request, value, index, length), {}, length);
+}
+
+// One control transfer, stage by stage, with the bus looked at between stages as a controller would.
+ControlOutcome BoardHost::carry(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& data,
+                                std::size_t in_capacity) {
   while (keepalive_in_flight_) run_us(kBoardHostSliceUs);
-  board_.begin_control(board_host_setup(true, request, value, index, length), {}, length);
+  board_.begin_control(setup, data, in_capacity);
   last_request_us_ = board_.sim_us();
   const double deadline = board_.sim_us() + kBoardHostTransferLimitUs;
   while (board_.sim_us() < deadline) {
     slice();
     if (auto outcome = board_.step_control()) return *outcome;
   }
-  throw std::runtime_error("the simulated firmware did not complete " + request_name(static_cast<std::uint8_t>(request)));
+  throw std::runtime_error("the simulated firmware did not complete " + request_name(setup[1]));
 }
 
 void BoardHost::require_out(Request request, std::uint16_t value, std::uint16_t index,

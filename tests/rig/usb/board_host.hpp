@@ -4,6 +4,7 @@
 // loop, stream and faults) with no real time and no usbfs in between.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -60,6 +61,8 @@ class BoardHost {
   void clear_records();
 
  private:
+  ControlOutcome carry(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& data,
+                       std::size_t in_capacity);
   void slice();
   void finish_packet();
 
