@@ -246,9 +246,12 @@ TEST_F(FirmwareRequests, ValuesOutOfRangeAreRangeRefusals) {
   // Nothing refused changed the device.
   const DeviceStatus s = status();
   EXPECT_EQ(s.mode, Mode::kIdle);
-  EXPECT_EQ(rig_.frame_rate_hz, 1000u);
-  EXPECT_EQ(rig_.streaming, 0);
-  EXPECT_FLOAT_EQ(rig_.persist.counts_per_N[0], 52.2f);
+  // Copies: the firmware's structs are packed, and gtest would bind a reference to a member.
+  const unsigned rate = rig_.frame_rate_hz, streaming = rig_.streaming;
+  const float counts_per_N = rig_.persist.counts_per_N[0];
+  EXPECT_EQ(rate, 1000u);
+  EXPECT_EQ(streaming, 0u);
+  EXPECT_FLOAT_EQ(counts_per_N, 52.2f);
   EXPECT_STREQ(rig_.persist.serial, "NIB-0000");
 }
 
