@@ -20,10 +20,13 @@ void frame_fifo_push(struct frame_fifo *q) { q->head = (uint8_t)(q->head + 1u); 
 
 uint64_t frame_fifo_oldest_us(const struct frame_fifo *q) { return q->frames[q->tail % FRAME_FIFO_SIZE].t_us; }
 
-int frame_fifo_ready(const struct frame_fifo *q, uint64_t now_us, uint32_t max_wait_us) {
+int frame_fifo_ready(const struct frame_fifo *q, uint64_t now_us, uint32_t max_wait_us, uint32_t period_us) {
   const uint8_t n = frame_fifo_count(q);
   if (n == 0) return 0;
-  return n >= PACKET_MAX_FRAMES || now_us - frame_fifo_oldest_us(q) >= max_wait_us;
+  if (n >= PACKET_MAX_FRAMES) return 1;
+  const uint64_t oldest = frame_fifo_oldest_us(q);
+  const uint64_t newest = q->frames[(uint8_t)(q->head - 1u) % FRAME_FIFO_SIZE].t_us;
+  return newest + period_us - oldest >= max_wait_us || now_us - oldest >= max_wait_us;
 }
 
 uint16_t frame_fifo_take_packet(struct frame_fifo *q, uint8_t out[PACKET_MAX_BYTES]) {

@@ -30,8 +30,11 @@ void frame_fifo_push(struct frame_fifo *q);
 /* The oldest frame's device time (the fifo must not be empty). */
 uint64_t frame_fifo_oldest_us(const struct frame_fifo *q);
 
-/* Whether to send now: a full packet's worth, or the oldest frame waited `max_wait_us`. */
-int frame_fifo_ready(const struct frame_fifo *q, uint64_t now_us, uint32_t max_wait_us);
+/* Whether to send now: a full packet's worth; or the oldest frame would wait `max_wait_us` before
+ * the next frame (`period_us` after the newest) comes, so the packet leaves with the frame just made
+ * and its newest frame reaches the host at once (the host's time base rests on the earliest
+ * arrivals); or, whatever the frames, the oldest has waited `max_wait_us`. */
+int frame_fifo_ready(const struct frame_fifo *q, uint64_t now_us, uint32_t max_wait_us, uint32_t period_us);
 /* Moves up to PACKET_MAX_FRAMES frames into `out` as one packet; returns its length in bytes. */
 uint16_t frame_fifo_take_packet(struct frame_fifo *q, uint8_t out[PACKET_MAX_BYTES]);
 

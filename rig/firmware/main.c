@@ -19,6 +19,7 @@ static struct speed_estimator estimator;
 static struct speed_controller controller;
 static struct motor_guard guard;
 static uint16_t applied_rate;
+static uint32_t frame_period_us; /* of applied_rate, divided once */
 static uint8_t bootloader_asked;
 
 static void on_vendor_request(const uint8_t setup[8], const uint8_t *data, struct rig_reply *reply) {
@@ -84,7 +85,7 @@ static void stream(void) {
   if (!rig.streaming) {
     frame_fifo_clear(&fifo);
   } else if (usb_device_configured() && usb_stream_idle() && frame_fifo_count(&fifo) > 0 &&
-             frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US)) {
+             frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US, frame_period_us)) {
     usb_stream_start(frame_fifo_take_packet(&fifo, usb_stream_buffer()));
   }
   usb_stream_service();
@@ -101,6 +102,7 @@ int main(void) {
   rig_init(&rig, &persist, (uint32_t)board_clock_us());
   speed_controller_init(&controller);
   applied_rate = rig.frame_rate_hz;
+  frame_period_us = 1000000ul / applied_rate;
   board_set_frame_rate(applied_rate);
   usb_device_init(on_vendor_request, rig.persist.serial);
   sei();
@@ -113,6 +115,7 @@ int main(void) {
     }
     if (rig.frame_rate_hz != applied_rate) {
       applied_rate = rig.frame_rate_hz;
+      frame_period_us = 1000000ul / applied_rate;
       board_set_frame_rate(applied_rate);
     }
     make_frames();

@@ -76,16 +76,30 @@ TEST(FirmwareFramePackets, AFullFifoDropsTheNewestAndCountsIt) {
 
 TEST(FirmwareFramePackets, APacketWaitsForEightFramesOrItsOldestsDeadline) {
   frame_fifo q{};
-  EXPECT_FALSE(frame_fifo_ready(&q, 0, 4000));
+  EXPECT_FALSE(frame_fifo_ready(&q, 0, 4000, 1000));
   frame_fifo_slot(&q)->t_us = 10'000;
   frame_fifo_push(&q);
-  EXPECT_FALSE(frame_fifo_ready(&q, 13'999, 4000));
-  EXPECT_TRUE(frame_fifo_ready(&q, 14'000, 4000));
+  EXPECT_FALSE(frame_fifo_ready(&q, 13'999, 4000, 1000));
+  EXPECT_TRUE(frame_fifo_ready(&q, 14'000, 4000, 1000));
   for (unsigned i = 1; i < PACKET_MAX_FRAMES; ++i) {
     frame_fifo_slot(&q)->t_us = 10'000 + i;
     frame_fifo_push(&q);
   }
-  EXPECT_TRUE(frame_fifo_ready(&q, 10'010, 4000));
+  EXPECT_TRUE(frame_fifo_ready(&q, 10'010, 4000, 1000));
+}
+
+// At 1 kHz the fourth frame is the last before the oldest's 4 ms are up: the packet leaves with it,
+// not a frame period later, so its newest frame reaches the host as soon as it is made.
+TEST(FirmwareFramePackets, APacketLeavesWithTheLastFrameBeforeItsDeadline) {
+  frame_fifo q{};
+  for (unsigned i = 0; i < 3; ++i) {
+    frame_fifo_slot(&q)->t_us = 10'000 + 1000 * i;
+    frame_fifo_push(&q);
+  }
+  EXPECT_FALSE(frame_fifo_ready(&q, 12'000, 4000, 1000));
+  frame_fifo_slot(&q)->t_us = 13'000;
+  frame_fifo_push(&q);
+  EXPECT_TRUE(frame_fifo_ready(&q, 13'000, 4000, 1000));
 }
 
 // The protocol state of a fresh device, and one request at a time into it.
