@@ -181,8 +181,7 @@ void FirmwareRig::replug(int new_address) {
   {
     // The kernel enumerates it again: a bus reset, then its requests, in the board's time.
     std::lock_guard lock(mutex_);
-    const auto descriptors = board_->enumerate(new_address);
-    (void)descriptors;
+    board_->enumerate(new_address);
     paced_from_ = std::chrono::steady_clock::now();
     paced_from_cycle_ = board_->cycle();
     plugged_ = true;
@@ -214,9 +213,7 @@ void FirmwareRig::ignore_next_control() {
 void FirmwareRig::tap(std::uint64_t device_us, double extra_N) {
   std::lock_guard lock(mutex_);
   // The first frame sampled at or after `device_us`, on the firmware's own frame grid.
-  struct rig r;
-  const auto bytes = rig_memory();
-  std::memcpy(&r, bytes.data(), sizeof r);
+  const struct rig r = rig_state();
   const std::uint64_t next = board_->next_frame_device_us();
   const std::uint64_t period = 1'000'000 / r.frame_rate_hz;
   std::uint64_t frame = next;
@@ -241,13 +238,17 @@ void FirmwareRig::place_on_arm(double normal_N, double tangential_N) {
   board_->set_tangential_pull(tangential_N);
 }
 
-std::vector<std::uint8_t> FirmwareRig::rig_memory() const { return board_->read_symbol("rig", sizeof(struct rig)); }
+// The firmware's protocol state as it lies in the chip's RAM (the struct is packed, as on the AVR).
+struct rig FirmwareRig::rig_state() const {
+  struct rig r;
+  const auto bytes = board_->read_symbol("rig", sizeof r);
+  std::memcpy(&r, bytes.data(), sizeof r);
+  return r;
+}
 
 DeviceStatus FirmwareRig::status() const {
   std::lock_guard lock(mutex_);
-  struct rig r;
-  const auto bytes = rig_memory();
-  std::memcpy(&r, bytes.data(), sizeof r);
+  const struct rig r = rig_state();
   DeviceStatus s;
   s.flags = r.sticky_flags;
   if (r.mode == RIG_SPEED || r.mode == RIG_PROFILE) s.flags |= RIG_PROFILE_RUNNING;
@@ -263,9 +264,7 @@ DeviceStatus FirmwareRig::status() const {
 
 std::vector<ProfilePoint> FirmwareRig::held_profile() const {
   std::lock_guard lock(mutex_);
-  struct rig r;
-  const auto bytes = rig_memory();
-  std::memcpy(&r, bytes.data(), sizeof r);
+  const struct rig r = rig_state();
   std::vector<ProfilePoint> points;
   for (unsigned i = 0; i < r.profile_held; ++i) {
     points.push_back({r.profile[i].t_ms / 1000.0, r.profile[i].mm_s / 1000.0});
@@ -275,9 +274,7 @@ std::vector<ProfilePoint> FirmwareRig::held_profile() const {
 
 ForceCalibration FirmwareRig::calibration() const {
   std::lock_guard lock(mutex_);
-  struct rig r;
-  const auto bytes = rig_memory();
-  std::memcpy(&r, bytes.data(), sizeof r);
+  const struct rig r = rig_state();
   return {r.persist.counts_per_N[0], r.persist.counts_per_N[1], r.persist.lever};
 }
 
@@ -285,9 +282,7 @@ std::uint32_t FirmwareRig::frames_sampled() const { return status().next_sequenc
 
 bool FirmwareRig::streaming() const {
   std::lock_guard lock(mutex_);
-  struct rig r;
-  const auto bytes = rig_memory();
-  std::memcpy(&r, bytes.data(), sizeof r);
+  const struct rig r = rig_state();
   return r.streaming != 0;
 }
 

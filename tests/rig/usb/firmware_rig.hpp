@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "rig/firmware/rig_device.h"
 #include "rig/speed_profile.hpp"
 #include "rig/usb/usb_protocol.hpp"
 #include "tests/rig/usb/emulated_rig.hpp"
@@ -72,7 +73,7 @@ class FirmwareRig {
   void run();
   void service_usb();
   void finish_packet();
-  std::vector<std::uint8_t> rig_memory() const;
+  struct rig rig_state() const;
 
   EmulatedRigConfig config_;
   std::unique_ptr<SimulatedBoard> board_;

@@ -27,12 +27,6 @@ constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0
 constexpr double kAvccMillivolts = 5000.0;
 constexpr std::uint8_t kTimer3CompareAVector = 32;  // TIMER3_COMPA_vect_num, the frame interrupt
 
-std::uint64_t read_u64(const std::vector<std::uint8_t>& b) {
-  std::uint64_t v = 0;
-  for (std::size_t i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(b[i]) << (8 * i);
-  return v;
-}
-
 }  // namespace
 
 SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::uint8_t>& eeprom,
@@ -64,13 +58,15 @@ SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::ui
   for (const auto& [name, address] : symbols_) {
     if (name == "clock_overflows") clock_overflows_address_ = address - kDataSpace;
     if (name == "next_frame_ticks") next_frame_address_ = address - kDataSpace;
+    if (name == "frame_period_ticks") frame_period_address_ = address - kDataSpace;
   }
-  if (clock_overflows_address_ == 0 || next_frame_address_ == 0) {
+  if (clock_overflows_address_ == 0 || next_frame_address_ == 0 || frame_period_address_ == 0) {
     throw std::runtime_error(elf + " is not the rig controller's firmware (no device clock symbols)");
   }
   // The encoder's INT0/INT1 run on any edge. simavr keeps raising a low-level interrupt for as long
   // as a pin stays low once it saw the pin fall in that mode (the reset state, before the firmware
   // chose its edges); the encoder's pins rest low, so that would never stop.
+  adc_irq_ = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
   avr_extint_set_strict_lvl_trig(avr_, 0, 0);
   avr_extint_set_strict_lvl_trig(avr_, 1, 0);
   // The driver is awake and well (nFAULT high); the encoder's pins start low (its first state).
@@ -129,9 +125,13 @@ std::uint64_t SimulatedBoard::cycle_at_device_us(std::uint64_t device_us) const 
   return avr_->cycle + (device_us - this->device_us()) * 16;
 }
 
-std::uint64_t SimulatedBoard::next_frame_device_us() const {
-  return read_u64(read_symbol("next_frame_ticks", 8)) / 2;
+std::uint64_t SimulatedBoard::next_frame_ticks() const {
+  std::uint64_t ticks = 0;
+  std::memcpy(&ticks, &avr_->data[next_frame_address_], sizeof ticks);  // little-endian, as the AVR's
+  return ticks;
 }
+
+std::uint64_t SimulatedBoard::next_frame_device_us() const { return next_frame_ticks() / 2; }
 
 void SimulatedBoard::pulse_force(std::uint64_t frame_end_us, double extra_N) {
   pulse_ = std::make_pair(frame_end_us, extra_N);
@@ -154,7 +154,7 @@ void SimulatedBoard::on_frame_interrupt(avr_irq_t*, std::uint32_t value, void* s
   auto* board = static_cast<SimulatedBoard*>(self);
   if (value != 1) return;
   // On entry the handler has not yet moved next_frame_ticks on: it holds this frame's due tick.
-  const std::uint64_t due_tick = read_u64(board->read_symbol("next_frame_ticks", 8));
+  const std::uint64_t due_tick = board->next_frame_ticks();
   board->frame_interrupts_.push_back({board->clock_start_cycle() + due_tick * 8, board->avr_->cycle});
 }
 
@@ -204,16 +204,15 @@ void SimulatedBoard::step_physics(double dt_s) {
   }
 
   // The analog side: motor current, then the two bridges through their amplifiers.
-  avr_irq_t* adc = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
+  avr_irq_t* const adc = adc_irq_;
   auto millivolts = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 5.0) * 1000.0 + 0.5); };
   avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts((std::abs(current_A_) + extra_current_A_) * p.current_V_per_A));
   double normal = normal_N_;
   if (pulse_ && avr_->data[kTccr3b] != 0) {
     // The frame ending at pulse_->first averages the period before it.
     const std::uint64_t now = device_us();
-    std::uint16_t period_ticks = 0;
-    const auto raw = read_symbol("frame_period_ticks", 2);
-    period_ticks = static_cast<std::uint16_t>(raw[0] | (raw[1] << 8));
+    const std::uint16_t period_ticks = static_cast<std::uint16_t>(avr_->data[frame_period_address_] |
+                                                                   (avr_->data[frame_period_address_ + 1] << 8));
     const std::uint64_t start = pulse_->first - period_ticks / 2;
     if (now > start && now <= pulse_->first) normal += pulse_->second;
     if (now > pulse_->first) pulse_.reset();

@@ -121,6 +121,7 @@ class SimulatedBoard {
   void set_pin(char port, int pin, bool high);
   std::uint16_t reg16(std::uint16_t low_address) const;
   std::uint8_t read_io(std::uint16_t address) const;
+  std::uint64_t next_frame_ticks() const;
   bool setup_unread() const;
 
   TurntablePhysics physics_;
@@ -128,6 +129,8 @@ class SimulatedBoard {
   std::vector<std::pair<std::string, std::uint32_t>> symbols_;
   std::uint32_t clock_overflows_address_ = 0;
   std::uint32_t next_frame_address_ = 0;
+  std::uint32_t frame_period_address_ = 0;
+  avr_irq_t* adc_irq_ = nullptr;
 
   double normal_N_ = 2.2;  // the paper's load
   double mu_ = 0.3;
