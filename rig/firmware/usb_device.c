@@ -81,17 +81,15 @@ static void ep0_stall(void) { UECONX |= (1 << STALLRQ); }
 /* An IN data stage from RAM or flash, then the host's status stage. */
 static void ep0_send(const uint8_t *data, uint16_t length, uint16_t requested, uint8_t from_flash) {
   if (length > requested) length = requested;
-  uint8_t last = 0;
   do {
     const uint8_t flags = ep0_wait((1 << TXINI) | (1 << RXOUTI));
     if (!flags || (flags & (1 << RXOUTI))) break; /* reset, or the host ended the data stage */
-    last = length < EP0_SIZE ? (uint8_t)length : EP0_SIZE;
-    for (uint8_t i = 0; i < last; ++i) UEDATX = from_flash ? pgm_read_byte(data + i) : data[i];
-    data += last;
-    length -= last;
+    const uint8_t n = length < EP0_SIZE ? (uint8_t)length : EP0_SIZE;
+    for (uint8_t i = 0; i < n; ++i) UEDATX = from_flash ? pgm_read_byte(data + i) : data[i];
+    data += n;
+    length -= n;
     UEINTX = (uint8_t) ~(1 << TXINI);
   } while (length > 0);
-  (void)last;
   if (ep0_wait(1 << RXOUTI)) UEINTX = (uint8_t) ~(1 << RXOUTI);
 }
 
