@@ -17,6 +17,8 @@ pkg_check_modules(ALSA REQUIRED IMPORTED_TARGET alsa)  # only to quiet alsa-lib'
 # The rig's USB controller (rig/usb) talks libusb 1.0.26 (Debian 12: no libusb_init_context); its tests
 # emulate the device in-process with umockdev, which nothing but those tests links.
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
+# Pen tablets: libinput reads them (through udev), libwacom names them and gives their size.
+pkg_check_modules(LIBINPUT REQUIRED IMPORTED_TARGET libinput libudev libwacom)
 if(NIBRIG_BUILD_TESTS)
   pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)
 endif()
