@@ -1,0 +1,68 @@
+// A pen tablet as the kernel shows it to libinput, inside a umockdev testbed: its sysfs entries and
+// udev properties, the evdev ioctls on its /dev/input node (answered from the model's axes), and the
+// input events the kernel's hid-wacom would send, written into the node's pty with the stamps the
+// test gives. Run under tests/rig/pen/run_under_umockdev.sh (umockdev's preload and the shim that
+// gives it udev's database and fstat).
+#pragma once
+
+#include <umockdev.h>
+
+#include <cstdint>
+#include <mutex>
+#include <string>
+
+namespace nibrig::rig::pen::testing {
+
+// A tablet model by the kernel's numbers (drivers/hid/wacom_wac.c) and libwacom's entry.
+struct TabletModel {
+  std::string name;  // the kernel's device name
+  std::uint16_t vendor = 0, product = 0, version = 0;
+  int x_max = 0, y_max = 0;  // ABS_X, ABS_Y maxima
+  int resolution = 0;        // units per mm
+  int pressure_max = 0, distance_max = 0;
+  double report_hz = 0.0;  // how often the pen reports while in reach
+};
+
+// Wacom Intuos S (CTL-4100, USB 056a:0374): 152 x 95 mm active area at 100 units/mm, 4096
+// pressure levels, no tilt, 133 reports a second.
+TabletModel wacom_intuos_s();
+
+class EmulatedTablet {
+ public:
+  EmulatedTablet(UMockdevTestbed* testbed, TabletModel model, int event_number = 5);
+  ~EmulatedTablet();
+  EmulatedTablet(const EmulatedTablet&) = delete;
+  EmulatedTablet& operator=(const EmulatedTablet&) = delete;
+
+  const TabletModel& model() const { return model_; }
+  std::string devnode() const;
+
+  // One report each, stamped t_s on CLOCK_MONOTONIC, positions in mm from the top-left corner and
+  // pressure as a fraction of the range (0 … 1), quantised as the tablet does.
+  void proximity_in(double t_s, double x_mm, double y_mm);
+  void report(double t_s, double x_mm, double y_mm, double pressure);
+  void proximity_out(double t_s);
+  // The tablet leaves: udev's remove uevent, and the node goes away.
+  void unplug();
+
+  static double now_s();
+
+ private:
+  static gboolean on_ioctl(UMockdevIoctlBase* base, UMockdevIoctlClient* client, gpointer self);
+  gboolean handle_ioctl(UMockdevIoctlClient* client);
+  void wait_for_reader();
+  void write_event(double t_s, std::uint16_t type, std::uint16_t code, std::int32_t value);
+  void add_to_testbed();
+  std::string syspath() const;
+
+  UMockdevTestbed* testbed_;
+  TabletModel model_;
+  int event_number_;
+  UMockdevIoctlBase* handler_ = nullptr;
+  int pty_ = -1, peer_ = -1;
+  bool touching_ = false;
+  bool plugged_ = false;
+  std::mutex write_mutex_;
+};
+
+}  // namespace nibrig::rig::pen::testing
