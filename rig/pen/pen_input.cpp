@@ -193,6 +193,17 @@ std::vector<libinput_device*> added_tablets(libinput* li) {
 
 }  // namespace
 
+const TabletInfo* match_tablet(const std::vector<TabletInfo>& tablets, const std::string& name) {
+  const std::string wanted = lower(name);
+  for (const auto& t : tablets) {
+    if (wanted.empty() || (is_device_node(name) && t.devnode == name) || lower(t.name).find(wanted) != std::string::npos ||
+        (!t.model.empty() && lower(t.model).find(wanted) != std::string::npos)) {
+      return &t;
+    }
+  }
+  return nullptr;
+}
+
 std::vector<TabletInfo> list_tablets(std::string* why) {
   PenLog log;
   udev* u = nullptr;
@@ -237,19 +248,18 @@ PenInput::PenInput(const std::string& name, PenEvents events) : impl_(std::make_
   m.events = std::move(events);
   m.li = open_context(name, m.log, m.u);
   std::vector<libinput_device*> tablets = added_tablets(m.li);
-  const std::string wanted = lower(name);
+  std::vector<TabletInfo> infos;
+  for (libinput_device* device : tablets) infos.push_back(describe(device));
+  const TabletInfo* chosen = match_tablet(infos, name);
   std::string names;
-  for (libinput_device* device : tablets) {
-    TabletInfo info = describe(device);
-    const bool match = wanted.empty() || is_device_node(name) || lower(info.name).find(wanted) != std::string::npos ||
-                       (!info.model.empty() && lower(info.model).find(wanted) != std::string::npos);
-    if (match && !m.device) {
-      m.device = device;
-      m.info = info;
+  for (std::size_t i = 0; i < tablets.size(); ++i) {
+    if (chosen == &infos[i]) {
+      m.device = tablets[i];
+      m.info = infos[i];
     } else {
-      libinput_device_unref(device);
+      libinput_device_unref(tablets[i]);
     }
-    names += (names.empty() ? "" : ", ") + ("\"" + info.name + "\"");
+    names += (names.empty() ? "" : ", ") + ("\"" + infos[i].name + "\"");
   }
   if (!m.device) {
     const std::string why = unreadable(m.log);
@@ -257,9 +267,9 @@ PenInput::PenInput(const std::string& name, PenEvents events) : impl_(std::make_
     if (m.u) udev_unref(m.u);
     if (!why.empty()) throw std::runtime_error("pen tablets: " + why);
     if (names.empty()) {
-      throw std::invalid_argument("--pen " + name + ": no pen tablet found (is one plugged in?)");
+      throw std::invalid_argument("no pen tablet found (is one plugged in?)");
     }
-    throw std::invalid_argument("--pen " + name + ": no tablet of that name; there are " + names);
+    throw std::invalid_argument("pen tablet \"" + name + "\": none of that name; there are " + names);
   }
   m.stop_fd = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
   m.thread = std::thread([&m] { m.run(); });

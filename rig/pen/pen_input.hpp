@@ -25,6 +25,10 @@ struct TabletInfo {
 // devices cannot be read (`why`, when given, says which).
 std::vector<TabletInfo> list_tablets(std::string* why = nullptr);
 
+// The tablet `name` picks: the first whose name (or libwacom model) contains it, case-insensitively;
+// the first for an empty name; the one at that node for a /dev path. nullptr when none does.
+const TabletInfo* match_tablet(const std::vector<TabletInfo>& tablets, const std::string& name);
+
 struct PenEvents {
   // Every tablet-tool event (axis, tip, proximity), in order, on the reader's thread.
   std::function<void(const PenSample&)> sample;

@@ -77,6 +77,7 @@ int run(int argc, char** argv) {
   add_design_command(app, global);
   add_render_command(app, global);
   add_audio_commands(app, global);
+  add_pen_command(app, global);
   add_latency_command(app, global);
   add_rig_command(app, global);
   add_experiment_command(app, global);

@@ -13,6 +13,9 @@
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
 #include "playback/live_audition.hpp"
+#include "rig/pen/pen_input.hpp"
+#include "rig/pen/pen_play.hpp"
+#include "rig/pen/stroke_recorder.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
@@ -30,6 +33,8 @@ struct AuditionOptions {
   double switch_every = 2.0;
   double seconds = 0;
   std::string actuator;
+  std::string pen, pen_name;           // a tablet's pen drives the engine instead of the stroke
+  std::filesystem::path record_folder;  // with --pen: each recording's file goes there
 };
 
 struct CalibrateOptions {
@@ -42,10 +47,62 @@ struct CalibrateOptions {
 
 void devices() {
   for (const auto& api : playback::list_devices()) std::printf("%s\n", playback::describe_devices(api).c_str());
+  std::string why;
+  const auto tablets = rig::pen::list_tablets(&why);
+  std::printf("pen tablets (choose with --pen NAME):%s\n", tablets.empty() ? (" none" + (why.empty() ? "" : " (" + why + ")")).c_str() : "");
+  for (const auto& t : tablets) {
+    std::printf("  \"%s\"%s  %s  %.1f x %.1f mm, %s, %s\n", t.name.c_str(),
+                t.model.empty() ? "" : (" (" + t.model + ")").c_str(), t.devnode.c_str(), t.width_mm, t.height_mm,
+                t.has_pressure ? "pressure" : "no pressure", t.has_tilt ? "tilt" : "no tilt");
+  }
+}
+
+// The engine follows the pen until --seconds pass or the tablet goes; each stroke on its own line,
+// and with --record each stroke of the session in one drawing file.
+void play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen, const AuditionOptions& o) {
+  const auto& t = pen.tablet();
+  const auto& curve = pen.curve();
+  std::printf("pen: \"%s\" (%.1f x %.1f mm); force from %s\n", t.name.c_str(), t.width_mm, t.height_mm,
+              curve.is_default ? "the default pressure curve (0 to 4.9 N; `nibrig pen calibrate` measures one)"
+                               : ("the calibration " + curve.file.string()).c_str());
+  std::unique_ptr<rig::pen::StrokeRecorder> recorder;
+  if (!o.record_folder.empty()) {
+    rig::pen::StrokeRecorderSettings settings;
+    settings.folder = o.record_folder;
+    settings.tool = o.stroke.tool;
+    settings.surface = o.stroke.surface;
+    settings.pen = o.pen_name.empty() ? t.name : o.pen_name;
+    recorder = std::make_unique<rig::pen::StrokeRecorder>(settings);
+    pen.on_sample([r = recorder.get()](const rig::pen::PenSample& s, double force_n) { r->add(s, force_n); });
+    std::printf("recording to %s\n", recorder->start().string().c_str());
+  }
+  rig::pen::PenPlayEvents events;
+  events.stroke = [](const rig::pen::PenStrokeNote& note) {
+    if (note.began) {
+      std::printf("stroke %llu began\n", static_cast<unsigned long long>(note.stroke));
+    } else {
+      std::printf("stroke %llu ended (%s)\n", static_cast<unsigned long long>(note.stroke),
+                  rig::pen::pen_stroke_end_name(note.why));
+    }
+    std::fflush(stdout);
+  };
+  events.removed = [] { std::printf("the tablet was unplugged; the stroke ended there\n"); };
+  const auto stats = rig::pen::play_pen(audition, pen, o.seconds, nullptr, events);
+  pen.on_sample({});
+  if (recorder) {
+    if (const auto summary = recorder->stop(); summary && summary->kept) say_wrote(summary->file);
+  }
+  const auto status = pen.status();
+  std::printf("pen: %llu strokes, %llu contacts; report interval %.2f ms, speed lag %.2f ms; "
+              "report to engine %.2f ms mean, %.2f ms worst\n",
+              static_cast<unsigned long long>(stats.strokes), static_cast<unsigned long long>(stats.contacts),
+              1e3 * status.report_interval_s, 1e3 * status.lag_s, 1e3 * stats.mean_post_s, 1e3 * stats.max_post_s);
 }
 
 void audition(const AuditionOptions& o) {
   if (o.also.size() > 2) throw CLI::ValidationError("--also", "takes at most two more tools (a triplet)");
+  if (!o.pen.empty() && !o.also.empty()) throw CLI::ValidationError("--also", "plays in turn with a stroke, not with --pen");
+  if (o.pen.empty() && !o.record_folder.empty()) throw CLI::ValidationError("--record", "records a pen's strokes: give --pen");
   const playback::OutputSettings device = output_settings(o.device, "nibrig-audition");
   model::design::ToolSounds sounds(tool_sound_options(o.stroke));
   std::vector<std::string> tools{o.stroke.tool};
@@ -62,7 +119,12 @@ void audition(const AuditionOptions& o) {
     if (i == 0) modes = sound.modes;
     audition.load(i, sound, o.stroke.seed + i);
   }
-  audition.attach(std::move(stroke.source));
+  std::unique_ptr<rig::pen::PenStylus> pen;
+  if (o.pen.empty()) {
+    audition.attach(std::move(stroke.source));
+  } else {
+    pen = std::make_unique<rig::pen::PenStylus>(o.pen, o.pen_name);
+  }
   const std::vector<std::string>& names = audition.names();
   if (!o.actuator.empty()) {
     const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
@@ -79,6 +141,10 @@ void audition(const AuditionOptions& o) {
               names[0].c_str(), modes.c_str(), info.api.c_str(), info.device.c_str(),
               device.output_channel, info.sample_rate, info.period_frames,
               stroke.description.c_str());
+  if (pen) {
+    play_with_pen(audition, *pen, o);
+    return;
+  }
   playback::AlternationEvents events;
   events.switched = [&names](double t, std::size_t slot) {
     std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
@@ -121,7 +187,7 @@ void calibrate(const CalibrateOptions& o) {
 }  // namespace
 
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
-  auto* list = app.add_subcommand("devices", "List audio APIs and devices (choose them by name)");
+  auto* list = app.add_subcommand("devices", "List audio APIs and devices, and pen tablets (choose them by name)");
   list->callback([global] {
     configure_logging(global->verbosity);
     devices();
@@ -141,6 +207,13 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(in_range(0.001, 86400, "a length in seconds"));
   play->add_option("--actuator", a->actuator,
                    "Actuator calibration from `nibrig calibrate`: its name, or a file");
+  play->add_option("--pen", a->pen,
+                   "Play from a pen tablet (by part of its name, see `nibrig devices`): the pen's speed and "
+                   "force drive the engine; tip down starts a stroke, tip up ends it");
+  play->add_option("--pen-name", a->pen_name, "The pen's calibration (`nibrig pen calibrate --name`); default: the tablet's name");
+  play->add_option("--record", a->record_folder,
+                   "With --pen: record the strokes into this folder, in the paper's drawing format "
+                   "(replay with `render --trajectory`)");
   play->callback([a, global] {
     configure_logging(global->verbosity);
     for (const auto& note : outside_measured_range(a->stroke)) spdlog::warn("{}", note);

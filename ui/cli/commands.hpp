@@ -23,6 +23,8 @@ void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `pen calibrate`: a pen's pressure curve, stored by name.
+void add_pen_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `rig calibrate` and `rig flash`, registered by add_rig_command on its `rig` subcommand.

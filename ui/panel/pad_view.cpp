@@ -58,7 +58,61 @@ void PadView::update_speed(bool down, ImVec2 p, double now_s) {
   last_ = p;
 }
 
+void PadView::follow_mouse(ImVec2 origin, ImVec2 size) {
+  (void)size;
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool down = ImGui::IsItemActive() && io.MouseDown[0];
+  const ImVec2 p{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
+  if (down && !drawing_) strokes_.emplace_back();
+  if (down) strokes_.back().push_back(p);
+  const bool was = drawing_;
+  update_speed(down, p, ImGui::GetTime());
+  sent_force_n_ = down ? force_n_ : 0.0;
+  if (down || was) audio_.contact(speed_mm_s_ * 1e-3, sent_force_n_);
+}
+
+// The pen's newest contact to the engine, and its strokes onto the canvas: the tablet's area
+// scaled to fit the canvas, its aspect kept.
+void PadView::follow_pen(rig::pen::PenStylus& stylus, ImVec2 size) {
+  stylus.tick();
+  if (const auto contact = stylus.take()) {
+    audio_.contact(contact->speed_m_s, contact->force_n);
+    speed_mm_s_ = 1e3 * contact->speed_m_s;
+    sent_force_n_ = contact->force_n;
+  }
+  drawing_ = stylus.status().in_stroke;
+  const auto& t = stylus.tablet();
+  const double w = t.width_mm > 0 ? t.width_mm : 150.0, h = t.height_mm > 0 ? t.height_mm : 100.0;
+  const double scale = std::min(size.x / w, size.y / h);  // pixels per mm of the tablet
+  for (const auto& point : stylus.take_path()) {
+    if (point.stroke != pen_stroke_ || strokes_.empty()) {
+      strokes_.emplace_back();
+      pen_stroke_ = point.stroke;
+    }
+    strokes_.back().push_back({static_cast<float>(1e3 * point.x_m * scale), static_cast<float>(1e3 * point.y_m * scale)});
+  }
+}
+
+void PadView::draw_traces(ImDrawList* draw, ImVec2 at, float width) {
+  trace_.push_back(static_cast<float>(speed_mm_s_));
+  force_trace_.push_back(static_cast<float>(sent_force_n_));
+  while (trace_.size() > kTraceLength) trace_.pop_front();
+  while (force_trace_.size() > kTraceLength) force_trace_.pop_front();
+  const float half = (width - 60.0f) / 2.0f;
+  const PlotFrame speed(at, {half - 50.0f, 90.0f}, {-static_cast<double>(kTraceLength), 0.0}, {0.0, 300.0});
+  const PlotFrame force({at.x + half + 20.0f, at.y}, {half - 50.0f, 90.0f}, {-static_cast<double>(kTraceLength), 0.0},
+                        {0.0, 5.0});
+  std::vector<double> x(trace_.size()), y(trace_.begin(), trace_.end()), f(force_trace_.begin(), force_trace_.end());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i) - static_cast<double>(x.size());
+  draw_axes(draw, speed, "frames", "speed mm/s");
+  draw_trace(draw, speed, x, y, IM_COL32(86, 180, 233, 255));
+  draw_axes(draw, force, "frames", "force N");
+  draw_trace(draw, force, x, f, IM_COL32(230, 159, 0, 255));
+}
+
 void PadView::draw() {
+  pen_.poll(ImGui::GetTime());
+  rig::pen::PenStylus* stylus = pen_.stylus();
   section("Tool");
   ImGui::SetNextItemWidth(140.0f);
   ImGui::InputText("tool", tool_text_, sizeof tool_text_);
@@ -67,12 +121,15 @@ void PadView::draw() {
   ImGui::InputText("surface", surface_text_, sizeof surface_text_);
   ImGui::SameLine();
   if (ImGui::Button(loaded_ ? "Use" : "Load")) use_tool({tool_text_, surface_text_});
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(160.0f);
-  ImGui::SliderFloat("force N", &force_n_, 0.5f, 4.0f, "%.1f");
+  if (!stylus) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(160.0f);
+    ImGui::SliderFloat("mouse force N", &force_n_, 0.5f, 4.0f, "%.1f");
+  }
   if (!loaded_) ImGui::Text("press Load to draw with %s on %s", tool_text_, surface_text_);
   else ImGui::Text("in use: %s on %s%s", tool_.tool.c_str(), tool_.surface.c_str(),
                    audio_.making_sounds() ? " (being made)" : "");
+  ImGui::TextUnformatted(pen_.status().c_str());
 
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 canvas_size{avail.x, std::max(100.0f, avail.y - 150.0f)};
@@ -80,14 +137,8 @@ void PadView::draw() {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, {origin.x + canvas_size.x, origin.y + canvas_size.y}, IM_COL32(245, 242, 232, 255));
   ImGui::InvisibleButton("pad-canvas", canvas_size);
-  const ImGuiIO& io = ImGui::GetIO();
-  const bool down = ImGui::IsItemActive() && io.MouseDown[0];
-  const ImVec2 p{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
-  if (down && !drawing_) strokes_.emplace_back();
-  if (down) strokes_.back().push_back(p);
-  const bool was = drawing_;
-  update_speed(down, p, ImGui::GetTime());
-  if (down || was) audio_.contact(speed_mm_s_ * 1e-3, down ? force_n_ : 0.0);
+  if (stylus) follow_pen(*stylus, canvas_size);
+  else follow_mouse(origin, canvas_size);
   if (strokes_.size() > 64) strokes_.erase(strokes_.begin());
   draw->PushClipRect(origin, {origin.x + canvas_size.x, origin.y + canvas_size.y}, true);
   for (const auto& stroke : strokes_) {
@@ -96,16 +147,11 @@ void PadView::draw() {
   }
   draw->PopClipRect();
 
-  trace_.push_back(static_cast<float>(speed_mm_s_));
-  while (trace_.size() > kTraceLength) trace_.pop_front();
   const ImVec2 at{origin.x + 50.0f, origin.y + canvas_size.y + 26.0f};
-  const PlotFrame frame(at, {canvas_size.x - 70.0f, 90.0f}, {-static_cast<double>(kTraceLength), 0.0}, {0.0, 300.0});
-  std::vector<double> x(trace_.size()), y(trace_.begin(), trace_.end());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i) - static_cast<double>(x.size());
-  draw_axes(draw, frame, "frames", "speed mm/s");
-  draw_trace(draw, frame, x, y, IM_COL32(86, 180, 233, 255));
+  draw_traces(draw, at, canvas_size.x);
   ImGui::SetCursorScreenPos({origin.x, at.y + 112.0f});
-  ImGui::Text("%.0f mm/s%s", speed_mm_s_, speed_mm_s_ > 250.0 ? " (beyond the measured 250 mm/s: the fastest spectrum is held)" : "");
+  ImGui::Text("%.0f mm/s, %.2f N%s", speed_mm_s_, sent_force_n_,
+              speed_mm_s_ > 250.0 ? " (beyond the measured 250 mm/s: the fastest spectrum is held)" : "");
 }
 
 }  // namespace nibrig::ui::panel

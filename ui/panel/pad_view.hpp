@@ -1,14 +1,18 @@
-// View 4, the pad: draw with the mouse or a tablet pen and the stroke's speed drives the engine
-// live (Engine::set_contact through PanelAudio), with the speed trace under the canvas and the tool
-// and surface in use. GLFW 3.3 reports no pen pressure (ImGui's io.PenPressure stays unfilled), so
-// the force is a slider; the speed is the pointer's, in millimetres of the screen.
+// View 4, the pad: draw with a tablet's pen, or with the mouse when there is none, and the stroke's
+// speed and force drive the engine live (Engine::set_contact through PanelAudio), with the speed
+// and force traces under the canvas and the tool and surface in use. The pen is read through
+// libinput (PadPen): its speed in millimetres of the tablet, its force from its pressure curve. The
+// mouse has no force (GLFW reports no pressure), so a slider gives it; its speed is the pointer's,
+// in millimetres of the screen.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <string>
 #include <vector>
 
 #include "imgui.h"
+#include "ui/panel/pad_pen.hpp"
 #include "ui/panel/panel_audio.hpp"
 
 namespace nibrig::ui::panel {
@@ -17,10 +21,14 @@ class PadView {
  public:
   explicit PadView(PanelAudio& audio);
   void draw();
-  // The speed the pad last sent (mm/s) and whether the pen is down; the trace.
+  // The speed (mm/s) and force (N) the pad last sent and whether a stroke is being drawn; the
+  // traces, one value a frame.
   double speed_mm_s() const { return speed_mm_s_; }
+  double force_n() const { return sent_force_n_; }
   bool drawing() const { return drawing_; }
   const std::deque<float>& trace() const { return trace_; }
+  const std::deque<float>& force_trace() const { return force_trace_; }
+  PadPen& pen() { return pen_; }
   // Millimetres per screen pixel: 25.4 / the screen's dots per inch (96 unless set).
   void set_mm_per_pixel(double mm) { mm_per_pixel_ = mm; }
   // The tool the pad plays; loads it (in the background) when it changes.
@@ -29,6 +37,9 @@ class PadView {
 
  private:
   void update_speed(bool down, ImVec2 position, double now_s);
+  void follow_mouse(ImVec2 origin, ImVec2 size);
+  void follow_pen(rig::pen::PenStylus& stylus, ImVec2 size);
+  void draw_traces(ImDrawList* draw, ImVec2 at, float width);
 
   PanelAudio& audio_;
   ToolChoice tool_{"cryon", "office"};
@@ -44,6 +55,10 @@ class PadView {
   int events_ = 0;
   std::vector<std::vector<ImVec2>> strokes_;  // in canvas coordinates
   std::deque<float> trace_;                   // speed per frame, the last 600
+  std::deque<float> force_trace_;             // force per frame, the last 600
+  double sent_force_n_ = 0.0;
+  std::uint64_t pen_stroke_ = 0;  // the pen stroke the canvas's last stroke is
+  PadPen pen_;
   char tool_text_[64] = "cryon", surface_text_[64] = "office";
 };
 
