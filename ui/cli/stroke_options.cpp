@@ -31,7 +31,8 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   auto* sweep = cmd->add_flag("--sweep", o.sweep, "The rig's sweep, 17 -> 250 mm/s, 3 s period");
   auto* trajectory = cmd->add_option(
       "--trajectory", o.trajectory,
-      "An artist's drawing (piovarci2018/drawing/*.csv[.gz]): its speed and force, looped");
+      "An artist's drawing (piovarci2018/drawing/*.csv[.gz]) or a pen stroke recorded in its "
+      "format: its speed and force, looped");
   speed->excludes(sweep)->excludes(trajectory);
   sweep->excludes(trajectory);
   cmd->add_option_function<double>(
