@@ -62,8 +62,8 @@ std::vector<std::uint8_t> tablet_event_bits() {
 
 }  // namespace
 
-TabletModel wacom_intuos_s() {
-  TabletModel m;
+EvdevTabletModel wacom_intuos_s() {
+  EvdevTabletModel m;
   m.name = "Wacom Intuos S Pen";
   m.vendor = 0x056a;
   m.product = 0x0374;
@@ -77,7 +77,7 @@ TabletModel wacom_intuos_s() {
   return m;
 }
 
-EmulatedTablet::EmulatedTablet(UMockdevTestbed* testbed, TabletModel model, int event_number)
+EmulatedTablet::EmulatedTablet(UMockdevTestbed* testbed, EvdevTabletModel model, int event_number)
     : testbed_(testbed), model_(std::move(model)), event_number_(event_number) {
   handler_ = umockdev_ioctl_base_new();
   g_signal_connect_data(handler_, "handle-ioctl", G_CALLBACK(&EmulatedTablet::on_ioctl), this, nullptr,

@@ -14,7 +14,7 @@
 namespace nibrig::rig::pen::testing {
 
 // A tablet model by the kernel's numbers (drivers/hid/wacom_wac.c) and libwacom's entry.
-struct TabletModel {
+struct EvdevTabletModel {
   std::string name;  // the kernel's device name
   std::uint16_t vendor = 0, product = 0, version = 0;
   int x_max = 0, y_max = 0;  // ABS_X, ABS_Y maxima
@@ -25,16 +25,16 @@ struct TabletModel {
 
 // Wacom Intuos S (CTL-4100, USB 056a:0374): 152 x 95 mm active area at 100 units/mm, 4096
 // pressure levels, no tilt, 133 reports a second.
-TabletModel wacom_intuos_s();
+EvdevTabletModel wacom_intuos_s();
 
 class EmulatedTablet {
  public:
-  EmulatedTablet(UMockdevTestbed* testbed, TabletModel model, int event_number = 5);
+  EmulatedTablet(UMockdevTestbed* testbed, EvdevTabletModel model, int event_number = 5);
   ~EmulatedTablet();
   EmulatedTablet(const EmulatedTablet&) = delete;
   EmulatedTablet& operator=(const EmulatedTablet&) = delete;
 
-  const TabletModel& model() const { return model_; }
+  const EvdevTabletModel& model() const { return model_; }
   std::string devnode() const;
 
   // One report each, stamped t_s on CLOCK_MONOTONIC, positions in mm from the top-left corner and
@@ -56,7 +56,7 @@ class EmulatedTablet {
   std::string syspath() const;
 
   UMockdevTestbed* testbed_;
-  TabletModel model_;
+  EvdevTabletModel model_;
   int event_number_;
   UMockdevIoctlBase* handler_ = nullptr;
   int pty_ = -1, peer_ = -1;
