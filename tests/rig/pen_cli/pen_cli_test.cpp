@@ -1,0 +1,165 @@
+// `nibrig devices`, `audition --pen` and `pen calibrate` as typed, the tablet an emulated Wacom
+// Intuos S in this process's umockdev testbed, which the `nibrig` child reaches through the
+// inherited preload (tests/rig/pen/run_under_umockdev.sh), the audio the tests' JACK server.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "model/io/paper_drawing.hpp"
+#include "rig/pen/pen_clock.hpp"
+#include "rig/pen/pen_force_file.hpp"
+#include "tests/playback/jack_recorder.hpp"
+#include "tests/rig/pen/emulated_tablet.hpp"
+#include "tests/support/jack_server.hpp"
+#include "tests/ui/cli/cli_harness.hpp"
+
+namespace nibrig::rig::pen {
+namespace {
+
+using namespace std::chrono_literals;
+
+std::filesystem::path pen_cli_scratch(const std::string& name) {
+  const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "pen_cli" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void sleep_until_s(double t) {
+  std::this_thread::sleep_for(std::chrono::duration<double>(std::max(0.0, t - pen_clock_now_s())));
+}
+
+class PenCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    testbed_ = umockdev_testbed_new();
+    tablet_ = std::make_unique<testing::EmulatedTablet>(testbed_, testing::wacom_intuos_s());
+  }
+  void TearDown() override {
+    tablet_.reset();
+    g_object_unref(testbed_);
+  }
+  // A stroke at `speed_mm_s` under `pressure`, in real time, each report stamped when written.
+  void stroke(double seconds, double speed_mm_s, double pressure) {
+    const double period = 1.0 / tablet_->model().report_hz;
+    const double start = pen_clock_now_s();
+    tablet_->proximity_in(start, 30.0, 50.0);
+    for (double t = start + period; t < start + period + seconds; t += period) {
+      sleep_until_s(t);
+      const double now = pen_clock_now_s();
+      tablet_->report(now, 30.0 + speed_mm_s * (now - start - period), 50.0, pressure);
+    }
+    tablet_->report(pen_clock_now_s(), 30.0 + speed_mm_s * seconds, 50.0, 0.0);
+    std::this_thread::sleep_for(std::chrono::duration<double>(period));
+    tablet_->proximity_out(pen_clock_now_s());
+  }
+
+  UMockdevTestbed* testbed_ = nullptr;
+  std::unique_ptr<testing::EmulatedTablet> tablet_;
+};
+
+TEST_F(PenCli, DevicesListsTheTabletWithItsSize) {
+  ::testing::internal::CaptureStdout();
+  const int code = test::run_cli({"devices"});
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("\"Wacom Intuos S Pen\" (Wacom Intuos S)  /dev/input/event5  152.0 x 95.0 mm, pressure, no tilt"),
+            std::string::npos)
+      << text;
+}
+
+TEST_F(PenCli, AuditionFollowsThePenAndRecordsItsStroke) {
+  nibrig::testing::JackServer server;
+  const auto folder = pen_cli_scratch("audition");
+  playback::testing::JackRecorder ear("pen-ear", 1, 48000);
+  ::testing::internal::CaptureStdout();
+  const pid_t pid = test::start_cli({"audition", "--pen", "intuos", "--tool", "cryon", "--surface", "office",
+                                     "--api", "jack", "--device", "sys", "--seconds", "4", "--record", folder.string()});
+  // The port appears once the stream is open, after the pen is.
+  bool connected = false;
+  for (int i = 0; i < 3000 && !connected; ++i) {
+    connected = ear.connect("nibrig-audition:outport 0", 0);
+    if (!connected) std::this_thread::sleep_for(20ms);
+  }
+  ear.start();
+  if (connected) stroke(0.6, 120.0, 0.5);
+  const int code = test::wait_cli(pid);
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  ASSERT_TRUE(connected) << "the audition's JACK port never appeared\n" << text;
+  EXPECT_NE(text.find("stroke 1 began"), std::string::npos) << text;
+  EXPECT_NE(text.find("stroke 1 ended (tip up)"), std::string::npos) << text;
+  EXPECT_NE(text.find("the default pressure curve"), std::string::npos) << text;
+  // The stroke was heard: the tool at 120 mm/s peaks near 0.1 of full scale; silence is 0.
+  float peak = 0.0f;
+  for (std::size_t i = 0; i < ear.recorded(); ++i) peak = std::max(peak, std::abs(ear.samples(0)[i]));
+  EXPECT_GT(peak, 1e-3f);
+  // The recording reads back as the paper's drawings do, at the speed drawn: the reader's speed is
+  // mm per frame times its frame-rate estimate; the tablet's 0.01 mm steps over 7.5 ms frames and
+  // the stamps' microsecond rounding keep the mean within 2 %.
+  std::filesystem::path file;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) file = e.path();
+  ASSERT_FALSE(file.empty()) << text;
+  const auto drawing = model::io::read_paper_drawing(file);
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 2; i + 2 < drawing.speed_m_s.size(); ++i) {
+    if (!drawing.touching[i] || !drawing.touching[i - 1]) continue;
+    sum += drawing.speed_m_s[i];
+    ++n;
+  }
+  ASSERT_GT(n, 50) << "tip-down rows in " << file;
+  EXPECT_NEAR(sum / n, 0.120, 0.120 * 0.02);
+}
+
+TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
+  const auto folder = pen_cli_scratch("calibrate");
+  setenv("NIBRIG_PENS", folder.c_str(), 1);
+  const auto keys = folder / "keys";
+  ASSERT_EQ(mkfifo(keys.c_str(), 0600), 0);
+  const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "test pen", "--load", "100g", "--load", "200g",
+                                     "--load", "400g"},
+                                    keys);
+  std::ofstream enter(keys);  // opens once the child reads it
+  // Each load held at its pressure for 0.8 s (longer than the 0.5 s window averaged), Enter
+  // pressed while it holds, then the pen lifted.
+  const double pressures[] = {0.20, 0.38, 0.70};
+  const double period = 1.0 / tablet_->model().report_hz;
+  const double t0 = pen_clock_now_s();
+  tablet_->proximity_in(t0, 60.0, 40.0);
+  for (double p : pressures) {
+    const double start = pen_clock_now_s();
+    for (double t = start; t < start + 0.8; t += period) {
+      sleep_until_s(t);
+      // A hand's tremor: ±0.2 % of the pressure, well inside the 5 % a steady hold allows.
+      const double wobble = 0.002 * p * std::sin(2 * M_PI * 6.0 * (t - start));
+      tablet_->report(pen_clock_now_s(), 60.0, 40.0, p + wobble);
+    }
+    enter << "\n" << std::flush;
+    std::this_thread::sleep_for(100ms);
+  }
+  enter.close();
+  unsetenv("NIBRIG_PENS");
+  const int code = test::wait_cli(pid);
+  ASSERT_EQ(code, 0);
+  const auto calibration = read_pen_file(folder / "test_pen.json");
+  const auto& points = calibration.curve.points();
+  ASSERT_EQ(points.size(), 4u);  // (0, 0 N) and the three loads
+  const double loads_n[] = {0.1 * 9.80665, 0.2 * 9.80665, 0.4 * 9.80665};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(points[i + 1].force_n, loads_n[i], 1e-9);
+    // libinput's normalised pressure of the level held: 4096 levels, and libinput's tip threshold
+    // offset (a few levels) within 1 % of the range.
+    EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);
+  }
+}
+
+}  // namespace
+}  // namespace nibrig::rig::pen
