@@ -14,7 +14,7 @@ namespace {
 // window starts under.
 constexpr double kCalibrationKeepS = 5.0;
 
-std::string load_text(double newtons) {
+std::string pen_load_text(double newtons) {
   char text[64];
   std::snprintf(text, sizeof text, "%.3g N (%.0f g)", newtons, newtons / kStandardGravity * 1000.0);
   return text;
@@ -55,7 +55,7 @@ PenHold PenCalibrator::hold(double load_n, double now_s) {
   const double window = settings_.window_s;
   if (stroke_.empty())
     throw PenCalibrationRefusal("the pen's tip is up: press it on the scale, hold it steady at " +
-                                load_text(load_n) + ", then take the load");
+                                pen_load_text(load_n) + ", then take the load");
   const double end = std::max(now_s, stroke_.back().time_s);
   const double start = end - window;
   const double down_s = end - stroke_.front().time_s;
@@ -91,7 +91,7 @@ PenHold PenCalibrator::hold(double load_n, double now_s) {
   const double mean = sum / weight;
   const double sd = std::sqrt(std::max(0.0, sum_sq / weight - mean * mean));
   if (!(mean > 0.0))
-    throw PenCalibrationRefusal("the pen reports no pressure under " + load_text(load_n) +
+    throw PenCalibrationRefusal("the pen reports no pressure under " + pen_load_text(load_n) +
                                 ": press harder, or check the pen has a pressure axis");
   const double limit = std::max(settings_.steady_relative_sd * mean, settings_.steady_floor_sd);
   if (sd > limit) {
@@ -100,7 +100,7 @@ PenHold PenCalibrator::hold(double load_n, double now_s) {
                   "the hold at %s was not steady: over the last %.2f s the pressure's standard "
                   "deviation was %.4f (%.1f %% of its mean %.4f), expected at most %.4f; hold "
                   "the pen still and take the load again",
-                  load_text(load_n).c_str(), window, sd, 100.0 * sd / mean, mean, limit);
+                  pen_load_text(load_n).c_str(), window, sd, 100.0 * sd / mean, mean, limit);
     throw PenCalibrationRefusal(text);
   }
   PenHold h;
@@ -145,9 +145,9 @@ PressureCurve PenCalibrator::fit() const {
       std::snprintf(text, sizeof text,
                     "the pressure under %s (%.4f) is not above the pressure under %s (%.4f): "
                     "pressures must rise with load; hold %s again",
-                    load_text(loads[i].force_n).c_str(), loads[i].pressure,
-                    load_text(loads[i - 1].force_n).c_str(), loads[i - 1].pressure,
-                    load_text(loads[i].force_n).c_str());
+                    pen_load_text(loads[i].force_n).c_str(), loads[i].pressure,
+                    pen_load_text(loads[i - 1].force_n).c_str(), loads[i - 1].pressure,
+                    pen_load_text(loads[i].force_n).c_str());
       throw PenCalibrationRefusal(text);
     }
     points.push_back({loads[i].pressure, loads[i].force_n});

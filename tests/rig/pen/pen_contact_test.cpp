@@ -36,7 +36,7 @@ struct PenContactLog {
   }
 };
 
-PenSample pen_report(double t, double x, double pressure, bool tip_down, bool in_proximity = true) {
+PenSample pen_contact_report(double t, double x, double pressure, bool tip_down, bool in_proximity = true) {
   PenSample s;
   s.time_s = t;
   s.x_m = x;
@@ -50,13 +50,13 @@ PenSample pen_report(double t, double x, double pressure, bool tip_down, bool in
 TEST(PenContact, TipDownStartsAStrokeAndTipUpEndsItWithSpeedAndForceZero) {
   PenContactLog log;
   PenContact contact(default_pressure_curve(), log.events_to_log());
-  contact.on_sample(pen_report(1.000, 0.010, 0.0, false));  // hovering: nothing
+  contact.on_sample(pen_contact_report(1.000, 0.010, 0.0, false));  // hovering: nothing
   EXPECT_TRUE(log.events.empty());
-  contact.on_sample(pen_report(1.010, 0.010, 0.5, true));
-  contact.on_sample(pen_report(1.020, 0.011, 0.5, true));
-  contact.on_sample(pen_report(1.030, 0.012, 0.5, true));
-  contact.on_sample(pen_report(1.040, 0.012, 0.0, false));
-  contact.on_sample(pen_report(1.050, 0.013, 0.0, false));  // hovering again: nothing
+  contact.on_sample(pen_contact_report(1.010, 0.010, 0.5, true));
+  contact.on_sample(pen_contact_report(1.020, 0.011, 0.5, true));
+  contact.on_sample(pen_contact_report(1.030, 0.012, 0.5, true));
+  contact.on_sample(pen_contact_report(1.040, 0.012, 0.0, false));
+  contact.on_sample(pen_contact_report(1.050, 0.013, 0.0, false));  // hovering again: nothing
   EXPECT_EQ(log.events, (std::vector<std::string>{"began 1", "contact", "contact", "contact", "contact",
                                                   "ended 1 tip up"}));
   ASSERT_EQ(log.contacts.size(), 4u);
@@ -75,9 +75,9 @@ TEST(PenContact, TipDownStartsAStrokeAndTipUpEndsItWithSpeedAndForceZero) {
 TEST(PenContact, ProximityOutAndTheTabletRemovedEndTheStroke) {
   PenContactLog log;
   PenContact contact(default_pressure_curve(), log.events_to_log());
-  contact.on_sample(pen_report(2.00, 0.010, 0.3, true));
-  contact.on_sample(pen_report(2.01, 0.011, 0.3, true, false));
-  contact.on_sample(pen_report(3.00, 0.010, 0.3, true));
+  contact.on_sample(pen_contact_report(2.00, 0.010, 0.3, true));
+  contact.on_sample(pen_contact_report(2.01, 0.011, 0.3, true, false));
+  contact.on_sample(pen_contact_report(3.00, 0.010, 0.3, true));
   contact.on_removed();
   contact.on_removed();  // nothing more to end
   EXPECT_EQ(log.events, (std::vector<std::string>{"began 1", "contact", "contact", "ended 1 out of proximity",
@@ -114,7 +114,7 @@ TEST(PenContact, APenHeldStillFallsToSpeedZeroOnTheTickAndKeepsItsForce) {
   PenContactLog log;
   PenContact contact(default_pressure_curve(), log.events_to_log());
   const double period = 1.0 / 133.0;
-  for (int k = 0; k < 20; ++k) contact.on_sample(pen_report(5.0 + k * period, 0.01 + k * 0.0005, 0.4, true));
+  for (int k = 0; k < 20; ++k) contact.on_sample(pen_contact_report(5.0 + k * period, 0.01 + k * 0.0005, 0.4, true));
   const double last = 5.0 + 19 * period;
   const std::size_t moving = log.contacts.size();
   contact.tick(last + 2.0 * period);
@@ -126,7 +126,7 @@ TEST(PenContact, APenHeldStillFallsToSpeedZeroOnTheTickAndKeepsItsForce) {
   EXPECT_EQ(log.contacts.back().time_s, last + 3.0 * period);
   contact.tick(last + 4.0 * period);
   EXPECT_EQ(log.contacts.size(), moving + 1);
-  contact.on_sample(pen_report(last + 5.0 * period, 0.01 + 20 * 0.0005, 0.4, true));
+  contact.on_sample(pen_contact_report(last + 5.0 * period, 0.01 + 20 * 0.0005, 0.4, true));
   EXPECT_GT(log.contacts.back().speed_m_s, 0.0);
   EXPECT_TRUE(contact.status().in_stroke);
 }
@@ -154,7 +154,7 @@ TEST(PenContact, ReaderAndTickThreadsNeverCallBackAtOnce) {
   std::thread reader([&] {
     for (int stroke = 0; stroke < 20; ++stroke) {
       for (int k = 0; k < 50; ++k)
-        contact.on_sample(pen_report(pen_clock_now_s(), 0.01 + k * 1e-4, 0.3, k < 49));
+        contact.on_sample(pen_contact_report(pen_clock_now_s(), 0.01 + k * 1e-4, 0.3, k < 49));
     }
   });
   reader.join();
