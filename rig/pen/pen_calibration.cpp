@@ -26,8 +26,9 @@ PenCalibrator::PenCalibrator(PenCalibrationSettings settings) : settings_(settin
   if (!(settings_.window_s > 0.0) || !(settings_.steady_relative_sd > 0.0) ||
       !(settings_.steady_floor_sd >= 0.0) || settings_.min_samples < 1 ||
       !(settings_.same_load_relative >= 0.0))
-    throw std::invalid_argument("pen calibration: the window, the steadiness limits and the "
-                                "least sample count must be positive");
+    throw std::invalid_argument(
+        "pen calibration: the window, the steadiness limits and the "
+        "least sample count must be positive");
 }
 
 void PenCalibrator::add(const PenSample& sample) {
@@ -61,17 +62,19 @@ PenHold PenCalibrator::hold(double load_n, double now_s) {
   const double down_s = end - stroke_.front().time_s;
   if (stroke_.front().time_s > start) {
     char text[160];
-    std::snprintf(text, sizeof text,
-                  "the tip has been down for %.2f s: hold the load for at least %.2f s, then take it",
-                  down_s, window);
+    std::snprintf(
+        text, sizeof text,
+        "the tip has been down for %.2f s: hold the load for at least %.2f s, then take it", down_s,
+        window);
     throw PenCalibrationRefusal(text);
   }
   if (stroke_reports_ < settings_.min_samples) {
     char text[240];
-    std::snprintf(text, sizeof text,
-                  "the pen sent %zu reports since its tip went down, expected at least %zu (libinput "
-                  "reports only changes): too few to know the pressure; press again and hold",
-                  stroke_reports_, settings_.min_samples);
+    std::snprintf(
+        text, sizeof text,
+        "the pen sent %zu reports since its tip went down, expected at least %zu (libinput "
+        "reports only changes): too few to know the pressure; press again and hold",
+        stroke_reports_, settings_.min_samples);
     throw PenCalibrationRefusal(text);
   }
 
