@@ -78,7 +78,11 @@ TEST(PenCalibration, FourHoldsRecoverAKnownCurve) {
   PenCalibrator calibrator;
   PenOnAScale pen(calibrator);
   for (const double load : kPenTestLoads) {
-    pen.press(simulated_pen_pressure(load), 1.1, 0.3);
+    pen.press(simulated_pen_pressure(load), 0.4, 0.3);
+    EXPECT_FALSE(calibrator.check(pen.now()).ready) << "the window still holds the ramp";
+    pen.press(simulated_pen_pressure(load), 0.7);
+    const PenHoldCheck settled = calibrator.check(pen.now());
+    EXPECT_TRUE(settled.ready) << settled.problem;
     const PenHold h = calibrator.hold(load, pen.now());
     EXPECT_NEAR(h.pressure, simulated_pen_pressure(load), 0.005 * simulated_pen_pressure(load));
     EXPECT_GE(h.samples, 60u);  // 0.5 s at 133 Hz: 66 or 67 reports
@@ -110,7 +114,8 @@ void expect_pen_hold_refused(PenCalibrator& calibrator, double load, double now,
 TEST(PenCalibration, AHoldIsRefusedWhenTheTipIsUpTooShortTooSparseOrNotSteady) {
   PenCalibrator calibrator;
   PenOnAScale pen(calibrator);
-  expect_pen_hold_refused(calibrator, 1.0, pen.now(), "tip is up");
+  expect_pen_hold_refused(calibrator, 1.0, pen.now(),
+                          "load 1 N (102 g) not taken: the pen's tip is up");
   pen.press(0.4, 1.0);
   pen.lift();
   expect_pen_hold_refused(calibrator, 1.0, pen.now(), "tip is up");
