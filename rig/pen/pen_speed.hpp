@@ -32,9 +32,11 @@ class PenSpeed {
   // One report: kernel time (s, CLOCK_MONOTONIC) and position (m). Returns the speed after it, in
   // m/s. A report whose stamp is not later than the previous one is skipped (counted in
   // skipped()), as is one with a coordinate that is not finite: no interval is ever zero or
-  // negative. After a pause longer than the still timeout the pen is taken to have left its last
-  // position one report interval before this report (libinput would have reported an earlier
-  // move), so that a pen starting again gets its speed at once, not one diluted by the pause.
+  // negative. After a gap longer than the still timeout the window starts again at the gap's
+  // start: the speed is the mean over the gap, whether the pen paused (it then rises from low, as a
+  // pen setting off does) or reports were lost. Taking the pen to have left one report before the
+  // new one instead gave three times the speed on the paper's artists' strokes, whose tracker loses
+  // frames.
   double add(double time_s, double x_m, double y_m);
 
   // The newest estimate, or 0 when no report came for still_timeout_s() before `now_s` (the same
