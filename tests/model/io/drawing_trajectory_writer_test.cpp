@@ -102,9 +102,9 @@ TEST(DrawingTrajectoryWriter, SyntheticStrokeReadsBackThroughThePaperReader) {
     // by the chord's shortfall, (arc / radius)² / 24 ≤ 1.1e-4 at 1.5 mm a frame, by the rate's
     // error of at most 3.4e-4 (above), and by the positions' rounding, √2 × 1e-4 mm a frame,
     // 0.02 mm/s at 133 Hz: 0.1 % and 0.05 mm/s hold all three.
-    const double mean_mm_s =
-        (SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k)) -
-         SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k - 1))) * SyntheticPenStroke::kRate;
+    const double mean_mm_s = (SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k)) -
+                              SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k - 1))) *
+                             SyntheticPenStroke::kRate;
     EXPECT_NEAR(t.speed_m_s[i] * 1e3, mean_mm_s, 0.05 + 1e-3 * mean_mm_s);
   }
 }
@@ -113,7 +113,8 @@ TEST(DrawingTrajectoryWriter, SyntheticStrokeReadsBackThroughThePaperReader) {
 // one's. Their files hold 6 significant digits (1.3e-4 mm/frame² worst seen in tracking); the
 // writer's 6 decimals leave at most 1.5e-6.
 TEST(DrawingTrajectoryWriter, AccelerationIsTheChangeOfSpeedPerFrameAsInThePapersFiles) {
-  const auto paper = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
+  const auto paper =
+      nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
   const auto dir = nibrig::test::scratch_dir("drawing_writer_acceleration");
   const auto plain = dir / "charc_paper_ball.csv";
   {
@@ -145,14 +146,14 @@ TEST(DrawingTrajectoryWriter, AccelerationIsTheChangeOfSpeedPerFrameAsInThePaper
   EXPECT_EQ(rows[0][10], "0.000000");
 }
 
-// An independent reference: the authors' own file (2H pencil, with 3 tracking dropouts), read, written
-// again and read back.
+// An independent reference: the authors' own file (2H pencil, with 3 tracking dropouts), read,
+// written again and read back.
 TEST(DrawingTrajectoryWriter, APapersFileWrittenAgainReadsTheSame) {
-  const auto paper = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "p2h_paper_ball.csv.gz";
+  const auto paper =
+      nibrig::test::shared_data() / "piovarci2018" / "drawing" / "p2h_paper_ball.csv.gz";
   const DrawingTrajectory original = read_paper_drawing(paper);
   const auto dir = nibrig::test::scratch_dir("drawing_writer_paper");
-  const auto file =
-      dir / drawing_file_name(original.tool, original.surface, original.subject);
+  const auto file = dir / drawing_file_name(original.tool, original.surface, original.subject);
   EXPECT_EQ(file.filename(), "p2h_paper_ball.csv");
   {
     DrawingTrajectoryWriter writer(file, {1492954983454LL, 0.0});
@@ -278,8 +279,11 @@ TEST(DrawingTrajectoryWriter, TiltBecomesThePensAngleFromTheNormalAndItsAzimuth)
   writer.close();
   const auto rows = csv_rows_of(dir / "pen_tablet_tilt.csv");
   ASSERT_EQ(rows.size(), 5u);
-  const char* expected[][2] = {
-      {"0.00", "0.00"}, {"30.00", "0.00"}, {"30.00", "90.00"}, {"54.74", "45.00"}, {"20.00", "180.00"}};
+  const char* expected[][2] = {{"0.00", "0.00"},
+                               {"30.00", "0.00"},
+                               {"30.00", "90.00"},
+                               {"54.74", "45.00"},
+                               {"20.00", "180.00"}};
   for (std::size_t k = 0; k < 5; ++k) {
     EXPECT_EQ(rows[k][4], expected[k][0]) << "Phi, row " << k;
     EXPECT_EQ(rows[k][5], expected[k][1]) << "Theta, row " << k;
@@ -304,7 +308,9 @@ TEST(DrawingTrajectoryWriter, FileNamesSplitBackIntoToolSurfaceAndSubject) {
   EXPECT_EQ(t.subject, "Wacom-Intuos-S-Pen_2026-11-27");
   for (const auto& [tool, surface, subject, part] :
        std::vector<std::tuple<std::string, std::string, std::string, std::string>>{
-           {"__", "paper", "x", "tool"}, {"pen", "", "x", "surface"}, {"pen", "paper", " / ", "subject"},
+           {"__", "paper", "x", "tool"},
+           {"pen", "", "x", "surface"},
+           {"pen", "paper", " / ", "subject"},
            {"pen", "paper", "..", "subject"}}) {
     try {
       drawing_file_name(tool, surface, subject);
@@ -331,8 +337,9 @@ TEST(DrawingTrajectoryWriter, RefusesWhatCannotBeARecordingNamingIt) {
     DrawingTrajectoryWriter writer(file, kStrokeOrigin);
   };
   std::filesystem::create_directories(dir / "pen_tablet_folder.csv");
-  nibrig::test::expect_message_names(writer_refusal_of([&] { open(dir / "pen_tablet_folder.csv"); }),
-                                     {"pen_tablet_folder.csv", "is a folder"});
+  nibrig::test::expect_message_names(
+      writer_refusal_of([&] { open(dir / "pen_tablet_folder.csv"); }),
+      {"pen_tablet_folder.csv", "is a folder"});
   nibrig::test::write_text(dir / "pen_tablet_taken.csv", "keep me\n");
   nibrig::test::expect_message_names(writer_refusal_of([&] { open(dir / "pen_tablet_taken.csv"); }),
                                      {"pen_tablet_taken.csv", "exists already"});
@@ -360,7 +367,8 @@ TEST(DrawingTrajectoryWriter, RefusesWhatCannotBeARecordingNamingIt) {
     writer.append(bad);
     ADD_FAILURE() << "a NaN force was written";
   } catch (const UnwritableOutput& e) {
-    nibrig::test::expect_message_names(e.what(), {"pen_tablet_nan.csv", "row 2", "field 'F'", "not a finite"});
+    nibrig::test::expect_message_names(
+        e.what(), {"pen_tablet_nan.csv", "row 2", "field 'F'", "not a finite"});
   }
   writer.close();
   EXPECT_THROW(writer.append(SyntheticPenStroke::frame(2)), std::logic_error);
