@@ -206,11 +206,19 @@ void DrawingTrajectoryWriter::write_all(const std::string& text) {
   while (done < text.size()) {
     const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      // A full disk can take half a row: cut it off again, or the reader would take a number cut
+      // short in the Speed column for a whole one.
+      const bool whole = done == 0 || (::ftruncate(fd_, bytes_written_) == 0 &&
+                                       ::lseek(fd_, bytes_written_, SEEK_SET) == bytes_written_);
       throw std::runtime_error(file_.string() + ": cannot write the recording (" +
-                               system_reason(n < 0 ? errno : EIO) + ")");
+                               system_reason(error) + ")" +
+                               (whole ? "" : "; its last line is cut short"));
+    }
     done += static_cast<std::size_t>(n);
   }
+  bytes_written_ += static_cast<long long>(text.size());
 }
 
 void DrawingTrajectoryWriter::sync() {

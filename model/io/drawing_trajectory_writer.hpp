@@ -48,7 +48,9 @@ std::string drawing_file_name(const std::string& tool, const std::string& surfac
 // Reports that round to the millisecond of the row still open replace it (the format's stamps must
 // increase, and libinput sends a tip change and the axes at one instant as separate events): that
 // row is written when a later millisecond arrives or on close(). The file's data reaches the disk
-// (fdatasync) once a second of recording and on close(). Not thread-safe: one thread appends.
+// (fdatasync) once a second of recording and on close(). A write that fails part-way (a full disk)
+// takes its part back, so the file only ever holds whole lines. Not thread-safe: one thread
+// appends.
 class DrawingTrajectoryWriter {
  public:
   // Creates `file` with the header line, and its folder when missing. Throws std::invalid_argument
@@ -91,6 +93,7 @@ class DrawingTrajectoryWriter {
   Row previous_;                    // the last row written
   double previous_speed_mm_ = 0.0;  // its Speed column
   long long last_sync_ms_ = 0;
+  long long bytes_written_ = 0;  // whole lines only
   std::uint64_t rows_written_ = 0;
   std::uint64_t merged_ = 0;
 };

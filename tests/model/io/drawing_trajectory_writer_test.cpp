@@ -1,12 +1,15 @@
 #include "model/io/drawing_trajectory_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -218,6 +221,49 @@ TEST(DrawingTrajectoryWriter, AKilledRecorderLeavesAReadableFile) {
   EXPECT_TRUE(t.warnings.empty());
   for (int k = 0; k < kWritten - 1; ++k)
     EXPECT_NEAR(t.x_m[static_cast<std::size_t>(k)], SyntheticPenStroke::frame(k).x_m, 1e-6);
+}
+
+// A disk that fills in the middle of a row (here a file-size limit, which fails a write the same
+// way): the writer says so, and the part of the row that went out is taken back, so the reader
+// never takes a Speed cut short for a whole number.
+TEST(DrawingTrajectoryWriter, ADiskFullMidRowLeavesOnlyWholeRows) {
+  const auto dir = nibrig::test::scratch_dir("drawing_writer_full");
+  const auto file = dir / drawing_file_name("pen", "tablet", "full");
+  // The header (66 bytes) and about 10 rows of 75 bytes, then a limit in the middle of one.
+  constexpr rlim_t kLimit = 66 + 10 * 75 + 30;
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of the process ending
+    const rlimit limit{kLimit, kLimit};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    DrawingTrajectoryWriter writer(file, kStrokeOrigin);
+    try {
+      for (int k = 0; k < 100; ++k) writer.append(SyntheticPenStroke::frame(k));
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      ::_exit(message.find("cannot write the recording") != std::string::npos &&
+                      message.find("cut short") == std::string::npos
+                  ? 0
+                  : 2);
+    }
+    ::_exit(1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 0) << "1: nothing failed, 2: the wrong message";
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_LT(text.size(), kLimit);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n') << "a row cut short was left in the file";
+  const DrawingTrajectory t = read_paper_drawing(file);
+  EXPECT_TRUE(t.warnings.empty());
+  EXPECT_GE(t.time_s.size(), 9u);
+  for (std::size_t i = 0; i < t.time_s.size(); ++i)
+    EXPECT_NEAR(t.x_m[i], SyntheticPenStroke::frame(static_cast<int>(i)).x_m, 1e-6);
 }
 
 // The same while the writer is still open in this process: a reader beside a live recording.
