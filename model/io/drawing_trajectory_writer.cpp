@@ -89,7 +89,8 @@ DrawingTrajectoryWriter::DrawingTrajectoryWriter(std::filesystem::path file, Wal
   if (!splits)
     throw std::invalid_argument(file_.string() +
                                 ": a drawing recording is named <tool>_<surface>_<subject>.csv "
-                                "(plain text, no empty part), found '" + name + "'");
+                                "(plain text, no empty part), found '" +
+                                name + "'");
   std::error_code ec;
   if (std::filesystem::is_directory(file_, ec))
     throw std::runtime_error(file_.string() + ": is a folder, expected a new file to record into");
@@ -137,9 +138,12 @@ void DrawingTrajectoryWriter::append(const DrawingFrame& frame) {
   const struct {
     const char* name;
     double value;
-  } fields[] = {{"Unix Timestamp", frame.time_s}, {"X", frame.x_m},
-                {"Y", frame.y_m},                 {"Z", frame.z_m},
-                {"Phi", frame.tilt_x_deg},        {"Theta", frame.tilt_y_deg},
+  } fields[] = {{"Unix Timestamp", frame.time_s},
+                {"X", frame.x_m},
+                {"Y", frame.y_m},
+                {"Z", frame.z_m},
+                {"Phi", frame.tilt_x_deg},
+                {"Theta", frame.tilt_y_deg},
                 {"F", frame.normal_force_N}};
   for (const auto& field : fields) {
     if (!std::isfinite(field.value))
@@ -172,7 +176,7 @@ void DrawingTrajectoryWriter::write_row(const Row& row) {
   double speed_mm = 0.0, acceleration_mm = 0.0;
   if (has_previous_) {
     speed_mm = std::hypot(f.x_m - previous_.frame.x_m, f.y_m - previous_.frame.y_m) * 1e3;
-    acceleration_mm = speed_mm - previous_speed_mm;
+    acceleration_mm = speed_mm - previous_speed_mm_;
   } else {
     last_sync_ms_ = row.unix_ms;
   }
@@ -188,7 +192,7 @@ void DrawingTrajectoryWriter::write_row(const Row& row) {
                            std::to_string(rows_written_ + 1) + " is longer than a row can be");
   write_all(std::string(text, static_cast<std::size_t>(length)));
   previous_ = row;
-  previous_speed_mm = speed_mm;
+  previous_speed_mm_ = speed_mm;
   has_previous_ = true;
   ++rows_written_;
   if (row.unix_ms - last_sync_ms_ >= kDrawingSyncEvery_ms) {
@@ -202,11 +206,19 @@ void DrawingTrajectoryWriter::write_all(const std::string& text) {
   while (done < text.size()) {
     const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      // A full disk can take half a row: cut it off again, or the reader would take a number cut
+      // short in the Speed column for a whole one.
+      const bool whole = done == 0 || (::ftruncate(fd_, bytes_written_) == 0 &&
+                                       ::lseek(fd_, bytes_written_, SEEK_SET) == bytes_written_);
       throw std::runtime_error(file_.string() + ": cannot write the recording (" +
-                               system_reason(n < 0 ? errno : EIO) + ")");
+                               system_reason(error) + ")" +
+                               (whole ? "" : "; its last line is cut short"));
+    }
     done += static_cast<std::size_t>(n);
   }
+  bytes_written_ += static_cast<long long>(text.size());
 }
 
 void DrawingTrajectoryWriter::sync() {

@@ -1,6 +1,6 @@
-// Writing a pen stroke in the paper's drawing-trajectory format (paper_drawing.hpp), one row per pen
-// report as it arrives, so that what a pen draws replays wherever the artists' files do. Each row
-// goes to the file in one write as soon as its millisecond is over: a process killed mid-stroke
+// Writing a pen stroke in the paper's drawing-trajectory format (paper_drawing.hpp), one row per
+// pen report as it arrives, so that what a pen draws replays wherever the artists' files do. Each
+// row goes to the file in one write as soon as its millisecond is over: a process killed mid-stroke
 // leaves a file the reader reads, short of the row still open.
 #pragma once
 
@@ -21,10 +21,11 @@ struct WallClockOrigin {
 
 // One pen report in SI units on the monotonic clock.
 struct DrawingFrame {
-  double time_s = 0.0;        // CLOCK_MONOTONIC
+  double time_s = 0.0;  // CLOCK_MONOTONIC
   double x_m = 0.0, y_m = 0.0;
-  double z_m = 0.0;           // height above the tablet when known; the paper's tracker wrote its own
-  double tilt_x_deg = 0.0, tilt_y_deg = 0.0;  // the pen's lean from the normal in the x-z and y-z planes
+  double z_m = 0.0;  // height above the tablet when known; the paper's tracker wrote its own
+  // The pen's lean from the normal in the x-z and y-z planes, as libinput gives it.
+  double tilt_x_deg = 0.0, tilt_y_deg = 0.0;
   double normal_force_N = 0.0;
   bool touching = false;
 };
@@ -47,7 +48,9 @@ std::string drawing_file_name(const std::string& tool, const std::string& surfac
 // Reports that round to the millisecond of the row still open replace it (the format's stamps must
 // increase, and libinput sends a tip change and the axes at one instant as separate events): that
 // row is written when a later millisecond arrives or on close(). The file's data reaches the disk
-// (fdatasync) once a second of recording and on close(). Not thread-safe: one thread appends.
+// (fdatasync) once a second of recording and on close(). A write that fails part-way (a full disk)
+// takes its part back, so the file only ever holds whole lines. Not thread-safe: one thread
+// appends.
 class DrawingTrajectoryWriter {
  public:
   // Creates `file` with the header line, and its folder when missing. Throws std::invalid_argument
@@ -88,8 +91,9 @@ class DrawingTrajectoryWriter {
   Row open_row_;
   bool has_previous_ = false;
   Row previous_;                    // the last row written
-  double previous_speed_mm = 0.0;   // its Speed column
+  double previous_speed_mm_ = 0.0;  // its Speed column
   long long last_sync_ms_ = 0;
+  long long bytes_written_ = 0;  // whole lines only
   std::uint64_t rows_written_ = 0;
   std::uint64_t merged_ = 0;
 };

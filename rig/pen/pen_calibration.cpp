@@ -14,7 +14,7 @@ namespace {
 // window starts under.
 constexpr double kCalibrationKeepS = 5.0;
 
-std::string load_text(double newtons) {
+std::string pen_load_text(double newtons) {
   char text[64];
   std::snprintf(text, sizeof text, "%.3g N (%.0f g)", newtons, newtons / kStandardGravity * 1000.0);
   return text;
@@ -26,11 +26,13 @@ PenCalibrator::PenCalibrator(PenCalibrationSettings settings) : settings_(settin
   if (!(settings_.window_s > 0.0) || !(settings_.steady_relative_sd > 0.0) ||
       !(settings_.steady_floor_sd >= 0.0) || settings_.min_samples < 1 ||
       !(settings_.same_load_relative >= 0.0))
-    throw std::invalid_argument("pen calibration: the window, the steadiness limits and the "
-                                "least sample count must be positive");
+    throw std::invalid_argument(
+        "pen calibration: the window, the steadiness limits and the "
+        "least sample count must be positive");
 }
 
 void PenCalibrator::add(const PenSample& sample) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   if (!sample.tip_down || !sample.in_proximity) {
     stroke_.clear();
     stroke_reports_ = 0;
@@ -47,37 +49,40 @@ void PenCalibrator::add(const PenSample& sample) {
   while (stroke_.size() > 2 && stroke_[1].time_s < sample.time_s - keep_s) stroke_.pop_front();
 }
 
-PenHold PenCalibrator::hold(double load_n, double now_s) {
-  if (!std::isfinite(load_n) || !(load_n > 0.0) || load_n > kMaxPenForceN)
-    throw std::invalid_argument("pen calibration: load " + std::to_string(load_n) +
-                                " N: expected a force above 0 and at most " +
-                                std::to_string(static_cast<int>(kMaxPenForceN)) + " N");
+PenHoldCheck PenCalibrator::check(double now_s) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return check_locked(now_s);
+}
+
+PenHoldCheck PenCalibrator::check_locked(double now_s) const {
+  PenHoldCheck c;
   const double window = settings_.window_s;
-  if (stroke_.empty())
-    throw PenCalibrationRefusal("the pen's tip is up: press it on the scale, hold it steady at " +
-                                load_text(load_n) + ", then take the load");
+  if (stroke_.empty()) {
+    c.problem = "the pen's tip is up: press it on the scale and hold it steady";
+    return c;
+  }
   const double end = std::max(now_s, stroke_.back().time_s);
   const double start = end - window;
-  const double down_s = end - stroke_.front().time_s;
+  char text[320];
   if (stroke_.front().time_s > start) {
-    char text[160];
     std::snprintf(text, sizeof text,
-                  "the tip has been down for %.2f s: hold the load for at least %.2f s, then take it",
-                  down_s, window);
-    throw PenCalibrationRefusal(text);
+                  "the tip has been down for %.2f s: hold the load for at least %.2f s",
+                  end - stroke_.front().time_s, window);
+    c.problem = text;
+    return c;
   }
   if (stroke_reports_ < settings_.min_samples) {
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "the pen sent %zu reports since its tip went down, expected at least %zu (libinput "
-                  "reports only changes): too few to know the pressure; press again and hold",
-                  stroke_reports_, settings_.min_samples);
-    throw PenCalibrationRefusal(text);
+    std::snprintf(
+        text, sizeof text,
+        "the pen sent %zu reports since its tip went down, expected at least %zu (libinput "
+        "reports only changes): too few to know the pressure; press again and hold",
+        stroke_reports_, settings_.min_samples);
+    c.problem = text;
+    return c;
   }
 
   // Each report's pressure holds until the next one: a time-weighted mean and spread.
   double weight = 0.0, sum = 0.0, sum_sq = 0.0;
-  std::size_t in_window = 0;
   for (std::size_t i = 0; i < stroke_.size(); ++i) {
     const double from = std::max(stroke_[i].time_s, start);
     const double to = std::min(i + 1 < stroke_.size() ? stroke_[i + 1].time_s : end, end);
@@ -86,38 +91,58 @@ PenHold PenCalibrator::hold(double load_n, double now_s) {
     weight += to - from;
     sum += p * (to - from);
     sum_sq += p * p * (to - from);
-    ++in_window;
+    ++c.samples;
   }
-  const double mean = sum / weight;
-  const double sd = std::sqrt(std::max(0.0, sum_sq / weight - mean * mean));
-  if (!(mean > 0.0))
-    throw PenCalibrationRefusal("the pen reports no pressure under " + load_text(load_n) +
-                                ": press harder, or check the pen has a pressure axis");
-  const double limit = std::max(settings_.steady_relative_sd * mean, settings_.steady_floor_sd);
-  if (sd > limit) {
-    char text[240];
+  c.pressure = sum / weight;
+  c.pressure_sd = std::sqrt(std::max(0.0, sum_sq / weight - c.pressure * c.pressure));
+  if (!(c.pressure > 0.0)) {
+    c.problem = "the pen reports no pressure: press harder, or check the pen has a pressure axis";
+    return c;
+  }
+  const double limit =
+      std::max(settings_.steady_relative_sd * c.pressure, settings_.steady_floor_sd);
+  if (c.pressure_sd > limit) {
     std::snprintf(text, sizeof text,
-                  "the hold at %s was not steady: over the last %.2f s the pressure's standard "
-                  "deviation was %.4f (%.1f %% of its mean %.4f), expected at most %.4f; hold "
-                  "the pen still and take the load again",
-                  load_text(load_n).c_str(), window, sd, 100.0 * sd / mean, mean, limit);
-    throw PenCalibrationRefusal(text);
+                  "not steady: over the last %.2f s the pressure's standard deviation was %.4f "
+                  "(%.1f %% of its mean %.4f), expected at most %.4f; hold the pen still",
+                  window, c.pressure_sd, 100.0 * c.pressure_sd / c.pressure, c.pressure, limit);
+    c.problem = text;
+    return c;
   }
+  c.ready = true;
+  return c;
+}
+
+PenHold PenCalibrator::hold(double load_n, double now_s) {
+  if (!std::isfinite(load_n) || !(load_n > 0.0) || load_n > kMaxPenForceN)
+    throw std::invalid_argument("pen calibration: load " + std::to_string(load_n) +
+                                " N: expected a force above 0 and at most " +
+                                std::to_string(static_cast<int>(kMaxPenForceN)) + " N");
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const PenHoldCheck c = check_locked(now_s);
+  if (!c.ready)
+    throw PenCalibrationRefusal("load " + pen_load_text(load_n) + " not taken: " + c.problem);
   PenHold h;
   h.force_n = load_n;
-  h.pressure = mean;
-  h.pressure_sd = sd;
-  h.samples = in_window;
+  h.pressure = c.pressure;
+  h.pressure_sd = c.pressure_sd;
+  h.samples = c.samples;
   holds_.push_back(h);
   return h;
 }
 
+std::vector<PenHold> PenCalibrator::holds() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return holds_;
+}
+
 void PenCalibrator::forget_last_hold() {
+  const std::lock_guard<std::mutex> lock(mutex_);
   if (!holds_.empty()) holds_.pop_back();
 }
 
 PressureCurve PenCalibrator::fit() const {
-  std::vector<PenHold> sorted = holds_;
+  std::vector<PenHold> sorted = holds();
   std::sort(sorted.begin(), sorted.end(),
             [](const PenHold& a, const PenHold& b) { return a.force_n < b.force_n; });
   // The same load held again: its pressures averaged.
@@ -145,9 +170,9 @@ PressureCurve PenCalibrator::fit() const {
       std::snprintf(text, sizeof text,
                     "the pressure under %s (%.4f) is not above the pressure under %s (%.4f): "
                     "pressures must rise with load; hold %s again",
-                    load_text(loads[i].force_n).c_str(), loads[i].pressure,
-                    load_text(loads[i - 1].force_n).c_str(), loads[i - 1].pressure,
-                    load_text(loads[i].force_n).c_str());
+                    pen_load_text(loads[i].force_n).c_str(), loads[i].pressure,
+                    pen_load_text(loads[i - 1].force_n).c_str(), loads[i - 1].pressure,
+                    pen_load_text(loads[i].force_n).c_str());
       throw PenCalibrationRefusal(text);
     }
     points.push_back({loads[i].pressure, loads[i].force_n});

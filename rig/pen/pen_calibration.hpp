@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <deque>
+#include <mutex>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "rig/pen/pen_force.hpp"
@@ -35,24 +37,36 @@ struct PenCalibrationSettings {
   double same_load_relative = 0.01;
 };
 
+// The last window as it stands: what a face shows while the user settles the load, and what a hold
+// takes.
+struct PenHoldCheck {
+  bool ready = false;                        // a hold now would be taken
+  std::string problem;                       // why not, when not ready: what to do
+  double pressure = 0.0, pressure_sd = 0.0;  // over the window, once the tip has been down for it
+  std::size_t samples = 0;                   // reports in the window
+};
+
+// Every call may come from any thread: the pen reader's calls add, a face's the rest.
 class PenCalibrator {
  public:
   explicit PenCalibrator(PenCalibrationSettings settings = {});
 
-  // Every sample from the pen's reader, in order, from one thread (the same as hold's and fit's
-  // callers, or guarded by them).
+  // Every sample from the pen's reader, in order.
   void add(const PenSample& sample);
 
-  // The pen holds `load_n` newtons now (`now_s` on the samples' clock, e.g. pen_clock_now_s()).
-  // Takes the pressure's mean over [now − window, now], each report's pressure held until the next
-  // (libinput reports changes only), and keeps it. Throws PenCalibrationRefusal when the tip is up
-  // or out of proximity, when it has been down for less than the window or sent fewer than
-  // min_samples reports since, when the pressure in the window is 0, or when it is not steady (the
-  // message gives the spread and the limit); std::invalid_argument for a load that is not a force
-  // a pen takes.
+  // The pressure's mean and spread over [now − window, now] (`now_s` on the samples' clock, e.g.
+  // pen_clock_now_s()), each report's pressure held until the next (libinput reports changes
+  // only). Not ready when the tip is up or out of proximity, when it has been down for less than
+  // the window or sent fewer than min_samples reports since, when the pressure in the window is 0,
+  // or when it is not steady (the problem gives the spread and the limit).
+  PenHoldCheck check(double now_s) const;
+
+  // The pen holds `load_n` newtons now: check(now_s)'s mean, kept. Throws PenCalibrationRefusal
+  // with the load and check's problem when it is not ready; std::invalid_argument for a load that
+  // is not a force a pen takes.
   PenHold hold(double load_n, double now_s);
 
-  const std::vector<PenHold>& holds() const noexcept { return holds_; }
+  std::vector<PenHold> holds() const;
   void forget_last_hold();
 
   // The curve through the holds: a point at (0, 0 N) — libinput's pressure 0 is where the tip
@@ -62,7 +76,10 @@ class PenCalibrator {
   PressureCurve fit() const;
 
  private:
-  PenCalibrationSettings settings_;
+  PenHoldCheck check_locked(double now_s) const;
+
+  const PenCalibrationSettings settings_;
+  mutable std::mutex mutex_;
   std::deque<PenSample> stroke_;  // since the tip went down (the oldest trimmed)
   std::size_t stroke_reports_ = 0;
   std::vector<PenHold> holds_;

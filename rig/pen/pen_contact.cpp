@@ -6,9 +6,12 @@ namespace nibrig::rig::pen {
 
 const char* pen_stroke_end_name(PenStrokeEnd why) noexcept {
   switch (why) {
-    case PenStrokeEnd::tip_up: return "tip up";
-    case PenStrokeEnd::out_of_proximity: return "out of proximity";
-    case PenStrokeEnd::tablet_removed: return "tablet removed";
+    case PenStrokeEnd::tip_up:
+      return "tip up";
+    case PenStrokeEnd::out_of_proximity:
+      return "out of proximity";
+    case PenStrokeEnd::tablet_removed:
+      return "tablet removed";
   }
   return "?";
 }
@@ -57,7 +60,8 @@ void PenContact::on_removed() {
 
 void PenContact::tick(double now_s) {
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (!in_stroke_ || still_given_ || speed_.speed_at(now_s) != 0.0 || last_.speed_m_s == 0.0) return;
+  if (!in_stroke_ || still_given_ || speed_.speed_at(now_s) != 0.0 || last_.speed_m_s == 0.0)
+    return;
   still_given_ = true;
   PenContactSample still = last_;
   still.time_s = now_s;

@@ -1,13 +1,15 @@
 // The pen as the engine's live contact: tip down starts a stroke; each report during it gives the
 // tip's speed (PenSpeed) and normal force (the pen's PressureCurve); tip up, proximity out or the
-// tablet removed ends it, and speed and force go to 0. What it gives goes out through callbacks, for
-// a face to post to rt::Engine::set_contact (through playback::LiveAudition) and to draw.
+// tablet removed ends it, and speed and force go to 0. What it gives goes out through callbacks,
+// for a face to post to rt::Engine::set_contact (through playback::LiveAudition) and to draw.
 //
 // Threads: on_sample and on_removed come from the pen reader's thread (PenEvents, pen_input.hpp);
 // tick from any thread, e.g. a face's timer or frame, so that a pen held still (libinput then sends
-// nothing) reaches speed 0 within PenSpeed's still timeout of a tick. Every call takes one mutex and
-// calls back under it, so that the callbacks see the stroke's contacts in order and never two at a
-// time: keep them short (a post to a queue), and never call this object from them.
+// nothing) reaches speed 0 at the first tick past PenSpeed's still timeout. Every call takes one
+// mutex and calls back under it, so that the callbacks see the stroke's contacts in order and never
+// two at a time: keep them short (a post to a queue), and never call this object from them. They
+// run on the reader's thread and the tick's: playback::LiveAudition takes calls from one thread,
+// so a face hands the contact to the thread that owns it, or makes every call to it under one lock.
 #pragma once
 
 #include <cstddef>
@@ -43,8 +45,8 @@ struct PenContactEvents {
 
 struct PenContactStatus {
   bool in_stroke = false;
-  std::uint64_t strokes = 0;  // begun so far
-  PenContactSample last;      // the newest contact given
+  std::uint64_t strokes = 0;                    // begun so far
+  PenContactSample last;                        // the newest contact given
   double report_interval_s = 0.0, lag_s = 0.0;  // PenSpeed's measured interval and its lag
   std::size_t skipped_reports = 0;              // stamps that did not move forward
 };

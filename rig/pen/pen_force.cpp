@@ -7,7 +7,8 @@ namespace nibrig::rig::pen {
 
 std::string pressure_points_problem(const std::vector<PressurePoint>& points, std::size_t& index) {
   index = 0;
-  if (points.size() < 2) return "expected at least two points, found " + std::to_string(points.size());
+  if (points.size() < 2)
+    return "expected at least two points, found " + std::to_string(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     index = i;
     const PressurePoint& p = points[i];

@@ -1,6 +1,6 @@
 // A pen's pressure curve: libinput's normalised pressure (0 … 1) to the normal force on the tip in
-// newtons, the force the engine's live contact takes. Measured per pen (pen_calibration.hpp), stored
-// by name (pen_force_file.hpp), or the documented default below when a pen has none.
+// newtons, the force the engine's live contact takes. Measured per pen (pen_calibration.hpp),
+// stored by name (pen_force_file.hpp), or the documented default below when a pen has none.
 #pragma once
 
 #include <cstddef>
@@ -18,8 +18,9 @@ struct PressurePoint {
 inline constexpr double kMaxPenForceN = 50.0;
 
 // What is wrong with a curve's points, or "" when nothing is; `index` is then the offending point.
-// A curve has at least two points, pressures in [0, 1] rising strictly, forces in [0, kMaxPenForceN]
-// rising strictly, the first at 0 N (the pressure where the tip starts to bear load).
+// A curve has at least two points, pressures in [0, 1] rising strictly, forces in [0,
+// kMaxPenForceN] rising strictly, the first at 0 N (the pressure where the tip starts to bear
+// load).
 std::string pressure_points_problem(const std::vector<PressurePoint>& points, std::size_t& index);
 
 class PressureCurve {

@@ -21,8 +21,8 @@ constexpr const char* kPenFileFormat = "nibrig-pen";
 constexpr long long kPenFileVersion = 1;
 
 double pen_file_number_in(const json& object, const std::string& key,
-                          const std::filesystem::path& file, const std::string& parent,
-                          double low, double high, const std::string& why) {
+                          const std::filesystem::path& file, const std::string& parent, double low,
+                          double high, const std::string& why) {
   return jf::as_number_in(jf::member(object, key, file, parent), file, jf::member_path(parent, key),
                           low, high, why);
 }
@@ -43,8 +43,8 @@ std::vector<PressurePoint> read_pen_points(const json& root, const std::filesyst
   std::size_t index = 0;
   const std::string problem = pressure_points_problem(points, index);
   if (!problem.empty())
-    throw FormatError(file, jf::place(points.size() < 2 ? "points" : jf::element_path("points", index)),
-                      problem);
+    throw FormatError(
+        file, jf::place(points.size() < 2 ? "points" : jf::element_path("points", index)), problem);
   return points;
 }
 
@@ -61,9 +61,9 @@ std::vector<PenHold> read_pen_holds(const json& root, const std::filesystem::pat
                                     "libinput's normalised pressure");
     h.pressure_sd = pen_file_number_in(entry, "pressure_sd", file, path, 0.0, 1.0,
                                        "a spread of normalised pressures");
-    h.samples = static_cast<std::size_t>(
-        jf::as_integer(jf::member(entry, "samples", file, path), file,
-                       jf::member_path(path, "samples"), 1, 1'000'000'000));
+    h.samples = static_cast<std::size_t>(jf::as_integer(jf::member(entry, "samples", file, path),
+                                                        file, jf::member_path(path, "samples"), 1,
+                                                        1'000'000'000));
     holds.push_back(h);
   }
   return holds;
@@ -99,9 +99,9 @@ PenCalibration read_pen_file(const std::filesystem::path& file) {
   c.name = jf::string_member(root, "name", file, "");
   c.created = jf::string_member(root, "created", file, "");
   if (!model::io::is_utc_iso8601(c.created))
-    throw FormatError(file, jf::place("created"),
-                      "expected a UTC time as \"2026-01-31T14:05:00Z\", found " +
-                          json(c.created).dump());
+    throw FormatError(
+        file, jf::place("created"),
+        "expected a UTC time as \"2026-01-31T14:05:00Z\", found " + json(c.created).dump());
   c.method = jf::string_member(root, "method", file, "");
   c.curve = PressureCurve(read_pen_points(root, file));
   c.holds = read_pen_holds(root, file);
@@ -119,7 +119,8 @@ std::filesystem::path pen_folder() {
 std::filesystem::path pen_curve_path(const std::string& name) {
   std::string safe = name;
   for (char& ch : safe)
-    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_' && ch != '.') ch = '_';
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_' && ch != '.')
+      ch = '_';
   if (safe.empty() || safe == "." || safe == "..") safe = "pen";
   return pen_folder() / (safe + ".json");
 }

@@ -1,5 +1,5 @@
-// A pen's calibration file (JSON, "nibrig-pen" version 1) and where each pen's is kept: one file per
-// pen name, as the actuators' (playback/actuator_store.hpp), in $NIBRIG_PENS, else
+// A pen's calibration file (JSON, "nibrig-pen" version 1) and where each pen's is kept: one file
+// per pen name, as the actuators' (playback/actuator_store.hpp), in $NIBRIG_PENS, else
 // $XDG_DATA_HOME/nibrig/pens, else ~/.local/share/nibrig/pens.
 #pragma once
 
@@ -16,8 +16,8 @@ namespace nibrig::rig::pen {
 // what the curve was made from.
 struct PenHold {
   double force_n = 0.0;
-  double pressure = 0.0;         // the mean over the steady window
-  double pressure_sd = 0.0;      // its standard deviation there
+  double pressure = 0.0;     // the mean over the steady window
+  double pressure_sd = 0.0;  // its standard deviation there
   std::size_t samples = 0;
 };
 

@@ -33,10 +33,13 @@ double PenSpeed::add(double time_s, double x_m, double y_m) {
   if (count_ > 0) {
     const Report& last = window_[count_ - 1];
     const double gap_s = time_s - last.time_s;
+    // The timeout as it stood while the gap lasted, as speed_at judged it.
+    const bool restart = gap_s > still_timeout_s();
     measure_interval(gap_s);
-    if (gap_s > still_timeout_s()) {
-      // Held still through the pause: it set off from there one report ago.
-      window_[0] = {time_s - interval_s_, last.x_m, last.y_m};
+    if (restart) {
+      // Across a pause or lost reports only the gap itself is known: the window starts again at
+      // its start.
+      window_[0] = last;
       count_ = 1;
     }
   }

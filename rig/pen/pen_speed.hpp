@@ -1,6 +1,6 @@
-// The pen's speed over the tablet, from the positions libinput reports at the tablet's own rate: the
-// speed the engine's live contact takes while a pen stroke lasts. Not thread-safe: one thread feeds
-// and asks (pen_contact.hpp guards it).
+// The pen's speed over the tablet, from the positions libinput reports at the tablet's own rate:
+// the speed the engine's live contact takes while a pen stroke lasts. Not thread-safe: one thread
+// feeds and asks (pen_contact.hpp guards it).
 #pragma once
 
 #include <array>
@@ -16,8 +16,8 @@ class PenSpeed {
   // a longer centred window would lag by more than one report.
   static constexpr double kLagReports = 1.0;
   // libinput sends nothing while no axis changes: after this many report intervals without a
-  // report the pen counts as held still (speed 0). Two would drop a moving pen whose one report
-  // came late by the stamp jitter, or that libinput skipped because only its pressure held.
+  // report the pen counts as held still (speed 0). Two would stop a slow pen that moves one
+  // resolution step every other report whenever that report comes late by the stamp jitter.
   static constexpr double kStillIntervals = 2.5;
   // The interval assumed until enough are measured: 133 Hz, Wacom Intuos's report rate.
   static constexpr double kAssumedIntervalS = 1.0 / 133.0;
@@ -30,10 +30,13 @@ class PenSpeed {
   void reset();
 
   // One report: kernel time (s, CLOCK_MONOTONIC) and position (m). Returns the speed after it, in
-  // m/s. After a pause longer than the still timeout the pen is taken to have left its last position
-  // one report interval before this report (libinput would have reported an earlier move), so that
-  // a pen starting again gets its speed at once, not one diluted by the pause. A report whose stamp is not later than the previous one is skipped (counted in skipped()),
-  // as is one with a coordinate that is not finite: no interval is ever zero or negative.
+  // m/s. A report whose stamp is not later than the previous one is skipped (counted in
+  // skipped()), as is one with a coordinate that is not finite: no interval is ever zero or
+  // negative. After a gap longer than the still timeout the window starts again at the gap's
+  // start: the speed is the mean over the gap, whether the pen paused (it then rises from low, as a
+  // pen setting off does) or reports were lost. Taking the pen to have left one report before the
+  // new one instead gave three times the speed on the paper's artists' strokes, whose tracker loses
+  // frames.
   double add(double time_s, double x_m, double y_m);
 
   // The newest estimate, or 0 when no report came for still_timeout_s() before `now_s` (the same

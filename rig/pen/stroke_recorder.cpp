@@ -31,18 +31,17 @@ StrokeRecorder::~StrokeRecorder() {
 
 std::filesystem::path StrokeRecorder::start() {
   std::lock_guard control(control_);
-  if (writer_) throw std::logic_error("a stroke recording is already running into " +
-                                      writer_->file().string());
-  const std::string subject =
-      (settings_.pen.empty() ? std::string("pen") : settings_.pen) + "-" +
-      model::io::now_utc_iso8601();
-  const std::string stem =
-      model::io::drawing_file_name(settings_.tool, settings_.surface, subject);
+  if (writer_)
+    throw std::logic_error("a stroke recording is already running into " +
+                           writer_->file().string());
+  const std::string subject = (settings_.pen.empty() ? std::string("pen") : settings_.pen) + "-" +
+                              model::io::now_utc_iso8601();
+  const std::string stem = model::io::drawing_file_name(settings_.tool, settings_.surface, subject);
   std::filesystem::path file = settings_.folder / stem;
   for (int n = 2; std::filesystem::exists(std::filesystem::symlink_status(file)); ++n)
     file = settings_.folder / (stem.substr(0, stem.size() - 4) + "-" + std::to_string(n) + ".csv");
-  writer_ = std::make_unique<model::io::DrawingTrajectoryWriter>(
-      file, model::io::WallClockOrigin::now());
+  writer_ =
+      std::make_unique<model::io::DrawingTrajectoryWriter>(file, model::io::WallClockOrigin::now());
   {
     std::lock_guard lock(queue_mutex_);
     queue_.clear();

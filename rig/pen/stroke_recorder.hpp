@@ -28,15 +28,15 @@ struct StrokeRecorderSettings {
   std::filesystem::path folder;  // where the recordings go; made when missing
   std::string tool = "pen";      // the file name's tool and surface (drawing_file_name)
   std::string surface = "tablet";
-  std::string pen;               // the subject: the pen's or tablet's name; a UTC stamp is added
+  std::string pen;  // the subject: the pen's or tablet's name; a UTC stamp is added
 };
 
 struct RecordingSummary {
   std::filesystem::path file;
-  std::uint64_t reports = 0;       // received while recording
-  std::uint64_t rows = 0;          // written (reports of one millisecond share a row)
-  std::string ended_because;       // "stopped", "the tablet was removed", or the write's error
-  bool kept = true;                // false: fewer than 2 rows, which no reader accepts; removed
+  std::uint64_t reports = 0;  // received while recording
+  std::uint64_t rows = 0;     // written (reports of one millisecond share a row)
+  std::string ended_because;  // "stopped", "the tablet was removed", or the write's error
+  bool kept = true;           // false: fewer than 2 rows, which no reader accepts; removed
 };
 
 class StrokeRecorder {

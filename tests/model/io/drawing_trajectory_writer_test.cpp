@@ -1,12 +1,15 @@
 #include "model/io/drawing_trajectory_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -102,9 +105,9 @@ TEST(DrawingTrajectoryWriter, SyntheticStrokeReadsBackThroughThePaperReader) {
     // by the chord's shortfall, (arc / radius)² / 24 ≤ 1.1e-4 at 1.5 mm a frame, by the rate's
     // error of at most 3.4e-4 (above), and by the positions' rounding, √2 × 1e-4 mm a frame,
     // 0.02 mm/s at 133 Hz: 0.1 % and 0.05 mm/s hold all three.
-    const double mean_mm_s =
-        (SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k)) -
-         SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k - 1))) * SyntheticPenStroke::kRate;
+    const double mean_mm_s = (SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k)) -
+                              SyntheticPenStroke::arc_mm(SyntheticPenStroke::time(k - 1))) *
+                             SyntheticPenStroke::kRate;
     EXPECT_NEAR(t.speed_m_s[i] * 1e3, mean_mm_s, 0.05 + 1e-3 * mean_mm_s);
   }
 }
@@ -113,7 +116,8 @@ TEST(DrawingTrajectoryWriter, SyntheticStrokeReadsBackThroughThePaperReader) {
 // one's. Their files hold 6 significant digits (1.3e-4 mm/frame² worst seen in tracking); the
 // writer's 6 decimals leave at most 1.5e-6.
 TEST(DrawingTrajectoryWriter, AccelerationIsTheChangeOfSpeedPerFrameAsInThePapersFiles) {
-  const auto paper = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
+  const auto paper =
+      nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
   const auto dir = nibrig::test::scratch_dir("drawing_writer_acceleration");
   const auto plain = dir / "charc_paper_ball.csv";
   {
@@ -145,14 +149,14 @@ TEST(DrawingTrajectoryWriter, AccelerationIsTheChangeOfSpeedPerFrameAsInThePaper
   EXPECT_EQ(rows[0][10], "0.000000");
 }
 
-// An independent reference: the authors' own file (2H pencil, with 3 tracking dropouts), read, written
-// again and read back.
+// An independent reference: the authors' own file (2H pencil, with 3 tracking dropouts), read,
+// written again and read back.
 TEST(DrawingTrajectoryWriter, APapersFileWrittenAgainReadsTheSame) {
-  const auto paper = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "p2h_paper_ball.csv.gz";
+  const auto paper =
+      nibrig::test::shared_data() / "piovarci2018" / "drawing" / "p2h_paper_ball.csv.gz";
   const DrawingTrajectory original = read_paper_drawing(paper);
   const auto dir = nibrig::test::scratch_dir("drawing_writer_paper");
-  const auto file =
-      dir / drawing_file_name(original.tool, original.surface, original.subject);
+  const auto file = dir / drawing_file_name(original.tool, original.surface, original.subject);
   EXPECT_EQ(file.filename(), "p2h_paper_ball.csv");
   {
     DrawingTrajectoryWriter writer(file, {1492954983454LL, 0.0});
@@ -219,6 +223,49 @@ TEST(DrawingTrajectoryWriter, AKilledRecorderLeavesAReadableFile) {
     EXPECT_NEAR(t.x_m[static_cast<std::size_t>(k)], SyntheticPenStroke::frame(k).x_m, 1e-6);
 }
 
+// A disk that fills in the middle of a row (here a file-size limit, which fails a write the same
+// way): the writer says so, and the part of the row that went out is taken back, so the reader
+// never takes a Speed cut short for a whole number.
+TEST(DrawingTrajectoryWriter, ADiskFullMidRowLeavesOnlyWholeRows) {
+  const auto dir = nibrig::test::scratch_dir("drawing_writer_full");
+  const auto file = dir / drawing_file_name("pen", "tablet", "full");
+  // The header (66 bytes) and about 10 rows of 75 bytes, then a limit in the middle of one.
+  constexpr rlim_t kLimit = 66 + 10 * 75 + 30;
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of the process ending
+    const rlimit limit{kLimit, kLimit};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    DrawingTrajectoryWriter writer(file, kStrokeOrigin);
+    try {
+      for (int k = 0; k < 100; ++k) writer.append(SyntheticPenStroke::frame(k));
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      ::_exit(message.find("cannot write the recording") != std::string::npos &&
+                      message.find("cut short") == std::string::npos
+                  ? 0
+                  : 2);
+    }
+    ::_exit(1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 0) << "1: nothing failed, 2: the wrong message";
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_LT(text.size(), kLimit);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n') << "a row cut short was left in the file";
+  const DrawingTrajectory t = read_paper_drawing(file);
+  EXPECT_TRUE(t.warnings.empty());
+  EXPECT_GE(t.time_s.size(), 9u);
+  for (std::size_t i = 0; i < t.time_s.size(); ++i)
+    EXPECT_NEAR(t.x_m[i], SyntheticPenStroke::frame(static_cast<int>(i)).x_m, 1e-6);
+}
+
 // The same while the writer is still open in this process: a reader beside a live recording.
 TEST(DrawingTrajectoryWriter, AnOpenRecordingReadsUpToItsOpenRow) {
   const auto dir = nibrig::test::scratch_dir("drawing_writer_open");
@@ -278,8 +325,11 @@ TEST(DrawingTrajectoryWriter, TiltBecomesThePensAngleFromTheNormalAndItsAzimuth)
   writer.close();
   const auto rows = csv_rows_of(dir / "pen_tablet_tilt.csv");
   ASSERT_EQ(rows.size(), 5u);
-  const char* expected[][2] = {
-      {"0.00", "0.00"}, {"30.00", "0.00"}, {"30.00", "90.00"}, {"54.74", "45.00"}, {"20.00", "180.00"}};
+  const char* expected[][2] = {{"0.00", "0.00"},
+                               {"30.00", "0.00"},
+                               {"30.00", "90.00"},
+                               {"54.74", "45.00"},
+                               {"20.00", "180.00"}};
   for (std::size_t k = 0; k < 5; ++k) {
     EXPECT_EQ(rows[k][4], expected[k][0]) << "Phi, row " << k;
     EXPECT_EQ(rows[k][5], expected[k][1]) << "Theta, row " << k;
@@ -304,7 +354,9 @@ TEST(DrawingTrajectoryWriter, FileNamesSplitBackIntoToolSurfaceAndSubject) {
   EXPECT_EQ(t.subject, "Wacom-Intuos-S-Pen_2026-11-27");
   for (const auto& [tool, surface, subject, part] :
        std::vector<std::tuple<std::string, std::string, std::string, std::string>>{
-           {"__", "paper", "x", "tool"}, {"pen", "", "x", "surface"}, {"pen", "paper", " / ", "subject"},
+           {"__", "paper", "x", "tool"},
+           {"pen", "", "x", "surface"},
+           {"pen", "paper", " / ", "subject"},
            {"pen", "paper", "..", "subject"}}) {
     try {
       drawing_file_name(tool, surface, subject);
@@ -331,8 +383,9 @@ TEST(DrawingTrajectoryWriter, RefusesWhatCannotBeARecordingNamingIt) {
     DrawingTrajectoryWriter writer(file, kStrokeOrigin);
   };
   std::filesystem::create_directories(dir / "pen_tablet_folder.csv");
-  nibrig::test::expect_message_names(writer_refusal_of([&] { open(dir / "pen_tablet_folder.csv"); }),
-                                     {"pen_tablet_folder.csv", "is a folder"});
+  nibrig::test::expect_message_names(
+      writer_refusal_of([&] { open(dir / "pen_tablet_folder.csv"); }),
+      {"pen_tablet_folder.csv", "is a folder"});
   nibrig::test::write_text(dir / "pen_tablet_taken.csv", "keep me\n");
   nibrig::test::expect_message_names(writer_refusal_of([&] { open(dir / "pen_tablet_taken.csv"); }),
                                      {"pen_tablet_taken.csv", "exists already"});
@@ -360,7 +413,8 @@ TEST(DrawingTrajectoryWriter, RefusesWhatCannotBeARecordingNamingIt) {
     writer.append(bad);
     ADD_FAILURE() << "a NaN force was written";
   } catch (const UnwritableOutput& e) {
-    nibrig::test::expect_message_names(e.what(), {"pen_tablet_nan.csv", "row 2", "field 'F'", "not a finite"});
+    nibrig::test::expect_message_names(
+        e.what(), {"pen_tablet_nan.csv", "row 2", "field 'F'", "not a finite"});
   }
   writer.close();
   EXPECT_THROW(writer.append(SyntheticPenStroke::frame(2)), std::logic_error);

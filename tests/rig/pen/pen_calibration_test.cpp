@@ -16,7 +16,9 @@ namespace {
 // The pen the tests calibrate: its pressure grows as the load to the power 0.6 up to pressure 1 at
 // 4.9 N (steeper at light loads, as an EMR pen's does), with a hand's 1 % tremor on each report
 // and 8192 pressure levels.
-double simulated_pen_pressure(double force_n) { return std::min(1.0, std::pow(force_n / 4.9, 0.6)); }
+double simulated_pen_pressure(double force_n) {
+  return std::min(1.0, std::pow(force_n / 4.9, 0.6));
+}
 
 class PenOnAScale {
  public:
@@ -35,7 +37,8 @@ class PenOnAScale {
       s.time_s = now_;
       s.x_m = 0.05;
       s.y_m = 0.04;
-      s.pressure = std::clamp(std::round(target * (1.0 + tremor * noise_(random_)) * 8191.0) / 8191.0, 0.0, 1.0);
+      s.pressure = std::clamp(
+          std::round(target * (1.0 + tremor * noise_(random_)) * 8191.0) / 8191.0, 0.0, 1.0);
       s.tip_down = true;
       s.in_proximity = true;
       calibrator_.add(s);
@@ -75,7 +78,11 @@ TEST(PenCalibration, FourHoldsRecoverAKnownCurve) {
   PenCalibrator calibrator;
   PenOnAScale pen(calibrator);
   for (const double load : kPenTestLoads) {
-    pen.press(simulated_pen_pressure(load), 1.1, 0.3);
+    pen.press(simulated_pen_pressure(load), 0.4, 0.3);
+    EXPECT_FALSE(calibrator.check(pen.now()).ready) << "the window still holds the ramp";
+    pen.press(simulated_pen_pressure(load), 0.7);
+    const PenHoldCheck settled = calibrator.check(pen.now());
+    EXPECT_TRUE(settled.ready) << settled.problem;
     const PenHold h = calibrator.hold(load, pen.now());
     EXPECT_NEAR(h.pressure, simulated_pen_pressure(load), 0.005 * simulated_pen_pressure(load));
     EXPECT_GE(h.samples, 60u);  // 0.5 s at 133 Hz: 66 or 67 reports
@@ -86,13 +93,16 @@ TEST(PenCalibration, FourHoldsRecoverAKnownCurve) {
   for (const double load : kPenTestLoads)
     EXPECT_NEAR(curve.force_n(simulated_pen_pressure(load)), load, 0.01 * load);
   const double between = 2.2;  // between 150 g and 300 g
-  const double p1 = simulated_pen_pressure(kPenTestLoads[1]), p2 = simulated_pen_pressure(kPenTestLoads[2]);
+  const double p1 = simulated_pen_pressure(kPenTestLoads[1]),
+               p2 = simulated_pen_pressure(kPenTestLoads[2]);
   const double p = simulated_pen_pressure(between);
-  const double straight = kPenTestLoads[1] + (p - p1) / (p2 - p1) * (kPenTestLoads[2] - kPenTestLoads[1]);
+  const double straight =
+      kPenTestLoads[1] + (p - p1) / (p2 - p1) * (kPenTestLoads[2] - kPenTestLoads[1]);
   EXPECT_NEAR(curve.force_n(p), straight, 0.01 * straight);
 }
 
-void expect_pen_hold_refused(PenCalibrator& calibrator, double load, double now, const std::string& part) {
+void expect_pen_hold_refused(PenCalibrator& calibrator, double load, double now,
+                             const std::string& part) {
   try {
     calibrator.hold(load, now);
     ADD_FAILURE() << "hold accepted; expected a refusal saying: " << part;
@@ -104,7 +114,8 @@ void expect_pen_hold_refused(PenCalibrator& calibrator, double load, double now,
 TEST(PenCalibration, AHoldIsRefusedWhenTheTipIsUpTooShortTooSparseOrNotSteady) {
   PenCalibrator calibrator;
   PenOnAScale pen(calibrator);
-  expect_pen_hold_refused(calibrator, 1.0, pen.now(), "tip is up");
+  expect_pen_hold_refused(calibrator, 1.0, pen.now(),
+                          "load 1 N (102 g) not taken: the pen's tip is up");
   pen.press(0.4, 1.0);
   pen.lift();
   expect_pen_hold_refused(calibrator, 1.0, pen.now(), "tip is up");
@@ -116,7 +127,8 @@ TEST(PenCalibration, AHoldIsRefusedWhenTheTipIsUpTooShortTooSparseOrNotSteady) {
   // A pen that sends three reports in a second (libinput sends changes only).
   pen.press(0.4, 3 * PenOnAScale::kPeriod);
   pen.wait(1.0);
-  expect_pen_hold_refused(calibrator, 1.0, pen.now(), "sent 3 reports since its tip went down, expected at least 5");
+  expect_pen_hold_refused(calibrator, 1.0, pen.now(),
+                          "sent 3 reports since its tip went down, expected at least 5");
   pen.lift();
 
   // Pressing on through the window: from 0.30 to 0.45 over its 0.5 s, a spread of 11 % of the mean.
@@ -171,12 +183,14 @@ TEST(PenCalibration, LoadsAreReadInGramsOrNewtons) {
   EXPECT_NEAR(parse_pen_load("0.2kg"), 1.96133, 1e-12);
   EXPECT_NEAR(parse_pen_load("1.5N"), 1.5, 1e-15);
   EXPECT_NEAR(parse_pen_load("1500 mN"), 1.5, 1e-12);
-  for (const std::string bad : {"200", "-5g", "0g", "abc", "5 lb", "100kg", "0x10g", "nan g", "inf N", "", "+3N"}) {
+  for (const std::string bad :
+       {"200", "-5g", "0g", "abc", "5 lb", "100kg", "0x10g", "nan g", "inf N", "", "+3N"}) {
     try {
       parse_pen_load(bad);
       ADD_FAILURE() << "accepted '" << bad << "'";
     } catch (const std::invalid_argument& error) {
-      EXPECT_NE(std::string(error.what()).find("load '" + bad + "'"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("load '" + bad + "'"), std::string::npos)
+          << error.what();
     }
   }
 }

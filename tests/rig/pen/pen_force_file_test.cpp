@@ -18,12 +18,16 @@ class PenScopedEnv {
  public:
   PenScopedEnv(const char* name, const char* value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old;
-    if (value) ::setenv(name, value, 1);
-    else ::unsetenv(name);
+    if (value)
+      ::setenv(name, value, 1);
+    else
+      ::unsetenv(name);
   }
   ~PenScopedEnv() {
-    if (old_) ::setenv(name_, old_->c_str(), 1);
-    else ::unsetenv(name_);
+    if (old_)
+      ::setenv(name_, old_->c_str(), 1);
+    else
+      ::unsetenv(name_);
   }
 
  private:
@@ -82,7 +86,8 @@ TEST(PenForceFile, TheFolderFollowsXdgDataHomeThenHome) {
   }
   const PenScopedEnv xdg("XDG_DATA_HOME", nullptr);
   const PenScopedEnv home("HOME", "/home/artist");
-  EXPECT_EQ(pen_curve_path("pen"), std::filesystem::path("/home/artist/.local/share/nibrig/pens/pen.json"));
+  EXPECT_EQ(pen_curve_path("pen"),
+            std::filesystem::path("/home/artist/.local/share/nibrig/pens/pen.json"));
 }
 
 // Writes `text` as a pen file and expects the reader to refuse it naming the file and saying
@@ -110,17 +115,20 @@ TEST(PenForceFile, BadFilesAreRefusedNamingTheFileThePlaceAndWhatWasExpected) {
       "created": "2026-11-27T14:05:00Z", "method": "", "holds": []})",
                           "missing field");
   expect_pen_file_refused(std::string(kPenFileHead) + R"("points": [])" + "}", "'points'");
-  expect_pen_file_refused(std::string(kPenFileHead) +
-                              R"("points": [{"pressure": 0, "force_n": 0}, {"pressure": 0.5, "force_n": 2},
+  expect_pen_file_refused(
+      std::string(kPenFileHead) +
+          R"("points": [{"pressure": 0, "force_n": 0}, {"pressure": 0.5, "force_n": 2},
                                   {"pressure": 0.4, "force_n": 3}]})",
-                          "field 'points[2]': expected pressures rising");
+      "field 'points[2]': expected pressures rising");
   expect_pen_file_refused(std::string(kPenFileHead) +
                               R"("points": [{"pressure": 0, "force_n": 0}, {"pressure": 0.5}]})",
                           "points[1].force_n");
-  expect_pen_file_refused(std::string(kPenFileHead) +
-                              R"("points": [{"pressure": 0, "force_n": 0}, {"pressure": 1.5, "force_n": 2}]})",
-                          "points[1].pressure");
-  expect_pen_file_refused(R"({"format": "nibrig-actuator", "version": 1})", "expected \"nibrig-pen\"");
+  expect_pen_file_refused(
+      std::string(kPenFileHead) +
+          R"("points": [{"pressure": 0, "force_n": 0}, {"pressure": 1.5, "force_n": 2}]})",
+      "points[1].pressure");
+  expect_pen_file_refused(R"({"format": "nibrig-actuator", "version": 1})",
+                          "expected \"nibrig-pen\"");
 }
 
 // A stored file that cannot be read is an error, never the default in silence.

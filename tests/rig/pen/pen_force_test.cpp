@@ -52,7 +52,8 @@ void expect_pen_curve_refused(std::vector<PressurePoint> points, const std::stri
 TEST(PressureCurve, RefusesPointsThatAreNotAMonotoneCurve) {
   expect_pen_curve_refused({{0.0, 0.0}}, "at least two points");
   expect_pen_curve_refused({{0.1, 0.5}, {0.5, 2.0}}, "point 0: expected the first point at 0 N");
-  expect_pen_curve_refused({{0.0, 0.0}, {0.5, 2.0}, {0.4, 3.0}}, "point 2: expected pressures rising");
+  expect_pen_curve_refused({{0.0, 0.0}, {0.5, 2.0}, {0.4, 3.0}},
+                           "point 2: expected pressures rising");
   expect_pen_curve_refused({{0.0, 0.0}, {0.5, 2.0}, {0.6, 2.0}}, "point 2: expected forces rising");
   expect_pen_curve_refused({{0.0, 0.0}, {1.5, 2.0}}, "point 1: expected a pressure from 0 to 1");
   expect_pen_curve_refused({{0.0, 0.0}, {0.5, 80.0}}, "point 1: expected a force from 0 to 50 N");

@@ -27,15 +27,16 @@ struct SyntheticReport {
 
 struct TabletModel {
   double rate_hz = 133.0;
-  double jitter_s = 0.5e-3;      // stamps spread uniformly over ± this
-  double resolution_m = 1e-5;    // 0.01 mm: a Wacom Intuos's 100 lines per mm
+  double jitter_s = 0.5e-3;    // stamps spread uniformly over ± this
+  double resolution_m = 1e-5;  // 0.01 mm: a Wacom Intuos's 100 lines per mm
   unsigned seed = 32;
 };
 
 inline double quantise_to(double value, double step) { return std::round(value / step) * step; }
 
 inline std::vector<SyntheticReport> synthetic_stroke(const Path& path, double duration_s,
-                                                     const TabletModel& tablet, double start_s = 100.0,
+                                                     const TabletModel& tablet,
+                                                     double start_s = 100.0,
                                                      double pressure = 0.4) {
   std::mt19937 random(tablet.seed);
   std::uniform_real_distribution<double> jitter(-tablet.jitter_s, tablet.jitter_s);
@@ -61,8 +62,8 @@ inline std::vector<SyntheticReport> synthetic_stroke(const Path& path, double du
 // A straight line at a constant speed, at an angle so that both axes are rounded.
 inline Path straight_line(double speed_m_s, double angle_rad = 0.5) {
   return [speed_m_s, angle_rad](double t) {
-    return PathPoint{0.05 + speed_m_s * t * std::cos(angle_rad), 0.04 + speed_m_s * t * std::sin(angle_rad),
-                     speed_m_s};
+    return PathPoint{0.05 + speed_m_s * t * std::cos(angle_rad),
+                     0.04 + speed_m_s * t * std::sin(angle_rad), speed_m_s};
   };
 }
 
@@ -70,7 +71,8 @@ inline Path straight_line(double speed_m_s, double angle_rad = 0.5) {
 inline Path circle(double speed_m_s, double radius_m) {
   return [speed_m_s, radius_m](double t) {
     const double angle = speed_m_s / radius_m * t;
-    return PathPoint{0.08 + radius_m * std::cos(angle), 0.06 + radius_m * std::sin(angle), speed_m_s};
+    return PathPoint{0.08 + radius_m * std::cos(angle), 0.06 + radius_m * std::sin(angle),
+                     speed_m_s};
   };
 }
 

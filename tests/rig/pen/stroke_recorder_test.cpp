@@ -64,7 +64,8 @@ TEST(StrokeRecorder, EachRecordingIsANewFileThePapersReaderReads) {
   EXPECT_EQ(t.surface, "tablet");
   expect_recorded(t, 200);
   // 100 mm/s is 0.752 mm a frame at 133 Hz. The reader's rate, from whole-ms stamps, is within
-  // 1 ms in 1.5 s of it (0.07 mm/s) and the positions' rounding adds 0.02 mm/s: 0.2 mm/s holds both.
+  // 1 ms in 1.5 s of it (0.07 mm/s) and the positions' rounding adds 0.02 mm/s: 0.2 mm/s holds
+  // both.
   for (std::size_t i = 1; i < t.speed_m_s.size(); ++i) EXPECT_NEAR(t.speed_m_s[i], 0.1, 2e-4) << i;
 
   // Started again within the same second: a file of its own, never the first one replaced.

@@ -37,8 +37,9 @@ std::filesystem::path record_three_speed_stroke(const std::filesystem::path& dir
   double arc_mm = 0.0;
   for (int k = 0; k <= frames; ++k) {
     const double t = k / kRecordedRate_hz;
-    if (k > 0) arc_mm += kHoldSpeeds_mm_s[std::min(2, static_cast<int>((t - 1e-9) / kHoldSeconds))] /
-                         kRecordedRate_hz;
+    if (k > 0)
+      arc_mm += kHoldSpeeds_mm_s[std::min(2, static_cast<int>((t - 1e-9) / kHoldSeconds))] /
+                kRecordedRate_hz;
     model::io::DrawingFrame f;
     f.time_s = t;
     f.x_m = (100.0 + 40.0 * std::cos(arc_mm / 40.0)) * 1e-3;
@@ -51,7 +52,7 @@ std::filesystem::path record_three_speed_stroke(const std::filesystem::path& dir
   return file;
 }
 
-std::vector<float> read_wav(const std::filesystem::path& file, double& rate) {
+std::vector<float> read_replay_wav(const std::filesystem::path& file, double& rate) {
   SF_INFO info{};
   SNDFILE* f = sf_open(file.c_str(), SFM_READ, &info);
   if (!f) return {};
@@ -62,14 +63,14 @@ std::vector<float> read_wav(const std::filesystem::path& file, double& rate) {
   return x;
 }
 
-double rms_between(const std::vector<float>& x, double rate, double from_s, double to_s) {
+double replay_rms_between(const std::vector<float>& x, double rate, double from_s, double to_s) {
   const auto a = static_cast<std::size_t>(from_s * rate), b = static_cast<std::size_t>(to_s * rate);
   double sum = 0.0;
   for (std::size_t i = a; i < b && i < x.size(); ++i) sum += double{x[i]} * x[i];
   return std::sqrt(sum / static_cast<double>(b - a));
 }
 
-double db(double ratio) { return 20.0 * std::log10(ratio); }
+double replay_db(double ratio) { return 20.0 * std::log10(ratio); }
 
 TEST(RecordedStrokeCli, RenderReplaysARecordedStrokeLoudWhereItWasFast) {
   const auto out = nibrig::test::scratch_dir("cli_recorded_stroke");
@@ -81,7 +82,7 @@ TEST(RecordedStrokeCli, RenderReplaysARecordedStrokeLoudWhereItWasFast) {
   ASSERT_EQ(code, 0) << text;
   EXPECT_NE(text.find("trajectory " + recording.filename().string()), std::string::npos) << text;
   double rate = 0.0;
-  const auto replay = read_wav(out / "replay.wav", rate);
+  const auto replay = read_replay_wav(out / "replay.wav", rate);
   // The stroke's own length: its last frame at 4.5 s.
   ASSERT_NEAR(static_cast<double>(replay.size()) / rate, 3 * kHoldSeconds, 0.01);
 
@@ -100,20 +101,23 @@ TEST(RecordedStrokeCli, RenderReplaysARecordedStrokeLoudWhereItWasFast) {
     const std::string constant_text = ::testing::internal::GetCapturedStdout();
     ASSERT_EQ(constant_code, 0) << constant_text;
     double constant_rate = 0.0;
-    const auto reference = read_wav(constant, constant_rate);
-    const double reference_rms = rms_between(reference, constant_rate, 0.3, kHoldSeconds);
+    const auto reference = read_replay_wav(constant, constant_rate);
+    const double reference_rms = replay_rms_between(reference, constant_rate, 0.3, kHoldSeconds);
     const double start = hold * kHoldSeconds;
-    const double replay_rms = rms_between(replay, rate, start + 0.3, start + kHoldSeconds);
+    const double replay_rms = replay_rms_between(replay, rate, start + 0.3, start + kHoldSeconds);
     std::printf("hold %.0f mm/s: replay rms %.5f, constant render %.5f (%+.2f dB)\n",
-                kHoldSpeeds_mm_s[hold], replay_rms, reference_rms, db(replay_rms / reference_rms));
+                kHoldSpeeds_mm_s[hold], replay_rms, reference_rms,
+                replay_db(replay_rms / reference_rms));
     // The two are different stretches of the forcing's noise: over 1.2 s at 120 mm/s, seeds 1-6
     // give levels within 0.52 dB (σ ≈ 0.18 dB), so the difference of two has σ ≈ 0.26 dB and
     // ±1 dB is about 4σ. The level rises about 9 dB a decade of speed here, so a replayed speed a
     // third off (a wrong frame rate, mm/frame taken for mm/s is far worse) falls outside.
-    EXPECT_NEAR(db(replay_rms / reference_rms), 0.0, 1.0);
+    EXPECT_NEAR(replay_db(replay_rms / reference_rms), 0.0, 1.0);
     // Louder where faster: the constant renders rise 4.3 dB from 40 to 120 mm/s and 5.4 dB from
     // 120 to 240; 3 dB leaves the two windows' scatter room.
-    if (hold > 0) EXPECT_GT(db(replay_rms / previous_rms), 3.0);
+    if (hold > 0) {
+      EXPECT_GT(replay_db(replay_rms / previous_rms), 3.0);
+    }
     previous_rms = replay_rms;
   }
 }
@@ -123,20 +127,23 @@ TEST(RecordedStrokeCli, RenderReplaysARecordedStrokeLoudWhereItWasFast) {
 TEST(RecordedStrokeCli, DamagedRecordingsAreRefusedAsThePapersFilesAre) {
   const auto out = nibrig::test::scratch_dir("cli_recorded_damaged");
   const auto recording = record_three_speed_stroke(out);
-  const auto paper = nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
-  const auto lines_of = [](const std::filesystem::path& file) {
+  const auto paper =
+      nibrig::test::shared_data() / "piovarci2018" / "drawing" / "charc_paper_ball.csv.gz";
+  const auto damaged_lines_of = [](const std::filesystem::path& file) {
     gzFile gz = gzopen(file.c_str(), "rb");  // plain files pass through
     std::string text;
     char buffer[1 << 14];
     int n = 0;
-    while ((n = gzread(gz, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+    while ((n = gzread(gz, buffer, sizeof buffer)) > 0)
+      text.append(buffer, static_cast<std::size_t>(n));
     gzclose(gz);
     std::vector<std::string> lines;
     std::stringstream split(text);
     for (std::string line; std::getline(split, line);) lines.push_back(line);
     return lines;
   };
-  const std::vector<std::string> recorded_lines = lines_of(recording), paper_lines = lines_of(paper);
+  const std::vector<std::string> recorded_lines = damaged_lines_of(recording),
+                                 paper_lines = damaged_lines_of(paper);
 
   struct Damage {
     const char* what;
@@ -151,7 +158,11 @@ TEST(RecordedStrokeCli, DamagedRecordingsAreRefusedAsThePapersFilesAre) {
     return lines;
   };
   const std::vector<Damage> damages = {
-      {"truncated", [](std::vector<std::string> l) { l.resize(2); return l; },
+      {"truncated",
+       [](std::vector<std::string> l) {
+         l.resize(2);
+         return l;
+       },
        "expected at least 2 data rows"},
       {"wrong header",
        [](std::vector<std::string> l) {
@@ -194,11 +205,10 @@ TEST(RecordedStrokeCli, DamagedRecordingsAreRefusedAsThePapersFilesAre) {
   };
   for (const Damage& damage : damages) {
     SCOPED_TRACE(damage.what);
-    const std::string from_recording =
-        refusal(damage.apply(recorded_lines), out / "damaged" / "pen_tablet_damaged.csv",
-                damage.expected);
-    const std::string from_paper =
-        refusal(damage.apply(paper_lines), out / "damaged" / "charc_paper_ball.csv", damage.expected);
+    const std::string from_recording = refusal(
+        damage.apply(recorded_lines), out / "damaged" / "pen_tablet_damaged.csv", damage.expected);
+    const std::string from_paper = refusal(
+        damage.apply(paper_lines), out / "damaged" / "charc_paper_ball.csv", damage.expected);
     EXPECT_EQ(from_recording, from_paper);
   }
 }
