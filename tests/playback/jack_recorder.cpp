@@ -65,7 +65,11 @@ int JackRecorder::process(jack_nframes_t frames, void* self) noexcept {
   const std::size_t n = recording ? std::min<std::size_t>(frames, r.capacity_ - at) : 0;
   const std::size_t cycle = r.cycle_count_.load(std::memory_order_relaxed);
   if (n > 0 && cycle < r.cycles_.size()) {
-    r.cycles_[cycle] = Cycle{jack_last_frame_time(r.client_), at, n};
+    jack_nframes_t first = 0;
+    jack_time_t started = 0, next = 0;
+    float period = 0.0f;
+    jack_get_cycle_times(r.client_, &first, &started, &next, &period);
+    r.cycles_[cycle] = Cycle{jack_last_frame_time(r.client_), at, n, started};
     r.cycle_count_.store(cycle + 1, std::memory_order_release);
   }
   for (std::size_t i = 0; i < r.ports_.size(); ++i) {

@@ -40,6 +40,7 @@ class JackRecorder {
     jack_nframes_t time = 0;
     std::size_t start = 0;
     std::size_t frames = 0;
+    jack_time_t started_us = 0;  // when the cycle began, on JACK's clock (jack_get_cycle_times)
   };
   // The recorded cycles; read once the recording is full.
   std::vector<Cycle> cycles() const {

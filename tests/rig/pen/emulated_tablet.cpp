@@ -114,7 +114,9 @@ void EmulatedTablet::add_to_testbed() {
   const std::string product = ids;
   // What udevd's input_id builtin and 60-input-id rules record for a tablet: the database entry makes
   // the device initialised for libudev (the shim serves it from the testbed).
-  const std::string root = umockdev_testbed_get_root_dir(testbed_);
+  gchar* root_dir = umockdev_testbed_get_root_dir(testbed_);
+  const std::string root = root_dir;
+  g_free(root_dir);
   const std::filesystem::path data = std::filesystem::path(root) / "run/udev/data";
   std::filesystem::create_directories(data);
   {
@@ -173,8 +175,9 @@ void EmulatedTablet::unplug() {
 }
 
 // evdev hands a reader whole events; a pty hands whatever it holds, and a full pty buffer (4 KiB, not
-// a multiple of an event's 24 bytes) would split one. So a report waits until the reader has taken
-// most of what was written before, as a reader that keeps up sees it anyway.
+// a multiple of an event's 24 bytes) would split one. So a report waits while the reader's side
+// holds half of that unread (the pty moves written bytes there a moment later, so this may let a
+// report through early, never hold one back wrongly).
 void EmulatedTablet::wait_for_reader() {
   for (int waited_ms = 0; waited_ms < 5000; ++waited_ms) {
     int unread = 0;
@@ -182,6 +185,20 @@ void EmulatedTablet::wait_for_reader() {
     ::usleep(1000);
   }
   throw std::runtime_error("the tablet's reader took nothing for 5 s");
+}
+
+bool EmulatedTablet::wait_until_opened(pid_t pid, double timeout_s) {
+  char node[128] = {};
+  if (::ptsname_r(pty_, node, sizeof node) != 0) return false;
+  const std::filesystem::path fds = "/proc/" + std::to_string(pid) + "/fd";
+  for (double waited = 0.0; waited < timeout_s; waited += 0.01) {
+    std::error_code error;
+    for (const auto& fd : std::filesystem::directory_iterator(fds, error)) {
+      if (std::filesystem::read_symlink(fd.path(), error) == node) return true;
+    }
+    ::usleep(10000);
+  }
+  return false;
 }
 
 void EmulatedTablet::write_event(double t_s, std::uint16_t type, std::uint16_t code, std::int32_t value) {

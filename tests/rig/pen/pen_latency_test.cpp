@@ -45,12 +45,11 @@ double jack_clock_offset_s() {
   return 0.5 * (before + after) - jack;
 }
 
-// The time of each recorded sample's start on CLOCK_MONOTONIC, from the recorder's cycles (JACK
-// frame times).
+// The time of each recorded sample on CLOCK_MONOTONIC, from when the recorder's cycles began.
 std::vector<double> sample_times(const playback::testing::JackRecorder& ear, double offset_s) {
   std::vector<double> t(ear.samples(0).size(), -1.0);
   for (const auto& cycle : ear.cycles()) {
-    const double start = offset_s + 1e-6 * static_cast<double>(jack_frames_to_time(ear.client(), cycle.time));
+    const double start = offset_s + 1e-6 * static_cast<double>(cycle.started_us);
     for (std::size_t i = 0; i < cycle.frames && cycle.start + i < t.size(); ++i) t[cycle.start + i] = start + i / 48000.0;
   }
   return t;
@@ -154,13 +153,21 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
     for (double s : pen_starts) pen.push_back(onset_after(ear.samples(0), times, s));
     const PathLatency m = summarise(mouse), p = summarise(pen);
     for (std::size_t k = 0; k < pen.size(); ++k) std::printf("stroke %zu: mouse %.2f ms, pen %.2f ms\n", k + 1, 1e3 * mouse[k], 1e3 * pen[k]);
+    // The device plays a cycle's output after its playback latency, the same for both paths.
+    jack_latency_range_t playback{0, 0};
+    if (jack_port_t* out = jack_port_by_name(ear.client(), "system:playback_1")) {
+      jack_port_get_latency_range(out, JackPlaybackLatency, &playback);
+    }
+    const double device_s = playback.max / 48000.0;
+    RecordProperty("device_playback_ms", std::to_string(1e3 * device_s));
     RecordProperty("mouse_mean_ms", std::to_string(1e3 * m.mean_s));
     RecordProperty("mouse_worst_ms", std::to_string(1e3 * m.worst_s));
     RecordProperty("pen_mean_ms", std::to_string(1e3 * p.mean_s));
     RecordProperty("pen_worst_ms", std::to_string(1e3 * p.worst_s));
-    std::printf("stroke to sound on JACK (48 kHz, 64-frame periods): mouse path %.2f ms mean, %.2f worst; "
-                "pen path %.2f ms mean, %.2f worst (%d and %d strokes heard)\n",
-                1e3 * m.mean_s, 1e3 * m.worst_s, 1e3 * p.mean_s, 1e3 * p.worst_s, m.heard, p.heard);
+    std::printf("stroke to the cycle that renders it, on JACK (48 kHz, 64-frame periods): mouse path %.2f ms mean, "
+                "%.2f worst; pen path %.2f ms mean, %.2f worst (%d and %d strokes heard); the device then plays it "
+                "%.2f ms later (its playback latency)\n",
+                1e3 * m.mean_s, 1e3 * m.worst_s, 1e3 * p.mean_s, 1e3 * p.worst_s, m.heard, p.heard, 1e3 * device_s);
     EXPECT_EQ(m.heard, kStrokesPerPath);
     EXPECT_EQ(p.heard, kStrokesPerPath);
     // The pen's first report has no speed yet (PenSpeed needs a second), so its sound starts one

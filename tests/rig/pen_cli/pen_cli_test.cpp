@@ -2,7 +2,9 @@
 // Intuos S in this process's umockdev testbed, which the `nibrig` child reaches through the
 // inherited preload (tests/rig/pen/run_under_umockdev.sh), the audio the tests' JACK server.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -124,12 +126,17 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
   setenv("NIBRIG_PENS", folder.c_str(), 1);
   const auto keys = folder / "keys";
   ASSERT_EQ(mkfifo(keys.c_str(), 0600), 0);
+  // Opened for writing before the child opens it for reading: posix_spawn's child opens its input
+  // before the parent runs on, and a FIFO's open waits for the other end.
+  const int enter = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
+  ASSERT_GE(enter, 0);
   const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "test pen", "--load", "100g", "--load", "200g",
                                      "--load", "400g"},
                                     keys);
-  std::ofstream enter(keys);  // opens once the child reads it
   // Each load held at its pressure for 0.8 s (longer than the 0.5 s window averaged), Enter
   // pressed while it holds, then the pen lifted.
+  ASSERT_TRUE(tablet_->wait_until_opened(pid, 30.0)) << "the command never opened the tablet";
+  std::this_thread::sleep_for(200ms);  // past libinput's drain of what was pending at its open
   const double pressures[] = {0.20, 0.38, 0.70};
   const double period = 1.0 / tablet_->model().report_hz;
   const double t0 = pen_clock_now_s();
@@ -142,10 +149,10 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
       const double wobble = 0.002 * p * std::sin(2 * M_PI * 6.0 * (t - start));
       tablet_->report(pen_clock_now_s(), 60.0, 40.0, p + wobble);
     }
-    enter << "\n" << std::flush;
+    ASSERT_EQ(::write(enter, "\n", 1), 1);
     std::this_thread::sleep_for(100ms);
   }
-  enter.close();
+  ::close(enter);
   unsetenv("NIBRIG_PENS");
   const int code = test::wait_cli(pid);
   ASSERT_EQ(code, 0);
@@ -155,8 +162,8 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
   const double loads_n[] = {0.1 * 9.80665, 0.2 * 9.80665, 0.4 * 9.80665};
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(points[i + 1].force_n, loads_n[i], 1e-9);
-    // libinput's normalised pressure of the level held: 4096 levels, and libinput's tip threshold
-    // offset (a few levels) within 1 % of the range.
+    // libinput's normalised pressure of the level held: libinput takes its tip threshold (1 % of
+    // the range here) off and rescales, (p - 0.01) / 0.99, which stays within 0.01 of p.
     EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);
   }
 }
