@@ -26,6 +26,8 @@ void DevicesView::refresh() {
     } catch (const std::exception& e) {
       listing.usb_problem = e.what();
     }
+    control.message("pen tablets");
+    listing.tablets = rig::pen::list_tablets(&listing.tablet_problem);
     return listing;
   });
 }
@@ -189,6 +191,15 @@ void DevicesView::draw_listing() {
   if (!listing_->usb_problem.empty()) ImGui::TextWrapped("%s", listing_->usb_problem.c_str());
   else if (listing_->controllers.empty()) ImGui::TextWrapped("none on the bus (VID 0x1209, PID 0x000A)");
   for (const auto& c : listing_->controllers) ImGui::BulletText("%s", rig::usb::describe(c).c_str());
+  section("Pen tablets (the pad draws with the first)");
+  if (listing_->tablets.empty()) {
+    ImGui::TextWrapped("none%s%s", listing_->tablet_problem.empty() ? "" : ": ", listing_->tablet_problem.c_str());
+  }
+  for (const auto& t : listing_->tablets) {
+    ImGui::BulletText("%s%s  %s  %.1f x %.1f mm, %s, %s", t.name.c_str(), t.model.empty() ? "" : (" (" + t.model + ")").c_str(),
+                      t.devnode.c_str(), t.width_mm, t.height_mm, t.has_pressure ? "pressure" : "no pressure",
+                      t.has_tilt ? "tilt" : "no tilt");
+  }
 }
 
 }  // namespace nibrig::ui::panel

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "playback/audio_devices.hpp"
+#include "rig/pen/pen_input.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
@@ -27,6 +28,8 @@ struct DeviceListing {
   std::vector<playback::ApiDevices> apis;
   std::vector<rig::usb::RigControllerInfo> controllers;
   std::string usb_problem;
+  std::vector<rig::pen::TabletInfo> tablets;
+  std::string tablet_problem;  // why none could be read, when none were
 };
 
 // What the view shows of the stream that runs, as last drawn.

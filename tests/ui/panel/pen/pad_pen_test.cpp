@@ -15,6 +15,7 @@
 #include "tests/rig/pen/emulated_tablet.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
+#include "ui/panel/devices_view.hpp"
 #include "ui/panel/pad_view.hpp"
 #include "ui/panel/panel_window.hpp"
 
@@ -102,6 +103,31 @@ TEST(PadPen, APenStrokeDrivesThePadWithItsSpeedAndForceAndUnpluggingHandsBackThe
     tablet.unplug();
     ASSERT_TRUE(pad_frames_until(window, pad, [&] { return pad.pen().stylus() == nullptr; }, 5s));
     EXPECT_NE(pad.pen().status().find("unplugged"), std::string::npos) << pad.pen().status();
+  }
+  g_object_unref(testbed);
+}
+
+TEST(DevicesViewPen, ListsTheTabletWithItsSize) {
+  UMockdevTestbed* testbed = umockdev_testbed_new();
+  {
+    rig::pen::testing::EmulatedTablet tablet(testbed, rig::pen::testing::wacom_intuos_s());
+    PanelWindow window(testing::hidden_window());
+    PanelAudio audio{model::design::ToolSoundOptions{}};
+    DevicesView view(audio);
+    view.refresh();
+    const auto deadline = std::chrono::steady_clock::now() + 30s;
+    while (!view.listing() && std::chrono::steady_clock::now() < deadline) {
+      window.begin_frame();
+      view.draw();
+      window.end_frame();
+      std::this_thread::sleep_for(10ms);
+    }
+    ASSERT_TRUE(view.listing());
+    ASSERT_EQ(view.listing()->tablets.size(), 1u) << view.listing()->tablet_problem;
+    const auto& t = view.listing()->tablets[0];
+    EXPECT_EQ(t.name, "Wacom Intuos S Pen");
+    EXPECT_NEAR(t.width_mm, 152.0, 1e-9);  // 15200 units at 100 a millimetre
+    EXPECT_NEAR(t.height_mm, 95.0, 1e-9);
   }
   g_object_unref(testbed);
 }
