@@ -93,6 +93,56 @@ void PadView::follow_pen(rig::pen::PenStylus& stylus, ImVec2 size) {
   }
 }
 
+std::string PadView::replay(const std::filesystem::path& file) {
+  try {
+    Replay r;
+    r.drawing = model::io::read_paper_drawing(file);
+    replay_ = std::move(r);
+    replay_error_.clear();
+    strokes_.clear();
+  } catch (const std::exception& e) {
+    replay_error_ = e.what();
+  }
+  return replay_error_;
+}
+
+// The recording's rows up to the pad's clock, as if a pen had sent them: the newest row's speed and
+// force to the engine, the rows touching onto the canvas (the recording's millimetres, the
+// canvas's scale fitted to its extent).
+void PadView::follow_replay(ImVec2 size) {
+  Replay& r = *replay_;
+  const auto& d = r.drawing;
+  const double now = ImGui::GetTime();
+  if (r.started_s < 0) r.started_s = now;
+  const double t = d.time_s.front() + (now - r.started_s);
+  double x_min = d.x_m.front(), x_max = x_min, y_min = d.y_m.front(), y_max = y_min;
+  for (std::size_t i = 0; i < d.x_m.size(); ++i) {
+    x_min = std::min(x_min, d.x_m[i]), x_max = std::max(x_max, d.x_m[i]);
+    y_min = std::min(y_min, d.y_m[i]), y_max = std::max(y_max, d.y_m[i]);
+  }
+  const double scale = 0.9 * std::min(size.x / std::max(1e-3, x_max - x_min), size.y / std::max(1e-3, y_max - y_min));
+  bool touching = drawing_;
+  while (r.next < d.time_s.size() && d.time_s[r.next] <= t) {
+    const std::size_t i = r.next++;
+    if (d.touching[i] && !touching) strokes_.emplace_back();
+    touching = d.touching[i];
+    if (touching) {
+      strokes_.back().push_back({static_cast<float>(0.05 * size.x + (d.x_m[i] - x_min) * scale),
+                                 static_cast<float>(0.05 * size.y + (d.y_m[i] - y_min) * scale)});
+    }
+    speed_mm_s_ = touching ? 1e3 * d.speed_m_s[i] : 0.0;
+    sent_force_n_ = touching ? d.normal_force_N[i] : 0.0;
+  }
+  drawing_ = touching;
+  audio_.contact(speed_mm_s_ * 1e-3, sent_force_n_);
+  if (r.next >= d.time_s.size()) {
+    speed_mm_s_ = sent_force_n_ = 0.0;
+    drawing_ = false;
+    audio_.contact(0.0, 0.0);
+    replay_.reset();
+  }
+}
+
 void PadView::draw_traces(ImDrawList* draw, ImVec2 at, float width) {
   trace_.push_back(static_cast<float>(speed_mm_s_));
   force_trace_.push_back(static_cast<float>(sent_force_n_));
@@ -126,6 +176,20 @@ void PadView::draw() {
     ImGui::SetNextItemWidth(160.0f);
     ImGui::SliderFloat("mouse force N", &force_n_, 0.5f, 4.0f, "%.1f");
   }
+  ImGui::SameLine();
+  if (ImGui::Button(replay_ ? "Stop the replay" : "Replay a stroke...")) {
+    if (replay_) {
+      replay_.reset();
+      drawing_ = false;
+      speed_mm_s_ = sent_force_n_ = 0.0;
+      audio_.contact(0.0, 0.0);
+    } else {
+      files_.open("Replay a recorded stroke", FileDialog::Mode::open, {".csv", ".csv.gz"}, {},
+                  [this](const std::filesystem::path& file) { replay(file); });
+    }
+  }
+  files_.draw();
+  if (!replay_error_.empty()) ImGui::TextWrapped("%s", replay_error_.c_str());
   if (!loaded_) ImGui::Text("press Load to draw with %s on %s", tool_text_, surface_text_);
   else ImGui::Text("in use: %s on %s%s", tool_.tool.c_str(), tool_.surface.c_str(),
                    audio_.making_sounds() ? " (being made)" : "");
@@ -137,7 +201,8 @@ void PadView::draw() {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, {origin.x + canvas_size.x, origin.y + canvas_size.y}, IM_COL32(245, 242, 232, 255));
   ImGui::InvisibleButton("pad-canvas", canvas_size);
-  if (stylus) follow_pen(*stylus, canvas_size);
+  if (replay_) follow_replay(canvas_size);
+  else if (stylus) follow_pen(*stylus, canvas_size);
   else follow_mouse(origin, canvas_size);
   if (strokes_.size() > 64) strokes_.erase(strokes_.begin());
   draw->PushClipRect(origin, {origin.x + canvas_size.x, origin.y + canvas_size.y}, true);

@@ -8,10 +8,14 @@
 
 #include <cstdint>
 #include <deque>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "imgui.h"
+#include "model/io/paper_drawing.hpp"
+#include "ui/panel/file_dialog.hpp"
 #include "ui/panel/pad_pen.hpp"
 #include "ui/panel/panel_audio.hpp"
 
@@ -29,6 +33,11 @@ class PadView {
   const std::deque<float>& trace() const { return trace_; }
   const std::deque<float>& force_trace() const { return force_trace_; }
   PadPen& pen() { return pen_; }
+  // A recorded stroke (the paper's drawing format: an artist's, or one `audition --pen --record`
+  // kept) replayed as the pad's input, in real time: its speed and force to the engine, its path on
+  // the canvas. Returns the reader's error, if any (nothing changes then).
+  std::string replay(const std::filesystem::path& file);
+  bool replaying() const { return replay_.has_value(); }
   // Millimetres per screen pixel: 25.4 / the screen's dots per inch (96 unless set).
   void set_mm_per_pixel(double mm) { mm_per_pixel_ = mm; }
   // The tool the pad plays; loads it (in the background) when it changes.
@@ -40,6 +49,7 @@ class PadView {
   void follow_mouse(ImVec2 origin, ImVec2 size);
   void follow_pen(rig::pen::PenStylus& stylus, ImVec2 size);
   void draw_traces(ImDrawList* draw, ImVec2 at, float width);
+  void follow_replay(ImVec2 size);
 
   PanelAudio& audio_;
   ToolChoice tool_{"cryon", "office"};
@@ -59,6 +69,14 @@ class PadView {
   double sent_force_n_ = 0.0;
   std::uint64_t pen_stroke_ = 0;  // the pen stroke the canvas's last stroke is
   PadPen pen_;
+  struct Replay {
+    model::io::DrawingTrajectory drawing;
+    double started_s = -1.0;  // the pad's clock when its first frame drew it
+    std::size_t next = 0;     // the first row not yet played
+  };
+  std::optional<Replay> replay_;
+  FileDialog files_;
+  std::string replay_error_;
   char tool_text_[64] = "cryon", surface_text_[64] = "office";
 };
 

@@ -478,7 +478,7 @@ void Panel::draw_status(const std::string& status) {
 double Panel::idle_wait_s() const {
   const ImGuiIO& io = ImGui::GetIO();
   const bool pressed = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
-  if (pressed || ImGui::IsAnyItemActive() || experiment_view_->fullscreen() || pad_view_->drawing() ||
+  if (pressed || ImGui::IsAnyItemActive() || experiment_view_->fullscreen() || pad_view_->drawing() || pad_view_->replaying() ||
       audio_->handing_over())
     return 0.0;
   if (rig_view_->running()) return current_ == View::rig ? 0.0 : kProgressRefresh_s;
