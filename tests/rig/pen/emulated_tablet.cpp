@@ -187,20 +187,6 @@ void EmulatedTablet::wait_for_reader() {
   throw std::runtime_error("the tablet's reader took nothing for 5 s");
 }
 
-bool EmulatedTablet::wait_until_opened(pid_t pid, double timeout_s) {
-  char node[128] = {};
-  if (::ptsname_r(pty_, node, sizeof node) != 0) return false;
-  const std::filesystem::path fds = "/proc/" + std::to_string(pid) + "/fd";
-  for (double waited = 0.0; waited < timeout_s; waited += 0.01) {
-    std::error_code error;
-    for (const auto& fd : std::filesystem::directory_iterator(fds, error)) {
-      if (std::filesystem::read_symlink(fd.path(), error) == node) return true;
-    }
-    ::usleep(10000);
-  }
-  return false;
-}
-
 void EmulatedTablet::write_event(double t_s, std::uint16_t type, std::uint16_t code, std::int32_t value) {
   input_event ev{};
   const double whole = std::floor(t_s);

@@ -7,8 +7,6 @@
 
 #include <umockdev.h>
 
-#include <sys/types.h>
-
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -44,10 +42,6 @@ class EmulatedTablet {
   void proximity_in(double t_s, double x_mm, double y_mm);
   void report(double t_s, double x_mm, double y_mm, double pressure);
   void proximity_out(double t_s);
-  // Waits until process `pid` has the node open, so that reports meant for a child process are not
-  // written before it listens (what is pending when a reader opens the node is thrown away, as
-  // libinput drains a device it opens); false on timeout.
-  bool wait_until_opened(pid_t pid, double timeout_s);
   // The tablet leaves: udev's remove uevent, and the node goes away.
   void unplug();
 

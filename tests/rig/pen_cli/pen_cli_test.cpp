@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 
@@ -19,6 +20,7 @@
 #include "rig/pen/pen_force_file.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/rig/pen/emulated_tablet.hpp"
+#include "tests/rig/usb/emulated_rig.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -36,6 +38,18 @@ std::filesystem::path pen_cli_scratch(const std::string& name) {
 
 void sleep_until_s(double t) {
   std::this_thread::sleep_for(std::chrono::duration<double>(std::max(0.0, t - pen_clock_now_s())));
+}
+
+// Waits until the command's output (a file) holds `text`, as a person waits for a prompt.
+bool wait_for_prompt(const std::filesystem::path& output, const std::string& text, std::chrono::seconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::ifstream in(output);
+    const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (said.find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
 }
 
 class PenCli : public ::testing::Test {
@@ -130,13 +144,14 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
   // before the parent runs on, and a FIFO's open waits for the other end.
   const int enter = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
   ASSERT_GE(enter, 0);
+  const auto said = folder / "said.txt";
   const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "test pen", "--load", "100g", "--load", "200g",
                                      "--load", "400g"},
-                                    keys);
+                                    keys, said);
+  // The first prompt comes once the tablet is open (what was pending then, libinput threw away).
+  ASSERT_TRUE(wait_for_prompt(said, "load 1 of 3", 60s)) << "the command never asked for the first load";
   // Each load held at its pressure for 0.8 s (longer than the 0.5 s window averaged), Enter
   // pressed while it holds, then the pen lifted.
-  ASSERT_TRUE(tablet_->wait_until_opened(pid, 30.0)) << "the command never opened the tablet";
-  std::this_thread::sleep_for(200ms);  // past libinput's drain of what was pending at its open
   const double pressures[] = {0.20, 0.38, 0.70};
   const double period = 1.0 / tablet_->model().report_hz;
   const double t0 = pen_clock_now_s();
@@ -155,7 +170,8 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
   ::close(enter);
   unsetenv("NIBRIG_PENS");
   const int code = test::wait_cli(pid);
-  ASSERT_EQ(code, 0);
+  std::ifstream said_in(said);
+  ASSERT_EQ(code, 0) << std::string((std::istreambuf_iterator<char>(said_in)), std::istreambuf_iterator<char>());
   const auto calibration = read_pen_file(folder / "test_pen.json");
   const auto& points = calibration.curve.points();
   ASSERT_EQ(points.size(), 4u);  // (0, 0 N) and the three loads
@@ -166,6 +182,56 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
     // the range here) off and rescales, (p - 0.01) / 0.99, which stays within 0.01 of p.
     EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);
   }
+}
+
+// The loads from the rig's normal-force sensor (the pen pressed on it) instead of a scale: the rig's
+// emulated controller calibrated as a user would first (`rig calibrate`), then each hold's load is
+// what its frames read.
+TEST_F(PenCli, CalibrateOnTheRigTakesEachLoadFromItsForceSensor) {
+  usb::testing::EmulatedRig rig(testbed_, usb::testing::EmulatedRigConfig{"NIB-PEN1", 2});
+  rig.place_on_arm(0.0, 0.0);
+  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--zero", "--yes"}), 0);
+  rig.place_on_arm(2.0, 0.0);
+  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--normal-weight", "2N", "--yes"}), 0);
+  rig.place_on_arm(0.0, 0.0);
+
+  const auto folder = pen_cli_scratch("calibrate_rig");
+  setenv("NIBRIG_PENS", folder.c_str(), 1);
+  const auto keys = folder / "keys";
+  ASSERT_EQ(mkfifo(keys.c_str(), 0600), 0);
+  const int enter = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
+  ASSERT_GE(enter, 0);
+  const auto said = folder / "said.txt";
+  const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "rig pen", "--rig", "--holds", "3"}, keys, said);
+  ASSERT_TRUE(wait_for_prompt(said, "hold 1 of 3", 60s)) << "the command never asked for the first hold";
+  const double loads_n[] = {0.8, 1.9, 3.6};
+  const double pressures[] = {0.18, 0.40, 0.72};
+  const double period = 1.0 / tablet_->model().report_hz;
+  tablet_->proximity_in(pen_clock_now_s(), 60.0, 40.0);
+  for (int i = 0; i < 3; ++i) {
+    rig.place_on_arm(loads_n[i], 0.0);  // the pen pressing on the sensor
+    const double start = pen_clock_now_s();
+    for (double t = start; t < start + 0.8; t += period) {
+      sleep_until_s(t);
+      tablet_->report(pen_clock_now_s(), 60.0, 40.0, pressures[i] + 0.001 * std::sin(40.0 * t));
+    }
+    ASSERT_EQ(::write(enter, "\n", 1), 1);
+    std::this_thread::sleep_for(100ms);
+  }
+  ::close(enter);
+  unsetenv("NIBRIG_PENS");
+  const int code = test::wait_cli(pid);
+  std::ifstream said_in(said);
+  ASSERT_EQ(code, 0) << std::string((std::istreambuf_iterator<char>(said_in)), std::istreambuf_iterator<char>());
+  const auto calibration = read_pen_file(folder / "rig_pen.json");
+  const auto& points = calibration.curve.points();
+  ASSERT_EQ(points.size(), 4u);
+  for (int i = 0; i < 3; ++i) {
+    // The frames' force: the calibrated bridge, its factor sent as a float (7 digits).
+    EXPECT_NEAR(points[i + 1].force_n, loads_n[i], loads_n[i] * 1e-5);
+    EXPECT_NEAR(points[i + 1].pressure, (pressures[i] - 0.01) / 0.99, 0.002);  // libinput's threshold off
+  }
+  EXPECT_NE(calibration.method.find("rig"), std::string::npos) << calibration.method;
 }
 
 }  // namespace

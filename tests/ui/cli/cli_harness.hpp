@@ -23,8 +23,10 @@ namespace nibrig::test {
 
 // Starts `nibrig args...` without waiting: its process id, for a test that signals it, then
 // wait_cli(pid). With `input`, its standard input is read from that file (a person's keys,
-// scripted); otherwise it inherits the test's.
-inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::path& input = {}) {
+// scripted); otherwise it inherits the test's. With `output`, its standard output goes to that
+// file (for a test that waits for a prompt); otherwise to the test's.
+inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::path& input = {},
+                       const std::filesystem::path& output = {}) {
   args.insert(args.begin(), NIBRIG_CLI_BINARY);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -35,6 +37,7 @@ inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::pat
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (!input.empty()) posix_spawn_file_actions_addopen(&actions, 0, input.c_str(), O_RDONLY, 0);
+  if (!output.empty()) posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
   const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
