@@ -1,26 +1,15 @@
 #include "playback/actuator_store.hpp"
 
-#include <cctype>
-#include <cstdlib>
 #include <stdexcept>
+
+#include "model/io/user_store.hpp"
 
 namespace nibrig::playback {
 
-std::filesystem::path actuator_folder() {
-  if (const char* d = std::getenv("NIBRIG_ACTUATORS"); d && *d) return d;
-  if (const char* d = std::getenv("XDG_DATA_HOME"); d && *d)
-    return std::filesystem::path(d) / "nibrig" / "actuators";
-  const char* home = std::getenv("HOME");
-  return std::filesystem::path(home && *home ? home : ".") / ".local" / "share" / "nibrig" /
-         "actuators";
-}
+std::filesystem::path actuator_folder() { return model::io::user_store_folder("NIBRIG_ACTUATORS", "actuators"); }
 
 std::filesystem::path actuator_path(const std::string& name) {
-  std::string safe = name;
-  for (char& c : safe)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
-  if (safe.empty() || safe == "." || safe == "..") safe = "actuator";
-  return actuator_folder() / (safe + ".json");
+  return model::io::user_store_file(actuator_folder(), name, "actuator");
 }
 
 std::filesystem::path find_actuator(const std::string& name_or_file) {

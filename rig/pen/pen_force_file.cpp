@@ -1,13 +1,12 @@
 #include "rig/pen/pen_force_file.hpp"
 
-#include <cctype>
-#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/user_store.hpp"
 #include "model/io/utc_time.hpp"
 
 namespace nibrig::rig::pen {
@@ -108,21 +107,10 @@ PenCalibration read_pen_file(const std::filesystem::path& file) {
   return c;
 }
 
-std::filesystem::path pen_folder() {
-  if (const char* d = std::getenv("NIBRIG_PENS"); d && *d) return d;
-  if (const char* d = std::getenv("XDG_DATA_HOME"); d && *d)
-    return std::filesystem::path(d) / "nibrig" / "pens";
-  const char* home = std::getenv("HOME");
-  return std::filesystem::path(home && *home ? home : ".") / ".local" / "share" / "nibrig" / "pens";
-}
+std::filesystem::path pen_folder() { return model::io::user_store_folder("NIBRIG_PENS", "pens"); }
 
 std::filesystem::path pen_curve_path(const std::string& name) {
-  std::string safe = name;
-  for (char& ch : safe)
-    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_' && ch != '.')
-      ch = '_';
-  if (safe.empty() || safe == "." || safe == "..") safe = "pen";
-  return pen_folder() / (safe + ".json");
+  return model::io::user_store_file(pen_folder(), name, "pen");
 }
 
 PenCurveChoice pen_curve_for(const std::string& name) {

@@ -239,6 +239,7 @@ struct PenInput::Impl {
   void run();
   void handle(libinput_event* event);
   void emit_tool(libinput_event_tablet_tool* tool);
+  void end_with_removal();
   bool tip_down = false, in_proximity = false;
   double last_time_s = 0, last_x_m = 0, last_y_m = 0;
 };
@@ -294,8 +295,15 @@ bool PenInput::removed() const { return impl_->removed.load(std::memory_order_ac
 void PenInput::Impl::run() {
   pollfd fds[2] = {{libinput_get_fd(li), POLLIN, 0}, {stop_fd, POLLIN, 0}};
   while (true) {
-    if (::poll(fds, 2, -1) < 0 && errno != EINTR) return;
-    if (fds[1].revents) return;
+    const int ready = ::poll(fds, 2, -1);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready > 0 && fds[1].revents == POLLIN) return;  // asked to stop
+    if (ready < 0 || (fds[0].revents & (POLLERR | POLLNVAL)) || fds[1].revents) {
+      // The reader cannot go on (its descriptors failed): to its owner that is the tablet gone, so
+      // that a stroke ends and a face says so instead of waiting for reports that never come.
+      end_with_removal();
+      return;
+    }
     libinput_dispatch(li);
     while (libinput_event* event = libinput_get_event(li)) {
       handle(event);
@@ -304,21 +312,26 @@ void PenInput::Impl::run() {
   }
 }
 
+void PenInput::Impl::end_with_removal() {
+  if (removed.load(std::memory_order_acquire)) return;
+  if (tip_down || in_proximity) {
+    PenSample last;
+    last.time_s = last_time_s;
+    last.x_m = last_x_m;
+    last.y_m = last_y_m;
+    tip_down = in_proximity = false;
+    if (events.sample) events.sample(last);
+  }
+  removed.store(true, std::memory_order_release);
+  if (events.removed) events.removed();
+}
+
 void PenInput::Impl::handle(libinput_event* event) {
   if (libinput_event_get_device(event) != device) return;
   switch (libinput_event_get_type(event)) {
     case LIBINPUT_EVENT_DEVICE_REMOVED:
       // A stroke in progress ends here: the last sample says the tip is up and the pen gone.
-      if (tip_down || in_proximity) {
-        PenSample last;
-        last.time_s = last_time_s;
-        last.x_m = last_x_m;
-        last.y_m = last_y_m;
-        tip_down = in_proximity = false;
-        if (events.sample) events.sample(last);
-      }
-      removed.store(true, std::memory_order_release);
-      if (events.removed) events.removed();
+      end_with_removal();
       break;
     case LIBINPUT_EVENT_TABLET_TOOL_PROXIMITY: {
       auto* tool = libinput_event_get_tablet_tool_event(event);

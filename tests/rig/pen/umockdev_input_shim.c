@@ -39,60 +39,47 @@ static int shim_sound_node(const char* path) {
   return getenv("UMOCKDEV_DIR") && path && (strncmp(path, "/dev/snd/", 9) == 0 || strncmp(path, "/dev/aloadC", 11) == 0);
 }
 
+/* open's mode argument, there only when the flags create a file. */
+#define SHIM_MODE(flags, mode)                \
+  mode_t mode = 0;                            \
+  if ((flags) & (O_CREAT | O_TMPFILE)) {      \
+    va_list ap;                               \
+    va_start(ap, flags);                      \
+    mode = va_arg(ap, mode_t);                \
+    va_end(ap);                               \
+  }
+
+/* A sound card's node: refused (ENOENT, -1 returned by the caller) before umockdev sees it. */
+static int shim_refused(const char* path) {
+  if (!shim_sound_node(path)) return 0;
+  errno = ENOENT;
+  return 1;
+}
+
 int open64(const char* path, int flags, ...) {
-  mode_t mode = 0;
-  if (flags & (O_CREAT | O_TMPFILE)) {
-    va_list ap;
-    va_start(ap, flags);
-    mode = va_arg(ap, mode_t);
-    va_end(ap);
-  }
-  if (shim_sound_node(path)) {
-    errno = ENOENT;
-    return -1;
-  }
+  SHIM_MODE(flags, mode)
+  if (shim_refused(path)) return -1;
   char moved[4096];
   const char* p = shim_udev_path(path, moved, sizeof moved);
   return SHIM_NEXT(int (*)(const char*, int, ...), "open64")(p ? p : path, flags, mode);
 }
 
 int openat64(int dirfd, const char* path, int flags, ...) {
-  mode_t mode = 0;
-  if (flags & (O_CREAT | O_TMPFILE)) {
-    va_list ap;
-    va_start(ap, flags);
-    mode = va_arg(ap, mode_t);
-    va_end(ap);
-  }
-  if (shim_sound_node(path)) {
-    errno = ENOENT;
-    return -1;
-  }
+  SHIM_MODE(flags, mode)
+  if (shim_refused(path)) return -1;
   char moved[4096];
   const char* p = shim_udev_path(path, moved, sizeof moved);
   return SHIM_NEXT(int (*)(int, const char*, int, ...), "openat64")(dirfd, p ? p : path, flags, mode);
 }
 
 int open(const char* path, int flags, ...) {
-  mode_t mode = 0;
-  if (flags & (O_CREAT | O_TMPFILE)) {
-    va_list ap;
-    va_start(ap, flags);
-    mode = va_arg(ap, mode_t);
-    va_end(ap);
-  }
-  if (shim_sound_node(path)) {
-    errno = ENOENT;
-    return -1;
-  }
+  SHIM_MODE(flags, mode)
+  if (shim_refused(path)) return -1;
   return SHIM_NEXT(int (*)(const char*, int, ...), "open")(path, flags, mode);
 }
 
 int __open_2(const char* path, int flags) {
-  if (shim_sound_node(path)) {
-    errno = ENOENT;
-    return -1;
-  }
+  if (shim_refused(path)) return -1;
   return SHIM_NEXT(int (*)(const char*, int), "__open_2")(path, flags);
 }
 

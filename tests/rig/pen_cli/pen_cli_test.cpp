@@ -20,7 +20,6 @@
 #include "rig/pen/pen_force_file.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/rig/pen/emulated_tablet.hpp"
-#include "tests/rig/usb/emulated_rig.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -75,6 +74,17 @@ class PenCli : public ::testing::Test {
     tablet_->report(pen_clock_now_s(), 30.0 + speed_mm_s * seconds, 50.0, 0.0);
     std::this_thread::sleep_for(std::chrono::duration<double>(period));
     tablet_->proximity_out(pen_clock_now_s());
+  }
+
+  // The pen held still at `pressure` (with a hand's ±0.2 % tremor) for `seconds`, in real time.
+  void hold(double pressure, double seconds) {
+    const double period = 1.0 / tablet_->model().report_hz;
+    const double start = pen_clock_now_s();
+    for (double t = start; t < start + seconds; t += period) {
+      sleep_until_s(t);
+      const double tremor = 0.002 * pressure * std::sin(2 * M_PI * 6.0 * (t - start));
+      tablet_->report(pen_clock_now_s(), 60.0, 40.0, pressure + tremor);
+    }
   }
 
   UMockdevTestbed* testbed_ = nullptr;
@@ -135,44 +145,65 @@ TEST_F(PenCli, AuditionFollowsThePenAndRecordsItsStroke) {
   EXPECT_NEAR(sum / n, 0.120, 0.120 * 0.02);
 }
 
-TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
-  const auto folder = pen_cli_scratch("calibrate");
-  setenv("NIBRIG_PENS", folder.c_str(), 1);
-  const auto keys = folder / "keys";
-  ASSERT_EQ(mkfifo(keys.c_str(), 0600), 0);
-  // Opened for writing before the child opens it for reading: posix_spawn's child opens its input
-  // before the parent runs on, and a FIFO's open waits for the other end.
-  const int enter = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
-  ASSERT_GE(enter, 0);
-  const auto said = folder / "said.txt";
-  const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "test pen", "--load", "100g", "--load", "200g",
-                                     "--load", "400g"},
-                                    keys, said);
-  // The first prompt comes once the tablet is open (what was pending then, libinput threw away).
-  ASSERT_TRUE(wait_for_prompt(said, "load 1 of 3", 60s)) << "the command never asked for the first load";
-  // Each load held at its pressure for 0.8 s (longer than the 0.5 s window averaged), Enter
-  // pressed while it holds, then the pen lifted.
-  const double pressures[] = {0.20, 0.38, 0.70};
-  const double period = 1.0 / tablet_->model().report_hz;
-  const double t0 = pen_clock_now_s();
-  tablet_->proximity_in(t0, 60.0, 40.0);
-  for (double p : pressures) {
-    const double start = pen_clock_now_s();
-    for (double t = start; t < start + 0.8; t += period) {
-      sleep_until_s(t);
-      // A hand's tremor: ±0.2 % of the pressure, well inside the 5 % a steady hold allows.
-      const double wobble = 0.002 * p * std::sin(2 * M_PI * 6.0 * (t - start));
-      tablet_->report(pen_clock_now_s(), 60.0, 40.0, p + wobble);
-    }
-    ASSERT_EQ(::write(enter, "\n", 1), 1);
+// `pen calibrate` run as a person at the keyboard would: its keys through a FIFO, its output in a
+// file to wait on for its first prompt; the pen store a scratch folder of its own.
+class CalibrateSession {
+ public:
+  CalibrateSession(const std::string& name, std::vector<std::string> args, const std::string& first_prompt)
+      : folder_(pen_cli_scratch(name)), said_(folder_ / "said.txt") {
+    setenv("NIBRIG_PENS", folder_.c_str(), 1);
+    const auto keys = folder_ / "keys";
+    if (mkfifo(keys.c_str(), 0600) != 0) throw std::runtime_error("cannot make the keys' FIFO");
+    // Opened for writing before the child opens it for reading: posix_spawn's child opens its
+    // input before the parent runs on, and a FIFO's open waits for the other end.
+    keys_ = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
+    args.insert(args.begin(), {"pen", "calibrate"});
+    pid_ = test::start_cli(args, keys, said_);
+    unsetenv("NIBRIG_PENS");
+    // The first prompt comes once the tablet is open (what was pending then, libinput threw away).
+    asked_ = wait_for_prompt(said_, first_prompt, 60s);
+  }
+  ~CalibrateSession() {
+    if (keys_ >= 0) ::close(keys_);
+  }
+  bool asked() const { return asked_; }
+  void enter() {
+    if (::write(keys_, "\n", 1) != 1) throw std::runtime_error("cannot press Enter");
     std::this_thread::sleep_for(100ms);
   }
-  ::close(enter);
-  unsetenv("NIBRIG_PENS");
-  const int code = test::wait_cli(pid);
-  std::ifstream said_in(said);
-  ASSERT_EQ(code, 0) << std::string((std::istreambuf_iterator<char>(said_in)), std::istreambuf_iterator<char>());
-  const auto calibration = read_pen_file(folder / "test_pen.json");
+  // The exit code, once the keys end; `said` gets what it printed.
+  int finish(std::string& said) {
+    ::close(keys_);
+    keys_ = -1;
+    const int code = test::wait_cli(pid_);
+    std::ifstream in(said_);
+    said.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return code;
+  }
+  PenCalibration stored(const std::string& file) const { return read_pen_file(folder_ / file); }
+
+ private:
+  std::filesystem::path folder_, said_;
+  int keys_ = -1;
+  pid_t pid_ = 0;
+  bool asked_ = false;
+};
+
+TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
+  CalibrateSession session("calibrate", {"--name", "test pen", "--load", "100g", "--load", "200g", "--load", "400g"},
+                           "load 1 of 3");
+  ASSERT_TRUE(session.asked()) << "the command never asked for the first load";
+  // Each load held at its pressure for 0.8 s (longer than the 0.5 s window averaged), with a hand's
+  // tremor of ±0.2 % (well inside the 5 % a steady hold allows), Enter pressed while it holds.
+  const double pressures[] = {0.20, 0.38, 0.70};
+  tablet_->proximity_in(pen_clock_now_s(), 60.0, 40.0);
+  for (double p : pressures) {
+    hold(p, 0.8);
+    session.enter();
+  }
+  std::string said;
+  ASSERT_EQ(session.finish(said), 0) << said;
+  const auto calibration = session.stored("test_pen.json");
   const auto& points = calibration.curve.points();
   ASSERT_EQ(points.size(), 4u);  // (0, 0 N) and the three loads
   const double loads_n[] = {0.1 * 9.80665, 0.2 * 9.80665, 0.4 * 9.80665};
@@ -182,56 +213,6 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
     // the range here) off and rescales, (p - 0.01) / 0.99, which stays within 0.01 of p.
     EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);
   }
-}
-
-// The loads from the rig's normal-force sensor (the pen pressed on it) instead of a scale: the rig's
-// emulated controller calibrated as a user would first (`rig calibrate`), then each hold's load is
-// what its frames read.
-TEST_F(PenCli, CalibrateOnTheRigTakesEachLoadFromItsForceSensor) {
-  usb::testing::EmulatedRig rig(testbed_, usb::testing::EmulatedRigConfig{"NIB-PEN1", 2});
-  rig.place_on_arm(0.0, 0.0);
-  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--zero", "--yes"}), 0);
-  rig.place_on_arm(2.0, 0.0);
-  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--normal-weight", "2N", "--yes"}), 0);
-  rig.place_on_arm(0.0, 0.0);
-
-  const auto folder = pen_cli_scratch("calibrate_rig");
-  setenv("NIBRIG_PENS", folder.c_str(), 1);
-  const auto keys = folder / "keys";
-  ASSERT_EQ(mkfifo(keys.c_str(), 0600), 0);
-  const int enter = ::open(keys.c_str(), O_RDWR | O_CLOEXEC);
-  ASSERT_GE(enter, 0);
-  const auto said = folder / "said.txt";
-  const pid_t pid = test::start_cli({"pen", "calibrate", "--name", "rig pen", "--rig", "--holds", "3"}, keys, said);
-  ASSERT_TRUE(wait_for_prompt(said, "hold 1 of 3", 60s)) << "the command never asked for the first hold";
-  const double loads_n[] = {0.8, 1.9, 3.6};
-  const double pressures[] = {0.18, 0.40, 0.72};
-  const double period = 1.0 / tablet_->model().report_hz;
-  tablet_->proximity_in(pen_clock_now_s(), 60.0, 40.0);
-  for (int i = 0; i < 3; ++i) {
-    rig.place_on_arm(loads_n[i], 0.0);  // the pen pressing on the sensor
-    const double start = pen_clock_now_s();
-    for (double t = start; t < start + 0.8; t += period) {
-      sleep_until_s(t);
-      tablet_->report(pen_clock_now_s(), 60.0, 40.0, pressures[i] + 0.001 * std::sin(40.0 * t));
-    }
-    ASSERT_EQ(::write(enter, "\n", 1), 1);
-    std::this_thread::sleep_for(100ms);
-  }
-  ::close(enter);
-  unsetenv("NIBRIG_PENS");
-  const int code = test::wait_cli(pid);
-  std::ifstream said_in(said);
-  ASSERT_EQ(code, 0) << std::string((std::istreambuf_iterator<char>(said_in)), std::istreambuf_iterator<char>());
-  const auto calibration = read_pen_file(folder / "rig_pen.json");
-  const auto& points = calibration.curve.points();
-  ASSERT_EQ(points.size(), 4u);
-  for (int i = 0; i < 3; ++i) {
-    // The frames' force: the calibrated bridge, its factor sent as a float (7 digits).
-    EXPECT_NEAR(points[i + 1].force_n, loads_n[i], loads_n[i] * 1e-5);
-    EXPECT_NEAR(points[i + 1].pressure, (pressures[i] - 0.01) / 0.99, 0.002);  // libinput's threshold off
-  }
-  EXPECT_NE(calibration.method.find("rig"), std::string::npos) << calibration.method;
 }
 
 }  // namespace
