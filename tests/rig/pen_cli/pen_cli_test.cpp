@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -167,9 +168,24 @@ class CalibrateSession {
     if (keys_ >= 0) ::close(keys_);
   }
   bool asked() const { return asked_; }
-  void enter() {
-    if (::write(keys_, "\n", 1) != 1) throw std::runtime_error("cannot press Enter");
-    std::this_thread::sleep_for(100ms);
+  // Enter pressed while the pen holds, as a person does: when the command does not take the hold
+  // ("not taken ... again": on a loaded machine the reader may not have passed on the last reports
+  // yet) the hold is made again and Enter pressed again, up to four times. True once the command
+  // says `next` (its next prompt, or the curve).
+  bool enter_until(const std::string& next, const std::function<void()>& hold_again) {
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      const std::size_t refusals = count("not taken");
+      if (::write(keys_, "\n", 1) != 1) throw std::runtime_error("cannot press Enter");
+      const auto deadline = std::chrono::steady_clock::now() + 20s;
+      while (std::chrono::steady_clock::now() < deadline) {
+        if (count(next) > 0) return true;
+        if (count("not taken") > refusals) break;
+        std::this_thread::sleep_for(20ms);
+      }
+      if (count(next) > 0) return true;
+      hold_again();
+    }
+    return false;
   }
   // The exit code, once the keys end; `said` gets what it printed.
   int finish(std::string& said) {
@@ -181,6 +197,14 @@ class CalibrateSession {
     return code;
   }
   PenCalibration stored(const std::string& file) const { return read_pen_file(folder_ / file); }
+  // How often the command has said `text` so far.
+  std::size_t count(const std::string& text) const {
+    std::ifstream in(said_);
+    const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::size_t n = 0;
+    for (auto at = said.find(text); at != std::string::npos; at = said.find(text, at + 1)) ++n;
+    return n;
+  }
 
  private:
   std::filesystem::path folder_, said_;
@@ -197,9 +221,10 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
   // tremor of ±0.2 % (well inside the 5 % a steady hold allows), Enter pressed while it holds.
   const double pressures[] = {0.20, 0.38, 0.70};
   tablet_->proximity_in(pen_clock_now_s(), 60.0, 40.0);
-  for (double p : pressures) {
-    hold(p, 0.8);
-    session.enter();
+  const char* next[] = {"load 2 of 3", "load 3 of 3", "pressure curve"};
+  for (int i = 0; i < 3; ++i) {
+    hold(pressures[i], 0.8);
+    ASSERT_TRUE(session.enter_until(next[i], [&] { hold(pressures[i], 0.8); })) << "load " << i + 1 << " never taken";
   }
   std::string said;
   ASSERT_EQ(session.finish(said), 0) << said;
