@@ -95,6 +95,16 @@ PenHoldCheck PenCalibrator::check_locked(double now_s) const {
   }
   c.pressure = sum / weight;
   c.pressure_sd = std::sqrt(std::max(0.0, sum_sq / weight - c.pressure * c.pressure));
+  // A pen held by hand reports its pressure's tremor many times a second; a window with fewer
+  // reports is a reader that fell behind or stopped, not a steady hold.
+  if (c.samples < settings_.min_samples) {
+    std::snprintf(text, sizeof text,
+                  "the pen sent %zu reports over the last %.2f s, expected at least %zu: press Enter "
+                  "again while holding (if it stays so, check the tablet)",
+                  c.samples, window, settings_.min_samples);
+    c.problem = text;
+    return c;
+  }
   if (!(c.pressure > 0.0)) {
     c.problem = "the pen reports no pressure: press harder, or check the pen has a pressure axis";
     return c;
