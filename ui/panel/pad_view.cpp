@@ -58,8 +58,7 @@ void PadView::update_speed(bool down, ImVec2 p, double now_s) {
   last_ = p;
 }
 
-void PadView::follow_mouse(ImVec2 origin, ImVec2 size) {
-  (void)size;
+void PadView::follow_mouse(ImVec2 origin) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool down = ImGui::IsItemActive() && io.MouseDown[0];
   const ImVec2 p{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
@@ -97,6 +96,10 @@ std::string PadView::replay(const std::filesystem::path& file) {
   try {
     Replay r;
     r.drawing = model::io::read_paper_drawing(file);
+    const auto& d = r.drawing;
+    const auto [x_min, x_max] = std::minmax_element(d.x_m.begin(), d.x_m.end());
+    const auto [y_min, y_max] = std::minmax_element(d.y_m.begin(), d.y_m.end());
+    r.x_min_m = *x_min, r.x_max_m = *x_max, r.y_min_m = *y_min, r.y_max_m = *y_max;
     replay_ = std::move(r);
     replay_error_.clear();
     strokes_.clear();
@@ -115,12 +118,9 @@ void PadView::follow_replay(ImVec2 size) {
   const double now = ImGui::GetTime();
   if (r.started_s < 0) r.started_s = now;
   const double t = d.time_s.front() + (now - r.started_s);
-  double x_min = d.x_m.front(), x_max = x_min, y_min = d.y_m.front(), y_max = y_min;
-  for (std::size_t i = 0; i < d.x_m.size(); ++i) {
-    x_min = std::min(x_min, d.x_m[i]), x_max = std::max(x_max, d.x_m[i]);
-    y_min = std::min(y_min, d.y_m[i]), y_max = std::max(y_max, d.y_m[i]);
-  }
-  const double scale = 0.9 * std::min(size.x / std::max(1e-3, x_max - x_min), size.y / std::max(1e-3, y_max - y_min));
+  const double x_min = r.x_min_m, y_min = r.y_min_m;
+  const double scale =
+      0.9 * std::min(size.x / std::max(1e-3, r.x_max_m - x_min), size.y / std::max(1e-3, r.y_max_m - y_min));
   bool touching = drawing_;
   while (r.next < d.time_s.size() && d.time_s[r.next] <= t) {
     const std::size_t i = r.next++;
@@ -203,7 +203,7 @@ void PadView::draw() {
   ImGui::InvisibleButton("pad-canvas", canvas_size);
   if (replay_) follow_replay(canvas_size);
   else if (stylus) follow_pen(*stylus, canvas_size);
-  else follow_mouse(origin, canvas_size);
+  else follow_mouse(origin);
   if (strokes_.size() > 64) strokes_.erase(strokes_.begin());
   draw->PushClipRect(origin, {origin.x + canvas_size.x, origin.y + canvas_size.y}, true);
   for (const auto& stroke : strokes_) {

@@ -46,7 +46,7 @@ class PadView {
 
  private:
   void update_speed(bool down, ImVec2 position, double now_s);
-  void follow_mouse(ImVec2 origin, ImVec2 size);
+  void follow_mouse(ImVec2 origin);
   void follow_pen(rig::pen::PenStylus& stylus, ImVec2 size);
   void draw_traces(ImDrawList* draw, ImVec2 at, float width);
   void follow_replay(ImVec2 size);
@@ -71,6 +71,7 @@ class PadView {
   PadPen pen_;
   struct Replay {
     model::io::DrawingTrajectory drawing;
+    double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;  // its extent, for the canvas
     double started_s = -1.0;  // the pad's clock when its first frame drew it
     std::size_t next = 0;     // the first row not yet played
   };
