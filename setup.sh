@@ -21,6 +21,7 @@ packages=(
   librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libusb-1.0-0-dev libumockdev-dev  # the rig's USB controller; its tests emulate the device with umockdev
   libinput-dev libudev-dev libwacom-dev  # pen tablets: read through libinput, named by libwacom
+  lib3mf-dev libzip-dev  # a design's stylus exported as 3MF (lib3mf; its pkg-config file links libzip)
   avrdude  # `nibrig rig flash` writes the controller's firmware with it; its tests run it on a pty
   libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
   libimgui-dev libglfw3-dev  # the panel: ImGui 1.86 + GLFW + OpenGL 3
@@ -28,6 +29,8 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
   libgtest-dev libgmock-dev umockdev libclang-rt-14-dev
+  # The exported styli's real consumers: PrusaSlicer slices the 3MF, admesh checks each STL
+  prusa-slicer admesh
   # The rig controller's firmware in rig/firmware: Debian's AVR toolchain builds it, and simavr runs it
   # in the tests; libsimavr's pkg-config file needs libelf's
   gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev
@@ -37,7 +40,7 @@ packages=(
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
 window=(xvfb xauth libgl1-mesa-dri)
-test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
+test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev prusa-slicer admesh gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
 bench_only=(libbenchmark-dev python3-numpy python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.

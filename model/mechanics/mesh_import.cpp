@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/gmsh_session.hpp"
 #include "model/mechanics/shape_builders.hpp"
 
@@ -90,6 +91,69 @@ void volume_from_stl_surface() {
 TetMesh import_checked_file(const std::filesystem::path& file, const MeshFileOptions& options,
                             bool stl, bool step, bool msh);
 
+// The regions' closed surfaces as Gmsh discrete surfaces, their triangulation kept: a triangle in
+// two regions is their interface, one surface shared by both volumes, so the tetrahedra meet
+// node to node across it. Coordinates are in the file's unit; a volume per region, its physical
+// group named after it.
+void volumes_from_region_surfaces(const std::filesystem::path& file, const std::vector<io::ThreeMfRegion>& regions) {
+  std::map<std::array<double, 3>, std::size_t> node_of;
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords;
+  // Sorted corner tags -> (region, the triangle's nodes as wound by the first region that has it).
+  struct Use {
+    std::vector<int> regions;
+    std::array<std::size_t, 3> nodes;
+  };
+  std::map<std::array<std::size_t, 3>, Use> triangles;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto& s = regions[r].surface;
+    if (s.triangles.empty()) throw file_error(file, "region '" + s.name + "' has no triangles");
+    std::vector<std::size_t> tag(s.vertices.size());
+    for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+      auto [it, inserted] = node_of.emplace(s.vertices[v], node_of.size() + 1);
+      if (inserted) {
+        node_tags.push_back(it->second);
+        coords.insert(coords.end(), s.vertices[v].begin(), s.vertices[v].end());
+      }
+      tag[v] = it->second;
+    }
+    for (const auto& t : s.triangles) {
+      std::array<std::size_t, 3> nodes{tag.at(t[0]), tag.at(t[1]), tag.at(t[2])};
+      auto key = nodes;
+      std::sort(key.begin(), key.end());
+      auto [it, inserted] = triangles.emplace(key, Use{{}, nodes});
+      it->second.regions.push_back(static_cast<int>(r));
+    }
+  }
+  // One discrete surface per region's outside and per pair's interface.
+  std::map<std::pair<int, int>, std::vector<std::size_t>> surfaces;
+  for (const auto& [key, use] : triangles) {
+    if (use.regions.size() > 2)
+      throw file_error(file, "a triangle is shared by " + std::to_string(use.regions.size()) +
+                                 " regions (two at most touch along a face)");
+    const std::pair<int, int> group =
+        use.regions.size() == 1 ? std::pair{use.regions[0], -1}
+                                : std::pair{std::min(use.regions[0], use.regions[1]), std::max(use.regions[0], use.regions[1])};
+    auto& flat = surfaces[group];
+    flat.insert(flat.end(), use.nodes.begin(), use.nodes.end());
+  }
+  std::map<int, std::vector<int>> bounds;  // region -> its surfaces
+  int surface_tag = 0;
+  for (const auto& [group, flat] : surfaces) {
+    gmsh::model::addDiscreteEntity(2, ++surface_tag);
+    if (surface_tag == 1) gmsh::model::mesh::addNodes(2, 1, node_tags, coords);
+    gmsh::model::mesh::addElementsByType(surface_tag, kTriangle3, {}, flat);
+    bounds[group.first].push_back(surface_tag);
+    if (group.second >= 0) bounds[group.second].push_back(surface_tag);
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const int volume = static_cast<int>(r) + 1;
+    gmsh::model::addDiscreteEntity(3, volume, bounds[static_cast<int>(r)]);
+    gmsh::model::addPhysicalGroup(3, {volume}, volume);
+    gmsh::model::setPhysicalName(3, volume, regions[r].surface.name);
+  }
+}
+
 }  // namespace
 
 TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOptions& options) {
@@ -101,9 +165,23 @@ TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOption
   const std::string ext = lower_extension(file);
   const bool stl = ext == ".stl", step = ext == ".step" || ext == ".stp" || ext == ".brep",
              msh = ext == ".msh";
+  if (ext == ".3mf") {
+    // A 3MF carries its own unit; its regions come back in metres.
+    const auto regions = io::read_3mf_regions(file);
+    if (regions.empty()) throw file_error(file, "contains no mesh object");
+    return guard_gmsh(file.string(), [&] {
+      GmshSession session("imported");
+      volumes_from_region_surfaces(file, regions);
+      generate_quadratic_tets(options.mesh_size, options.mesh_size / 10);
+      session.throw_if_failed(file.string() + ": meshing");
+      TetMesh mesh = tet_mesh_from_gmsh("body");
+      if (mesh.tets.empty()) throw file_error(file, "meshing made no tetrahedra");
+      return mesh;
+    });
+  }
   if (!stl && !step && !msh)
     throw file_error(
-        file, "unknown mesh format '" + ext + "' (expected .stl, .step, .stp, .brep or .msh)");
+        file, "unknown mesh format '" + ext + "' (expected .stl, .step, .stp, .brep, .msh or .3mf)");
 
   return guard_gmsh(file.string(),
                     [&] { return import_checked_file(file, options, stl, step, msh); });

@@ -14,8 +14,10 @@ struct MeshFileOptions {
   double mesh_size = 0.002;  // m, for STL and STEP; a .msh keeps its own elements
 };
 
-// .stl (ASCII or binary), .step/.stp, .brep, .msh. Regions: a .msh file's named volume physical
-// groups, else "body". Node sets: a .msh file's named lower-dimensional physical groups.
+// .stl (ASCII or binary), .step/.stp, .brep, .msh, .3mf. Regions: a .msh file's named volume
+// physical groups, a .3mf file's mesh objects by name (as `nibrig export` writes a stylus: their
+// triangles kept, a face two objects share their interface; its own unit, unit_scale unused),
+// else "body". Node sets: a .msh file's named lower-dimensional physical groups.
 // Throws std::runtime_error naming the file and what is wrong: missing or unreadable, unknown
 // extension, no surface, an open or non-manifold STL (with the offending edge), no tetrahedra.
 TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOptions& options);

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "model/mechanics/tet10_element.hpp"
+#include "tests/model/mechanics/mesh_volume.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -17,20 +18,7 @@ namespace {
 using std::numbers::pi;
 using ::testing::HasSubstr;
 
-// Volume from the corner nodes: exact for straight-sided elements; on curved faces the chords cut
-// a sliver whose relative size shrinks with the element size (below 0.5 % at the sizes used here).
-double corner_volume(const TetMesh& mesh, int region = -1) {
-  double volume = 0;
-  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
-    if (region >= 0 && mesh.tet_region[e] != region) continue;
-    const auto& t = mesh.tets[e];
-    const Eigen::Vector3d a = mesh.nodes.col(t[0]);
-    volume +=
-        (mesh.nodes.col(t[1]) - a).cross(mesh.nodes.col(t[2]) - a).dot(mesh.nodes.col(t[3]) - a) /
-        6;
-  }
-  return volume;
-}
+using testing::corner_volume;
 
 // Volume of the isoparametric elements: the total of the unit-density consistent mass.
 double quadratic_volume(const TetMesh& mesh, int region = -1) {
