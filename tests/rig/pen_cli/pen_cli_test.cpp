@@ -21,7 +21,6 @@
 #include "rig/pen/pen_force_file.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/rig/pen/emulated_tablet.hpp"
-#include "tests/rig/usb/emulated_rig.hpp"
 #include "tests/support/jack_server.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -239,54 +238,6 @@ TEST_F(PenCli, CalibrateMeasuresTheCurveFromLoadsHeldAndStoresIt) {
     // the range here) off and rescales, (p - 0.01) / 0.99, which stays within 0.01 of p.
     EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);
   }
-}
-
-// The loads from the rig's normal-force sensor (the pen pressed on it) instead of a scale: the rig's
-// emulated controller calibrated first as a user would (`rig calibrate`), then each hold's load is
-// what its frames read while the pen holds.
-TEST_F(PenCli, CalibrateOnTheRigTakesEachLoadFromItsForceSensor) {
-  usb::testing::EmulatedRig rig(testbed_, usb::testing::EmulatedRigConfig{"NIB-PEN1", 2});
-  rig.place_on_arm(0.0, 0.0);
-  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--zero", "--yes"}), 0);
-  rig.place_on_arm(2.0, 0.0);
-  ASSERT_EQ(test::run_cli({"rig", "calibrate", "--normal-weight", "2N", "--yes"}), 0);
-  rig.place_on_arm(0.0, 0.0);
-
-  CalibrateSession session("calibrate_rig", {"--name", "rig pen", "--rig", "--holds", "3"}, "hold 1 of 3");
-  ASSERT_TRUE(session.asked()) << "the command never asked for the first hold";
-  const double loads_n[] = {0.8, 1.9, 3.6};
-  const double pressures[] = {0.18, 0.40, 0.72};
-  tablet_->proximity_in(pen_clock_now_s(), 60.0, 40.0);
-  const char* next[] = {"hold 2 of 3", "hold 3 of 3", "pressure curve"};
-  // The second hold first pressed harder on the sensor 0.3 s before Enter (the pen's pressure
-  // steady): the rig's window mixes 1.9 and 2.6 N, an sd of 15 %, and the hold is refused.
-  rig.place_on_arm(loads_n[0], 0.0);
-  hold(pressures[0], 0.8);
-  ASSERT_TRUE(session.enter_until(next[0], [&] { hold(pressures[0], 0.8); })) << "hold 1 never taken";
-  rig.place_on_arm(loads_n[1], 0.0);
-  hold(pressures[1], 0.5);
-  rig.place_on_arm(2.6, 0.0);
-  hold(pressures[1], 0.3);
-  const auto again = [&] {
-    rig.place_on_arm(loads_n[1], 0.0);
-    hold(pressures[1], 0.8);
-  };
-  ASSERT_TRUE(session.enter_until(next[1], again)) << "hold 2 never taken";
-  EXPECT_GE(session.count("the rig's load was not steady"), 1u);
-  rig.place_on_arm(loads_n[2], 0.0);
-  hold(pressures[2], 0.8);
-  ASSERT_TRUE(session.enter_until(next[2], [&] { hold(pressures[2], 0.8); })) << "hold 3 never taken";
-  std::string said;
-  ASSERT_EQ(session.finish(said), 0) << said;
-  const auto calibration = session.stored("rig_pen.json");
-  const auto& points = calibration.curve.points();
-  ASSERT_EQ(points.size(), 4u);
-  for (int i = 0; i < 3; ++i) {
-    // The frames' force: the calibrated bridge, its factor sent as a float (7 digits).
-    EXPECT_NEAR(points[i + 1].force_n, loads_n[i], loads_n[i] * 1e-5);
-    EXPECT_NEAR(points[i + 1].pressure, pressures[i], 0.01);  // as the kitchen-scale test says
-  }
-  EXPECT_NE(calibration.method.find("rig"), std::string::npos) << calibration.method;
 }
 
 }  // namespace
