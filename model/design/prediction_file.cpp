@@ -101,20 +101,33 @@ DescriptorErrorCovariance read_descriptor_errors(const nlohmann::json& j,
 
 }  // namespace
 
-ReadPrediction read_prediction(const std::filesystem::path& file,
-                               const measure::ThresholdCurve& threshold) {
+namespace {
+
+DesignPoint predicted_point(const nlohmann::json& j, const std::filesystem::path& file) {
   namespace fields = io::json_fields;
-  const nlohmann::json j = fields::parse_file(file);
   fields::as_object(j, file, "");
   if (fields::string_member(j, "kind", file, "") != "prediction")
     throw io::FormatError(file, fields::place("kind"),
                           "expected \"prediction\" (a `nibrig predict` file)");
-  PredictedTool tool;
   try {
-    tool.point = parse_design_point(fields::string_member(j, "tool", file, ""));
+    return parse_design_point(fields::string_member(j, "tool", file, ""));
   } catch (const std::invalid_argument& e) {
     throw io::FormatError(file, fields::place("tool"), e.what());
   }
+}
+
+}  // namespace
+
+DesignPoint read_prediction_point(const std::filesystem::path& file) {
+  return predicted_point(io::json_fields::parse_file(file), file);
+}
+
+ReadPrediction read_prediction(const std::filesystem::path& file,
+                               const measure::ThresholdCurve& threshold) {
+  namespace fields = io::json_fields;
+  const nlohmann::json j = fields::parse_file(file);
+  PredictedTool tool;
+  tool.point = predicted_point(j, file);
   tool.surface = fields::string_member(j, "surface", file, "");
   tool.mu = fields::number_member(j, "mu", file, "");
   tool.spectrum = io::velocity_spectrum_from_json(j, file, "");

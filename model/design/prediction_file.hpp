@@ -36,4 +36,7 @@ struct ReadPrediction {
 ReadPrediction read_prediction(const std::filesystem::path& file,
                                const measure::ThresholdCurve& threshold);
 
+// Only the design a prediction file predicted, with the same refusals.
+DesignPoint read_prediction_point(const std::filesystem::path& file);
+
 }  // namespace nibrig::model::design

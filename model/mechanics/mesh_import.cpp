@@ -146,11 +146,15 @@ void volumes_from_region_surfaces(const std::filesystem::path& file, const std::
     bounds[group.first].push_back(surface_tag);
     if (group.second >= 0) bounds[group.second].push_back(surface_tag);
   }
+  std::vector<int> volumes;
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    const int volume = static_cast<int>(r) + 1;
-    gmsh::model::addDiscreteEntity(3, volume, bounds[static_cast<int>(r)]);
-    gmsh::model::addPhysicalGroup(3, {volume}, volume);
-    gmsh::model::setPhysicalName(3, volume, regions[r].surface.name);
+    const int loop = gmsh::model::geo::addSurfaceLoop(bounds[static_cast<int>(r)]);
+    volumes.push_back(gmsh::model::geo::addVolume({loop}));
+  }
+  gmsh::model::geo::synchronize();
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    gmsh::model::addPhysicalGroup(3, {volumes[r]}, volumes[r]);
+    gmsh::model::setPhysicalName(3, volumes[r], regions[r].surface.name);
   }
 }
 

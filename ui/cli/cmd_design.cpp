@@ -10,6 +10,7 @@
 
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_file.hpp"
+#include "model/design/stylus_export.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
 #include "model/io/bundled_assets.hpp"
@@ -22,6 +23,7 @@
 #include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
+#include "ui/cli/stylus_report.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -41,9 +43,11 @@ struct DesignOptions {
   int runners_up = 4;
   std::filesystem::path output = "design_search.json";
   std::filesystem::path plot;
+  std::filesystem::path export_folder;  // the optimum's stylus files
 };
 
 void run_design(const DesignOptions& o) {
+  if (!o.export_folder.empty()) design::check_stylus_folder(o.export_folder);  // before minutes of search
   const auto catalog_path =
       o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;
   const space::SpaceFile space_file = space::read_space_file(o.space_file);
@@ -149,6 +153,10 @@ void run_design(const DesignOptions& o) {
                       ends, o.surface, o.plot);
     say_wrote(o.plot);
   }
+  if (!o.export_folder.empty()) {
+    const auto print = design::stylus_print(inputs->setup, best.point);
+    print_stylus_files(print, design::write_stylus_files(o.export_folder / "stylus.3mf", print));
+  }
 }
 
 }  // namespace
@@ -190,6 +198,8 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(file_to_write());
   cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)")
       ->check(file_to_write());
+  cmd->add_option("--export", o->export_folder,
+                  "Folder to write the optimum's stylus into: stylus.3mf and an STL per region");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_design(*o);

@@ -21,6 +21,8 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_forcing_holdout_command(CLI::App* forcing, std::shared_ptr<const GlobalOptions> global);
 void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `export`: a design's stylus as 3MF and STL files.
+void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `pen calibrate`: a pen's pressure curve, stored by name.

@@ -13,9 +13,11 @@
 
 #include "model/design/design_point.hpp"
 #include "model/io/catalog_file.hpp"
+#include "model/io/stylus_3mf.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"
+#include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -192,6 +194,31 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_GE(search["runners_up"].size(), 1u);
   EXPECT_TRUE(is_png(out / "path.png"));
   EXPECT_NE(text.find("placed from its descriptors"), std::string::npos) << text;
+
+  // The acceptance command (with this test's coarse FEM and its fitted model): the optimum's
+  // stylus written into a new folder, one STL per region beside the 3MF, which PrusaSlicer slices.
+  std::vector<std::string> exported{"design", "--target", "cryon/office", "--surface", "protector", "--space",
+                                    space_file.string(), "--between", "vero:1,tip=1mm", "DM85:1,tip=4mm",
+                                    "--export", (out / "printed").string(), "--forcing",
+                                    (out / "forcing.json").string(), "-o", (out / "search_printed.json").string()};
+  exported.insert(exported.end(), coarse.begin(), coarse.end());
+  std::filesystem::remove_all(out / "printed");
+  ::testing::internal::CaptureStdout();
+  const int export_code = run_cli(exported);
+  const std::string export_text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(export_code, 0) << export_text;
+  const auto regions = model::io::read_3mf_regions(out / "printed" / "stylus.3mf");
+  ASSERT_FALSE(regions.empty());
+  for (const auto& region : regions)
+    EXPECT_TRUE(std::filesystem::is_regular_file(out / "printed" / ("stylus-" + region.surface.name + ".stl")))
+        << region.surface.name;
+  const auto sliced = nibrig::test::run_program({"prusa-slicer", "--loglevel", "2", "--export-gcode",
+                                                  (out / "printed" / "stylus.3mf").string(), "-o",
+                                                  (out / "printed" / "stylus.gcode").string()},
+                                                 out);
+  EXPECT_EQ(sliced.exit_code, 0) << sliced.output;
+  EXPECT_EQ(sliced.output.find("warning"), std::string::npos) << sliced.output;
+  EXPECT_GT(std::filesystem::file_size(out / "printed" / "stylus.gcode"), 0u);
 
   // A predicted tool is placed in the space beside the catalog's (Fig. 15), hollow, "predicted".
   std::vector<std::string> predict{"predict",

@@ -1,0 +1,136 @@
+#include "model/design/stylus_export.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "model/design/mixed_design.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/io/stl_writer.hpp"
+#include "model/io/stylus_3mf.hpp"
+#include "model/mechanics/region_surface.hpp"
+
+namespace nibrig::model::design {
+namespace {
+
+// PrusaSlicer's command line prints on a 200 × 200 mm bed unless a printer profile says otherwise.
+constexpr double kBedCentreM = 0.100;
+
+std::array<std::uint8_t, 3> display_colour(const StylusRegion& region) {
+  // Clear VeroClear, the soft Digital Materials darker the softer: what the prints look like.
+  double soft = 0.0;
+  for (const auto& share : region.mix)
+    soft += share.fraction * (share.material == "DM85" ? 1.0 : share.material == "DM95" ? 0.6 : 0.0);
+  const auto level = static_cast<std::uint8_t>(std::lround(220 - 160 * soft));
+  return {level, level, static_cast<std::uint8_t>(std::min(255.0, level + 20.0))};
+}
+
+}  // namespace
+
+StylusPrint stylus_print(const PredictionSetup& setup, const DesignPoint& point) {
+  MixedDesign mixed = [&] {
+    try {
+      return mixed_design(point, setup.template_design, setup.materials);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("design " + label(point) + ": " + e.what());
+    }
+  }();
+  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
+  if (setup.modes > 0) mixed.design.modes = setup.modes;
+  const mechanics::TetMesh mesh = mechanics::mesh_design(mixed.design);
+  StylusPrint print;
+  print.point = point;
+  print.design_name = mixed.design.name;
+  for (auto& surface : mechanics::region_surfaces(mesh)) {
+    StylusRegion region;
+    region.material = mechanics::material_of_region(mixed.design, surface.name);
+    region.surface = std::move(surface);
+    const bool is_mix = std::none_of(setup.materials.materials().begin(), setup.materials.materials().end(),
+                                     [&](const auto& m) { return m.name == region.material; });
+    if (is_mix)
+      region.mix = point.mix;
+    else
+      region.mix = {{catalog_material_name(region.material), 1.0}};
+    print.regions.push_back(std::move(region));
+  }
+  print.design = std::move(mixed.design);
+  print.materials = std::move(mixed.materials);
+  return print;
+}
+
+StylusPrint stylus_print(const forcing::ForcingInputOptions& inputs, const DesignPoint& point) {
+  PredictionSetup setup;
+  setup.materials = mechanics::read_material_table(io::or_default(inputs.materials, io::default_materials));
+  setup.template_design =
+      mechanics::read_design(io::or_default(inputs.design_template, io::default_stylus_design), setup.materials);
+  setup.mesh_size = inputs.mesh_size;
+  setup.modes = inputs.modes;
+  return stylus_print(setup, point);
+}
+
+std::string printer_material(const StylusRegion& region) {
+  if (region.mix.size() == 1) return region.material;
+  std::string out;
+  for (const auto& share : region.mix) {
+    char part[64];
+    std::snprintf(part, sizeof part, "%s%s %.0f %%", out.empty() ? "" : " + ", share.material.c_str(),
+                  100.0 * share.fraction);
+    out += part;
+  }
+  return out + " (digital material)";
+}
+
+StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
+  StylusFiles files{three_mf, {}};
+  for (const auto& region : print.regions)
+    files.stls.push_back(three_mf.parent_path() / (three_mf.stem().string() + "-" + region.surface.name + ".stl"));
+  return files;
+}
+
+void check_stylus_folder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::path existing = folder.empty() ? std::filesystem::path(".") : folder;
+  while (!std::filesystem::exists(existing, error) && existing != ".")
+    existing = existing.has_parent_path() && existing != existing.parent_path() ? existing.parent_path()
+                                                                               : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(existing, error))
+    throw std::runtime_error(folder.string() + ": " + existing.string() + " is not a folder to write the stylus into");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw std::runtime_error(folder.string() + ": " + (existing == folder ? std::string("this folder") : existing.string()) +
+                             " cannot be written (" + std::strerror(errno) + ")");
+}
+
+StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
+  const auto folder = three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path();
+  check_stylus_folder(folder);
+  std::filesystem::create_directories(folder);
+  const StylusFiles files = stylus_files(three_mf, print);
+
+  // Lying along x, on the bed (lowest point at z = 0), centred on it.
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const auto& region : print.regions)
+    for (const auto& v : region.surface.vertices)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], v[static_cast<std::size_t>(k)]);
+        hi[k] = std::max(hi[k], v[static_cast<std::size_t>(k)]);
+      }
+  io::ThreeMfPart part;
+  part.name = "nibrig stylus " + to_string(print.point);
+  part.placement_m = {kBedCentreM - 0.5 * (lo[0] + hi[0]), kBedCentreM - 0.5 * (lo[1] + hi[1]), -lo[2]};
+  part.metadata = {{"Title", part.name},
+                   {"Application", "nibrig"},
+                   {"Description", "design " + to_string(print.point) + " (" + print.design_name + "), meshed at " +
+                                       std::to_string(1e3 * print.design.mesh_size) + " mm"}};
+  for (const auto& region : print.regions)
+    part.regions.push_back({region.surface, printer_material(region), display_colour(region)});
+  io::write_3mf(files.three_mf, part);
+  for (std::size_t i = 0; i < print.regions.size(); ++i) io::write_binary_stl(files.stls[i], print.regions[i].surface);
+  return files;
+}
+
+}  // namespace nibrig::model::design

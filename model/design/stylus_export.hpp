@@ -1,0 +1,66 @@
+// A design point made printable (the paper's "fabrication"): the stylus its prediction simulated,
+// region by region exactly as the FEM meshed it (mechanics/region_surface.hpp), each region with
+// what the printer loads for it — a material of the table, or for a mixed tip the fractions a
+// PolyJet printer's digital-material mixing takes — written as one 3MF part (lib3mf) and an STL per
+// region.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "model/design/design_point.hpp"
+#include "model/design/predicted_tool.hpp"
+#include "model/forcing/forcing_inputs.hpp"
+#include "model/io/surface_mesh.hpp"
+
+namespace nibrig::model::design {
+
+struct StylusRegion {
+  io::SurfaceMesh surface;          // metres, the stylus along +x from its back end
+  std::string material;             // the material table's name (a mix: its rule-of-mixtures entry)
+  std::vector<MaterialShare> mix;   // what the printer deposits: catalog materials and fractions
+};
+
+struct StylusPrint {
+  DesignPoint point;
+  std::string design_name;
+  mechanics::Design design;  // what the FEM solved: shape, regions' materials, mesh size, modes
+  mechanics::MaterialTable materials;
+  std::vector<StylusRegion> regions;  // in the mesh's region order ("body", then "tip")
+};
+
+// The stylus of `point` as a prediction with `setup` meshes it (its template, materials, mesh size
+// and modes). Throws std::invalid_argument naming the point: a material the printed tools do not
+// have (outside the material table), or a tip the stylus's geometry cannot take (the geometry's
+// own message: the tip wider than the body, or not a positive length).
+StylusPrint stylus_print(const PredictionSetup& setup, const DesignPoint& point);
+
+// The same with the template and materials `inputs` names (the bundled ones by default), at its
+// mesh size and modes: the stylus `nibrig predict` with those options solves. Throws what reading
+// them throws, naming the file.
+StylusPrint stylus_print(const forcing::ForcingInputOptions& inputs, const DesignPoint& point);
+
+// The name a printer operator reads for a region's material: "VeroClear-Piovarci2018", or a mix
+// as "DM85 62 % + vero 38 % (digital material)".
+std::string printer_material(const StylusRegion& region);
+
+struct StylusFiles {
+  std::filesystem::path three_mf;
+  std::vector<std::filesystem::path> stls;  // <stem>-<region>.stl beside it, in region order
+};
+
+// Refuses (std::runtime_error naming it) a folder the files cannot go into: one that exists and
+// cannot be written, or a new one whose nearest existing parent cannot. Nothing is made: a long
+// search checks its --export folder with this before it starts.
+void check_stylus_folder(const std::filesystem::path& folder);
+
+// Where write_stylus_files puts everything for a 3MF named `three_mf`.
+StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print);
+
+// The 3MF (one part, an object per region with its material, placed lying along x on the
+// PrusaSlicer command line's default 200 × 200 mm bed) and the STLs. The folder is checked first
+// (check_stylus_folder) and made when new; each file is then written atomically. Throws std::runtime_error naming the file.
+StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print);
+
+}  // namespace nibrig::model::design
