@@ -21,7 +21,7 @@ packages=(
   librtaudio-dev libasound2-dev jackd2 libjack-jackd2-dev
   libusb-1.0-0-dev libumockdev-dev  # the rig's USB controller; its tests emulate the device with umockdev
   libinput-dev libudev-dev libwacom-dev  # pen tablets: read through libinput, named by libwacom
-  lib3mf-dev libzip-dev  # a design's stylus exported as 3MF (lib3mf; its pkg-config file links libzip)
+  lib3mf-dev libzip-dev  # a design's stylus exported as 3MF with lib3mf, whose pkg-config file links libzip
   avrdude  # `nibrig rig flash` writes the controller's firmware with it; its tests run it on a pty
   libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
   libimgui-dev libglfw3-dev  # the panel: ImGui 1.86 + GLFW + OpenGL 3
