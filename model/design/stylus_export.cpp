@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "model/design/mixed_design.hpp"
+#include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/stl_writer.hpp"
 #include "model/io/stylus_3mf.hpp"
@@ -86,10 +87,40 @@ std::string printer_material(const StylusRegion& region) {
 }
 
 StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
-  StylusFiles files{three_mf, {}};
+  StylusFiles files{three_mf, {}, three_mf.parent_path() / (three_mf.stem().string() + ".json")};
   for (const auto& region : print.regions)
     files.stls.push_back(three_mf.parent_path() / (three_mf.stem().string() + "-" + region.surface.name + ".stl"));
   return files;
+}
+
+nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& files) {
+  nlohmann::json j;
+  j["kind"] = "stylus_recipe";
+  j["design"] = to_string(print.point);
+  j["design_name"] = print.design_name;
+  j["mesh_size_mm"] = print.design.mesh_size * 1e3;
+  j["regions"] = nlohmann::json::array();
+  for (const auto& region : print.regions) {
+    nlohmann::json r;
+    r["name"] = region.surface.name;
+    r["material"] = region.material;
+    r["printer_material"] = printer_material(region);
+    r["mix"] = nlohmann::json::array();
+    for (const auto& share : region.mix) r["mix"].push_back({{"material", share.material}, {"fraction", share.fraction}});
+    r["triangles"] = region.surface.triangles.size();
+    r["volume_mm3"] = mechanics::enclosed_volume(region.surface) * 1e9;
+    j["regions"].push_back(r);
+  }
+  j["substitutes"] = nlohmann::json::array();
+  for (const auto& s : print.substitutes)
+    j["substitutes"].push_back({{"design", to_string(s.point)},
+                                {"cost", s.cost},
+                                {"cost_sd", s.cost_sd},
+                                {"to_target", s.to_target},
+                                {"to_target_sd", s.to_target_sd}});
+  j["files"]["three_mf"] = files.three_mf.filename().string();
+  for (const auto& stl : files.stls) j["files"]["stls"].push_back(stl.filename().string());
+  return j;
 }
 
 void check_stylus_folder(const std::filesystem::path& folder) {
@@ -130,6 +161,7 @@ StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const Styl
     part.regions.push_back({region.surface, printer_material(region), display_colour(region)});
   io::write_3mf(files.three_mf, part);
   for (std::size_t i = 0; i < print.regions.size(); ++i) io::write_binary_stl(files.stls[i], print.regions[i].surface);
+  io::write_file_atomically(files.recipe, stylus_recipe_json(print, files).dump(2) + "\n");
   return files;
 }
 

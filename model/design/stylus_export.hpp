@@ -6,11 +6,13 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "model/design/design_point.hpp"
 #include "model/design/predicted_tool.hpp"
+#include "model/design/single_material_substitute.hpp"
 #include "model/forcing/forcing_inputs.hpp"
 #include "model/io/surface_mesh.hpp"
 
@@ -28,6 +30,9 @@ struct StylusPrint {
   mechanics::Design design;  // what the FEM solved: shape, regions' materials, mesh size, modes
   mechanics::MaterialTable materials;
   std::vector<StylusRegion> regions;  // in the mesh's region order ("body", then "tip")
+  // For a printer that cannot mix: filled by a face that has a space to place them in (design
+  // --export); written into the recipe.
+  std::vector<Substitute> substitutes;
 };
 
 // The stylus of `point` as a prediction with `setup` meshes it (its template, materials, mesh size
@@ -48,7 +53,14 @@ std::string printer_material(const StylusRegion& region);
 struct StylusFiles {
   std::filesystem::path three_mf;
   std::vector<std::filesystem::path> stls;  // <stem>-<region>.stl beside it, in region order
+  std::filesystem::path recipe;             // <stem>.json beside it
 };
+
+// The recipe, for people and scripts (FORMATS.md "Stylus recipe"): kind "stylus_recipe", design,
+// design_name, mesh_size_mm, regions [{name, material, printer_material, mix [{material,
+// fraction}], triangles, volume_mm3}], substitutes [{design, cost, cost_sd, to_target,
+// to_target_sd}], files {three_mf, stls}.
+nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& files);
 
 // Refuses (std::runtime_error naming it) a folder the files cannot go into: one that exists and
 // cannot be written, or a new one whose nearest existing parent cannot. Nothing is made: a long
@@ -59,7 +71,7 @@ void check_stylus_folder(const std::filesystem::path& folder);
 StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print);
 
 // The 3MF (one part, an object per region with its material, placed lying along x on the
-// PrusaSlicer command line's default 200 × 200 mm bed) and the STLs. The folder is checked first
+// PrusaSlicer command line's default 200 × 200 mm bed), the STLs and the recipe. The folder is checked first
 // (check_stylus_folder) and made when new; each file is then written atomically. Throws std::runtime_error naming the file.
 StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print);
 

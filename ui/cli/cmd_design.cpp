@@ -154,7 +154,14 @@ void run_design(const DesignOptions& o) {
     say_wrote(o.plot);
   }
   if (!o.export_folder.empty()) {
-    const auto print = design::stylus_print(inputs->setup, best.point);
+    auto print = design::stylus_print(inputs->setup, best.point);
+    // A printer that cannot mix prints one material: each alone at the optimum's tip, placed.
+    print.substitutes = design::single_material_substitutes(
+        best.point, design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, best.placement),
+        target);
+    for (const auto& s : print.substitutes)
+      std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the optimum ({:.3f} ± {:.3f} from the target)\n",
+                               design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd);
     print_stylus_files(print, design::write_stylus_files(o.export_folder / "stylus.3mf", print));
   }
 }

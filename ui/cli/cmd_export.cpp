@@ -28,6 +28,7 @@ void print_stylus_files(const design::StylusPrint& print, const design::StylusFi
                              model::mechanics::enclosed_volume(region.surface) * 1e9);
   say_wrote(files.three_mf);
   for (const auto& stl : files.stls) say_wrote(stl);
+  say_wrote(files.recipe);
 }
 
 namespace {
@@ -59,7 +60,7 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "The stylus is the one `nibrig predict` simulates for the design (same template, materials,\n"
       "mesh size): each material region's surface as the FEM meshed it. The 3MF holds one part\n"
       "with an object per region and its material (a mixed tip: the fractions to mix); an STL per\n"
-      "region is written beside it as <name>-<region>.stl.");
+      "region is written beside it as <name>-<region>.stl, and the recipe as <name>.json.");
   cmd->add_option("DESIGN", o->design, "A design point (DM85:0.62,vero:0.38,tip=2.7mm) or a prediction file")
       ->required();
   cmd->add_option("-o,--output", o->output, "The 3MF file to write")->capture_default_str()->check(file_to_write());

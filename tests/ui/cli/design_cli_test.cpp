@@ -14,6 +14,7 @@
 #include "model/design/design_point.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/io/stylus_3mf.hpp"
+#include "model/mechanics/region_surface.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"
@@ -219,6 +220,25 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_EQ(sliced.exit_code, 0) << sliced.output;
   EXPECT_EQ(sliced.output.find("warning"), std::string::npos) << sliced.output;
   EXPECT_GT(std::filesystem::file_size(out / "printed" / "stylus.gcode"), 0u);
+  // The recipe: the regions' volumes as the 3MF holds them, and for a mixed optimum each material
+  // alone at its tip, placed, with the distances the search's own draws give (finite, at least 0).
+  const auto recipe = read_json(out / "printed" / "stylus.json");
+  const auto optimum_printed =
+      model::design::parse_design_point(read_json(out / "search_printed.json")["optimum"]["design"].get<std::string>());
+  EXPECT_EQ(recipe["design"].get<std::string>(), model::design::to_string(optimum_printed));
+  ASSERT_EQ(recipe["regions"].size(), regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const double volume = model::mechanics::enclosed_volume(regions[r].surface) * 1e9;
+    EXPECT_NEAR(recipe["regions"][r]["volume_mm3"].get<double>(), volume, 1e-5 * volume);  // the 3MF's f32 mm
+  }
+  const std::size_t materials = optimum_printed.mix.size();
+  ASSERT_EQ(recipe["substitutes"].size(), materials > 1 ? materials : 0u);
+  for (const auto& sub : recipe["substitutes"]) {
+    EXPECT_GE(sub["cost"].get<double>(), 0.0);
+    EXPECT_GE(sub["to_target"].get<double>(), 0.0);
+    EXPECT_EQ(model::design::parse_design_point(sub["design"].get<std::string>()).tip_diameter_m,
+              optimum_printed.tip_diameter_m);
+  }
 
   // A predicted tool is placed in the space beside the catalog's (Fig. 15), hollow, "predicted".
   std::vector<std::string> predict{"predict",

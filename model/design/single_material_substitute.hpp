@@ -1,0 +1,26 @@
+// For a printer that cannot mix materials: each material of a mixed design printed alone at the
+// same tip, placed in the perceptual space, and how far it falls from the mix (what substituting
+// it costs, as a distance in the space) and from the target the mix was searched for.
+#pragma once
+
+#include <vector>
+
+#include "model/design/design_search.hpp"
+
+namespace nibrig::model::design {
+
+struct Substitute {
+  DesignPoint point;                        // one material, the mix's tip
+  double cost = 0.0, cost_sd = 0.0;         // distance of its placement from the mix's
+  double to_target = 0.0, to_target_sd = 0.0;
+};
+
+// `from_mix` predicts a design and measures its distance to the mix's placement
+// (distance_to_target(setup, surface, map, mix placement)); each substitute is predicted once and
+// its distance to `target` drawn with `samples` draws of a generator seeded with `seed`, as the
+// search draws its own. Nearest to the mix first; empty for a design of one material.
+std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
+                                                    const space::Placement& target, int samples = 2000,
+                                                    std::uint64_t seed = 1);
+
+}  // namespace nibrig::model::design
