@@ -10,6 +10,7 @@
 #include "model/design/default_forcing.hpp"
 #include "model/design/design_grid_file.hpp"
 #include "model/design/prediction_file.hpp"
+#include "model/design/stylus_export.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/space/bootstrap.hpp"
@@ -203,6 +204,13 @@ std::string DesignView::save_prediction(const std::filesystem::path& file) const
   } catch (const std::exception& e) {
     return e.what();
   }
+}
+
+std::function<void()> DesignView::stylus_export(const std::filesystem::path& file) const {
+  if (!predicted_ || !inputs_) return {};
+  return [file, point = predicted_->point, inputs = inputs_] {
+    design::write_stylus_files(file, design::stylus_print(inputs->setup, point));
+  };
 }
 
 std::string DesignView::open_prediction(const std::filesystem::path& file) {

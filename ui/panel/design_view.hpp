@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -84,6 +85,11 @@ class DesignView {
   // cannot be read (named with its field), a design that mixes other materials than the grid's two,
   // a tip outside the grid.
   std::string open_prediction(const std::filesystem::path& file);
+  // The design shown made printable (model/design/stylus_export.hpp: the 3MF, an STL per region
+  // and the recipe beside `file`), as work to run off the UI thread: it meshes the stylus. It holds
+  // copies of what it needs, so the view may change meanwhile; it throws what the export throws.
+  // Empty when no design is shown yet.
+  std::function<void()> stylus_export(const std::filesystem::path& file) const;
 
   // What the view shows, for tests and the status: the current prediction and its placement,
   // how long the last slider move took to a placement and a loaded sound, the last search, the

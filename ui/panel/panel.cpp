@@ -271,6 +271,18 @@ void Panel::save_design(const std::filesystem::path& file) {
   }
 }
 
+void Panel::export_stylus(const std::filesystem::path& file) {
+  auto work = design_view_->stylus_export(file);
+  if (!work) {
+    errors_.report("there is no design to export yet (the grid is not ready)");
+    return;
+  }
+  file_job("exporting the stylus", [work = std::move(work), file](JobControl&) -> Apply {
+    work();
+    return [file](Panel& p) { p.notice_ = "wrote " + file.string() + " and the STLs beside it"; };
+  });
+}
+
 void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::filesystem::path catalog,
                         std::filesystem::path forcing) {
   setup_.catalog = std::move(catalog);
@@ -382,6 +394,9 @@ void Panel::draw_menu() {
       files_.open("Open a design (a prediction file)", Mode::open, {".json"}, {}, chosen(&Panel::open_design));
     if (ImGui::MenuItem("Save design as...", nullptr, false, design_view_->predicted().has_value()))
       files_.open("Save the design (a prediction file)", Mode::save, {".json"}, {}, chosen(&Panel::save_design));
+    if (ImGui::MenuItem("Export stylus for printing...", nullptr, false, design_view_->predicted().has_value()))
+      files_.open("Export the stylus (3MF, an STL per region beside it)", Mode::save, {".3mf"}, {},
+                  chosen(&Panel::export_stylus));
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -78,6 +78,7 @@ class Panel {
   void save_forcing(const std::filesystem::path& file);
   void open_design(const std::filesystem::path& file);
   void save_design(const std::filesystem::path& file);
+  void export_stylus(const std::filesystem::path& file);
   // True while a file is being read, written or a space fitted.
   bool busy() const { return space_job_ != nullptr || file_job_ != nullptr; }
   // The last thing a file operation said ("wrote …"), shown in the status line.

@@ -10,9 +10,11 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "model/design/prediction_file.hpp"
+#include "model/io/stylus_3mf.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "playback/prepared_engine.hpp"
@@ -94,6 +96,13 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   EXPECT_EQ(read.surface, "office");
   ASSERT_TRUE(read.pairing.friction.has_value());
   EXPECT_EQ(read.pairing.friction->mu, view.predicted()->mu);
+  // The design shown, exported for printing: the stylus of that design, its recipe naming it.
+  const auto exported = view.stylus_export(dir / "stylus.3mf");
+  ASSERT_TRUE(exported);
+  exported();
+  EXPECT_FALSE(model::io::read_3mf_regions(dir / "stylus.3mf").empty());
+  std::ifstream recipe(dir / "stylus.json");
+  EXPECT_EQ(nlohmann::json::parse(recipe)["design"].get<std::string>(), model::design::to_string(shown));
   view.set_design(0.0, 2.5);
   EXPECT_EQ(view.open_prediction(saved), "");
   EXPECT_NEAR(view.predicted()->point.fraction_of("DM85"), shown.fraction_of("DM85"), 1e-6);
