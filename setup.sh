@@ -90,7 +90,7 @@ build_fuzzers() {  # libFuzzer needs clang; the readers are built again into eac
     local name
     name=$(basename "$target" .cpp)
     clang++ -std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -I"$root" -DNIBRIG_SOURCE_DIR="\"$root\"" \
-      "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib) -o "$out/$name" &
+      "$target" "$root"/model/io/*.cpp $(pkg-config --cflags --libs sndfile zlib lib3MF) -o "$out/$name" &
     pids+=($!)
   done
   for pid in "${pids[@]}"; do wait "$pid"; done

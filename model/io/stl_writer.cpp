@@ -1,5 +1,6 @@
 #include "model/io/stl_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
