@@ -121,13 +121,19 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
 
 }  // namespace
 
+MixedDesign solved_design(const PredictionSetup& setup, const DesignPoint& point) {
+  MixedDesign mixed = mixed_design(point, setup.template_design, setup.materials);
+  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
+  if (setup.modes > 0) mixed.design.modes = setup.modes;
+  return mixed;
+}
+
 SimulatedResponse simulate_response(const PredictionSetup& setup, const DesignPoint& point,
                                     const mechanics::Design* own_design) {
   require_setup(setup);
-  MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials}
-                                 : mixed_design(point, setup.template_design, setup.materials);
-  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
-  if (setup.modes > 0) mixed.design.modes = setup.modes;
+  MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials} : solved_design(setup, point);
+  if (own_design != nullptr && setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
+  if (own_design != nullptr && setup.modes > 0) mixed.design.modes = setup.modes;
   const mechanics::DesignModel built = mechanics::build_design_model(mixed.design, mixed.materials);
   SimulatedResponse response;
   response.design_name = mixed.design.name;

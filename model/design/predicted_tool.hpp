@@ -18,6 +18,7 @@
 
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_point.hpp"
+#include "model/design/mixed_design.hpp"
 #include "model/forcing/forcing_model.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/measure/descriptors.hpp"
@@ -94,6 +95,10 @@ struct SimulatedResponse {
   modal::ModalModel modal;                 // the design's modes
   std::vector<double> response_magnitude;  // |H| at the model's frequencies
 };
+// The stylus a prediction with `setup` solves for `point`: mixed_design, at the setup's mesh size
+// and modes where it gives them. What the export prints is this same design. Throws what
+// mixed_design throws.
+MixedDesign solved_design(const PredictionSetup& setup, const DesignPoint& point);
 // Throws what mixed_design and build_design_model throw.
 SimulatedResponse simulate_response(const PredictionSetup& setup, const DesignPoint& point,
                                     const mechanics::Design* own_design = nullptr);

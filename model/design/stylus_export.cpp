@@ -9,7 +9,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "model/design/mixed_design.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/stl_writer.hpp"
@@ -36,13 +35,11 @@ std::array<std::uint8_t, 3> display_colour(const StylusRegion& region) {
 StylusPrint stylus_print(const PredictionSetup& setup, const DesignPoint& point) {
   MixedDesign mixed = [&] {
     try {
-      return mixed_design(point, setup.template_design, setup.materials);
+      return solved_design(setup, point);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("design " + label(point) + ": " + e.what());
     }
   }();
-  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
-  if (setup.modes > 0) mixed.design.modes = setup.modes;
   const mechanics::TetMesh mesh = mechanics::mesh_design(mixed.design);
   StylusPrint print;
   print.point = point;
