@@ -128,11 +128,18 @@ AxesLayout layout_axes(const Style& st, double width, double height, double top,
   return out;
 }
 
+AxesLayout layout_axes(const Style& st, const Box& area, double top, const std::string& x_label,
+                       const std::string& y_label, double right_reserved, AxisRange x,
+                       AxisRange y) {
+  auto out = layout_axes(st, area.width(), area.height(), top, x_label, y_label, right_reserved, x, y);
+  out.box = Box{out.box.x0 + area.x0, out.box.y0 + area.y0, out.box.x1 + area.x0,
+                out.box.y1 + area.y0};
+  return out;
+}
+
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
                       const std::string& y_label, const Style& st) {
-  draw_axis_titles(
-      page, box, x_label, y_label, st,
-      Box{0.0, 0.0, static_cast<double>(page.width()), static_cast<double>(page.height())});
+  draw_axis_titles(page, box, x_label, y_label, st, whole_page(page));
 }
 
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
@@ -156,10 +163,18 @@ double title_room(const std::string& title, const Style& st) {
 }
 
 void draw_title(PlotPage& page, const std::string& title, const Style& st) {
+  draw_title(page, title, st, whole_page(page));
+}
+
+void draw_title(PlotPage& page, const std::string& title, const Style& st, const Box& area) {
   if (title.empty()) return;
   page.colour(black);
-  page.text(0.5 * page.width(), page.height() - st.pad - 0.7 * st.title_cap, 0.0, 0.5,
-            st.fit(title, st.title_cap, page.width() - 2 * st.pad), title);
+  page.text(0.5 * (area.x0 + area.x1), area.y1 - st.pad - 0.7 * st.title_cap, 0.0, 0.5,
+            st.fit(title, st.title_cap, area.width() - 2 * st.pad), title);
+}
+
+Box whole_page(const PlotPage& page) {
+  return Box{0.0, 0.0, static_cast<double>(page.width()), static_cast<double>(page.height())};
 }
 
 namespace {

@@ -74,15 +74,22 @@ struct AxisRange {
 AxesLayout layout_axes(const Style& st, double width, double height, double top,
                        const std::string& x_label, const std::string& y_label,
                        double right_reserved, AxisRange x, AxisRange y);
+// The same inside `area` of a page (a panel of several, a part of a print sheet).
+AxesLayout layout_axes(const Style& st, const Box& area, double top, const std::string& x_label,
+                       const std::string& y_label, double right_reserved, AxisRange x,
+                       AxisRange y);
 // Axis titles: centred under the box, and turned to read upwards at the left edge of the image —
 // or of `area`, the part of the image the plot owns (a panel of several).
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
                       const std::string& y_label, const Style& st);
 void draw_axis_titles(PlotPage& page, const Box& box, const std::string& x_label,
                       const std::string& y_label, const Style& st, const Box& area);
-// The figure title, centred on the image at its top.
+// The figure title, centred on the image at its top, or on `area` at its top (a figure drawn in a
+// part of a page, e.g. a print sheet's).
 double title_room(const std::string& title, const Style& st);
 void draw_title(PlotPage& page, const std::string& title, const Style& st);
+void draw_title(PlotPage& page, const std::string& title, const Style& st, const Box& area);
+Box whole_page(const PlotPage& page);
 
 // How a line is drawn: its width and, if not solid, alternating dash and gap lengths (px).
 struct LineStyle {

@@ -138,6 +138,24 @@ struct ScatterPlot {
   ImageSize size{};
 };
 
+// A page to print beside a fabricated object: a title across the top, a column of text on the
+// left (headings and the lines under them, e.g. a stylus's recipe) and the figures on the right,
+// the line plot above the scatter plot when there are both. Each figure keeps its own title and
+// legend; the page's text sizes are the figures'. A line too long for the column wraps at its
+// spaces (a word too long alone is drawn smaller), and the column's text shrinks as a whole when
+// there are too many rows for its height.
+struct SheetLine {
+  std::string text;
+  bool heading = false;
+};
+struct PrintSheet {
+  std::string title;
+  std::vector<SheetLine> lines;
+  std::optional<LinePlot> line_plot;
+  std::optional<ScatterPlot> scatter_plot;
+  ImageSize size{2000, 1250};
+};
+
 // Each writes png through a temporary file in the same folder and a rename, so the path holds
 // either its previous content or the complete new figure. Throws std::invalid_argument, naming the
 // figure's title and the faulty field, for empty, mismatched or non-finite input (and for a
@@ -149,6 +167,7 @@ void write_interval_chart(const IntervalChart& chart, const std::filesystem::pat
 void write_line_plot(const LinePlot& plot, const std::filesystem::path& png);
 void write_line_panels(const LinePanels& figure, const std::filesystem::path& png);
 void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png);
+void write_print_sheet(const PrintSheet& sheet, const std::filesystem::path& png);
 void write_comparison_spectrograms(const ComparisonSpectrograms& figure,
                                    const std::filesystem::path& png);
 

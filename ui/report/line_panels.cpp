@@ -68,10 +68,7 @@ void write_line_panels(const LinePanels& figure, const std::filesystem::path& pn
     const std::string y_label = column == 0 ? panel.y_label : std::string();
     const std::string x_label = k + columns >= n ? panel.x_label : std::string();
     const double panel_title_room = panel.title.empty() ? 0.0 : 1.8 * st.label_cap;
-    auto axes = layout_axes(st, cell.width(), cell.height(), panel_title_room, x_label, y_label,
-                            st.pad, xr, yr);
-    axes.box = Box{axes.box.x0 + cell.x0, axes.box.y0 + cell.y0, axes.box.x1 + cell.x0,
-                   axes.box.y1 + cell.y0};
+    const auto axes = layout_axes(st, cell, panel_title_room, x_label, y_label, st.pad, xr, yr);
     const Mapping m{axes.box, xr.lo, xr.hi, yr.lo, yr.hi};
 
     draw_grid(page, m, &axes.x, &axes.y, st);

@@ -40,4 +40,8 @@ std::vector<LegendEntry> line_legend(const LinePlot& plot);
 // Bands first (so that none hides a curve), then the curves with their markers and error bars.
 void draw_curves(PlotPage& page, const LinePlot& plot, const Mapping& m, const Style& st);
 
+// A whole line plot (its title, legend, axes and curves) inside `area` of the page; the plot has
+// passed validate_line_series. write_line_plot draws it on a page of its own.
+void draw_line_plot(PlotPage& page, const LinePlot& plot, const Box& area, const Style& st);
+
 }  // namespace nibrig::ui::report::detail

@@ -81,10 +81,15 @@ std::pair<double, double> ellipse_half_extents(const Ellipse& e) {
 }
 
 ScatterFrame layout_scatter(const ScatterPlot& plot) {
+  return layout_scatter(plot, Style::for_size(plot.size),
+                        Box{0.0, 0.0, static_cast<double>(plot.size.width_px),
+                            static_cast<double>(plot.size.height_px)});
+}
+
+ScatterFrame layout_scatter(const ScatterPlot& plot, const Style& style, const Box& area) {
   ScatterFrame f;
-  f.style = Style::for_size(plot.size);
+  f.style = style;
   const auto& st = f.style;
-  const double width = plot.size.width_px, height = plot.size.height_px;
 
   // Colours and legend: groups in order of first appearance.
   std::vector<std::string> groups;
@@ -116,8 +121,8 @@ ScatterFrame layout_scatter(const ScatterPlot& plot) {
   }
   if (any_hollow)
     f.legend.push_back({"placed from descriptors", ungrouped_grey, LegendEntry::Kind::open_point});
-  f.legend_layout = layout_legend(f.legend, width - 2 * st.pad, st);
-  f.legend_top = height - st.pad - title_room(plot.title, st);
+  f.legend_layout = layout_legend(f.legend, area.width() - 2 * st.pad, st);
+  f.legend_top = area.y1 - st.pad - title_room(plot.title, st);
   const double top = st.pad + title_room(plot.title, st) +
                      (f.legend.empty() ? 0.0 : f.legend_layout.height() + 0.5 * st.label_gap);
 
@@ -159,11 +164,11 @@ ScatterFrame layout_scatter(const ScatterPlot& plot) {
   double pad_left = 0, pad_right = 0, pad_below = 0, pad_above = 0;
   for (int pass = 0; pass < 12; ++pass) {
     Ranges r{x_lo - pad_left, x_hi + pad_right, y_lo - pad_below, y_hi + pad_above};
-    auto axes = layout_axes(st, width, height, top, plot.x_label, plot.y_label, st.pad,
+    auto axes = layout_axes(st, area, top, plot.x_label, plot.y_label, st.pad,
                             {r.x_lo, r.x_hi}, {r.y_lo, r.y_hi});
     if (plot.equal_axes) {
       r = equalised(r, axes.box);
-      axes = layout_axes(st, width, height, top, plot.x_label, plot.y_label, st.pad,
+      axes = layout_axes(st, area, top, plot.x_label, plot.y_label, st.pad,
                          {r.x_lo, r.x_hi}, {r.y_lo, r.y_hi});
       axes.box = narrowed(axes.box, r);
     }

@@ -36,7 +36,14 @@ LineStyle region_outline(std::size_t k, const Style& st);
 // Half-extents along x and y of an ellipse's bounding box.
 std::pair<double, double> ellipse_half_extents(const Ellipse& e);
 
-// Lays out a plot that has passed validation (finite values, at least one point).
+// Lays out a plot that has passed validate_scatter (finite values, at least one point): on a page
+// of its own, or inside `area` of a page with the page's style (a print sheet's part).
 ScatterFrame layout_scatter(const ScatterPlot& plot);
+ScatterFrame layout_scatter(const ScatterPlot& plot, const Style& style, const Box& area);
+
+// Throws std::invalid_argument ("<kind> <title>: ...") as write_scatter_plot does.
+void validate_scatter(const ScatterPlot& plot, const char* kind);
+// Everything of a laid-out plot: regions, markers, labels, axes, its title (on `area`) and legend.
+void draw_scatter(PlotPage& page, const ScatterPlot& plot, const ScatterFrame& f, const Box& area);
 
 }  // namespace nibrig::ui::report::detail

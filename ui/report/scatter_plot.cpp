@@ -9,22 +9,24 @@ namespace nibrig::ui::report {
 
 namespace {
 
-using namespace detail;
-
 constexpr const char* kScatterPlotKind = "scatter plot";
 // Vertices of a drawn ellipse: smooth at any size a figure is likely to give it.
 constexpr int ellipse_vertices = 120;
 constexpr Rgb leader_grey{150, 150, 150};
 
-void validate(const ScatterPlot& plot) {
-  check_size(plot.size, kScatterPlotKind, plot.title);
-  if (plot.points.empty()) reject(kScatterPlotKind, plot.title, "no points to draw");
+}  // namespace
+
+namespace detail {
+
+void validate_scatter(const ScatterPlot& plot, const char* kind) {
+  check_size(plot.size, kind, plot.title);
+  if (plot.points.empty()) reject(kind, plot.title, "no points to draw");
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
     const auto& p = plot.points[i];
     const std::string name =
         "point " + std::to_string(i) + (p.label.empty() ? "" : " (" + p.label + ")");
     for (const auto& [field, v] : {std::pair{"x", p.x}, {"y", p.y}}) {
-      if (!std::isfinite(v)) reject(kScatterPlotKind, plot.title, name + " " + field + " is not finite");
+      if (!std::isfinite(v)) reject(kind, plot.title, name + " " + field + " is not finite");
     }
     for (std::size_t k = 0; k < p.regions.size(); ++k) {
       const auto& e = p.regions[k];
@@ -34,23 +36,25 @@ void validate(const ScatterPlot& plot) {
                                      {"semi_axis_1", e.semi_axis_1},
                                      {"semi_axis_2", e.semi_axis_2},
                                      {"angle_rad", e.angle_rad}}) {
-        if (!std::isfinite(v)) reject(kScatterPlotKind, plot.title, region + " " + field + " is not finite");
+        if (!std::isfinite(v)) reject(kind, plot.title, region + " " + field + " is not finite");
       }
       for (const auto& [field, v] :
            {std::pair{"semi_axis_1", e.semi_axis_1}, {"semi_axis_2", e.semi_axis_2}}) {
         if (v < 0.0) {
-          reject(kScatterPlotKind, plot.title,
+          reject(kind, plot.title,
                  region + " " + field + " = " + std::to_string(v) + " is negative");
         }
       }
       if (!plot.region_labels.empty() && k >= plot.region_labels.size()) {
-        reject(kScatterPlotKind, plot.title,
+        reject(kind, plot.title,
                region + " has no legend text: region_labels names " +
                    std::to_string(plot.region_labels.size()) + " styles");
       }
     }
   }
 }
+
+namespace {
 
 // The ellipse in data units, mapped vertex by vertex: right on any axes, equal or not.
 void region_polygon(const Ellipse& e, const Mapping& m, std::vector<double>& xs,
@@ -129,11 +133,8 @@ void draw_labels(PlotPage& page, const ScatterPlot& plot, const ScatterFrame& f)
 
 }  // namespace
 
-void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png) {
-  validate(plot);
-  const auto f = layout_scatter(plot);
+void draw_scatter(PlotPage& page, const ScatterPlot& plot, const ScatterFrame& f, const Box& area) {
   const auto& st = f.style;
-  detail::PlotPage page(plot.title, png, plot.size.width_px, plot.size.height_px);
   draw_grid(page, f.mapping, &f.axes.x, &f.axes.y, st);
   draw_regions(page, plot, f);
   draw_markers(page, plot, f);
@@ -141,10 +142,19 @@ void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& pn
   draw_frame(page, f.axes.box, st);
   draw_x_axis(page, f.mapping, f.axes.x, st);
   draw_y_axis(page, f.mapping, f.axes.y, st);
-  draw_axis_titles(page, f.axes.box, plot.x_label, plot.y_label, st);
-  draw_title(page, plot.title, st);
+  draw_axis_titles(page, f.axes.box, plot.x_label, plot.y_label, st, area);
+  draw_title(page, plot.title, st, area);
   draw_legend(page, f.legend, f.legend_layout, 0.5 * (f.axes.box.x0 + f.axes.box.x1), f.legend_top,
               st);
+}
+
+}  // namespace detail
+
+void write_scatter_plot(const ScatterPlot& plot, const std::filesystem::path& png) {
+  detail::validate_scatter(plot, kScatterPlotKind);
+  const auto f = detail::layout_scatter(plot);
+  detail::PlotPage page(plot.title, png, plot.size.width_px, plot.size.height_px);
+  detail::draw_scatter(page, plot, f, detail::whole_page(page));
   page.commit();
 }
 
