@@ -118,8 +118,9 @@ DesignPoint predicted_point(const nlohmann::json& j, const std::filesystem::path
 
 }  // namespace
 
-DesignPoint read_prediction_point(const std::filesystem::path& file) {
-  return predicted_point(io::json_fields::parse_file(file), file);
+PredictedDesign read_predicted_design(const std::filesystem::path& file) {
+  const nlohmann::json j = io::json_fields::parse_file(file);
+  return {predicted_point(j, file), io::json_fields::string_member(j, "surface", file, "")};
 }
 
 ReadPrediction read_prediction(const std::filesystem::path& file,

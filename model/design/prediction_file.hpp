@@ -36,7 +36,11 @@ struct ReadPrediction {
 ReadPrediction read_prediction(const std::filesystem::path& file,
                                const measure::ThresholdCurve& threshold);
 
-// Only the design a prediction file predicted, with the same refusals.
-DesignPoint read_prediction_point(const std::filesystem::path& file);
+// Only the design a prediction file predicted and on which surface, with the same refusals.
+struct PredictedDesign {
+  DesignPoint point;
+  std::string surface;
+};
+PredictedDesign read_predicted_design(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::design

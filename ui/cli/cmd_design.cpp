@@ -24,6 +24,7 @@
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 #include "ui/cli/stylus_report.hpp"
+#include "ui/figures/stylus_sheet.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -162,7 +163,11 @@ void run_design(const DesignOptions& o) {
     for (const auto& s : print.substitutes)
       std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the optimum ({:.3f} ± {:.3f} from the target)\n",
                                design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd);
-    print_stylus_files(print, design::write_stylus_files(o.export_folder / "stylus.3mf", print));
+    const auto tool = design::predict_tool(inputs->setup, best.point, o.surface);  // the sheet's spectrum
+    figures::StylusSheetInputs sheet{&tool, &space_file, best.placement, {}};
+    sheet.targets.push_back({o.target, locator.placed(o.target) ? std::optional(target) : std::nullopt,
+                             best.distance, best.distance_sd});
+    print_stylus_files(print, figures::export_stylus(o.export_folder / "stylus.3mf", print, sheet));
   }
 }
 
@@ -206,7 +211,7 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--plot", o->plot, "PNG of the path in the space (Fig. 17)")
       ->check(file_to_write());
   cmd->add_option("--export", o->export_folder,
-                  "Folder to write the optimum's stylus into: stylus.3mf and an STL per region");
+                  "Folder to write the optimum's stylus into: stylus.3mf, an STL per region, the recipe and the print sheet");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_design(*o);

@@ -1,6 +1,7 @@
 // `nibrig export DESIGN -o stylus.3mf`: a design point (or the design of a prediction file) as the
 // files a printer takes — the stylus its prediction simulated, region by region as the FEM meshed
-// it, in one 3MF and an STL per region (model/design/stylus_export.hpp).
+// it, in one 3MF and an STL per region (model/design/stylus_export.hpp), with its print sheet
+// (ui/figures/stylus_sheet.hpp).
 #include <fmt/format.h>
 
 #include <iostream>
@@ -8,27 +9,32 @@
 #include "model/design/prediction_file.hpp"
 #include "model/design/stylus_export.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/space/space_file.hpp"
+#include "model/design/design_search.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/progress.hpp"
 #include "ui/cli/stylus_report.hpp"
+#include "ui/figures/stylus_sheet.hpp"
 #include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 
 namespace design = model::design;
 
-void print_stylus_files(const design::StylusPrint& print, const design::StylusFiles& files) {
+void print_stylus_files(const design::StylusPrint& print, const figures::ExportedStylus& exported) {
   std::cout << fmt::format("stylus {} ({}), meshed at {:.2f} mm:\n", design::label(print.point), print.design_name,
                            print.design.mesh_size * 1e3);
   for (const auto& region : print.regions)
     std::cout << fmt::format("  {}: {}, {} triangles, {:.1f} mm3\n", region.surface.name,
                              design::printer_material(region), region.surface.triangles.size(),
                              model::mechanics::enclosed_volume(region.surface) * 1e9);
-  say_wrote(files.three_mf);
-  for (const auto& stl : files.stls) say_wrote(stl);
-  say_wrote(files.recipe);
+  say_wrote(exported.files.three_mf);
+  for (const auto& stl : exported.files.stls) say_wrote(stl);
+  say_wrote(exported.files.recipe);
+  say_wrote(exported.sheet);
 }
 
 namespace {
@@ -37,18 +43,56 @@ struct ExportOptions {
   std::string design;
   std::filesystem::path output = "stylus.3mf";
   model::forcing::ForcingInputOptions inputs;
+  std::string surface;  // the sheet's prediction; default: a prediction file's own
+  std::filesystem::path space_file;
+  std::filesystem::path forcing_model;
 };
 
-design::DesignPoint design_to_export(const std::string& text) {
+// A design point has no surface: the prediction file's is its own.
+design::PredictedDesign design_to_export(const std::string& text) {
   std::error_code error;
-  if (std::filesystem::is_regular_file(text, error)) return design::read_prediction_point(text);
+  if (std::filesystem::is_regular_file(text, error)) return design::read_predicted_design(text);
   try {
-    return design::parse_design_point(text);
+    return {design::parse_design_point(text), {}};
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("DESIGN", std::string(e.what()) +
                                              " (expected a design point such as \"DM85:0.62,vero:0.38,tip=2.7mm\" "
                                              "or a prediction file)");
   }
+}
+
+void run_export(const ExportOptions& o) {
+  if (o.output.extension() != ".3mf")
+    throw CLI::ValidationError("--output", "'" + o.output.string() + "' is not a .3mf file");
+  const auto [point, file_surface] = design_to_export(o.design);
+  const std::string surface = o.surface.empty() ? file_surface : o.surface;
+  if (!o.space_file.empty() && surface.empty())
+    throw CLI::ValidationError("--space", "places the design from its prediction: give --surface too");
+  design::check_stylus_folder(o.output.parent_path());
+  std::optional<model::space::SpaceFile> space;
+  if (!o.space_file.empty()) {
+    space = model::space::read_space_file(o.space_file);
+    if (!space->descriptor_map)
+      throw std::invalid_argument(o.space_file.string() +
+                                  " has no descriptor map (fit it with --descriptors): a design is "
+                                  "placed from its predicted descriptors");
+  }
+  if (surface.empty()) {  // the print alone: no prediction to put on the sheet
+    const auto print = design::stylus_print(o.inputs, point);
+    print_stylus_files(print, figures::export_stylus(o.output, print, {}));
+    return;
+  }
+  if (o.forcing_model.empty() && warnings_shown())
+    std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
+  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
+  const auto print = design::stylus_print(inputs->setup, point);
+  const auto tool = design::predict_tool(inputs->setup, point, surface);
+  figures::StylusSheetInputs sheet{&tool, nullptr, std::nullopt, {}};
+  if (space) {
+    sheet.space = &*space;
+    sheet.placement = design::place_predicted(*space->descriptor_map, tool);
+  }
+  print_stylus_files(print, figures::export_stylus(o.output, print, sheet));
 }
 
 }  // namespace
@@ -60,7 +104,9 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "The stylus is the one `nibrig predict` simulates for the design (same template, materials,\n"
       "mesh size): each material region's surface as the FEM meshed it. The 3MF holds one part\n"
       "with an object per region and its material (a mixed tip: the fractions to mix); an STL per\n"
-      "region is written beside it as <name>-<region>.stl, and the recipe as <name>.json.");
+      "region is written beside it as <name>-<region>.stl, the recipe as <name>.json and the\n"
+      "print sheet as <name>-sheet.png: the design, its recipe, its predicted mu and spectrum on\n"
+      "--surface, and with --space its place in the space.");
   cmd->add_option("DESIGN", o->design, "A design point (DM85:0.62,vero:0.38,tip=2.7mm) or a prediction file")
       ->required();
   cmd->add_option("-o,--output", o->output, "The 3MF file to write")->capture_default_str()->check(file_to_write());
@@ -69,14 +115,17 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
   cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres (default: the template's)")
       ->check(stylus_metres("an element size"));
+  cmd->add_option("--surface", o->surface,
+                  "Surface the stylus is for: its predicted mu and spectrum go on the print sheet "
+                  "(default: a prediction file's)");
+  cmd->add_option("--space", o->space_file,
+                  "Fitted space with a descriptor map: the design's place in it goes on the sheet");
+  cmd->add_option("--forcing", o->forcing_model,
+                  "Forcing model from `nibrig forcing fit` (default: the catalog's, cached)");
+  cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
-    if (o->output.extension() != ".3mf")
-      throw CLI::ValidationError("--output", "'" + o->output.string() + "' is not a .3mf file");
-    const auto point = design_to_export(o->design);
-    design::check_stylus_folder(o->output.parent_path());
-    const auto print = design::stylus_print(o->inputs, point);
-    print_stylus_files(print, design::write_stylus_files(o->output, print));
+    run_export(*o);
   });
 }
 

@@ -11,13 +11,11 @@
 #include "model/io/catalog_file.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/space/space_file.hpp"
+#include "ui/figures/predicted_text.hpp"
 
 namespace nibrig::ui::cli {
 
-// "mu 0.273 ± 0.0087, weighted mean vibration 0.07339 ± 12.8 %": the predicted descriptors with
-// their cross-validated error (± one standard deviation; none printed when the tool has none, a
-// measured μ having no interpolation error).
-std::string describe_descriptors(const model::design::PredictedTool& tool);
+using figures::describe_descriptors;
 
 // The space's judged stimuli, the target when it was placed rather than judged, every candidate
 // (the path; `ends` of them labelled, e.g. the two designs of a line search) and the optimum with

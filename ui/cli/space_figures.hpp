@@ -9,19 +9,13 @@
 #include "model/space/descriptor_map.hpp"
 #include "model/space/dimension_sweep.hpp"
 #include "model/space/space_file.hpp"
+#include "ui/figures/space_scatter.hpp"
 
 namespace nibrig::ui::cli {
 
-struct PlacedTool {
-  std::string name;  // also its label; empty: an unlabelled marker
-  model::space::Placement placement;
-  std::string group;    // its legend entry; empty: the surface part of the name
-  bool regions = true;  // with its 68 % / 95 % ellipses
-};
+using figures::PlacedTool;
 
-// The first two axes (a 1-D space on a line); judged stimuli as filled points coloured by surface
-// (the part of "tool/surface" after the slash; one colour when names have none) with their
-// bootstrap regions, placed tools hollow with their 68 % / 95 % prediction ellipses.
+// figures::space_scatter on a page of its own.
 void write_space_plot(const model::space::SpaceFile& space, const std::vector<PlacedTool>& placed,
                       const std::string& title, const std::filesystem::path& png);
 

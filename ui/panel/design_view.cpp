@@ -11,6 +11,7 @@
 #include "model/design/design_grid_file.hpp"
 #include "model/design/prediction_file.hpp"
 #include "model/design/stylus_export.hpp"
+#include "ui/figures/stylus_sheet.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/space/bootstrap.hpp"
@@ -206,10 +207,40 @@ std::string DesignView::save_prediction(const std::filesystem::path& file) const
   }
 }
 
-std::function<void()> DesignView::stylus_export(const std::filesystem::path& file) const {
+std::function<void()> DesignView::stylus_export(const std::filesystem::path& file,
+                                                std::optional<model::space::SpaceFile> space) const {
   if (!predicted_ || !inputs_) return {};
-  return [file, point = predicted_->point, inputs = inputs_] {
-    design::write_stylus_files(file, design::stylus_print(inputs->setup, point));
+  // The design is placed on the sheet when there is a space with a map and a target to measure
+  // the distance to; a judged target is drawn by the space itself, a placed one as placed.
+  std::optional<std::pair<figures::SheetTarget, model::space::Placement>> target;
+  if (target_ && map_ && space) {
+    const auto& t = space_->scene().tools[*target_];
+    const auto placement = placement_of(t);
+    target.emplace(figures::SheetTarget{t.choice.tool + "/" + t.choice.surface,
+                                        t.judged ? std::nullopt : std::optional(placement)},
+                   placement);
+  }
+  return [file, point = predicted_->point, surface = surface(), inputs = inputs_, map = map_,
+          space = std::move(space), target = std::move(target)] {
+    // The sheet's prediction solves the design itself (the sliders show the grid's interpolation).
+    std::optional<design::PredictedTool> tool;
+    const design::Predict predict = [&](const design::DesignPoint& p) {
+      tool = design::predict_tool(inputs->setup, p, surface);
+      return *tool;
+    };
+    figures::StylusSheetInputs sheet;
+    if (target) {
+      const auto candidate = design::distance_to_target(predict, *map, target->second)(point);
+      auto sheet_target = target->first;
+      sheet_target.distance = candidate.distance, sheet_target.distance_sd = candidate.distance_sd;
+      sheet.space = &*space;
+      sheet.placement = candidate.placement;
+      sheet.targets.push_back(sheet_target);
+    } else {
+      predict(point);
+    }
+    sheet.tool = &*tool;
+    figures::export_stylus(file, design::stylus_print(inputs->setup, point), sheet);
   };
 }
 

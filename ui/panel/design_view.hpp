@@ -20,6 +20,7 @@
 #include "model/design/design_search.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/space/descriptor_map.hpp"
+#include "model/space/space_file.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/space_view.hpp"
@@ -85,11 +86,13 @@ class DesignView {
   // cannot be read (named with its field), a design that mixes other materials than the grid's two,
   // a tip outside the grid.
   std::string open_prediction(const std::filesystem::path& file);
-  // The design shown made printable (model/design/stylus_export.hpp: the 3MF, an STL per region
-  // and the recipe beside `file`), as work to run off the UI thread: it meshes the stylus. It holds
-  // copies of what it needs, so the view may change meanwhile; it throws what the export throws.
-  // Empty when no design is shown yet.
-  std::function<void()> stylus_export(const std::filesystem::path& file) const;
+  // The design shown made printable (ui/figures/stylus_sheet.hpp export_stylus: the 3MF, an STL
+  // per region, the recipe and the print sheet beside `file`), as work to run off the UI thread: it
+  // meshes and solves the stylus. With `space` (the one shown) and a target the sheet places the
+  // design and gives its distance to the target. It holds copies of what it needs, so the view may
+  // change meanwhile; it throws what the export throws. Empty when no design is shown yet.
+  std::function<void()> stylus_export(const std::filesystem::path& file,
+                                      std::optional<model::space::SpaceFile> space = std::nullopt) const;
 
   // What the view shows, for tests and the status: the current prediction and its placement,
   // how long the last slider move took to a placement and a loaded sound, the last search, the

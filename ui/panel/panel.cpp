@@ -272,14 +272,14 @@ void Panel::save_design(const std::filesystem::path& file) {
 }
 
 void Panel::export_stylus(const std::filesystem::path& file) {
-  auto work = design_view_->stylus_export(file);
+  auto work = design_view_->stylus_export(file, space_);
   if (!work) {
     errors_.report("there is no design to export yet (the grid is not ready)");
     return;
   }
   file_job("exporting the stylus", [work = std::move(work), file](JobControl&) -> Apply {
     work();
-    return [file](Panel& p) { p.notice_ = "wrote " + file.string() + " and the STLs beside it"; };
+    return [file](Panel& p) { p.notice_ = "wrote " + file.string() + ", the STLs and the print sheet beside it"; };
   });
 }
 

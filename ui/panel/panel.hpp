@@ -62,6 +62,8 @@ class Panel {
   void set_error(std::string error) { errors_.report(std::move(error)); }
   // The space file open now (empty: none yet, the default, or a fit not saved).
   const std::filesystem::path& space_file() const { return space_file_; }
+  // The space shown, as a file holds it (none until one has loaded).
+  const std::optional<model::space::SpaceFile>& shown_space() const { return space_; }
   // The catalog and forcing model in use (empty: the bundled catalog, the demo's forcing model).
   const std::filesystem::path& catalog_file() const { return setup_.catalog; }
   const std::filesystem::path& forcing_file() const { return setup_.forcing; }

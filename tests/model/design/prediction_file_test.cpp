@@ -56,7 +56,9 @@ TEST(PredictionFile, WhatIsWrittenIsReadBack) {
   io::write_file_atomically(file, prediction_json(tool, threshold.source()).dump());
   const auto read = read_prediction(file, threshold);
   EXPECT_EQ(to_string(read.point), to_string(tool.point));
-  EXPECT_EQ(to_string(read_prediction_point(file)), to_string(tool.point));  // what `export` takes
+  const auto design = read_predicted_design(file);  // what `export` takes
+  EXPECT_EQ(to_string(design.point), to_string(tool.point));
+  EXPECT_EQ(design.surface, tool.surface);
   EXPECT_EQ(read.surface, "office");
   ASSERT_TRUE(read.pairing.vibration.has_value());
   const auto& spectrum = read.pairing.vibration->spectrum;
@@ -105,8 +107,8 @@ TEST(PredictionFile, AFileThatIsNotAPredictionIsRefusedNamingTheFileAndField) {
   j["tool"] = "DM85:0.7,vero:0.7,tip=3mm";
   io::write_file_atomically(dir / "mix.json", j.dump());
   EXPECT_THROW(read_prediction(dir / "mix.json", threshold), io::FormatError);
-  EXPECT_THROW(read_prediction_point(dir / "mix.json"), io::FormatError);
-  EXPECT_THROW(read_prediction_point(dir / "kind.json"), io::FormatError);
+  EXPECT_THROW(read_predicted_design(dir / "mix.json"), io::FormatError);
+  EXPECT_THROW(read_predicted_design(dir / "kind.json"), io::FormatError);
 }
 
 }  // namespace

@@ -220,6 +220,8 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_EQ(sliced.exit_code, 0) << sliced.output;
   EXPECT_EQ(sliced.output.find("warning"), std::string::npos) << sliced.output;
   EXPECT_GT(std::filesystem::file_size(out / "printed" / "stylus.gcode"), 0u);
+  // The print sheet beside them (its content: tests/ui/figures/stylus_sheet_test.cpp).
+  EXPECT_TRUE(is_png(out / "printed" / "stylus-sheet.png"));
   // The recipe: the regions' volumes as the 3MF holds them, and for a mixed optimum each material
   // alone at its tip, placed, with the distances the search's own draws give (finite, at least 0).
   const auto recipe = read_json(out / "printed" / "stylus.json");

@@ -49,6 +49,8 @@ TEST(ExportCli, AMixedDesignsFilesAreCleanForAdmeshAndSliceInPrusaSlicer) {
   ASSERT_EQ(code, 0) << said;
   const auto regions = model::io::read_3mf_regions(out / "stylus.3mf");
   ASSERT_EQ(regions.size(), 2u);
+  // Without a surface the sheet holds the print alone (its content: tests/ui/figures).
+  EXPECT_TRUE(nibrig::test::is_png(out / "stylus-sheet.png"));
 
   for (const auto& region : regions) {
     const auto stl = out / ("stylus-" + region.surface.name + ".stl");
@@ -100,10 +102,15 @@ TEST(ExportCli, ABadDesignOrFolderIsRefusedAndNothingIsWritten) {
   const int unknown = test::run_cli({"export", "wood,tip=2mm", "-o", (out / "wood.3mf").string()});
   const int too_wide = test::run_cli({"export", "vero,tip=12mm", "-o", (out / "wide.3mf").string()});
   const int in_a_file = test::run_cli({"export", "vero,tip=2mm", "-o", (out / "a_file" / "stylus.3mf").string()});
+  // A place in a space is found from the prediction, which needs the surface.
+  const int space_alone = test::run_cli({"export", "vero,tip=2mm", "--space", (out / "a_file").string(), "-o",
+                                         (out / "placed.3mf").string()});
   const std::string errors = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(unknown, 0);
   EXPECT_NE(too_wide, 0);
   EXPECT_NE(in_a_file, 0);
+  EXPECT_NE(space_alone, 0);
+  EXPECT_NE(errors.find("--surface"), std::string::npos) << errors;
   EXPECT_NE(errors.find("wood"), std::string::npos) << errors;
   EXPECT_NE(errors.find("a_file"), std::string::npos) << errors;
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), std::filesystem::directory_iterator()), 1) << errors;

@@ -96,11 +96,14 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   EXPECT_EQ(read.surface, "office");
   ASSERT_TRUE(read.pairing.friction.has_value());
   EXPECT_EQ(read.pairing.friction->mu, view.predicted()->mu);
-  // The design shown, exported for printing: the stylus of that design, its recipe naming it.
-  const auto exported = view.stylus_export(dir / "stylus.3mf");
+  // The design shown, exported for printing with the space shown: the stylus of that design, its
+  // recipe naming it, its print sheet beside them (the sheet's content: tests/ui/figures).
+  ASSERT_TRUE(panel.shown_space().has_value());
+  const auto exported = view.stylus_export(dir / "stylus.3mf", panel.shown_space());
   ASSERT_TRUE(exported);
   exported();
   EXPECT_FALSE(model::io::read_3mf_regions(dir / "stylus.3mf").empty());
+  EXPECT_EQ(nibrig::test::decode_png(dir / "stylus-sheet.png").width, 2000);
   std::ifstream recipe(dir / "stylus.json");
   EXPECT_EQ(nlohmann::json::parse(recipe)["design"].get<std::string>(), model::design::to_string(shown));
   view.set_design(0.0, 2.5);
