@@ -1,6 +1,7 @@
 #include "model/design/design_search.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -28,6 +29,12 @@ std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
   return order;
 }
 
+std::string fmt_mm(double m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g mm", m * 1e3);
+  return text;
+}
+
 bool same_design(const DesignPoint& a, const DesignPoint& b) {
   double variation = 0;
   for (const auto& share : a.mix)
@@ -53,12 +60,6 @@ std::size_t line_search_budget(const LineSearchOptions& o) {
   return static_cast<std::size_t>(o.scan_points) + refinements;
 }
 
-// The first grid, then per refinement the 8 neighbours of the best point (the point itself is
-// known); neighbours outside the range or already evaluated are skipped.
-std::size_t range_search_budget(const RangeSearchOptions& o) {
-  return static_cast<std::size_t>(o.fraction_points) * static_cast<std::size_t>(o.tip_points) +
-         8 * static_cast<std::size_t>(std::max(0, o.refinements));
-}
 
 }  // namespace
 
@@ -113,17 +114,60 @@ Evaluate distance_to_target(Predict predict, const space::DescriptorMap& map,
         space::uncertain_distance(c.placement, target, samples, generator);
     c.distance = d.between_means;
     c.distance_sd = d.sd;
+    c.target_distances = {c.distance};
+    c.target_distance_sds = {c.distance_sd};
     return c;
   };
 }
 
-SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
+Evaluate distance_to_targets(Predict predict, const space::DescriptorMap& map,
+                             std::vector<space::Placement> targets, space::GroupAim aim, int samples,
+                             std::uint64_t seed) {
+  if (targets.empty()) throw std::invalid_argument("a group design needs at least one target");
+  return [predict = std::move(predict), map, targets = std::move(targets), aim, samples,
+          seed](const DesignPoint& point) {
+    const PredictedTool tool = predict(point);
+    Candidate c;
+    c.point = point;
+    c.placement = place_predicted(map, tool);
+    c.mu = tool.mu;
+    c.weighted_mean = tool.vibration.weighted_mean;
+    std::mt19937_64 generator(seed);  // the same draws for every candidate: comparable sds
+    const auto d = space::uncertain_group_distance(c.placement, targets, aim, samples, generator);
+    c.distance = d.aggregate.between_means;
+    c.distance_sd = d.aggregate.sd;
+    for (const auto& each : d.each) {
+      c.target_distances.push_back(each.between_means);
+      c.target_distance_sds.push_back(each.sd);
+    }
+    return c;
+  };
+}
+
+Evaluate distance_to_targets(const PredictionSetup& setup, const std::string& surface,
+                             const space::DescriptorMap& map, std::vector<space::Placement> targets,
+                             space::GroupAim aim, int samples, std::uint64_t seed) {
+  return distance_to_targets(
+      [setup, surface](const DesignPoint& point) { return predict_tool(setup, point, surface); }, map,
+      std::move(targets), aim, samples, seed);
+}
+
+SearchResult line_search(const DesignPoint& a0, const DesignPoint& b0, const Evaluate& evaluate,
                          const LineSearchOptions& options, const SearchProgress& progress) {
   if (options.scan_points < 2)
     throw std::invalid_argument("line search: at least 2 scan points (the two designs)");
   if (!(options.refine_tolerance > 0 && options.refine_tolerance < 1))
     throw std::invalid_argument("line search: the refinement tolerance is a fraction in (0, 1)");
   SearchResult result;
+  // The constraints leave one segment of the line: the search runs along that.
+  const auto [from, to] = feasible_segment(a0, b0, options.constraints);
+  const DesignPoint a = interpolate(a0, b0, from), b = interpolate(a0, b0, to);
+  if (to - from < 1e-9) {  // one design satisfies them: nothing to search
+    result.evaluated.push_back(evaluate(a));
+    if (progress) progress(result.evaluated.back(), 1, 1);
+    result.ranked = {0};
+    return result;
+  }
   const std::size_t budget = line_search_budget(options);
   std::vector<double> lambdas;
   auto at = [&](double lambda) {
@@ -172,8 +216,25 @@ SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o,
     throw std::invalid_argument("range search: the mix needs two different materials");
   if (!(o.min_tip_m > 0 && o.max_tip_m > o.min_tip_m))
     throw std::invalid_argument("range search: the tip range must be a positive interval");
+  const auto& c = o.constraints;
+  const double tip_lo = std::max(o.min_tip_m, c.min_tip_m.value_or(0.0));
+  const double tip_hi = std::min(o.max_tip_m, c.max_tip_m.value_or(o.max_tip_m));
+  if (tip_lo > tip_hi * (1 + 1e-9))
+    throw std::invalid_argument("range search: the allowed tips " + fmt_mm(c.min_tip_m.value_or(o.min_tip_m)) + " to " +
+                                fmt_mm(c.max_tip_m.value_or(o.max_tip_m)) + " lie outside the fitted tips " +
+                                fmt_mm(o.min_tip_m) + " to " + fmt_mm(o.max_tip_m));
+  // The mix's constraints hold alike at every tip: the fractions allowed are one segment.
+  DesignConstraints mix_only = c;
+  mix_only.min_tip_m.reset(), mix_only.max_tip_m.reset();
+  const auto [f_lo, f_hi] = feasible_segment(mix_point(o, 0.0, tip_lo), mix_point(o, 1.0, tip_lo), mix_only);
+  const int nf = f_hi - f_lo > 1e-9 ? o.fraction_points : 1;
+  const int nt = tip_hi - tip_lo > 1e-12 ? o.tip_points : 1;
+
   SearchResult result;
-  const std::size_t budget = range_search_budget(o);
+  // The first grid, then per refinement the 8 neighbours of the best point (the point itself is
+  // known); neighbours outside the range or already evaluated are skipped.
+  const std::size_t budget = static_cast<std::size_t>(nf) * static_cast<std::size_t>(nt) +
+                             (nf * nt > 1 ? 8 * static_cast<std::size_t>(std::max(0, o.refinements)) : 0);
   std::vector<std::pair<double, double>> done;  // (fraction, tip) evaluated
   auto at = [&](double fraction, double tip) {
     for (const auto& [f, t] : done)
@@ -182,11 +243,11 @@ SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o,
     result.evaluated.push_back(evaluate(mix_point(o, fraction, tip)));
     if (progress) progress(result.evaluated.back(), result.evaluated.size(), budget);
   };
-  double fraction_step = 1.0 / (o.fraction_points - 1);
-  double tip_step = (o.max_tip_m - o.min_tip_m) / (o.tip_points - 1);
-  for (int i = 0; i < o.fraction_points; ++i)
-    for (int j = 0; j < o.tip_points; ++j) at(i * fraction_step, o.min_tip_m + j * tip_step);
-  for (int round = 0; round < o.refinements; ++round) {
+  double fraction_step = nf > 1 ? (f_hi - f_lo) / (nf - 1) : 0.0;
+  double tip_step = nt > 1 ? (tip_hi - tip_lo) / (nt - 1) : 0.0;
+  for (int i = 0; i < nf; ++i)
+    for (int j = 0; j < nt; ++j) at(f_lo + i * fraction_step, tip_lo + j * tip_step);
+  for (int round = 0; round < o.refinements && nf * nt > 1; ++round) {
     const auto best = ranking(result.evaluated).front();
     const auto [f0, t0] = done[best];
     fraction_step /= 2;
@@ -194,9 +255,8 @@ SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& o,
     for (int di = -1; di <= 1; ++di)
       for (int dj = -1; dj <= 1; ++dj) {
         const double f = f0 + di * fraction_step, t = t0 + dj * tip_step;
-        if (f < -1e-12 || f > 1 + 1e-12 || t < o.min_tip_m - 1e-12 || t > o.max_tip_m + 1e-12)
-          continue;
-        at(std::clamp(f, 0.0, 1.0), std::clamp(t, o.min_tip_m, o.max_tip_m));
+        if (f < f_lo - 1e-12 || f > f_hi + 1e-12 || t < tip_lo - 1e-12 || t > tip_hi + 1e-12) continue;
+        at(std::clamp(f, f_lo, f_hi), std::clamp(t, tip_lo, tip_hi));
       }
   }
   result.ranked = ranking(result.evaluated);

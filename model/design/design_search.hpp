@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "model/design/design_constraints.hpp"
 #include "model/design/design_point.hpp"
 #include "model/design/predicted_tool.hpp"
 #include "model/space/descriptor_map.hpp"
@@ -27,6 +28,9 @@ struct Candidate {
   // Distance of the placement's mean to the target's, and its standard deviation when both
   // positions are drawn from their uncertainties (space::uncertain_distance).
   double distance = 0.0, distance_sd = 0.0;
+  // Its distance to each target, with its sd: one entry for one target; for a group (below),
+  // `distance` is their largest or mean.
+  std::vector<double> target_distances, target_distance_sds;
 };
 
 // Where a predicted tool lies: its descriptors (those the map was fitted with: μ and the weighted
@@ -57,6 +61,16 @@ Evaluate distance_to_target(Predict predict, const space::DescriptorMap& map,
                             const space::Placement& target, int samples = 2000,
                             std::uint64_t seed = 1);
 
+// The evaluation of a design for a group of tools (Sec. 7: "one nib for all pencils on office
+// paper"): its distance is the largest or the mean of its distances to the targets, with the sd of
+// that over joint draws (space::uncertain_group_distance); each target's own distance is kept.
+Evaluate distance_to_targets(Predict predict, const space::DescriptorMap& map,
+                             std::vector<space::Placement> targets, space::GroupAim aim,
+                             int samples = 2000, std::uint64_t seed = 1);
+Evaluate distance_to_targets(const PredictionSetup& setup, const std::string& surface,
+                             const space::DescriptorMap& map, std::vector<space::Placement> targets,
+                             space::GroupAim aim, int samples = 2000, std::uint64_t seed = 1);
+
 struct SearchResult {
   std::vector<Candidate> evaluated;  // in the order evaluated: the path
   std::vector<std::size_t> ranked;   // indices into evaluated, nearest first
@@ -76,10 +90,13 @@ inline constexpr double kSameDesignTip = 0.0001;  // m
 struct LineSearchOptions {
   int scan_points = 9;             // equal steps from a to b, both ends included
   double refine_tolerance = 0.01;  // of the line's length, for the golden-section refinement
+  DesignConstraints constraints;   // the search keeps to the segment they allow
 };
 
-// The point interpolate(a, b, λ) with λ in [0, 1] nearest to the target. Throws
-// std::invalid_argument for fewer than 2 scan points or a tolerance outside (0, 1).
+// The point interpolate(a, b, λ) with λ in [0, 1] nearest to the target, among those the
+// constraints allow (feasible_segment: the scan and refinement run along that segment; one design
+// allowed is the one candidate). Throws std::invalid_argument for fewer than 2 scan points, a
+// tolerance outside (0, 1), or constraints that allow nothing on the line (naming them).
 SearchResult line_search(const DesignPoint& a, const DesignPoint& b, const Evaluate& evaluate,
                          const LineSearchOptions& options = {},
                          const SearchProgress& progress = {});
@@ -89,11 +106,13 @@ struct RangeSearchOptions {
   double min_tip_m = 0.001, max_tip_m = 0.004;
   int fraction_points = 5, tip_points = 4;  // the first grid, ends included
   int refinements = 2;                      // finer 3 × 3 grids around the best, halving steps
+  DesignConstraints constraints;            // narrow the tips and fractions searched
 };
 
 // The mix of the two materials (the second's fraction from 0 to 1) × tip diameter nearest to the
-// target. Throws std::invalid_argument for a grid of fewer than 2 points per axis, equal
-// materials or an empty tip range.
+// target, within the constraints: the grid spans the tips and fractions they allow (an axis they
+// fix to one value has one point). Throws std::invalid_argument for a grid of fewer than 2 points
+// per axis, equal materials, an empty tip range, or constraints that allow nothing (naming them).
 SearchResult range_search(const Evaluate& evaluate, const RangeSearchOptions& options = {},
                           const SearchProgress& progress = {});
 

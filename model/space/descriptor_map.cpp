@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -158,6 +159,47 @@ UncertainDistance uncertain_distance(const Placement& a, const Placement& b, int
   u.between_means = (a.mean - b.mean).norm();
   u.sd = std::sqrt(std::max(0.0, (sum_sq - sum * sum / samples) / (samples - 1)));
   return u;
+}
+
+GroupDistance uncertain_group_distance(const Placement& a, const std::vector<Placement>& targets, GroupAim aim,
+                                       int samples, std::mt19937_64& generator) {
+  if (targets.empty()) throw std::invalid_argument("uncertain_group_distance: no targets");
+  for (const auto& t : targets)
+    if (t.mean.size() != a.mean.size())
+      throw std::invalid_argument("uncertain_group_distance: placements of different dimensions");
+  if (samples < 2) throw std::invalid_argument("an uncertain distance needs at least 2 samples");
+  const auto aggregate = [aim](const std::vector<double>& d) {
+    double out = aim == GroupAim::largest ? d.front() : 0.0;
+    for (double x : d) out = aim == GroupAim::largest ? std::max(out, x) : out + x / static_cast<double>(d.size());
+    return out;
+  };
+  const std::size_t n = targets.size();
+  const Eigen::MatrixXd la = square_root(a.covariance);
+  std::vector<Eigen::MatrixXd> lt;
+  for (const auto& t : targets) lt.push_back(square_root(t.covariance));
+  std::normal_distribution<double> normal;
+  std::vector<double> sum(n + 1, 0.0), sum_sq(n + 1, 0.0), d(n);
+  for (int k = 0; k < samples; ++k) {
+    const Eigen::VectorXd xa = draw(a, la, normal, generator);
+    for (std::size_t i = 0; i < n; ++i) d[i] = (xa - draw(targets[i], lt[i], normal, generator)).norm();
+    const double g = aggregate(d);
+    for (std::size_t i = 0; i <= n; ++i) {
+      const double v = i < n ? d[i] : g;
+      sum[i] += v;
+      sum_sq[i] += v * v;
+    }
+  }
+  const auto sd = [&](std::size_t i) {
+    return std::sqrt(std::max(0.0, (sum_sq[i] - sum[i] * sum[i] / samples) / (samples - 1)));
+  };
+  GroupDistance out;
+  std::vector<double> between(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    between[i] = (a.mean - targets[i].mean).norm();
+    out.each.push_back({between[i], sd(i)});
+  }
+  out.aggregate = {aggregate(between), sd(n)};
+  return out;
 }
 
 }  // namespace nibrig::model::space

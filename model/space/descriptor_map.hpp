@@ -71,4 +71,17 @@ struct UncertainDistance {
 UncertainDistance uncertain_distance(const Placement& a, const Placement& b, int samples,
                                      std::mt19937_64& generator);
 
+// The distance of one uncertain position to a group of them (one design for several tools): the
+// largest or the mean of its distances to each. `aggregate` is that of the distances between the
+// means, its sd over `samples` joint draws of every position (the design's draw shared by all its
+// distances); `each` is every target's own distance and sd from the same draws. Throws
+// std::invalid_argument for no targets, placements of different dimensions or fewer than 2 samples.
+enum class GroupAim { largest, mean };
+struct GroupDistance {
+  UncertainDistance aggregate;
+  std::vector<UncertainDistance> each;
+};
+GroupDistance uncertain_group_distance(const Placement& a, const std::vector<Placement>& targets, GroupAim aim,
+                                       int samples, std::mt19937_64& generator);
+
 }  // namespace nibrig::model::space

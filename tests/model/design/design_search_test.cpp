@@ -130,7 +130,7 @@ TEST(DesignSearch, TheRangeSearchReportsEachCandidateAndStopsShortAtAnEdge) {
 TEST(DesignSearch, RefusesSearchesThatCannotBeMade) {
   const auto f = objective([](double, double) { return 0.0; });
   EXPECT_THROW(line_search(parse_design_point("vero,tip=1mm"), parse_design_point("DM85,tip=4mm"),
-                           f, {1, 0.01}),
+                           f, {1, 0.01, {}}),
                std::invalid_argument);
   RangeSearchOptions same;
   same.second_material = "vero";

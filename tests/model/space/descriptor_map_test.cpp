@@ -140,5 +140,40 @@ TEST(SpaceDescriptorMap, UncertainDistanceMatchesTheClosedFormOfAHalfNormal) {
   EXPECT_THROW(uncertain_distance(a, x, 100, generator), std::invalid_argument);
 }
 
+TEST(SpaceDescriptorMap, AGroupDistanceIsTheLargestOrMeanOverJointDraws) {
+  std::mt19937_64 generator(11);
+  const Placement a{Eigen::Vector2d(0, 0), Eigen::Matrix2d::Zero()};
+  const Placement near{Eigen::Vector2d(3, 4), Eigen::Matrix2d::Zero()};
+  const Placement far{Eigen::Vector2d(-6, 8), Eigen::Matrix2d::Zero()};
+  // Certain positions: 5 and 10 exactly; the largest 10, the mean 7.5, no spread.
+  const auto largest = uncertain_group_distance(a, {near, far}, GroupAim::largest, 100, generator);
+  EXPECT_DOUBLE_EQ(largest.aggregate.between_means, 10.0);
+  EXPECT_NEAR(largest.aggregate.sd, 0.0, 1e-12);
+  ASSERT_EQ(largest.each.size(), 2u);
+  EXPECT_DOUBLE_EQ(largest.each[0].between_means, 5.0);
+  EXPECT_DOUBLE_EQ(largest.each[1].between_means, 10.0);
+  EXPECT_DOUBLE_EQ(uncertain_group_distance(a, {near, far}, GroupAim::mean, 100, generator).aggregate.between_means, 7.5);
+
+  // The design uncertain (σ = 0.1 on each axis), two targets 10 away on either side along x: each
+  // distance varies as the design's x, by σ (first order; the curvature adds σ²/20), but their
+  // mean is 10 + y²/20 whatever x is, so its sd is σ²·√2/20 = 7e-4 — only if the design's draw is
+  // shared by both distances. 20,000 draws: the sds' relative standard error is 0.5 %.
+  const double sigma = 0.1;
+  const Placement design{Eigen::Vector2d(0, 0), Eigen::Matrix2d::Identity() * sigma * sigma};
+  const Placement left{Eigen::Vector2d(-10, 0), Eigen::Matrix2d::Zero()};
+  const Placement right{Eigen::Vector2d(10, 0), Eigen::Matrix2d::Zero()};
+  const auto mean = uncertain_group_distance(design, {left, right}, GroupAim::mean, 20000, generator);
+  EXPECT_NEAR(mean.each[0].sd, sigma, 0.03 * sigma);
+  EXPECT_NEAR(mean.each[1].sd, sigma, 0.03 * sigma);
+  EXPECT_LT(mean.aggregate.sd, 0.002);
+  // The largest of the two is 10 + |x|: a half-normal's sd, σ·√(1 − 2/π).
+  const auto most = uncertain_group_distance(design, {left, right}, GroupAim::largest, 20000, generator);
+  const double half_normal = sigma * std::sqrt(1 - 2 / M_PI);
+  EXPECT_NEAR(most.aggregate.sd, half_normal, 0.03 * half_normal + 0.001);  // + the curvature's
+  EXPECT_THROW(uncertain_group_distance(a, {}, GroupAim::mean, 100, generator), std::invalid_argument);
+  const Placement one_d{Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Zero(1, 1)};
+  EXPECT_THROW(uncertain_group_distance(a, {near, one_d}, GroupAim::mean, 100, generator), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace nibrig::model::space

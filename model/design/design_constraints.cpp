@@ -1,0 +1,99 @@
+#include "model/design/design_constraints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace nibrig::model::design {
+
+namespace {
+
+// Fractions and costs within this of a limit satisfy it: the interpolation's rounding.
+constexpr double kSlack = 1e-9;
+
+std::string mm(double m) {
+  std::ostringstream s;
+  s << m * 1e3 << " mm";
+  return s.str();
+}
+
+bool allowed(const DesignConstraints& c, const std::string& material) {
+  return c.materials.empty() || std::find(c.materials.begin(), c.materials.end(), material) != c.materials.end();
+}
+
+// λ in [0, 1] with g0 + λ·(g1 − g0) ≤ 0: an interval, empty as lo > hi. An end within `slack` of
+// the limit satisfies it; the cut itself is the exact root, so that a design on the limit is
+// searched, not one a rounding away from it.
+std::pair<double, double> where_at_most(double g0, double g1, double slack) {
+  if (g0 <= slack && g1 <= slack) return {0.0, 1.0};
+  if (g0 > slack && g1 > slack) return {1.0, 0.0};
+  const double root = std::clamp(-g0 / (g1 - g0), 0.0, 1.0);
+  return g1 > g0 ? std::pair{0.0, root} : std::pair{root, 1.0};
+}
+
+}  // namespace
+
+double design_cost(const DesignPoint& point, const std::map<std::string, double>& cost) {
+  double sum = 0.0;
+  for (const auto& share : point.mix) {
+    const auto it = cost.find(share.material);
+    if (it == cost.end())
+      throw std::invalid_argument("no cost given for " + share.material + ", a material of " + label(point));
+    sum += share.fraction * it->second;
+  }
+  return sum;
+}
+
+std::string broken_constraint(const DesignPoint& point, const DesignConstraints& c) {
+  const double tip = point.tip_diameter_m;
+  if (c.min_tip_m && tip < *c.min_tip_m * (1 - kSlack))
+    return "the tip " + mm(tip) + " is below the smallest allowed, " + mm(*c.min_tip_m);
+  if (c.max_tip_m && tip > *c.max_tip_m * (1 + kSlack))
+    return "the tip " + mm(tip) + " is above the largest allowed, " + mm(*c.max_tip_m);
+  for (const auto& share : point.mix)
+    if (share.fraction > kSlack && !allowed(c, share.material)) return share.material + " is not an allowed material";
+  if (c.max_cost) {
+    const double cost = design_cost(point, c.cost);
+    if (cost > *c.max_cost + kSlack * std::max(1.0, std::abs(*c.max_cost))) {
+      std::ostringstream s;
+      s << "its cost " << cost << " is above the limit " << *c.max_cost;
+      return s.str();
+    }
+  }
+  return {};
+}
+
+std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoint& b,
+                                           const DesignConstraints& c) {
+  const std::string line = label(a) + " -> " + label(b);
+  std::pair<double, double> all{0.0, 1.0};
+  // Each constraint's own interval first, so that one which leaves nothing is named.
+  const auto take = [&](std::pair<double, double> own, const std::string& what) {
+    if (own.first > own.second) throw std::invalid_argument("no design on the line " + line + " has " + what);
+    all = {std::max(all.first, own.first), std::min(all.second, own.second)};
+  };
+  const double ta = a.tip_diameter_m, tb = b.tip_diameter_m;
+  if (c.min_tip_m)
+    take(where_at_most(*c.min_tip_m - ta, *c.min_tip_m - tb, kSlack * *c.min_tip_m), "a tip of at least " + mm(*c.min_tip_m));
+  if (c.max_tip_m)
+    take(where_at_most(ta - *c.max_tip_m, tb - *c.max_tip_m, kSlack * *c.max_tip_m), "a tip of at most " + mm(*c.max_tip_m));
+  std::set<std::string> materials;
+  for (const auto* p : {&a, &b})
+    for (const auto& share : p->mix) materials.insert(share.material);
+  for (const auto& m : materials)
+    if (!allowed(c, m)) take(where_at_most(a.fraction_of(m), b.fraction_of(m), kSlack), "no " + m + " (not allowed)");
+  if (c.max_cost) {
+    std::ostringstream what;
+    what << "a cost of at most " << *c.max_cost;
+    take(where_at_most(design_cost(a, c.cost) - *c.max_cost, design_cost(b, c.cost) - *c.max_cost,
+                       kSlack * std::max(1.0, std::abs(*c.max_cost))),
+         what.str());
+  }
+  if (all.first > all.second)
+    throw std::invalid_argument("no design on the line " + line + " satisfies the constraints together");
+  return all;
+}
+
+}  // namespace nibrig::model::design

@@ -1,0 +1,43 @@
+// What a printed design must satisfy, beyond lying in the fitted range (the paper's future work,
+// Sec. 7): a tip diameter range, the materials a printer may load, and a limit on a proxy the user
+// gives per material — a price, a wear rate — summed over the tip's mix by its fractions. Every
+// constraint is linear in a design's fractions and tip, so along the line between two designs the
+// designs that satisfy them all form one segment, and over a two-material range one rectangle.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/design/design_point.hpp"
+
+namespace nibrig::model::design {
+
+struct DesignConstraints {
+  std::optional<double> min_tip_m, max_tip_m;
+  std::vector<std::string> materials;  // those allowed; empty: every material
+  std::map<std::string, double> cost;  // per material, the user's proxy
+  std::optional<double> max_cost;      // of a design's mix; needs a cost for each of its materials
+  bool any() const {
+    return min_tip_m || max_tip_m || !materials.empty() || max_cost;
+  }
+};
+
+// Σ fraction · cost over the point's mix. Throws std::invalid_argument naming a material of the mix
+// that has no cost.
+double design_cost(const DesignPoint& point, const std::map<std::string, double>& cost);
+
+// Empty when the point satisfies every constraint; else the first it breaks, in words ("the tip
+// 4 mm is above the largest allowed, 3 mm").
+std::string broken_constraint(const DesignPoint& point, const DesignConstraints& constraints);
+
+// The part [lo, hi] of λ in [0, 1] (interpolate(a, b, λ)) whose designs satisfy every constraint;
+// lo == hi when one design does. Throws std::invalid_argument when none does, naming the
+// constraint that leaves nothing of the line (or saying that they do together), and for a cost
+// limit without a cost for a material on the line.
+std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoint& b,
+                                           const DesignConstraints& constraints);
+
+}  // namespace nibrig::model::design
