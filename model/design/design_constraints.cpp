@@ -35,6 +35,29 @@ std::pair<double, double> where_at_most(double g0, double g1, double slack) {
 
 }  // namespace
 
+std::string describe(const DesignConstraints& c) {
+  std::vector<std::string> parts;
+  if (c.min_tip_m && c.max_tip_m) parts.push_back("tips " + mm(*c.min_tip_m) + " to " + mm(*c.max_tip_m));
+  else if (c.min_tip_m) parts.push_back("tips of at least " + mm(*c.min_tip_m));
+  else if (c.max_tip_m) parts.push_back("tips of at most " + mm(*c.max_tip_m));
+  if (!c.materials.empty()) {
+    std::string m = "materials";
+    for (std::size_t i = 0; i < c.materials.size(); ++i) m += (i ? ", " : " ") + c.materials[i];
+    parts.push_back(m);
+  }
+  if (c.max_cost) {
+    std::ostringstream s;
+    s << "cost at most " << *c.max_cost << " (";
+    bool first = true;
+    for (const auto& [material, cost] : c.cost) s << (first ? "" : ", ") << material << " " << cost, first = false;
+    s << ")";
+    parts.push_back(s.str());
+  }
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : ", ") + p;
+  return out;
+}
+
 double design_cost(const DesignPoint& point, const std::map<std::string, double>& cost) {
   double sum = 0.0;
   for (const auto& share : point.mix) {

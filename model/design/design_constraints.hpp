@@ -25,6 +25,9 @@ struct DesignConstraints {
   }
 };
 
+// "tips 1.5 to 3 mm, materials vero, DM85, cost at most 2 (vero 1, DM85 3)": those set.
+std::string describe(const DesignConstraints& constraints);
+
 // Σ fraction · cost over the point's mix. Throws std::invalid_argument naming a material of the mix
 // that has no cost.
 double design_cost(const DesignPoint& point, const std::map<std::string, double>& cost);

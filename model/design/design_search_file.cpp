@@ -5,15 +5,33 @@
 
 namespace nibrig::model::design {
 
-nlohmann::json candidate_json(const Candidate& c) {
-  return {{"design", to_string(c.point)},
-          {"distance", c.distance},
-          {"distance_sd", c.distance_sd},
-          {"mu", c.mu},
-          {"weighted_mean", c.weighted_mean},
-          {"coordinates", std::vector<double>(c.placement.mean.data(),
-                                              c.placement.mean.data() + c.placement.mean.size())}};
+nlohmann::json candidate_json(const Candidate& c, const std::map<std::string, double>& cost) {
+  nlohmann::json j{{"design", to_string(c.point)},
+                   {"distance", c.distance},
+                   {"distance_sd", c.distance_sd},
+                   {"mu", c.mu},
+                   {"weighted_mean", c.weighted_mean},
+                   {"coordinates", std::vector<double>(c.placement.mean.data(),
+                                                       c.placement.mean.data() + c.placement.mean.size())},
+                   {"target_distances", c.target_distances},
+                   {"target_distance_sds", c.target_distance_sds}};
+  if (!cost.empty()) j["cost"] = design_cost(c.point, cost);
+  return j;
 }
+
+namespace {
+
+nlohmann::json constraints_json(const DesignConstraints& c) {
+  nlohmann::json j = nlohmann::json::object();
+  if (c.min_tip_m) j["min_tip_mm"] = *c.min_tip_m * 1e3;
+  if (c.max_tip_m) j["max_tip_mm"] = *c.max_tip_m * 1e3;
+  if (!c.materials.empty()) j["materials"] = c.materials;
+  if (!c.cost.empty()) j["cost"] = c.cost;
+  if (c.max_cost) j["max_cost"] = *c.max_cost;
+  return j;
+}
+
+}  // namespace
 
 nlohmann::json design_search_json(const SearchResult& result,
                                   const DesignSearchDescription& description) {
@@ -24,12 +42,16 @@ nlohmann::json design_search_json(const SearchResult& result,
   j["search"] = description.search;
   j["seconds"] = description.seconds;
   if (!description.space.empty()) j["space"] = description.space;
-  j["optimum"] = candidate_json(result.best());
+  if (!description.targets.empty()) j["targets"] = description.targets;
+  if (!description.aim.empty()) j["aim"] = description.aim;
+  const auto& cost = description.constraints.cost;
+  if (description.constraints.any() || !cost.empty()) j["constraints"] = constraints_json(description.constraints);
+  j["optimum"] = candidate_json(result.best(), cost);
   j["runners_up"] = nlohmann::json::array();
   for (std::size_t k : result.runners_up(description.runners_up))
-    j["runners_up"].push_back(candidate_json(result.evaluated[k]));
+    j["runners_up"].push_back(candidate_json(result.evaluated[k], cost));
   j["path"] = nlohmann::json::array();
-  for (const auto& c : result.evaluated) j["path"].push_back(candidate_json(c));
+  for (const auto& c : result.evaluated) j["path"].push_back(candidate_json(c, cost));
   return j;
 }
 

@@ -13,18 +13,27 @@ namespace nibrig::model::design {
 
 // What the search was: its target and surface, how it searched (in words), how long it took and
 // how many runners-up to report; the space file it searched in, empty when not named.
+// A group design names every target and its aim ("largest" or "mean" distance); `target` is then
+// their names joined. The constraints are written when any is set.
 struct DesignSearchDescription {
   std::string target, surface, search;
   double seconds = 0.0;
   std::size_t runners_up = 4;
   std::string space;
+  std::vector<std::string> targets;
+  std::string aim;
+  DesignConstraints constraints;
 };
 
-// One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates.
-nlohmann::json candidate_json(const Candidate& candidate);
+// One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates, and
+// target_distances / target_distance_sds (one per target, in the description's order); with
+// costs given, its cost.
+nlohmann::json candidate_json(const Candidate& candidate, const std::map<std::string, double>& cost = {});
 
-// kind "design_search": target, surface, search, seconds, space (when named), optimum, runners_up
-// (distinct designs, SearchResult::runners_up), path (every candidate in the order evaluated).
+// kind "design_search": target, surface, search, seconds, space (when named), targets and aim (a
+// group), constraints {min_tip_mm, max_tip_mm, materials, cost, max_cost} (when any), optimum,
+// runners_up (distinct designs, SearchResult::runners_up), path (every candidate in the order
+// evaluated).
 nlohmann::json design_search_json(const SearchResult& result,
                                   const DesignSearchDescription& description);
 

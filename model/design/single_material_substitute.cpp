@@ -8,6 +8,12 @@ namespace nibrig::model::design {
 std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
                                                     const space::Placement& target, int samples,
                                                     std::uint64_t seed) {
+  return single_material_substitutes(mix, from_mix, {target}, space::GroupAim::largest, samples, seed);
+}
+
+std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
+                                                    const std::vector<space::Placement>& targets,
+                                                    space::GroupAim aim, int samples, std::uint64_t seed) {
   std::vector<Substitute> out;
   if (mix.mix.size() < 2) return out;
   for (const auto& share : mix.mix) {
@@ -17,7 +23,7 @@ std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, cons
     s.cost = c.distance;
     s.cost_sd = c.distance_sd;
     std::mt19937_64 generator(seed);
-    const auto d = space::uncertain_distance(c.placement, target, samples, generator);
+    const auto d = space::uncertain_group_distance(c.placement, targets, aim, samples, generator).aggregate;
     s.to_target = d.between_means;
     s.to_target_sd = d.sd;
     out.push_back(s);

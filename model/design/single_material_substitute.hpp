@@ -3,6 +3,7 @@
 // it costs, as a distance in the space) and from the target the mix was searched for.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "model/design/design_search.hpp"
@@ -13,6 +14,9 @@ struct Substitute {
   DesignPoint point;                        // one material, the mix's tip
   double cost = 0.0, cost_sd = 0.0;         // distance of its placement from the mix's
   double to_target = 0.0, to_target_sd = 0.0;
+  // The constraint of the search it breaks (broken_constraint), empty when none: a substitute is
+  // what the printer can do, which the user's limits need not allow.
+  std::string outside_constraints;
 };
 
 // `from_mix` predicts a design and measures its distance to the mix's placement
@@ -21,6 +25,12 @@ struct Substitute {
 // search draws its own. Nearest to the mix first; empty for a design of one material.
 std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
                                                     const space::Placement& target, int samples = 2000,
+                                                    std::uint64_t seed = 1);
+// The same for a group design: to_target is the largest or mean distance to the targets, as the
+// group's search measured its candidates (space::uncertain_group_distance).
+std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
+                                                    const std::vector<space::Placement>& targets,
+                                                    space::GroupAim aim, int samples = 2000,
                                                     std::uint64_t seed = 1);
 
 }  // namespace nibrig::model::design

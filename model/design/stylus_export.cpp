@@ -109,12 +109,15 @@ nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& f
     j["regions"].push_back(r);
   }
   j["substitutes"] = nlohmann::json::array();
-  for (const auto& s : print.substitutes)
-    j["substitutes"].push_back({{"design", to_string(s.point)},
-                                {"cost", s.cost},
-                                {"cost_sd", s.cost_sd},
-                                {"to_target", s.to_target},
-                                {"to_target_sd", s.to_target_sd}});
+  for (const auto& s : print.substitutes) {
+    nlohmann::json sub{{"design", to_string(s.point)},
+                       {"cost", s.cost},
+                       {"cost_sd", s.cost_sd},
+                       {"to_target", s.to_target},
+                       {"to_target_sd", s.to_target_sd}};
+    if (!s.outside_constraints.empty()) sub["outside_constraints"] = s.outside_constraints;
+    j["substitutes"].push_back(sub);
+  }
   j["files"]["three_mf"] = files.three_mf.filename().string();
   for (const auto& stl : files.stls) j["files"]["stls"].push_back(stl.filename().string());
   return j;

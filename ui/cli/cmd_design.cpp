@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <iostream>
+#include <cmath>
+#include <map>
 #include <optional>
 
 #include "model/design/design_search.hpp"
@@ -34,7 +36,8 @@ namespace design = model::design;
 namespace space = model::space;
 
 struct DesignOptions {
-  std::string target;   // "tool/surface", judged in the space or placed from the catalog
+  std::vector<std::string> targets;  // "tool/surface", judged in the space or placed from the catalog
+  std::string aim = "largest";       // of a group's distances: largest or mean
   std::string surface;  // the artificial surface the stylus is for
   std::filesystem::path space_file;
   std::vector<std::string> between;  // two designs: a line search; none: the whole range
@@ -45,7 +48,54 @@ struct DesignOptions {
   std::filesystem::path output = "design_search.json";
   std::filesystem::path plot;
   std::filesystem::path export_folder;  // the optimum's stylus files
+  std::optional<double> min_tip_mm, max_tip_mm;
+  std::vector<std::string> allow;  // materials a printer may load
+  std::string cost;                // "vero=1,DM85=3"
+  std::optional<double> max_cost;
 };
+
+// --cost "vero=1,DM85=3": a number per material.
+std::map<std::string, double> parse_costs(const std::string& text) {
+  std::map<std::string, double> out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    const auto eq = item.find('=');
+    double value = 0;
+    std::size_t used = 0;
+    try {
+      if (eq != std::string::npos) value = std::stod(item.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (eq == std::string::npos || eq == 0 || used == 0 || used != item.size() - eq - 1 || !std::isfinite(value))
+      throw CLI::ValidationError("--cost", "'" + item + "' is not material=number (e.g. vero=1,DM85=3)");
+    out[item.substr(0, eq)] = value;
+    at = comma + 1;
+  }
+  return out;
+}
+
+design::DesignConstraints constraints_of(const DesignOptions& o) {
+  design::DesignConstraints c;
+  if (o.min_tip_mm) c.min_tip_m = *o.min_tip_mm * 1e-3;
+  if (o.max_tip_mm) c.max_tip_m = *o.max_tip_mm * 1e-3;
+  if (c.min_tip_m && c.max_tip_m && *c.min_tip_m > *c.max_tip_m)
+    throw CLI::ValidationError("--min-tip-mm", "is above --max-tip-mm");
+  c.materials = o.allow;
+  c.cost = parse_costs(o.cost);
+  c.max_cost = o.max_cost;
+  if (c.max_cost && c.cost.empty())
+    throw CLI::ValidationError("--max-cost", "limits the cost --cost gives each material: give --cost too");
+  return c;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
 
 void run_design(const DesignOptions& o) {
   if (!o.export_folder.empty()) design::check_stylus_folder(o.export_folder);  // before minutes of search
@@ -59,18 +109,27 @@ void run_design(const DesignOptions& o) {
   model::space::StimulusLocator locator(space_file, o.space_file, catalog_path);
   // An unknown --target is a usage error that names the option and the choices, as other options'
   // refusals do; the locator's own reason (which file lacks it) is kept in the message.
-  const space::Placement target = [&] {
+  const auto locate = [&](const std::string& name) {
     try {
-      return locator.locate(o.target, o.space_file);
+      return locator.locate(name, o.space_file);
     } catch (const std::exception& e) {  // FormatError from the catalog, invalid_argument here
-      std::string judged;
-      for (const auto& s : space_file.stimuli) judged += (judged.empty() ? "" : ", ") + s;
       throw CLI::ValidationError(
-          "--target", "'" + o.target + "' cannot be placed: " + e.what() +
-                          "; choices: a stimulus judged in the space (" + judged +
+          "--target", "'" + name + "' cannot be placed: " + e.what() +
+                          "; choices: a stimulus judged in the space (" + joined(space_file.stimuli) +
                           ") or a tool/surface pairing of " + catalog_path.string());
     }
-  }();
+  };
+  std::vector<space::Placement> targets;
+  for (const auto& name : o.targets) targets.push_back(locate(name));
+  const bool group = targets.size() > 1;
+  if (o.aim != "largest" && o.aim != "mean")
+    throw CLI::ValidationError("--aim", "'" + o.aim + "' is not largest or mean");
+  const auto aim = o.aim == "mean" ? space::GroupAim::mean : space::GroupAim::largest;
+  const auto constraints = constraints_of(o);
+  const std::string target_words =
+      group ? fmt::format("{} ({} of {} targets)", joined(o.targets), o.aim == "mean" ? "mean distance" : "largest distance",
+                          o.targets.size())
+            : o.targets.front();
 
   std::optional<design::DesignPoint> a, b;
   if (!o.between.empty()) {
@@ -80,6 +139,7 @@ void run_design(const DesignOptions& o) {
     b = design::parse_design_point(o.between[1]);
   }
   design::RangeSearchOptions range;
+  range.constraints = constraints;
   if (const auto comma = o.mix.find(','); comma != std::string::npos) {
     range.first_material = o.mix.substr(0, comma);
     range.second_material = o.mix.substr(comma + 1);
@@ -96,7 +156,8 @@ void run_design(const DesignOptions& o) {
 
   std::size_t evaluations = 0;
   const design::Evaluate distance =
-      design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, target);
+      group ? design::distance_to_targets(inputs->setup, o.surface, *space_file.descriptor_map, targets, aim)
+            : design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, targets.front());
   const design::Evaluate counted = [&](const design::DesignPoint& p) {
     auto c = distance(p);
     spdlog::debug("{}: distance {:.3f}", design::to_string(p), c.distance);
@@ -104,7 +165,8 @@ void run_design(const DesignOptions& o) {
     return c;
   };
   const auto start = std::chrono::steady_clock::now();
-  const design::LineSearchOptions line;
+  design::LineSearchOptions line;
+  line.constraints = constraints;
   const auto last_of_scan = static_cast<std::size_t>(line.scan_points - 1);
   std::optional<Progress> bar;  // made with the first candidate, when the search's total is known
   const design::SearchProgress progress = [&](const design::Candidate& c, std::size_t,
@@ -121,37 +183,54 @@ void run_design(const DesignOptions& o) {
       a ? fmt::format("along the line {} -> {}", o.between[0], o.between[1])
         : fmt::format("over {} to {} x tips {:g}-{:g} mm", range.first_material,
                       range.second_material, range.min_tip_m * 1e3, range.max_tip_m * 1e3);
-  std::cout << fmt::format("target {} ({}); designs on {} {}: {} predicted in {:.1f} s\n",
-                           o.target, locator.placed(o.target) ? "placed from its descriptors" : "judged",
-                           o.surface, how, evaluations, seconds);
+  std::string placed_words;
+  for (const auto& name : o.targets)
+    placed_words += fmt::format("{}{} ({})", placed_words.empty() ? "" : ", ", name,
+                                locator.placed(name) ? "placed from its descriptors" : "judged");
+  std::cout << fmt::format("{} {}; designs on {} {}: {} predicted in {:.1f} s\n", group ? "targets" : "target",
+                           placed_words, o.surface, how, evaluations, seconds);
+  if (constraints.any()) std::cout << "within " << design::describe(constraints) << "\n";
   const auto& best = result.best();
-  std::cout << fmt::format("optimum {}: distance {:.3f} ± {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}\n",
-                           design::label(best.point), best.distance, best.distance_sd, best.mu,
-                           best.weighted_mean);
+  std::cout << fmt::format("optimum {}: {}distance {:.3f} ± {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}{}\n",
+                           design::label(best.point), group ? o.aim + " " : "", best.distance, best.distance_sd,
+                           best.mu, best.weighted_mean,
+                           constraints.cost.empty() ? std::string()
+                                                    : fmt::format(", cost {:.4g}", design::design_cost(best.point, constraints.cost)));
+  if (group)
+    for (std::size_t t = 0; t < o.targets.size(); ++t)
+      std::cout << fmt::format("  to {}: {:.3f} ± {:.3f}\n", o.targets[t], best.target_distances[t],
+                               best.target_distance_sds[t]);
   const auto runners = result.runners_up(static_cast<std::size_t>(o.runners_up));
   for (std::size_t k = 0; k < runners.size(); ++k) {
     const auto& c = result.evaluated[runners[k]];
     std::cout << fmt::format("  runner-up {}: {} distance {:.3f} ± {:.3f}\n", k + 1,
                              design::label(c.point), c.distance, c.distance_sd);
   }
-  if (a) {
+  // The scan's ends: the two designs, or the ends of the segment the constraints allow of the line.
+  const bool scanned = a && result.evaluated.size() > last_of_scan;
+  if (scanned) {
     const auto& first = result.evaluated.front();
-    std::cout << fmt::format("  the two designs themselves: {} {:.3f}, {} {:.3f}\n",
-                             o.between[0], first.distance, o.between[1],
-                             result.evaluated[last_of_scan].distance);
+    const auto& last = result.evaluated[last_of_scan];
+    std::cout << fmt::format("  {}: {} {:.3f}, {} {:.3f}\n",
+                             constraints.any() ? "the ends of the line allowed" : "the two designs themselves",
+                             design::label(first.point), first.distance, design::label(last.point), last.distance);
   }
 
   ensure_folder(o.output.parent_path());
-  design::write_design_search(o.output, result,
-                              {o.target, o.surface, how, seconds,
-                               static_cast<std::size_t>(o.runners_up), o.space_file.string()});
+  design::DesignSearchDescription description{target_words, o.surface, how, seconds,
+                                               static_cast<std::size_t>(o.runners_up), o.space_file.string(),
+                                               {}, {}, constraints};
+  if (group) description.targets = o.targets, description.aim = o.aim;
+  design::write_design_search(o.output, result, description);
   say_wrote(o.output);
   if (!o.plot.empty()) {
     ensure_folder(o.plot.parent_path());
     std::vector<std::size_t> ends;
-    if (a) ends = {0, last_of_scan};
-    write_search_plot(space_file, o.target, locator.placed(o.target) ? &target : nullptr, result,
-                      ends, o.surface, o.plot);
+    if (scanned) ends = {0, last_of_scan};
+    std::vector<figures::PlacedTool> placed_targets;
+    for (std::size_t t = 0; t < targets.size(); ++t)
+      if (locator.placed(o.targets[t])) placed_targets.push_back({o.targets[t], targets[t], "target", true});
+    write_search_plot(space_file, target_words, placed_targets, result, ends, o.surface, o.plot);
     say_wrote(o.plot);
   }
   if (!o.export_folder.empty()) {
@@ -159,14 +238,19 @@ void run_design(const DesignOptions& o) {
     // A printer that cannot mix prints one material: each alone at the optimum's tip, placed.
     print.substitutes = design::single_material_substitutes(
         best.point, design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, best.placement),
-        target);
-    for (const auto& s : print.substitutes)
-      std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the optimum ({:.3f} ± {:.3f} from the target)\n",
-                               design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd);
+        targets, aim);
+    for (auto& s : print.substitutes) {
+      s.outside_constraints = design::broken_constraint(s.point, constraints);
+      std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the optimum ({:.3f} ± {:.3f} from {}){}\n",
+                               design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd,
+                               group ? "the targets, " + o.aim : "the target",
+                               s.outside_constraints.empty() ? "" : "; outside the constraints: " + s.outside_constraints);
+    }
     const auto tool = design::predict_tool(inputs->setup, best.point, o.surface);  // the sheet's spectrum
-    figures::StylusSheetInputs sheet{&tool, &space_file, best.placement, {}};
-    sheet.targets.push_back({o.target, locator.placed(o.target) ? std::optional(target) : std::nullopt,
-                             best.distance, best.distance_sd});
+    figures::StylusSheetInputs sheet{&tool, &space_file, best.placement, {}, o.aim};
+    for (std::size_t t = 0; t < targets.size(); ++t)
+      sheet.targets.push_back({o.targets[t], locator.placed(o.targets[t]) ? std::optional(targets[t]) : std::nullopt,
+                               best.target_distances[t], best.target_distance_sds[t]});
     print_stylus_files(print, figures::export_stylus(o.export_folder / "stylus.3mf", print, sheet));
   }
 }
@@ -182,9 +266,22 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "descriptors; the distance to the target is between the placements' means, with its\n"
       "spread from their uncertainties. --between searches the line between two designs (a scan of\n"
       "9 points, then golden sections); otherwise the whole range of a two-material mix (--mix)\n"
-      "and the fitted tips (a 5 x 4 grid refined twice).");
-  cmd->add_option("--target", o->target, "Target tool as tool/surface (e.g. cryon/office)")
-      ->required();
+      "and the fitted tips (a 5 x 4 grid refined twice). Several --target: one design for the\n"
+      "group, minimising the largest (or --aim mean) distance. --min-tip-mm, --max-tip-mm,\n"
+      "--allow and --max-cost (with --cost) restrict both searches to the designs they allow.");
+  cmd->add_option("--target", o->targets,
+                  "Target tool as tool/surface (e.g. cryon/office); several: one design for the group")
+      ->required()
+      ->take_all();
+  cmd->add_option("--aim", o->aim, "A group's distance to minimise: largest or mean")->capture_default_str();
+  cmd->add_option("--min-tip-mm", o->min_tip_mm, "Smallest tip diameter allowed (mm)")
+      ->check(in_range(0.01, 100, "a tip diameter in mm"));
+  cmd->add_option("--max-tip-mm", o->max_tip_mm, "Largest tip diameter allowed (mm)")
+      ->check(in_range(0.01, 100, "a tip diameter in mm"));
+  cmd->add_option("--allow", o->allow, "Materials a printer may load (default: all), e.g. vero,DM85")
+      ->delimiter(',');
+  cmd->add_option("--cost", o->cost, "A cost or durability proxy per material, e.g. vero=1,DM85=3");
+  cmd->add_option("--max-cost", o->max_cost, "Largest cost of a design's mix (fractions times --cost)");
   cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)")
       ->required();
   cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)")

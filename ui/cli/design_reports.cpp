@@ -12,11 +12,10 @@ namespace nibrig::ui::cli {
 namespace design = model::design;
 
 void write_search_plot(const model::space::SpaceFile& space, const std::string& target,
-                       const model::space::Placement* placed_target,
+                       const std::vector<PlacedTool>& placed_targets,
                        const design::SearchResult& result, const std::vector<std::size_t>& ends,
                        const std::string& surface, const std::filesystem::path& png) {
-  std::vector<PlacedTool> placed;
-  if (placed_target != nullptr) placed.push_back({target, *placed_target, "target", true});
+  std::vector<PlacedTool> placed = placed_targets;
   for (std::size_t k = 0; k < result.evaluated.size(); ++k) {
     if (k == result.ranked.front()) continue;
     const auto& c = result.evaluated[k];

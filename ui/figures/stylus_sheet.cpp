@@ -19,7 +19,10 @@ using Lines = std::vector<report::SheetLine>;
 void heading(Lines& lines, std::string text) { lines.push_back({std::move(text), true}); }
 void line(Lines& lines, std::string text) { lines.push_back({std::move(text), false}); }
 
-void print_lines(Lines& lines, const design::StylusPrint& print, const design::StylusFiles& files) {
+// `targets`: how the substitutes' distance to what the design was searched for reads ("target",
+// or "targets (largest)" for a group).
+void print_lines(Lines& lines, const design::StylusPrint& print, const design::StylusFiles& files,
+                 const std::string& targets) {
   heading(lines, "Design");
   line(lines, design::to_string(print.point));
   line(lines, fmt::format("meshed at {:.2f} mm, as the prediction solved it", print.design.mesh_size * 1e3));
@@ -32,8 +35,9 @@ void print_lines(Lines& lines, const design::StylusPrint& print, const design::S
   if (!print.substitutes.empty()) {
     heading(lines, "Without mixing (distance in the space)");
     for (const auto& s : print.substitutes)
-      line(lines, fmt::format("{}: {:.3f} ± {:.3f} from this design, {:.3f} ± {:.3f} from the target",
-                              design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd));
+      line(lines, fmt::format("{}: {:.3f} ± {:.3f} from this design, {:.3f} ± {:.3f} from the {}{}",
+                              design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd, targets,
+                              s.outside_constraints.empty() ? "" : "; outside the constraints: " + s.outside_constraints));
   }
 }
 
@@ -71,7 +75,8 @@ report::PrintSheet stylus_sheet(const design::StylusPrint& print, const design::
 
   report::PrintSheet sheet;
   sheet.title = "nibrig stylus " + design::label(print.point);
-  print_lines(sheet.lines, print, files);
+  print_lines(sheet.lines, print, files,
+              inputs.targets.size() > 1 ? "targets (" + inputs.aim + ")" : std::string("target"));
 
   heading(sheet.lines, inputs.tool ? "Predicted on " + inputs.tool->surface : "Predicted");
   if (inputs.tool) {

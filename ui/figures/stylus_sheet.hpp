@@ -34,6 +34,7 @@ struct StylusSheetInputs {
   const model::space::SpaceFile* space = nullptr;
   std::optional<model::space::Placement> placement;  // the design's, in that space
   std::vector<SheetTarget> targets;
+  std::string aim = "largest";  // a group's: the largest or mean distance was minimised
 };
 
 // The sheet's content as a figure: its text lines (the design, the print's regions with their

@@ -153,7 +153,7 @@ struct PrintSheet {
   std::vector<SheetLine> lines;
   std::optional<LinePlot> line_plot;
   std::optional<ScatterPlot> scatter_plot;
-  ImageSize size{2000, 1250};
+  ImageSize size{2000, 1500};
 };
 
 // Each writes png through a temporary file in the same folder and a rename, so the path holds

@@ -91,7 +91,7 @@ void write_print_sheet(const PrintSheet& sheet, const std::filesystem::path& png
   const Box right{split, 0.0, width, below_title};
   // The line plot above the scatter when both: a spectrum reads well wide and low, a space needs
   // height for its equal axes.
-  const double line_share = sheet.scatter_plot ? 0.42 : 1.0;
+  const double line_share = sheet.scatter_plot ? 0.40 : 1.0;
   const Box upper{right.x0, right.y1 - line_share * right.height(), right.x1, right.y1};
   const Box lower{right.x0, right.y0, right.x1, sheet.line_plot ? upper.y0 : right.y1};
 

@@ -25,6 +25,8 @@ SearchResult design_search_file_result() {
     c.weighted_mean = 0.07 * tip_mm;
     c.placement.mean = Eigen::Vector2d(fraction - 0.5, tip_mm / 3);
     c.placement.covariance = Eigen::Matrix2d::Identity() * 0.01;
+    c.target_distances = {c.distance, c.distance + 1};
+    c.target_distance_sds = {c.distance_sd, c.distance_sd};
     return c;
   };
   return line_search(parse_design_point("vero,tip=1mm"), parse_design_point("DM85,tip=4mm"),
@@ -35,7 +37,7 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
   const SearchResult result = design_search_file_result();
   const DesignSearchDescription description{"cryon/office", "glass",
                                             "along the line vero,tip=1mm -> DM85,tip=4mm", 1.25, 3,
-                                            "space.json"};
+                                            "space.json", {}, {}, {}};
   const auto file = nibrig::test::scratch_dir("design_search_file") / "design_search.json";
   write_design_search(file, result, description);
   std::ifstream in(file);
@@ -57,6 +59,8 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
     ASSERT_EQ(coordinates.size(), 2u);
     EXPECT_EQ(coordinates[0], expected.placement.mean(0));
     EXPECT_EQ(coordinates[1], expected.placement.mean(1));
+    EXPECT_EQ(c.at("target_distances").get<std::vector<double>>(), expected.target_distances);
+    EXPECT_EQ(c.at("target_distance_sds").get<std::vector<double>>(), expected.target_distance_sds);
   };
   check(j.at("optimum"), result.best());
   const auto runners = result.runners_up(3);
@@ -71,6 +75,24 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
   DesignSearchDescription unnamed = description;
   unnamed.space.clear();
   EXPECT_FALSE(design_search_json(result, unnamed).contains("space"));
+  EXPECT_FALSE(design_search_json(result, unnamed).contains("constraints"));
+
+  // A group with constraints: its targets, aim and constraints, and each candidate's cost, the
+  // fractions times the costs given.
+  DesignSearchDescription group = description;
+  group.targets = {"cryon/office", "pencil/office"};
+  group.aim = "largest";
+  group.constraints.max_tip_m = 0.003;
+  group.constraints.cost = {{"vero", 1.0}, {"DM85", 3.0}};
+  group.constraints.max_cost = 2.5;
+  const auto g = design_search_json(result, group);
+  EXPECT_EQ(g.at("targets").get<std::vector<std::string>>(), group.targets);
+  EXPECT_EQ(g.at("aim"), "largest");
+  EXPECT_DOUBLE_EQ(g.at("constraints").at("max_tip_mm").get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(g.at("constraints").at("max_cost").get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(g.at("constraints").at("cost").at("DM85").get<double>(), 3.0);
+  const double f = result.best().point.fraction_of("DM85");
+  EXPECT_NEAR(g.at("optimum").at("cost").get<double>(), (1 - f) * 1.0 + f * 3.0, 1e-12);
 }
 
 TEST(DesignSearchFile, RefusesANonFiniteDistanceNamingTheField) {
@@ -78,7 +100,7 @@ TEST(DesignSearchFile, RefusesANonFiniteDistanceNamingTheField) {
   result.evaluated.back().distance_sd = std::nan("");
   const auto file = nibrig::test::scratch_dir("design_search_file_nan") / "broken.json";
   try {
-    write_design_search(file, result, {"cryon/office", "glass", "a line", 1.0, 4, ""});
+    write_design_search(file, result, {"cryon/office", "glass", "a line", 1.0, 4, "", {}, {}, {}});
     FAIL() << "wrote a NaN";
   } catch (const io::UnwritableOutput& e) {
     EXPECT_NE(std::string(e.what()).find("distance_sd"), std::string::npos) << e.what();

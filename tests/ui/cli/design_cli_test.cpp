@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -144,6 +145,72 @@ void expect_placed_with_its_descriptor_error(const std::filesystem::path& out,
     EXPECT_NEAR(grown, added(d, d), 1e-6 * (1 + added(d, d))) << "axis " << d + 1;
     EXPECT_GT(added(d, d), 0.0);
   }
+}
+
+// One design for two tools (Sec. 7): the measured DM85 tool on glass and the judged crayon on office
+// paper, with tips of at most 3 mm and a cost limit that excludes pure DM85 — every candidate keeps
+// to them, the optimum's group distance is its largest, its distance to the judged target is the
+// one between their coordinates, and the export says which single material breaks the limit.
+void expect_a_group_design_within_constraints(const std::filesystem::path& out,
+                                              const std::filesystem::path& space_file,
+                                              const std::vector<std::string>& coarse) {
+  std::vector<std::string> args{"design", "--target", "DM854/glass", "cryon/office", "--surface", "glass",
+                                "--space", space_file.string(), "--forcing", (out / "forcing.json").string(),
+                                "--between", "vero,tip=1mm", "DM85,tip=4mm", "--max-tip-mm", "3", "--cost",
+                                "vero=1,DM85=3", "--max-cost", "2.5", "-o", (out / "group.json").string(),
+                                "--export", (out / "group").string()};
+  args.insert(args.end(), coarse.begin(), coarse.end());
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli(args);
+  const std::string text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(code, 0) << text;
+  const auto search = read_json(out / "group.json");
+  EXPECT_EQ(search["targets"].get<std::vector<std::string>>(), (std::vector<std::string>{"DM854/glass", "cryon/office"}));
+  EXPECT_EQ(search["aim"], "largest");
+  for (const auto& c : search["path"]) {
+    const auto point = model::design::parse_design_point(c["design"].get<std::string>());
+    EXPECT_LE(point.tip_diameter_m, 0.003 * (1 + 1e-9)) << c["design"];
+    EXPECT_LE(c["cost"].get<double>(), 2.5 + 1e-9) << c["design"];
+    const double f = point.fraction_of("DM85");
+    // The fractions times --cost; the design's text keeps 6 digits of a fraction (5e-7), times the
+    // costs' difference, 2.
+    EXPECT_NEAR(c["cost"].get<double>(), (1 - f) * 1.0 + f * 3.0, 1e-6);
+  }
+  const auto& optimum = search["optimum"];
+  const auto each = optimum["target_distances"].get<std::vector<double>>();
+  ASSERT_EQ(each.size(), 2u);
+  EXPECT_EQ(optimum["distance"].get<double>(), std::max(each[0], each[1]));
+  // The crayon was judged: its place is the space file's; the optimum's is in the search's JSON.
+  const auto space = space::read_space_file(space_file);
+  const auto judged = std::find(space.stimuli.begin(), space.stimuli.end(), "cryon/office") - space.stimuli.begin();
+  const auto coordinates = optimum["coordinates"].get<std::vector<double>>();
+  double squared = 0;
+  for (std::size_t d = 0; d < coordinates.size(); ++d)
+    squared += std::pow(coordinates[d] - space.coordinates(static_cast<Eigen::Index>(d), judged), 2);
+  EXPECT_NEAR(each[1], std::sqrt(squared), 1e-12);
+  EXPECT_TRUE(is_png(out / "group" / "stylus-sheet.png"));
+  const auto recipe = read_json(out / "group" / "stylus.json");
+  for (const auto& sub : recipe["substitutes"])
+    EXPECT_EQ(sub.contains("outside_constraints"), sub["design"].get<std::string>().rfind("DM85:1,", 0) == 0) << sub;
+
+  // Constraints that cannot be met, or a cost limit without costs: refused, naming what.
+  const auto refused = [&](std::vector<std::string> extra, const std::string& named) {
+    std::vector<std::string> bad{"design", "--target", "DM854/glass", "--surface", "glass", "--space",
+                                 space_file.string(), "--forcing", (out / "forcing.json").string(), "--between",
+                                 "vero,tip=1mm", "DM85,tip=4mm", "-o", (out / "refused.json").string()};
+    bad.insert(bad.end(), extra.begin(), extra.end());
+    ::testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
+    const int failed = run_cli(bad);
+    ::testing::internal::GetCapturedStdout();
+    const std::string error = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(failed, 0) << named;
+    EXPECT_NE(error.find(named), std::string::npos) << error;
+  };
+  refused({"--max-cost", "2"}, "--max-cost");
+  refused({"--max-tip-mm", "0.5"}, "at most 0.5 mm");
+  refused({"--cost", "vero=1,DM85"}, "--cost");
+  EXPECT_FALSE(std::filesystem::exists(out / "refused.json"));
 }
 
 TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
@@ -289,6 +356,8 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_NE(error.find("--target"), std::string::npos) << "names the option: " << error;
   EXPECT_NE(error.find("nothing/glass"), std::string::npos) << error;
   EXPECT_NE(error.find("choices: "), std::string::npos) << "lists what it accepts: " << error;
+
+  expect_a_group_design_within_constraints(out, space_file, coarse);
 }
 
 }  // namespace
