@@ -26,8 +26,8 @@ void print_lines(Lines& lines, const design::StylusPrint& print, const design::S
   heading(lines, "Design");
   line(lines, design::to_string(print.point));
   line(lines, fmt::format("meshed at {:.2f} mm, as the prediction solved it", print.design.mesh_size * 1e3));
-  heading(lines, fmt::format("Print: one part of {} objects ({})", print.regions.size(),
-                             files.three_mf.filename().string()));
+  heading(lines, fmt::format("Print: one part of {} object{} ({})", print.regions.size(),
+                             print.regions.size() == 1 ? "" : "s", files.three_mf.filename().string()));
   for (const auto& region : print.regions)
     line(lines, fmt::format("{}: {}, {:.1f} mm3", region.surface.name,
                             design::printer_material(region),

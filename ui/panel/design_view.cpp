@@ -81,7 +81,7 @@ void DesignView::stop_work() {
 void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map) {
   space_->set_scene(scene);
   map_ = std::move(map);
-  target_.reset();
+  targets_.clear();
   search_.reset();
   update_design(false);
 }
@@ -140,13 +140,34 @@ void DesignView::set_design(double fraction, double tip_mm) {
 
 void DesignView::set_target(std::size_t tool) {
   if (tool >= space_->scene().tools.size()) return;
-  target_ = tool;
+  const auto at = std::find(targets_.begin(), targets_.end(), tool);
+  if (!group_mode_) {
+    targets_ = {tool};
+  } else if (at == targets_.end()) {
+    targets_.push_back(tool);
+  } else {
+    targets_.erase(at);
+  }
   search_.reset();
   update_design(true);
 }
 
+void DesignView::set_group_mode(bool group) {
+  group_mode_ = group;
+  if (!group && targets_.size() > 1) targets_.resize(1), search_.reset();
+}
+
 std::string DesignView::surface() const {
-  return target_ ? space_->scene().tools[*target_].choice.surface : "office";
+  return targets_.empty() ? "office" : space_->scene().tools[targets_.front()].choice.surface;
+}
+
+design::Evaluate DesignView::search_evaluation() const {
+  auto predict = design::grid_predictor(inputs_->setup, *grid_, surface());
+  std::vector<model::space::Placement> placements;
+  for (std::size_t t : targets_) placements.push_back(placement_of(space_->scene().tools[t]));
+  // 500 draws: a search compares hundreds of candidates per slider-speed interaction.
+  if (placements.size() == 1) return design::distance_to_target(std::move(predict), *map_, placements.front(), 500);
+  return design::distance_to_targets(std::move(predict), *map_, std::move(placements), aim_, 500);
 }
 
 void DesignView::update_design(bool sound) {
@@ -169,24 +190,26 @@ void DesignView::update_design(bool sound) {
 }
 
 void DesignView::search(bool two_d) {
-  if (!inputs_ || !grid_ || !map_ || !target_) {
+  if (!inputs_ || !grid_ || !map_ || targets_.empty()) {
     error_ = "a search needs the grid, a space with a descriptor map and a target tool";
     return;
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    const auto evaluate = design::distance_to_target(design::grid_predictor(inputs_->setup, *grid_, surface()), *map_,
-                                                     placement_of(space_->scene().tools[*target_]), 500);
+    const auto evaluate = search_evaluation();
     if (two_d) {
       design::RangeSearchOptions options;
       options.first_material = grid_->axes.material_a;
       options.second_material = grid_->axes.material_b;
       options.min_tip_m = grid_->axes.tips_m.front();
       options.max_tip_m = grid_->axes.tips_m.back();
+      options.constraints = constraints_;
       search_ = design::range_search(evaluate, options);
     } else {
+      design::LineSearchOptions options;
+      options.constraints = constraints_;
       search_ = design::line_search(design::grid_point(grid_->axes, 0.0, tip_mm_ * 1e-3),
-                                    design::grid_point(grid_->axes, 1.0, tip_mm_ * 1e-3), evaluate);
+                                    design::grid_point(grid_->axes, 1.0, tip_mm_ * 1e-3), evaluate, options);
     }
     const auto& best = search_->best().point;
     set_design(best.fraction_of(grid_->axes.material_b), best.tip_diameter_m * 1e3);
@@ -210,18 +233,18 @@ std::string DesignView::save_prediction(const std::filesystem::path& file) const
 std::function<void()> DesignView::stylus_export(const std::filesystem::path& file,
                                                 std::optional<model::space::SpaceFile> space) const {
   if (!predicted_ || !inputs_) return {};
-  // The design is placed on the sheet when there is a space with a map and a target to measure
-  // the distance to; a judged target is drawn by the space itself, a placed one as placed.
-  std::optional<std::pair<figures::SheetTarget, model::space::Placement>> target;
-  if (target_ && map_ && space) {
-    const auto& t = space_->scene().tools[*target_];
-    const auto placement = placement_of(t);
-    target.emplace(figures::SheetTarget{t.choice.tool + "/" + t.choice.surface,
-                                        t.judged ? std::nullopt : std::optional(placement)},
-                   placement);
-  }
+  // The design is placed on the sheet when there is a space with a map and targets to measure the
+  // distance to; a judged target is drawn by the space itself, a placed one as placed.
+  std::vector<figures::SheetTarget> targets;
+  std::vector<model::space::Placement> placements;
+  if (map_ && space)
+    for (std::size_t i : targets_) {
+      const auto& t = space_->scene().tools[i];
+      placements.push_back(placement_of(t));
+      targets.push_back({t.choice.tool + "/" + t.choice.surface, t.judged ? std::nullopt : std::optional(placements.back())});
+    }
   return [file, point = predicted_->point, surface = surface(), inputs = inputs_, map = map_,
-          space = std::move(space), target = std::move(target)] {
+          space = std::move(space), targets = std::move(targets), placements = std::move(placements), aim = aim_] {
     // The sheet's prediction solves the design itself (the sliders show the grid's interpolation).
     std::optional<design::PredictedTool> tool;
     const design::Predict predict = [&](const design::DesignPoint& p) {
@@ -229,13 +252,16 @@ std::function<void()> DesignView::stylus_export(const std::filesystem::path& fil
       return *tool;
     };
     figures::StylusSheetInputs sheet;
-    if (target) {
-      const auto candidate = design::distance_to_target(predict, *map, target->second)(point);
-      auto sheet_target = target->first;
-      sheet_target.distance = candidate.distance, sheet_target.distance_sd = candidate.distance_sd;
+    sheet.aim = aim == model::space::GroupAim::mean ? "mean" : "largest";
+    if (!placements.empty()) {
+      const auto candidate = design::distance_to_targets(predict, *map, placements, aim)(point);
       sheet.space = &*space;
       sheet.placement = candidate.placement;
-      sheet.targets.push_back(sheet_target);
+      sheet.targets = targets;
+      for (std::size_t t = 0; t < targets.size(); ++t) {
+        sheet.targets[t].distance = candidate.target_distances[t];
+        sheet.targets[t].distance_sd = candidate.target_distance_sds[t];
+      }
     } else {
       predict(point);
     }
@@ -330,12 +356,79 @@ void DesignView::draw() {
   ImGui::EndChild();
 }
 
-void DesignView::draw_controls() {
-  section("Target");
-  ImGui::TextDisabled("click a tool in the space");
-  if (target_) ImGui::TextWrapped("%s", space_->scene().tools[*target_].label.c_str());
-  else ImGui::TextWrapped("none yet");
+void DesignView::draw_target_controls() {
+  section(targets_.size() > 1 ? "Targets" : "Target");
+  ImGui::TextDisabled(group_mode_ ? "click tools to add or remove them" : "click a tool in the space");
+  if (targets_.empty()) ImGui::TextWrapped("none yet");
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    const auto& t = space_->scene().tools[targets_[i]];
+    if (search_ && search_->best().target_distances.size() == targets_.size())
+      ImGui::TextWrapped("%s: %.2f (sd %.2f)", t.label.c_str(), search_->best().target_distances[i],
+                         search_->best().target_distance_sds[i]);
+    else
+      ImGui::TextWrapped("%s", t.label.c_str());
+  }
+  bool group = group_mode_;
+  if (ImGui::Checkbox("one design for a group", &group)) set_group_mode(group);
+  if (group_mode_) {
+    int aim = aim_ == model::space::GroupAim::mean ? 1 : 0;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::Combo("##aim", &aim, "largest distance\0mean distance\0")) {
+      aim_ = aim == 1 ? model::space::GroupAim::mean : model::space::GroupAim::largest;
+      search_.reset();
+    }
+  }
   ImGui::Text("surface: %s", surface().c_str());
+}
+
+void DesignView::draw_constraint_controls() {
+  if (!ImGui::CollapsingHeader("Constraints")) return;
+  auto& c = constraints_;
+  const float lo = static_cast<float>(grid_->axes.tips_m.front() * 1e3), hi = static_cast<float>(grid_->axes.tips_m.back() * 1e3);
+  bool tips = c.min_tip_m || c.max_tip_m;
+  float tip_lo = c.min_tip_m ? static_cast<float>(*c.min_tip_m * 1e3) : lo;
+  float tip_hi = c.max_tip_m ? static_cast<float>(*c.max_tip_m * 1e3) : hi;
+  bool changed = ImGui::Checkbox("tips", &tips);
+  ImGui::SameLine();
+  changed |= ImGui::DragFloatRange2("mm##tips", &tip_lo, &tip_hi, 0.01f, lo, hi, "%.2f", "%.2f");
+  if (changed) {
+    c.min_tip_m.reset(), c.max_tip_m.reset();
+    if (tips) c.min_tip_m = tip_lo * 1e-3, c.max_tip_m = std::max(tip_lo, tip_hi) * 1e-3;
+  }
+  for (const auto* material : {&grid_->axes.material_a, &grid_->axes.material_b}) {
+    const bool listed = c.materials.empty() || std::find(c.materials.begin(), c.materials.end(), *material) != c.materials.end();
+    bool allowed = listed;
+    if (ImGui::Checkbox(("allow " + *material).c_str(), &allowed) && allowed != listed) {
+      if (c.materials.empty()) c.materials = {grid_->axes.material_a, grid_->axes.material_b};
+      if (allowed) c.materials.push_back(*material);
+      else std::erase(c.materials, *material);
+      changed = true;
+    }
+    if (material == &grid_->axes.material_a) ImGui::SameLine();
+  }
+  for (const auto* material : {&grid_->axes.material_a, &grid_->axes.material_b}) {
+    float cost = static_cast<float>(c.cost.count(*material) ? c.cost.at(*material) : 1.0);
+    ImGui::SetNextItemWidth(90.0f);
+    if (ImGui::InputFloat(("cost of " + *material).c_str(), &cost, 0.0f, 0.0f, "%.3g")) c.cost[*material] = cost, changed = true;
+    else if (!c.cost.count(*material)) c.cost[*material] = cost;
+  }
+  bool limited = c.max_cost.has_value();
+  float max_cost = static_cast<float>(c.max_cost.value_or(2.0));
+  changed |= ImGui::Checkbox("cost at most", &limited);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  changed |= ImGui::InputFloat("##max-cost", &max_cost, 0.0f, 0.0f, "%.3g");
+  if (changed) {
+    c.max_cost.reset();
+    if (limited) c.max_cost = max_cost;
+    search_.reset();
+  }
+  if (c.any()) ImGui::TextWrapped("within %s", design::describe(c).c_str());
+}
+
+void DesignView::draw_controls() {
+  draw_target_controls();
   section("Design");
   if (job_) {
     if (coarse_) ImGui::TextWrapped("A coarse grid is in use while the fine one is solved:");
@@ -365,13 +458,15 @@ void DesignView::draw_controls() {
   ImGui::Text("slider to placement and sound: %.1f ms", last_update_ms_);
   if (!map_) ImGui::TextWrapped("This space has no descriptor map: designs cannot be placed in it.");
   section("Search");
+  draw_constraint_controls();
   if (ImGui::Button("Line search along the mix")) search(false);
   ImGui::SameLine();
   if (ImGui::Button("2-D search")) search(true);
   if (search_) {
     const auto& best = search_->best();
-    ImGui::TextWrapped("%zu designs in %.0f ms; nearest: %s at %.2f (sd %.2f)", search_->evaluated.size(),
-                       last_search_ms_, design::label(best.point).c_str(), best.distance, best.distance_sd);
+    ImGui::TextWrapped("%zu designs in %.0f ms; nearest%s: %s at %.2f (sd %.2f)", search_->evaluated.size(),
+                       last_search_ms_, targets_.size() > 1 ? (aim_ == model::space::GroupAim::mean ? " on mean" : " at worst") : "",
+                       design::label(best.point).c_str(), best.distance, best.distance_sd);
   }
   section("Interpolation against the FEM");
   if (error_job_) ImGui::ProgressBar(static_cast<float>(error_job_->progress()), {-1.0f, 0.0f}, "solving cell centres");
@@ -389,10 +484,7 @@ void DesignView::draw_controls() {
 void DesignView::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const {
   const bool one_d = ax == ay;
   const auto at = [&](const Eigen::VectorXd& p) { return frame.to_screen(p[ax], one_d ? 0.0 : p[ay]); };
-  if (target_) {
-    const ImVec2 t = at(space_->scene().tools[*target_].region.mean);
-    draw->AddCircle(t, 12.0f, IM_COL32(255, 80, 80, 255), 24, 2.5f);
-  }
+  for (std::size_t t : targets_) draw->AddCircle(at(space_->scene().tools[t].region.mean), 12.0f, IM_COL32(255, 80, 80, 255), 24, 2.5f);
   if (search_) {
     for (std::size_t i = 0; i < search_->evaluated.size(); ++i) draw->PathLineTo(at(search_->evaluated[i].placement.mean));
     draw->PathStroke(IM_COL32(255, 255, 255, 120), 0, 1.0f);

@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "model/design/design_grid_error.hpp"
 #include "model/design/design_response_grid.hpp"
@@ -73,11 +74,22 @@ class DesignView {
   void stop_work();
   bool working() const { return (job_ && !job_->done()) || (error_job_ && !error_job_->done()); }
 
-  // The sliders (λ = fraction of material B, tip in mm) and the target, as a person sets them.
+  // The sliders (λ = fraction of material B, tip in mm) and the target, as a person sets them. In
+  // group mode a tool clicked joins the targets (or leaves them, clicked again): the searches then
+  // find one design for them all (the largest or mean distance, as `aim`); the first target's
+  // surface is the one designed for.
   void set_design(double fraction, double tip_mm);
   void set_target(std::size_t tool);
+  void set_group_mode(bool group);
+  void set_aim(model::space::GroupAim aim) { aim_ = aim; }
+  const std::vector<std::size_t>& targets() const { return targets_; }
+  // What the searches must keep to (model/design/design_constraints.hpp), as the Constraints
+  // section sets them.
+  void set_constraints(model::design::DesignConstraints constraints) { constraints_ = std::move(constraints); }
+  const model::design::DesignConstraints& constraints() const { return constraints_; }
   void set_playing(bool play) { play_ = play; }
-  // Runs the line search (along the mix at the current tip) or the 2-D search; the path is drawn.
+  // Runs the line search (along the mix at the current tip) or the 2-D search within the
+  // constraints, toward the target or the group; the path is drawn.
   void search(bool two_d);
   // Writes the design shown as a prediction file (model/design/prediction_file.hpp: what `nibrig
   // predict` writes, so `space embed` and `render --tool` take it). Returns the error, if any.
@@ -120,6 +132,10 @@ class DesignView {
   bool design_heard() const;
   void take_grids();
   void draw_controls();
+  void draw_target_controls();
+  void draw_constraint_controls();
+  // The evaluation the searches use: toward the target, or the group's aggregate.
+  model::design::Evaluate search_evaluation() const;
   void draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const;
   std::string surface() const;
 
@@ -134,7 +150,10 @@ class DesignView {
   std::shared_ptr<CoarseHandover> coarse_handover_;
   bool coarse_ = false;
   std::optional<model::design::DesignResponseGrid> grid_;
-  std::optional<std::size_t> target_;
+  std::vector<std::size_t> targets_;  // indices into the scene's tools; the first sets the surface
+  bool group_mode_ = false;
+  model::space::GroupAim aim_ = model::space::GroupAim::largest;
+  model::design::DesignConstraints constraints_;
   float fraction_ = 0.5f, tip_mm_ = 2.0f;
   bool play_ = true;
   std::optional<model::design::PredictedTool> predicted_;

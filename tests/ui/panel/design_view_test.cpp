@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "model/design/design_constraints.hpp"
 #include "model/design/prediction_file.hpp"
 #include "model/io/stylus_3mf.hpp"
 #include "model/design/tool_sound.hpp"
@@ -116,6 +117,39 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   std::ofstream(dir / "teflon.json") << other.dump();
   EXPECT_THAT(view.open_prediction(dir / "teflon.json"), ::testing::HasSubstr("teflon"));
   EXPECT_NEAR(view.predicted()->point.fraction_of("DM85"), shown.fraction_of("DM85"), 1e-6);
+
+  // One design for a group, within constraints (Sec. 7): two targets, tips of at most 2.5 mm and a
+  // cost limit that DM85 alone breaks. Both searches keep to them; the group's distance is the
+  // largest of the two, each the one between the placements' means.
+  view.set_group_mode(true);
+  view.set_target(0);
+  ASSERT_EQ(view.targets(), (std::vector<std::size_t>{2, 0}));
+  model::design::DesignConstraints limits;
+  limits.max_tip_m = 0.0025;
+  limits.cost = {{"vero", 1.0}, {"DM85", 3.0}};
+  limits.max_cost = 2.0;
+  view.set_constraints(limits);
+  for (const bool two_d : {false, true}) {
+    view.search(two_d);
+    ASSERT_TRUE(view.last_search().has_value()) << view.error();
+    for (const auto& c : view.last_search()->evaluated)
+      EXPECT_EQ(model::design::broken_constraint(c.point, limits), "") << model::design::label(c.point);
+    const auto& best = view.last_search()->best();
+    ASSERT_EQ(best.target_distances.size(), 2u);
+    EXPECT_EQ(best.distance, std::max(best.target_distances[0], best.target_distances[1]));
+    for (std::size_t t = 0; t < 2; ++t) {
+      const auto& tool = view.space().scene().tools[view.targets()[t]];
+      EXPECT_NEAR(best.target_distances[t], (best.placement.mean - tool.region.mean).norm(), 1e-12);
+    }
+  }
+  const auto grouped = view.stylus_export(dir / "group" / "stylus.3mf", panel.shown_space());
+  ASSERT_TRUE(grouped);
+  grouped();
+  EXPECT_EQ(nibrig::test::decode_png(dir / "group" / "stylus-sheet.png").height, 1500);
+  view.set_target(0);  // clicked again: it leaves the group
+  EXPECT_EQ(view.targets(), std::vector<std::size_t>{2});
+  view.set_group_mode(false);
+  view.set_constraints({});
 
   // The DM85 end's voice joins a stroke without an onset transient. Its stiff, heavily damped modes
   // (ζ up to 41 at 5-10 kHz, b·c up to ±2000) carried the force's jump from rest to the sensor:
