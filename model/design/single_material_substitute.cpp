@@ -22,10 +22,12 @@ std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, cons
     const Candidate c = from_mix(s.point);
     s.cost = c.distance;
     s.cost_sd = c.distance_sd;
-    std::mt19937_64 generator(seed);
-    const auto d = space::uncertain_group_distance(c.placement, targets, aim, samples, generator).aggregate;
-    s.to_target = d.between_means;
-    s.to_target_sd = d.sd;
+    if (!targets.empty()) {
+      std::mt19937_64 generator(seed);
+      const auto d = space::uncertain_group_distance(c.placement, targets, aim, samples, generator).aggregate;
+      s.to_target = d.between_means;
+      s.to_target_sd = d.sd;
+    }
     out.push_back(s);
   }
   std::stable_sort(out.begin(), out.end(), [](const Substitute& a, const Substitute& b) { return a.cost < b.cost; });

@@ -3,6 +3,7 @@
 // it costs, as a distance in the space) and from the target the mix was searched for.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,9 @@ namespace nibrig::model::design {
 struct Substitute {
   DesignPoint point;                        // one material, the mix's tip
   double cost = 0.0, cost_sd = 0.0;         // distance of its placement from the mix's
-  double to_target = 0.0, to_target_sd = 0.0;
+  // From the target (or group) the mix was searched for; none for a design exported without one.
+  std::optional<double> to_target;
+  double to_target_sd = 0.0;
   // The constraint of the search it breaks (broken_constraint), empty when none: a substitute is
   // what the printer can do, which the user's limits need not allow.
   std::string outside_constraints;
@@ -27,7 +30,8 @@ std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, cons
                                                     const space::Placement& target, int samples = 2000,
                                                     std::uint64_t seed = 1);
 // The same for a group design: to_target is the largest or mean distance to the targets, as the
-// group's search measured its candidates (space::uncertain_group_distance).
+// group's search measured its candidates (space::uncertain_group_distance); no targets: a design
+// exported for itself, whose substitutes have no to_target.
 std::vector<Substitute> single_material_substitutes(const DesignPoint& mix, const Evaluate& from_mix,
                                                     const std::vector<space::Placement>& targets,
                                                     space::GroupAim aim, int samples = 2000,

@@ -112,9 +112,8 @@ nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& f
   for (const auto& s : print.substitutes) {
     nlohmann::json sub{{"design", to_string(s.point)},
                        {"cost", s.cost},
-                       {"cost_sd", s.cost_sd},
-                       {"to_target", s.to_target},
-                       {"to_target_sd", s.to_target_sd}};
+                       {"cost_sd", s.cost_sd}};
+    if (s.to_target) sub["to_target"] = *s.to_target, sub["to_target_sd"] = s.to_target_sd;
     if (!s.outside_constraints.empty()) sub["outside_constraints"] = s.outside_constraints;
     j["substitutes"].push_back(sub);
   }

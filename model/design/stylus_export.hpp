@@ -58,8 +58,9 @@ struct StylusFiles {
 
 // The recipe, for people and scripts (FORMATS.md "Stylus recipe"): kind "stylus_recipe", design,
 // design_name, mesh_size_mm, regions [{name, material, printer_material, mix [{material,
-// fraction}], triangles, volume_mm3}], substitutes [{design, cost, cost_sd, to_target,
-// to_target_sd, outside_constraints (when it breaks one)}], files {three_mf, stls}.
+// fraction}], triangles, volume_mm3}], substitutes [{design, cost, cost_sd, to_target and
+// to_target_sd (when searched for a target), outside_constraints (when it breaks one)}], files
+// {three_mf, stls}.
 nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& files);
 
 // Refuses (std::runtime_error naming it) a folder the files cannot go into: one that exists and

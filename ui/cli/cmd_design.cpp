@@ -242,7 +242,7 @@ void run_design(const DesignOptions& o) {
     for (auto& s : print.substitutes) {
       s.outside_constraints = design::broken_constraint(s.point, constraints);
       std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the optimum ({:.3f} ± {:.3f} from {}){}\n",
-                               design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd,
+                               design::label(s.point), s.cost, s.cost_sd, s.to_target.value_or(0.0), s.to_target_sd,
                                group ? "the targets, " + o.aim : "the target",
                                s.outside_constraints.empty() ? "" : "; outside the constraints: " + s.outside_constraints);
     }

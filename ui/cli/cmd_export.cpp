@@ -85,12 +85,19 @@ void run_export(const ExportOptions& o) {
   if (o.forcing_model.empty() && warnings_shown())
     std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
   const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
-  const auto print = design::stylus_print(inputs->setup, point);
+  auto print = design::stylus_print(inputs->setup, point);
   const auto tool = design::predict_tool(inputs->setup, point, surface);
   figures::StylusSheetInputs sheet{&tool, nullptr, std::nullopt, {}};
   if (space) {
     sheet.space = &*space;
     sheet.placement = design::place_predicted(*space->descriptor_map, tool);
+    // A printer that cannot mix prints one material: each alone at the design's tip, placed.
+    print.substitutes = design::single_material_substitutes(
+        point, design::distance_to_target(inputs->setup, surface, *space->descriptor_map, *sheet.placement), {},
+        model::space::GroupAim::largest);
+    for (const auto& s : print.substitutes)
+      std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the design in the space\n",
+                               design::label(s.point), s.cost, s.cost_sd);
   }
   print_stylus_files(print, figures::export_stylus(o.output, print, sheet));
 }
@@ -115,6 +122,8 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--materials", o->inputs.materials, "Material table (default: assets/materials.json)");
   cmd->add_option("--mesh-size", o->inputs.mesh_size, "Element size in metres (default: the template's)")
       ->check(stylus_metres("an element size"));
+  cmd->add_option("--modes", o->inputs.modes, "Modes the sheet's prediction solves (default: the template's)")
+      ->check(whole_in_range(1, 1000, "a number of modes"));
   cmd->add_option("--surface", o->surface,
                   "Surface the stylus is for: its predicted mu and spectrum go on the print sheet "
                   "(default: a prediction file's)");

@@ -35,8 +35,9 @@ void print_lines(Lines& lines, const design::StylusPrint& print, const design::S
   if (!print.substitutes.empty()) {
     heading(lines, "Without mixing (distance in the space)");
     for (const auto& s : print.substitutes)
-      line(lines, fmt::format("{}: {:.3f} ± {:.3f} from this design, {:.3f} ± {:.3f} from the {}{}",
-                              design::label(s.point), s.cost, s.cost_sd, s.to_target, s.to_target_sd, targets,
+      line(lines, fmt::format("{}: {:.3f} ± {:.3f} from this design{}{}", design::label(s.point), s.cost, s.cost_sd,
+                              s.to_target ? fmt::format(", {:.3f} ± {:.3f} from the {}", *s.to_target, s.to_target_sd, targets)
+                                          : std::string(),
                               s.outside_constraints.empty() ? "" : "; outside the constraints: " + s.outside_constraints));
   }
 }

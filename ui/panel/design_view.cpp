@@ -253,8 +253,12 @@ std::function<void()> DesignView::stylus_export(const std::filesystem::path& fil
     };
     figures::StylusSheetInputs sheet;
     sheet.aim = aim == model::space::GroupAim::mean ? "mean" : "largest";
+    auto print = design::stylus_print(inputs->setup, point);
     if (!placements.empty()) {
       const auto candidate = design::distance_to_targets(predict, *map, placements, aim)(point);
+      // A printer that cannot mix prints one material: each alone, placed, against the targets.
+      print.substitutes = design::single_material_substitutes(
+          point, design::distance_to_target(inputs->setup, surface, *map, candidate.placement), placements, aim);
       sheet.space = &*space;
       sheet.placement = candidate.placement;
       sheet.targets = targets;
@@ -266,7 +270,7 @@ std::function<void()> DesignView::stylus_export(const std::filesystem::path& fil
       predict(point);
     }
     sheet.tool = &*tool;
-    figures::export_stylus(file, design::stylus_print(inputs->setup, point), sheet);
+    figures::export_stylus(file, print, sheet);
   };
 }
 

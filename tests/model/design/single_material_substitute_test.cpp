@@ -39,13 +39,23 @@ TEST(SingleMaterialSubstitute, EachMaterialAloneAtTheMixsTipNearestFirst) {
   }
   EXPECT_EQ(subs[0].point.mix.front().material, "DM85");
   EXPECT_DOUBLE_EQ(subs[0].cost, 1.0);
-  EXPECT_NEAR(subs[0].to_target, std::hypot(3.0, 3.0), 1e-12);  // (0, 1) to (3, 4)
+  EXPECT_NEAR(*subs[0].to_target, std::hypot(3.0, 3.0), 1e-12);  // (0, 1) to (3, 4)
   // Certain placements: every draw is the same distance, and the sd is what rounding leaves of a
   // mean square less a squared mean over 2000 draws: well under 1e-5 of the distance.
-  EXPECT_NEAR(subs[0].to_target_sd, 0.0, 1e-5 * subs[0].to_target);
+  EXPECT_NEAR(subs[0].to_target_sd, 0.0, 1e-5 * *subs[0].to_target);
   EXPECT_EQ(subs[1].point.mix.front().material, "vero");
   EXPECT_DOUBLE_EQ(subs[1].cost, 2.0);
-  EXPECT_NEAR(subs[1].to_target, std::hypot(1.0, 4.0), 1e-12);
+  EXPECT_NEAR(*subs[1].to_target, std::hypot(1.0, 4.0), 1e-12);
+
+  // A group of two: the largest of each substitute's two distances. No targets (a design exported
+  // for itself): the same costs, no distance to a target.
+  const auto group = single_material_substitutes(mix, from_mix, {target, at(0, 5)}, space::GroupAim::largest);
+  EXPECT_NEAR(*group[0].to_target, std::max(std::hypot(3.0, 3.0), 4.0), 1e-12);
+  EXPECT_NEAR(*group[1].to_target, std::max(std::hypot(1.0, 4.0), std::hypot(2.0, 5.0)), 1e-12);
+  const auto alone_ = single_material_substitutes(mix, from_mix, {}, space::GroupAim::largest);
+  ASSERT_EQ(alone_.size(), 2u);
+  EXPECT_DOUBLE_EQ(alone_[1].cost, 2.0);
+  EXPECT_FALSE(alone_[0].to_target.has_value());
 }
 
 TEST(SingleMaterialSubstitute, ASingleMaterialNeedsNone) {

@@ -358,6 +358,24 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   EXPECT_NE(error.find("choices: "), std::string::npos) << "lists what it accepts: " << error;
 
   expect_a_group_design_within_constraints(out, space_file, coarse);
+
+  // A design exported for itself in a space: its sheet, and each material alone placed against it
+  // (no target to measure from).
+  std::vector<std::string> exported_alone{"export", "DM85:0.5,vero:0.5,tip=2mm", "-o",
+                                          (out / "alone" / "stylus.3mf").string(), "--surface", "glass", "--space",
+                                          space_file.string(), "--forcing", (out / "forcing.json").string()};
+  exported_alone.insert(exported_alone.end(), coarse.begin(), coarse.end());
+  ::testing::internal::CaptureStdout();
+  const int alone_code = run_cli(exported_alone);
+  const std::string alone_text = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(alone_code, 0) << alone_text;
+  EXPECT_TRUE(is_png(out / "alone" / "stylus-sheet.png"));
+  const auto alone_recipe = read_json(out / "alone" / "stylus.json");
+  ASSERT_EQ(alone_recipe["substitutes"].size(), 2u);
+  for (const auto& s : alone_recipe["substitutes"]) {
+    EXPECT_GT(s["cost"].get<double>(), 0.0) << s;  // each material alone lies elsewhere than the mix
+    EXPECT_FALSE(s.contains("to_target")) << s;
+  }
 }
 
 }  // namespace
