@@ -1,5 +1,7 @@
 #include "playback/output_callback.hpp"
 
+#include <pthread.h>
+
 #include <chrono>
 
 #include <algorithm>
@@ -13,8 +15,9 @@ void OutputCallbackState::prepare(std::size_t period_frames) {
   }
 }
 
-int output_callback(void* output, void* input, unsigned int frames, double /*stream_time*/,
-                    RtAudioStreamStatus status, void* user) noexcept {
+namespace {
+
+int render_period(void* output, void* input, unsigned int frames, RtAudioStreamStatus status, void* user) noexcept {
   auto& s = *static_cast<OutputCallbackState*>(user);
   auto& c = s.counters;
   // First, before rendering: the closest the callback comes to when its input was handed over.
@@ -53,6 +56,17 @@ int output_callback(void* output, void* input, unsigned int frames, double /*str
   c.frames.fetch_add(frames, std::memory_order_relaxed);
   c.callbacks.fetch_add(1, std::memory_order_release);
   return 0;
+}
+
+}  // namespace
+
+int output_callback(void* output, void* input, unsigned int frames, double /*stream_time*/,
+                    RtAudioStreamStatus status, void* user) {
+  int cancel_state = PTHREAD_CANCEL_ENABLE;
+  pthread_setcancelstate(PTHREAD_CANCEL_DISABLE, &cancel_state);
+  const int result = render_period(output, input, frames, status, user);
+  pthread_setcancelstate(cancel_state, nullptr);
+  return result;
 }
 
 }  // namespace nibrig::playback
