@@ -100,15 +100,24 @@ Evaluate distance_to_target(const PredictionSetup& setup, const std::string& sur
       target, samples, seed);
 }
 
+namespace {
+
+// A design predicted as `tool`, as a candidate: its placement and descriptors, no distance yet.
+Candidate placed_candidate(const DesignPoint& point, const PredictedTool& tool, const space::DescriptorMap& map) {
+  Candidate c;
+  c.point = point;
+  c.placement = place_predicted(map, tool);
+  c.mu = tool.mu;
+  c.weighted_mean = tool.vibration.weighted_mean;
+  return c;
+}
+
+}  // namespace
+
 Evaluate distance_to_target(Predict predict, const space::DescriptorMap& map,
                             const space::Placement& target, int samples, std::uint64_t seed) {
   return [predict = std::move(predict), map, target, samples, seed](const DesignPoint& point) {
-    const PredictedTool tool = predict(point);
-    Candidate c;
-    c.point = point;
-    c.placement = place_predicted(map, tool);
-    c.mu = tool.mu;
-    c.weighted_mean = tool.vibration.weighted_mean;
+    Candidate c = placed_candidate(point, predict(point), map);
     std::mt19937_64 generator(seed);  // the same draws for every candidate: comparable sds
     const space::UncertainDistance d =
         space::uncertain_distance(c.placement, target, samples, generator);
@@ -126,12 +135,7 @@ Evaluate distance_to_targets(Predict predict, const space::DescriptorMap& map,
   if (targets.empty()) throw std::invalid_argument("a group design needs at least one target");
   return [predict = std::move(predict), map, targets = std::move(targets), aim, samples,
           seed](const DesignPoint& point) {
-    const PredictedTool tool = predict(point);
-    Candidate c;
-    c.point = point;
-    c.placement = place_predicted(map, tool);
-    c.mu = tool.mu;
-    c.weighted_mean = tool.vibration.weighted_mean;
+    Candidate c = placed_candidate(point, predict(point), map);
     std::mt19937_64 generator(seed);  // the same draws for every candidate: comparable sds
     const auto d = space::uncertain_group_distance(c.placement, targets, aim, samples, generator);
     c.distance = d.aggregate.between_means;

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "model/design/design_search.hpp"
+#include "tests/model/design/search_objective.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -18,16 +19,7 @@ using ::testing::HasSubstr;
 const DesignPoint kVero1mm = parse_design_point("vero,tip=1mm");
 const DesignPoint kDm85At4mm = parse_design_point("DM85,tip=4mm");
 
-// A candidate whose distance is a given function of the DM85 fraction and the tip in mm.
-template <typename F>
-Evaluate objective(F f) {
-  return [f](const DesignPoint& p) {
-    Candidate c;
-    c.point = p;
-    c.distance = f(p.fraction_of("DM85"), p.tip_diameter_m * 1e3);
-    return c;
-  };
-}
+using search_testing::objective;
 
 // Along vero 1 mm → DM85 4 mm, λ is the DM85 fraction and the tip is 1 + 3λ mm.
 TEST(DesignConstraints, EachConstraintCutsTheLineWhereItsLinearFormSays) {

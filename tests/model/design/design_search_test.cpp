@@ -7,19 +7,12 @@
 #include <cmath>
 #include <vector>
 
+#include "tests/model/design/search_objective.hpp"
+
 namespace nibrig::model::design {
 namespace {
 
-// A candidate whose distance is a given function of the DM85 fraction and the tip in mm.
-template <typename F>
-Evaluate objective(F f) {
-  return [f](const DesignPoint& p) {
-    Candidate c;
-    c.point = p;
-    c.distance = f(p.fraction_of("DM85"), p.tip_diameter_m * 1e3);
-    return c;
-  };
-}
+using search_testing::objective;
 
 TEST(DesignSearch, TheLineSearchFindsTheMinimumABruteForceScanFinds) {
   // Along vero 1 mm → DM85 4 mm, λ sets the fraction to λ and the tip to 1 + 3λ mm. Two dips: a
