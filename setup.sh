@@ -6,6 +6,7 @@
 #                      test suite, then fuzz the readers briefly
 #   ./setup.sh bench   build (Release) and run the benchmarks with the scipy reference beside them
 #   ./setup.sh panel   build (Release) and open nibrig-panel (extra arguments go to it)
+#   ./setup.sh python  build the Python module and install it for this user (import nibrig)
 #   ./setup.sh build   build (Release) only
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -25,26 +26,27 @@ packages=(
   avrdude  # `nibrig rig flash` writes the controller's firmware with it; its tests run it on a pty
   libstb-dev  # the report tests read their PNGs back with stb_image; the panel writes screenshots
   libimgui-dev libglfw3-dev  # the panel: ImGui 1.86 + GLFW + OpenGL 3
+  pybind11-dev python3-dev python3-numpy  # the Python module in ui/python: numpy arrays in and out
   # A window without a screen or a GPU, for the panel, its tests and its benchmark: Xvfb, Mesa
   xvfb xauth libgl1-mesa-dri
   # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
-  libgtest-dev libgmock-dev umockdev libclang-rt-14-dev
+  libgtest-dev libgmock-dev umockdev libclang-rt-14-dev python3-pytest
   # The exported styli's real consumers: PrusaSlicer slices the 3MF, admesh checks each STL
   prusa-slicer admesh
   # The rig controller's firmware in rig/firmware: Debian's AVR toolchain builds it, and simavr runs it
   # in the tests; libsimavr's pkg-config file needs libelf's
   gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev
   # Only the bench job's: Google Benchmark, the numpy and scipy references beside it
-  libbenchmark-dev python3-numpy python3-scipy
+  libbenchmark-dev python3-scipy
 )
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
 window=(xvfb xauth libgl1-mesa-dri)
-test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev prusa-slicer admesh gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
-bench_only=(libbenchmark-dev python3-numpy python3-scipy)
+test_only=(libgtest-dev libgmock-dev umockdev libclang-rt-14-dev python3-pytest prusa-slicer admesh gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
+bench_only=(libbenchmark-dev python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.
-not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2 avrdude)
+not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2 avrdude pybind11-dev python3-dev python3-numpy)
 
 # ccache pays only from a warm cache: through a cold one a first build is slower, and CI and a new
 # user always start cold. So it is used where its cache folder already exists:
@@ -129,6 +131,7 @@ case "$job" in
   test) install_packages "${bench_only[@]}" ;;
   bench) install_packages "${test_only[@]}" ;;
   panel) install_packages "${test_only[@]}" "${bench_only[@]}" ;;
+  python) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
   demo) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${not_demo[@]}" ;;
   *) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
 esac
@@ -158,7 +161,7 @@ case "$job" in
     # The faces end to end and the checks whose time is the feature (label scenario) in Release,
     # the build that plays, with LeakSanitizer linked in where the sanitizer build had it.
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=ON -DNIBRIG_TESTS=scenario \
-      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=ON "$with_panel"
+      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=ON "$with_panel" -DNIBRIG_BUILD_PYTHON=ON
     # One ctest over both trees, so that one scheduler fills the cores and the JACK tests of both
     # share one lock. One test more than cores: the JACK tests mostly wait on the audio clock.
     printf 'subdirs("asan" "release")\n' >build/CTestTestfile.cmake
@@ -196,8 +199,19 @@ case "$job" in
   build)
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
     ;;
+  python)
+    # The package folder the build assembled (ui/CMakeLists.txt) goes to the user's site-packages,
+    # which Python searches without a package index, pip or a virtual environment.
+    targets=nibrig_python configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF \
+      -DNIBRIG_LEAK_CHECK=OFF "$with_panel" -DNIBRIG_BUILD_PYTHON=ON
+    site=$(/usr/bin/python3 -m site --user-site)
+    mkdir -p "$site"
+    rm -rf "$site/nibrig"
+    cp -r build/release/python/nibrig "$site/nibrig"
+    echo "setup: installed the Python module in $site/nibrig; try: python3 -c 'import nibrig; print(nibrig.space)'"
+    ;;
   *)
-    echo "usage: ./setup.sh [demo|test|bench|panel|build]" >&2
+    echo "usage: ./setup.sh [demo|test|bench|panel|python|build]" >&2
     exit 2
     ;;
 esac

@@ -16,7 +16,7 @@ namespace nibrig::model::io {
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what, int error) {
-  throw std::runtime_error(file.string() + ": cannot " + what + " (" + std::strerror(error) + ")");
+  throw OutputFileError(file.string() + ": cannot " + what + " (" + std::strerror(error) + ")");
 }
 
 // Follows a chain of symbolic links to its last name, which need not exist (a dangling link names
@@ -79,9 +79,9 @@ OutputTarget output_target(const std::filesystem::path& named) {
     case fs::file_type::fifo:
       return {named, true};
     case fs::file_type::directory:
-      throw std::runtime_error(named.string() + ": is a folder; expected a file to write");
+      throw OutputFileError(named.string() + ": is a folder; expected a file to write");
     default:
-      throw std::runtime_error(named.string() +
+      throw OutputFileError(named.string() +
                                ": is a block device or a socket; expected a regular file, a "
                                "character device or a pipe to write");
   }

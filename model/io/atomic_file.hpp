@@ -8,9 +8,17 @@
 #pragma once
 
 #include <filesystem>
+#include <stdexcept>
 #include <string_view>
 
 namespace nibrig::model::io {
+
+// What every writer throws when the file cannot be written (a folder in its place, no room, no
+// permission): it names the file. A face tells it from bad input (the Python module: OSError).
+class OutputFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // Where an output named `named` goes.
 struct OutputTarget {

@@ -1,0 +1,12 @@
+// nibrig's Python face (`import nibrig`): the compiled part, nibrig._core, one submodule per area.
+// The package around it (ui/python/nibrig/) re-exports the submodules and carries the stubs.
+#include <pybind11/pybind11.h>
+
+#include "ui/python/errors.hpp"
+#include "ui/python/submodules.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "nibrig's library calls: the compiled part of the nibrig package";
+  nibrig::ui::python::register_error_translation();
+  nibrig::ui::python::add_space_module(m.def_submodule("space", "Perceptual spaces: fit, predict, place"));
+}

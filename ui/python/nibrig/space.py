@@ -1,0 +1,10 @@
+"""Perceptual spaces (Sec. 4 of the paper): fit from triplet judgments, predict, place tools."""
+
+from ._core import space as _space
+
+Space = _space.Space
+Placement = _space.Placement
+fit = _space.fit
+load = _space.load
+
+__all__ = ["Space", "Placement", "fit", "load"]

@@ -1,0 +1,29 @@
+// Eigen's storage lent to numpy: an array that reads the C++ memory in place, kept alive by the
+// Python object that owns it, and read-only so that a script cannot change a fitted result behind
+// the library's back.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+
+namespace nibrig::ui::python {
+
+// rows × cols, column-major as Eigen stores it.
+inline pybind11::array_t<double> matrix_view(const Eigen::MatrixXd& m, const pybind11::handle& owner) {
+  pybind11::array_t<double> a({m.rows(), m.cols()},
+                              {static_cast<pybind11::ssize_t>(sizeof(double)),
+                               static_cast<pybind11::ssize_t>(sizeof(double) * m.rows())},
+                              m.data(), owner);
+  pybind11::detail::array_proxy(a.ptr())->flags &= ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+inline pybind11::array_t<double> vector_view(const Eigen::VectorXd& v, const pybind11::handle& owner) {
+  pybind11::array_t<double> a({v.size()}, {static_cast<pybind11::ssize_t>(sizeof(double))}, v.data(), owner);
+  pybind11::detail::array_proxy(a.ptr())->flags &= ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+}  // namespace nibrig::ui::python

@@ -1,0 +1,10 @@
+// Each area of the module adds its functions and classes to its submodule.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace nibrig::ui::python {
+
+void add_space_module(pybind11::module_ m);
+
+}  // namespace nibrig::ui::python
