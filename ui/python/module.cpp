@@ -9,4 +9,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "nibrig's library calls: the compiled part of the nibrig package";
   nibrig::ui::python::register_error_translation();
   nibrig::ui::python::add_space_module(m.def_submodule("space", "Perceptual spaces: fit, predict, place"));
+  nibrig::ui::python::add_measure_module(
+      m.def_submodule("measure", "Recordings to friction, spectra and descriptors; catalogs"));
+  nibrig::ui::python::add_design_module(
+      m.def_submodule("design", "Predict designs, place them, search for the nearest one"));
 }

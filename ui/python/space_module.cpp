@@ -8,6 +8,7 @@
 
 #include <unordered_map>
 
+#include "model/design/default_space.hpp"
 #include "model/space/bootstrap.hpp"
 #include "model/space/judgment_model.hpp"
 #include "model/space/space_file.hpp"
@@ -15,6 +16,7 @@
 #include "model/space/space_inputs.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
 
 namespace nibrig::ui::python {
@@ -23,22 +25,6 @@ namespace py = pybind11;
 namespace space = model::space;
 
 namespace {
-
-struct Space {
-  space::SpaceFile file;
-  std::vector<std::string> warnings;  // from the fit: e.g. too few stimuli for a descriptor map
-
-  std::size_t index_of(const std::string& name) const {
-    for (std::size_t i = 0; i < file.stimuli.size(); ++i)
-      if (file.stimuli[i] == name) return i;
-    throw std::invalid_argument("'" + name + "' is not a stimulus of this space (it has " +
-                                std::to_string(file.stimuli.size()) + ", e.g. '" + file.stimuli.front() + "')");
-  }
-};
-
-struct Placement {
-  space::Placement placement;
-};
 
 Space fit(const std::filesystem::path& judgments, std::size_t dims, const std::optional<std::filesystem::path>& descriptors,
           double lambda, const std::string& model, int starts, unsigned seed, int bootstrap, unsigned threads,
@@ -75,7 +61,7 @@ Space fit(const std::filesystem::path& judgments, std::size_t dims, const std::o
   return out;
 }
 
-py::array_t<double> predict(const Space& s, const std::vector<std::tuple<std::string, std::string, std::string>>& triplets) {
+py::array_t<double> predict_triplets(const Space& s, const std::vector<std::tuple<std::string, std::string, std::string>>& triplets) {
   py::array_t<double> p(static_cast<py::ssize_t>(triplets.size()));
   auto out = p.mutable_unchecked<1>();
   for (std::size_t k = 0; k < triplets.size(); ++k) {
@@ -161,7 +147,7 @@ void add_space_module(py::module_ m) {
       .def_property_readonly("descriptor_names", [](const Space& s) { return s.file.descriptor_names; })
       .def_property_readonly("has_descriptor_map", [](const Space& s) { return s.file.descriptor_map.has_value(); })
       .def_property_readonly("warnings", [](const Space& s) { return s.warnings; })
-      .def("predict", &predict, py::arg("triplets"),
+      .def("predict", &predict_triplets, py::arg("triplets"),
            "P(the first candidate is judged closer to the reference) for each (reference, first, second) of "
            "stimulus names, under the space's judgment model")
       .def("place", &place, py::arg("descriptors"), py::arg("error") = py::none(),
@@ -184,6 +170,23 @@ void add_space_module(py::module_ m) {
         "give the descriptor map; model: a family name or 'auto' (chosen by cross-validation); bootstrap: "
         "resamples for confidence regions; progress: called with (step, done, total). Releases the GIL; "
         "Ctrl-C stops it (KeyboardInterrupt).");
+  m.def("default", [](int bootstrap, const py::object& progress) {
+          if (bootstrap < 2) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected at least 2 resamples");
+          Space out;
+          run_long_call([&](std::stop_token stop, const Report& report) {
+            model::design::DefaultsOptions options;
+            options.bootstrap_resamples = bootstrap;
+            options.stop = stop;
+            options.progress = report;
+            auto cached = model::design::default_space(options);
+            out.file = std::move(cached.value.space);
+            out.warnings = std::move(cached.warnings);
+          }, progress);
+          return out;
+        }, py::kw_only(), py::arg("bootstrap") = 200, py::arg("progress") = py::none(),
+        "The space the demo and the panel open on: a SIMULATED observer's judgments of the bundled catalog's "
+        "tools (no human judgments ship with nibrig), with a descriptor map; computed once (seconds) and kept "
+        "in the user cache");
   m.def("load", [](const std::filesystem::path& file) {
           py::gil_scoped_release unlocked;
           return Space{space::read_space_file(file), {}};

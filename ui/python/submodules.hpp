@@ -6,5 +6,7 @@
 namespace nibrig::ui::python {
 
 void add_space_module(pybind11::module_ m);
+void add_measure_module(pybind11::module_ m);
+void add_design_module(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

@@ -1,10 +1,11 @@
 """nibrig from Python: the library calls of the command line and the panel, for scripts and notebooks.
 
-Each area is a submodule: ``nibrig.space`` fits perceptual spaces from triplet judgments, predicts
-judgments and places tools. Arrays are numpy's; where the library can lend its memory, they are
-views of it, read-only.
+Each area is a submodule: ``nibrig.measure`` measures recordings and builds catalogs,
+``nibrig.space`` fits perceptual spaces from triplet judgments, predicts judgments and places
+tools, ``nibrig.design`` predicts designs and searches for the nearest one. Arrays are numpy's;
+where the library can lend its memory, they are views of it, read-only.
 """
 
-from . import space
+from . import design, measure, space
 
-__all__ = ["space"]
+__all__ = ["design", "measure", "space"]

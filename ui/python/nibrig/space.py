@@ -6,5 +6,6 @@ Space = _space.Space
 Placement = _space.Placement
 fit = _space.fit
 load = _space.load
+default = _space.default
 
-__all__ = ["Space", "Placement", "fit", "load"]
+__all__ = ["Space", "Placement", "fit", "load", "default"]

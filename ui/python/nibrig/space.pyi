@@ -83,3 +83,6 @@ def fit(
 
 def load(path: _Path) -> Space:
     """Reads a space file (`nibrig space fit -o`)."""
+
+def default(*, bootstrap: int = 200, progress: Optional[Callable[[str, int, int], object]] = None) -> Space:
+    """The demo's and the panel's space: a SIMULATED observer's, with a descriptor map; cached."""

@@ -1,0 +1,233 @@
+// nibrig.design: a design point predicted on a surface (Sec. 5.3, as `nibrig predict`), placed in
+// a space, and the searches for the design nearest a target or a group (Sec. 6.2 and 7, as `nibrig
+// design`), within constraints. A Designer reads (or fits, the first time) what predicting needs
+// once; each prediction then solves the design's FEM (about a second).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <memory>
+
+#include "model/design/design_search.hpp"
+#include "model/design/prediction_inputs.hpp"
+#include "model/numeric/cancellation.hpp"
+#include "ui/python/long_call.hpp"
+#include "ui/python/numpy_views.hpp"
+#include "ui/python/space_types.hpp"
+#include "ui/python/submodules.hpp"
+
+namespace nibrig::ui::python {
+
+namespace py = pybind11;
+namespace design = model::design;
+
+namespace {
+
+struct Designer {
+  std::shared_ptr<const design::PredictionInputs> inputs;  // setup points into it: it stays put
+};
+
+struct Prediction {
+  design::PredictedTool tool;
+};
+
+struct Search {
+  design::SearchResult result;
+  std::vector<std::string> targets;
+};
+
+Designer make_designer(const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& forcing,
+                       const std::optional<std::filesystem::path>& design_template,
+                       const std::optional<std::filesystem::path>& materials, int modes, double mesh_size,
+                       const py::object& progress) {
+  if (modes < 0) throw std::invalid_argument("modes is " + std::to_string(modes) + "; expected 0 (the template's) or more");
+  if (mesh_size < 0) throw std::invalid_argument("mesh_size is negative; expected metres, or 0 (the template's)");
+  model::forcing::ForcingInputOptions options;
+  options.catalog = catalog.value_or(std::filesystem::path());
+  options.design_template = design_template.value_or(std::filesystem::path());
+  options.materials = materials.value_or(std::filesystem::path());
+  options.modes = modes;
+  options.mesh_size = mesh_size;
+  Designer out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        // The default forcing model is fitted once (its designs simulated) and kept in the user cache.
+        out.inputs = design::load_prediction_inputs(
+            options, forcing.value_or(std::filesystem::path()), std::nullopt,
+            [&](const model::forcing::DesignResponse&, std::size_t done, std::size_t total) {
+              model::numeric::throw_if_cancelled(stop, "forcing model fit");
+              report("simulating the forcing model's designs", done, total);
+            });
+      },
+      progress);
+  return out;
+}
+
+Prediction predict_design(const Designer& d, const std::string& point, const std::string& surface) {
+  Prediction out;
+  run_long_call([&](std::stop_token, const Report&) {
+    out.tool = design::predict_tool(d.inputs->setup, design::parse_design_point(point), surface);
+  }, py::none());
+  return out;
+}
+
+// A target: a stimulus of the space by name (judged: exactly there), or a Placement.
+model::space::Placement target_of(const Space& s, const py::handle& target, std::string& name) {
+  if (py::isinstance<py::str>(target)) {
+    name = target.cast<std::string>();
+    const auto i = s.index_of(name);
+    model::space::Placement p;
+    p.mean = s.file.coordinates.col(static_cast<Eigen::Index>(i));
+    p.covariance = Eigen::MatrixXd::Zero(p.mean.size(), p.mean.size());
+    return p;
+  }
+  name = "placed target";
+  return target.cast<const Placement&>().placement;
+}
+
+design::DesignConstraints constraints_of(const std::optional<double>& min_tip_mm, const std::optional<double>& max_tip_mm,
+                                         const std::vector<std::string>& allow, const std::map<std::string, double>& cost,
+                                         const std::optional<double>& max_cost) {
+  design::DesignConstraints c;
+  if (min_tip_mm) c.min_tip_m = *min_tip_mm * 1e-3;
+  if (max_tip_mm) c.max_tip_m = *max_tip_mm * 1e-3;
+  c.materials = allow;
+  c.cost = cost;
+  c.max_cost = max_cost;
+  if (c.max_cost && c.cost.empty()) throw std::invalid_argument("max_cost limits the cost given per material: give cost too");
+  return c;
+}
+
+Search search_designs(const Designer& d, const Space& s, const py::object& targets, const std::string& surface,
+              const std::optional<std::pair<std::string, std::string>>& between, const std::string& aim,
+              const std::optional<double>& min_tip_mm, const std::optional<double>& max_tip_mm,
+              const std::vector<std::string>& allow, const std::map<std::string, double>& cost,
+              const std::optional<double>& max_cost, const std::string& mix_a, const std::string& mix_b,
+              const py::object& progress) {
+  if (!s.file.descriptor_map) throw std::invalid_argument("the space has no descriptor map: designs are placed from their descriptors");
+  if (aim != "largest" && aim != "mean") throw std::invalid_argument("aim is '" + aim + "'; expected largest or mean");
+  Search out;
+  std::vector<model::space::Placement> placements;
+  const py::list listed = py::isinstance<py::str>(targets) || !py::isinstance<py::sequence>(targets)
+                              ? py::list(py::make_tuple(targets))
+                              : py::list(targets);
+  for (const auto& t : listed) {
+    std::string name;
+    placements.push_back(target_of(s, t, name));
+    out.targets.push_back(name);
+  }
+  if (placements.empty()) throw std::invalid_argument("no targets");
+  const auto constraints = constraints_of(min_tip_mm, max_tip_mm, allow, cost, max_cost);
+  const auto& map = *s.file.descriptor_map;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        const auto evaluate =
+            placements.size() == 1
+                ? design::distance_to_target(d.inputs->setup, surface, map, placements.front())
+                : design::distance_to_targets(d.inputs->setup, surface, map, placements,
+                                              aim == "mean" ? model::space::GroupAim::mean : model::space::GroupAim::largest);
+        const design::Evaluate stoppable = [&](const design::DesignPoint& p) {
+          model::numeric::throw_if_cancelled(stop, "design search");
+          return evaluate(p);
+        };
+        const design::SearchProgress counted = [&](const design::Candidate&, std::size_t done, std::size_t total) {
+          report("predicting designs", done, total);
+        };
+        if (between) {
+          design::LineSearchOptions line;
+          line.constraints = constraints;
+          out.result = design::line_search(design::parse_design_point(between->first),
+                                           design::parse_design_point(between->second), stoppable, line, counted);
+        } else {
+          design::RangeSearchOptions range;
+          range.first_material = mix_a, range.second_material = mix_b;
+          range.min_tip_m = d.inputs->model.tip_log_gain.begin()->first;
+          range.max_tip_m = d.inputs->model.tip_log_gain.rbegin()->first;
+          range.constraints = constraints;
+          out.result = design::range_search(stoppable, range, counted);
+        }
+      },
+      progress);
+  return out;
+}
+
+py::dict candidate_dict(const design::Candidate& c, const std::vector<std::string>& targets) {
+  py::dict d;
+  d["design"] = design::to_string(c.point);
+  d["distance"] = c.distance, d["distance_sd"] = c.distance_sd;
+  d["mu"] = c.mu, d["weighted_mean"] = c.weighted_mean;
+  d["coordinates"] = std::vector<double>(c.placement.mean.data(), c.placement.mean.data() + c.placement.mean.size());
+  py::dict each;
+  for (std::size_t t = 0; t < targets.size() && t < c.target_distances.size(); ++t)
+    each[py::str(targets[t])] = py::make_tuple(c.target_distances[t], c.target_distance_sds[t]);
+  d["to_targets"] = each;
+  return d;
+}
+
+}  // namespace
+
+void add_design_module(py::module_ m) {
+  py::class_<Prediction>(m, "Prediction", "A design predicted on a surface, as `nibrig predict` gives it")
+      .def_property_readonly("design", [](const Prediction& p) { return design::to_string(p.tool.point); })
+      .def_property_readonly("surface", [](const Prediction& p) { return p.tool.surface; })
+      .def_property_readonly("mu", [](const Prediction& p) { return p.tool.mu; }, "Predicted Coulomb friction")
+      .def_property_readonly("first_mode_hz", [](const Prediction& p) { return p.tool.first_mode_hz; })
+      .def_property_readonly("mode_frequencies_hz", [](const Prediction& p) {
+        std::vector<double> f;
+        for (double w : p.tool.modal.omega) f.push_back(w / (2 * 3.14159265358979323846));
+        return f;
+      }, "The design's modes, undamped, Hz")
+      .def_property_readonly("frequencies_hz", [](const Prediction& p) { return p.tool.spectrum.frequencies_hz; })
+      .def_property_readonly("speeds_m_s", [](const Prediction& p) { return p.tool.spectrum.speeds_m_s; })
+      .def_property_readonly("amplitude", [](const Prediction& p) {
+        const auto& s = p.tool.spectrum;
+        py::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
+        auto out = a.mutable_unchecked<2>();
+        for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
+          for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
+            out(static_cast<py::ssize_t>(v), static_cast<py::ssize_t>(f)) = s.amplitude_m_s2[v][f];
+        return a;
+      }, "Predicted velocity-binned spectrum, speeds x frequencies, m/s²")
+      .def_property_readonly("weighted_mean", [](const Prediction& p) { return p.tool.vibration.weighted_mean; })
+      .def("place", [](const Prediction& p, const Space& s) {
+             if (!s.file.descriptor_map) throw std::invalid_argument("the space has no descriptor map");
+             return Placement{design::place_predicted(*s.file.descriptor_map, p.tool)};
+           }, py::arg("space"), "Where it lies in a space with a descriptor map, its descriptors' error included");
+
+  py::class_<Search>(m, "Search", "A design search: every candidate, the optimum and its runners-up")
+      .def_property_readonly("optimum", [](const Search& s) { return candidate_dict(s.result.best(), s.targets); })
+      .def_property_readonly("path", [](const Search& s) {
+        py::list out;
+        for (const auto& c : s.result.evaluated) out.append(candidate_dict(c, s.targets));
+        return out;
+      }, "Every candidate in the order evaluated")
+      .def("runners_up", [](const Search& s, std::size_t count) {
+        py::list out;
+        for (auto k : s.result.runners_up(count)) out.append(candidate_dict(s.result.evaluated[k], s.targets));
+        return out;
+      }, py::arg("count") = 4, "Up to `count` distinct designs after the optimum, nearest first");
+
+  py::class_<Designer>(m, "Designer", "What predicting designs needs, read once")
+      .def("predict", &predict_design, py::arg("design"), py::arg("surface"),
+           "Predicts a design point ('DM85:0.5,vero:0.5,tip=2mm') on a surface: solves its FEM, then its spectrum and μ")
+      .def("search", &search_designs, py::arg("space"), py::arg("targets"), py::arg("surface"), py::kw_only(),
+           py::arg("between") = py::none(), py::arg("aim") = "largest", py::arg("min_tip_mm") = py::none(),
+           py::arg("max_tip_mm") = py::none(), py::arg("allow") = std::vector<std::string>{},
+           py::arg("cost") = std::map<std::string, double>{}, py::arg("max_cost") = py::none(),
+           py::arg("mix_a") = "vero", py::arg("mix_b") = "DM85",
+           py::arg("progress") = py::none(),
+           "The design nearest the target (a stimulus name or a Placement) or a group of them (their largest or "
+           "mean distance), along `between` (two design points) or over the two-material mix x fitted tips; "
+           "tips in mm, `allow` the materials a printer may load, `cost` a proxy per material limited by "
+           "`max_cost`. Releases the GIL; Ctrl-C stops it.");
+
+  m.def("designer", &make_designer, py::kw_only(), py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
+        py::arg("template") = py::none(), py::arg("materials") = py::none(), py::arg("modes") = 0,
+        py::arg("mesh_size") = 0.0, py::arg("progress") = py::none(),
+        "Reads what predicting needs: the catalog (default: bundled), the forcing model (default: fitted to the "
+        "catalog once and kept in the user cache), the stylus template and materials; modes and mesh_size (m) "
+        "as the template's when 0.");
+}
+
+}  // namespace nibrig::ui::python

@@ -1,0 +1,217 @@
+// nibrig.measure: one recording (a friction or accelerometer file of the paper's, or a rig session)
+// to μ, the velocity-binned spectrum and the perceptually weighted descriptors, as `nibrig measure`
+// gives them (model/catalog/analysis.hpp); a folder of recordings to a catalog, as `nibrig catalog`.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <atomic>
+#include <optional>
+
+#include "model/catalog/analysis.hpp"
+#include "model/catalog/catalog_builder.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/io/catalog_file.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/paper_recording.hpp"
+#include "model/io/rig_session.hpp"
+#include "ui/python/long_call.hpp"
+#include "ui/python/submodules.hpp"
+
+namespace nibrig::ui::python {
+
+namespace py = pybind11;
+namespace catalog = model::catalog;
+
+namespace {
+
+// What one recording measured; the parts its kind has.
+struct Measurement {
+  std::string kind;  // "friction", "vibration" or "session"
+  std::string tool, surface;
+  std::optional<catalog::FrictionAnalysis> friction;
+  std::optional<catalog::VibrationAnalysis> vibration;
+  std::vector<std::string> warnings;
+  std::string json;  // what `nibrig measure` writes
+};
+
+model::measure::ThresholdCurve threshold_of(const std::optional<std::filesystem::path>& file) {
+  return model::measure::ThresholdCurve::load(file.value_or(model::io::default_threshold_curve()));
+}
+
+Measurement measure_recording(const std::filesystem::path& recording, const std::optional<std::string>& tool,
+                              const std::optional<std::string>& surface, const std::optional<double>& load,
+                              const std::optional<double>& lever, const std::optional<std::filesystem::path>& threshold_file) {
+  py::gil_scoped_release unlocked;
+  std::error_code ec;
+  if (!std::filesystem::exists(recording, ec))  // FileNotFoundError, as a reader's own refusal would be
+    throw model::io::FormatError(recording, "", "no such file or folder");
+  const auto threshold = threshold_of(threshold_file);
+  const catalog::AnalysisOptions options;
+  const model::io::StatedRecording stated{tool, surface, load, lever};
+  Measurement m;
+  switch (catalog::classify_recording_by_content(recording)) {
+    case catalog::RecordingKind::paper_friction:
+      m.kind = "friction";
+      m.friction = catalog::analyze_friction(model::io::read_paper_friction(recording, stated), options);
+      m.tool = m.friction->tool, m.surface = m.friction->surface;
+      m.json = catalog::to_json(*m.friction).dump(2);
+      break;
+    case catalog::RecordingKind::paper_vibration:
+      m.kind = "vibration";
+      m.vibration = catalog::analyze_vibration(model::io::read_paper_vibration(recording, stated), threshold, options);
+      m.tool = m.vibration->tool, m.surface = m.vibration->surface;
+      m.warnings = m.vibration->warnings;
+      m.json = catalog::to_json(*m.vibration, threshold).dump(2);
+      break;
+    case catalog::RecordingKind::session: {
+      if (tool || surface || load || lever)
+        throw std::invalid_argument(recording.string() +
+                                    ": a rig session names its own tool, surface and load; tool, surface, load "
+                                    "and lever are for single CSV recordings");
+      const auto a = catalog::analyze_session(model::io::read_rig_session(recording), threshold, options);
+      m.kind = "session";
+      m.tool = a.info.tool, m.surface = a.info.surface;
+      m.friction = a.friction, m.vibration = a.vibration, m.warnings = a.warnings;
+      m.json = catalog::to_json(a, threshold).dump(2);
+      break;
+    }
+  }
+  return m;
+}
+
+// A vector's or a spectrum's numbers as numpy arrays that read the measurement's memory.
+py::array_t<double> view(const std::vector<double>& v, const py::handle& owner) {
+  return py::array_t<double>({v.size()}, {sizeof(double)}, v.data(), owner);
+}
+
+const catalog::VibrationAnalysis& vibration_of(const Measurement& m) {
+  if (!m.vibration) throw std::invalid_argument("this " + m.kind + " recording has no vibration spectrum");
+  return *m.vibration;
+}
+
+const catalog::FrictionAnalysis& friction_of(const Measurement& m) {
+  if (!m.friction) throw std::invalid_argument("this " + m.kind + " recording has no friction");
+  return *m.friction;
+}
+
+struct Catalog {
+  model::io::Catalog catalog;
+  std::vector<std::string> skipped;
+};
+
+Catalog build(const std::filesystem::path& folder, const std::optional<std::filesystem::path>& threshold_file,
+              unsigned threads, const py::object& progress) {
+  Catalog out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        const auto threshold = threshold_of(threshold_file);
+        const auto found = catalog::find_recordings(folder);
+        std::atomic<std::size_t> done{0};
+        const std::size_t total = found.files.size();
+        auto built = catalog::build_catalog(found, threshold, catalog::AnalysisOptions{}, threads,
+                                            [&](const std::filesystem::path&) {
+                                              report("analysing recordings", ++done, total);
+                                              model::numeric::throw_if_cancelled(stop, "catalog build");
+                                            });
+        out.catalog = std::move(built.catalog);
+        out.skipped = std::move(built.skipped);
+      },
+      progress);
+  return out;
+}
+
+}  // namespace
+
+void add_measure_module(py::module_ m) {
+  py::class_<Measurement>(m, "Measurement", "One recording's physical descriptors (Sec. 3 and 4.4)")
+      .def_readonly("kind", &Measurement::kind, "'friction', 'vibration' or 'session'")
+      .def_readonly("tool", &Measurement::tool)
+      .def_readonly("surface", &Measurement::surface)
+      .def_readonly("warnings", &Measurement::warnings)
+      .def_property_readonly("mu", [](const Measurement& m) { return friction_of(m).fit.mu; },
+                             "The Coulomb coefficient: mean tangential over normal force while sliding")
+      .def_property_readonly("mu_interval",
+                             [](const Measurement& m) {
+                               return std::pair(friction_of(m).fit.mu_ci_low, friction_of(m).fit.mu_ci_high);
+                             },
+                             "μ's 95 % confidence interval (its samples' autocorrelation accounted for)")
+      .def_property_readonly("normal_load_N", [](const Measurement& m) { return friction_of(m).normal_load_N; })
+      .def_property_readonly(
+          "frequencies_hz", [](const py::object& self) { return view(vibration_of(self.cast<const Measurement&>()).spectrum.frequencies_hz, self); },
+          "The spectrum's frequencies, Hz (a view)")
+      .def_property_readonly(
+          "speeds_m_s", [](const py::object& self) { return view(vibration_of(self.cast<const Measurement&>()).spectrum.speeds_m_s, self); },
+          "The speeds the spectrum is binned at, m/s (a view)")
+      .def_property_readonly(
+          "amplitude",
+          [](const Measurement& m) {
+            const auto& s = vibration_of(m).spectrum;
+            py::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
+            auto out = a.mutable_unchecked<2>();
+            for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
+              for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
+                out(static_cast<py::ssize_t>(v), static_cast<py::ssize_t>(f)) = s.amplitude_m_s2[v][f];
+            return a;
+          },
+          "The velocity-binned spectrum, speeds x frequencies, m/s² (a copy: rows are separate vectors)")
+      .def_property_readonly("weighted_mean", [](const Measurement& m) { return vibration_of(m).descriptors.weighted_mean; },
+                             "Mean of the threshold-weighted spectrum: the descriptor of the paper's 2-D space (dimensionless)")
+      .def_property_readonly("weighted_power", [](const Measurement& m) { return vibration_of(m).descriptors.weighted_power; },
+                             "Mean over speeds of the weighted spectrum's power, Hz")
+      .def_property_readonly("band_energies", [](const Measurement& m) { return vibration_of(m).descriptors.band_energies; },
+                             "k -> the weighted power in k equal bands (they add up to weighted_power)")
+      .def("to_json", [](const Measurement& m) { return m.json; }, "What `nibrig measure` writes for it");
+
+  m.def("recording", &measure_recording, py::arg("path"), py::kw_only(), py::arg("tool") = py::none(),
+        py::arg("surface") = py::none(), py::arg("load") = py::none(), py::arg("lever") = py::none(),
+        py::arg("threshold") = py::none(),
+        "Measures one recording as `nibrig measure` does: a friction file "
+        "(<tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]), an accelerometer file (arm_<tool>_<surface>.csv[.gz]) "
+        "or a rig session folder. A file named otherwise takes tool, surface and, for friction, load (N) and "
+        "lever. threshold: the detection-threshold curve weighting the spectrum (default: the bundled one).");
+
+  py::class_<Catalog>(m, "Catalog", "Tools and surfaces with their friction and vibration descriptors")
+      .def_property_readonly("tools", [](const Catalog& c) {
+        std::vector<std::string> ids;
+        for (const auto& t : c.catalog.tools) ids.push_back(t.id);
+        return ids;
+      })
+      .def_property_readonly("surfaces", [](const Catalog& c) {
+        std::vector<std::string> ids;
+        for (const auto& s : c.catalog.surfaces) ids.push_back(s.id);
+        return ids;
+      })
+      .def_property_readonly("pairings",
+                             [](const Catalog& c) {
+                               py::list out;
+                               for (const auto& p : c.catalog.pairings) {
+                                 py::dict d;
+                                 d["tool"] = p.tool, d["surface"] = p.surface;
+                                 d["mu"] = p.friction ? py::cast(p.friction->mu) : py::none();
+                                 d["weighted_mean"] = p.vibration ? py::cast(p.vibration->weighted_mean) : py::none();
+                                 out.append(d);
+                               }
+                               return out;
+                             },
+                             "Each tool/surface pair with its μ and weighted mean vibration (None where not measured)")
+      .def_readonly("skipped", &Catalog::skipped, "Files of the folder that are not recordings, with why")
+      .def("save", [](const Catalog& c, const std::filesystem::path& file) {
+             py::gil_scoped_release unlocked;
+             model::io::write_catalog(file, c.catalog);
+           }, py::arg("path"), "Writes the catalog JSON (`nibrig catalog -o`), atomically");
+
+  m.def("catalog", &build, py::arg("folder"), py::kw_only(), py::arg("threshold") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(),
+        "Every recording under a folder measured into one catalog, as `nibrig catalog` does; progress: "
+        "(step, done, total) per file. Releases the GIL; Ctrl-C stops it.");
+  m.def("load_catalog", [](const std::filesystem::path& file) {
+          py::gil_scoped_release unlocked;
+          return Catalog{model::io::read_catalog(file), {}};
+        }, py::arg("path"), "Reads a catalog JSON (the bundled one: nibrig.measure.bundled_catalog())");
+  m.def("bundled_catalog", [] { return model::io::default_catalog(); },
+        "The path of the catalog bundled with nibrig (derived from the paper's recordings)");
+}
+
+}  // namespace nibrig::ui::python

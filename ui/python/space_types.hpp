@@ -1,0 +1,31 @@
+// The Python classes nibrig.space.Space and Placement, which other areas take and give (a design
+// is placed in a Space), as C++ types.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/space/descriptor_map.hpp"
+#include "model/space/space_file.hpp"
+
+namespace nibrig::ui::python {
+
+struct Space {
+  model::space::SpaceFile file;
+  std::vector<std::string> warnings;  // from the fit: e.g. too few stimuli for a descriptor map
+
+  std::size_t index_of(const std::string& name) const {
+    for (std::size_t i = 0; i < file.stimuli.size(); ++i)
+      if (file.stimuli[i] == name) return i;
+    throw std::invalid_argument("'" + name + "' is not a stimulus of this space (it has " +
+                                std::to_string(file.stimuli.size()) + ", e.g. '" + file.stimuli.front() + "')");
+  }
+};
+
+// A position with its uncertainty: a tool placed from descriptors, a design placed from its prediction.
+struct Placement {
+  model::space::Placement placement;
+};
+
+}  // namespace nibrig::ui::python
