@@ -180,15 +180,8 @@ void add_design_module(py::module_ m) {
       }, "The design's modes, undamped, Hz")
       .def_property_readonly("frequencies_hz", [](const Prediction& p) { return p.tool.spectrum.frequencies_hz; })
       .def_property_readonly("speeds_m_s", [](const Prediction& p) { return p.tool.spectrum.speeds_m_s; })
-      .def_property_readonly("amplitude", [](const Prediction& p) {
-        const auto& s = p.tool.spectrum;
-        py::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
-        auto out = a.mutable_unchecked<2>();
-        for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
-          for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
-            out(static_cast<py::ssize_t>(v), static_cast<py::ssize_t>(f)) = s.amplitude_m_s2[v][f];
-        return a;
-      }, "Predicted velocity-binned spectrum, speeds x frequencies, m/s²")
+      .def_property_readonly("amplitude", [](const Prediction& p) { return spectrum_array(p.tool.spectrum); },
+                             "Predicted velocity-binned spectrum, speeds x frequencies, m/s²")
       .def_property_readonly("weighted_mean", [](const Prediction& p) { return p.tool.vibration.weighted_mean; })
       .def("place", [](const Prediction& p, const Space& s) {
              if (!s.file.descriptor_map) throw std::invalid_argument("the space has no descriptor map");

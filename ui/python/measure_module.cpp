@@ -17,6 +17,7 @@
 #include "model/io/paper_recording.hpp"
 #include "model/io/rig_session.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/numpy_views.hpp"
 #include "ui/python/submodules.hpp"
 
 namespace nibrig::ui::python {
@@ -146,15 +147,7 @@ void add_measure_module(py::module_ m) {
           "The speeds the spectrum is binned at, m/s (a view)")
       .def_property_readonly(
           "amplitude",
-          [](const Measurement& m) {
-            const auto& s = vibration_of(m).spectrum;
-            py::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
-            auto out = a.mutable_unchecked<2>();
-            for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
-              for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
-                out(static_cast<py::ssize_t>(v), static_cast<py::ssize_t>(f)) = s.amplitude_m_s2[v][f];
-            return a;
-          },
+          [](const Measurement& m) { return spectrum_array(vibration_of(m).spectrum); },
           "The velocity-binned spectrum, speeds x frequencies, m/s² (a copy: rows are separate vectors)")
       .def_property_readonly("weighted_mean", [](const Measurement& m) { return vibration_of(m).descriptors.weighted_mean; },
                              "Mean of the threshold-weighted spectrum: the descriptor of the paper's 2-D space (dimensionless)")

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "model/io/velocity_spectrum.hpp"
+
 namespace nibrig::ui::python {
 
 // rows × cols, column-major as Eigen stores it.
@@ -23,6 +25,17 @@ inline pybind11::array_t<double> matrix_view(const Eigen::MatrixXd& m, const pyb
 inline pybind11::array_t<double> vector_view(const Eigen::VectorXd& v, const pybind11::handle& owner) {
   pybind11::array_t<double> a({v.size()}, {static_cast<pybind11::ssize_t>(sizeof(double))}, v.data(), owner);
   pybind11::detail::array_proxy(a.ptr())->flags &= ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+// A velocity-binned spectrum's amplitudes as speeds × frequencies, m/s². A copy: the library
+// keeps each speed's row as a vector of its own.
+inline pybind11::array_t<double> spectrum_array(const model::io::VelocitySpectrum& s) {
+  pybind11::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
+  auto out = a.mutable_unchecked<2>();
+  for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
+    for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
+      out(static_cast<pybind11::ssize_t>(v), static_cast<pybind11::ssize_t>(f)) = s.amplitude_m_s2[v][f];
   return a;
 }
 
