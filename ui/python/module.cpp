@@ -13,4 +13,6 @@ PYBIND11_MODULE(_core, m) {
       m.def_submodule("measure", "Recordings to friction, spectra and descriptors; catalogs"));
   nibrig::ui::python::add_design_module(
       m.def_submodule("design", "Predict designs, place them, search for the nearest one"));
+  nibrig::ui::python::add_render_module(
+      m.def_submodule("render", "Tools rendered offline through the real-time engine into arrays"));
 }

@@ -1,3 +1,4 @@
 from . import design as design
 from . import measure as measure
+from . import render as render
 from . import space as space

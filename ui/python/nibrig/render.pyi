@@ -1,0 +1,36 @@
+"""Tools rendered offline through the real-time engine into numpy arrays (as `nibrig render`)."""
+
+import os
+from typing import Callable, Optional, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Path = Union[str, os.PathLike[str]]
+
+class Rendering:
+    @property
+    def samples(self) -> npt.NDArray[np.float32]:
+        """Mono, full scale +-1; a view."""
+    rate_hz: float
+    tool: str
+    stroke: str
+    def __len__(self) -> int: ...
+
+def tool(
+    tool: str,
+    surface: str,
+    *,
+    speed: Optional[float] = None,
+    trajectory: Optional[_Path] = None,
+    force: Optional[float] = None,
+    seconds: Optional[float] = None,
+    rate_hz: float = 48000.0,
+    period: int = 64,
+    seed: int = 1,
+    catalog: Optional[_Path] = None,
+    stylus: Optional[_Path] = None,
+    forcing: Optional[_Path] = None,
+    progress: Optional[Callable[[str, int, int], object]] = None,
+) -> Rendering:
+    """Renders a tool on a surface: speed in m/s, force in N, seconds of output."""
