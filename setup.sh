@@ -176,7 +176,8 @@ case "$job" in
     stage_done "fuzzing"
     ;;
   bench)
-    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF "$with_panel"
+    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=ON -DNIBRIG_LEAK_CHECK=OFF "$with_panel" \
+      -DNIBRIG_BUILD_PYTHON=ON
     # The panel's frame benchmark needs a display: a private X server when there is none.
     display=()
     # -noreset: the benchmarks open one window after another, and a server that resets as its last
@@ -185,6 +186,7 @@ case "$job" in
     "${display[@]}" ./build/release/tests/bench/nibrig_bench --benchmark_counters_tabular=true
     /usr/bin/python3 tests/bench/scipy_spectrogram.py
     /usr/bin/python3 tests/bench/numpy_space_fit.py
+    PYTHONPATH=build/release/python /usr/bin/python3 tests/bench/python_space_fit.py
     ;;
   panel)
     configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel"

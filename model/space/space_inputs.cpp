@@ -11,13 +11,18 @@ namespace nibrig::model::space {
 SpaceInputs read_space_inputs(const std::filesystem::path& judgments,
                               const std::filesystem::path& catalog, std::size_t dims,
                               double lambda) {
+  return space_inputs(io::read_triplets(judgments), catalog, dims, lambda);
+}
+
+SpaceInputs space_inputs(io::TripletSet judgments, const std::filesystem::path& catalog,
+                         std::size_t dims, double lambda) {
   if (lambda > 0 && catalog.empty())
     throw std::invalid_argument(
         "lambda > 0 ties the axes to physical descriptors: give them with a catalog "
         "(--descriptors catalog.json)");
   if (lambda < 0) throw std::invalid_argument("lambda must not be negative");
   SpaceInputs in;
-  in.judgments = io::read_triplets(judgments);
+  in.judgments = std::move(judgments);
   in.problem.dims = dims;
   in.problem.stimuli = in.judgments.stimuli.size();
   in.problem.triplets = in.judgments.triplets;

@@ -31,6 +31,9 @@ struct SpaceInputs {
 SpaceInputs read_space_inputs(const std::filesystem::path& judgments,
                               const std::filesystem::path& catalog, std::size_t dims,
                               double lambda);
+// The same from judgments already read (a script fitting several spaces to one file reads it once).
+SpaceInputs space_inputs(io::TripletSet judgments, const std::filesystem::path& catalog,
+                         std::size_t dims, double lambda);
 
 // The stimuli of judged queries located in a space: a judged stimulus exactly (zero covariance);
 // any other, when a catalog is given and the space has a descriptor map, placed from its

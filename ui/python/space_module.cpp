@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "model/design/default_space.hpp"
+#include "model/io/triplets.hpp"
 #include "model/space/bootstrap.hpp"
 #include "model/space/judgment_model.hpp"
 #include "model/space/space_file.hpp"
@@ -26,9 +27,18 @@ namespace space = model::space;
 
 namespace {
 
-Space fit(const std::filesystem::path& judgments, std::size_t dims, const std::optional<std::filesystem::path>& descriptors,
+// Judgments read once, for several fits.
+struct Judgments {
+  model::io::TripletSet set;
+  std::filesystem::path file;
+};
+
+Space fit(const py::object& judgments_or_path, std::size_t dims, const std::optional<std::filesystem::path>& descriptors,
           double lambda, const std::string& model, int starts, unsigned seed, int bootstrap, unsigned threads,
           const py::object& progress) {
+  const bool read = py::isinstance<Judgments>(judgments_or_path);
+  const std::filesystem::path judgments =
+      read ? judgments_or_path.cast<const Judgments&>().file : judgments_or_path.cast<std::filesystem::path>();
   if (dims < 1) throw std::invalid_argument("dims is " + std::to_string(dims) + "; expected at least 1");
   if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
   if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 or more");
@@ -43,7 +53,8 @@ Space fit(const std::filesystem::path& judgments, std::size_t dims, const std::o
   Space out;
   {
     py::gil_scoped_release unlocked;  // reading a large judgments file takes a moment too
-    const auto in = space::read_space_inputs(judgments, catalog, dims, lambda);
+    const auto in = read ? space::space_inputs(judgments_or_path.cast<const Judgments&>().set, catalog, dims, lambda)
+                         : space::read_space_inputs(judgments, catalog, dims, lambda);
     py::gil_scoped_acquire locked;
     run_long_call(
         [&](std::stop_token stop, const Report& report) {
@@ -121,6 +132,16 @@ void add_space_module(py::module_ m) {
            "The region in the plane of axes 1 and 2 at each level: (semi_axis_1, semi_axis_2, angle in radians "
            "from axis 1) per level");
 
+  py::class_<Judgments>(m, "Judgments", "Triplet judgments read once, for several fits")
+      .def_property_readonly("stimuli", [](const Judgments& j) { return j.set.stimuli; })
+      .def_property_readonly("triplets", [](const Judgments& j) { return j.set.triplets.size(); })
+      .def_property_readonly("responses", [](const Judgments& j) { return model::io::response_count(j.set); })
+      .def_readonly("file", &Judgments::file);
+  m.def("read_judgments", [](const std::filesystem::path& file) {
+          py::gil_scoped_release unlocked;
+          return Judgments{model::io::read_triplets(file), file};
+        }, py::arg("path"), "Reads triplet judgments (the paper's, Lagunas', Salmon's formats) once, for several fits");
+
   py::class_<Space>(m, "Space", "A perceptual space fitted from triplet judgments (Sec. 4)")
       .def_property_readonly("stimuli", [](const Space& s) { return s.file.stimuli; }, "The judged stimuli, in order")
       .def_property_readonly("dims", [](const Space& s) { return static_cast<std::size_t>(s.file.coordinates.rows()); },
@@ -165,7 +186,8 @@ void add_space_module(py::module_ m) {
   m.def("fit", &fit, py::arg("judgments"), py::arg("dims") = 2, py::kw_only(), py::arg("descriptors") = py::none(),
         py::arg("lam") = 0.0, py::arg("model") = "probit", py::arg("starts") = 16, py::arg("seed") = 1u,
         py::arg("bootstrap") = 0, py::arg("threads") = 0u, py::arg("progress") = py::none(),
-        "Fits a space to triplet judgments (any format nibrig reads: the paper's, Lagunas', Salmon's) as "
+        "Fits a space to triplet judgments (a file in any format nibrig reads: the paper's, Lagunas', "
+        "Salmon's; or Judgments from read_judgments) as "
         "`nibrig space fit` does. descriptors: a catalog whose descriptors tie the axes (with lam > 0) and "
         "give the descriptor map; model: a family name or 'auto' (chosen by cross-validation); bootstrap: "
         "resamples for confidence regions; progress: called with (step, done, total). Releases the GIL; "

@@ -129,3 +129,12 @@ def test_ctrl_c_stops_a_long_fit(salmon):
     assert stopped_after < 10.0
     # The module works on afterwards.
     assert nibrig.space.fit(salmon, dims=1, starts=1).dims == 1
+
+
+def test_judgments_read_once_fit_as_the_file_does(salmon):
+    judgments = nibrig.space.read_judgments(salmon)
+    assert judgments.responses == 15054
+    from_file = nibrig.space.fit(salmon, dims=2, starts=2)
+    from_read = nibrig.space.fit(judgments, dims=2, starts=2)
+    assert from_read.stimuli == from_file.stimuli
+    np.testing.assert_array_equal(from_read.coordinates, from_file.coordinates)

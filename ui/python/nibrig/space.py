@@ -2,10 +2,12 @@
 
 from ._core import space as _space
 
+Judgments = _space.Judgments
+read_judgments = _space.read_judgments
 Space = _space.Space
 Placement = _space.Placement
 fit = _space.fit
 load = _space.load
 default = _space.default
 
-__all__ = ["Space", "Placement", "fit", "load", "default"]
+__all__ = ["Judgments", "read_judgments", "Space", "Placement", "fit", "load", "default"]

@@ -8,6 +8,19 @@ import numpy.typing as npt
 
 _Path = Union[str, os.PathLike[str]]
 
+class Judgments:
+    """Triplet judgments read once, for several fits."""
+
+    @property
+    def stimuli(self) -> list[str]: ...
+    @property
+    def triplets(self) -> int: ...
+    @property
+    def responses(self) -> int: ...
+    file: str
+
+def read_judgments(path: _Path) -> Judgments: ...
+
 class Placement:
     """A tool placed from its descriptors: a Gaussian position in the space."""
 
@@ -67,7 +80,7 @@ class Space:
         """Writes the space file atomically."""
 
 def fit(
-    judgments: _Path,
+    judgments: Union[_Path, Judgments],
     dims: int = 2,
     *,
     descriptors: Optional[_Path] = None,
