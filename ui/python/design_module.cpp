@@ -8,6 +8,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <memory>
+#include <numbers>
 
 #include "model/design/design_search.hpp"
 #include "model/design/prediction_inputs.hpp"
@@ -175,7 +176,7 @@ void add_design_module(py::module_ m) {
       .def_property_readonly("first_mode_hz", [](const Prediction& p) { return p.tool.first_mode_hz; })
       .def_property_readonly("mode_frequencies_hz", [](const Prediction& p) {
         std::vector<double> f;
-        for (double w : p.tool.modal.omega) f.push_back(w / (2 * 3.14159265358979323846));
+        for (double w : p.tool.modal.omega) f.push_back(w / (2 * std::numbers::pi));
         return f;
       }, "The design's modes, undamped, Hz")
       .def_property_readonly("frequencies_hz", [](const Prediction& p) { return p.tool.spectrum.frequencies_hz; })

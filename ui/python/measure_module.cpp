@@ -82,11 +82,6 @@ Measurement measure_recording(const std::filesystem::path& recording, const std:
   return m;
 }
 
-// A vector's or a spectrum's numbers as numpy arrays that read the measurement's memory.
-py::array_t<double> view(const std::vector<double>& v, const py::handle& owner) {
-  return py::array_t<double>({v.size()}, {sizeof(double)}, v.data(), owner);
-}
-
 const catalog::VibrationAnalysis& vibration_of(const Measurement& m) {
   if (!m.vibration) throw std::invalid_argument("this " + m.kind + " recording has no vibration spectrum");
   return *m.vibration;
@@ -140,10 +135,10 @@ void add_measure_module(py::module_ m) {
                              "μ's 95 % confidence interval (its samples' autocorrelation accounted for)")
       .def_property_readonly("normal_load_N", [](const Measurement& m) { return friction_of(m).normal_load_N; })
       .def_property_readonly(
-          "frequencies_hz", [](const py::object& self) { return view(vibration_of(self.cast<const Measurement&>()).spectrum.frequencies_hz, self); },
+          "frequencies_hz", [](const py::object& self) { const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.frequencies_hz; return array_view(v.data(), v.size(), self); },
           "The spectrum's frequencies, Hz (a view)")
       .def_property_readonly(
-          "speeds_m_s", [](const py::object& self) { return view(vibration_of(self.cast<const Measurement&>()).spectrum.speeds_m_s, self); },
+          "speeds_m_s", [](const py::object& self) { const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.speeds_m_s; return array_view(v.data(), v.size(), self); },
           "The speeds the spectrum is binned at, m/s (a view)")
       .def_property_readonly(
           "amplitude",

@@ -22,10 +22,16 @@ inline pybind11::array_t<double> matrix_view(const Eigen::MatrixXd& m, const pyb
   return a;
 }
 
-inline pybind11::array_t<double> vector_view(const Eigen::VectorXd& v, const pybind11::handle& owner) {
-  pybind11::array_t<double> a({v.size()}, {static_cast<pybind11::ssize_t>(sizeof(double))}, v.data(), owner);
+// n contiguous values (an Eigen vector's, a std::vector's).
+template <typename T>
+pybind11::array_t<T> array_view(const T* data, std::size_t n, const pybind11::handle& owner) {
+  pybind11::array_t<T> a({n}, {sizeof(T)}, data, owner);
   pybind11::detail::array_proxy(a.ptr())->flags &= ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return a;
+}
+
+inline pybind11::array_t<double> vector_view(const Eigen::VectorXd& v, const pybind11::handle& owner) {
+  return array_view(v.data(), static_cast<std::size_t>(v.size()), owner);
 }
 
 // A velocity-binned spectrum's amplitudes as speeds × frequencies, m/s². A copy: the library

@@ -13,6 +13,7 @@
 #include "playback/prepared_engine.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/numpy_views.hpp"
 #include "ui/python/submodules.hpp"
 
 namespace nibrig::ui::python {
@@ -81,9 +82,9 @@ void add_render_module(py::module_ m) {
           "samples",
           [](const py::object& self) {
             const auto& r = self.cast<const Rendering&>();
-            return py::array_t<float>({r.samples.size()}, {sizeof(float)}, r.samples.data(), self);
+            return array_view(r.samples.data(), r.samples.size(), self);
           },
-          "Mono samples, full scale ±1 (the engine's output level per m/s² of sensor acceleration); a view")
+          "Mono samples, full scale ±1 (the engine's output level per m/s² of sensor acceleration); a read-only view")
       .def_readonly("rate_hz", &Rendering::rate_hz)
       .def_readonly("tool", &Rendering::tool, "What played, as the engine names it")
       .def_readonly("stroke", &Rendering::stroke, "How it moved, in words")

@@ -37,6 +37,7 @@ def test_a_vibration_recording_gives_its_spectrum_and_descriptors():
     assert a.shape == (len(m.speeds_m_s), len(m.frequencies_hz))
     assert (a >= 0).all() and np.isfinite(a).all()
     assert np.all(np.diff(m.frequencies_hz) > 0)
+    assert not m.frequencies_hz.flags.writeable and not m.frequencies_hz.flags.owndata  # lent, read-only
     written = json.loads(m.to_json())
     np.testing.assert_array_equal(np.array(written["amplitude_m_s2"]), a)
     assert written["descriptors"]["weighted_mean"] == m.weighted_mean

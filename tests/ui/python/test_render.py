@@ -28,6 +28,7 @@ def test_a_rendering_is_what_the_command_line_renders(tmp_path):
     r = nibrig.render.tool("cryon", "office", speed=0.1, force=1.5, seconds=0.5, seed=7)
     assert len(r) == 24000 and r.rate_hz == 48000
     assert r.samples.dtype == np.float32
+    assert not r.samples.flags.writeable and not r.samples.flags.owndata  # lent, read-only
     rms = float(np.sqrt(np.mean(r.samples.astype(np.float64) ** 2)))
     assert rms > 1e-4  # a crayon on paper at 100 mm/s is well above silence
     command = os.environ.get("NIBRIG_COMMAND")
