@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 #include "playback/alsa_quiet.hpp"
 #include "playback/device_error.hpp"
@@ -183,6 +184,19 @@ DeviceChoice choose_device(std::string_view api, std::string_view device) {
   const std::string asked = device.empty() ? "an output device" : "'" + std::string(device) + "'";
   const std::string where = api.empty() ? "any audio API" : std::string(api);
   throw DeviceError("no audio device found for " + asked + " under " + where + ":" + listing);
+}
+
+OutputSettings output_settings_for(std::string_view api, std::string_view device, unsigned rate,
+                                   unsigned period_frames, unsigned output_channel, std::string stream_name) {
+  const DeviceChoice choice = choose_device(api, device);
+  OutputSettings s;
+  s.api = choice.api;
+  s.device = choice.device.name;
+  s.sample_rate = rate > 0 ? rate : choice.device.preferred_sample_rate > 0 ? choice.device.preferred_sample_rate : 48000;
+  s.period_frames = period_frames;
+  s.output_channel = output_channel;
+  s.stream_name = std::move(stream_name);
+  return s;
 }
 
 }  // namespace nibrig::playback

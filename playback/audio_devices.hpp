@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "playback/audio_output.hpp"
+
 namespace nibrig::playback {
 
 struct DeviceInfo {
@@ -52,6 +54,12 @@ DeviceChoice choose_device(std::string_view api, std::string_view device);
 // substring). `api` only words the error. Throws DeviceError.
 const DeviceInfo& find_device(const std::vector<DeviceInfo>& devices, std::string_view name,
                               std::string_view api);
+
+// The settings to open a device asked for by API and name (chosen as choose_device does) at
+// `rate` Hz, or at the device's own rate when 0 (JACK: the server's; 48 kHz when it does not say).
+// Every face opens its devices through this. Throws DeviceError.
+OutputSettings output_settings_for(std::string_view api, std::string_view device, unsigned rate,
+                                   unsigned period_frames, unsigned output_channel, std::string stream_name);
 
 // One line per device ("system: 2 out, 2 in, 48000 Hz, default output"), for errors and the CLI.
 std::string describe_devices(const ApiDevices& api);

@@ -19,17 +19,7 @@ void add_device_options(CLI::App* cmd, DeviceOptions& o) {
 }
 
 playback::OutputSettings output_settings(const DeviceOptions& o, const std::string& stream_name) {
-  const playback::DeviceChoice choice = playback::choose_device(o.api, o.device);
-  playback::OutputSettings s;
-  s.api = choice.api;
-  s.device = choice.device.name;
-  s.sample_rate = o.rate > 0 ? o.rate
-                  : choice.device.preferred_sample_rate > 0 ? choice.device.preferred_sample_rate
-                                                            : 48000;
-  s.period_frames = o.period;
-  s.output_channel = o.channel;
-  s.stream_name = stream_name;
-  return s;
+  return playback::output_settings_for(o.api, o.device, o.rate, o.period, o.channel, stream_name);
 }
 
 }  // namespace nibrig::ui::cli
