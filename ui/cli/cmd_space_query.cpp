@@ -12,6 +12,7 @@
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/prediction_scores.hpp"
 #include "model/space/query_csv.hpp"
+#include "model/space/space_evaluation.hpp"
 #include "model/space/space_inputs.hpp"
 #include "model/space/space_tools.hpp"
 #include "ui/cli/output.hpp"
@@ -40,13 +41,9 @@ void run_space_predict(const SpaceQueryOptions& o) {
 void run_space_evaluate(const SpaceQueryOptions& o) {
   const space::SpaceFile s = space::read_space_file(o.space_file);
   const model::io::TripletSet judged = model::io::read_triplets(o.queries);
-  space::StimulusLocator locator(s, o.space_file, o.catalog);
-  const std::vector<space::QueryPrediction> p = space::predict_queries(s, judged, locator, o.queries);
-  std::vector<double> mean;
-  for (const auto& x : p) mean.push_back(x.p);
-  const space::PredictionScores scores = space::score_predictions(mean, judged.triplets);
-  std::size_t placed = 0;
-  for (const auto& name : judged.stimuli) placed += locator.placed(name);
+  const space::SpaceEvaluation evaluation = space::evaluate_space(s, o.space_file, judged, o.queries, o.catalog);
+  const space::PredictionScores& scores = evaluation.scores;
+  const std::size_t placed = evaluation.placed_from_descriptors;
   std::cout << fmt::format("{} triplets, {} responses of {}; {} stimuli placed from descriptors\n",
                            scores.triplets, scores.responses, o.queries.filename().string(),
                            placed);
