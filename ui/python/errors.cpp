@@ -7,6 +7,7 @@
 #include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "playback/device_error.hpp"
 
 namespace nibrig::ui::python {
 
@@ -24,6 +25,8 @@ void register_error_translation() {
       const bool unopened = std::string(e.what()).find("cannot open") != std::string::npos;
       PyErr_SetString(missing ? PyExc_FileNotFoundError : unopened ? PyExc_OSError : PyExc_ValueError, e.what());
     } catch (const model::io::OutputFileError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const playback::DeviceError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const model::io::UnwritableOutput& e) {
       PyErr_SetString(PyExc_ValueError, e.what());

@@ -3,10 +3,11 @@
 Each area is a submodule: ``nibrig.measure`` measures recordings and builds catalogs,
 ``nibrig.space`` fits perceptual spaces from triplet judgments, predicts judgments and places
 tools, ``nibrig.design`` predicts designs and searches for the nearest one, ``nibrig.render``
-renders a tool through the real-time engine into an array. Arrays are numpy's;
+renders a tool through the real-time engine into an array, ``nibrig.audition`` plays
+one to three tools live on an audio device. Arrays are numpy's;
 where the library can lend its memory, they are views of it, read-only.
 """
 
-from . import design, measure, render, space
+from . import audition, design, measure, render, space
 
-__all__ = ["design", "measure", "render", "space"]
+__all__ = ["audition", "design", "measure", "render", "space"]

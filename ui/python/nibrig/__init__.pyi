@@ -1,3 +1,4 @@
+from . import audition as audition
 from . import design as design
 from . import measure as measure
 from . import render as render
