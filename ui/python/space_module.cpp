@@ -27,12 +27,6 @@ namespace space = model::space;
 
 namespace {
 
-// Judgments read once, for several fits.
-struct Judgments {
-  model::io::TripletSet set;
-  std::filesystem::path file;
-};
-
 Space fit(const py::object& judgments_or_path, std::size_t dims, const std::optional<std::filesystem::path>& descriptors,
           double lambda, const std::string& model, int starts, unsigned seed, int bootstrap, unsigned threads,
           const py::object& progress) {
@@ -213,6 +207,7 @@ void add_space_module(py::module_ m) {
           py::gil_scoped_release unlocked;
           return Space{space::read_space_file(file), {}};
         }, py::arg("path"), "Reads a space file (`nibrig space fit -o`)");
+  add_space_scores(m);
 }
 
 }  // namespace nibrig::ui::python

@@ -1,11 +1,15 @@
-// The Python classes nibrig.space.Space and Placement, which other areas take and give (a design
-// is placed in a Space), as C++ types.
+// The Python classes nibrig.space.Space, Placement and Judgments, which other areas take and give
+// (a design is placed in a Space), as C++ types.
 #pragma once
 
+#include <pybind11/pybind11.h>
+
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "model/io/triplets.hpp"
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"
 
@@ -27,5 +31,14 @@ struct Space {
 struct Placement {
   model::space::Placement placement;
 };
+
+// Judgments read once, for several fits.
+struct Judgments {
+  model::io::TripletSet set;
+  std::filesystem::path file;
+};
+
+// Space.evaluate and nibrig.space.validate, added to the submodule once Space is registered.
+void add_space_scores(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

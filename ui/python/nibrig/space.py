@@ -1,4 +1,5 @@
-"""Perceptual spaces (Sec. 4 of the paper): fit from triplet judgments, predict, place tools."""
+"""Perceptual spaces (Sec. 4 of the paper): fit from triplet judgments, predict, evaluate,
+validate, place tools."""
 
 from ._core import space as _space
 
@@ -9,5 +10,11 @@ Placement = _space.Placement
 fit = _space.fit
 load = _space.load
 default = _space.default
+Evaluation = _space.Evaluation
+Validation = _space.Validation
+validate = _space.validate
 
-__all__ = ["Judgments", "read_judgments", "Space", "Placement", "fit", "load", "default"]
+__all__ = [
+    "Judgments", "read_judgments", "Space", "Placement", "fit", "load", "default", "Evaluation", "Validation",
+    "validate",
+]

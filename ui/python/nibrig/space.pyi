@@ -1,7 +1,7 @@
 """Perceptual spaces (Sec. 4 of the paper): fit from triplet judgments, predict, place tools."""
 
 import os
-from typing import Callable, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -78,6 +78,60 @@ class Space:
         """Places a tool from its descriptors through the space's descriptor map."""
     def save(self, path: _Path) -> None:
         """Writes the space file atomically."""
+    def evaluate(self, judgments: Union[_Path, Judgments], catalog: Optional[_Path] = None) -> Evaluation:
+        """Its predictions of judged triplets scored against their answers (`nibrig space evaluate`)."""
+
+class Evaluation:
+    @property
+    def triplets(self) -> int: ...
+    @property
+    def responses(self) -> int: ...
+    placed_from_descriptors: int
+    @property
+    def majority_agreement(self) -> float:
+        """Share of untied triplets whose majority answer is predicted."""
+    @property
+    def majority_trials(self) -> float: ...
+    @property
+    def majority_z(self) -> float: ...
+    @property
+    def majority_p_value(self) -> float: ...
+    @property
+    def individual_agreement(self) -> float: ...
+    @property
+    def mean_absolute_error(self) -> float:
+        """Mean |p_predicted - p_observed| over triplets."""
+    @property
+    def log_loss(self) -> float:
+        """Nats per response."""
+    @property
+    def pearson(self) -> Optional[Dict[str, float]]: ...
+    @property
+    def no_correlation_because(self) -> str: ...
+
+class Validation:
+    triplets: int
+    responses: int
+    @property
+    def points(self) -> List[Dict[str, Any]]:
+        """dims, lambda, model, mean_error, sd_error, majority_agreement, individual_agreement, log_loss."""
+    @property
+    def rank_correlation_with_names(self) -> Optional[Dict[str, float]]: ...
+
+def validate(
+    judgments: Union[_Path, Judgments],
+    dims: Sequence[int] = (1, 2, 3),
+    *,
+    lambdas: Sequence[float] = (0.0,),
+    models: Sequence[str] = ("probit",),
+    folds: int = 5,
+    starts: int = 8,
+    seed: int = 1,
+    descriptors: Optional[_Path] = None,
+    threads: int = 0,
+    progress: Optional[Callable[[str, int, int], object]] = None,
+) -> Validation:
+    """k-fold cross-validation per dims x lambda x model (`nibrig space validate`); Ctrl-C stops it."""
 
 def fit(
     judgments: Union[_Path, Judgments],

@@ -1,0 +1,149 @@
+// nibrig.space's scores: Space.evaluate (a space's predictions of judged triplets against their
+// answers, as `nibrig space evaluate`) and validate (the cross-validated error of spaces of several
+// dimensions, weights and models, as `nibrig space validate`): model/space/space_evaluation.hpp.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "model/numeric/cancellation.hpp"
+#include "model/space/judgment_model.hpp"
+#include "model/space/objective.hpp"
+#include "model/space/space_evaluation.hpp"
+#include "ui/python/long_call.hpp"
+#include "ui/python/space_types.hpp"
+
+namespace nibrig::ui::python {
+
+namespace py = pybind11;
+namespace space = model::space;
+
+namespace {
+
+space::SpaceEvaluation evaluate(const Space& s, const py::object& judgments, const std::optional<std::filesystem::path>& catalog) {
+  if (py::isinstance<Judgments>(judgments)) {
+    const auto& j = judgments.cast<const Judgments&>();
+    py::gil_scoped_release unlocked;
+    return space::evaluate_space(s.file, "the space", j.set, j.file, catalog.value_or(std::filesystem::path()));
+  }
+  const auto file = judgments.cast<std::filesystem::path>();
+  py::gil_scoped_release unlocked;
+  return space::evaluate_space(s.file, "the space", model::io::read_triplets(file), file,
+                               catalog.value_or(std::filesystem::path()));
+}
+
+space::Validation validate(const py::object& judgments, const std::vector<std::size_t>& dims,
+                           const std::vector<double>& lambdas, const std::vector<std::string>& models,
+                           std::size_t folds, int starts, unsigned seed,
+                           const std::optional<std::filesystem::path>& descriptors, unsigned threads,
+                           const py::object& progress) {
+  const std::filesystem::path file = py::isinstance<Judgments>(judgments)
+                                         ? judgments.cast<const Judgments&>().file
+                                         : judgments.cast<std::filesystem::path>();
+  if (folds < 2) throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
+  if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
+  for (const auto d : dims)
+    if (d < 1) throw std::invalid_argument("dims holds 0; expected numbers of dimensions from 1");
+  for (const auto l : lambdas)
+    if (!(l >= 0 && l <= space::kMaxLambda))
+      throw std::invalid_argument("lambdas holds " + std::to_string(l) + "; expected weights from 0 to " +
+                                  std::to_string(space::kMaxLambda));
+  space::SweepOptions sweep;
+  sweep.dims = dims;
+  sweep.lambdas = lambdas;
+  sweep.models.clear();
+  for (const auto& name : models) {
+    if (name == "all") {
+      sweep.models = space::every_family();
+      break;
+    }
+    sweep.models.push_back(space::parse_family(name));
+  }
+  sweep.cross_validation.folds = folds;
+  sweep.cross_validation.seed = seed;
+  sweep.cross_validation.fit.starts = starts;
+  sweep.cross_validation.fit.seed = seed;
+  sweep.cross_validation.fit.threads = threads;
+  space::Validation out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        sweep.cross_validation.fit.stop = stop;
+        out = space::validate_space_file(file, descriptors.value_or(std::filesystem::path()), sweep,
+                                         [&](std::size_t done, std::size_t total) { report("fitting folds", done, total); });
+      },
+      progress);
+  return out;
+}
+
+py::object correlation(const std::optional<space::Correlation>& c) {
+  if (!c) return py::none();
+  py::dict d;
+  d["r"] = c->r, d["p_value"] = c->p_value, d["n"] = c->n;
+  return d;
+}
+
+}  // namespace
+
+void add_space_scores(py::module_ m) {
+  py::class_<space::SpaceEvaluation>(m, "Evaluation", "A space's predictions of judged triplets scored against their answers")
+      .def_property_readonly("triplets", [](const space::SpaceEvaluation& e) { return e.scores.triplets; })
+      .def_property_readonly("responses", [](const space::SpaceEvaluation& e) { return e.scores.responses; })
+      .def_readonly("placed_from_descriptors", &space::SpaceEvaluation::placed_from_descriptors,
+                    "Judged stimuli the space was not fitted to, placed from the catalog's descriptors")
+      .def_property_readonly("majority_agreement", [](const space::SpaceEvaluation& e) { return e.scores.majority.fraction; },
+                             "Share of untied triplets whose majority answer is predicted (0.5 counts half)")
+      .def_property_readonly("majority_trials", [](const space::SpaceEvaluation& e) { return e.scores.majority.trials; })
+      .def_property_readonly("majority_z", [](const space::SpaceEvaluation& e) { return e.scores.majority.z; },
+                             "The agreement's z against chance (normal approximation of Binomial(n, 1/2))")
+      .def_property_readonly("majority_p_value", [](const space::SpaceEvaluation& e) { return e.scores.majority.p_value; },
+                             "One-sided: P(Z >= z)")
+      .def_property_readonly("individual_agreement", [](const space::SpaceEvaluation& e) { return e.scores.individual.fraction; },
+                             "Share of every individual answer predicted")
+      .def_property_readonly("mean_absolute_error", [](const space::SpaceEvaluation& e) { return e.scores.mean_absolute_error; },
+                             "Mean over triplets of |p_predicted - p_observed| (the paper's 'error')")
+      .def_property_readonly("log_loss", [](const space::SpaceEvaluation& e) { return e.scores.log_loss; },
+                             "Mean -log P(the answer given) per response, nats")
+      .def_property_readonly("pearson", [](const space::SpaceEvaluation& e) { return correlation(e.scores.probability_correlation); },
+                             "Predicted vs observed probability: {'r', 'p_value', 'n'}, or None (see no_correlation_because)")
+      .def_property_readonly("no_correlation_because", [](const space::SpaceEvaluation& e) { return e.scores.no_correlation_because; });
+
+  py::class_<space::Validation>(m, "Validation", "Cross-validated spaces of several dimensions, weights and models")
+      .def_readonly("triplets", &space::Validation::triplets)
+      .def_readonly("responses", &space::Validation::responses)
+      .def_property_readonly(
+          "points",
+          [](const space::Validation& v) {
+            py::list out;
+            for (const auto& p : v.points) {
+              py::dict d;
+              d["dims"] = p.dims, d["lambda"] = p.lambda, d["model"] = space::family_name(p.model);
+              d["mean_error"] = p.mean_error, d["sd_error"] = p.sd_error;
+              d["majority_agreement"] = p.majority_agreement, d["individual_agreement"] = p.individual_agreement;
+              d["log_loss"] = p.log_loss;
+              out.append(d);
+            }
+            return out;
+          },
+          "One dict per dims x lambda x model: mean_error and sd_error (of the held-out mean |p_predicted - "
+          "p_observed| over folds), majority_agreement, individual_agreement, log_loss (nats per response)")
+      .def_property_readonly("rank_correlation_with_names",
+                             [](const space::Validation& v) { return correlation(v.rank_correlation_with_names); },
+                             "When every stimulus name ends in a number and dims holds 1: Spearman's rho of a 1-D "
+                             "fit's coordinate with those numbers, {'r', 'p_value', 'n'}; else None");
+
+  py::object space_class = m.attr("Space");
+  space_class.attr("evaluate") = py::cpp_function(
+      &evaluate, py::name("evaluate"), py::is_method(space_class), py::sibling(py::getattr(space_class, "evaluate", py::none())),
+      py::arg("judgments"), py::arg("catalog") = py::none(),
+      "Scores the space's predictions of judged triplets (a file or Judgments) against their answers, as "
+      "`nibrig space evaluate`; stimuli it was not fitted to are placed from `catalog`'s descriptors");
+
+  m.def("validate", &validate, py::arg("judgments"), py::arg("dims") = std::vector<std::size_t>{1, 2, 3}, py::kw_only(),
+        py::arg("lambdas") = std::vector<double>{0.0}, py::arg("models") = std::vector<std::string>{"probit"},
+        py::arg("folds") = 5u, py::arg("starts") = 8, py::arg("seed") = 1u, py::arg("descriptors") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(),
+        "k-fold cross-validation of a space per number of dimensions, weight λ (lambdas above 0 need descriptors, "
+        "a catalog) and judgment model ('all' for every family), as `nibrig space validate`; progress counts "
+        "fold fits. Releases the GIL; Ctrl-C stops it.");
+}
+
+}  // namespace nibrig::ui::python
