@@ -13,6 +13,7 @@
 #include "model/design/design_search.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "ui/python/design_types.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
 #include "ui/python/space_types.hpp"
@@ -24,10 +25,6 @@ namespace py = pybind11;
 namespace design = model::design;
 
 namespace {
-
-struct Designer {
-  std::shared_ptr<const design::PredictionInputs> inputs;  // setup points into it: it stays put
-};
 
 struct Prediction {
   design::PredictedTool tool;
@@ -222,6 +219,7 @@ void add_design_module(py::module_ m) {
         "Reads what predicting needs: the catalog (default: bundled), the forcing model (default: fitted to the "
         "catalog once and kept in the user cache), the stylus template and materials; modes and mesh_size (m) "
         "as the template's when 0.");
+  add_design_mechanics(m);
 }
 
 }  // namespace nibrig::ui::python

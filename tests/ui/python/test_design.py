@@ -65,3 +65,37 @@ def test_bad_designs_and_searches_are_value_errors(designer):
                         max_tip_mm=0.5)
     with pytest.raises(ValueError, match="max_cost"):
         designer.search(space, space.stimuli[0], "protector", max_cost=2.0)
+
+
+def test_a_designs_modes_give_its_response_in_closed_form(designer):
+    modes = designer.modes("DM85:0.5,vero:0.5,tip=2mm")
+    f = np.array(modes.frequencies_hz)
+    assert len(f) == 32 and np.all(np.diff(f) > 0)
+    # The same solve as a prediction's.
+    assert modes.frequencies_hz == designer.predict("DM85:0.5,vero:0.5,tip=2mm", "glass").mode_frequencies_hz
+    # |H| from the modal parameters, written out here: sum of c_i b_i (-W^2) / (w_i^2 - W^2 + 2j z_i w_i W).
+    w = 2 * np.pi * f
+    big_w = 2 * np.pi * np.asarray(modes.response_frequencies_hz)[:, None]
+    h = (modes.sensor * modes.tip * -big_w**2 / (w**2 - big_w**2 + 2j * modes.damping_ratios * w * big_w)).sum(axis=1)
+    # The same sum in another order: round-off, relative 1e-9 with margin.
+    np.testing.assert_allclose(modes.response, np.abs(h), rtol=1e-9)
+    assert not modes.response.flags.writeable
+
+
+def test_the_forcing_model_predicts_what_a_prediction_predicts(designer):
+    forcing = designer.forcing
+    assert forcing.reference == (2.0, "vero")
+    assert "glass" in forcing.surfaces and 2.0 in forcing.tips_mm and "DM85" in forcing.materials
+    # The reference's gains are 1 by definition (Sec. 5.2): 0 dB at every frequency.
+    assert np.max(np.abs(forcing.tip_gain_db(2.0))) == 0 and np.max(np.abs(forcing.material_gain_db("vero"))) == 0
+    surface = forcing.surface_forcing("glass")
+    assert surface.shape == (len(forcing.speeds_m_s), len(forcing.frequencies_hz)) and np.all(surface >= 0)
+    # A single-material design: the model's spectrum from the design's response is the prediction's.
+    modes = designer.modes("DM85:1,tip=2mm")
+    predicted = designer.predict("DM85:1,tip=2mm", "glass")
+    np.testing.assert_allclose(forcing.predict(modes.response, "glass", 2.0, "DM85"), predicted.amplitude, rtol=1e-12)
+    # Eq. 10 by hand at the reference tool: |H| times F_S.
+    np.testing.assert_allclose(forcing.predict(modes.response, "glass", 2.0, "vero"), surface * modes.response, rtol=1e-12)
+    assert forcing.residual_rms_db > 0 and len(forcing.exemplar_fits) > 0
+    with pytest.raises(ValueError, match="moon"):
+        forcing.surface_forcing("moon")

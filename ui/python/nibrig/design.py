@@ -1,10 +1,12 @@
-"""Predicted designs (Sec. 5.3), their place in a space, and the design searches (Sec. 6.2, 7)."""
+"""A design's modes and the forcing model (Sec. 5), predicted designs (Sec. 5.3), their place in a space, and the design searches (Sec. 6.2, 7)."""
 
 from ._core import design as _design
 
 Designer = _design.Designer
 Prediction = _design.Prediction
 Search = _design.Search
+Modes = _design.Modes
+Forcing = _design.Forcing
 designer = _design.designer
 
-__all__ = ["Designer", "Prediction", "Search", "designer"]
+__all__ = ["Designer", "Prediction", "Search", "Modes", "Forcing", "designer"]

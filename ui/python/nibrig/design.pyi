@@ -40,7 +40,59 @@ class Search:
     def path(self) -> list[dict[str, Any]]: ...
     def runners_up(self, count: int = 4) -> list[dict[str, Any]]: ...
 
+class Modes:
+    @property
+    def design(self) -> str: ...
+    @property
+    def frequencies_hz(self) -> list[float]:
+        """Undamped, Hz, ascending."""
+    @property
+    def damping_ratios(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def tip(self) -> npt.NDArray[np.float64]:
+        """Mode shapes at the tip, kg^-1/2."""
+    @property
+    def sensor(self) -> npt.NDArray[np.float64]:
+        """Mode shapes at the sensor, kg^-1/2."""
+    @property
+    def response_frequencies_hz(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def response(self) -> npt.NDArray[np.float64]:
+        """|H(f)| from tip force to sensor acceleration, (m/s^2)/N."""
+
+class Forcing:
+    @property
+    def frequencies_hz(self) -> list[float]: ...
+    @property
+    def speeds_m_s(self) -> list[float]: ...
+    @property
+    def knot_frequencies_hz(self) -> list[float]: ...
+    @property
+    def surfaces(self) -> list[str]: ...
+    @property
+    def tips_mm(self) -> list[float]: ...
+    @property
+    def materials(self) -> list[str]: ...
+    @property
+    def reference(self) -> tuple[float, str]: ...
+    def surface_forcing(self, surface: str) -> npt.NDArray[np.float64]:
+        """F_S, speeds x frequencies, N."""
+    def tip_gain_db(self, tip_mm: float) -> list[float]: ...
+    def material_gain_db(self, material: str) -> list[float]: ...
+    def predict(self, response: Sequence[float], surface: str, tip_mm: float, material: str) -> npt.NDArray[np.float64]:
+        """Speeds x frequencies, m/s^2."""
+    @property
+    def residual_rms_db(self) -> float: ...
+    @property
+    def exemplar_fits(self) -> list[dict[str, Any]]: ...
+    @property
+    def notes(self) -> list[str]: ...
+
 class Designer:
+    def modes(self, design: str) -> Modes:
+        """A design point's modes and frequency response (its FEM solve)."""
+    @property
+    def forcing(self) -> Forcing: ...
     def predict(self, design: str, surface: str) -> Prediction:
         """A design point such as 'DM85:0.5,vero:0.5,tip=2mm' on a surface."""
     def search(
