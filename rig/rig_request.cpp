@@ -72,4 +72,34 @@ SpeedProfile profile_named(const std::string& name_or_file, std::optional<double
   return seconds ? fit_to_duration(profile, *seconds) : profile;
 }
 
+OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSounds& sounds,
+                                const std::string& profile, const std::string& default_profile,
+                                std::optional<double> seconds) {
+  std::optional<SpeedProfile> asked;
+  if (request.kind == RigKind::replay) {
+    if (!profile.empty())
+      throw std::invalid_argument("profile '" + profile +
+                                  "': a replayed rig runs the profile that was recorded (give seconds to cut it)");
+    if (seconds && !(*seconds > 0.0))
+      throw std::invalid_argument("seconds is " + std::to_string(*seconds) + "; expected a positive duration");
+  } else {
+    asked = profile_named(profile.empty() ? default_profile : profile, seconds);
+  }
+  std::unique_ptr<Rig> rig = open_rig(request, sounds);
+  if (asked) return {std::move(rig), std::move(*asked)};
+  const SpeedProfile* own = rig->own_profile();
+  if (own == nullptr) throw std::invalid_argument(request.replay.string() + ": the session has no speed profile to run");
+  SpeedProfile run = seconds ? fit_to_duration(*own, *seconds) : *own;
+  return {std::move(rig), std::move(run)};
+}
+
+SimulatedChoice simulated_choice(const RigDescription& rig, const std::string& asked_tool,
+                                 const std::string& asked_surface) {
+  SimulatedChoice c{asked_tool.empty() ? rig.tool : asked_tool, asked_surface.empty() ? rig.surface : asked_surface};
+  if (c.tool.empty() || c.surface.empty())
+    throw std::invalid_argument(
+        "say which tool to simulate and on which surface: this rig does not know what is mounted");
+  return c;
+}
+
 }  // namespace nibrig::rig

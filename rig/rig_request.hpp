@@ -48,4 +48,25 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
 // repeats it. Throws std::invalid_argument / FormatError naming the profile.
 SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds);
 
+// A rig opened with the profile it is to run, as every face opens one: a replayed rig runs what was
+// recorded (cut or repeated to `seconds`), and refuses another profile; the others run `profile`
+// (empty: `default_profile`), checked before the rig is opened. Throws what open_rig and
+// profile_named throw.
+struct OpenedRig {
+  std::unique_ptr<Rig> rig;
+  SpeedProfile profile;
+};
+OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSounds& sounds,
+                                const std::string& profile, const std::string& default_profile,
+                                std::optional<double> seconds);
+
+// What a comparison simulates beside the rig: `asked` (a tool id or design point), else what the
+// rig says is mounted, on `surface`, else the mounted one. Throws std::invalid_argument when the
+// rig does not know what is mounted and nothing was asked.
+struct SimulatedChoice {
+  std::string tool, surface;
+};
+SimulatedChoice simulated_choice(const RigDescription& rig, const std::string& asked_tool,
+                                 const std::string& asked_surface);
+
 }  // namespace nibrig::rig

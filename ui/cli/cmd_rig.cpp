@@ -153,25 +153,13 @@ rig::RigRequest rig_request(const RigOptions& o) {
   return r;
 }
 
-// The rig opened and its profile: a replay runs what was recorded (cut to --seconds), others the
-// profile asked for (checked before anything is opened).
-struct OpenedRig {
-  std::unique_ptr<rig::Rig> rig;
-  std::optional<rig::SpeedProfile> profile;
-};
-
-OpenedRig open_rig(const RigOptions& o, model::design::ToolSounds& sounds,
-                   const std::string& default_profile) {
-  const rig::RigRequest request = rig_request(o);
-  std::optional<rig::SpeedProfile> asked;
-  if (request.kind != rig::RigKind::replay)
-    asked = rig::profile_named(o.profile.empty() ? default_profile : o.profile, o.seconds);
-  OpenedRig opened;
-  opened.rig = rig::open_rig(request, sounds);
-  const rig::SpeedProfile* own = opened.rig->own_profile();
-  opened.profile = asked ? *asked : (o.seconds ? rig::fit_to_duration(*own, *o.seconds) : *own);
-  return opened;
+rig::OpenedRig open_rig(const RigOptions& o, model::design::ToolSounds& sounds,
+                        const std::string& default_profile) {
+  return rig::open_rig_with_profile(rig_request(o), sounds, o.profile, default_profile, o.seconds);
 }
+
+// What the simulation is asked to play: --design when given, else --tool (else the mounted tool).
+const std::string& simulated_asked(const RigOptions& o) { return o.design.empty() ? o.tool : o.design; }
 
 // --play: the simulated tool on the actuator, following the turntable (rig/actuator_player.hpp),
 // saying what it plays on before the run and how closely it followed after it.
@@ -203,15 +191,6 @@ void report_following(const rig::ActuatorPlayer& player) {
               1e3 * info.period_frames / info.sample_rate);
 }
 
-// The tool the simulation plays: --design when given, else what is mounted.
-std::string simulated_tool(const RigOptions& o, const rig::Rig& rig) {
-  if (!o.design.empty()) return o.design;
-  return o.tool.empty() ? rig.description().tool : o.tool;
-}
-std::string mounted_surface(const RigOptions& o, const rig::Rig& rig) {
-  return o.surface.empty() ? rig.description().surface : o.surface;
-}
-
 void print_record(const rig::CaptureResult& result, const rig::RigDescription& d) {
   const auto& r = result.record;
   std::printf("captured %.2f s: %llu sensor frames at %.0f Hz, acceleration at %.0f Hz\n", r.seconds,
@@ -230,16 +209,16 @@ model::design::ToolSoundOptions sound_options(const RigOptions& o) {
 
 void capture(const RigOptions& o) {
   model::design::ToolSounds sounds(sound_options(o));
-  OpenedRig opened = open_rig(o, sounds, "steps");
+  rig::OpenedRig opened = open_rig(o, sounds, "steps");
   rig::Rig& rig = *opened.rig;
   std::printf("%s\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
-              opened.profile->description().c_str(), opened.profile->duration_s());
+              opened.profile.description().c_str(), opened.profile.duration_s());
   std::fflush(stdout);
   std::unique_ptr<rig::ActuatorPlayer> player;
   if (o.play) {
-    const std::string tool = simulated_tool(o, rig), surface = mounted_surface(o, rig);
-    sounds.check(tool, surface);
-    player = play_on_actuator(o, sounds.sound(tool, surface), rig);
+    const auto simulated = rig::simulated_choice(rig.description(), simulated_asked(o), o.surface);
+    sounds.check(simulated.tool, simulated.surface);
+    player = play_on_actuator(o, sounds.sound(simulated.tool, simulated.surface), rig);
   }
   rig::CaptureOptions options;
   options.folder = o.output;
@@ -251,7 +230,7 @@ void capture(const RigOptions& o) {
                  p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
   };
   InterruptScope scope;
-  const rig::CaptureResult result = rig::capture_session(rig, *opened.profile, options);
+  const rig::CaptureResult result = rig::capture_session(rig, opened.profile, options);
   print_record(result, rig.description());
   if (player) report_following(*player);
   std::fflush(stdout);
@@ -263,16 +242,14 @@ void capture(const RigOptions& o) {
 
 void compare(const RigOptions& o) {
   model::design::ToolSounds sounds(sound_options(o));
-  OpenedRig opened = open_rig(o, sounds, "sweep");
+  rig::OpenedRig opened = open_rig(o, sounds, "sweep");
   rig::Rig& rig = *opened.rig;
-  const std::string tool = simulated_tool(o, rig), surface = mounted_surface(o, rig);
-  if (tool.empty() || surface.empty())
-    throw CLI::ValidationError("--tool", "say which tool to simulate (--tool or --design) and on which --surface");
+  const auto [tool, surface] = rig::simulated_choice(rig.description(), simulated_asked(o), o.surface);
   sounds.check(tool, surface);
   const model::design::ToolSound simulated = sounds.sound(tool, surface);
   std::printf("%s\nsimulated: %s (modes of %s)\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
-              simulated.name.c_str(), simulated.modes.c_str(), opened.profile->description().c_str(),
-              opened.profile->duration_s());
+              simulated.name.c_str(), simulated.modes.c_str(), opened.profile.description().c_str(),
+              opened.profile.duration_s());
   std::fflush(stdout);
   std::unique_ptr<rig::ActuatorPlayer> player;
   if (o.play) player = play_on_actuator(o, simulated, rig);
@@ -289,7 +266,7 @@ void compare(const RigOptions& o) {
   };
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   InterruptScope scope;
-  const rig::ComparisonRun run = rig::run_comparison(rig, *opened.profile, simulated, threshold, options);
+  const rig::ComparisonRun run = rig::run_comparison(rig, opened.profile, simulated, threshold, options);
   print_record(run.capture, rig.description());
   if (player) report_following(*player);
   print_comparison_table(run.table);

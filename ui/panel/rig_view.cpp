@@ -103,24 +103,18 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
   model::design::ToolSounds sounds(sound_options);
   const rig::RigRequest request = rig_request_of(c);
   const std::optional<double> seconds = c.seconds > 0 ? std::optional<double>(c.seconds) : std::nullopt;
-  std::optional<rig::SpeedProfile> profile;
-  if (request.kind != rig::RigKind::replay) profile = rig::profile_named(c.profile, seconds);
   control.message("opening the rig");
-  auto opened = rig::open_rig(request, sounds);
-  if (!profile) {
-    const rig::SpeedProfile* own = opened->own_profile();
-    if (!own) throw std::invalid_argument("the replayed session has no speed profile to run");
-    profile = seconds ? rig::fit_to_duration(*own, *seconds) : *own;
-  }
-  const std::string mounted = c.tool.empty() ? opened->description().tool : c.tool;
-  const std::string surface = c.surface.empty() ? opened->description().surface : c.surface;
-  const std::string simulated_tool = c.simulated_tool.empty() ? mounted : c.simulated_tool;
+  // A replay runs what it recorded: the profile chosen in the view is for the other rigs.
+  auto opened = rig::open_rig_with_profile(request, sounds, request.kind == rig::RigKind::replay ? "" : c.profile,
+                                           "sweep", seconds);
+  const auto [simulated_tool, surface] =
+      rig::simulated_choice(opened.rig->description(), c.simulated_tool.empty() ? c.tool : c.simulated_tool, c.surface);
   control.message("making the simulated " + simulated_tool + " on " + surface);
   const model::design::ToolSound sound = sounds.sound(simulated_tool, surface);
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   {
     std::lock_guard lock(feed->mutex);
-    feed->rig_name = opened->description().name;
+    feed->rig_name = opened.rig->description().name;
     feed->simulated_name = sound.name;
   }
   // Made whether or not it plays yet, since it must listen to the rig from its start; a calibration
@@ -132,7 +126,7 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     settings.device = *target.device;
     settings.actuator = target.actuator;
     try {
-      player = std::make_unique<rig::ActuatorPlayer>(*opened, sound, settings);
+      player = std::make_unique<rig::ActuatorPlayer>(*opened.rig, sound, settings);
     } catch (const std::exception& e) {
       why_not = e.what();
     }
@@ -172,8 +166,8 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     feed->simulated_db.insert(feed->simulated_db.end(), rows.simulated_db.begin(), rows.simulated_db.end());
     if (table) feed->table = std::move(table);
   };
-  control.message("running " + profile->description());
-  return rig::run_comparison(*opened, *profile, sound, threshold, options);
+  control.message("running " + opened.profile.description());
+  return rig::run_comparison(*opened.rig, opened.profile, sound, threshold, options);
 }
 
 }  // namespace
