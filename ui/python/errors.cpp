@@ -26,6 +26,8 @@ void register_error_translation() {
       PyErr_SetString(missing ? PyExc_FileNotFoundError : unopened ? PyExc_OSError : PyExc_ValueError, e.what());
     } catch (const model::io::OutputFileError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const std::filesystem::filesystem_error& e) {  // a folder that cannot be made, say
+      PyErr_SetString(PyExc_OSError, e.what());
     } catch (const playback::DeviceError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const model::io::UnwritableOutput& e) {

@@ -16,6 +16,9 @@ PYBIND11_MODULE(_core, m) {
       m.def_submodule("design", "Predict designs, place them, search for the nearest one"));
   nibrig::ui::python::add_render_module(
       m.def_submodule("render", "Tools rendered offline through the real-time engine into arrays"));
+  nibrig::ui::python::add_rig_module(
+      m.def_submodule("rig", "The turntable rig: capture sessions, compare with the simulation, read sessions"));
+  nibrig::ui::python::add_study_module(m.def_submodule("study", "Triplet studies: their answers and their report"));
   nibrig::ui::python::add_audition_module(
       m.def_submodule("audition", "Tools played live on an audio device, speed and force set as they play"));
 }

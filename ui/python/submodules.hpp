@@ -9,6 +9,8 @@ void add_space_module(pybind11::module_ m);
 void add_measure_module(pybind11::module_ m);
 void add_design_module(pybind11::module_ m);
 void add_render_module(pybind11::module_ m);
+void add_rig_module(pybind11::module_ m);
+void add_study_module(pybind11::module_ m);
 void add_audition_module(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

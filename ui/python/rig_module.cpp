@@ -1,0 +1,292 @@
+// nibrig.rig: the turntable rig from Python, opened as every face opens it (rig/rig_request.hpp) —
+// the simulated rig, a session replayed, the USB controller — a capture into a session folder
+// (rig/capture.hpp) and the live comparison with the simulation (rig/comparison_run.hpp), as
+// `nibrig rig capture|compare` run them; and a session folder's streams as numpy arrays.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <stop_token>
+
+#include "model/design/tool_sound.hpp"
+#include "model/io/atomic_file.hpp"
+#include "model/io/bundled_assets.hpp"
+#include "model/io/comparison_file.hpp"
+#include "model/io/finite_output.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/rig_session.hpp"
+#include "model/numeric/cancellation.hpp"
+#include "rig/capture.hpp"
+#include "rig/comparison_report.hpp"
+#include "rig/comparison_run.hpp"
+#include "rig/pacer.hpp"
+#include "rig/rig_request.hpp"
+#include "ui/python/long_call.hpp"
+#include "ui/python/rig_types.hpp"
+#include "ui/python/submodules.hpp"
+
+namespace nibrig::ui::python {
+
+namespace py = pybind11;
+
+namespace {
+
+// A rig as asked for: opened afresh by each capture (a rig runs one profile), with what the
+// simulation needs (empty: the bundled catalog and stylus, the cached forcing model).
+struct RigSpec {
+  rig::RigRequest request;
+  std::filesystem::path catalog, stylus, forcing;
+};
+
+// A device that is missing or gone, a session folder that exists or cannot be written: the
+// system's refusal, which Python calls OSError. The rig's calls throw std::runtime_error for
+// these; errors.cpp translates the library's own types only.
+class RigSystemError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <typename Call>
+auto system_refusals(Call&& call) {
+  try {
+    return call();
+  } catch (const model::io::FormatError&) {
+    throw;
+  } catch (const model::numeric::Cancelled&) {
+    throw;
+  } catch (const model::io::OutputFileError&) {
+    throw;
+  } catch (const model::io::UnwritableOutput&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw RigSystemError(e.what());
+  }
+}
+
+model::design::ToolSoundOptions sound_options(const std::filesystem::path& catalog, const std::filesystem::path& stylus,
+                                              const std::filesystem::path& forcing, const std::stop_token& stop,
+                                              const Report& report) {
+  return {catalog, stylus, forcing, [stop, report](const model::forcing::DesignResponse&, std::size_t done, std::size_t total) {
+            model::numeric::throw_if_cancelled(stop, "forcing model fit");
+            report("simulating the forcing model's designs", done, total);
+          }};
+}
+
+rig::OpenedRig open_with_profile(const RigSpec& spec, model::design::ToolSounds& sounds,
+                                 const std::optional<std::filesystem::path>& profile, const std::string& default_profile,
+                                 const std::optional<double>& seconds) {
+  return system_refusals([&] {
+    return rig::open_rig_with_profile(spec.request, sounds, profile ? profile->string() : "", default_profile, seconds);
+  });
+}
+
+// Ctrl-C reaches a capture through its cancel flag: the motor stops and the session is finished
+// with what it holds. Progress: milliseconds of acceleration recorded, of the profile's.
+struct CaptureBridge {
+  std::atomic<bool> cancel{false};
+  std::stop_callback<std::function<void()>> on_stop;
+  std::uint64_t samples = 0;
+
+  explicit CaptureBridge(const std::stop_token& stop) : on_stop(stop, std::function<void()>([this] { cancel.store(true); })) {}
+
+  std::function<void(const rig::RigData&)> counter(const rig::Rig& r, const rig::SpeedProfile& profile, const Report& report) {
+    const double rate = r.description().acceleration_rate_hz;
+    const auto total = static_cast<std::size_t>(std::llround(profile.duration_s() * 1e3));
+    return [this, rate, total, report](const rig::RigData& data) {
+      samples += data.acceleration.size();
+      report("capturing", std::min(total, static_cast<std::size_t>(std::llround(static_cast<double>(samples) / rate * 1e3))),
+             total);
+    };
+  }
+};
+
+Session capture(const RigSpec& spec, const std::filesystem::path& folder, const std::optional<std::filesystem::path>& profile,
+                const std::optional<double>& seconds, const std::string& notes, const py::object& progress) {
+  Session out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        model::design::ToolSounds sounds(sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
+        rig::OpenedRig opened = open_with_profile(spec, sounds, profile, "steps", seconds);
+        model::numeric::throw_if_cancelled(stop, "rig capture");  // stopped before it began: no folder
+        CaptureBridge bridge(stop);
+        rig::CaptureOptions options;
+        options.folder = folder;
+        options.tool = spec.request.tool;
+        options.surface = spec.request.surface;
+        options.notes = notes;
+        options.cancel = &bridge.cancel;
+        options.on_data = bridge.counter(*opened.rig, opened.profile, report);
+        const auto result = system_refusals([&] { return rig::capture_session(*opened.rig, opened.profile, options); });
+        out.session = model::io::read_rig_session(result.folder);
+      },
+      progress);
+  return out;
+}
+
+Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, const std::filesystem::path& folder,
+                   const std::optional<std::string>& surface, const std::optional<std::filesystem::path>& profile,
+                   const std::optional<double>& seconds, std::uint64_t seed, const std::optional<std::filesystem::path>& catalog,
+                   const std::optional<std::filesystem::path>& stylus, const std::optional<std::filesystem::path>& forcing,
+                   const py::object& progress) {
+  Comparison out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        model::design::ToolSounds rig_sounds(sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
+        rig::OpenedRig opened = open_with_profile(spec, rig_sounds, profile, "sweep", seconds);
+        const rig::RigDescription& d = opened.rig->description();
+        const auto [simulated_tool, on] =
+            rig::simulated_choice(d, tool.value_or(spec.request.tool), surface.value_or(spec.request.surface));
+        // The rig's own inputs unless others are given (the simulated rig's tool sounds as it simulates).
+        std::optional<model::design::ToolSounds> own;
+        if (catalog || stylus || forcing)
+          own.emplace(sound_options(catalog.value_or(spec.catalog), stylus.value_or(spec.stylus),
+                                    forcing.value_or(spec.forcing), stop, report));
+        model::design::ToolSounds& sounds = own ? *own : rig_sounds;
+        sounds.check(simulated_tool, on);
+        const model::design::ToolSound simulated = sounds.sound(simulated_tool, on);
+        model::numeric::throw_if_cancelled(stop, "rig comparison");  // stopped before it began: no folder
+        CaptureBridge bridge(stop);
+        rig::ComparisonRunOptions options;
+        options.capture.folder = folder;
+        options.capture.tool = spec.request.tool;
+        options.capture.surface = spec.request.surface;
+        options.capture.cancel = &bridge.cancel;
+        options.seed = seed;
+        options.on_data = bridge.counter(*opened.rig, opened.profile, report);
+        const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+        out.run = system_refusals([&] { return rig::run_comparison(*opened.rig, opened.profile, simulated, threshold, options); });
+        const std::string measured_tool = spec.request.tool.empty() ? d.tool : spec.request.tool;
+        out.report = rig::comparison_report(measured_tool, on, out.run.table, out.run.settings);
+        out.simulated_modes = simulated.modes;
+        out.session.session = model::io::read_rig_session(out.run.capture.folder);
+      },
+      progress);
+  return out;
+}
+
+std::optional<std::string> or_none(const std::string& s) { return s.empty() ? std::nullopt : std::optional(s); }
+
+}  // namespace
+
+void add_rig_module(py::module_ m) {
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const RigSystemError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    }
+  });
+
+  add_rig_results(m);
+
+  py::class_<RigSpec>(m, "Rig", "A rig as asked for; each capture or comparison opens it afresh")
+      .def_property_readonly("kind", [](const RigSpec& r) {
+        switch (r.request.kind) {
+          case rig::RigKind::simulated: return "simulated";
+          case rig::RigKind::replay: return "replay";
+          case rig::RigKind::usb: return "usb";
+        }
+        return "";
+      }, "'simulated', 'replay' or 'usb'")
+      .def_property_readonly("tool", [](const RigSpec& r) { return or_none(r.request.tool); },
+                             "What is mounted (None: what the rig knows, a replayed session's own)")
+      .def_property_readonly("surface", [](const RigSpec& r) { return or_none(r.request.surface); })
+      .def_property_readonly("load_N", [](const RigSpec& r) { return r.request.load_N; }, "The arm's normal load, N")
+      .def_property_readonly("seed", [](const RigSpec& r) { return r.request.seed; }, "The simulated rig's noise")
+      .def_property_readonly("speedup", [](const RigSpec& r) { return r.request.speedup; },
+                             "1 = real time, k = k times faster, 0 = as fast as it computes (simulated, replay)")
+      .def_property_readonly("path", [](const RigSpec& r) {
+        return r.request.kind == rig::RigKind::replay ? py::cast(r.request.replay) : py::none();
+      }, "The replayed session or recording")
+      .def_property_readonly("serial", [](const RigSpec& r) { return or_none(r.request.usb_serial); })
+      .def("__repr__", [](const RigSpec& r) {
+        switch (r.request.kind) {
+          case rig::RigKind::simulated:
+            return "<nibrig.rig.Rig: simulated, " + r.request.tool + " on " + r.request.surface + ">";
+          case rig::RigKind::replay: return "<nibrig.rig.Rig: replay of " + r.request.replay.string() + ">";
+          case rig::RigKind::usb:
+            return "<nibrig.rig.Rig: USB controller " + (r.request.usb_serial.empty() ? "(the only one)" : r.request.usb_serial) + ">";
+        }
+        return std::string("<nibrig.rig.Rig>");
+      });
+
+  m.def("simulated", [](const std::string& tool, const std::string& surface, double load, std::uint64_t seed, double speedup,
+                        const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& stylus,
+                        const std::optional<std::filesystem::path>& forcing) {
+          if (tool.empty() || surface.empty()) throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
+          if (!(load > 0.0 && std::isfinite(load))) throw std::invalid_argument("load is " + std::to_string(load) + " N; expected more than 0");
+          rig::Pacer::check_speedup(speedup, "speedup");
+          RigSpec r;
+          r.request.kind = rig::RigKind::simulated;
+          r.request.tool = tool, r.request.surface = surface;
+          r.request.load_N = load, r.request.seed = seed, r.request.speedup = speedup;
+          r.catalog = catalog.value_or(std::filesystem::path());
+          r.stylus = stylus.value_or(std::filesystem::path());
+          r.forcing = forcing.value_or(std::filesystem::path());
+          return r;
+        }, py::arg("tool"), py::arg("surface"), py::kw_only(), py::arg("load") = 2.2, py::arg("seed") = 1u,
+        py::arg("speedup") = 0.0, py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
+        py::arg("forcing") = py::none(),
+        "The simulated rig: the engine's simulation of a tool (catalog id or design point) on a surface, pressed "
+        "with `load` N; its noise fixed by `seed`; speedup 0 computes as fast as it can (1: real time). catalog, "
+        "stylus, forcing: what the simulation is made from (default: the bundled ones, the cached forcing model).");
+  m.def("replay", [](const std::filesystem::path& path, double speedup) {
+          rig::Pacer::check_speedup(speedup, "speedup");
+          RigSpec r;
+          r.request.kind = rig::RigKind::replay;
+          r.request.replay = path;
+          r.request.speedup = speedup;
+          return r;
+        }, py::arg("path"), py::kw_only(), py::arg("speedup") = 0.0,
+        "A recorded session folder (or one of the paper's arm_*.csv recordings) replayed as if live, with the "
+        "profile it recorded; speedup 0 as fast as it reads (1: real time)");
+  m.def("usb", [](const std::optional<std::string>& serial, const std::optional<std::string>& input_api,
+                  const std::optional<std::string>& input_device, unsigned input_channel, double accelerometer,
+                  const std::optional<std::string>& tool, const std::optional<std::string>& surface, double load) {
+          if (input_channel < 1) throw std::invalid_argument("input_channel is 0; expected 1 or more (1-based)");
+          if (!(accelerometer > 0.0 && std::isfinite(accelerometer)))
+            throw std::invalid_argument("accelerometer is " + std::to_string(accelerometer) + " m/s² per full scale; expected more than 0");
+          RigSpec r;
+          r.request.kind = rig::RigKind::usb;
+          r.request.usb_serial = serial.value_or("");
+          r.request.input_api = input_api.value_or("");
+          r.request.input_device = input_device.value_or("");
+          r.request.input_channel = input_channel;
+          r.request.accelerometer_m_s2_per_full_scale = accelerometer;
+          r.request.tool = tool.value_or(""), r.request.surface = surface.value_or("");
+          r.request.load_N = load;
+          return r;
+        }, py::kw_only(), py::arg("serial") = py::none(), py::arg("input_api") = py::none(),
+        py::arg("input_device") = py::none(), py::arg("input_channel") = 1u, py::arg("accelerometer") = 49.05,
+        py::arg("tool") = py::none(), py::arg("surface") = py::none(), py::arg("load") = 2.2,
+        "The USB rig controller (by serial; None: the only one on the bus) with the accelerometer on an audio input "
+        "(input_api: jack, alsa, pulse; input_device by name; input_channel 1-based; accelerometer: its m/s² at full "
+        "scale); tool and surface: what is mounted, which a session must say. Opened by capture or compare: a "
+        "missing controller or input is an OSError naming what was asked.");
+
+  m.def("capture", &capture, py::arg("rig"), py::arg("folder"), py::kw_only(), py::arg("profile") = py::none(),
+        py::arg("seconds") = py::none(), py::arg("notes") = "", py::arg("progress") = py::none(),
+        "Runs a speed profile on the rig and records a session into `folder` (<folder>.partial while recording), as "
+        "`nibrig rig capture` does; returns it read back. profile: 'steps' (the default, the paper's 42 s), 'sweep' "
+        "(the study's 3 s sweep, 6 s) or a CSV file time_s,speed_mm_s; a replay runs what was recorded. seconds cuts "
+        "or repeats it. progress: ('capturing', ms recorded, ms of the profile). Releases the GIL; Ctrl-C stops the "
+        "motor, finishes the session with what it holds, then raises KeyboardInterrupt. A folder that exists is an "
+        "OSError.");
+  m.def("compare", &compare, py::arg("rig"), py::arg("tool"), py::arg("folder"), py::kw_only(), py::arg("surface") = py::none(),
+        py::arg("profile") = py::none(), py::arg("seconds") = py::none(), py::arg("seed") = 1u,
+        py::arg("catalog") = py::none(), py::arg("stylus") = py::none(), py::arg("forcing") = py::none(),
+        py::arg("progress") = py::none(),
+        "Captures on the rig into the session `folder` while simulating `tool` (a catalog id or design point; None: "
+        "what is mounted) on `surface` (None: the mounted one) driven by the measured speed and force, and compares "
+        "their spectrograms per speed bin, as `nibrig rig compare` does (its session is <report>/session; save() "
+        "writes its comparison.json). profile defaults to 'sweep' (6 s); seed: the simulation's forcing noise. "
+        "Releases the GIL; Ctrl-C as for capture.");
+}
+
+}  // namespace nibrig::ui::python
