@@ -11,10 +11,14 @@ _Path = Union[str, os.PathLike[str]]
 class Measurement:
     """One recording's physical descriptors; the parts its kind has (others raise ValueError)."""
 
-    kind: str
-    tool: str
-    surface: str
-    warnings: list[str]
+    @property
+    def kind(self) -> str: ...
+    @property
+    def tool(self) -> str: ...
+    @property
+    def surface(self) -> str: ...
+    @property
+    def warnings(self) -> list[str]: ...
     @property
     def mu(self) -> float:
         """Coulomb coefficient (dimensionless)."""
@@ -48,7 +52,8 @@ class Catalog:
     def surfaces(self) -> list[str]: ...
     @property
     def pairings(self) -> list[dict[str, Optional[Union[str, float]]]]: ...
-    skipped: list[str]
+    @property
+    def skipped(self) -> list[str]: ...
     def save(self, path: _Path) -> None: ...
 
 def recording(

@@ -12,9 +12,12 @@ class Rendering:
     @property
     def samples(self) -> npt.NDArray[np.float32]:
         """Mono, full scale +-1; a view."""
-    rate_hz: float
-    tool: str
-    stroke: str
+    @property
+    def rate_hz(self) -> float: ...
+    @property
+    def tool(self) -> str: ...
+    @property
+    def stroke(self) -> str: ...
     def __len__(self) -> int: ...
 
 def tool(

@@ -58,7 +58,8 @@ def answers(folder: _Path) -> Answers: ...
 class Report:
     """A study's report, as `nibrig experiment report` gives and writes it."""
 
-    folder: pathlib.Path
+    @property
+    def folder(self) -> pathlib.Path: ...
     @property
     def mode(self) -> str: ...
     @property
