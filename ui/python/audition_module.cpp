@@ -23,6 +23,7 @@
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/submodules.hpp"
+#include "ui/python/tool_sound_options.hpp"
 
 namespace nibrig::ui::python {
 
@@ -98,13 +99,7 @@ class Player {
     std::optional<rt::Stroke> stroke;
     run_long_call(
         [&](std::stop_token stop, const Report& report) {
-          model::design::ToolSoundOptions options{
-              catalog.value_or(std::filesystem::path()), stylus.value_or(std::filesystem::path()),
-              forcing.value_or(std::filesystem::path()),
-              [&](const model::forcing::DesignResponse&, std::size_t done, std::size_t total) {
-                model::numeric::throw_if_cancelled(stop, "forcing model fit");
-                report("simulating the forcing model's designs", done, total);
-              }};
+          const auto options = tool_sound_options(catalog, stylus, forcing, stop, report);
           model::design::ToolSounds made(options);
           for (const auto& tool : tools) made.check(tool, surface);  // before any meshing or fitting
           for (const auto& tool : tools) sounds.push_back(made.sound(tool, surface));

@@ -28,6 +28,8 @@ void register_error_translation() {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const std::filesystem::filesystem_error& e) {  // a folder that cannot be made, say
       PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const SystemRefusal& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
     } catch (const playback::DeviceError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const model::io::UnwritableOutput& e) {

@@ -6,8 +6,17 @@
 
 #include <pybind11/pybind11.h>
 
+#include <stdexcept>
+
 namespace nibrig::ui::python {
 
 void register_error_translation();
+
+// A refusal of the system's that a library call reports as a plain std::runtime_error (a device
+// missing or gone, a folder that exists): a face that knows it is one rethrows it as this, OSError.
+class SystemRefusal : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 }  // namespace nibrig::ui::python

@@ -15,6 +15,7 @@
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
 #include "ui/python/submodules.hpp"
+#include "ui/python/tool_sound_options.hpp"
 
 namespace nibrig::ui::python {
 
@@ -42,13 +43,7 @@ Rendering render_tool(const std::string& tool, const std::string& surface, const
   out.rate_hz = rate_hz;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        model::design::ToolSoundOptions options{
-            catalog.value_or(std::filesystem::path()), stylus.value_or(std::filesystem::path()),
-            forcing.value_or(std::filesystem::path()),
-            [&](const model::forcing::DesignResponse&, std::size_t done, std::size_t total) {
-              model::numeric::throw_if_cancelled(stop, "forcing model fit");
-              report("simulating the forcing model's designs", done, total);
-            }};
+        const auto options = tool_sound_options(catalog, stylus, forcing, stop, report);
         model::design::ToolSounds sounds(options);
         sounds.check(tool, surface);  // before any meshing or fitting
         rt::StrokeRequest request;

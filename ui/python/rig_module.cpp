@@ -27,8 +27,10 @@
 #include "rig/comparison_run.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
+#include "ui/python/errors.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/rig_types.hpp"
+#include "ui/python/tool_sound_options.hpp"
 #include "ui/python/submodules.hpp"
 
 namespace nibrig::ui::python {
@@ -46,12 +48,7 @@ struct RigSpec {
 
 // A device that is missing or gone, a session folder that exists or cannot be written: the
 // system's refusal, which Python calls OSError. The rig's calls throw std::runtime_error for
-// these; errors.cpp translates the library's own types only.
-class RigSystemError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
+// these.
 template <typename Call>
 auto system_refusals(Call&& call) {
   try {
@@ -65,17 +62,8 @@ auto system_refusals(Call&& call) {
   } catch (const model::io::UnwritableOutput&) {
     throw;
   } catch (const std::runtime_error& e) {
-    throw RigSystemError(e.what());
+    throw SystemRefusal(e.what());
   }
-}
-
-model::design::ToolSoundOptions sound_options(const std::filesystem::path& catalog, const std::filesystem::path& stylus,
-                                              const std::filesystem::path& forcing, const std::stop_token& stop,
-                                              const Report& report) {
-  return {catalog, stylus, forcing, [stop, report](const model::forcing::DesignResponse&, std::size_t done, std::size_t total) {
-            model::numeric::throw_if_cancelled(stop, "forcing model fit");
-            report("simulating the forcing model's designs", done, total);
-          }};
 }
 
 rig::OpenedRig open_with_profile(const RigSpec& spec, model::design::ToolSounds& sounds,
@@ -111,7 +99,7 @@ Session capture(const RigSpec& spec, const std::filesystem::path& folder, const 
   Session out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        model::design::ToolSounds sounds(sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
+        model::design::ToolSounds sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
         rig::OpenedRig opened = open_with_profile(spec, sounds, profile, "steps", seconds);
         model::numeric::throw_if_cancelled(stop, "rig capture");  // stopped before it began: no folder
         CaptureBridge bridge(stop);
@@ -137,7 +125,7 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
   Comparison out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        model::design::ToolSounds rig_sounds(sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
+        model::design::ToolSounds rig_sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
         rig::OpenedRig opened = open_with_profile(spec, rig_sounds, profile, "sweep", seconds);
         const rig::RigDescription& d = opened.rig->description();
         const auto [simulated_tool, on] =
@@ -145,7 +133,7 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
         // The rig's own inputs unless others are given (the simulated rig's tool sounds as it simulates).
         std::optional<model::design::ToolSounds> own;
         if (catalog || stylus || forcing)
-          own.emplace(sound_options(catalog.value_or(spec.catalog), stylus.value_or(spec.stylus),
+          own.emplace(tool_sound_options(catalog.value_or(spec.catalog), stylus.value_or(spec.stylus),
                                     forcing.value_or(spec.forcing), stop, report));
         model::design::ToolSounds& sounds = own ? *own : rig_sounds;
         sounds.check(simulated_tool, on);
@@ -175,14 +163,6 @@ std::optional<std::string> or_none(const std::string& s) { return s.empty() ? st
 }  // namespace
 
 void add_rig_module(py::module_ m) {
-  py::register_exception_translator([](std::exception_ptr thrown) {
-    try {
-      if (thrown) std::rethrow_exception(thrown);
-    } catch (const RigSystemError& e) {
-      PyErr_SetString(PyExc_OSError, e.what());
-    }
-  });
-
   add_rig_results(m);
 
   py::class_<RigSpec>(m, "Rig", "A rig as asked for; each capture or comparison opens it afresh")

@@ -3,13 +3,13 @@ prediction is what `nibrig predict` writes, it is placed in the demo's space, an
 a tool of that space keeps to its constraints, its optimum no farther than the line's ends."""
 
 import json
-import os
 import subprocess
 
 import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 COARSE = dict(modes=32, mesh_size=0.004)
 
@@ -25,9 +25,7 @@ def test_a_prediction_is_what_the_command_line_predicts(designer, tmp_path):
     assert 0 < p.mu < 1
     assert p.amplitude.shape == (len(p.speeds_m_s), len(p.frequencies_hz))
     assert p.mode_frequencies_hz == sorted(p.mode_frequencies_hz)
-    command = os.environ.get("NIBRIG_COMMAND")
-    if not command:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given")
+    command = nibrig_command()
     subprocess.run([command, "predict", "--design", p.design, "--surface", "glass", "--modes", "32", "--mesh-size",
                     "0.004", "-o", str(tmp_path / "p.json")], check=True, capture_output=True)
     written = json.loads((tmp_path / "p.json").read_text())

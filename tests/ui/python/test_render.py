@@ -1,7 +1,6 @@
 """nibrig.render: the samples are those `nibrig render` writes for the same tool, stroke and seed
 (the engine itself is checked in the C++ suites), a seed fixes them, and bad input is refused."""
 
-import os
 import struct
 import subprocess
 
@@ -9,6 +8,7 @@ import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 
 def float_wav(path):
@@ -31,9 +31,7 @@ def test_a_rendering_is_what_the_command_line_renders(tmp_path):
     assert not r.samples.flags.writeable and not r.samples.flags.owndata  # lent, read-only
     rms = float(np.sqrt(np.mean(r.samples.astype(np.float64) ** 2)))
     assert rms > 1e-4  # a crayon on paper at 100 mm/s is well above silence
-    command = os.environ.get("NIBRIG_COMMAND")
-    if not command:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given")
+    command = nibrig_command()
     subprocess.run([command, "render", "--tool", "cryon", "--surface", "office", "--speed", "100", "--force", "1.5",
                     "--seconds", "0.5", "--seed", "7", "-o", str(tmp_path / "r.wav")], check=True, capture_output=True)
     np.testing.assert_array_equal(float_wav(tmp_path / "r.wav"), r.samples)

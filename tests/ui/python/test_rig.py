@@ -14,15 +14,9 @@ import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 STREAMS = ("acceleration", "speed_m_s", "normal_force_N", "tangential_force_N")
-
-
-def command():
-    path = os.environ.get("NIBRIG_COMMAND")
-    if not path:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given")
-    return path
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +48,7 @@ def test_a_simulated_capture_is_what_the_command_line_writes(captured, tmp_path)
     again = nibrig.rig.session(folder)  # the library's reader, from the folder
     for name in STREAMS:
         np.testing.assert_array_equal(getattr(again, name), getattr(s, name))
-    subprocess.run([command(), "rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--profile",
+    subprocess.run([nibrig_command(), "rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--profile",
                     "sweep", "--seconds", "2", "--speedup", "0", "-o", str(tmp_path / "cli")], check=True,
                    capture_output=True)
     cli = nibrig.rig.session(tmp_path / "cli")
@@ -95,7 +89,7 @@ def test_a_comparison_has_a_row_per_speed_and_the_command_lines_numbers(tmp_path
     assert c.blocks_dropped == 0
     c.save(tmp_path / "python.json")
     report = tmp_path / "cli"
-    run = subprocess.run([command(), "rig", "compare", "--simulated", "--tool", "vero2", "--surface", "office",
+    run = subprocess.run([nibrig_command(), "rig", "compare", "--simulated", "--tool", "vero2", "--surface", "office",
                           "--seconds", "3", "--speedup", "0", "--report", str(report)], check=True,
                          capture_output=True, text=True)
     assert f"simulated: {c.simulated} " in run.stdout

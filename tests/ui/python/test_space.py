@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 
 def test_a_fit_predicts_the_judgments_with_the_paper_model(salmon):
@@ -57,10 +58,8 @@ def test_the_coordinates_are_a_read_only_view_that_outlives_nothing(salmon, tmp_
 
 
 def test_the_same_fit_as_the_command_line(salmon, tmp_path):
-    nibrig_command = os.environ.get("NIBRIG_COMMAND")
-    if not nibrig_command:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given")
-    subprocess.run([nibrig_command, "space", "fit", str(salmon), "--dims", "2", "--starts", "3", "--seed", "5",
+    command = nibrig_command()
+    subprocess.run([command, "space", "fit", str(salmon), "--dims", "2", "--starts", "3", "--seed", "5",
                     "-o", str(tmp_path / "cli.json")], check=True, capture_output=True)
     from_cli = nibrig.space.load(tmp_path / "cli.json")
     from_python = nibrig.space.fit(salmon, dims=2, starts=3, seed=5)

@@ -3,13 +3,13 @@ predictions and Salmon's answers, and validate against what `nibrig space valida
 
 import json
 import math
-import os
 import subprocess
 
 import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 
 def salmon_triplets(path):
@@ -53,9 +53,7 @@ def test_validate_gives_what_the_command_line_writes(salmon, tmp_path):
         assert 0.1 < q["mean_error"] < 0.3 and 0.5 < q["majority_agreement"] < 1
     # Salmon's items are positions on a line: a 1-D fit orders them (the sign is arbitrary).
     assert abs(v.rank_correlation_with_names["r"]) > 0.95 and v.rank_correlation_with_names["n"] == 300
-    command = os.environ.get("NIBRIG_COMMAND")
-    if not command:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given")
+    command = nibrig_command()
     subprocess.run([command, "space", "validate", str(salmon), "--dims", "1,2", "--folds", "3", "--starts", "2",
                     "--seed", "4", "-o", str(tmp_path / "v.json")], check=True, capture_output=True)
     written = json.loads((tmp_path / "v.json").read_text())

@@ -5,29 +5,23 @@ settings (the statistics themselves are checked in the C++ suites)."""
 
 import csv
 import json
-import os
 import subprocess
 
 import numpy as np
 import pytest
 
 import nibrig
+from command_line import nibrig_command
 
 PARTICIPANTS = ("P1", "P2")
 REPORT = dict(bootstrap=10, starts=4, seed=3)
 
 
-def command():
-    path = os.environ.get("NIBRIG_COMMAND")
-    if not path:
-        pytest.skip("NIBRIG_COMMAND (the nibrig executable) not given: it runs the simulated participants")
-    return path
-
 
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
     """The study folder, and the CLI's report of it in <study>/report."""
-    nibrig_command = command()
+    command = nibrig_command()
     root = tmp_path_factory.mktemp("study")
     truth = nibrig.space.default(bootstrap=20)
     truth.save(root / "truth.json")
@@ -37,10 +31,10 @@ def study(tmp_path_factory):
     (root / "stimuli.txt").write_text("\n".join(playable[:6]) + "\n")
     folder = root / "study"
     for participant in PARTICIPANTS:
-        subprocess.run([nibrig_command, "experiment", "run", "--stimuli", str(root / "stimuli.txt"), "--mode", "actuator",
+        subprocess.run([command, "experiment", "run", "--stimuli", str(root / "stimuli.txt"), "--mode", "actuator",
                         "--participant", participant, "--simulate", str(root / "truth.json"), "-o", str(folder)],
                        check=True, capture_output=True)
-    subprocess.run([nibrig_command, "experiment", "report", str(folder), "--bootstrap", str(REPORT["bootstrap"]),
+    subprocess.run([command, "experiment", "report", str(folder), "--bootstrap", str(REPORT["bootstrap"]),
                     "--starts", str(REPORT["starts"]), "--seed", str(REPORT["seed"])], check=True, capture_output=True)
     return folder
 
@@ -127,14 +121,14 @@ def test_bad_folders_and_settings_are_python_errors(study, tmp_path):
 def test_a_validation_study_is_scored_against_its_space_as_the_command_line_scores_it(study, tmp_path):
     # Sec. 6.1: candidates judged against the first stimulus, here by three simulated participants
     # answering from the space the study is then scored against.
-    nibrig_command = command()
+    command = nibrig_command()
     root = study.parent
     folder = tmp_path / "validation"
     for participant in ("V1", "V2", "V3"):
-        subprocess.run([nibrig_command, "experiment", "run", "--stimuli", str(root / "stimuli.txt"), "--mode",
+        subprocess.run([command, "experiment", "run", "--stimuli", str(root / "stimuli.txt"), "--mode",
                         "validation", "--practice", "0", "--participant", participant, "--simulate",
                         str(root / "truth.json"), "-o", str(folder)], check=True, capture_output=True)
-    subprocess.run([nibrig_command, "experiment", "report", str(folder), "--space", str(root / "truth.json")],
+    subprocess.run([command, "experiment", "report", str(folder), "--space", str(root / "truth.json")],
                    check=True, capture_output=True)
     cli = json.loads((folder / "report" / "report.json").read_text())["validation"]
     r = nibrig.study.report(folder, output=tmp_path / "report", space=root / "truth.json")
