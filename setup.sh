@@ -212,7 +212,8 @@ case "$job" in
     mkdir -p "$site"
     rm -rf "$site/nibrig"
     cp -r build/release/python/nibrig "$site/nibrig"
-    echo "setup: installed the Python module in $site/nibrig; try: python3 -c 'import nibrig; print(nibrig.space)'"
+    # Built for Debian's interpreter and its numpy: another python3 first on PATH (pyenv) may lack numpy.
+    echo "setup: installed the Python module in $site/nibrig for /usr/bin/python3; try: /usr/bin/python3 -c 'import nibrig; print(nibrig.__all__)'"
     ;;
   *)
     echo "usage: ./setup.sh [demo|test|bench|panel|python|build]" >&2
