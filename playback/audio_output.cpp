@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <iostream>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -361,6 +362,13 @@ AudioOutput::AudioOutput(rt::BlockRenderer& renderer, OutputSettings settings)
   m.device = choice.device.name;
   m.input_device = m.device;
   m.api_id = RtAudio::getCompiledApiByName(m.api);
+  if (m.api_id == RtAudio::UNIX_JACK) {
+    // RtAudio 5.2's JACK shutdown handler prints to std::cerr on libjack's notification thread
+    // while its own closing thread cancels that thread asynchronously. Without unitbuf (stderr is
+    // unbuffered anyway) no insertion flushes inside ostream::sentry's noexcept destructor, where
+    // such a cancel ends the process.
+    std::cerr.unsetf(std::ios_base::unitbuf);
+  }
   m.validate(choice.device);
   if (m.settings.input_channel) {
     const DeviceInfo input = m.settings.input_device.empty()

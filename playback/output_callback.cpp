@@ -62,10 +62,15 @@ int render_period(void* output, void* input, unsigned int frames, RtAudioStreamS
 
 int output_callback(void* output, void* input, unsigned int frames, double /*stream_time*/,
                     RtAudioStreamStatus status, void* user) {
+  // Deferred as well as disabled: glibc (2.36) still acts on a cancel signal arriving after the
+  // disable while the type is asynchronous. Both are restored: JACK's own wait stays cancellable.
+  int cancel_type = PTHREAD_CANCEL_DEFERRED;
+  pthread_setcanceltype(PTHREAD_CANCEL_DEFERRED, &cancel_type);
   int cancel_state = PTHREAD_CANCEL_ENABLE;
   pthread_setcancelstate(PTHREAD_CANCEL_DISABLE, &cancel_state);
   const int result = render_period(output, input, frames, status, user);
   pthread_setcancelstate(cancel_state, nullptr);
+  pthread_setcanceltype(cancel_type, nullptr);
   return result;
 }
 

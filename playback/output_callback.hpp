@@ -49,7 +49,8 @@ struct OutputCallbackState {
 // RtAudio's callback. `user` is an OutputCallbackState. Never allocates, locks, logs or throws.
 // Not noexcept itself: JACK 2 cancels its client thread asynchronously when the client closes
 // after the server died (JackPosixThread::Kill), and a cancellation's forced unwind that meets a
-// noexcept frame ends the process. The period is rendered with cancellation disabled; a pending
+// noexcept frame ends the process. The period is rendered with cancellation disabled and deferred
+// (a cancel signal already on its way would act on a disabled but asynchronous thread); a pending
 // cancel then unwinds from here, past no noexcept frame of ours.
 int output_callback(void* output, void* input, unsigned int frames, double stream_time,
                     RtAudioStreamStatus status, void* user);

@@ -2,12 +2,17 @@
 // itself when the server returns, with the same renderer; destruction is safe in every state.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <pthread.h>
 
+#include <atomic>
 #include <chrono>
+#include <iostream>
 #include <memory>
+#include <streambuf>
 #include <thread>
 
 #include "playback/audio_output.hpp"
+#include "tests/playback/cancel_signal.hpp"
 #include "tests/playback/jack_recorder.hpp"
 #include "tests/playback/jack_stream_settings.hpp"
 #include "tests/playback/signal_renderer.hpp"
@@ -121,6 +126,56 @@ TEST(AudioOutputRecovery, DestructionIsSafeWhileReopening) {
   server.start();  // returns once clients can connect: the supervisor is at it every 20 ms
   output.reset();
   SUCCEED() << "no crash, no hang, no sanitizer report";
+}
+
+// Discards what is written to it; lets the held cancel signal in at a flush, as if the cancel had
+// arrived then.
+class ReleaseOnFlush : public std::streambuf {
+ protected:
+  int_type overflow(int_type c) override { return traits_type::not_eof(c); }
+  int sync() override {
+    testing::hold_cancel_signal(false);
+    return 0;
+  }
+};
+
+std::atomic<bool> message_held{false};
+std::atomic<bool> message_cancelled{false};
+std::atomic<bool> message_printed{false};
+
+// RtAudio 5.2's JACK shutdown handler, on libjack's notification thread (asynchronously
+// cancellable), prints this while the closing thread it started cancels that thread.
+void* shutdown_message(void*) {
+  pthread_setcanceltype(PTHREAD_CANCEL_ASYNCHRONOUS, nullptr);
+  testing::hold_cancel_signal(true);
+  message_held.store(true, std::memory_order_release);
+  while (!message_cancelled.load(std::memory_order_acquire)) std::this_thread::yield();
+  std::cerr << "\nRtApiJack: the Jack server is shutting down this client ... stream stopped and "
+               "closed!!\n"
+            << std::endl;
+  message_printed.store(true, std::memory_order_release);
+  return nullptr;
+}
+
+// Opening a JACK output takes unitbuf off std::cerr: with it, each insertion flushes in
+// ostream::sentry's noexcept destructor, where such a cancel ends the process ("terminate called
+// without an active exception").
+TEST(AudioOutputRecovery, ACancelDuringRtAudiosShutdownMessageEndsThatThreadAlone) {
+  nibrig::testing::JackServer server;
+  testing::SignalRenderer renderer;
+  AudioOutput output(renderer, testing::jack_settings("message"));
+  ReleaseOnFlush sink;
+  struct Restore {
+    std::streambuf* buffer;
+    ~Restore() { std::cerr.rdbuf(buffer); }  // which clears the badbit a cancelled insertion sets
+  } restore{std::cerr.rdbuf(&sink)};
+  pthread_t thread;
+  ASSERT_EQ(pthread_create(&thread, nullptr, &shutdown_message, nullptr), 0);
+  while (!message_held.load(std::memory_order_acquire)) std::this_thread::yield();
+  ASSERT_EQ(pthread_cancel(thread), 0);  // enabled and asynchronous: the signal is sent, and held
+  message_cancelled.store(true, std::memory_order_release);
+  ASSERT_EQ(pthread_join(thread, nullptr), 0);
+  EXPECT_FALSE(message_printed.load(std::memory_order_acquire)) << "the cancellation was lost";
 }
 
 }  // namespace
