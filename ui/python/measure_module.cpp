@@ -16,6 +16,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/paper_recording.hpp"
 #include "model/io/rig_session.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
 #include "ui/python/submodules.hpp"
@@ -106,7 +107,8 @@ Catalog build(const std::filesystem::path& folder, const std::optional<std::file
         const auto found = catalog::find_recordings(folder);
         std::atomic<std::size_t> done{0};
         const std::size_t total = found.files.size();
-        auto built = catalog::build_catalog(found, threshold, catalog::AnalysisOptions{}, threads,
+        const catalog::AnalysisOptions options;
+        auto built = catalog::build_catalog(found, threshold, options, threads,
                                             [&](const std::filesystem::path&) {
                                               report("analysing recordings", ++done, total);
                                               model::numeric::throw_if_cancelled(stop, "catalog build");

@@ -46,26 +46,6 @@ struct RigSpec {
   std::filesystem::path catalog, stylus, forcing;
 };
 
-// A device that is missing or gone, a session folder that exists or cannot be written: the
-// system's refusal, which Python calls OSError. The rig's calls throw std::runtime_error for
-// these.
-template <typename Call>
-auto system_refusals(Call&& call) {
-  try {
-    return call();
-  } catch (const model::io::FormatError&) {
-    throw;
-  } catch (const model::numeric::Cancelled&) {
-    throw;
-  } catch (const model::io::OutputFileError&) {
-    throw;
-  } catch (const model::io::UnwritableOutput&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    throw SystemRefusal(e.what());
-  }
-}
-
 rig::OpenedRig open_with_profile(const RigSpec& spec, model::design::ToolSounds& sounds,
                                  const std::optional<std::filesystem::path>& profile, const std::string& default_profile,
                                  const std::optional<double>& seconds) {

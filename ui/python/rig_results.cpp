@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "ui/python/errors.hpp"
 #include "ui/python/numpy_views.hpp"
 #include "ui/python/rig_types.hpp"
 
