@@ -10,6 +10,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -143,8 +144,10 @@ class Player {
   std::optional<double> speed() const { return stroke_.empty() ? std::optional(speed_m_s_) : std::nullopt; }
   double force() const { return force_n_; }
   std::string stroke() const {
-    return stroke_.empty() ? "live contact " + std::to_string(speed_m_s_) + " m/s, " + std::to_string(force_n_) + " N"
-                           : stroke_;
+    if (!stroke_.empty()) return stroke_;
+    char words[64];
+    std::snprintf(words, sizeof words, "live contact %.0f mm/s, %.2f N", speed_m_s_ * 1e3, force_n_);
+    return words;
   }
 
   void select(std::size_t slot) {
