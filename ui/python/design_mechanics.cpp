@@ -43,16 +43,6 @@ auto modes_view(Get get) {
   };
 }
 
-// A table of rows (each a std::vector) as a 2-D array: a copy.
-py::array_t<double> table(const std::vector<std::vector<double>>& rows) {
-  const std::size_t columns = rows.empty() ? 0 : rows.front().size();
-  py::array_t<double> a({rows.size(), columns});
-  auto out = a.mutable_unchecked<2>();
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    for (std::size_t c = 0; c < columns; ++c) out(static_cast<py::ssize_t>(r), static_cast<py::ssize_t>(c)) = rows[r][c];
-  return a;
-}
-
 struct Forcing {
   std::shared_ptr<const design::PredictionInputs> inputs;
   const forcing::ForcingModel& model() const { return inputs->model; }
@@ -115,7 +105,7 @@ void add_design_mechanics(py::module_ m) {
         const auto& all = x.model().surface_forcing;
         const auto found = all.find(surface);
         if (found == all.end()) throw std::invalid_argument("the forcing model has no surface '" + surface + "'");
-        return table(found->second);
+        return rows_array(found->second);
       }, py::arg("surface"), "F_S: speeds x frequencies, N (the force's peak amplitude per bin)")
       .def("tip_gain_db", [](const Forcing& x, double tip_mm) {
         return gain_db(x.model().frequencies_hz, [&](double f) { return x.model().tip_log_gain_at(tip_mm * 1e-3, f); });

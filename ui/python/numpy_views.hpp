@@ -6,6 +6,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "model/io/velocity_spectrum.hpp"
@@ -34,15 +36,20 @@ inline pybind11::array_t<double> vector_view(const Eigen::VectorXd& v, const pyb
   return array_view(v.data(), static_cast<std::size_t>(v.size()), owner);
 }
 
-// A velocity-binned spectrum's amplitudes as speeds × frequencies, m/s². A copy: the library
-// keeps each speed's row as a vector of its own.
-inline pybind11::array_t<double> spectrum_array(const model::io::VelocitySpectrum& s) {
-  pybind11::array_t<double> a({s.speeds_m_s.size(), s.frequencies_hz.size()});
+// A table kept as rows of their own (each a std::vector of the same length) as a 2-D array: a copy.
+inline pybind11::array_t<double> rows_array(const std::vector<std::vector<double>>& rows) {
+  const std::size_t columns = rows.empty() ? 0 : rows.front().size();
+  pybind11::array_t<double> a({rows.size(), columns});
   auto out = a.mutable_unchecked<2>();
-  for (std::size_t v = 0; v < s.speeds_m_s.size(); ++v)
-    for (std::size_t f = 0; f < s.frequencies_hz.size(); ++f)
-      out(static_cast<pybind11::ssize_t>(v), static_cast<pybind11::ssize_t>(f)) = s.amplitude_m_s2[v][f];
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::size_t c = 0; c < columns; ++c)
+      out(static_cast<pybind11::ssize_t>(r), static_cast<pybind11::ssize_t>(c)) = rows[r][c];
   return a;
+}
+
+// A velocity-binned spectrum's amplitudes as speeds × frequencies, m/s² (a copy).
+inline pybind11::array_t<double> spectrum_array(const model::io::VelocitySpectrum& s) {
+  return rows_array(s.amplitude_m_s2);
 }
 
 }  // namespace nibrig::ui::python
