@@ -14,9 +14,10 @@ enum SensorFlag : std::uint16_t {
   kNormalForceSaturated = 1u << 0,      // the normal channel is at its converter's end
   kTangentialForceSaturated = 1u << 1,  // the tangential channel is at its converter's end
   kEncoderFault = 1u << 2,              // the speed reading is not trustworthy (lost index, glitch)
-  kMotorFault = 1u << 3,                // driver over-current, stall or over-temperature
+  kMotorFault = 1u << 3,                // stall, over-current, driver, supply, over-speed or slip
   kWatchdogStopped = 1u << 4,           // the motor stopped because the host was silent too long
   kProfileRunning = 1u << 5,            // a profile (or a speed target) is being followed
+  kForceFault = 1u << 6,                // a force channel stopped the motor (1.2): unusable while it turned
 };
 
 struct SensorFrame {

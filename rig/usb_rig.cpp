@@ -112,7 +112,7 @@ bool UsbRig::read(RigData& into, std::chrono::milliseconds wait) {
     while (frames_made_ < frames_total_ && next_frame(frame)) {
       into.frames.push_back(frame);
       if (frame.flags & (kNormalForceSaturated | kTangentialForceSaturated)) ++health_.saturated_frames;
-      if (frame.flags & (kEncoderFault | kMotorFault | kWatchdogStopped)) ++health_.fault_frames;
+      if (frame.flags & (kEncoderFault | kMotorFault | kWatchdogStopped | kForceFault)) ++health_.fault_frames;
       ++frames_made_;
       ++made;
     }
@@ -135,6 +135,10 @@ bool UsbRig::read(RigData& into, std::chrono::milliseconds wait) {
     }
     if (!status.connected) {
       health_.ended_because = "the rig controller was unplugged (" + status.last_fault + ")";
+      return false;
+    }
+    if (!status.device_fault.empty()) {
+      health_.ended_because = status.device_fault;
       return false;
     }
     if (stopped_) {

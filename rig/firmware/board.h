@@ -16,6 +16,8 @@ struct board_sample {
 };
 
 void board_init(void);
+/* What restarted the chip (rig_device.h's enum rig_reset), from its reset flags. */
+uint8_t board_reset_cause(void);
 uint64_t board_clock_us(void);
 void board_set_frame_rate(uint16_t hz);
 /* The next captured sample, or 0 when none waits; samples lost to a full ring are counted. */
@@ -26,12 +28,14 @@ uint8_t board_take_ms(void);
 
 void board_motor(float duty); /* 0..1 forward; 0 brakes */
 int board_driver_fault(void);
+/* A pulse on the driver's nSLEEP, shorter than its sleep time: clears a fault it latched. */
+void board_driver_reset(void);
 float board_motor_current_A(void); /* mean since the last call */
 struct board_encoder {
   int32_t count;
   uint32_t last_edge_us;
-  uint16_t edges;    /* since the last call */
-  uint16_t glitches; /* impossible transitions since the last call */
+  uint16_t edges_a, edges_b; /* each channel's, since the last call */
+  uint16_t glitches;         /* impossible transitions since the last call */
 };
 void board_encoder_read(struct board_encoder *e);
 

@@ -35,14 +35,27 @@ static volatile uint16_t current_conversions;
 
 static volatile int32_t encoder_count;
 static volatile uint32_t encoder_edge_us;
-static volatile uint16_t encoder_edges, encoder_glitches;
+static volatile uint16_t encoder_edges[2], encoder_glitches;
 static uint8_t encoder_state;
+
+/* The chip's reset flags, kept before they are cleared: .noinit, as .init4 clears .bss after this. */
+static uint8_t reset_flags __attribute__((section(".noinit")));
 
 /* Stops the watchdog a reset left running before anything else runs. */
 void board_early(void) __attribute__((naked, used, section(".init3")));
 void board_early(void) {
+  reset_flags = MCUSR;
   MCUSR = 0;
   wdt_disable();
+}
+
+uint8_t board_reset_cause(void) {
+  /* A brown-out also sets the power-on flag when the supply fell far enough: the brown-out is the news. */
+  if (reset_flags & (1 << BORF)) return RIG_RESET_BROWN_OUT;
+  if (reset_flags & (1 << WDRF)) return RIG_RESET_WATCHDOG;
+  if (reset_flags & (1 << PORF)) return RIG_RESET_POWER_ON;
+  if (reset_flags & (1 << EXTRF)) return RIG_RESET_EXTERNAL;
+  return RIG_RESET_POWER_ON;
 }
 
 static uint64_t ticks_now(void) {
@@ -118,7 +131,7 @@ ISR(INT0_vect) {
   }
   const int8_t d = step[was * 4u + now];
   encoder_count += d;
-  ++encoder_edges;
+  ++encoder_edges[(now ^ was) == 2u ? 0 : 1]; /* A is the high bit */
   encoder_edge_us = (uint32_t)(ticks_now() / TICKS_PER_US);
 }
 ISR(INT1_vect, ISR_ALIASOF(INT0_vect));
@@ -197,6 +210,12 @@ void board_motor(float duty) {
 
 int board_driver_fault(void) { return !(PIND & (1 << PD4)); }
 
+void board_driver_reset(void) {
+  PORTB &= (uint8_t) ~(1 << PB6);
+  _delay_us(20);
+  PORTB |= (1 << PB6);
+}
+
 float board_motor_current_A(void) {
   uint32_t sum;
   uint16_t n;
@@ -213,9 +232,10 @@ void board_encoder_read(struct board_encoder *e) {
   ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
     e->count = encoder_count;
     e->last_edge_us = encoder_edge_us;
-    e->edges = encoder_edges;
+    e->edges_a = encoder_edges[0];
+    e->edges_b = encoder_edges[1];
     e->glitches = encoder_glitches;
-    encoder_edges = 0;
+    encoder_edges[0] = encoder_edges[1] = 0;
     encoder_glitches = 0;
   }
 }

@@ -21,6 +21,8 @@ static struct motor_guard guard;
 static uint16_t applied_rate;
 static uint32_t frame_period_us; /* of applied_rate, divided once */
 static uint8_t bootloader_asked;
+static int32_t last_count;
+static uint8_t driving; /* the motor had a target at the last tick */
 
 static void on_vendor_request(const uint8_t setup[8], const uint8_t *data, struct rig_reply *reply) {
   if (data == 0 && !(setup[0] & 0x80) && (setup[6] | setup[7])) {
@@ -61,26 +63,6 @@ static void make_frames(void) {
   }
 }
 
-static void run_speed_loop(void) {
-  const uint8_t ms = board_take_ms();
-  if (ms == 0) return;
-  struct board_encoder e;
-  board_encoder_read(&e);
-  const uint32_t now = (uint32_t)board_clock_us(); /* after the encoder: its last edge is not later */
-  rig.speed_mm_s = rig_speed_from_counts(&rig, speed_estimate(&estimator, e.count, e.last_edge_us, now));
-  rig_tick_ms(&rig, now);
-  const float target = rig_speed_target(&rig);
-  const float duty = speed_controller_step(&controller, target, rig.speed_mm_s, 1e-3f * (float)ms);
-  switch (motor_guard_check(&guard, duty, target, rig.speed_mm_s, board_motor_current_A(), board_driver_fault(),
-                            e.edges, e.glitches)) {
-    case MOTOR_OK: break;
-    case MOTOR_ENCODER_FAULT: rig_fault(&rig, RIG_FAULT_ENCODER); break;
-    default: rig_fault(&rig, RIG_FAULT_MOTOR); break;
-  }
-  board_motor(rig_speed_target(&rig) > 0.0f ? duty : 0.0f);
-  board_led(rig.mode == RIG_SPEED || rig.mode == RIG_PROFILE);
-}
-
 static void stream(void) {
   if (!rig.streaming) {
     frame_fifo_clear(&fifo);
@@ -91,15 +73,61 @@ static void stream(void) {
   usb_stream_service();
 }
 
+/* The guard's verdicts are PROTOCOL.md's fault causes. */
+_Static_assert((int)MOTOR_STALL == RIG_CAUSE_STALL && (int)MOTOR_DISC_SLIPPING == RIG_CAUSE_SLIP &&
+                   (int)MOTOR_ENCODER_SILENT == RIG_CAUSE_ENCODER_SILENT &&
+                   (int)MOTOR_ENCODER_CHANNEL_LOST == RIG_CAUSE_ENCODER_CHANNEL,
+               "motor_verdict and rig_fault_cause must agree");
+
+static void run_speed_loop(void) {
+  const uint8_t ms = board_take_ms();
+  if (ms == 0) return;
+  struct board_encoder e;
+  board_encoder_read(&e);
+  const uint32_t now = (uint32_t)board_clock_us(); /* after the encoder: its last edge is not later */
+  rig.speed_mm_s = rig_speed_from_counts(&rig, speed_estimate(&estimator, e.count, e.last_edge_us, now));
+  rig_tick_ms(&rig, now);
+  const float target = rig_speed_target(&rig);
+  /* A start wakes the driver with a pulse on nSLEEP: that clears a fault it latched. */
+  if (target > 0.0f && !driving) board_driver_reset();
+  driving = target > 0.0f;
+  const float duty = speed_controller_step(&controller, target, rig.speed_mm_s, 1e-3f * (float)ms);
+  /* The loop's longest pass: the stream's next 64 bytes go between its halves. */
+  stream();
+  const int32_t moved = e.count - last_count;
+  last_count = e.count;
+  const struct motor_look look = {
+      .ms = ms,
+      .duty = duty,
+      .target = target,
+      .measured = rig.speed_mm_s,
+      .current_A = board_motor_current_A(),
+      .driver_fault = (uint8_t)board_driver_fault(),
+      .counts = (int16_t)(moved > 32767 ? 32767 : moved < -32767 ? -32767 : moved),
+      .edges_a = e.edges_a,
+      .edges_b = e.edges_b,
+      .glitches = e.glitches,
+      .normal_N = rig.force_N[0],
+      .tangential_N = rig.force_N[1],
+  };
+  const enum motor_verdict verdict = motor_guard_check(&guard, &look);
+  if (verdict != MOTOR_OK) rig_fault(&rig, (enum rig_fault_cause)verdict);
+  board_motor(rig_speed_target(&rig) > 0.0f ? duty : 0.0f);
+  board_led(rig_speed_target(&rig) > 0.0f);
+}
+
 int main(void) {
   struct rig_persist persist;
   board_init();
-  if (!board_persist_load(&persist)) {
+  const int persisted = board_persist_load(&persist);
+  if (!persisted) {
     rig_persist_defaults(&persist);
     board_new_serial(persist.serial);
     board_persist_store_begin(&persist);
   }
   rig_init(&rig, &persist, (uint32_t)board_clock_us());
+  rig.reset_cause = (uint8_t)board_reset_cause();
+  if (!persisted) rig.health |= RIG_HEALTH_FACTORY_DEFAULTS;
   speed_controller_init(&controller);
   applied_rate = rig.frame_rate_hz;
   frame_period_us = 1000000ul / applied_rate;

@@ -28,6 +28,13 @@ static float get_f32(const uint8_t *p) {
 }
 
 static int positive_finite(float v) { return isfinite(v) && v > 0.0f; }
+static int within(float v, float low, float high) { return isfinite(v) && v >= low && v <= high; }
+/* A count's newtons at the tip within the board's range (rig_device.h): nothing else makes sense of
+ * a 10-bit reading of the paper's load. */
+static int tip_count_within(float counts_per_N, float lever) {
+  return positive_finite(counts_per_N) && positive_finite(lever) &&
+         within(lever / counts_per_N, RIG_MIN_N_PER_COUNT, RIG_MAX_N_PER_COUNT);
+}
 
 void rig_persist_defaults(struct rig_persist *p) {
   /* A 1 kg, 1 mV/V load cell at 5 V through a gain of 500 into the 10-bit ADC at 5 V: 0.255 V/N,
@@ -96,6 +103,7 @@ static void stop_motor(struct rig *r) {
 static void start(struct rig *r, uint8_t mode) {
   r->mode = mode;
   r->fault = RIG_FAULT_NONE;
+  r->fault_cause = RIG_CAUSE_NONE;
   r->sticky_flags = 0;
 }
 
@@ -122,6 +130,8 @@ static uint16_t current_flags(const struct rig *r) {
   return flags;
 }
 
+/* 16 bytes in 1.0 and 1.1; 1.2 appends why the motor stopped, what restarted the controller, and
+ * its health. A host that asks for 16 reads the 1.1 layout. */
 static void status(const struct rig *r, struct rig_reply *reply) {
   uint8_t *d = reply->data;
   put_u16(d + 0, current_flags(r));
@@ -132,7 +142,11 @@ static void status(const struct rig *r, struct rig_reply *reply) {
   put_u16(d + 12, r->profile_held);
   d[14] = r->refused_request;
   d[15] = r->refusal;
-  reply->len = 16;
+  d[16] = r->fault_cause;
+  d[17] = r->reset_cause;
+  d[18] = r->health;
+  d[19] = 0;
+  reply->len = 20;
 }
 
 /* PROFILE_END's checks: starts at 0, never goes back in time, speeds within the motor's range. */
@@ -293,7 +307,7 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
       return;
     case RIG_SET_CALIBRATION: {
       const float n = get_f32(data), t = get_f32(data + 4), lever = get_f32(data + 8);
-      if (!positive_finite(n) || !positive_finite(t) || !positive_finite(lever)) break;
+      if (!tip_count_within(n, lever) || !tip_count_within(t, lever)) break;
       r->persist.counts_per_N[0] = n;
       r->persist.counts_per_N[1] = t;
       r->persist.lever = lever;
@@ -308,7 +322,10 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
       return;
     case RIG_SET_GEOMETRY: {
       const float counts = get_f32(data), radius = get_f32(data + 4);
-      if (!positive_finite(counts) || !positive_finite(radius)) break;
+      if (!within(counts, RIG_MIN_COUNTS_PER_REV, RIG_MAX_COUNTS_PER_REV) ||
+          !within(radius, RIG_MIN_RADIUS_MM, RIG_MAX_RADIUS_MM)) {
+        break;
+      }
       r->persist.counts_per_rev = counts;
       r->persist.radius_mm = radius;
       refresh_scales(r);
@@ -322,7 +339,7 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
       return;
     case RIG_ENTER_BOOTLOADER:
       if (value != RIG_BOOTLOADER_KEY) break;
-      if (r->mode == RIG_SPEED || r->mode == RIG_PROFILE) {
+      if (rig_speed_target(r) > 0.0f) {
         refuse(r, request, RIG_REFUSE_ORDER, reply);
         return;
       }
@@ -333,12 +350,23 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
   refuse(r, request, RIG_REFUSE_RANGE, reply);
 }
 
-void rig_fault(struct rig *r, enum rig_fault fault) {
+enum rig_fault rig_fault_of(enum rig_fault_cause cause) {
+  if (cause == RIG_CAUSE_NONE) return RIG_FAULT_NONE;
+  if (cause <= RIG_CAUSE_SLIP) return RIG_FAULT_MOTOR;
+  if (cause <= RIG_CAUSE_ENCODER_CHANNEL) return RIG_FAULT_ENCODER;
+  if (cause == RIG_CAUSE_HOST_SILENT) return RIG_FAULT_WATCHDOG;
+  return RIG_FAULT_FORCE;
+}
+
+void rig_fault(struct rig *r, enum rig_fault_cause cause) {
+  const enum rig_fault fault = rig_fault_of(cause);
   if (r->mode == RIG_IDLE && r->fault == fault) return;
   stop_motor(r);
   r->fault = (uint8_t)fault;
-  r->sticky_flags |= fault == RIG_FAULT_MOTOR ? RIG_MOTOR_FAULT
+  r->fault_cause = (uint8_t)cause;
+  r->sticky_flags |= fault == RIG_FAULT_MOTOR     ? RIG_MOTOR_FAULT
                      : fault == RIG_FAULT_ENCODER ? RIG_ENCODER_FAULT
+                     : fault == RIG_FAULT_FORCE   ? RIG_FORCE_FAULT
                                                   : RIG_WATCHDOG_STOPPED;
 }
 
@@ -356,9 +384,25 @@ static float profile_speed(struct rig *r, uint32_t t_ms) {
 }
 
 void rig_tick_ms(struct rig *r, uint32_t now_us) {
-  const int running = r->mode == RIG_SPEED || r->mode == RIG_PROFILE;
+  /* Whatever drives the motor: a speed, a profile, or the last speed a finished profile holds. */
+  const int running = rig_speed_target(r) > 0.0f;
   if (running && now_us - r->last_control_us > RIG_WATCHDOG_MS * 1000ul) {
-    rig_fault(r, RIG_FAULT_WATCHDOG);
+    rig_fault(r, RIG_CAUSE_HOST_SILENT);
+    return;
+  }
+  /* A channel at its end, or the tip pulled up by half a newton, for 100 ms while the disc turns:
+   * a cell unplugged or overloaded (a hand on the holder), or its bridge wired backwards. The
+   * frames would be no measurement, and a hand may be where the disc turns. */
+  const int unusable = (r->force_flags & (RIG_NORMAL_SATURATED | RIG_TANGENTIAL_SATURATED)) != 0 ||
+                       r->force_N[0] < RIG_NEGATIVE_NORMAL_N;
+  if (!(running && unusable)) {
+    r->force_bad = 0;
+  } else if (!r->force_bad) {
+    r->force_bad = 1;
+    r->force_bad_since_us = now_us;
+  }
+  if (r->force_bad && now_us - r->force_bad_since_us >= RIG_FORCE_BAD_MS * 1000ul) {
+    rig_fault(r, r->force_flags ? RIG_CAUSE_FORCE_SATURATED : RIG_CAUSE_FORCE_NEGATIVE);
     return;
   }
   if (r->mode == RIG_PROFILE) {
@@ -379,11 +423,13 @@ void rig_sample(struct rig *r, uint64_t t_us, const struct rig_adc_means *adc, s
     const float counts = adc->force_counts[c];
     const float force = (counts - r->persist.zero_counts[c]) * r->newtons_per_count[c];
     f->force_N[c] = force;
+    r->force_N[c] = force;
     /* At either end of the converter, or beyond the full scale: the reading is not the force. */
     if (counts >= RIG_ADC_FULL_COUNTS - 1.0f || counts <= 1.0f || fabsf(force) >= r->full_scale_N[c]) {
       f->flags |= c == 0 ? RIG_NORMAL_SATURATED : RIG_TANGENTIAL_SATURATED;
     }
   }
+  r->force_flags = (uint8_t)(f->flags & (RIG_NORMAL_SATURATED | RIG_TANGENTIAL_SATURATED));
   if (r->zeroing_frames_left > 0) {
     r->zeroing_sum[0] += adc->force_counts[0];
     r->zeroing_sum[1] += adc->force_counts[1];

@@ -11,19 +11,35 @@
 extern "C" {
 #endif
 
-#define RIG_PROTOCOL_VERSION 0x0101u
-#define RIG_FIRMWARE_VERSION "1.1.0"
+#define RIG_PROTOCOL_VERSION 0x0102u
+#define RIG_FIRMWARE_VERSION "1.2.0"
 #define RIG_MAX_POINTS 64u
 #define RIG_MAX_SPEED_MM_S 300.0f
 #define RIG_MIN_RATE_HZ 1000u
 /* At 4 kHz the chip has no cycle to spare: about 6 % of the frames were lost on the simulated board
  * (the frames' soft-float work, the endpoint's byte copies, the frame interrupt's 64-bit sums). */
 #define RIG_MAX_RATE_HZ 3000u
-#define RIG_WATCHDOG_MS 500u
+#define RIG_WATCHDOG_MS 400u
 #define RIG_ADC_FULL_COUNTS 1023.0f
 #define RIG_SERIAL_BYTES 16u
 #define RIG_FRAME_BYTES 28u
 #define RIG_BOOTLOADER_KEY 0x4E42u
+#define RIG_STATUS_BYTES 20u
+/* SET_CALIBRATION's and SET_GEOMETRY's ranges (1.2) for this board's 10-bit converter and turntable.
+ * A count at the tip (lever / counts per N) of at least 8.6 mN keeps twice the paper's 2.2 N load
+ * within the ~511 counts either side of the zero; at most 0.11 N keeps a count within 5 % of that
+ * load. Counts per turn within a factor of ten of the reference gearmotor's 4480; the track within
+ * the 200 mm disc. */
+#define RIG_MIN_N_PER_COUNT 0.0086f
+#define RIG_MAX_N_PER_COUNT 0.11f
+#define RIG_MIN_COUNTS_PER_REV 448.0f
+#define RIG_MAX_COUNTS_PER_REV 44800.0f
+#define RIG_MIN_RADIUS_MM 10.0f
+#define RIG_MAX_RADIUS_MM 100.0f
+/* The force channels stop the motor after this long unusable; a normal force below this is the tip
+ * pulled up, or a bridge wired backwards. */
+#define RIG_FORCE_BAD_MS 100u
+#define RIG_NEGATIVE_NORMAL_N (-0.5f)
 
 enum rig_request {
   RIG_IDENTIFY = 0x01,
@@ -48,14 +64,35 @@ enum rig_request {
 
 enum rig_refusal { RIG_REFUSE_NONE = 0, RIG_REFUSE_UNKNOWN, RIG_REFUSE_LENGTH, RIG_REFUSE_RANGE, RIG_REFUSE_ORDER };
 enum rig_mode { RIG_IDLE = 0, RIG_SPEED = 1, RIG_PROFILE = 2, RIG_PROFILE_DONE = 3 };
-enum rig_fault { RIG_FAULT_NONE = 0, RIG_FAULT_MOTOR = 1, RIG_FAULT_ENCODER = 2, RIG_FAULT_WATCHDOG = 3 };
+enum rig_fault { RIG_FAULT_NONE = 0, RIG_FAULT_MOTOR = 1, RIG_FAULT_ENCODER = 2, RIG_FAULT_WATCHDOG = 3, RIG_FAULT_FORCE = 4 };
+/* Why the motor stopped (1.2): each cause belongs to one fault above (PROTOCOL.md "Fault causes"). */
+enum rig_fault_cause {
+  RIG_CAUSE_NONE = 0,
+  RIG_CAUSE_STALL = 1,
+  RIG_CAUSE_OVERCURRENT = 2,
+  RIG_CAUSE_DRIVER = 3,
+  RIG_CAUSE_SUPPLY = 4,
+  RIG_CAUSE_OVERSPEED = 5,
+  RIG_CAUSE_SLIP = 6,
+  RIG_CAUSE_ENCODER_SILENT = 7,
+  RIG_CAUSE_ENCODER_GLITCH = 8,
+  RIG_CAUSE_ENCODER_REVERSED = 9,
+  RIG_CAUSE_ENCODER_CHANNEL = 10,
+  RIG_CAUSE_HOST_SILENT = 11,
+  RIG_CAUSE_FORCE_SATURATED = 12,
+  RIG_CAUSE_FORCE_NEGATIVE = 13
+};
+/* What restarted the controller last (1.2), from the chip's reset flags. */
+enum rig_reset { RIG_RESET_POWER_ON = 0, RIG_RESET_EXTERNAL = 1, RIG_RESET_BROWN_OUT = 2, RIG_RESET_WATCHDOG = 3 };
+enum rig_health { RIG_HEALTH_FACTORY_DEFAULTS = 1u << 0 };
 enum rig_flag {
   RIG_NORMAL_SATURATED = 1u << 0,
   RIG_TANGENTIAL_SATURATED = 1u << 1,
   RIG_ENCODER_FAULT = 1u << 2,
   RIG_MOTOR_FAULT = 1u << 3,
   RIG_WATCHDOG_STOPPED = 1u << 4,
-  RIG_PROFILE_RUNNING = 1u << 5
+  RIG_PROFILE_RUNNING = 1u << 5,
+  RIG_FORCE_FAULT = 1u << 6
 };
 
 /* Packed as the AVR lays structs out anyway (it has no alignment), so that the host's tests read
@@ -104,6 +141,13 @@ struct rig {
   uint8_t streaming;
   uint8_t mode;
   uint8_t fault;
+  uint8_t fault_cause;
+  uint8_t reset_cause;
+  uint8_t health;
+  uint8_t force_bad;           /* the force channels unusable while the motor runs, since: */
+  uint32_t force_bad_since_us;
+  float force_N[2];     /* the newest frame's */
+  uint8_t force_flags;  /* the newest frame's saturation flags */
   uint16_t sticky_flags; /* watchdog and fault flags until the next start */
   uint16_t frame_rate_hz;
   float target_mm_s;
@@ -145,10 +189,12 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
                  struct rig_reply *reply);
 void rig_refuse(struct rig *r, uint8_t request, enum rig_refusal why);
 
-/* Every millisecond: the watchdog, the profile's target, the mode. */
+/* Every millisecond: the watchdog, the force channels, the profile's target, the mode. */
 void rig_tick_ms(struct rig *r, uint32_t now_us);
-/* A fault the board saw (motor or encoder): the motor stops until the next start. */
-void rig_fault(struct rig *r, enum rig_fault fault);
+/* A fault the board saw: the motor stops until the next start, and the status says why. */
+void rig_fault(struct rig *r, enum rig_fault_cause cause);
+/* The fault a cause belongs to. */
+enum rig_fault rig_fault_of(enum rig_fault_cause cause);
 /* The speed the loop is to reach now (0 when stopped). */
 float rig_speed_target(const struct rig *r);
 

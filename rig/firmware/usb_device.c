@@ -2,8 +2,7 @@
 
 #include <avr/io.h>
 #include <avr/pgmspace.h>
-#include <avr/wdt.h>
-
+#include "board.h"
 #include "frame_fifo.h"
 
 #define EP0_SIZE 64u
@@ -61,14 +60,21 @@ static void configure_stream(void) {
   UENUM = 0;
 }
 
+/* A host carries each stage of a control transfer within microseconds of the last; one that has
+ * not in 20 ms is gone (a killed process, a pulled cable), and the loop must go on: the speed loop,
+ * the frames and the protocol's watchdog run only there. */
+#define EP0_STAGE_LIMIT_US 20000u
+
 /* Waits for one of EP0's `bits`; 0 when a bus reset or a new SETUP came first (the transfer is
- * over: a host may send the next SETUP before the device has seen the last status stage). */
+ * over: a host may send the next SETUP before the device has seen the last status stage), or when
+ * the host has not gone on within EP0_STAGE_LIMIT_US. */
 static uint8_t ep0_wait(uint8_t bits) {
+  const uint32_t start = (uint32_t)board_clock_us();
   for (;;) {
     const uint8_t flags = UEINTX;
     if (flags & bits) return flags;
     if ((flags & (1 << RXSTPI)) || (UDINT & (1 << EORSTI))) return 0;
-    wdt_reset();
+    if ((uint32_t)board_clock_us() - start > EP0_STAGE_LIMIT_US) return 0;
   }
 }
 

@@ -43,12 +43,12 @@ void ControlChannel::fail(Request request, int code) {
     // what is known.
     std::string why = "no reason could be read back";
     if (request != Request::kGetStatus) {
-      std::vector<std::uint8_t> reply(kStatusBytes);
+      std::vector<std::uint8_t> reply(kStatusBytes12);
       const int n = libusb_control_transfer(handle_, kRequestTypeIn,
                                             static_cast<std::uint8_t>(Request::kGetStatus), 0, 0,
-                                            reply.data(), kStatusBytes, timeout_ms_);
+                                            reply.data(), kStatusBytes12, timeout_ms_);
       if (n >= static_cast<int>(kStatusBytes)) {
-        const DeviceStatus s = decode_status(reply);
+        const DeviceStatus s = decode_status(std::span<const std::uint8_t>(reply.data(), static_cast<std::size_t>(n)));
         if (s.refused_request == static_cast<std::uint8_t>(request)) why = refusal_text(s.refusal);
       }
     }
@@ -76,7 +76,7 @@ Identity ControlChannel::identify() {
 }
 
 DeviceStatus ControlChannel::status() {
-  return decode_status(in(Request::kGetStatus, 0, 0, kStatusBytes, kStatusBytes));
+  return decode_status(in(Request::kGetStatus, 0, 0, kStatusBytes12, kStatusBytes));
 }
 
 }  // namespace nibrig::rig::usb

@@ -106,8 +106,66 @@ std::string fault_text(std::uint8_t fault) {
     case Fault::kMotor: return "motor fault (over-current, stall or over-temperature)";
     case Fault::kEncoder: return "encoder fault";
     case Fault::kWatchdog: return "motor stopped by the watchdog (the host was silent)";
+    case Fault::kForce: return "force sensor fault";
   }
   return "fault code " + std::to_string(fault);
+}
+
+std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause) {
+  switch (static_cast<FaultCause>(cause)) {
+    case FaultCause::kNone: break;
+    case FaultCause::kStall:
+      return "motor stalled: driven, drawing the current of a held rotor, and the disc did not turn; "
+             "check that nothing jams the disc (the arm, a cable, the surface's clamp)";
+    case FaultCause::kOverCurrent:
+      return "motor over-current: above 1.8 A for 100 ms, more than a start needs; check the gearbox "
+             "and bearings for binding and the motor's leads for a short";
+    case FaultCause::kDriver:
+      return "motor driver fault (nFAULT): the DRV8876 shut down on over-current, over-temperature or "
+             "its supply under 4.5 V; check the motor's leads for a short and the 12 V supply";
+    case FaultCause::kSupply:
+      return "motor supply lost: driven, and no current flowed; the emergency stop is pressed, the "
+             "T2A fuse is open or the 12 V adapter is unplugged";
+    case FaultCause::kOverSpeed:
+      return "motor over-speed: the encoder read more than 360 mm/s; check the encoder's wiring and "
+             "the geometry (nibrig rig calibrate --radius --counts-per-rev)";
+    case FaultCause::kSlip:
+      return "disc slipping: the motor turned at the target under a loaded tip and no friction was "
+             "measured; tighten the disc's hub on its shaft and the jaw coupling";
+    case FaultCause::kEncoderSilent:
+      return "encoder silent: the motor turned and the encoder gave no count; check its cable "
+             "(yellow to D3, white to D2, blue to 5 V, green to GND)";
+    case FaultCause::kEncoderGlitch:
+      return "encoder glitch: both channels changed at once; check for a loose encoder connector and "
+             "keep its wires apart from the motor's leads";
+    case FaultCause::kEncoderReversed:
+      return "encoder reversed: the disc turned backwards while driven forwards; swap encoder A and B "
+             "(yellow and white), or, if the disc itself turned the wrong way, the motor's two leads";
+    case FaultCause::kEncoderChannel:
+      return "encoder channel lost: one channel's edges alone while the motor turned; check the yellow "
+             "(A, D3) and white (B, D2) wires";
+    case FaultCause::kHostSilent:
+      return "motor stopped by the watchdog: no request from the host for 500 ms (nibrig ended, or the "
+             "USB cable was pulled)";
+    case FaultCause::kForceSaturated:
+      return "force channel saturated for 100 ms while the disc turned: a load cell unplugged or "
+             "overloaded (a hand on the holder); check its cable and the amplifier's REF (2.5 V)";
+    case FaultCause::kForceNegative:
+      return "normal force negative for 100 ms while the disc turned: the tip pulled up, or the normal "
+             "cell's S+ and S- swapped";
+  }
+  if (cause != 0) return fault_text(fault) + " (cause code " + std::to_string(cause) + ")";
+  return fault_text(fault);
+}
+
+std::string reset_cause_text(std::uint8_t cause) {
+  switch (static_cast<ResetCause>(cause)) {
+    case ResetCause::kPowerOn: return "power-on";
+    case ResetCause::kExternal: return "its reset button";
+    case ResetCause::kBrownOut: return "a brown-out (its supply dipped)";
+    case ResetCause::kWatchdog: return "its watchdog (the firmware hung)";
+  }
+  return "reset code " + std::to_string(cause);
 }
 
 std::array<std::uint8_t, kIdentityBytes> encode_identity(const Identity& id) {
@@ -141,8 +199,8 @@ Identity decode_identity(std::span<const std::uint8_t> b) {
   return id;
 }
 
-std::array<std::uint8_t, kStatusBytes> encode_status(const DeviceStatus& s) {
-  std::array<std::uint8_t, kStatusBytes> b{};
+std::array<std::uint8_t, kStatusBytes12> encode_status(const DeviceStatus& s) {
+  std::array<std::uint8_t, kStatusBytes12> b{};
   put_u16(&b[0], s.flags);
   b[2] = static_cast<std::uint8_t>(s.mode);
   b[3] = static_cast<std::uint8_t>(s.fault);
@@ -151,6 +209,9 @@ std::array<std::uint8_t, kStatusBytes> encode_status(const DeviceStatus& s) {
   put_u16(&b[12], s.profile_points);
   b[14] = s.refused_request;
   b[15] = s.refusal;
+  b[16] = static_cast<std::uint8_t>(s.cause);
+  b[17] = static_cast<std::uint8_t>(s.reset_cause);
+  b[18] = s.health;
   return b;
 }
 
@@ -165,6 +226,11 @@ DeviceStatus decode_status(std::span<const std::uint8_t> b) {
   s.profile_points = get_u16(&b[12]);
   s.refused_request = b[14];
   s.refusal = b[15];
+  if (b.size() >= kStatusBytes12) {
+    s.cause = static_cast<FaultCause>(b[16]);
+    s.reset_cause = static_cast<ResetCause>(b[17]);
+    s.health = b[18];
+  }
   return s;
 }
 

@@ -21,9 +21,11 @@ inline constexpr int kInterface = 0;
 inline constexpr std::uint8_t kStreamEndpoint = 0x81;
 inline constexpr std::uint8_t kRequestTypeIn = 0xC0;   // vendor, device, device to host
 inline constexpr std::uint8_t kRequestTypeOut = 0x40;  // vendor, device, host to device
-inline constexpr std::uint16_t kProtocolVersion = 0x0101;
+inline constexpr std::uint16_t kProtocolVersion = 0x0102;
 // The version that added GET/SET_GEOMETRY, SET_SERIAL and ENTER_BOOTLOADER.
 inline constexpr std::uint16_t kGeometryVersion = 0x0101;
+// The version whose status says why the motor stopped, what restarted the device, and its health.
+inline constexpr std::uint16_t kFaultCauseVersion = 0x0102;
 // ENTER_BOOTLOADER's wValue ("NB"): a stray request must not take the device off the bus.
 inline constexpr std::uint16_t kBootloaderKey = 0x4E42;
 
@@ -55,11 +57,35 @@ enum class Refusal : std::uint8_t { kNone = 0, kUnknown = 1, kLength = 2, kRange
 std::string refusal_text(std::uint8_t refusal);
 
 enum class Mode : std::uint8_t { kIdle = 0, kSpeed = 1, kProfile = 2, kProfileDone = 3 };
-enum class Fault : std::uint8_t { kNone = 0, kMotor = 1, kEncoder = 2, kWatchdog = 3 };
+enum class Fault : std::uint8_t { kNone = 0, kMotor = 1, kEncoder = 2, kWatchdog = 3, kForce = 4 };
 std::string fault_text(std::uint8_t fault);
+// PROTOCOL.md "Fault causes" (1.2): why the device stopped the motor.
+enum class FaultCause : std::uint8_t {
+  kNone = 0,
+  kStall = 1,
+  kOverCurrent = 2,
+  kDriver = 3,
+  kSupply = 4,
+  kOverSpeed = 5,
+  kSlip = 6,
+  kEncoderSilent = 7,
+  kEncoderGlitch = 8,
+  kEncoderReversed = 9,
+  kEncoderChannel = 10,
+  kHostSilent = 11,
+  kForceSaturated = 12,
+  kForceNegative = 13,
+};
+// "the encoder reads the disc turning backwards ...: swap ...": what happened and what to check,
+// for a person at the rig; a 1.1 device's fault alone when the cause is unknown.
+std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause);
+enum class ResetCause : std::uint8_t { kPowerOn = 0, kExternal = 1, kBrownOut = 2, kWatchdog = 3 };
+std::string reset_cause_text(std::uint8_t cause);
+inline constexpr std::uint8_t kHealthFactoryDefaults = 1u << 0;
 
 inline constexpr std::size_t kIdentityBytes = 52;
-inline constexpr std::size_t kStatusBytes = 16;
+inline constexpr std::size_t kStatusBytes = 16;     // 1.0 and 1.1; the least a reply holds
+inline constexpr std::size_t kStatusBytes12 = 20;   // 1.2: a host asks for this many
 inline constexpr std::size_t kCalibrationBytes = 12;
 inline constexpr std::size_t kGeometryBytes = 8;
 inline constexpr std::size_t kSerialBytes = 16;
@@ -92,6 +118,10 @@ struct DeviceStatus {
   std::uint16_t profile_points = 0;
   std::uint8_t refused_request = 0;
   std::uint8_t refusal = 0;
+  // 1.2; a shorter reply leaves them so.
+  FaultCause cause = FaultCause::kNone;
+  ResetCause reset_cause = ResetCause::kPowerOn;
+  std::uint8_t health = 0;
 };
 
 struct ForceCalibration {
@@ -117,7 +147,8 @@ std::string serial_problem(const std::string& serial);
 // what was wrong (too short a reply, an unknown major version is the driver's call, not theirs).
 std::array<std::uint8_t, kIdentityBytes> encode_identity(const Identity& identity);
 Identity decode_identity(std::span<const std::uint8_t> bytes);
-std::array<std::uint8_t, kStatusBytes> encode_status(const DeviceStatus& status);
+// 1.2's 20 bytes; a device of an older version sends the first 16.
+std::array<std::uint8_t, kStatusBytes12> encode_status(const DeviceStatus& status);
 DeviceStatus decode_status(std::span<const std::uint8_t> bytes);
 std::array<std::uint8_t, kCalibrationBytes> encode_calibration(const ForceCalibration& calibration);
 ForceCalibration decode_calibration(std::span<const std::uint8_t> bytes);

@@ -36,7 +36,7 @@ UsbRigController::UsbRigController(Options options)
     }
     keep_alive_ = libusb_alloc_transfer(0);
     if (keep_alive_ == nullptr) throw UsbRigError("cannot allocate a libusb transfer");
-    keep_alive_buffer_.resize(LIBUSB_CONTROL_SETUP_SIZE + kStatusBytes);
+    keep_alive_buffer_.resize(LIBUSB_CONTROL_SETUP_SIZE + kStatusBytes12);
     // Hotplug tells at once when the device leaves or comes back; without it (some platforms) a
     // transfer's NO_DEVICE and the periodic rescan do the same, only later. No ENUMERATE flag: the
     // device at hand was just opened, and an arrival reported twice costs only a rescan anyway.
@@ -233,7 +233,7 @@ void UsbRigController::try_reconnect() {
 
 void UsbRigController::submit_keep_alive() {
   libusb_fill_control_setup(keep_alive_buffer_.data(), kRequestTypeIn,
-                            static_cast<std::uint8_t>(Request::kGetStatus), 0, 0, kStatusBytes);
+                            static_cast<std::uint8_t>(Request::kGetStatus), 0, 0, kStatusBytes12);
   libusb_fill_control_transfer(keep_alive_, handle_, keep_alive_buffer_.data(),
                                &UsbRigController::on_keep_alive, this, 500);
   keep_alive_in_flight_ = true;
@@ -248,12 +248,15 @@ void LIBUSB_CALL UsbRigController::on_keep_alive(libusb_transfer* transfer) {
   auto* self = static_cast<UsbRigController*>(transfer->user_data);
   if (transfer->status == LIBUSB_TRANSFER_COMPLETED &&
       transfer->actual_length >= static_cast<int>(kStatusBytes)) {
-    const DeviceStatus s = decode_status(
-        std::span<const std::uint8_t>(libusb_control_transfer_get_data(transfer), kStatusBytes));
+    const DeviceStatus s = decode_status(std::span<const std::uint8_t>(
+        libusb_control_transfer_get_data(transfer), static_cast<std::size_t>(transfer->actual_length)));
     self->device_flags_ = s.flags;
     if (s.fault != Fault::kNone) {
-      self->set_fault("the rig controller " + self->serial_ + ": " +
-                      fault_text(static_cast<std::uint8_t>(s.fault)));
+      std::string why = "the rig controller " + self->serial_ + " stopped the motor: " +
+                        fault_cause_text(static_cast<std::uint8_t>(s.fault), static_cast<std::uint8_t>(s.cause));
+      self->set_fault(why);
+      std::lock_guard lock(self->fault_mutex_);
+      self->device_fault_ = std::move(why);
     }
   } else if (transfer->status == LIBUSB_TRANSFER_NO_DEVICE) {
     self->lost_ = true;
@@ -376,6 +379,7 @@ UsbRigStatus UsbRigController::status() const {
   s.device_flags = device_flags_;
   std::lock_guard lock(fault_mutex_);
   s.last_fault = last_fault_;
+  s.device_fault = device_fault_;
   return s;
 }
 

@@ -45,6 +45,9 @@ struct UsbRigStatus {
   std::uint64_t reconnects = 0;
   std::uint16_t device_flags = 0;  // SensorFlag bits of the newest frame or status
   std::string last_fault;          // one line; empty while nothing went wrong
+  // The fault the device stopped the motor for since the last start, with what to check; empty
+  // while the motor may run.
+  std::string device_fault;
 };
 
 class UsbRigController {
@@ -136,6 +139,7 @@ class UsbRigController {
   void try_reconnect();
   void submit_keep_alive();
   void set_fault(std::string fault);
+  void clear_device_fault();
   static void LIBUSB_CALL on_bulk(libusb_transfer* transfer);
   static void LIBUSB_CALL on_keep_alive(libusb_transfer* transfer);
   static int LIBUSB_CALL on_hotplug(libusb_context*, libusb_device*, libusb_hotplug_event, void*);
@@ -174,6 +178,7 @@ class UsbRigController {
   std::atomic<std::uint16_t> device_flags_{0};
   mutable std::mutex fault_mutex_;
   std::string last_fault_;
+  std::string device_fault_;
 
   std::thread events_;
 };

@@ -29,12 +29,19 @@ Identity UsbRigController::identify() {
   });
 }
 
+// A start clears the device's fault (PROTOCOL.md "Status"): the one it had is no longer news.
+void UsbRigController::clear_device_fault() {
+  std::lock_guard lock(fault_mutex_);
+  device_fault_.clear();
+}
+
 void UsbRigController::set_speed(double speed_m_s) {
   const Identity id = identity();
   if (!(speed_m_s >= 0.0 && speed_m_s <= id.max_speed_m_s)) {
     throw UsbRigError("speed " + mm_s(speed_m_s) + " is outside what the rig controller " + serial_ +
                       " runs: 0 to " + mm_s(id.max_speed_m_s));
   }
+  clear_device_fault();
   with_channel([&](ControlChannel& c) { c.out(Request::kSetSpeed, 0, 0, encode_speed(speed_m_s)); });
 }
 
@@ -76,6 +83,7 @@ std::vector<ProfilePoint> UsbRigController::read_profile() {
 }
 
 void UsbRigController::start_profile() {
+  clear_device_fault();
   with_channel([&](ControlChannel& c) { c.out(Request::kStartProfile, 0, 0); });
 }
 

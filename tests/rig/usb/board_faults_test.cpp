@@ -8,36 +8,10 @@
 #include <optional>
 #include <string>
 
-#include "tests/rig/usb/board_host.hpp"
+#include "tests/rig/usb/board_fault_checks.hpp"
 
 namespace nibrig::rig::usb::testing {
 namespace {
-
-// The sample instant (simulated us) of the first frame after `after_us` carrying `flag`.
-std::optional<double> first_flagged(const BoardHost& host, std::uint16_t flag, double after_us) {
-  for (const ReceivedFrame& f : host.frames()) {
-    const double t = host.sim_us_at_device_us(f.frame.device_time_us);
-    if (t >= after_us && (f.frame.flags & flag)) return t;
-  }
-  return std::nullopt;
-}
-
-// Every frame sampled after `from_us` carries `flag`, and the disc's drive has been 0 since.
-void expect_stopped_since(const BoardHost& host, std::uint16_t flag, double from_us) {
-  int frames = 0;
-  for (const ReceivedFrame& f : host.frames()) {
-    if (host.sim_us_at_device_us(f.frame.device_time_us) < from_us + 2000.0) continue;  // the loop's next tick
-    ++frames;
-    EXPECT_TRUE(f.frame.flags & flag) << "frame " << f.frame.sequence;
-    EXPECT_FALSE(f.frame.flags & kProfileRunning) << "frame " << f.frame.sequence;
-  }
-  EXPECT_GT(frames, 0);
-  for (const TrueSpeed& s : host.true_speeds()) {
-    if (s.sim_us >= from_us + 2000.0) {
-      EXPECT_EQ(s.duty, 0.0) << "at " << s.sim_us << " us";
-    }
-  }
-}
 
 // A new SET_SPEED clears the fault: the status, and the frames' flags from the next frame on.
 void expect_cleared_by_set_speed(BoardHost& host, std::uint16_t flag) {
@@ -52,19 +26,6 @@ void expect_cleared_by_set_speed(BoardHost& host, std::uint16_t flag) {
   EXPECT_GT(host.board().duty(), 0.0);
 }
 
-// The disc turning at `speed` for 0.3 s, then `fault` done to it and 0.7 s run: the instant it was done.
-template <typename F>
-double run_into(BoardHost& host, double speed, F fault) {
-  host.require_out(Request::kSetStreaming, 1);
-  host.set_speed_mm_s(static_cast<float>(speed));
-  host.run_us(300'000.0);
-  host.clear_records();
-  const double at = host.sim_us();
-  fault();
-  host.run_us(700'000.0);
-  return at;
-}
-
 class BoardFaults : public ::testing::TestWithParam<double> {};
 
 // Jammed while turning: the stall (full drive, no motion, 0.5 s) or the over-current (above 2 A for
@@ -73,9 +34,10 @@ class BoardFaults : public ::testing::TestWithParam<double> {};
 TEST_P(BoardFaults, AJammedDiscIsAMotorFault) {
   const double speed = GetParam();
   BoardHost host;
-  const double jammed = run_into(host, speed, [&] { host.board().jam(true); });
+  const double jammed = run_into_fault(host, speed, [&] { host.board().jam(true); });
   const DeviceStatus s = host.status();
   EXPECT_EQ(s.fault, Fault::kMotor);
+  EXPECT_EQ(s.cause, FaultCause::kStall);
   EXPECT_EQ(s.mode, Mode::kIdle);
   const auto flagged = first_flagged(host, kMotorFault, jammed);
   ASSERT_TRUE(flagged.has_value());
@@ -91,9 +53,10 @@ TEST_P(BoardFaults, AJammedDiscIsAMotorFault) {
 TEST_P(BoardFaults, APulledEncoderIsAnEncoderFault) {
   const double speed = GetParam();
   BoardHost host;
-  const double pulled = run_into(host, speed, [&] { host.board().disconnect_encoder(true); });
+  const double pulled = run_into_fault(host, speed, [&] { host.board().disconnect_encoder(true); });
   const DeviceStatus s = host.status();
   EXPECT_EQ(s.fault, Fault::kEncoder);
+  EXPECT_EQ(s.cause, FaultCause::kEncoderSilent);
   EXPECT_EQ(s.mode, Mode::kIdle);
   const auto flagged = first_flagged(host, kEncoderFault, pulled);
   ASSERT_TRUE(flagged.has_value());
@@ -135,6 +98,7 @@ TEST(BoardOverCurrent, ABriefSurgeIsRiddenOutAndALongOneIsAMotorFault) {
   host.run_us(300'000.0);
   const DeviceStatus s = host.status();
   EXPECT_EQ(s.fault, Fault::kMotor);
+  EXPECT_EQ(s.cause, FaultCause::kOverCurrent);
   EXPECT_EQ(s.mode, Mode::kIdle);
   const auto flagged = first_flagged(host, kMotorFault, surged);
   ASSERT_TRUE(flagged.has_value());
@@ -147,8 +111,9 @@ TEST(BoardOverCurrent, ABriefSurgeIsRiddenOutAndALongOneIsAMotorFault) {
   expect_stopped_since(host, kMotorFault, *flagged);
 }
 
-TEST(BoardWatchdog, ASilentHostStopsTheMotorAfterHalfASecond) {
+TEST(BoardWatchdog, ASilentHostStopsTheMotorAfterTheTimeoutItAnnounces) {
   BoardHost host;
+  const double timeout_us = 1e3 * decode_identity(host.require_in(Request::kIdentify, kIdentityBytes)).watchdog_timeout_ms;
   host.set_keepalive_ms(0.0);  // the host goes silent after SET_SPEED
   host.require_out(Request::kSetStreaming, 1);
   host.set_speed_mm_s(100.0f);
@@ -158,14 +123,15 @@ TEST(BoardWatchdog, ASilentHostStopsTheMotorAfterHalfASecond) {
   ASSERT_TRUE(flagged.has_value());
   std::printf("watchdog: stopped %.2f ms after the last request\n", (*flagged - last_request) * 1e-3);
   RecordProperty("watchdog_ms", std::to_string((*flagged - last_request) * 1e-3));
-  // 500 ms (RIG_WATCHDOG_MS), checked every millisecond tick: 2 ms late at most. A frame takes its
-  // flags when the loop makes it, just after its sample, so the first flagged one may have been
-  // sampled up to a frame period before the fault.
-  EXPECT_GE(*flagged - last_request, 499'000.0);
-  EXPECT_LT(*flagged - last_request, 502'000.0);
+  // The timeout IDENTIFY announces (RIG_WATCHDOG_MS), checked every millisecond tick: 2 ms late at
+  // most. A frame takes its flags when the loop makes it, just after its sample, so the first flagged
+  // one may have been sampled up to a frame period before the fault.
+  EXPECT_GE(*flagged - last_request, timeout_us - 1000.0);
+  EXPECT_LT(*flagged - last_request, timeout_us + 2000.0);
   expect_stopped_since(host, kWatchdogStopped, *flagged);
   const DeviceStatus s = host.status();
   EXPECT_EQ(s.fault, Fault::kWatchdog);
+  EXPECT_EQ(s.cause, FaultCause::kHostSilent);
   EXPECT_EQ(s.mode, Mode::kIdle);
   host.set_keepalive_ms(100.0);
   expect_cleared_by_set_speed(host, kWatchdogStopped);

@@ -34,6 +34,13 @@ BoardHost::BoardHost(const std::vector<std::uint8_t>& eeprom, TurntablePhysics p
   next_true_speed_us_ = board_.sim_us();
 }
 
+void BoardHost::enumerate_again() {
+  keepalive_in_flight_ = false;
+  packet_.clear();
+  board_.enumerate(5);
+  last_request_us_ = board_.sim_us();
+}
+
 void BoardHost::slice() {
   board_.run_us(kBoardHostSliceUs);
   // A bulk transfer always waits: every USB packet the firmware offers is taken at once.
@@ -45,7 +52,8 @@ void BoardHost::slice() {
     }
   }
   if (board_.sim_us() >= next_true_speed_us_) {
-    true_speeds_.push_back({board_.sim_us(), board_.surface_speed_m_s() * 1e3, board_.duty()});
+    true_speeds_.push_back(
+        {board_.sim_us(), board_.surface_speed_m_s() * 1e3, board_.duty(), board_.sensed_current_A()});
     next_true_speed_us_ += 1000.0;
   }
 }
@@ -65,7 +73,7 @@ void BoardHost::run_us(double us) {
     if (keepalive_in_flight_) {
       if (board_.step_control()) keepalive_in_flight_ = false;
     } else if (keepalive_us_ > 0.0 && board_.sim_us() - last_request_us_ >= keepalive_us_) {
-      board_.begin_control(board_host_setup(true, Request::kGetStatus, 0, 0, kStatusBytes), {}, kStatusBytes);
+      board_.begin_control(board_host_setup(true, Request::kGetStatus, 0, 0, kStatusBytes12), {}, kStatusBytes12);
       keepalive_in_flight_ = true;
       last_request_us_ = board_.sim_us();
     }
@@ -111,7 +119,7 @@ std::vector<std::uint8_t> BoardHost::require_in(Request request, std::uint16_t l
   return o.in;
 }
 
-DeviceStatus BoardHost::status() { return decode_status(require_in(Request::kGetStatus, kStatusBytes)); }
+DeviceStatus BoardHost::status() { return decode_status(require_in(Request::kGetStatus, kStatusBytes12)); }
 
 void BoardHost::set_speed_mm_s(float mm_s) {
   const auto bytes = encode_speed(mm_s * 1e-3);

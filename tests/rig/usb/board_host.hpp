@@ -26,6 +26,7 @@ struct TrueSpeed {
   double sim_us = 0.0;
   double surface_mm_s = 0.0;
   double duty = 0.0;
+  double sensed_A = 0.0;  // what the driver's current mirror carries
 };
 
 class BoardHost {
@@ -34,6 +35,8 @@ class BoardHost {
   explicit BoardHost(const std::vector<std::uint8_t>& eeprom = {}, TurntablePhysics physics = {});
 
   SimulatedBoard& board() { return board_; }
+  // A new host on the bus (after a reset of the chip, or the old host gone): reset, enumerate.
+  void enumerate_again();
 
   // One vendor request, carried while the chip runs and the stream is read.
   ControlOutcome out(Request request, std::uint16_t value = 0, std::uint16_t index = 0,

@@ -56,6 +56,7 @@ TEST(BoardPersist, CalibrationGeometrySerialAndZeroSurviveAPowerCycle) {
     host.require_out(Request::kSetSerial, 0, 0, {serial.begin(), serial.end()});
     // The arm resting on the cell with 0.7 N is the new zero.
     host.board().set_normal_force(0.7);
+    host.run_us(5'000.0);  // the arm settles: the first frame zeroed averages the period before the request
     host.require_out(Request::kSetStreaming, 1);
     host.require_out(Request::kZeroForce);
     host.run_us(150'000.0);  // its 100 ms of frames

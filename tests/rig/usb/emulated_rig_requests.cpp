@@ -57,7 +57,9 @@ EmulatedRig::Reply EmulatedRig::control(const std::uint8_t* setup, const std::ui
                            static_cast<std::uint16_t>(profile_ ? profile_->points().size() : 0),
                            refused_request_, refusal_};
       const auto bytes = encode_status(s);
-      return {false, false, {bytes.begin(), bytes.end()}};
+      // A device before 1.2 sends the 16 bytes of its version.
+      const std::size_t sent = config_.protocol_version >= kFaultCauseVersion ? kStatusBytes12 : kStatusBytes;
+      return {false, false, {bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(sent)}};
     }
     case Request::kSetStreaming:
       if (!out_length(0)) return refuse(request, Refusal::kLength);

@@ -27,6 +27,15 @@ constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0
 constexpr double kAvccMillivolts = 5000.0;
 constexpr std::uint8_t kTimer3CompareAVector = 32;  // TIMER3_COMPA_vect_num, the frame interrupt
 
+
+// Friction opposes motion and never reverses it; a body at rest stays there while the torque on it
+// is within the friction.
+double sim_board_spin(double omega, double torque, double friction, double inertia, double dt_s) {
+  if (omega == 0.0 && std::abs(torque) <= friction) return 0.0;
+  const double after = omega + (torque - std::copysign(friction, omega != 0.0 ? omega : torque)) / inertia * dt_s;
+  return omega != 0.0 && std::signbit(omega) != std::signbit(after) ? 0.0 : after;
+}
+
 }  // namespace
 
 SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::uint8_t>& eeprom,
@@ -63,16 +72,9 @@ SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::ui
   if (clock_overflows_address_ == 0 || next_frame_address_ == 0 || frame_period_address_ == 0) {
     throw std::runtime_error(elf + " is not the rig controller's firmware (no device clock symbols)");
   }
-  // The encoder's INT0/INT1 run on any edge. simavr keeps raising a low-level interrupt for as long
-  // as a pin stays low once it saw the pin fall in that mode (the reset state, before the firmware
-  // chose its edges); the encoder's pins rest low, so that would never stop.
   adc_irq_ = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, 0);
-  avr_extint_set_strict_lvl_trig(avr_, 0, 0);
-  avr_extint_set_strict_lvl_trig(avr_, 1, 0);
-  // The driver is awake and well (nFAULT high); the encoder's pins start low (its first state).
-  set_pin('D', 4, true);
-  step_physics(0.0);
-  avr_cycle_timer_register(avr_, kPhysicsCycles, &SimulatedBoard::on_physics, this);
+  avr_irq_register_notify(avr_io_getirq(avr_, AVR_IOCTL_IOPORT_GETIRQ('B'), 6), &SimulatedBoard::on_sleep_pin, this);
+  connect_world();
 }
 
 SimulatedBoard::~SimulatedBoard() {
@@ -166,47 +168,37 @@ avr_cycle_count_t SimulatedBoard::on_physics(avr_t*, avr_cycle_count_t when, voi
 void SimulatedBoard::step_physics(double dt_s) {
   const TurntablePhysics& p = physics_;
   // The H-bridge in PH/EN mode: EN (OC1A) high drives, low brakes (both low sides on); asleep, it
-  // lets the motor coast.
-  const bool awake = avr_->data[kPortb] & (1 << 6);
+  // lets the motor coast, and so it does without its supply or latched off by a fault.
+  const bool powered = supply_on_ && !ocp_latched_;
+  const bool awake = (avr_->data[kPortb] & (1 << 6)) && powered;
   const bool pwm_on = avr_->data[kTccr1a] & (1 << 7);
   const std::uint16_t top = reg16(kIcr1);
   duty_ = pwm_on && top > 0 ? std::min(1.0, static_cast<double>(reg16(kOcr1a)) / top) : 0.0;
-  const double direction = (avr_->data[kPortb] & (1 << 4)) ? -1.0 : 1.0;
+  const double direction = ((avr_->data[kPortb] & (1 << 4)) ? -1.0 : 1.0) * (p.motor_leads_reversed ? -1.0 : 1.0);
   const double volts = direction * duty_ * p.supply_V;
-  current_A_ = awake ? (volts - p.volts_per_rad_s * omega_) / p.winding_ohm : 0.0;
-  const double drive = p.torque_per_A * current_A_;
-  const double load = p.friction_Nm + mu_ * normal_N_ * p.track_radius_m;
-  if (jammed_) {
-    omega_ = 0.0;
-  } else if (omega_ == 0.0 && std::abs(drive) <= load) {
-    // Held by static friction.
-  } else {
-    const double before = omega_;
-    omega_ += (drive - std::copysign(load, omega_ != 0.0 ? omega_ : drive)) / p.inertia_kg_m2 * dt_s;
-    if (before != 0.0 && std::signbit(before) != std::signbit(omega_)) omega_ = 0.0;  // friction stops, never reverses
+  double motor_A = awake ? (volts - p.volts_per_rad_s * omega_) / p.winding_ohm : 0.0;
+  if (awake && leads_shorted_ && duty_ > 0.0) {
+    // A short's current passes the protection's threshold within microseconds: latched off.
+    ocp_latched_ = true;
+    motor_A = 0.0;
   }
-  theta_ += omega_ * dt_s;
-
-  // The encoder: A leads B going forward (00, 10, 11, 01).
-  // Edge k sits at k counts plus its channel's error: A rises at 0 and falls at 2 (its duty), B at
-  // 1 and 3 (its phase). The count is the last edge passed.
-  const double position = theta_ / (2.0 * M_PI) * p.counts_per_rev;
-  const double edge_error[4] = {0.0, p.encoder_phase_error, p.encoder_duty_error, p.encoder_phase_error};
-  auto count = static_cast<long long>(std::floor(position)) + 1;
-  while (static_cast<double>(count) + edge_error[((count % 4) + 4) % 4] > position) --count;
-  while (!encoder_disconnected_ && encoder_count_ != count) {
-    encoder_count_ += count > encoder_count_ ? 1 : -1;
-    static constexpr bool kA[4] = {false, true, true, false};
-    static constexpr bool kB[4] = {false, false, true, true};
-    const int phase = static_cast<int>(((encoder_count_ % 4) + 4) % 4);
-    if (encoder_pins_[0] != kA[phase]) set_pin('D', 0, encoder_pins_[0] = kA[phase]);
-    if (encoder_pins_[1] != kB[phase]) set_pin('D', 1, encoder_pins_[1] = kB[phase]);
+  // The current mirror carries the motor's current and whatever else the bridge feeds; above ITRIP
+  // the driver chops the drive until it reads ITRIP.
+  double sensed = powered ? std::abs(motor_A) + extra_current_A_ : 0.0;
+  if (awake && sensed > p.itrip_A && motor_A > 0.0) {
+    motor_A = std::min(motor_A, std::max(0.0, p.itrip_A - extra_current_A_));
+    sensed = p.itrip_A;
   }
+  current_A_ = motor_A;
+  sensed_A_ = sensed;
+  set_pin('D', 4, !ocp_latched_);  // nFAULT: low while the driver holds a fault
+  step_turntable(p.torque_per_A * current_A_, dt_s);
+  step_encoder();
 
   // The analog side: motor current, then the two bridges through their amplifiers.
   avr_irq_t* const adc = adc_irq_;
   auto millivolts = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 5.0) * 1000.0 + 0.5); };
-  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts((std::abs(current_A_) + extra_current_A_) * p.current_V_per_A));
+  avr_raise_irq(adc + ADC_IRQ_ADC4, millivolts(sensed_A_ * p.current_V_per_A));
   double normal = normal_N_;
   if (pulse_ && avr_->data[kTccr3b] != 0) {
     // The frame ending at pulse_->first averages the period before it.
@@ -217,9 +209,93 @@ void SimulatedBoard::step_physics(double dt_s) {
     if (now > start && now <= pulse_->first) normal += pulse_->second;
     if (now > pulse_->first) pulse_.reset();
   }
-  const double tangential = (omega_ != 0.0 ? std::copysign(mu_ * normal_N_, omega_) : 0.0) + pull_N_;
+  const double disc = disc_omega();
+  const double tangential = (disc != 0.0 ? std::copysign(mu_ * normal_N_, disc) : 0.0) + pull_N_;
   avr_raise_irq(adc + ADC_IRQ_ADC7, millivolts(p.amplifier_zero_V + normal * p.amplifier_V_per_N));
   avr_raise_irq(adc + ADC_IRQ_ADC6, millivolts(p.amplifier_zero_V + tangential * p.amplifier_V_per_N));
+}
+
+// The gearbox's friction acts on the motor's side, the tip's on the disc. A hub that holds makes
+// them one body; a loose one carries at most its slip torque, and the disc (a ninth of the inertia:
+// the rotor through the gearbox dominates) then runs on its own.
+void SimulatedBoard::step_turntable(double drive_Nm, double dt_s) {
+  const TurntablePhysics& p = physics_;
+  const double contact = mu_ * normal_N_ * p.track_radius_m;
+  if (jammed_) {
+    omega_ = disc_omega_ = 0.0;
+  } else if (hub_slip_Nm_ < 0.0) {
+    omega_ = sim_board_spin(omega_, drive_Nm, p.friction_Nm + contact, p.inertia_kg_m2, dt_s);
+    disc_omega_ = omega_;
+  } else {
+    const double disc_inertia = p.inertia_kg_m2 / 9.0, motor_inertia = p.inertia_kg_m2 - disc_inertia;
+    double hub = 0.0;
+    if (omega_ != disc_omega_) {
+      hub = std::copysign(hub_slip_Nm_, omega_ - disc_omega_);
+    } else {
+      // Turning together: the torque the hub must pass for the disc to keep up with the motor.
+      const double together = sim_board_spin(omega_, drive_Nm, p.friction_Nm + contact, p.inertia_kg_m2, dt_s);
+      const double needed = disc_inertia * (together - disc_omega_) / dt_s + std::copysign(contact, together);
+      hub = std::abs(needed) <= hub_slip_Nm_ ? needed : std::copysign(hub_slip_Nm_, needed);
+    }
+    const double motor_before = omega_;
+    omega_ = sim_board_spin(omega_, drive_Nm - hub, p.friction_Nm, motor_inertia, dt_s);
+    disc_omega_ = sim_board_spin(disc_omega_, hub, contact, disc_inertia, dt_s);
+    // The faster one cannot overtake the other through the hub's friction within a step.
+    if ((motor_before - disc_omega_) * (omega_ - disc_omega_) < 0.0) disc_omega_ = omega_;
+  }
+  theta_ += omega_ * dt_s;
+}
+
+// The encoder on the motor's shaft: A leads B going forward (00, 10, 11, 01). Edge k sits at k
+// counts plus its channel's error: A rises at 0 and falls at 2 (its duty), B at 1 and 3 (its
+// phase). The count is the last edge passed. Wired with A and B swapped, the chip sees B lead A.
+void SimulatedBoard::step_encoder() {
+  const TurntablePhysics& p = physics_;
+  const double position = theta_ / (2.0 * M_PI) * p.counts_per_rev;
+  const double edge_error[4] = {0.0, p.encoder_phase_error, p.encoder_duty_error, p.encoder_phase_error};
+  auto count = static_cast<long long>(std::floor(position)) + 1;
+  while (static_cast<double>(count) + edge_error[((count % 4) + 4) % 4] > position) --count;
+  while (!encoder_disconnected_ && encoder_count_ != count) {
+    encoder_count_ += count > encoder_count_ ? 1 : -1;
+    static constexpr bool kA[4] = {false, true, true, false};
+    static constexpr bool kB[4] = {false, false, true, true};
+    const int phase = static_cast<int>(((encoder_count_ % 4) + 4) % 4);
+    const bool a = p.encoder_reversed ? kB[phase] : kA[phase];
+    const bool b = p.encoder_reversed ? kA[phase] : kB[phase];
+    if (lost_channel_ != 0 && encoder_pins_[0] != a) set_pin('D', 0, encoder_pins_[0] = a);
+    if (lost_channel_ != 1 && encoder_pins_[1] != b) set_pin('D', 1, encoder_pins_[1] = b);
+  }
+}
+
+void SimulatedBoard::set_hub_slip_torque(double newton_metres) {
+  hub_slip_Nm_ = newton_metres;
+  disc_omega_ = omega_;
+}
+
+void SimulatedBoard::on_sleep_pin(avr_irq_t*, std::uint32_t value, void* self) {
+  if (value == 0) static_cast<SimulatedBoard*>(self)->ocp_latched_ = false;  // nSLEEP's pulse clears the latch
+}
+
+void SimulatedBoard::brown_out() {
+  avr_reset(avr_);  // clears the data space and simavr's cycle timers: the world's are set up again
+  // The brown-out detector's flag (MCUSR bit 2), as the chip leaves reset with it set.
+  avr_->data[0x54] |= 1u << 2;
+  clock_start_cycle_.reset();
+  connect_world();
+}
+
+void SimulatedBoard::connect_world() {
+  // The encoder's INT0/INT1 run on any edge. simavr keeps raising a low-level interrupt for as long
+  // as a pin stays low once it saw the pin fall in that mode (the reset state, before the firmware
+  // chose its edges); the encoder's pins rest low, so that would never stop.
+  avr_extint_set_strict_lvl_trig(avr_, 0, 0);
+  avr_extint_set_strict_lvl_trig(avr_, 1, 0);
+  // The driver is awake and well (nFAULT high) unless latched; the encoder's pins where they are.
+  set_pin('D', 4, !ocp_latched_);
+  set_pin('D', 0, encoder_pins_[0]);
+  set_pin('D', 1, encoder_pins_[1]);
+  step_physics(0.0);
+  avr_cycle_timer_register(avr_, kPhysicsCycles, &SimulatedBoard::on_physics, this);
 }
 
 std::vector<std::uint8_t> SimulatedBoard::read_symbol(const std::string& name, std::size_t size) const {

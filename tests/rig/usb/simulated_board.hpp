@@ -33,6 +33,14 @@ struct TurntablePhysics {
   double encoder_phase_error = 0.0;
   double encoder_duty_error = 0.0;
   double current_V_per_A = 1.65;   // DRV8876 IPROPI, 1100 uA/A into 1.5 kOhm
+  // The driver's current regulation: above ITRIP = VREF / (1100 uA/A x 1.5 kOhm) it chops the drive
+  // (3.3 V: 2.0 A); a short beyond its over-current protection latches it off, nFAULT low, until a
+  // pulse on nSLEEP.
+  double itrip_A = 2.0;
+  double ocp_A = 5.0;
+  // Builders' wiring: encoder A and B swapped against the motor's leads, or the leads swapped.
+  bool encoder_reversed = false;
+  bool motor_leads_reversed = false;
   double amplifier_V_per_N = 0.255;
   double amplifier_zero_V = 2.5;  // the amplifier's reference (HARDWARE.md)
 };
@@ -87,12 +95,27 @@ class SimulatedBoard {
   // pins stay where they were).
   void jam(bool held) { jammed_ = held; }
   void disconnect_encoder(bool disconnected) { encoder_disconnected_ = disconnected; }
+  // One encoder channel's wire off (0: A, 1: B): its pin stays where it was; -1 puts it back.
+  void lose_encoder_channel(int channel) { lost_channel_ = channel; }
+  // The motor's 12 V cut (the emergency stop pressed, the fuse blown): the bridge has no supply,
+  // its current mirror reads nothing and the motor coasts.
+  void set_motor_supply(bool on) { supply_on_ = on; }
+  // The disc's hub loose on its shaft: it carries at most this torque (N m) between the motor and
+  // the disc; below 0 it holds whatever the torque.
+  void set_hub_slip_torque(double newton_metres);
+  // The motor's leads shorted together: the driver's over-current protection trips and latches.
+  void short_motor_leads(bool shorted) { leads_shorted_ = shorted; }
+  bool driver_latched() const { return ocp_latched_; }
+  // The chip reset by a brown-out of its own supply (its brown-out detector's flag set), as it comes
+  // back: the firmware starts again from reset, and the host must enumerate it anew.
+  void brown_out();
   // Current the motor's sense resistor carries beyond the motor's own (a winding shorting, a
   // binding gearbox), until set back to 0.
   void add_motor_current(double amps) { extra_current_A_ = amps; }
-  double surface_speed_m_s() const { return omega_ * physics_.track_radius_m; }
+  double surface_speed_m_s() const { return disc_omega() * physics_.track_radius_m; }
   double duty() const { return duty_; }
   double motor_current_A() const { return current_A_; }
+  double sensed_current_A() const { return sensed_A_; }
   const TurntablePhysics& physics() const { return physics_; }
 
   // USB, as the host controller: reset and enumerate (returns the device and configuration
@@ -101,6 +124,9 @@ class SimulatedBoard {
   void begin_control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out,
                      std::size_t in_capacity);
   bool control_busy() const { return stage_ != Stage::kIdle; }
+  // The stage the transfer in progress waits in: the host's next transaction.
+  enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };
+  Stage control_stage() const { return stage_; }
   std::optional<ControlOutcome> step_control();
   ControlOutcome control(const std::array<std::uint8_t, 8>& setup, const std::vector<std::uint8_t>& out = {},
                          std::size_t in_capacity = 0);
@@ -114,10 +140,14 @@ class SimulatedBoard {
   std::uint8_t data(std::uint16_t address) const { return avr_->data[address]; }
 
  private:
-  enum class Stage { kIdle, kDataIn, kDataOut, kStatusIn, kStatusOut };
   static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
   static void on_frame_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
   void step_physics(double dt_s);
+  void connect_world();  // the world's pins, interrupts' modes and the physics' timer, after a reset
+  void step_turntable(double drive_Nm, double dt_s);
+  void step_encoder();
+  double disc_omega() const { return hub_slip_Nm_ < 0.0 ? omega_ : disc_omega_; }
+  static void on_sleep_pin(avr_irq_t* irq, std::uint32_t value, void* self);
   void set_pin(char port, int pin, bool high);
   std::uint16_t reg16(std::uint16_t low_address) const;
   std::uint8_t read_io(std::uint16_t address) const;
@@ -140,7 +170,11 @@ class SimulatedBoard {
   long long encoder_count_ = 0;
   std::array<bool, 2> encoder_pins_{};
   bool jammed_ = false, encoder_disconnected_ = false;
+  int lost_channel_ = -1;
+  bool supply_on_ = true, leads_shorted_ = false, ocp_latched_ = false;
+  double hub_slip_Nm_ = -1.0, disc_omega_ = 0.0;
   double extra_current_A_ = 0.0;
+  double sensed_A_ = 0.0;  // what the driver's current mirror reads
   bool recording_interrupts_ = false;
   std::vector<FrameInterrupt> frame_interrupts_;
   mutable std::optional<std::uint64_t> clock_start_cycle_;

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -73,10 +75,35 @@ TEST(UsbProtocol, StatusMatchesTheDocumentedLayout) {
   EXPECT_EQ(s.profile_points, 12);
   EXPECT_EQ(s.refused_request, 0x10);
   EXPECT_EQ(s.refusal, 3);
-  EXPECT_EQ(encode_status(s), bytes);
+  // A 1.1 reply leaves 1.2's fields at their "nothing to say".
+  EXPECT_EQ(s.cause, FaultCause::kNone);
+  EXPECT_EQ(s.reset_cause, ResetCause::kPowerOn);
+  EXPECT_EQ(s.health, 0);
+  const auto encoded = encode_status(s);
+  EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), encoded.begin()));
   EXPECT_EQ(request_name(s.refused_request), "SET_SPEED (0x10)");
   EXPECT_EQ(refusal_text(s.refusal), "a value out of the device's range");
 }
+
+TEST(UsbProtocol, StatusOfVersion12SaysWhyWhatRestartedAndTheHealth) {
+  // fault 2 (encoder), cause 9 (reversed), reset 2 (brown-out), health 1 (factory defaults).
+  std::array<std::uint8_t, 20> bytes{};
+  bytes[3] = 2;
+  bytes[16] = 9;
+  bytes[17] = 2;
+  bytes[18] = 1;
+  const DeviceStatus s = decode_status(bytes);
+  EXPECT_EQ(s.fault, Fault::kEncoder);
+  EXPECT_EQ(s.cause, FaultCause::kEncoderReversed);
+  EXPECT_EQ(s.reset_cause, ResetCause::kBrownOut);
+  EXPECT_EQ(s.health, kHealthFactoryDefaults);
+  EXPECT_EQ(encode_status(s), bytes);
+  EXPECT_NE(fault_cause_text(2, 9).find("swap encoder A and B"), std::string::npos);
+  EXPECT_EQ(fault_cause_text(1, 0), fault_text(1));  // a 1.1 device: the fault alone
+  EXPECT_EQ(fault_cause_text(1, 200), fault_text(1) + " (cause code 200)");
+  EXPECT_EQ(reset_cause_text(2), "a brown-out (its supply dipped)");
+}
+
 
 TEST(UsbProtocol, CalibrationAndSpeedAreLittleEndianFloats) {
   // 1000.0 (0x447A0000), 250.0 (0x437A0000), 2.5 (0x40200000)

@@ -35,13 +35,15 @@ struct Design<EmulatedRig> {
   static constexpr std::uint16_t kProtocol = kProtocolVersion;
   static constexpr const char* kRates = "500 to 4000 Hz";
   static constexpr bool kBuffersSeconds = true;  // holds 8 s of frames while the host does not read
+  static constexpr unsigned kWatchdogMs = 500;
 };
 #ifdef NIBRIG_FIRMWARE_ELF
 template <>
 struct Design<testing::FirmwareRig> {
-  static constexpr std::uint16_t kProtocol = 0x0101;  // RIG_PROTOCOL_VERSION
+  static constexpr std::uint16_t kProtocol = 0x0102;  // RIG_PROTOCOL_VERSION
   static constexpr const char* kRates = "1000 to 3000 Hz";
   static constexpr bool kBuffersSeconds = false;  // the ATmega32U4's RAM holds 16 frames
+  static constexpr unsigned kWatchdogMs = 400;    // RIG_WATCHDOG_MS: stopped, braked, within 600 ms
 };
 #endif
 
@@ -104,7 +106,7 @@ TYPED_TEST(UsbRigControllerOn, IdentifiesTheDevice) {
   EXPECT_EQ(id.protocol_version, Design<TypeParam>::kProtocol);
   EXPECT_NEAR(id.max_speed_m_s, 0.3, 1e-6);  // f32 of 300 mm/s
   EXPECT_EQ(id.frame_rate_hz, 1000u);
-  EXPECT_EQ(id.watchdog_timeout_ms, 500u);
+  EXPECT_EQ(id.watchdog_timeout_ms, Design<TypeParam>::kWatchdogMs);
   EXPECT_TRUE(rig.status().connected);
 }
 
@@ -147,7 +149,7 @@ TEST(UsbRigController, ListsEveryControllerWithSerialBusAndVersion) {
   EXPECT_EQ(found[0].problem, "");
   EXPECT_EQ(found[1].serial, "NIB-B");
   EXPECT_EQ(found[1].address, 3);
-  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.1, firmware emulated-1.1)");
+  EXPECT_EQ(describe(found[1]), "NIB-B (bus 1, address 3, protocol 1.2, firmware emulated-1.2)");
 }
 
 TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
@@ -161,7 +163,7 @@ TEST(UsbRigController, AMissingDeviceSaysWhatIsThere) {
   const std::string message = error_of([] { UsbRigController rig({.serial = "NIB-X"}); });
   EXPECT_EQ(message,
             "no nibrig rig controller (USB 1209:000a) with serial NIB-X; found: NIB-A (bus 1, "
-            "address 2, protocol 1.1, firmware emulated-1.1)");
+            "address 2, protocol 1.2, firmware emulated-1.2)");
 }
 
 TYPED_TEST(UsbRigControllerOn, OpensTheOneWithTheSerialAskedFor) {
@@ -231,10 +233,11 @@ TYPED_TEST(UsbRigControllerOn, CalibrationFrameRateAndZeroReachTheDevice) {
   Testbed testbed;
   TypeParam device(testbed.get(), EmulatedRigConfig{});
   UsbRigController rig;
-  rig.set_calibration({2048.0, 1024.0, 1.5});
+  // Another cell and lever, within what the firmware's 10-bit converter makes sense of (PROTOCOL.md).
+  rig.set_calibration({64.0, 48.0, 1.5});
   const ForceCalibration c = rig.calibration();
-  EXPECT_EQ(c.normal_counts_per_N, 2048.0);  // exact in f32
-  EXPECT_EQ(c.tangential_counts_per_N, 1024.0);
+  EXPECT_EQ(c.normal_counts_per_N, 64.0);  // exact in f32
+  EXPECT_EQ(c.tangential_counts_per_N, 48.0);
   EXPECT_EQ(c.lever_factor, 1.5);
   EXPECT_EQ(device.calibration().lever_factor, 1.5);
 

@@ -52,7 +52,7 @@ TEST(UsbRigVersion11, GeometryIsWrittenAndReadBack) {
   Testbed testbed;
   EmulatedRig device(testbed.get(), EmulatedRigConfig{});
   UsbRigController rig;
-  EXPECT_EQ(rig.identify().protocol_version, 0x0101);
+  EXPECT_EQ(rig.identify().protocol_version, kProtocolVersion);
   const Geometry fresh = rig.geometry();
   EXPECT_EQ(fresh.counts_per_revolution, 4480.0);
   rig.set_geometry({1920.0, 0.075});
@@ -77,7 +77,7 @@ TEST(UsbRigVersion11, ANewSerialIsWhatTheDeviceReportsAndListsFromThenOn) {
   }
   const auto found = list_rig_controllers();
   ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(describe(found[0]), "LAB-7 (bus 1, address 2, protocol 1.1, firmware emulated-1.1)");
+  EXPECT_EQ(describe(found[0]), "LAB-7 (bus 1, address 2, protocol 1.2, firmware emulated-1.2)");
 }
 
 TEST(UsbRigVersion11, TheBootloaderIsRefusedWhileTheMotorRuns) {

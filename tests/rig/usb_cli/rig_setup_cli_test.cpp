@@ -43,7 +43,7 @@ TEST(RigSetupCommands, CalibrateWritesTheDeviceAndReadsBackItsNewSerial) {
   // The identity read back after the rename. (`rig devices` prints the same through describe(),
   // tested in usb_rig_version_1_1_test.cpp; run here, its audio probe opens more device nodes than
   // umockdev's preload tracks, and it aborts.)
-  EXPECT_NE(out.find("rig controller LAB-3 (protocol 1.1, firmware emulated-1.1)"), std::string::npos) << out;
+  EXPECT_NE(out.find("rig controller LAB-3 (protocol 1.2, firmware emulated-1.2)"), std::string::npos) << out;
 }
 
 TEST(RigSetupCommands, FlashAfterAResetWritesTheHexAndFindsTheControllerBack) {
