@@ -3,6 +3,7 @@
 #include <avr/eeprom.h>
 #include <avr/interrupt.h>
 #include <avr/io.h>
+#include <avr/pgmspace.h>
 #include <avr/wdt.h>
 #include <util/atomic.h>
 #include <util/delay.h>
@@ -26,7 +27,7 @@ static volatile uint8_t sample_head, sample_tail;
 static volatile uint16_t samples_lost;
 
 /* The ADC visits normal, tangential, normal, tangential, current, and again. */
-static const uint8_t adc_sequence[5] = {7, 6, 7, 6, 4};
+static const uint8_t adc_sequence[5] PROGMEM = {7, 6, 7, 6, 4};
 static uint8_t adc_step;
 static volatile uint32_t force_sum[2];
 static volatile uint8_t force_conversions[2];
@@ -101,7 +102,7 @@ ISR(TIMER3_COMPB_vect) {
 
 ISR(ADC_vect) {
   const uint16_t value = ADC;
-  const uint8_t channel = adc_sequence[adc_step];
+  const uint8_t channel = pgm_read_byte(&adc_sequence[adc_step]);
   if (channel == 4) {
     current_sum += value;
     ++current_conversions;
@@ -112,7 +113,7 @@ ISR(ADC_vect) {
   }
   if (++adc_step == sizeof adc_sequence) adc_step = 0; /* no division in an interrupt */
   /* ADC4..7 sit below MUX5; AVCC reference. */
-  ADMUX = (uint8_t)((1 << REFS0) | adc_sequence[adc_step]);
+  ADMUX = (uint8_t)((1 << REFS0) | pgm_read_byte(&adc_sequence[adc_step]));
   ADCSRA |= (1 << ADSC);
 }
 
@@ -124,12 +125,12 @@ ISR(INT0_vect) {
   if (now == was) return;
   /* Forward runs 00 -> 10 -> 11 -> 01 -> 00 (A leads B); index = was * 4 + now. Both bits at
    * once is not a quadrature step: a glitch. */
-  static const int8_t step[16] = {0, -1, 1, 0, 1, 0, 0, -1, -1, 0, 0, 1, 0, 1, -1, 0};
+  static const int8_t step[16] PROGMEM = {0, -1, 1, 0, 1, 0, 0, -1, -1, 0, 0, 1, 0, 1, -1, 0};
   if ((now ^ was) == 3u) {
     ++encoder_glitches;
     return;
   }
-  const int8_t d = step[was * 4u + now];
+  const int8_t d = (int8_t)pgm_read_byte(&step[was * 4u + now]);
   encoder_count += d;
   ++encoder_edges[(now ^ was) == 2u ? 0 : 1]; /* A is the high bit */
   encoder_edge_us = (uint32_t)(ticks_now() / TICKS_PER_US);
@@ -164,7 +165,7 @@ void board_init(void) {
   /* ADC: AVCC reference, 125 kHz ADC clock (16 MHz / 128, within the 200 kHz its 10 bits need):
    * 104 us a conversion, about four of each force channel a frame at 1 kHz. */
   DIDR0 = (1 << ADC7D) | (1 << ADC6D) | (1 << ADC4D);
-  ADMUX = (uint8_t)((1 << REFS0) | adc_sequence[0]);
+  ADMUX = (uint8_t)((1 << REFS0) | pgm_read_byte(&adc_sequence[0]));
   ADCSRA = (1 << ADEN) | (1 << ADIE) | (1 << ADPS2) | (1 << ADPS1) | (1 << ADPS0) | (1 << ADSC);
 }
 
@@ -269,7 +270,7 @@ void board_persist_store_step(void) {
 
 /* A fresh board's serial: the timer's phase at the ADC's first conversions differs board to board. */
 void board_new_serial(char serial[RIG_SERIAL_BYTES]) {
-  static const char hex[] = "0123456789ABCDEF";
+  static const char hex[] PROGMEM = "0123456789ABCDEF";
   uint16_t seed = 0;
   for (uint8_t i = 0; i < 16; ++i) {
     seed = (uint16_t)((seed << 1) ^ TCNT3 ^ ADC ^ (seed >> 15));
@@ -277,7 +278,7 @@ void board_new_serial(char serial[RIG_SERIAL_BYTES]) {
   }
   memset(serial, 0, RIG_SERIAL_BYTES);
   memcpy(serial, "NIB-", 4);
-  for (uint8_t i = 0; i < 4; ++i) serial[4 + i] = hex[(seed >> (12 - 4 * i)) & 0xFu];
+  for (uint8_t i = 0; i < 4; ++i) serial[4 + i] = (char)pgm_read_byte(&hex[(seed >> (12 - 4 * i)) & 0xFu]);
 }
 
 void board_led(int on) {

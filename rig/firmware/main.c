@@ -2,6 +2,7 @@
  * board and the USB device. Interrupts only capture (frames, milliseconds, encoder edges, ADC
  * conversions); everything else runs here. */
 #include <avr/interrupt.h>
+#include <avr/pgmspace.h>
 
 #include "board.h"
 #include "frame_fifo.h"
@@ -40,22 +41,25 @@ static void make_frames(void) {
   struct board_sample s;
   while (board_take_sample(&s)) {
     struct rig_adc_means adc;
-    /* Reciprocals instead of divisions: the AVR divides floats in software. */
-    static const float per[9] = {0.0f, 1.0f, 1.0f / 2, 1.0f / 3, 1.0f / 4, 1.0f / 5, 1.0f / 6, 1.0f / 7, 1.0f / 8};
+    /* Reciprocals instead of divisions: the AVR divides floats in software. In flash: RAM is short. */
+    static const float per[9] PROGMEM = {0.0f, 1.0f, 1.0f / 2, 1.0f / 3, 1.0f / 4, 1.0f / 5, 1.0f / 6, 1.0f / 7, 1.0f / 8};
     for (uint8_t c = 0; c < 2; ++c) {
       /* No conversion this period (the highest rates): the channel holds its last mean. */
       static float last[2];
       const uint8_t n = s.conversions[c];
-      if (n > 0) last[c] = (float)s.force_sum[c] * (n < 9 ? per[n] : 1.0f / (float)n);
+      if (n > 0) last[c] = (float)s.force_sum[c] * (n < 9 ? pgm_read_float(&per[n]) : 1.0f / (float)n);
       adc.force_counts[c] = last[c];
     }
-    struct rig_frame scratch;
-    struct rig_frame *f = rig.streaming ? frame_fifo_slot(&fifo) : 0;
-    rig_sample(&rig, s.t_us, &adc, f ? f : &scratch);
-    if (f) frame_fifo_push(&fifo);
+    struct rig_frame f;
+    rig_sample(&rig, s.t_us, &adc, &f);
+    uint8_t *slot = rig.streaming ? frame_fifo_slot(&fifo) : 0;
+    if (slot) {
+      rig_frame_encode(&f, slot);
+      frame_fifo_push(&fifo);
+    }
     /* The endpoint takes 64 bytes at a time: between frames too, or at the highest rates the loop
      * cannot hand the USB controller the stream's bytes as fast as they are made. */
-    usb_stream_service();
+    usb_stream_service(&fifo);
   }
   if (rig.zero_taken) {
     rig.zero_taken = 0;
@@ -68,9 +72,10 @@ static void stream(void) {
     frame_fifo_clear(&fifo);
   } else if (usb_device_configured() && usb_stream_idle() && frame_fifo_count(&fifo) > 0 &&
              frame_fifo_ready(&fifo, board_clock_us(), STREAM_MAX_WAIT_US, frame_period_us)) {
-    usb_stream_start(frame_fifo_take_packet(&fifo, usb_stream_buffer()));
+    frame_fifo_begin_packet(&fifo);
+    usb_stream_start();
   }
-  usb_stream_service();
+  usb_stream_service(&fifo);
 }
 
 /* The guard's verdicts are PROTOCOL.md's fault causes. */
@@ -137,7 +142,10 @@ int main(void) {
   for (;;) {
     board_kick_watchdog();
     switch (usb_device_poll()) {
-      case USB_BUS_RESET: rig.streaming = 0; break; /* a new host asks for the stream itself */
+      case USB_BUS_RESET: /* a new host asks for the stream itself */
+        rig.streaming = 0;
+        frame_fifo_abandon_packet(&fifo);
+        break;
       case USB_BOOTLOADER_ASKED: bootloader_asked = 1; break;
       case USB_NOTHING: break;
     }

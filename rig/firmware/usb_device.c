@@ -27,8 +27,7 @@ static const char product[] PROGMEM = "nibrig rig controller";
 static usb_vendor_handler vendor;
 static const char *serial_number;
 static uint8_t configured;
-static uint8_t stream_packet[PACKET_MAX_BYTES];
-static uint16_t stream_length, stream_sent;
+static uint8_t streaming_packet; /* a packet is on its way */
 
 void usb_device_init(usb_vendor_handler handler, const char *serial) {
   vendor = handler;
@@ -56,7 +55,7 @@ static void configure_stream(void) {
   UECFG1X = (1 << EPSIZE1) | (1 << EPSIZE0) | (1 << EPBK0) | (1 << ALLOC); /* 64 bytes, two banks */
   UERST = (1 << STREAM_EP);
   UERST = 0;
-  stream_length = stream_sent = 0;
+  streaming_packet = 0;
   UENUM = 0;
 }
 
@@ -122,8 +121,8 @@ static void get_descriptor(uint16_t value, uint16_t requested) {
   } else if (type == 2) {
     ep0_send(configuration_descriptor, sizeof configuration_descriptor, requested, 1);
   } else if (type == 3 && index == 0) {
-    static const uint8_t languages[4] = {4, 3, 0x09, 0x04}; /* English (US) */
-    ep0_send(languages, sizeof languages, requested, 0);
+    static const uint8_t languages[4] PROGMEM = {4, 3, 0x09, 0x04}; /* English (US) */
+    ep0_send(languages, sizeof languages, requested, 1);
   } else if (type == 3 && index == 1) {
     send_string(manufacturer, 1, requested);
   } else if (type == 3 && index == 2) {
@@ -140,7 +139,7 @@ static void standard_request(const uint8_t *setup) {
   const uint16_t value = (uint16_t)(setup[2] | (setup[3] << 8));
   const uint16_t index = (uint16_t)(setup[4] | (setup[5] << 8));
   const uint16_t length = (uint16_t)(setup[6] | (setup[7] << 8));
-  static const uint8_t zeros[2] = {0, 0};
+  static const uint8_t zeros[2] PROGMEM = {0, 0};
   switch (request) {
     case 6: get_descriptor(value, length); return;
     case 5: /* SET_ADDRESS: the address takes effect after the status stage */
@@ -155,7 +154,7 @@ static void standard_request(const uint8_t *setup) {
       ep0_status_in();
       return;
     case 8: ep0_send(&configured, 1, length, 0); return;
-    case 0: ep0_send(zeros, 2, length, 0); return; /* GET_STATUS */
+    case 0: ep0_send(zeros, 2, length, 1); return; /* GET_STATUS */
     case 11: ep0_status_in(); return;                /* SET_INTERFACE: one setting */
     case 1:                                          /* CLEAR_FEATURE(ENDPOINT_HALT) */
       if ((setup[0] & 0x1F) == 2 && (index & 0x7F) == STREAM_EP) {
@@ -215,25 +214,27 @@ enum usb_event usb_device_poll(void) {
 
 int usb_device_configured(void) { return configured; }
 
-int usb_stream_idle(void) { return stream_sent >= stream_length; }
+int usb_stream_idle(void) { return !streaming_packet; }
 
-uint8_t *usb_stream_buffer(void) { return stream_packet; }
+void usb_stream_start(void) { streaming_packet = 1; }
 
-void usb_stream_start(uint16_t length) {
-  stream_length = length;
-  stream_sent = 0;
-}
-
-void usb_stream_service(void) {
-  if (!configured || stream_sent >= stream_length) return;
+void usb_stream_service(struct frame_fifo *fifo) {
+  if (!configured || !streaming_packet) return;
   UENUM = STREAM_EP;
   if (UEINTX & (1 << TXINI)) {
     UEINTX = (uint8_t) ~(1 << TXINI);
-    uint16_t n = stream_length - stream_sent;
-    if (n > 64u) n = 64u;
-    for (uint16_t i = 0; i < n; ++i) UEDATX = stream_packet[stream_sent + i];
-    stream_sent += n;
+    uint8_t room = 64u;
+    const uint8_t *bytes;
+    uint8_t n;
+    while (room > 0 && (n = frame_fifo_packet_span(fifo, &bytes)) > 0) {
+      if (n > room) n = room;
+      for (uint8_t i = 0; i < n; ++i) UEDATX = bytes[i];
+      frame_fifo_packet_advance(fifo, n);
+      room = (uint8_t)(room - n);
+    }
     UEINTX = (uint8_t) ~(1 << FIFOCON);
+    /* A USB packet shorter than 64 bytes ends the transfer: the packet is all sent. */
+    if (room > 0) streaming_packet = 0;
   }
   UENUM = 0;
 }

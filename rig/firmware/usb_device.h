@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "frame_fifo.h"
 #include "rig_device.h"
 
 /* What a vendor request does: answer it into `reply` (the rig's own call). `data` is the OUT data
@@ -17,12 +18,12 @@ enum usb_event { USB_NOTHING = 0, USB_BUS_RESET, USB_BOOTLOADER_ASKED };
 /* Bus reset and EP0's requests. */
 enum usb_event usb_device_poll(void);
 int usb_device_configured(void);
-/* The frame stream: whether the last packet is all sent; the buffer to build the next in, and
- * starting to send it. */
+/* The frame stream: whether the last packet is all sent; starting to send the packet `fifo` has
+ * begun (frame_fifo_begin_packet). */
 int usb_stream_idle(void);
-uint8_t *usb_stream_buffer(void);
-void usb_stream_start(uint16_t length);
-/* Moves the packet in progress on by one USB packet when the endpoint's bank is free. */
-void usb_stream_service(void);
+void usb_stream_start(void);
+/* Moves the packet in progress on by one USB packet when the endpoint's bank is free, read straight
+ * out of the ring. */
+void usb_stream_service(struct frame_fifo *fifo);
 
 #endif

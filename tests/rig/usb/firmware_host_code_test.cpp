@@ -13,6 +13,7 @@
 // and wIndex, out-of-range values and out-of-order profile requests.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -29,6 +30,36 @@ extern "C" {
 namespace nibrig::rig::usb {
 namespace {
 
+// A frame encoded into the producer's slot, as the firmware's loop does.
+bool fifo_push_frame(frame_fifo& q, std::uint64_t t_us, std::uint32_t sequence) {
+  std::uint8_t* slot = frame_fifo_slot(&q);
+  if (slot == nullptr) return false;
+  const rig_frame f{t_us, sequence, 1.0f, {0.0f, 0.0f}, 0};
+  rig_frame_encode(&f, slot);
+  frame_fifo_push(&q);
+  return true;
+}
+
+// A packet read out of the ring as the USB sender reads it: run by run, in USB packets of 64 bytes.
+std::vector<std::uint8_t> fifo_take_packet(frame_fifo& q) {
+  const std::uint16_t length = frame_fifo_begin_packet(&q);
+  std::vector<std::uint8_t> packet;
+  for (;;) {
+    std::uint8_t room = 64;
+    const std::uint8_t* bytes = nullptr;
+    std::uint8_t n = 0;
+    while (room > 0 && (n = frame_fifo_packet_span(&q, &bytes)) > 0) {
+      n = std::min(n, room);
+      packet.insert(packet.end(), bytes, bytes + n);
+      frame_fifo_packet_advance(&q, n);
+      room = static_cast<std::uint8_t>(room - n);
+    }
+    if (room > 0) break;  // a short USB packet ends the transfer
+  }
+  EXPECT_EQ(packet.size(), length);
+  return packet;
+}
+
 TEST(FirmwareFramePackets, NoPacketIsAMultipleOf64BytesNorLongerThanItsBuffer) {
   // Every starting position of the one-byte indices (they wrap at 256), every fill.
   for (unsigned start = 0; start < 256; ++start) {
@@ -36,21 +67,15 @@ TEST(FirmwareFramePackets, NoPacketIsAMultipleOf64BytesNorLongerThanItsBuffer) {
       frame_fifo q{};
       q.head = static_cast<std::uint8_t>(start);
       q.tail = static_cast<std::uint8_t>(start);
-      for (unsigned i = 0; i < fill; ++i) {
-        rig_frame* f = frame_fifo_slot(&q);
-        ASSERT_NE(f, nullptr);
-        *f = rig_frame{1000ull * i, i, 1.0f, {0.0f, 0.0f}, 0};
-        frame_fifo_push(&q);
-      }
+      for (unsigned i = 0; i < fill; ++i) ASSERT_TRUE(fifo_push_frame(q, 1000ull * i, i));
       std::uint32_t expected = 0;
       while (frame_fifo_count(&q) > 0) {
-        std::array<std::uint8_t, PACKET_MAX_BYTES + 64> out{};
-        const std::uint16_t length = frame_fifo_take_packet(&q, out.data());
-        ASSERT_LE(length, PACKET_MAX_BYTES) << "start " << start << " fill " << fill;
-        ASSERT_NE(length % 64, 0u) << "start " << start << " fill " << fill;
+        const std::vector<std::uint8_t> out = fifo_take_packet(q);
+        ASSERT_LE(out.size(), PACKET_MAX_BYTES) << "start " << start << " fill " << fill;
+        ASSERT_NE(out.size() % 64, 0u) << "start " << start << " fill " << fill;
         // The host's own decoder reads it, frames in order.
         std::array<SensorFrame, kMaxFramesPerPacket> decoded{};
-        const PacketDecode d = decode_frame_packet(std::span<const std::uint8_t>(out.data(), length), decoded);
+        const PacketDecode d = decode_frame_packet(out, decoded);
         ASSERT_EQ(d.error, nullptr) << d.error;
         ASSERT_GE(d.frames, 1u);
         ASSERT_LE(d.frames, PACKET_MAX_FRAMES);
@@ -63,12 +88,34 @@ TEST(FirmwareFramePackets, NoPacketIsAMultipleOf64BytesNorLongerThanItsBuffer) {
   for (unsigned n = 1; n <= PACKET_MAX_FRAMES; ++n) EXPECT_NE((4 + RIG_FRAME_BYTES * n) % 64, 0u) << n;
 }
 
+// The packet's frames stay in the ring while it is sent: frames made meanwhile, and a clear (the
+// stream switched off), leave its bytes as they were.
+TEST(FirmwareFramePackets, APacketOnItsWayKeepsItsFramesWhatComesAfter) {
+  frame_fifo q{};
+  for (unsigned i = 0; i < 3; ++i) fifo_push_frame(q, 1000 * i, i);
+  frame_fifo_begin_packet(&q);
+  const std::uint8_t* bytes = nullptr;
+  ASSERT_EQ(frame_fifo_packet_span(&q, &bytes), PACKET_HEADER_BYTES);
+  frame_fifo_packet_advance(&q, PACKET_HEADER_BYTES);
+  fifo_push_frame(q, 5000, 3);
+  frame_fifo_clear(&q);
+  EXPECT_EQ(frame_fifo_count(&q), 3u);  // the packet's three, not the one made after
+  std::vector<std::uint8_t> rest;
+  std::uint8_t n = 0;
+  while ((n = frame_fifo_packet_span(&q, &bytes)) > 0) {
+    rest.insert(rest.end(), bytes, bytes + n);
+    frame_fifo_packet_advance(&q, n);
+  }
+  ASSERT_EQ(rest.size(), 3 * RIG_FRAME_BYTES);
+  EXPECT_EQ(frame_fifo_count(&q), 0u);
+  std::uint32_t third = 0;
+  std::memcpy(&third, &rest[2 * RIG_FRAME_BYTES + 8], sizeof third);  // little-endian, as x86
+  EXPECT_EQ(third, 2u);
+}
+
 TEST(FirmwareFramePackets, AFullFifoDropsTheNewestAndCountsIt) {
   frame_fifo q{};
-  for (unsigned i = 0; i < FRAME_FIFO_SIZE; ++i) {
-    ASSERT_NE(frame_fifo_slot(&q), nullptr);
-    frame_fifo_push(&q);
-  }
+  for (unsigned i = 0; i < FRAME_FIFO_SIZE; ++i) ASSERT_TRUE(fifo_push_frame(q, i, i));
   EXPECT_EQ(frame_fifo_slot(&q), nullptr);
   EXPECT_EQ(q.dropped, 1u);
   EXPECT_EQ(frame_fifo_count(&q), FRAME_FIFO_SIZE);
@@ -77,14 +124,10 @@ TEST(FirmwareFramePackets, AFullFifoDropsTheNewestAndCountsIt) {
 TEST(FirmwareFramePackets, APacketWaitsForEightFramesOrItsOldestsDeadline) {
   frame_fifo q{};
   EXPECT_FALSE(frame_fifo_ready(&q, 0, 4000, 1000));
-  frame_fifo_slot(&q)->t_us = 10'000;
-  frame_fifo_push(&q);
+  fifo_push_frame(q, 10'000, 0);
   EXPECT_FALSE(frame_fifo_ready(&q, 13'999, 4000, 1000));
   EXPECT_TRUE(frame_fifo_ready(&q, 14'000, 4000, 1000));
-  for (unsigned i = 1; i < PACKET_MAX_FRAMES; ++i) {
-    frame_fifo_slot(&q)->t_us = 10'000 + i;
-    frame_fifo_push(&q);
-  }
+  for (unsigned i = 1; i < PACKET_MAX_FRAMES; ++i) fifo_push_frame(q, 10'000 + i, i);
   EXPECT_TRUE(frame_fifo_ready(&q, 10'010, 4000, 1000));
 }
 
@@ -92,13 +135,9 @@ TEST(FirmwareFramePackets, APacketWaitsForEightFramesOrItsOldestsDeadline) {
 // not a frame period later, so its newest frame reaches the host as soon as it is made.
 TEST(FirmwareFramePackets, APacketLeavesWithTheLastFrameBeforeItsDeadline) {
   frame_fifo q{};
-  for (unsigned i = 0; i < 3; ++i) {
-    frame_fifo_slot(&q)->t_us = 10'000 + 1000 * i;
-    frame_fifo_push(&q);
-  }
+  for (unsigned i = 0; i < 3; ++i) fifo_push_frame(q, 10'000 + 1000 * i, i);
   EXPECT_FALSE(frame_fifo_ready(&q, 12'000, 4000, 1000));
-  frame_fifo_slot(&q)->t_us = 13'000;
-  frame_fifo_push(&q);
+  fifo_push_frame(q, 13'000, 3);
   EXPECT_TRUE(frame_fifo_ready(&q, 13'000, 4000, 1000));
 }
 

@@ -26,6 +26,8 @@ constexpr std::uint16_t kUeintx = 0xE8, kUenum = 0xE9;
 constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0x91, kTcnt3 = 0x94, kPortb = 0x25;
 constexpr double kAvccMillivolts = 5000.0;
 constexpr std::uint8_t kTimer3CompareAVector = 32;  // TIMER3_COMPA_vect_num, the frame interrupt
+constexpr std::uint16_t kSpl = 0x5D;                 // the stack pointer's low byte; SPH follows
+constexpr std::uint16_t kRamEnd = 0x0AFF;            // the stack starts here and grows down
 
 
 // Friction opposes motion and never reverses it; a body at rest stays there while the torque on it
@@ -65,6 +67,7 @@ SimulatedBoard::SimulatedBoard(const std::string& elf, const std::vector<std::ui
     avr_ioctl(avr_, AVR_IOCTL_EEPROM_SET, &desc);
   }
   for (const auto& [name, address] : symbols_) {
+    if (name == "_end") stack_.static_bytes = address - kDataSpace - 0x100;  // RAM starts at 0x100
     if (name == "clock_overflows") clock_overflows_address_ = address - kDataSpace;
     if (name == "next_frame_ticks") next_frame_address_ = address - kDataSpace;
     if (name == "frame_period_ticks") frame_period_address_ = address - kDataSpace;
@@ -86,6 +89,38 @@ void SimulatedBoard::run_to_cycle(std::uint64_t cycle) {
   while (avr_->cycle < cycle) {
     const int state = avr_run(avr_);
     if (state == cpu_Done || state == cpu_Crashed) throw std::runtime_error("the simulated firmware stopped");
+    if (watching_stack_) sample_stack();
+  }
+}
+
+void SimulatedBoard::watch_stack() {
+  watching_stack_ = true;
+  last_main_sp_ = stack_pointer();
+}
+
+std::uint16_t SimulatedBoard::stack_pointer() const {
+  return static_cast<std::uint16_t>(avr_->data[kSpl] | (avr_->data[kSpl + 1] << 8));
+}
+
+// After every instruction: the main loop's lowest stack pointer, and each interrupt's depth below the
+// pointer it found (its return address, the registers it saves, its locals). Interrupts here do not
+// nest (no handler enables them), so the worst is the sum of the two deepest.
+void SimulatedBoard::sample_stack() {
+  const std::uint16_t sp = stack_pointer();
+  if (avr_->interrupts.running_ptr == 0) {
+    if (in_interrupt_) {
+      in_interrupt_ = false;
+      stack_.interrupt_bytes = std::max<std::size_t>(stack_.interrupt_bytes, interrupt_entry_sp_ - interrupt_low_sp_);
+    }
+    last_main_sp_ = sp;
+    stack_.main_bytes = std::max<std::size_t>(stack_.main_bytes, kRamEnd - sp);
+  } else {
+    if (!in_interrupt_) {
+      in_interrupt_ = true;
+      interrupt_entry_sp_ = last_main_sp_;
+      interrupt_low_sp_ = sp;
+    }
+    interrupt_low_sp_ = std::min(interrupt_low_sp_, sp);
   }
 }
 

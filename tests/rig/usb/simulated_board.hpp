@@ -133,6 +133,16 @@ class SimulatedBoard {
   // One USB packet from a bulk IN endpoint, or nothing (NAK).
   std::optional<std::vector<std::uint8_t>> bulk_in_packet(std::uint8_t endpoint);
 
+  // The stack, sampled after every instruction from now on (a few times slower to run): the main
+  // loop's deepest, and the deepest any interrupt went below the pointer it interrupted.
+  struct StackUse {
+    std::size_t static_bytes = 0;     // .data, .bss and .noinit: below the stack
+    std::size_t main_bytes = 0;
+    std::size_t interrupt_bytes = 0;
+  };
+  void watch_stack();
+  const StackUse& stack_use() const { return stack_; }
+
   // Memory: a firmware variable by its ELF symbol, and the EEPROM.
   std::vector<std::uint8_t> read_symbol(const std::string& name, std::size_t size) const;
   std::vector<std::uint8_t> eeprom() const;
@@ -143,7 +153,9 @@ class SimulatedBoard {
   static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
   static void on_frame_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
   void step_physics(double dt_s);
-  void connect_world();  // the world's pins, interrupts' modes and the physics' timer, after a reset
+  void connect_world();
+  void sample_stack();
+  std::uint16_t stack_pointer() const;  // the world's pins, interrupts' modes and the physics' timer, after a reset
   void step_turntable(double drive_Nm, double dt_s);
   void step_encoder();
   double disc_omega() const { return hub_slip_Nm_ < 0.0 ? omega_ : disc_omega_; }
@@ -178,6 +190,10 @@ class SimulatedBoard {
   bool recording_interrupts_ = false;
   std::vector<FrameInterrupt> frame_interrupts_;
   mutable std::optional<std::uint64_t> clock_start_cycle_;
+
+  bool watching_stack_ = false, in_interrupt_ = false;
+  std::uint16_t last_main_sp_ = 0, interrupt_entry_sp_ = 0, interrupt_low_sp_ = 0;
+  StackUse stack_;
 
   Stage stage_ = Stage::kIdle;
   std::array<std::uint8_t, 8> setup_{};
