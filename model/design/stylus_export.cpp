@@ -129,7 +129,7 @@ void check_stylus_folder(const std::filesystem::path& folder) {
     existing = existing.has_parent_path() && existing != existing.parent_path() ? existing.parent_path()
                                                                                : std::filesystem::path(".");
   if (!std::filesystem::is_directory(existing, error))
-    throw std::runtime_error(folder.string() + ": " + existing.string() + " is not a folder to write the stylus into");
+    throw std::runtime_error(folder.string() + ": " + existing.string() + " is not a folder to write the files into");
   if (::access(existing.c_str(), W_OK | X_OK) != 0)
     throw std::runtime_error(folder.string() + ": " + (existing == folder ? std::string("this folder") : existing.string()) +
                              " cannot be written (" + std::strerror(errno) + ")");

@@ -345,6 +345,7 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
   });
 
   add_rig_setup_commands(rig_cmd, global);
+  add_rig_parts_command(rig_cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

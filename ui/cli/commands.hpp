@@ -31,6 +31,8 @@ void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
 void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `rig calibrate` and `rig flash`, registered by add_rig_command on its `rig` subcommand.
 void add_rig_setup_commands(CLI::App* rig, std::shared_ptr<const GlobalOptions> global);
+// `rig parts`: the rig's printed parts as files a printer takes, registered on `rig` too.
+void add_rig_parts_command(CLI::App* rig, std::shared_ptr<const GlobalOptions> global);
 void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 
