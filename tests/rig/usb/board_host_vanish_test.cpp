@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/rig/usb/board_host.hpp"
+#include "tests/rig/usb/hardware_guide.hpp"
 
 namespace nibrig::rig::usb::testing {
 namespace {
@@ -142,7 +143,8 @@ TEST(BoardHostVanishes, AtEveryPointOfEveryRequestTheDiscStopsWithin600Ms) {
       std::printf("host gone inside %-60s drive off after %6.1f ms, disc at rest after %6.1f ms\n", what.c_str(),
                   v.drive_off_ms, v.rest_ms);
       ASSERT_FALSE(std::isnan(v.rest_ms)) << what;
-      EXPECT_LT(v.rest_ms, 600.0) << what;
+      EXPECT_LT(v.rest_ms, hardware_guide_within_ms("nibrig killed or the cable pulled inside a request")) << what;
+      EXPECT_LT(v.rest_ms, 600.0) << what;  // the bound, whatever the guide says
       worst = std::max(worst, v.rest_ms);
       ++cases;
     }
@@ -171,6 +173,7 @@ TEST(BoardHostVanishes, BetweenRequestsTheDiscStopsWithin600Ms) {
   std::printf("host gone between requests: disc at rest after %.1f ms\n", rest * 1e-3);
   RecordProperty("vanish_between_rest_ms", std::to_string(rest * 1e-3));
   ASSERT_GE(rest, 0.0);
+  EXPECT_LT(rest * 1e-3, hardware_guide_within_ms("nibrig killed or the cable pulled between requests"));
   EXPECT_LT(rest * 1e-3, 600.0);
 }
 

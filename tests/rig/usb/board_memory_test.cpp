@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tests/rig/usb/board_host.hpp"
+#include "tests/rig/usb/hardware_guide.hpp"
 
 namespace nibrig::rig::usb::testing {
 namespace {
@@ -68,6 +69,10 @@ TEST(BoardMemory, TheStackAtItsWorstLeavesAQuarterKilobyteFree) {
   EXPECT_GT(use.main_bytes, 0u);
   EXPECT_GT(use.interrupt_bytes, 0u);
   EXPECT_GE(free_bytes, 256);
+  // The guide's figures, to the byte for static data (the linker's) and to 16 bytes for the stack
+  // (a load a little unlike this one may go a call deeper).
+  EXPECT_EQ(static_cast<double>(use.static_bytes), hardware_guide_figure("RAM taken by static data"));
+  EXPECT_NEAR(static_cast<double>(free_bytes), hardware_guide_figure("RAM free at the stack's worst"), 16.0);
 }
 
 }  // namespace

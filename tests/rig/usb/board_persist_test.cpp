@@ -3,6 +3,7 @@
 // chip with an erased EEPROM gives itself a serial and the factory calibration, and keeps them.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -92,6 +93,8 @@ TEST(BoardPersist, AnErasedChipMakesItsSerialAndFactoryCalibrationAndKeepsThem) 
     const Identity id = decode_identity(host.require_in(Request::kIdentify, kIdentityBytes));
     serial = id.serial;
     EXPECT_TRUE(std::regex_match(serial, std::regex("NIB-[0-9A-F]{4}"))) << serial;
+    // The status tells the host the calibration is the factory's (PROTOCOL.md 1.2 "health").
+    EXPECT_EQ(host.status().health & kHealthFactoryDefaults, kHealthFactoryDefaults);
     const ForceCalibration c = decode_calibration(host.require_in(Request::kGetCalibration, kCalibrationBytes));
     rig_persist factory;
     rig_persist_defaults(&factory);
@@ -109,6 +112,55 @@ TEST(BoardPersist, AnErasedChipMakesItsSerialAndFactoryCalibrationAndKeepsThem) 
   EXPECT_EQ(eeprom[1], 0x4E);
   BoardHost again(eeprom);
   EXPECT_EQ(decode_identity(again.require_in(Request::kIdentify, kIdentityBytes)).serial, serial);
+  EXPECT_EQ(again.status().health & kHealthFactoryDefaults, 0);  // its own record now
+}
+
+// A record with a valid key and values no rig has (a bit flipped by a brown-out during a write, a
+// different firmware's layout): the factory values, a new serial, and the status says so.
+TEST(BoardPersist, ACorruptRecordFallsBackToTheFactoryValuesAndSaysSo) {
+  std::vector<std::uint8_t> eeprom(1024, 0xFF);
+  eeprom[0] = 0x31;  // the key, little-endian
+  eeprom[1] = 0x4E;
+  for (std::size_t i = 2; i < 2 + sizeof(rig_persist); ++i) eeprom[i] = 0xFF;  // NaN floats, a 0xFF serial
+  BoardHost host(eeprom);
+  const DeviceStatus s = host.status();
+  EXPECT_EQ(s.health & kHealthFactoryDefaults, kHealthFactoryDefaults);
+  const ForceCalibration c = decode_calibration(host.require_in(Request::kGetCalibration, kCalibrationBytes));
+  rig_persist factory;
+  rig_persist_defaults(&factory);
+  EXPECT_FLOAT_EQ(c.normal_counts_per_N, factory.counts_per_N[0]);
+  EXPECT_FLOAT_EQ(c.lever_factor, factory.lever);
+  EXPECT_TRUE(std::regex_match(decode_identity(host.require_in(Request::kIdentify, kIdentityBytes)).serial,
+                               std::regex("NIB-[0-9A-F]{4}")));
+}
+
+// Calibrations and geometries no part of the guide gives: refused with the range reason, nothing
+// changed. The reference design's values and the paper's lever with a matching cell are taken.
+TEST(BoardCalibration, NonsenseIsRefusedAndChangesNothing) {
+  BoardHost host;
+  struct Nonsense {
+    const char* what;
+    ForceCalibration calibration;
+  };
+  for (const Nonsense& n : {Nonsense{"a count of 0.2 N: a tenth of the load", {5.0, 52.2, 1.0}},
+                            Nonsense{"a full scale under twice the load", {52.2, 52.2, 0.08}},
+                            Nonsense{"not a number", {NAN, 52.2, 1.0}}}) {
+    const auto bytes = encode_calibration(n.calibration);
+    EXPECT_EQ(host.out(Request::kSetCalibration, 0, 0, {bytes.begin(), bytes.end()}).status, -EPIPE) << n.what;
+    const DeviceStatus s = host.status();
+    EXPECT_EQ(s.refused_request, static_cast<std::uint8_t>(Request::kSetCalibration)) << n.what;
+    EXPECT_EQ(s.refusal, static_cast<std::uint8_t>(Refusal::kRange)) << n.what;
+  }
+  const ForceCalibration kept = decode_calibration(host.require_in(Request::kGetCalibration, kCalibrationBytes));
+  EXPECT_FLOAT_EQ(kept.normal_counts_per_N, 52.2f);
+  EXPECT_FLOAT_EQ(kept.lever_factor, 1.0f);
+  for (const Geometry& g : {Geometry{4480.0, 0.150}, Geometry{44.8, 0.060}}) {
+    const auto bytes = encode_geometry(g);
+    EXPECT_EQ(host.out(Request::kSetGeometry, 0, 0, {bytes.begin(), bytes.end()}).status, -EPIPE);
+  }
+  // The paper's lever, which puts 14 times the tip's force on the cell: a cell 14 times stiffer.
+  const auto paper = encode_calibration({3.75, 3.75, 1.0 / 14.0});
+  host.require_out(Request::kSetCalibration, 0, 0, {paper.begin(), paper.end()});
 }
 
 }  // namespace

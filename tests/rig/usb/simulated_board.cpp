@@ -26,6 +26,7 @@ constexpr std::uint16_t kUeintx = 0xE8, kUenum = 0xE9;
 constexpr std::uint16_t kTccr1a = 0x80, kIcr1 = 0x86, kOcr1a = 0x88, kTccr3b = 0x91, kTcnt3 = 0x94, kPortb = 0x25;
 constexpr double kAvccMillivolts = 5000.0;
 constexpr std::uint8_t kTimer3CompareAVector = 32;  // TIMER3_COMPA_vect_num, the frame interrupt
+constexpr std::uint8_t kAdcVector = 29;              // ADC_vect_num: one conversion done
 constexpr std::uint16_t kSpl = 0x5D;                 // the stack pointer's low byte; SPH follows
 constexpr std::uint16_t kRamEnd = 0x0AFF;            // the stack starts here and grows down
 
@@ -185,6 +186,17 @@ void SimulatedBoard::record_frame_interrupts() {
   // simavr raises a vector's "running" IRQ to 1 as the chip enters its handler.
   avr_irq_t* irqs = avr_get_interrupt_irq(avr_, kTimer3CompareAVector);
   avr_irq_register_notify(irqs + AVR_INT_IRQ_RUNNING, &SimulatedBoard::on_frame_interrupt, this);
+}
+
+void SimulatedBoard::count_adc_conversions() {
+  if (counting_conversions_) return;
+  counting_conversions_ = true;
+  avr_irq_t* irqs = avr_get_interrupt_irq(avr_, kAdcVector);
+  avr_irq_register_notify(irqs + AVR_INT_IRQ_RUNNING, &SimulatedBoard::on_adc_interrupt, this);
+}
+
+void SimulatedBoard::on_adc_interrupt(avr_irq_t*, std::uint32_t value, void* self) {
+  if (value == 1) ++static_cast<SimulatedBoard*>(self)->adc_conversions_;
 }
 
 void SimulatedBoard::on_frame_interrupt(avr_irq_t*, std::uint32_t value, void* self) {

@@ -81,6 +81,9 @@ class SimulatedBoard {
   std::uint64_t clock_start_cycle() const;
   // Every frame interrupt from now on, for the sampling instant's jitter.
   void record_frame_interrupts();
+  // The ADC's conversions (its interrupt's entries) from now on.
+  void count_adc_conversions();
+  std::uint64_t adc_conversions() const { return adc_conversions_; }
   const std::vector<FrameInterrupt>& frame_interrupts() const { return frame_interrupts_; }
 
   // The world around the chip.
@@ -152,6 +155,7 @@ class SimulatedBoard {
  private:
   static avr_cycle_count_t on_physics(avr_t* avr, avr_cycle_count_t when, void* self);
   static void on_frame_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
+  static void on_adc_interrupt(avr_irq_t* irq, std::uint32_t value, void* self);
   void step_physics(double dt_s);
   void connect_world();
   void sample_stack();
@@ -188,6 +192,8 @@ class SimulatedBoard {
   double extra_current_A_ = 0.0;
   double sensed_A_ = 0.0;  // what the driver's current mirror reads
   bool recording_interrupts_ = false;
+  bool counting_conversions_ = false;
+  std::uint64_t adc_conversions_ = 0;
   std::vector<FrameInterrupt> frame_interrupts_;
   mutable std::optional<std::uint64_t> clock_start_cycle_;
 
