@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <set>
@@ -265,6 +266,19 @@ TEST(RigPrintedParts, SettingsAndDrawingsComeFromThePart) {
   EXPECT_NE(post.find(">19.1<"),
             std::string::npos);  // the seat's diameter as the drawing states it
   EXPECT_NE(post.find(">235.7<"), std::string::npos);  // the pivot's height
+}
+
+// HARDWARE.md shows the drawings committed in rig/parts/: they are what the parts draw now, byte for
+// byte, so a change of a part's figures changes its picture in the guide too.
+TEST(RigPrintedParts, TheGuidesDrawingsAreThePartsOwn) {
+  for (const PrintedPart& part : rig_printed_parts()) {
+    const std::filesystem::path committed =
+        std::filesystem::path(NIBRIG_SOURCE_DIR) / "rig" / "parts" / (part.name + ".svg");
+    std::ifstream in(committed, std::ios::binary);
+    ASSERT_TRUE(in) << committed << " is missing: nibrig rig parts -o DIR writes it";
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text, part_drawing_svg(part)) << committed << " differs from the part: copy it from nibrig rig parts -o DIR";
+  }
 }
 
 TEST(RigPrintedParts, WritingLeavesOtherFilesAndRefusesAFileForAFolder) {
