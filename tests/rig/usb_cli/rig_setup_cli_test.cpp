@@ -59,7 +59,7 @@ TEST(RigSetupCommands, FlashAfterAResetWritesTheHexAndFindsTheControllerBack) {
   const std::string out = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << out;
   EXPECT_NE(out.find("through /dev/ttyACM1 (2341:0037 Arduino Micro) with avrdude"), std::string::npos) << out;
-  EXPECT_NE(out.find("the rig controller is back: NIB-0C12 (bus 1, address 2, protocol 1.1"), std::string::npos)
+  EXPECT_NE(out.find("the rig controller is back: NIB-0C12 (bus 1, address 2, protocol 1.2"), std::string::npos)
       << out;
   EXPECT_TRUE(bootloader.exited());
   const auto flash = bootloader.flash();
