@@ -284,7 +284,9 @@ TEST(RigPrintedParts, TheGuidesDrawingsAreThePartsOwn) {
 TEST(RigPrintedParts, WritingLeavesOtherFilesAndRefusesAFileForAFolder) {
   const auto dir = nibrig::test::scratch_dir("rig_printed_parts");
   std::ofstream(dir / "notes.txt") << "mine";
-  const auto written = write_rig_parts(dir, kDims);
+  // Coarse facets: this checks the files and the folder, not the geometry the tests above hold.
+  const model::mechanics::CsgMeshing coarse{12e-3, 16};
+  const auto written = write_rig_parts(dir, kDims, coarse);
   ASSERT_EQ(written.parts.size(), 5u);
   for (const auto& f : written.parts)
     for (const auto& file : {f.three_mf, f.stl, f.ini, f.drawing})
@@ -296,7 +298,7 @@ TEST(RigPrintedParts, WritingLeavesOtherFilesAndRefusesAFileForAFolder) {
   EXPECT_EQ(written.recipe_json["parts"].size(), 5u);
   EXPECT_NEAR(written.recipe_json["rig"]["pivot_height_mm"].get<double>(), 235.7, 1e-6);
   try {
-    write_rig_parts(dir / "notes.txt", kDims);
+    write_rig_parts(dir / "notes.txt", kDims, coarse);
     ADD_FAILURE() << "wrote into a file";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
