@@ -132,12 +132,14 @@ CatalogBuild build_catalog(const FoundRecordings& recordings,
             sessions[i] = analyze_session(io::read_rig_session(file.path), threshold, options);
             break;
         }
+        // Inside the try: a caller's progress may stop the build by throwing (a cancellation), and
+        // an exception leaving a worker thread would end the process.
+        if (on_done) on_done(file.path);
       } catch (...) {
         std::lock_guard lock(failure_mutex);
         if (!failure) failure = std::current_exception();
         return;
       }
-      if (on_done) on_done(file.path);
     }
   };
   threads =

@@ -42,8 +42,8 @@ struct CatalogBuild {
 };
 
 // on_done is called (from worker threads, serialised by the caller if needed) as each file
-// finishes. A file that fails to read stops the build with its error: a catalog never silently
-// lacks a file.
+// finishes; what it throws (a cancellation) stops the build and is rethrown here. A file that fails
+// to read stops the build with its error: a catalog never silently lacks a file.
 CatalogBuild build_catalog(const FoundRecordings& recordings,
                            const measure::ThresholdCurve& threshold, const AnalysisOptions& options,
                            unsigned threads,

@@ -3,7 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <set>
+
+#include "model/io/bundled_assets.hpp"
+#include "model/measure/threshold_curve.hpp"
+#include "model/numeric/cancellation.hpp"
 
 #include "tests/support/test_paths.hpp"
 
@@ -54,6 +59,24 @@ TEST(ClassifyRecording, RejectsWhatIsNotARecordingWithItsPath) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("session.json"), std::string::npos);
   }
+}
+
+// A progress that stops the build (Ctrl-C in Python, an exception its callback raised) reaches the
+// caller as that exception, from whichever worker saw it; it used to leave a worker thread and end
+// the process ("terminate called after throwing ... Cancelled").
+TEST(BuildCatalog, WhatTheProgressThrowsStopsTheBuildAndReachesTheCaller) {
+  const auto found = find_recordings(nibrig::test::shared_data() / "piovarci2018" / "vibration");
+  ASSERT_GT(found.files.size(), 4u);
+  const auto threshold = measure::ThresholdCurve::load(io::default_threshold_curve());
+  std::atomic<int> reports{0};
+  EXPECT_THROW(build_catalog(found, threshold, AnalysisOptions{}, 2,
+                             [&](const std::filesystem::path&) {
+                               ++reports;
+                               throw numeric::Cancelled("catalog build");
+                             }),
+               numeric::Cancelled);
+  // Each of the two workers stops at its first report: the rest of the 75 files are not analysed.
+  EXPECT_LE(reports.load(), 2);
 }
 
 }  // namespace

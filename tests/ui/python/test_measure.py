@@ -75,3 +75,17 @@ def test_bad_input_and_missing_files_are_python_errors(tmp_path):
         nibrig.measure.recording(odd)
     with pytest.raises(FileNotFoundError):
         nibrig.measure.load_catalog(tmp_path / "none.json")
+
+
+def test_a_progress_that_raises_stops_a_catalog_with_its_exception(tmp_path):
+    # The exception left a worker thread of the build and aborted Python (issue 46); now it is raised
+    # here, with nothing written.
+    folder = tmp_path / "recordings"
+    for name in (FRICTION, VIBRATION):
+        (folder / os.path.dirname(name)).mkdir(parents=True, exist_ok=True)
+        os.symlink(recording(name), folder / name)
+    with pytest.raises(ZeroDivisionError):
+        nibrig.measure.catalog(folder, threads=2, progress=lambda *a: 1 / 0)
+    with pytest.raises(TypeError):
+        nibrig.measure.catalog(folder, threads=2, progress=5)
+    assert nibrig.measure.catalog(folder, threads=2).pairings  # the module works on after both
