@@ -28,15 +28,20 @@ CLI::App* innermost(CLI::App* app) {
   return app;
 }
 
+// A word where a command was expected, named with the nearest command, or with the commands there
+// are when none is near; empty when the line went wrong otherwise.
 std::string suggestion(CLI::App& app) {
   CLI::App* where = innermost(&app);
   const auto extras = where->remaining();
-  if (extras.empty()) return "";
   std::vector<std::string> names;
   for (const CLI::App* sub : where->get_subcommands({})) names.push_back(sub->get_name());
+  if (extras.empty() || names.empty() || extras.front().rfind("-", 0) == 0) return "";
+  const std::string prefix = where == &app ? "" : where->get_name() + " ";
   const std::string near = nearest_name(extras.front(), names);
-  if (near.empty()) return "";
-  return "'" + extras.front() + "' is not a command; did you mean '" + near + "'?";
+  if (!near.empty()) return "'" + extras.front() + "' is not a command; did you mean '" + near + "'?";
+  std::string all;
+  for (const auto& name : names) all += (all.empty() ? "" : ", ") + name;
+  return "'" + extras.front() + "' is not a " + (prefix.empty() ? "" : prefix) + "command; the commands are: " + all;
 }
 
 }  // namespace
@@ -55,8 +60,9 @@ std::string nearest_name(const std::string& typed, const std::vector<std::string
 }
 
 int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
-  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
   const std::string hint = suggestion(app);
+  // `nibrig frobnicate --help` is no request for the top-level help: the word is the error.
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success) && hint.empty()) return app.exit(e);
   std::fprintf(stderr, "nibrig: error: %s\n", hint.empty() ? e.what() : hint.c_str());
   return kUsageErrorExitCode;
 }

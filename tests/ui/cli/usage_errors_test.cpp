@@ -67,6 +67,22 @@ TEST(CliUsageErrors, HelpAndVersionAreNotErrors) {
   EXPECT_EQ(run_quietly({"--version"}).code, 0);
 }
 
+// A word that is no command, with or without --help after it, is a usage error naming the word and
+// the commands there are (it was "A subcommand is required", and with --help the top-level help and
+// exit 0).
+TEST(CliUsageErrors, AnUnknownCommandIsNamedWithTheCommandsThereAre) {
+  for (const std::vector<std::string>& line : {std::vector<std::string>{"frobnicate"},
+                                              std::vector<std::string>{"frobnicate", "--help"}}) {
+    const Outcome r = run_quietly(line);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'frobnicate' is not a command; the commands are: measure, catalog,"), std::string::npos)
+        << r.err;
+  }
+  const Outcome nested = run_quietly({"space", "frob"});
+  EXPECT_EQ(nested.code, 2);
+  EXPECT_NE(nested.err.find("'frob' is not a space command; the commands are: fit,"), std::string::npos) << nested.err;
+}
+
 TEST(CliUsageErrors, NoGuessWhenTheWordIsNotASlip) {
   // "rendr" is one letter off "render"; "plot" (three letters off every command) and "xyz" are not
   // slips, and a guess there would mislead.
