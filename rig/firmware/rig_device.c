@@ -146,7 +146,7 @@ static void status(const struct rig *r, struct rig_reply *reply) {
   d[17] = r->reset_cause;
   d[18] = r->health;
   d[19] = 0;
-  reply->len = 20;
+  reply->len = RIG_STATUS_BYTES;
 }
 
 /* PROFILE_END's checks: starts at 0, never goes back in time, speeds within the motor's range. */

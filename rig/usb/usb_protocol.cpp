@@ -144,7 +144,7 @@ std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause) {
       return "motor stalled: driven, drawing the current of a held rotor, and the disc did not turn; "
              "check that nothing jams the disc (the arm, a cable, the surface's clamp)";
     case FaultCause::kOverCurrent:
-      return "motor over-current: above 1.8 A for 100 ms, more than a start needs; check the gearbox "
+      return "motor over-current: more than the device asks of the motor, for too long; check the gearbox "
              "and bearings for binding and the motor's leads for a short";
     case FaultCause::kDriver:
       return "motor driver fault (nFAULT): the DRV8876 shut down on over-current, over-temperature or "
@@ -153,7 +153,7 @@ std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause) {
       return "motor supply lost: driven, and no current flowed; the emergency stop is pressed, the "
              "T2A fuse is open or the 12 V adapter is unplugged";
     case FaultCause::kOverSpeed:
-      return "motor over-speed: the encoder read more than 360 mm/s; check the encoder's wiring and "
+      return "motor over-speed: the encoder read a fifth beyond the highest speed; check the encoder's wiring and "
              "the geometry (nibrig rig calibrate --radius --counts-per-rev)";
     case FaultCause::kSlip:
       return "disc slipping: the motor turned at the target under a loaded tip and no friction was "
@@ -171,7 +171,7 @@ std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause) {
       return "encoder channel lost: one channel's edges alone while the motor turned; check the yellow "
              "(A, D3) and white (B, D2) wires";
     case FaultCause::kHostSilent:
-      return "motor stopped by the watchdog: no request from the host for 500 ms (nibrig ended, or the "
+      return "motor stopped by the watchdog: no request from the host for its timeout (nibrig ended, or the "
              "USB cable was pulled)";
     case FaultCause::kForceSaturated:
       return "force channel saturated for 100 ms while the disc turned: a load cell unplugged or "

@@ -29,9 +29,9 @@ void expect_cleared_by_set_speed(BoardHost& host, std::uint16_t flag) {
 
 class BoardFaults : public ::testing::TestWithParam<double> {};
 
-// Jammed while turning: the stall (full drive, no motion, 0.5 s) or the over-current (above 2 A for
-// 0.1 s) rule stops it. The brief allows 0.6 s: the stall rule's half second and the speed estimate's
-// decay after the last edge.
+// Jammed while turning: the stall rule (the current of a held rotor, no motion, 0.5 s) stops it; the
+// start limit keeps the current under the over-current rule's 1.8 A. The guide allows 0.6 s: the
+// stall rule's half second and the speed estimate's decay after the last edge.
 TEST_P(BoardFaults, AJammedDiscIsAMotorFault) {
   const double speed = GetParam();
   BoardHost host;
@@ -79,8 +79,8 @@ INSTANTIATE_TEST_SUITE_P(AtTheSweepsEnds, BoardFaults, ::testing::Values(17.0, 2
                            return "At" + std::to_string(static_cast<int>(info.param)) + "MmPerS";
                          });
 
-// Current beyond 2 A: a start's inrush lasts tens of milliseconds and must not stop the disc; held
-// for 100 ms it is more than the turntable ever needs and the driver's continuous rating.
+// Current beyond 1.8 A (the driver regulates at 2.0 A): a surge of tens of milliseconds must not stop
+// the disc; held for 100 ms it is more than the firmware ever asks of the motor.
 TEST(BoardOverCurrent, ABriefSurgeIsRiddenOutAndALongOneIsAMotorFault) {
   BoardHost host;
   host.require_out(Request::kSetStreaming, 1);
