@@ -4,8 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
+
+#include "model/io/rig_session.hpp"
 
 namespace nibrig::rig {
 namespace {
@@ -40,6 +43,25 @@ struct SlowStreams {
     tangential.push_back(f.tangential_force_N);
   }
 };
+
+// A capture makes its folder: anything already at that path is refused, saying what it is, since
+// "a session already exists there" misleads for an empty folder, a file or a device. Thrown as
+// std::runtime_error, as the writer's own refusal.
+void check_capture_folder_free(const std::filesystem::path& folder) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(folder, ec);
+  if (!std::filesystem::exists(status)) return;
+  const std::string at = folder.string() + ": ";
+  const std::string why = "; a capture writes a new session folder: name one that does not exist";
+  if (std::filesystem::is_directory(status)) {
+    if (std::filesystem::exists(folder / model::io::kSessionJson, ec))
+      throw std::runtime_error(at + "a session already exists there" + why);
+    const bool empty = std::filesystem::is_empty(folder, ec);
+    throw std::runtime_error(at + (empty ? "an empty folder" : "a folder that holds no session") + " is there" + why);
+  }
+  if (std::filesystem::is_regular_file(status)) throw std::runtime_error(at + "is a file, not a folder" + why);
+  throw std::runtime_error(at + "is a device or special file, not a folder" + why);
+}
 
 }  // namespace
 
@@ -76,6 +98,7 @@ model::io::RigSessionInfo session_info_for(const RigDescription& rig, const Spee
 CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const CaptureOptions& options) {
   const RigDescription& d = rig.description();
   check_within_motor(profile, d.max_speed_m_s);  // before any folder exists
+  check_capture_folder_free(options.folder);
   model::io::RigSessionWriter writer(options.folder, session_info_for(d, profile, options));
   model::io::CaptureRecord record = model::io::CaptureRecord{};
   record.rig = d.name;

@@ -1,5 +1,7 @@
 #include "rig/rig_request.hpp"
 
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "model/design/tool_sound.hpp"
@@ -26,9 +28,34 @@ double friction_for(const model::io::Catalog& catalog, const std::string& tool,
   return count > 0 ? sum / count : 0.3;
 }
 
+void check_rig_range(double value, double low, double high, const std::string& who, const char* unit,
+                     const char* what) {
+  if (std::isfinite(value) && value >= low && value <= high) return;
+  std::ostringstream message;
+  message << who << ": " << value << " " << unit << ": expected " << what << ", " << low << " to " << high;
+  throw std::invalid_argument(message.str());
+}
+
 }  // namespace
 
+void check_capture_seconds(double seconds, const std::string& who) {
+  check_rig_range(seconds, kShortestCaptureSeconds, kMaxProfileSeconds, who, "s", "a capture's length in seconds");
+}
+
+void check_load(double load_N, const std::string& who) {
+  check_rig_range(load_N, kLightestLoadN, kHeaviestLoadN, who, "N", "the arm's normal load in N");
+}
+
+void check_accelerometer_scale(double m_s2_per_full_scale, const std::string& who) {
+  check_rig_range(m_s2_per_full_scale, kLeastAccelerometerM_s2, kMostAccelerometerM_s2, who, "m/s²",
+                  "an accelerometer's m/s² at full scale");
+}
+
 std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSounds& sounds) {
+  // A replayed session says its own load and scale; the request's are what the others run with.
+  if (request.kind != RigKind::replay) check_load(request.load_N, "load");
+  if (request.kind == RigKind::usb)
+    check_accelerometer_scale(request.accelerometer_m_s2_per_full_scale, "accelerometer");
   switch (request.kind) {
     case RigKind::simulated: {
       if (request.tool.empty() || request.surface.empty())
@@ -60,8 +87,7 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
 }
 
 SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds) {
-  if (seconds && !(*seconds > 0.0))
-    throw std::invalid_argument("a capture lasts a positive number of seconds");
+  if (seconds) check_capture_seconds(*seconds, "seconds");
   if (name_or_file == "steps") return paper_steps(seconds.value_or(42.0));
   if (name_or_file == "sweep") return study_sweep_profile(seconds.value_or(6.0));
   const std::filesystem::path file(name_or_file);
@@ -80,8 +106,7 @@ OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSo
     if (!profile.empty())
       throw std::invalid_argument("profile '" + profile +
                                   "': a replayed rig runs the profile that was recorded (give seconds to cut it)");
-    if (seconds && !(*seconds > 0.0))
-      throw std::invalid_argument("seconds is " + std::to_string(*seconds) + "; expected a positive duration");
+    if (seconds) check_capture_seconds(*seconds, "seconds");
   } else {
     asked = profile_named(profile.empty() ? default_profile : profile, seconds);
   }

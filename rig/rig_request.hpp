@@ -20,6 +20,23 @@ namespace nibrig::rig {
 
 enum class RigKind { simulated, usb, replay };
 
+// The ranges every face holds a rig request to (the command line's options are checked against the
+// same numbers). A capture shorter than one sensor block says nothing; the longest is the longest
+// profile. The paper's arm pressed with 2.2 N; a hundredth of a newton is a pen resting on paper,
+// and 50 N breaks a tip.
+inline constexpr double kShortestCaptureSeconds = 0.01;
+inline constexpr double kLightestLoadN = 0.01;
+inline constexpr double kHeaviestLoadN = 50.0;
+// An accelerometer's m/s² at full scale (`calibrate --accelerometer`): 0.001 g to 100 000 g.
+inline constexpr double kLeastAccelerometerM_s2 = 0.01;
+inline constexpr double kMostAccelerometerM_s2 = 1e6;
+
+// Throw std::invalid_argument "<who>: <value>: expected ..." for a value outside those ranges (or
+// not finite); `who` is the option or argument that set it ("--load", "load").
+void check_capture_seconds(double seconds, const std::string& who);
+void check_load(double load_N, const std::string& who);
+void check_accelerometer_scale(double m_s2_per_full_scale, const std::string& who);
+
 struct RigRequest {
   RigKind kind = RigKind::simulated;
   // What is mounted: required for the simulated rig (it simulates it); for the others, what the
@@ -37,7 +54,8 @@ struct RigRequest {
   double accelerometer_m_s2_per_full_scale = 49.05;
 };
 
-// Opens the rig. `sounds` makes the simulated tool (a catalog pairing or a design point) and gives
+// Opens the rig, after checking the load and accelerometer scale as above (named "load" and
+// "accelerometer"). `sounds` makes the simulated tool (a catalog pairing or a design point) and gives
 // the catalog's μ for it; it is used only by the simulated rig. Throws std::invalid_argument for a
 // request that cannot be met (naming what: an unknown tool, a missing session) and
 // std::runtime_error when a device is missing (naming what was found instead).
@@ -45,7 +63,8 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
 
 // "steps" (the paper's protocol: 3 sweeps of six 2 s steps over 17-250 mm/s, 42 s), "sweep" (the
 // user study's 3 s sweep, two periods) or a CSV file (rig/speed_profile.hpp); `seconds` cuts or
-// repeats it. Throws std::invalid_argument / FormatError naming the profile.
+// repeats it (checked as check_capture_seconds does, named "seconds"). Throws std::invalid_argument /
+// FormatError naming the profile.
 SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds);
 
 // A rig opened with the profile it is to run, as every face opens one: a replayed rig runs what was

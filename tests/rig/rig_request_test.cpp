@@ -57,5 +57,23 @@ TEST(RigRequest, AComparisonSimulatesWhatIsAskedElseWhatIsMounted) {
   EXPECT_THROW(simulated_choice(RigDescription{}, "", "office"), std::invalid_argument);  // a USB rig knows nothing
 }
 
+// Issue 46: rig.capture(seconds=1e-320) made a 0-frame session and rig.simulated(load=1e308) one
+// its own reader refused; the library holds every face to the command line's ranges, naming what.
+TEST(RigRequestBounds, LoadAndSecondsAreHeldToTheOptionsRanges) {
+  try {
+    check_load(1e308, "load");
+    FAIL() << "a load of 1e308 N passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("load: 1e+308 N"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_load(2.2, "load"));
+  try {
+    profile_named("steps", 1e-320);
+    FAIL() << "a capture of 1e-320 s passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("seconds:"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace nibrig::rig

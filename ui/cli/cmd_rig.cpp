@@ -35,13 +35,6 @@
 namespace nibrig::ui::cli {
 namespace {
 
-// A capture shorter than one sensor block says nothing; the longest is the longest profile.
-constexpr double kShortestCaptureSeconds = 0.01;
-// The paper's arm pressed with 2.2 N; a hundredth of a newton is a pen resting on paper, and 50 N
-// breaks a tip.
-constexpr double kLightestLoadN = 0.01;
-constexpr double kHeaviestLoadN = 50.0;
-
 struct RigOptions {
   bool simulated = false;
   std::optional<std::string> usb;  // given: the USB rig ("" = the only controller)
@@ -102,9 +95,9 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
   cmd->add_option_function<double>(
          "--seconds", [&o](const double& s) { o.seconds = s; },
          "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
-      ->check(in_range(kShortestCaptureSeconds, rig::kMaxProfileSeconds, "a length in seconds"));
+      ->check(in_range(rig::kShortestCaptureSeconds, rig::kMaxProfileSeconds, "a length in seconds"));
   cmd->add_option("--load", o.load, "The arm's normal load in N (default 2.2, the paper's)")
-      ->check(in_range(kLightestLoadN, kHeaviestLoadN, "a load in N"));
+      ->check(in_range(rig::kLightestLoadN, rig::kHeaviestLoadN, "a load in N"));
   cmd->add_option("--seed", o.seed, "Seed of the simulated rig's noise")->check(any_seed());
   cmd->add_option("--speedup", o.speedup,
                   "Simulated and replayed rigs: 1 = real time, k = k times faster, 0 = as fast as "
@@ -117,7 +110,7 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
       ->check(whole_in_range(1, 64, "a channel number"));
   cmd->add_option("--accelerometer", o.accelerometer,
                   "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")
-      ->check(in_range(0.01, 1e6, "m/s² per full scale"));
+      ->check(in_range(rig::kLeastAccelerometerM_s2, rig::kMostAccelerometerM_s2, "m/s² per full scale"));
   auto* play = cmd->add_flag("--play", o.play,
                              "Play the simulated tool on the actuator, following the turntable");
   add_device_options(cmd, o.device);

@@ -180,7 +180,7 @@ void add_rig_module(py::module_ m) {
                         const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& stylus,
                         const std::optional<std::filesystem::path>& forcing) {
           if (tool.empty() || surface.empty()) throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
-          if (!(load > 0.0 && std::isfinite(load))) throw std::invalid_argument("load is " + std::to_string(load) + " N; expected more than 0");
+          rig::check_load(load, "load");  // here, not first when a capture opens it
           rig::Pacer::check_speedup(speedup, "speedup");
           RigSpec r;
           r.request.kind = rig::RigKind::simulated;
@@ -210,8 +210,8 @@ void add_rig_module(py::module_ m) {
                   const std::optional<std::string>& input_device, unsigned input_channel, double accelerometer,
                   const std::optional<std::string>& tool, const std::optional<std::string>& surface, double load) {
           if (input_channel < 1) throw std::invalid_argument("input_channel is 0; expected 1 or more (1-based)");
-          if (!(accelerometer > 0.0 && std::isfinite(accelerometer)))
-            throw std::invalid_argument("accelerometer is " + std::to_string(accelerometer) + " m/s² per full scale; expected more than 0");
+          rig::check_accelerometer_scale(accelerometer, "accelerometer");
+          rig::check_load(load, "load");
           RigSpec r;
           r.request.kind = rig::RigKind::usb;
           r.request.usb_serial = serial.value_or("");
