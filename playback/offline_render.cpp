@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,12 +18,57 @@ struct SndfileCloser {
   void operator()(SNDFILE* f) const { sf_close(f); }
 };
 
+void refuse_render_value(const std::string& who, double value, const char* unit, const std::string& expected) {
+  std::ostringstream message;
+  message << who << ": " << value << " " << unit << ": expected " << expected;
+  throw std::invalid_argument(message.str());
+}
+
+bool render_within(double value, double low, double high) {
+  return std::isfinite(value) && value >= low && value <= high;
+}
+
+std::string render_range(double low, double high) {
+  std::ostringstream s;
+  s << low << " to " << high;
+  return s.str();
+}
+
 }  // namespace
+
+void check_render_rate(double rate_hz, const std::string& who) {
+  if (!render_within(rate_hz, kLowestRenderRateHz, kHighestRenderRateHz))
+    refuse_render_value(who, rate_hz, "Hz",
+                        "a sample rate in Hz, " + render_range(kLowestRenderRateHz, kHighestRenderRateHz));
+}
+
+void check_render_block(std::size_t frames, const std::string& who) {
+  if (frames < 1 || frames > kLargestRenderBlock)
+    refuse_render_value(who, static_cast<double>(frames), "frames",
+                        "a block size in frames, 1 to " + std::to_string(kLargestRenderBlock));
+}
+
+void check_render_seconds(double seconds, const std::string& who) {
+  if (!render_within(seconds, kShortestRenderSeconds, kLongestRenderSeconds))
+    refuse_render_value(who, seconds, "s",
+                        "a length in seconds, " + render_range(kShortestRenderSeconds, kLongestRenderSeconds));
+}
+
+void check_stroke_request(const rt::StrokeRequest& request) {
+  const auto off_or_within = [](double v, double low, double high) { return v == 0.0 || render_within(v, low, high); };
+  if (request.speed_m_s && !off_or_within(*request.speed_m_s, kSlowestStrokeM_s, kFastestStrokeM_s))
+    refuse_render_value("speed", *request.speed_m_s, "m/s",
+                        "a speed in m/s, 0 or " + render_range(kSlowestStrokeM_s, kFastestStrokeM_s));
+  if (request.force_n && !off_or_within(*request.force_n, kLightestStrokeN, kHeaviestStrokeN))
+    refuse_render_value("force", *request.force_n, "N",
+                        "a normal force in N, 0 or " + render_range(kLightestStrokeN, kHeaviestStrokeN));
+}
 
 OfflineRenderResult render_to_wav(rt::BlockRenderer& renderer, const std::filesystem::path& wav,
                                   const OfflineRenderSettings& settings) {
-  if (!(settings.sample_rate_hz > 0) || settings.block_frames == 0 || !(settings.seconds > 0))
-    throw std::invalid_argument("an offline render needs a positive rate, block and duration");
+  check_render_rate(settings.sample_rate_hz, "render rate");
+  check_render_block(settings.block_frames, "render block");
+  check_render_seconds(settings.seconds, "render length");
   const model::io::OutputTarget target = model::io::output_target(wav);
   const std::filesystem::path partial = model::io::temporary_beside(target);
   // Whatever stops the render (a full disk, a renderer that throws, a failed rename) removes the

@@ -69,5 +69,25 @@ TEST(OfflineRender, AFailedRenderLeavesNoHalfFile) {
       << "a failed render must not leave its half file";
 }
 
+// Issue 46: render.tool(speed=1e308, force=1e308, period=10**9) was taken from Python; the ranges
+// are the library's, named as the argument that set them.
+TEST(OfflineRenderBounds, StrokeAndBlockOutsideTheirRangesAreRefused) {
+  rt::StrokeRequest fast;
+  fast.speed_m_s = 1e308;
+  try {
+    check_stroke_request(fast);
+    FAIL() << "a speed of 1e308 m/s passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("speed: 1e+308 m/s", 0), 0u) << e.what();
+  }
+  rt::StrokeRequest heavy;
+  heavy.force_n = 1e308;
+  EXPECT_THROW(check_stroke_request(heavy), std::invalid_argument);
+  rt::StrokeRequest resting;  // 0 is at rest and lifted: allowed
+  resting.speed_m_s = 0.0, resting.force_n = 0.0;
+  EXPECT_NO_THROW(check_stroke_request(resting));
+  EXPECT_THROW(check_render_block(1000000000, "period"), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace nibrig::playback

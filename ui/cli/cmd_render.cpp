@@ -69,12 +69,13 @@ void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(file_to_write());
   cmd->add_option("--seconds", options->seconds,
                   "Length (default: two sweep periods, the trajectory's length, or 5 s)")
-      ->check(in_range(0.001, 3600, "a length in seconds"));
-  // The voices run at about 8 kHz (rt/engine.hpp): a device rate below that cannot carry them.
+      ->check(in_range(playback::kShortestRenderSeconds, playback::kLongestRenderSeconds,
+                       "a length in seconds"));
+  // The library's ranges (playback/offline_render.hpp), checked here to name the option.
   cmd->add_option("--rate", options->rate, "Sample rate in Hz")
-      ->check(in_range(8000, 384000, "a sample rate in Hz"));
+      ->check(in_range(playback::kLowestRenderRateHz, playback::kHighestRenderRateHz, "a sample rate in Hz"));
   cmd->add_option("--period", options->period, "Block size in frames, as a device period")
-      ->check(whole_in_range(1, 1 << 16, "a block size in frames"));
+      ->check(whole_in_range(1, static_cast<long long>(playback::kLargestRenderBlock), "a block size in frames"));
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
     for (const auto& note : outside_measured_range(options->stroke)) spdlog::warn("{}", note);

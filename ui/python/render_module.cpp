@@ -10,6 +10,7 @@
 
 #include "model/design/tool_sound.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "playback/offline_render.hpp"
 #include "playback/prepared_engine.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
@@ -34,11 +35,15 @@ Rendering render_tool(const std::string& tool, const std::string& surface, const
                       const std::optional<double>& seconds, double rate_hz, std::size_t period, std::uint64_t seed,
                       const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& stylus,
                       const std::optional<std::filesystem::path>& forcing, const py::object& progress) {
-  if (!(rate_hz >= 8000 && rate_hz <= 384000))  // the voices run at about 8 kHz (rt/engine.hpp)
-    throw std::invalid_argument("rate is " + std::to_string(rate_hz) + " Hz; expected 8000 to 384000");
-  if (period < 1) throw std::invalid_argument("period is 0; expected a block of at least 1 frame");
-  if (seconds && !(*seconds > 0 && *seconds <= 3600))
-    throw std::invalid_argument("seconds is " + std::to_string(*seconds) + "; expected more than 0, at most 3600");
+  // The library's ranges, as the command line's, before any meshing or fitting.
+  playback::check_render_rate(rate_hz, "rate_hz");
+  playback::check_render_block(period, "period");
+  if (seconds) playback::check_render_seconds(*seconds, "seconds");
+  rt::StrokeRequest request;
+  request.speed_m_s = speed_m_s;
+  request.trajectory = trajectory.value_or(std::filesystem::path());
+  request.force_n = force_n;
+  playback::check_stroke_request(request);
   Rendering out;
   out.rate_hz = rate_hz;
   run_long_call(
@@ -46,10 +51,6 @@ Rendering render_tool(const std::string& tool, const std::string& surface, const
         const auto options = tool_sound_options(catalog, stylus, forcing, stop, report);
         model::design::ToolSounds sounds(options);
         sounds.check(tool, surface);  // before any meshing or fitting
-        rt::StrokeRequest request;
-        request.speed_m_s = speed_m_s;
-        request.trajectory = trajectory.value_or(std::filesystem::path());
-        request.force_n = force_n;
         rt::Stroke stroke = rt::make_stroke(request);
         const auto sound = sounds.sound(tool, surface);
         rt::EngineSettings settings;
