@@ -5,7 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
@@ -84,6 +86,15 @@ void check_rate(double rate_hz, const std::filesystem::path& file, const std::st
   }
 }
 
+// Numbers in messages as a person types them ("1e+308", "0.01").
+std::string friction_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+std::string friction_range(double low, double high) { return friction_number(low) + " to " + friction_number(high); }
+
 }  // namespace
 
 FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
@@ -116,6 +127,14 @@ FrictionFileName parse_friction_file_name(const std::filesystem::path& file) {
   const auto rep = digits(rep_token, 6);
   if (!rep || *rep < 1)
     bad_friction_name(file, "the repetition must be a whole number >= 1, found " + in_quotes(rep_token));
+  if (!(*load >= kLightestFrictionLoadN && *load <= kHeaviestFrictionLoadN))
+    throw FormatError(file, "file name",
+                      "the load " + in_quotes(load_token) + " is outside " + friction_range(kLightestFrictionLoadN, kHeaviestFrictionLoadN) +
+                          " N (a pen resting on paper to a tip's breaking load)");
+  if (!(*lever >= kSmallestLeverFactor && *lever <= kLargestLeverFactor))
+    throw FormatError(file, "file name",
+                      "the lever factor " + in_quotes(lever_token) + " is outside " +
+                          friction_range(kSmallestLeverFactor, kLargestLeverFactor) + " (the paper's are 13.3-14.1)");
   name.normal_load_N = *load;
   name.lever_factor = *lever;
   name.repetition = static_cast<int>(*rep);
@@ -129,11 +148,16 @@ FrictionRecording read_paper_friction(const std::filesystem::path& file) {
 FrictionRecording read_paper_friction(const std::filesystem::path& file, FrictionFileName name) {
   if (name.tool.empty() || name.surface.empty())
     throw std::invalid_argument(file.string() + ": a recording needs a tool and a surface id");
-  // Both divide the counts: a zero, negative or NaN one would make every force meaningless.
-  if (!(name.normal_load_N > 0) || !std::isfinite(name.normal_load_N) ||
-      !(name.lever_factor > 0) || !std::isfinite(name.lever_factor))
-    throw std::invalid_argument(file.string() +
-                                ": the normal load and the lever factor must be > 0 and finite");
+  // Both divide the counts: one outside its range would make every force meaningless (a lever of
+  // 1e308 gives μ 1e-308).
+  if (!(name.normal_load_N >= kLightestFrictionLoadN && name.normal_load_N <= kHeaviestFrictionLoadN))
+    throw std::invalid_argument(file.string() + ": load " + friction_number(name.normal_load_N) +
+                                " N: expected a normal load in N, " +
+                                friction_range(kLightestFrictionLoadN, kHeaviestFrictionLoadN));
+  if (!(name.lever_factor >= kSmallestLeverFactor && name.lever_factor <= kLargestLeverFactor))
+    throw std::invalid_argument(file.string() + ": lever " + friction_number(name.lever_factor) +
+                                ": expected a lever factor, " +
+                                friction_range(kSmallestLeverFactor, kLargestLeverFactor) + " (the paper's: 13.3-14.1)");
   FrictionRecording recording;
   recording.name = std::move(name);
   recording.source = file;
@@ -204,6 +228,12 @@ FrictionRecording read_paper_friction(const std::filesystem::path& file, Frictio
     const double x = parse_number(fields[c_x], file, line, "X");
     const double y = parse_number(fields[c_y], file, line, "Y");
     const double z = parse_number(fields[c_z], file, line, "Z");
+    for (const auto& [count, column] : {std::pair{x, "X"}, std::pair{y, "Y"}, std::pair{z, "Z"}})
+      if (std::abs(count * newtons_per_count) > kLargestTipForceN)
+        throw FormatError(file, field_place(line, column),
+                          "expected a force at the tip of at most " + friction_number(kLargestTipForceN) +
+                              " N, found " + friction_number(count) + " counts (" +
+                              friction_number(count * newtons_per_count) + " N)");
     if (!is_whole(x) || !is_whole(y) || !is_whole(z)) {
       if (edited_counts++ == 0) first_edited_line = line;
     }

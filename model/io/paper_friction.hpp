@@ -18,6 +18,16 @@ inline constexpr double kOptoForceCountsPerNewton = 403.2;
 // a file more than 5 % off was not recorded by this set-up and is rejected.
 inline constexpr double kOptoForceRate_hz = 1000.0;
 
+// The ranges a recording's load and lever factor are held to, from its name or stated by a face
+// (whose options check the same numbers). The paper's arm pressed with 2.2 N: a hundredth of a
+// newton is a pen resting on paper, 50 N breaks a tip. Its lever factors are 13.3-14.1; one below
+// 0.1 or above 100 is a typo that would scale every force by orders of magnitude.
+inline constexpr double kLightestFrictionLoadN = 0.01, kHeaviestFrictionLoadN = 50.0;
+inline constexpr double kSmallestLeverFactor = 0.1, kLargestLeverFactor = 100.0;
+// A row's force at the tip beyond this is a damaged count, not a measurement: 20 times the
+// heaviest load, far beyond any drag a tool survives.
+inline constexpr double kLargestTipForceN = 1000.0;
+
 // <tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz], e.g. vero1_glass_2.2N_13.7_1.csv.gz.
 struct FrictionFileName {
   std::string tool, surface;
@@ -27,7 +37,8 @@ struct FrictionFileName {
 };
 
 // Throws FormatError "unparsable file name, expected
-// <tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]".
+// <tool>_<surface>_<load>N_<lever>_<rep>.csv[.gz]", and naming the load or lever factor outside the
+// ranges above.
 FrictionFileName parse_friction_file_name(const std::filesystem::path& file);
 
 struct FrictionRecording {
@@ -53,7 +64,8 @@ struct FrictionRecording {
 FrictionRecording read_paper_friction(const std::filesystem::path& file);
 // The same with the name's parts given instead of parsed, for a file named anything (see
 // paper_recording.hpp). Throws std::invalid_argument for an empty tool or surface, or a load or
-// lever factor that is not > 0 and finite.
+// lever factor outside the ranges above ("load", "lever": what a face calls them); FormatError
+// naming the line for a count whose tip force exceeds kLargestTipForceN.
 FrictionRecording read_paper_friction(const std::filesystem::path& file, FrictionFileName name);
 
 }  // namespace nibrig::model::io

@@ -141,6 +141,11 @@ VibrationRecording read_paper_vibration(const std::filesystem::path& file, Vibra
     csv.require_fields(fields, needed);
     const long long stamp_ms = parse_unix_ms(fields[c_stamp], file, line, "timestamp");
     const double accel_g = parse_number(fields[c_accel], file, line, "xAccel");
+    if (std::abs(accel_g) > kLargestPaperAcceleration_g)
+      throw FormatError(file, field_place(line, "xAccel"),
+                        "expected an acceleration in g of at most " +
+                            std::to_string(static_cast<int>(kLargestPaperAcceleration_g)) + ", found " +
+                            in_quotes(fields[c_accel]));
     const std::size_t index = recording.acceleration_m_s2.size();
     if (index == 0) {
       first_ms = stamp_ms;

@@ -13,6 +13,9 @@ namespace nibrig::model::io {
 
 inline constexpr double kStandardGravity_m_s2 = 9.80665;  // the recordings are in g
 inline constexpr double kPaperAccelerometerRate_hz = 1000.0;
+// A sample beyond this many g is a damaged value, not a measurement: 1000 g is far beyond any
+// stylus (the catalog's amplitudes are held to the same).
+inline constexpr double kLargestPaperAcceleration_g = 1000.0;
 
 // Decoded from arm_<...>.csv[.gz]. The forms and their canonical tool ids:
 //   arm_<tool>_<surface>                        real or commercial tool: "p2h", "apencil"
@@ -51,7 +54,7 @@ struct VibrationRecording {
 
 // Header `time,timestamp,xAccel,yAccel,zAccel,xxx`, or a blank header `,,,,,` with the same column
 // positions. Throws FormatError "expected 1000 Hz, found ..." when the timestamps show another
-// rate.
+// rate, and naming the line for an acceleration beyond kLargestPaperAcceleration_g.
 VibrationRecording read_paper_vibration(const std::filesystem::path& file);
 // The same with the name's parts given instead of parsed, for a file named anything (see
 // paper_recording.hpp). Throws std::invalid_argument for an empty tool or surface.

@@ -152,12 +152,12 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option_function<double>(
          "--load", [&stated](const double& v) { stated.normal_load_N = v; },
          "Friction files: normal load in N, instead of the file name's (the paper's: 2.2)")
-      ->check(in_range(0.01, 50, "a normal load in N"));
+      ->check(in_range(model::io::kLightestFrictionLoadN, model::io::kHeaviestFrictionLoadN, "a normal load in N"));
   cmd->add_option_function<double>(
          "--lever", [&stated](const double& v) { stated.lever_factor = v; },
          "Friction files: the arm's lever factor, instead of the file name's (13.3-14.1 in the "
          "paper's files)")
-      ->check(in_range(0.1, 100, "a lever factor"));
+      ->check(in_range(model::io::kSmallestLeverFactor, model::io::kLargestLeverFactor, "a lever factor"));
   cmd->add_option("--kind", options->kind,
                   "accelerometer or friction (default: from the file name, else its header)")
       ->check(CLI::IsMember({"accelerometer", "friction"}));

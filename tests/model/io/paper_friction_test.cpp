@@ -238,5 +238,20 @@ TEST_F(FrictionMalformed, WrapPastMidnightKeepsTimeIncreasing) {
   EXPECT_NEAR(recording.sample_rate_hz, 1000.0, 1e-3);
 }
 
+// Issue 46: a lever of 1e308 in a file's name gave μ 1.7e-308; the name is held to the range the
+// --lever option has, and names the file and what was expected.
+TEST(PaperFrictionBounds, ANameOutsideTheOptionsRangesIsRefused) {
+  try {
+    parse_friction_file_name("vero1_glass_2.2N_1e308_1.csv");
+    FAIL() << "a lever factor of 1e308 passed";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("vero1_glass_2.2N_1e308_1.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("lever factor"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.1 to 100"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_friction_file_name("vero1_glass_1e-300N_13.7_1.csv"), FormatError);
+  EXPECT_NO_THROW(parse_friction_file_name("vero1_glass_2.2N_13.7_1.csv"));
+}
+
 }  // namespace
 }  // namespace nibrig::model::io
