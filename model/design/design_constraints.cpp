@@ -33,7 +33,45 @@ std::pair<double, double> where_at_most(double g0, double g1, double slack) {
   return g1 > g0 ? std::pair{0.0, root} : std::pair{root, 1.0};
 }
 
+std::string cost_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+void check_constraint_value(double value, double low, double high, const std::string& name,
+                            const std::string& expected) {
+  if (std::isfinite(value) && value >= low && value <= high) return;
+  throw std::invalid_argument(name + ": " + cost_number(value) + ": expected " + expected + ", " +
+                              cost_number(low) + " to " + cost_number(high));
+}
+
 }  // namespace
+
+void check_constraints(const DesignConstraints& c, const ConstraintNames& names) {
+  const std::string tip = "a tip diameter in mm";
+  if (c.min_tip_m)
+    check_constraint_value(*c.min_tip_m * 1e3, kSmallestConstraintTipMm, kLargestConstraintTipMm, names.min_tip, tip);
+  if (c.max_tip_m)
+    check_constraint_value(*c.max_tip_m * 1e3, kSmallestConstraintTipMm, kLargestConstraintTipMm, names.max_tip, tip);
+  if (c.min_tip_m && c.max_tip_m && *c.min_tip_m > *c.max_tip_m)
+    throw std::invalid_argument(names.min_tip + ": " + mm(*c.min_tip_m) + " is above " + names.max_tip + ", " +
+                                mm(*c.max_tip_m));
+  std::set<std::string> seen;
+  for (const auto& m : c.materials)
+    if (m.empty() || !seen.insert(m).second)
+      throw std::invalid_argument("allowed materials: '" + m + "' is " + (m.empty() ? "empty" : "named twice"));
+  for (const auto& [material, cost] : c.cost) {
+    if (material.empty()) throw std::invalid_argument(names.cost + ": a cost without a material");
+    check_constraint_value(cost, 0.0, kLargestDesignCost, names.cost + " of " + material, "a cost proxy");
+  }
+  if (c.max_cost) {
+    check_constraint_value(*c.max_cost, 0.0, kLargestDesignCost, names.max_cost, "a cost of a design's mix");
+    if (c.cost.empty())
+      throw std::invalid_argument(names.max_cost + " limits the cost " + names.cost + " gives each material: give " +
+                                  names.cost + " too");
+  }
+}
 
 std::string describe(const DesignConstraints& c) {
   std::vector<std::string> parts;
@@ -90,6 +128,7 @@ std::string broken_constraint(const DesignPoint& point, const DesignConstraints&
 
 std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoint& b,
                                            const DesignConstraints& c) {
+  check_constraints(c);
   const std::string line = label(a) + " -> " + label(b);
   std::pair<double, double> all{0.0, 1.0};
   // Each constraint's own interval first, so that one which leaves nothing is named.
@@ -105,8 +144,16 @@ std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoi
   std::set<std::string> materials;
   for (const auto* p : {&a, &b})
     for (const auto& share : p->mix) materials.insert(share.material);
+  // Allowed materials the line does not hold: named when nothing is left, as "--allow steel" on a
+  // line of vero and DM85 is the likely slip.
+  std::string absent;
+  for (const auto& m : c.materials)
+    if (!materials.count(m)) absent += (absent.empty() ? "" : ", ") + m;
+  const std::string absent_note =
+      absent.empty() ? "" : " (allowed " + absent + ": not a material of the line)";
   for (const auto& m : materials)
-    if (!allowed(c, m)) take(where_at_most(a.fraction_of(m), b.fraction_of(m), kSlack), "no " + m + " (not allowed)");
+    if (!allowed(c, m))
+      take(where_at_most(a.fraction_of(m), b.fraction_of(m), kSlack), "no " + m + " (not allowed)" + absent_note);
   if (c.max_cost) {
     std::ostringstream what;
     what << "a cost of at most " << *c.max_cost;
@@ -115,7 +162,8 @@ std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoi
          what.str());
   }
   if (all.first > all.second)
-    throw std::invalid_argument("no design on the line " + line + " satisfies the constraints together");
+    throw std::invalid_argument("no design on the line " + line + " satisfies the constraints together" +
+                                absent_note);
   return all;
 }
 

@@ -25,6 +25,22 @@ struct DesignConstraints {
   }
 };
 
+// The ranges every face holds constraints to (the command line's options check the same numbers):
+// a tip of 0.01-100 mm, as a design point's; a cost proxy per material and its limit >= 0 and at
+// most kLargestDesignCost, so that NaN or 1e308 is refused before a search runs for nothing.
+inline constexpr double kSmallestConstraintTipMm = 0.01, kLargestConstraintTipMm = 100.0;
+inline constexpr double kLargestDesignCost = 1e15;
+
+// What a face calls each constraint, for the messages: a Python call's arguments by default.
+struct ConstraintNames {
+  std::string min_tip = "min_tip_mm", max_tip = "max_tip_mm", cost = "cost", max_cost = "max_cost";
+};
+
+// Throws std::invalid_argument "<name>: <value>: expected ..." for a tip, cost or limit outside the
+// ranges above or not finite, a smallest tip above the largest, a limit without costs, and an
+// allowed material named twice or empty. Every search calls it first.
+void check_constraints(const DesignConstraints& constraints, const ConstraintNames& names = {});
+
 // "tips 1.5 to 3 mm, materials vero, DM85, cost at most 2 (vero 1, DM85 3)": those set.
 std::string describe(const DesignConstraints& constraints);
 
@@ -38,7 +54,8 @@ std::string broken_constraint(const DesignPoint& point, const DesignConstraints&
 
 // The part [lo, hi] of λ in [0, 1] (interpolate(a, b, λ)) whose designs satisfy every constraint;
 // lo == hi when one design does. Throws std::invalid_argument when none does, naming the
-// constraint that leaves nothing of the line (or saying that they do together), and for a cost
+// constraint that leaves nothing of the line (or saying that they do together, and naming allowed
+// materials the line does not hold), and for a cost
 // limit without a cost for a material on the line.
 std::pair<double, double> feasible_segment(const DesignPoint& a, const DesignPoint& b,
                                            const DesignConstraints& constraints);

@@ -100,6 +100,10 @@ DesignPoint parse_design_point(std::string_view text) {
     share.material = catalog_material_name(trimmed(entry.substr(0, colon)));
     if (colon != std::string_view::npos && !read_number(entry.substr(colon + 1), share.fraction))
       refuse(text, "the fraction of '" + share.material + "' is not a number");
+    if (share.fraction > 0.0 && share.fraction < kSmallestMixFraction)
+      refuse(text, "the fraction of '" + share.material + "' is " + number(share.fraction) + ", below " +
+                       number(kSmallestMixFraction) + ": the print sheet's whole per cent would show it as 0 % " +
+                       "(give at least " + number(kSmallestMixFraction) + ", or 0 to leave it out)");
     if (share.fraction != 0.0) point.mix.push_back(std::move(share));
   }
   if (!tip_seen) refuse(text, "no tip diameter (add tip=<number>mm)");

@@ -26,8 +26,14 @@ struct DesignPoint {
 // How far from 1 the fractions of a mix may add up (rounding in a hand-written spec).
 inline constexpr double kMixSumTolerance = 1e-6;
 
+// The smallest share of a material a typed mix may give: the print sheet names mixes in whole per
+// cent, so a share below half a per cent prints as "0 %" — a material the printer is told to load
+// for nothing it can dither. A fraction of 0 drops the material.
+inline constexpr double kSmallestMixFraction = 0.005;
+
 // Throws std::invalid_argument saying what is wrong and where in `text`: an entry that is neither
-// "material[:fraction]" nor "tip=<number>mm", a fraction outside [0, 1], fractions that do not add
+// "material[:fraction]" nor "tip=<number>mm", a fraction outside [0, 1] or above 0 and below
+// kSmallestMixFraction, fractions that do not add
 // up to 1 (giving their sum), a material named twice, no material, no tip or a tip that is not a
 // positive length. Entries with fraction 0 are dropped.
 DesignPoint parse_design_point(std::string_view text);

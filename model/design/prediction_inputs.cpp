@@ -13,6 +13,7 @@ namespace nibrig::model::design {
 std::unique_ptr<PredictionInputs> load_prediction_inputs(
     const forcing::ForcingInputOptions& options, const std::filesystem::path& forcing_file,
     std::optional<forcing::ForcingModel> fitted, const forcing::DesignProgress& progress) {
+  forcing::check_forcing_input_options(options);  // before the catalog is read or a mesh made
   auto in = std::make_unique<PredictionInputs>();
   in->catalog_file = io::or_default(options.catalog, io::default_catalog);
   in->catalog = io::read_catalog(in->catalog_file);

@@ -4,8 +4,10 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "model/forcing/forcing_fit.hpp"
@@ -19,7 +21,21 @@ namespace nibrig::model::forcing {
 
 namespace mech = mechanics;
 
+void check_forcing_input_options(const ForcingInputOptions& o) {
+  if (o.modes < 0 || o.modes > kMostModes)
+    throw std::invalid_argument("modes: " + std::to_string(o.modes) + ": expected 0 (the template's) or 1 to " +
+                                std::to_string(kMostModes));
+  // A size below DBL_MIN is no size: it would mesh without end.
+  if (!(o.mesh_size == 0.0 || (o.mesh_size >= DBL_MIN && o.mesh_size <= kLargestMeshSizeM))) {
+    std::ostringstream message;
+    message << "mesh_size: " << o.mesh_size << ": expected 0 (the template's) or an element size in metres, > 0 and at "
+            << "most " << kLargestMeshSizeM << " (a stylus is centimetres long: millimetres given as metres?)";
+    throw std::invalid_argument(message.str());
+  }
+}
+
 ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProgress& progress) {
+  check_forcing_input_options(o);
   const auto catalog_path = io::or_default(o.catalog, io::default_catalog);
   const auto template_path = io::or_default(o.design_template, io::default_stylus_design);
   const auto materials_path = io::or_default(o.materials, io::default_materials);

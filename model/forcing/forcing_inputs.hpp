@@ -24,6 +24,16 @@ struct ForcingInputOptions {
   double mesh_size = 0.0;                 // m; 0: the template's
 };
 
+// The ranges every face holds these options to (the command line's check the same numbers): at
+// most kMostModes modes, and an element size at most 1 m (every stylus dimension is centimetres;
+// metres typed for millimetres is the usual slip). 0 is the template's, for both.
+inline constexpr int kMostModes = 1000;
+inline constexpr double kLargestMeshSizeM = 1.0;
+
+// Throws std::invalid_argument "modes: ..." or "mesh_size: ..." (a Python call's names) for a value
+// outside those ranges or not finite. load_forcing_inputs and load_prediction_inputs call it first.
+void check_forcing_input_options(const ForcingInputOptions& options);
+
 struct ForcingInputs {
   std::vector<ForcingExemplar> exemplars;
   ExemplarSelection selection;  // its exemplars moved to `exemplars`

@@ -81,13 +81,11 @@ design::DesignConstraints constraints_of(const DesignOptions& o) {
   design::DesignConstraints c;
   if (o.min_tip_mm) c.min_tip_m = *o.min_tip_mm * 1e-3;
   if (o.max_tip_mm) c.max_tip_m = *o.max_tip_mm * 1e-3;
-  if (c.min_tip_m && c.max_tip_m && *c.min_tip_m > *c.max_tip_m)
-    throw CLI::ValidationError("--min-tip-mm", "is above --max-tip-mm");
   c.materials = o.allow;
   c.cost = parse_costs(o.cost);
   c.max_cost = o.max_cost;
-  if (c.max_cost && c.cost.empty())
-    throw CLI::ValidationError("--max-cost", "limits the cost --cost gives each material: give --cost too");
+  // The library's checks, named as the options, before the forcing model is loaded.
+  design::check_constraints(c, {"--min-tip-mm", "--max-tip-mm", "--cost", "--max-cost"});
   return c;
 }
 
@@ -275,13 +273,14 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->take_all();
   cmd->add_option("--aim", o->aim, "A group's distance to minimise: largest or mean")->capture_default_str();
   cmd->add_option("--min-tip-mm", o->min_tip_mm, "Smallest tip diameter allowed (mm)")
-      ->check(in_range(0.01, 100, "a tip diameter in mm"));
+      ->check(in_range(design::kSmallestConstraintTipMm, design::kLargestConstraintTipMm, "a tip diameter in mm"));
   cmd->add_option("--max-tip-mm", o->max_tip_mm, "Largest tip diameter allowed (mm)")
-      ->check(in_range(0.01, 100, "a tip diameter in mm"));
+      ->check(in_range(design::kSmallestConstraintTipMm, design::kLargestConstraintTipMm, "a tip diameter in mm"));
   cmd->add_option("--allow", o->allow, "Materials a printer may load (default: all), e.g. vero,DM85")
       ->delimiter(',');
   cmd->add_option("--cost", o->cost, "A cost or durability proxy per material, e.g. vero=1,DM85=3");
-  cmd->add_option("--max-cost", o->max_cost, "Largest cost of a design's mix (fractions times --cost)");
+  cmd->add_option("--max-cost", o->max_cost, "Largest cost of a design's mix (fractions times --cost)")
+      ->check(in_range(0, design::kLargestDesignCost, "a cost of a design's mix"));
   cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)")
       ->required();
   cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)")

@@ -27,7 +27,7 @@ void add_forcing_input_options(CLI::App* cmd, ForcingInputOptions& o) {
                   "assets/designs/stylus_vero_tip2mm.json)");
   cmd->add_option("--materials", o.materials, "Material table (default: assets/materials.json)");
   cmd->add_option("--modes", o.modes, "Modes per design (default: the template's)")
-      ->check(whole_in_range(1, 1000, "a number of modes"));
+      ->check(whole_in_range(1, model::forcing::kMostModes, "a number of modes"));
   cmd->add_option("--mesh-size", o.mesh_size, "Element size in metres (default: the template's)")
       ->check(stylus_metres("an element size"));
 }

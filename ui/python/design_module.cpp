@@ -39,14 +39,13 @@ Designer make_designer(const std::optional<std::filesystem::path>& catalog, cons
                        const std::optional<std::filesystem::path>& design_template,
                        const std::optional<std::filesystem::path>& materials, int modes, double mesh_size,
                        const py::object& progress) {
-  if (modes < 0) throw std::invalid_argument("modes is " + std::to_string(modes) + "; expected 0 (the template's) or more");
-  if (mesh_size < 0) throw std::invalid_argument("mesh_size is negative; expected metres, or 0 (the template's)");
   model::forcing::ForcingInputOptions options;
   options.catalog = catalog.value_or(std::filesystem::path());
   options.design_template = design_template.value_or(std::filesystem::path());
   options.materials = materials.value_or(std::filesystem::path());
   options.modes = modes;
   options.mesh_size = mesh_size;
+  model::forcing::check_forcing_input_options(options);  // the library's ranges, before the long call
   Designer out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
@@ -93,7 +92,7 @@ design::DesignConstraints constraints_of(const std::optional<double>& min_tip_mm
   c.materials = allow;
   c.cost = cost;
   c.max_cost = max_cost;
-  if (c.max_cost && c.cost.empty()) throw std::invalid_argument("max_cost limits the cost given per material: give cost too");
+  design::check_constraints(c);  // the library's ranges, named as these arguments, before any work
   return c;
 }
 

@@ -117,5 +117,39 @@ TEST(DesignConstraints, TheRangeSearchKeepsToTheAllowedTipsAndMaterials) {
               ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("outside the fitted tips")));
 }
 
+// Issue 46: a NaN or negative cost was taken and a search ran 14 s for nothing; the check names the
+// option a face gave it as.
+TEST(DesignConstraintChecks, RefuseNonFiniteAndNegativeCostsNamingThem) {
+  DesignConstraints c;
+  c.cost = {{"vero", 1.0}};
+  c.max_cost = std::nan("");
+  try {
+    check_constraints(c, {"--min-tip-mm", "--max-tip-mm", "--cost", "--max-cost"});
+    FAIL() << "a NaN limit passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("--max-cost: nan"));
+  }
+  c.max_cost = 2.0;
+  c.cost["vero"] = -1.0;
+  try {
+    check_constraints(c);
+    FAIL() << "a negative cost passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cost of vero: -1"));
+  }
+}
+
+// "--allow steel" on a line of vero and DM85 left nothing, and the message did not say why.
+TEST(DesignConstraintChecks, NameAnAllowedMaterialTheLineDoesNotHold) {
+  DesignConstraints c;
+  c.materials = {"steel"};
+  try {
+    feasible_segment(kVero1mm, kDm85At4mm, c);
+    FAIL() << "a line of no allowed material had a segment";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("allowed steel: not a material of the line"));
+  }
+}
+
 }  // namespace
 }  // namespace nibrig::model::design

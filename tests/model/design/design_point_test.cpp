@@ -81,5 +81,18 @@ TEST(DesignPoint, TheLineBetweenTwoDesignsInterpolatesFractionsAndTip) {
   EXPECT_THROW(interpolate(a, b, 1.5), std::invalid_argument);
 }
 
+// Issue 46: "DM85:1e-320,vero:1" printed as a "DM85 0 %" mix; a share the sheet's whole per cent
+// shows as 0 is refused, and the smallest it shows is taken.
+TEST(DesignPointMinimumShare, RefusesAShareThatPrintsAsZeroPercent) {
+  try {
+    parse_design_point("DM85:1e-320,vero:1,tip=2mm");
+    FAIL() << "a 1e-320 share passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("below 0.005"), std::string::npos) << e.what();
+  }
+  const DesignPoint p = parse_design_point("DM85:0.005,vero:0.995,tip=2mm");
+  EXPECT_EQ(p.fraction_of("DM85"), 0.005);  // exactly as typed: no arithmetic between
+}
+
 }  // namespace
 }  // namespace nibrig::model::design
