@@ -1,5 +1,7 @@
 #include "model/space/descriptor_map.hpp"
 
+#include <sstream>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
@@ -89,6 +91,14 @@ Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd
       throw std::invalid_argument(
           "descriptor '" + map.descriptor_names[static_cast<std::size_t>(j)] + "' is not finite");
   const Eigen::VectorXd z = standardised_row(map, descriptors);
+  for (Eigen::Index j = 0; j < z.size(); ++j)
+    if (!(std::abs(z(j)) <= kFarthestStandardisedDescriptor)) {
+      std::ostringstream message;
+      message << "descriptor '" << map.descriptor_names[static_cast<std::size_t>(j)] << "' is " << descriptors(j)
+              << ": expected within " << kFarthestStandardisedDescriptor << " standard deviations of the judged "
+              << "stimuli's (" << map.descriptor_mean(j) << " ± " << map.descriptor_scale(j) << ")";
+      throw std::invalid_argument(message.str());
+    }
   Placement p;
   p.mean = map.coefficients * z;
   p.covariance = map.residual_covariance * (1.0 + z.dot(map.design_inverse * z));

@@ -37,9 +37,15 @@ struct Placement {
   Eigen::MatrixXd covariance;
 };
 
+// How far a placed tool's descriptor may lie from the judged stimuli's, in their standard
+// deviations: the map is learnt within a few, so one beyond a million is a damaged value or a unit
+// slip, and 1e308 would place the tool at infinity.
+inline constexpr double kFarthestStandardisedDescriptor = 1e6;
+
 // The prediction covariance Σ·(1 + z₀ᵀ(ZᵀZ)⁻¹z₀) holds both the scatter of judged stimuli about
 // the map and the uncertainty of the map itself (larger far from the judged descriptors). Throws
-// std::invalid_argument naming the descriptor for a wrong length or a non-finite value.
+// std::invalid_argument naming the descriptor for a wrong length, a non-finite value or one
+// farther than kFarthestStandardisedDescriptor standard deviations.
 Placement place_from_descriptors(const DescriptorMap& map, const Eigen::VectorXd& descriptors);
 
 // The same for descriptors that are themselves uncertain (a predicted tool's): their error

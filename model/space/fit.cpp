@@ -194,7 +194,9 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
 FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
                     const numeric::Progress& progress) {
   validate(problem);
-  if (options.starts < 1) throw std::invalid_argument("fit needs at least one start");
+  if (options.starts < 1 || options.starts > kMostFitStarts)
+    throw std::invalid_argument("starts: " + std::to_string(options.starts) + ": expected a number of starts, 1 to " +
+                                std::to_string(kMostFitStarts));
   if (options.pinned >= problem.stimuli)
     throw std::invalid_argument("the pinned stimulus is out of range");
   if (options.initial.size() > 0 &&

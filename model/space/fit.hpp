@@ -14,6 +14,10 @@
 
 namespace nibrig::model::space {
 
+// The most starts a fit takes (the command line's --starts checks the same): each start is a whole
+// optimisation, and a billion would exhaust memory before the first ends.
+inline constexpr int kMostFitStarts = 10000;
+
 struct FitOptions {
   int starts = 16;
   unsigned threads = 0;       // 0: one per core
@@ -43,7 +47,8 @@ struct FitResult {
   int iterations = 0;  // of the best start
 };
 
-// Throws what validate(problem) throws, and std::invalid_argument for starts < 1, a pinned
+// Throws what validate(problem) throws, and std::invalid_argument for starts outside
+// 1..kMostFitStarts ("starts: ..."), a pinned
 // stimulus out of range or an initial space of the wrong shape. `progress` is called as each start
 // finishes (done 1..starts), from the worker threads but never two at once.
 FitResult fit_space(const SpaceProblem& problem, const FitOptions& options = {},

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "model/space/fit_diagnostic.hpp"
 #include "model/space/model_choice.hpp"
 
 namespace nibrig::model::space {
@@ -49,6 +50,8 @@ FittedSpace fit_space_file(const SpaceInputs& in, const std::filesystem::path& j
                                                           : "given, not chosen by cross-validation";
   }
   out.fit = fit_space(problem, options, step(progress, kFitStep));
+  // Before anything uses its scale: a face shows these beside the fit.
+  for (auto& w : diagnose_fit(problem, out.fit).warnings()) out.warnings.push_back(std::move(w));
   SpaceFile& file = out.file;
   file.seconds = seconds_since(start);
   file.stimuli = in.judgments.stimuli;

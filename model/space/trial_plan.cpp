@@ -254,7 +254,7 @@ void write_trial_csv(const std::filesystem::path& file, const TrialList& list) {
 }
 
 TrialList read_trial_csv(const std::filesystem::path& file,
-                         const std::vector<std::string>& stimuli) {
+                         const std::vector<std::string>& stimuli, int last_stage) {
   io::CsvReader csv(file, kTrialHeader);
   const auto& header = csv.header();
   const std::size_t c_trial = header.column("trial"), c_stage = header.column("stage");
@@ -282,9 +282,11 @@ TrialList read_trial_csv(const std::filesystem::path& file,
       throw io::FormatError(file, io::field_place(line, "trial"),
                             "trial " + std::to_string(number) + " appears twice");
     const long long stage = io::parse_integer(fields[c_stage], file, line, "stage");
-    if (stage < 1 || stage > INT_MAX)
+    if (stage < 1 || stage > last_stage)
       throw io::FormatError(file, io::field_place(line, "stage"),
-                            "expected a stage >= 1, found " + std::to_string(stage));
+                            (last_stage == INT_MAX ? "expected a stage >= 1"
+                                                   : "expected a stage 1 to " + std::to_string(last_stage)) +
+                                std::string(", found ") + std::to_string(stage));
     std::size_t indices[3] = {};
     for (int k = 0; k < 3; ++k) {
       const std::string name(fields[names[k]]);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <climits>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -91,7 +92,10 @@ void write_trial_csv(const std::filesystem::path& file, const TrialList& list);
 // appearance. Throws io::FormatError naming the file, line and field and what was expected: missing
 // column, a trial number not a positive whole number or repeated, a stage < 1, an empty or unknown
 // name, the same stimulus twice in a trial, chosen other than left/right/empty.
+// `last_stage` bounds the stage column: kTwoStageLast for the paper's two-stage lists (space plan,
+// space merge), whose stage 3 would be silently left out of every count.
+inline constexpr int kTwoStageLast = 2;
 TrialList read_trial_csv(const std::filesystem::path& file,
-                         const std::vector<std::string>& stimuli = {});
+                         const std::vector<std::string>& stimuli = {}, int last_stage = INT_MAX);
 
 }  // namespace nibrig::model::space

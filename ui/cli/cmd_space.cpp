@@ -1,5 +1,6 @@
 // `nibrig space ...`: registers the perceptual-space subcommands; the work is in
 // cmd_space_fit.cpp, cmd_space_validate.cpp, cmd_space_query.cpp and cmd_space_design.cpp.
+#include "model/space/fit.hpp"
 #include "model/space/judgment_model.hpp"
 #include "model/space/objective.hpp"
 #include "ui/cli/commands.hpp"
@@ -45,7 +46,7 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)")
       ->check(in_range(0, model::space::kMaxLambda, "a weight"));
   fit->add_option("--starts", o->starts, "Random starts (default 16)")
-      ->check(whole_in_range(1, 10000, "a number of starts"));
+      ->check(whole_in_range(1, model::space::kMostFitStarts, "a number of starts"));
   fit->add_option("--seed", o->seed, "Seed of the first start (default 1)")->check(any_seed());
   fit->add_option("--bootstrap", o->bootstrap,
                   "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
@@ -97,7 +98,7 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
       ->delimiter(',')
       ->check(judgment_model_name(false, true));
   v->add_option("--starts", o->starts, "Random starts per fit (default 8)")
-      ->check(whole_in_range(1, 10000, "a number of starts"));
+      ->check(whole_in_range(1, model::space::kMostFitStarts, "a number of starts"));
   v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)")->check(any_seed());
   v->add_option("-o,--output", o->output, "Write the results as JSON")->check(file_to_write());
   v->add_option("--plots", o->plots, "Folder for the sweep plot (dimension_sweep.png)");

@@ -131,7 +131,7 @@ void run_space_plan(const SpacePlanOptions& o) {
     list.trials = space::plan_all_triplets(list.stimuli.size(), o.repetitions ? o.repetitions : 2,
                                            o.seed, o.fraction);
   } else {
-    const space::TrialList answered = space::read_trial_csv(o.input);
+    const space::TrialList answered = space::read_trial_csv(o.input, {}, space::kTwoStageLast);
     const auto counts = space::merge_trials(answered.trials, answered.choices, 1);
     if (counts.empty())
       throw model::io::FormatError(o.input, "", "no answered stage-1 trial to find ties in");
@@ -154,7 +154,7 @@ void run_space_merge(const SpaceMergeOptions& o) {
   std::vector<space::Trial> trials;
   std::vector<space::Choice> choices;
   for (const auto& file : o.lists) {
-    const space::TrialList list = space::read_trial_csv(file, stimuli);
+    const space::TrialList list = space::read_trial_csv(file, stimuli, space::kTwoStageLast);
     if (stimuli.empty()) stimuli = list.stimuli;
     trials.insert(trials.end(), list.trials.begin(), list.trials.end());
     choices.insert(choices.end(), list.choices.begin(), list.choices.end());

@@ -31,10 +31,17 @@ Space fit(const py::object& judgments_or_path, std::size_t dims, const std::opti
           double lambda, const std::string& model, int starts, unsigned seed, int bootstrap, unsigned threads,
           const py::object& progress) {
   const bool read = py::isinstance<Judgments>(judgments_or_path);
+  // A path or Judgments: anything else named, not pybind11's "Unable to cast".
+  if (!read && !py::isinstance<py::str>(judgments_or_path) &&
+      !py::isinstance(judgments_or_path, py::module_::import("os").attr("PathLike")))
+    throw py::type_error("judgments: expected a file path or Judgments from read_judgments, found " +
+                         std::string(py::str(judgments_or_path.get_type().attr("__name__"))));
   const std::filesystem::path judgments =
       read ? judgments_or_path.cast<const Judgments&>().file : judgments_or_path.cast<std::filesystem::path>();
   if (dims < 1) throw std::invalid_argument("dims is " + std::to_string(dims) + "; expected at least 1");
-  if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
+  if (starts < 1 || starts > space::kMostFitStarts)  // the library's bound, before the judgments are read
+    throw std::invalid_argument("starts: " + std::to_string(starts) + ": expected a number of starts, 1 to " +
+                                std::to_string(space::kMostFitStarts));
   if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 or more");
   const std::filesystem::path catalog = descriptors.value_or(std::filesystem::path());
   space::SpaceFitSettings settings;
