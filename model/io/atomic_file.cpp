@@ -11,9 +11,19 @@
 #include <string>
 
 #include "model/io/finite_output.hpp"
+#include "model/io/interrupt_cleanup.hpp"
+#include "model/io/job_files.hpp"
+
 namespace nibrig::model::io {
 
 namespace {
+
+thread_local OutputSet* open_set = nullptr;
+
+void discard(const std::filesystem::path& temporary) {
+  ::unlink(temporary.c_str());
+  untrack_temporary(temporary);
+}
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what, int error) {
   throw OutputFileError(file.string() + ": cannot " + what + " (" + std::strerror(error) + ")");
@@ -74,6 +84,7 @@ OutputTarget output_target(const std::filesystem::path& named) {
   switch (status.type()) {
     case fs::file_type::regular:
       if (through_proc) return {named, true};  // our own stdout redirected to a file
+      refuse_replacing_input(named, end);
       return {end, false};
     case fs::file_type::character:
     case fs::file_type::fifo:
@@ -93,22 +104,29 @@ std::filesystem::path temporary_beside(const OutputTarget& target) {
                                                         target.path.filename()
                                                   : target.path;
   temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  track_temporary(temporary);
   return temporary;
 }
 
 void commit_output(const std::filesystem::path& temporary, const OutputTarget& target) {
   if (!target.stream) {
+    if (open_set != nullptr) {
+      open_set->hold(temporary, target.path);
+      return;
+    }
     if (std::rename(temporary.c_str(), target.path.c_str()) != 0) {
       const int error = errno;
-      ::unlink(temporary.c_str());
+      discard(temporary);
       fail(target.path, "replace", error);
     }
+    untrack_temporary(temporary);
+    note_output(target.path);
     return;
   }
   const int in = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
   if (in < 0) {
     const int error = errno;
-    ::unlink(temporary.c_str());
+    discard(temporary);
     fail(temporary, "read back", error);
   }
   std::string content;
@@ -120,8 +138,42 @@ void commit_output(const std::filesystem::path& temporary, const OutputTarget& t
     content.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(in);
-  ::unlink(temporary.c_str());
+  discard(temporary);
   write_stream(target.path, content);
+}
+
+OutputSet::OutputSet() : outer_(open_set) { open_set = this; }
+
+OutputSet::~OutputSet() {
+  open_set = outer_;
+  for (const auto& [temporary, target] : held_) discard(temporary);
+}
+
+void OutputSet::hold(const std::filesystem::path& temporary, const std::filesystem::path& target) {
+  for (const auto& [other, held_target] : held_) {
+    std::error_code ec;
+    if (held_target == target || std::filesystem::equivalent(held_target, target, ec)) {
+      discard(temporary);
+      throw OutputFileError(target.string() + ": is written twice by one set of outputs; the " +
+                            "names chosen make two of its files the same");
+    }
+  }
+  held_.emplace_back(temporary, target);
+}
+
+void OutputSet::commit() {
+  open_set = outer_;
+  while (!held_.empty()) {
+    const auto [temporary, target] = held_.front();
+    held_.erase(held_.begin());
+    if (std::rename(temporary.c_str(), target.c_str()) != 0) {
+      const int error = errno;
+      discard(temporary);
+      fail(target, "replace", error);  // the destructor removes the rest
+    }
+    untrack_temporary(temporary);
+    note_output(target);
+  }
 }
 
 void write_file_atomically(const std::filesystem::path& named, std::string_view content) {
@@ -133,24 +185,28 @@ void write_file_atomically(const std::filesystem::path& named, std::string_view 
   }
   const std::filesystem::path temporary = temporary_beside(target);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, "create", errno);
+  if (fd < 0) {
+    const int error = errno;
+    untrack_temporary(temporary);
+    fail(temporary, "create", error);
+  }
   try {
     write_all(fd, content, temporary);
   } catch (...) {
     ::close(fd);
-    ::unlink(temporary.c_str());
+    discard(temporary);
     throw;
   }
   // Flushed before the rename, or a crash could leave the new name pointing at empty data.
   if (::fsync(fd) != 0) {
     const int error = errno;
     ::close(fd);
-    ::unlink(temporary.c_str());
+    discard(temporary);
     fail(temporary, "flush to disk", error);
   }
   if (::close(fd) != 0) {
     const int error = errno;
-    ::unlink(temporary.c_str());
+    discard(temporary);
     fail(temporary, "close", error);
   }
   commit_output(temporary, target);

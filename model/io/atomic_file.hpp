@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace nibrig::model::io {
 
@@ -26,7 +28,8 @@ struct OutputTarget {
   bool stream = false;         // a character device or a pipe: written in place, never renamed
 };
 
-// Throws std::runtime_error naming `named` when it is something that cannot be written.
+// Throws std::runtime_error naming `named` when it is something that cannot be written, and
+// OutputFileError when the file it would replace is an input of the running job (job_files.hpp).
 OutputTarget output_target(const std::filesystem::path& named);
 
 // Where to write a temporary whole file for `target` (beside it, so the rename stays on one file
@@ -34,8 +37,32 @@ OutputTarget output_target(const std::filesystem::path& named);
 std::filesystem::path temporary_beside(const OutputTarget& target);
 
 // Moves a finished temporary file into place: renamed over a regular target, or copied into a
-// stream and then removed. Throws naming the target; the temporary is removed on failure.
+// stream and then removed. Throws naming the target; the temporary is removed on failure. Inside
+// an OutputSet, a regular target's rename waits for the set's commit().
 void commit_output(const std::filesystem::path& temporary, const OutputTarget& target);
+
+// Files that appear together or not at all (a 3MF with its STLs, recipe and print sheet): while one
+// lives on this thread, every finished output is held back as its temporary; commit() renames them
+// all into place, and without commit() they are removed. A full disk or a refusal halfway through
+// then leaves an earlier set whole, never new files beside old ones.
+class OutputSet {
+ public:
+  OutputSet();
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  // Throws OutputFileError naming the target when a rename fails; those not yet renamed are removed.
+  void commit();
+
+  // For commit_output: holds a finished temporary back. Throws OutputFileError when two outputs of
+  // the set are the same file.
+  void hold(const std::filesystem::path& temporary, const std::filesystem::path& target);
+
+ private:
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> held_;  // temporary, target
+  OutputSet* outer_;
+};
 
 // Throws std::runtime_error naming the file and the system's reason when any step fails; the
 // temporary file is removed then. A ".csv" file's text is first checked by check_csv_finite

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "model/io/format_error.hpp"
+#include "model/io/job_files.hpp"
 
 namespace nibrig::model::io {
 
@@ -30,6 +31,7 @@ std::string read_bounded_file(const std::filesystem::path& file, std::size_t max
                       std::string("cannot open for reading") +
                           (error != 0 ? std::string(" (") + std::strerror(error) + ")" : ""));
   }
+  note_input(file);
   std::string text;
   char chunk[1 << 16];
   while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {

@@ -6,6 +6,7 @@
 #include "model/io/json_fields.hpp"
 #include "model/io/rig_session.hpp"
 #include "model/io/rig_session_json.hpp"
+#include "model/io/job_files.hpp"
 
 namespace nibrig::model::io {
 
@@ -67,6 +68,7 @@ std::vector<float> read_stream(const std::filesystem::path& wav, double expected
     throw FormatError(
         wav, "", std::string("expected a WAV file (libsndfile: ") + sf_strerror(nullptr) + ")");
   }
+  note_input(wav);
   const int major = info.format & SF_FORMAT_TYPEMASK;
   if (major != SF_FORMAT_WAV && major != SF_FORMAT_WAVEX && major != SF_FORMAT_RF64) {
     throw FormatError(wav, "header", "expected a WAV file, found another audio container");

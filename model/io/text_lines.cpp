@@ -13,6 +13,7 @@
 
 #include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
+#include "model/io/job_files.hpp"
 
 namespace nibrig::model::io {
 
@@ -46,6 +47,7 @@ TextLineReader::TextLineReader(std::filesystem::path file) : file_(std::move(fil
                       std::string("cannot open for reading (") +
                           (error != 0 ? std::strerror(error) : "out of memory") + ")");
   }
+  note_input(file_);
   gzbuffer(gz_, kTextReadChunk);
   buffer_.resize(kTextReadChunk);
 }
