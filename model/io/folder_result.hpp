@@ -8,12 +8,18 @@
 
 namespace nibrig::model::io {
 
+// The list a result keeps of what it wrote: "<kind> <bytes> <modified ns> <relative path>" a line,
+// kind f (file) or d (folder).
+inline constexpr const char* kFolderResultFiles = ".nibrig-files";
+
 class FolderResult {
  public:
   // `target`: the folder the user named. It may be new, empty, or an earlier result of the same
-  // kind, recognised by the file `marker` in it; any other folder (or a file) is refused with a
-  // std::runtime_error naming it, before anything is made. Work folders left beside `target` by
-  // runs that were killed are removed.
+  // kind, recognised by the file `marker` in it and holding only what that result wrote, unchanged
+  // (its list, kFolderResultFiles, says what): anything else there is a person's own, and replacing
+  // the folder would delete it. Any other folder (or a file) is refused with a std::runtime_error
+  // naming it and what is in the way, before anything is made. Work folders left beside `target`
+  // by runs that were killed are removed.
   FolderResult(std::filesystem::path target, std::string marker);
   // Without commit(), the work folder and all in it are removed.
   ~FolderResult();

@@ -24,9 +24,12 @@ std::size_t entries_in(const fs::path& folder) {
 
 TEST(FolderResult, ACommittedResultReplacesTheEarlierOneWhole) {
   const auto dir = nibrig::test::scratch_dir("folder_result_commit");
-  fs::create_directories(dir / "report");
-  nibrig::test::write_text(dir / "report" / "SUMMARY.json", "{}");
-  nibrig::test::write_text(dir / "report" / "old_only.txt", "old");
+  {
+    FolderResult earlier(dir / "report", "SUMMARY.json");
+    nibrig::test::write_text(earlier.work() / "SUMMARY.json", "{}");
+    nibrig::test::write_text(earlier.work() / "old_only.txt", "old");
+    earlier.commit();
+  }
   {
     FolderResult result(dir / "report", "SUMMARY.json");
     EXPECT_EQ(result.work().parent_path(), dir);
@@ -38,6 +41,46 @@ TEST(FolderResult, ACommittedResultReplacesTheEarlierOneWhole) {
   EXPECT_FALSE(fs::exists(dir / "report" / "old_only.txt"));
   EXPECT_TRUE(fs::exists(dir / "report" / "SUMMARY.json"));
   EXPECT_EQ(entries_in(dir), 1u) << "the work folder and the earlier report are gone";
+}
+
+// The trial's `nibrig demo -o out/dm_old` over an earlier demo beside which a person kept notes.
+TEST(FolderResult, AnEarlierResultHoldingAPersonsFilesIsRefusedAndKept) {
+  const auto dir = nibrig::test::scratch_dir("folder_result_persons");
+  const auto earlier_report = [&] {
+    fs::remove_all(dir / "report");
+    FolderResult earlier(dir / "report", "SUMMARY.json");
+    nibrig::test::write_text(earlier.work() / "SUMMARY.json", "{}");
+    fs::create_directories(earlier.work() / "spectra");
+    nibrig::test::write_text(earlier.work() / "spectra" / "a.png", "png");
+    earlier.commit();
+  };
+  const auto refusal = [&] {
+    try {
+      FolderResult again(dir / "report", "SUMMARY.json");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  earlier_report();
+  nibrig::test::write_text(dir / "report" / "notes.txt", "mine");
+  fs::create_directories(dir / "report" / "mine");
+  std::string message = refusal();
+  EXPECT_NE(message.find("notes.txt"), std::string::npos) << message;
+  EXPECT_NE(message.find("mine"), std::string::npos) << message;
+  EXPECT_TRUE(fs::exists(dir / "report" / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "report" / "spectra" / "a.png"));
+
+  earlier_report();  // a report file the person edited is theirs now
+  nibrig::test::write_text(dir / "report" / "spectra" / "a.png", "an edited png");
+  message = refusal();
+  EXPECT_NE(message.find("spectra/a.png"), std::string::npos) << message;
+
+  fs::remove_all(dir / "report");  // one without the list (an older nibrig's, or hand-made)
+  fs::create_directories(dir / "report");
+  nibrig::test::write_text(dir / "report" / "SUMMARY.json", "{}");
+  EXPECT_NE(refusal().find(kFolderResultFiles), std::string::npos);
+  EXPECT_EQ(entries_in(dir), 1u) << "nothing made beside it";
 }
 
 TEST(FolderResult, AFailedRunLeavesTheEarlierResultAndNoWorkFolder) {
