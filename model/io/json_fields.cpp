@@ -48,6 +48,11 @@ class DuplicateKeys {
     switch (event) {
       case Event::object_start:
       case Event::array_start:
+        if (open_.size() >= kMaxJsonDepth)
+          throw FormatError(file_, place(child_path()),
+                            "nested more than " + std::to_string(kMaxJsonDepth) +
+                                " objects or arrays deep; nibrig's files nest a few levels (a "
+                                "catalog 6), so this is not one of them");
         open_.push_back({event == Event::object_start, {}, {}, 0, child_path()});
         break;
       case Event::key: {

@@ -13,6 +13,9 @@ namespace nibrig::model::io::json_fields {
 // Parses a whole file; syntax errors name the line. An empty file, a file larger than
 // kMaxJsonBytes and a key that appears twice in one object are errors.
 inline constexpr std::size_t kMaxJsonBytes = std::size_t{256} << 20;
+// Objects and arrays nested deeper than this are refused: nibrig's own files nest a few levels (a
+// catalog's spectra are the deepest, 6), and a file nested 100,000 deep took gigabytes to parse.
+inline constexpr std::size_t kMaxJsonDepth = 64;
 nlohmann::json parse_file(const std::filesystem::path& file);
 
 // "parent.key" and "parent[i]"; an empty parent gives "key".
