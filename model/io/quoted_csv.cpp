@@ -18,9 +18,10 @@ std::string csv_field(std::string_view text) {
 
 std::vector<std::string> split_quoted_fields(std::string_view line,
                                              const std::filesystem::path& file,
-                                             std::size_t line_number) {
+                                             std::size_t line_number, char sep) {
   std::vector<std::string> fields(1);
   bool quoted = false;
+  bool closed = false;  // the field's closing quote was read: only a separator may follow
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
@@ -31,11 +32,19 @@ std::vector<std::string> split_quoted_fields(std::string_view line,
         ++i;
       } else {
         quoted = false;
+        closed = true;
       }
-    } else if (c == '"' && fields.back().empty()) {
-      quoted = true;
-    } else if (c == ',') {
+    } else if (c == sep) {
       fields.emplace_back();
+      closed = false;
+    } else if (closed) {
+      throw FormatError(file, line_place(line_number),
+                        "text after a quoted field's closing quote (field " +
+                            std::to_string(fields.size()) + "): expected '" + std::string(1, sep) +
+                            "' or the line's end");
+    } else if (c == '"' && fields.back().find_first_not_of(" \t") == std::string::npos) {
+      fields.back().clear();  // spaces before an opening quote are not part of the field
+      quoted = true;
     } else {
       fields.back() += c;
     }

@@ -1,6 +1,6 @@
 // CSV tables whose text fields may be quoted: names a user chose (a stimulus "a,b/c"), reasons in
 // words. A quoted field is enclosed in '"' with any '"' inside doubled, as spreadsheets write it.
-// The formats read through CsvReader (text_lines.hpp) quote nothing.
+// CsvReader (text_lines.hpp) reads quoted fields through split_quoted_fields too.
 #pragma once
 
 #include <filesystem>
@@ -16,10 +16,11 @@ std::string csv_field(std::string_view text);
 std::string csv_quoted(std::string_view text);
 
 // A line's fields, quotes removed. Throws FormatError naming `file` and the line for a quote that
-// is not closed before the line ends (a quoted field holds no line break here).
+// is not closed before the line ends (a quoted field holds no line break here), or text between a
+// closing quote and the next separator.
 std::vector<std::string> split_quoted_fields(std::string_view line,
                                              const std::filesystem::path& file,
-                                             std::size_t line_number);
+                                             std::size_t line_number, char sep = ',');
 
 // The header and the rows, each row as many fields as the header. Blank lines at the very end are
 // tolerated (editors add them); a blank line with rows after it is an error. Throws FormatError

@@ -14,6 +14,7 @@
 #include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/job_files.hpp"
+#include "model/io/quoted_csv.hpp"
 
 namespace nibrig::model::io {
 
@@ -280,7 +281,12 @@ CsvHeader::CsvHeader(std::string_view line, std::filesystem::path file, std::siz
   // A byte-order mark written by spreadsheet programs is not part of the first column's name.
   constexpr std::string_view kBom = "\xEF\xBB\xBF";
   if (line.substr(0, kBom.size()) == kBom) line.remove_prefix(kBom.size());
-  for (std::string_view name : split_fields(line, sep)) names_.emplace_back(trim(name));
+  if (line.find('"') == std::string_view::npos) {
+    for (std::string_view name : split_fields(line, sep)) names_.emplace_back(trim(name));
+  } else {
+    for (const std::string& name : split_quoted_fields(line, file_, line_number, sep))
+      names_.emplace_back(trim(name));
+  }
 }
 
 std::optional<std::size_t> CsvHeader::find(std::string_view name) const {
@@ -325,7 +331,12 @@ bool CsvReader::next(std::vector<std::string_view>& fields) {
           lines_.file(), line_place(first_blank),
           "blank line inside the data (expected a row like " + expected_header_ + ")");
     }
-    fields = split_fields(row_, sep_);
+    if (row_.find('"') == std::string::npos) {
+      fields = split_fields(row_, sep_);
+    } else {
+      unquoted_ = split_quoted_fields(row_, lines_.file(), lines_.line_number(), sep_);
+      fields.assign(unquoted_.begin(), unquoted_.end());
+    }
     // More fields than the header names is a wrong or damaged file, refused like fewer: a reader
     // finds its columns by name and would silently take the wrong ones.
     if (fields.size() > header_.names().size()) {

@@ -63,7 +63,8 @@ class TextLineReader {
 // nullopt when the whole text is UTF-8 (ASCII included).
 std::optional<std::size_t> invalid_utf8_at(std::string_view text);
 
-// Splits a line at every separator; no quoting (none of the formats read here quote fields).
+// Splits a line at every separator; no quoting (for names and stamps; CsvReader and CsvHeader take
+// fields quoted as RFC 4180 and spreadsheets write them).
 std::vector<std::string_view> split_fields(std::string_view line, char sep = ',');
 
 // A field as it may appear in an error message: quoted, control bytes and bytes that are not UTF-8
@@ -117,7 +118,8 @@ class CsvHeader {
   std::vector<std::string> names_;
 };
 
-// The data rows of a CSV file after its header line. Blank lines at the very end are tolerated
+// The data rows of a CSV file after its header line. A field may be quoted ("cryon/office", with
+// '""' for a quote inside), as spreadsheets write text. Blank lines at the very end are tolerated
 // (editors add them); a blank line with data after it is an error, never skipped silently.
 class CsvReader {
  public:
@@ -150,6 +152,7 @@ class CsvReader {
   char sep_;
   std::string expected_header_;
   std::string row_;
+  std::vector<std::string> unquoted_;  // a row's fields when it quoted some
   CsvHeader header_;
 };
 

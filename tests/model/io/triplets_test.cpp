@@ -119,6 +119,30 @@ TEST(Triplets, CsvRoundTrip) {
   }
 }
 
+// A spreadsheet quotes text fields ("cryon/office"); read as text, the quotes made a 16th stimulus
+// of a 15-tool study. RFC 4180: a quoted field's quotes are not part of it, '""' is one quote.
+TEST(Triplets, QuotedFieldsAreTheSameStimuliAsUnquoted) {
+  const auto dir = nibrig::test::scratch_dir("triplets_quoted");
+  nibrig::test::write_text(dir / "t.csv",
+                           "\"reference\",\"a\",\"b\",\"count_a\",\"count_b\"\r\n"
+                           "cryon/office,stab/office,vero/office,3,1\r\n"
+                           "\"cryon/office\",\"vero/office\",\"stab/office\",\"2\",0\r\n"
+                           "\"pencil \"\"8B\"\"\",cryon/office,vero/office,1,1\r\n");
+  const TripletSet set = read_triplets(dir / "t.csv");
+  EXPECT_EQ(set.stimuli, (std::vector<std::string>{"cryon/office", "stab/office", "vero/office",
+                                                   "pencil \"8B\""}));
+  ASSERT_EQ(set.triplets.size(), 3u);
+  EXPECT_EQ(set.triplets[1].reference, 0u);
+  EXPECT_EQ(set.triplets[1].count_a, 2);
+
+  nibrig::test::write_text(dir / "open.csv", "reference,a,b,count_a,count_b\n\"cryon,a,b,1,0\n");
+  expect_message_names(format_error_of([&] { read_triplets(dir / "open.csv"); }),
+                       {"open.csv", "line 2", "not closed"});
+  nibrig::test::write_text(dir / "after.csv", "reference,a,b,count_a,count_b\n\"cryon\"x,a,b,1,0\n");
+  expect_message_names(format_error_of([&] { read_triplets(dir / "after.csv"); }),
+                       {"after.csv", "line 2", "closing quote"});
+}
+
 TEST(Triplets, WriterRefusesWhatTheFormatCannotHold) {
   const auto dir = nibrig::test::scratch_dir("triplets_writer");
   TripletSet out_of_range{{"a", "b"}, {{0, 1, 2, 1, 0, ""}}, {}};
