@@ -156,6 +156,9 @@ void FileDialog::draw() {
   ImGui::EndChild();
   if (!open_now.empty()) choose(open_now);
   ImGui::SetNextItemWidth(-200.0f);
+  // The name field has the keyboard when the dialog opens, as in a desktop dialog: a name can be
+  // typed at once.
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
   // Enter takes what the field holds, whether it was being edited (typed: the field reports that
   // Enter itself) or not (the list had the focus after a click); one call either way.
   const bool typed = ImGui::InputText("##name", name_, sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);

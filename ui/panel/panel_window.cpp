@@ -91,11 +91,25 @@ PanelWindow::PanelWindow(const WindowSettings& settings) {
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
+  // Keys and characters go through keys_ (key_queue.hpp): ImGui's callbacks, just installed, are
+  // called from begin_frame instead of from the event poll.
+  glfwSetWindowUserPointer(window_, this);
+  imgui_key_ = glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+    static_cast<PanelWindow*>(glfwGetWindowUserPointer(w))
+        ->keys_.push({KeyEvent::Kind::key, key, scancode, action, mods, 0});
+  });
+  imgui_char_ = glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned int codepoint) {
+    static_cast<PanelWindow*>(glfwGetWindowUserPointer(w))
+        ->keys_.push({KeyEvent::Kind::character, 0, 0, 0, 0, codepoint});
+  });
   job_done_hook = &PanelWindow::wake;
 }
 
 PanelWindow::~PanelWindow() {
   job_done_hook = nullptr;
+  // ImGui's shutdown puts back what was there before its own callbacks.
+  glfwSetKeyCallback(window_, imgui_key_);
+  glfwSetCharCallback(window_, imgui_char_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -106,6 +120,11 @@ PanelWindow::~PanelWindow() {
 bool PanelWindow::should_close() const { return glfwWindowShouldClose(window_); }
 
 bool PanelWindow::wait_events(double timeout_s) {
+  if (keys_.waiting() > 0) {
+    // A held-back release must come on the next frame, not after a second's sleep (ImGui would
+    // count the key as held that long, and repeat it in a text field).
+    return true;
+  }
   const auto start = std::chrono::steady_clock::now();
   glfwWaitEventsTimeout(timeout_s);
   // GLFW does not say why the wait ended: one that ended early had an event.
@@ -118,6 +137,13 @@ void PanelWindow::contents_changed() { contents_lost = true; }
 
 void PanelWindow::begin_frame(const std::function<void(ImGuiIO&)>& input) {
   glfwPollEvents();
+  keys_.deliver([this](const KeyEvent& e) {
+    if (e.kind == KeyEvent::Kind::key) {
+      if (imgui_key_) imgui_key_(window_, e.key, e.scancode, e.action, e.mods);
+    } else if (imgui_char_) {
+      imgui_char_(window_, e.codepoint);
+    }
+  });
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   if (input) input(ImGui::GetIO());

@@ -9,6 +9,8 @@
 #include <functional>
 #include <string>
 
+#include "ui/panel/key_queue.hpp"
+
 struct GLFWwindow;
 struct ImGuiIO;
 
@@ -37,7 +39,8 @@ class PanelWindow {
   PanelWindow& operator=(const PanelWindow&) = delete;
 
   bool should_close() const;
-  // Polls events and starts an ImGui frame. `input`, when given, may then change what the back end
+  // Polls events and starts an ImGui frame. Key and character events reach ImGui through a
+  // KeyQueue: a key pressed and released between two frames is seen down for one frame. `input`, when given, may then change what the back end
   // read from the window (mouse, keys) before ImGui sees it: scripted sessions and tests click
   // through the real window this way.
   void begin_frame(const std::function<void(ImGuiIO&)>& input = {});
@@ -49,6 +52,7 @@ class PanelWindow {
   std::size_t frames_skipped() const { return skipped_; }
   // Sleeps until input arrives or `timeout_s` passes (an idle panel waits here instead of drawing);
   // true when input (or a wake()) ended the wait. The events are then handled by begin_frame.
+  // Returns at once while key events wait for a frame (a tap's release held back).
   bool wait_events(double timeout_s);
   // Ends a wait_events() from any thread (a job that finished has something to show).
   static void wake();
@@ -61,6 +65,10 @@ class PanelWindow {
 
  private:
   GLFWwindow* window_ = nullptr;
+  KeyQueue keys_;
+  // ImGui's own key and character callbacks, called from begin_frame with what keys_ hands over.
+  void (*imgui_key_)(GLFWwindow*, int, int, int, int) = nullptr;
+  void (*imgui_char_)(GLFWwindow*, unsigned int) = nullptr;
   std::string ini_file_;  // ImGui keeps the pointer
   bool skip_unchanged_ = false;
   std::uint64_t shown_hash_ = 0;  // of the draw data on screen
