@@ -44,6 +44,34 @@ std::vector<space::Trial> validation_pairs(std::size_t stimuli, std::size_t budg
   return trials;
 }
 
+// The paper's split for `budget` main trials (space::two_stage_for_budget), cut down where it would
+// ask for more: a small budget's one stage-two triplet repeated ten times made "5 main trials" a
+// plan of up to 14. Stage 1 keeps its two repetitions while the budget holds two; stage 2 gets
+// what is left, as whole repetitions of its ties, fewer repetitions when not even one tie's ten fit.
+space::TwoStageDesign two_stage_within_budget(std::size_t stimuli, std::size_t budget) {
+  space::TwoStageDesign d = space::two_stage_for_budget(stimuli, budget);
+  const std::size_t triplets = space::triplet_count(stimuli);
+  std::size_t one = paper_stage_one_trials(d, triplets);
+  if (one > budget) {
+    if (budget < static_cast<std::size_t>(d.stage_one_repetitions)) d.stage_one_repetitions = 1;
+    const std::size_t count = std::max<std::size_t>(1, budget / static_cast<std::size_t>(d.stage_one_repetitions));
+    d.stage_one_fraction = static_cast<double>(count) / static_cast<double>(triplets);
+    one = paper_stage_one_trials(d, triplets);
+  }
+  const std::size_t one_triplets = one / static_cast<std::size_t>(d.stage_one_repetitions);
+  const std::size_t left = budget - std::min(budget, one);
+  const auto reps = static_cast<std::size_t>(d.stage_two_repetitions);
+  if (stage_two_at_most(d, one_triplets) > left) {
+    if (left >= reps) {
+      d.stage_two_triplets = left / reps;
+    } else {
+      d.stage_two_triplets = 1;
+      d.stage_two_repetitions = static_cast<int>(left);  // 0: no stage 2 (TrialSequence skips it)
+    }
+  }
+  return d;
+}
+
 }  // namespace
 
 PlanSizes plan_sizes(const StudyDefinition& d) {
@@ -52,7 +80,7 @@ PlanSizes plan_sizes(const StudyDefinition& d) {
   PlanSizes sizes;
   sizes.two_stage = d.trials == 0 || d.plan != PlanKind::two_stage
                         ? space::TwoStageDesign{}
-                        : space::two_stage_for_budget(n, d.trials);
+                        : two_stage_within_budget(n, d.trials);
   const std::size_t one = paper_stage_one_trials(sizes.two_stage, triplets);
   const std::size_t one_triplets = one / static_cast<std::size_t>(sizes.two_stage.stage_one_repetitions);
   const std::size_t paper_total = one + stage_two_at_most(sizes.two_stage, one_triplets);
@@ -178,7 +206,7 @@ void TrialSequence::plan_next_part() {
           }
         const auto& d = sizes_.two_stage;
         const auto ties = space::select_ties(space::merge_trials(one, answers), d.ties);
-        const auto two = ties.empty() ? std::vector<space::Trial>{}
+        const auto two = ties.empty() || d.stage_two_repetitions == 0 ? std::vector<space::Trial>{}
                                       : space::plan_stage_two(ties, d.stage_two_repetitions,
                                                               generator_(), d.stage_two_triplets);
         stage_two_size_ = two.size();
