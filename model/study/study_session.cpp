@@ -57,7 +57,7 @@ void check_study_settings(const StudySettings& s) {
   if (exists && !s.resume)
     throw std::invalid_argument("participant " + s.participant + " already has answers in " +
                                 s.study.string() +
-                                ": continue with --resume, or give a new participant ID");
+                                ": continue with " + s.resume_named + ", or give a new participant ID");
   if (!exists && s.resume)
     throw std::invalid_argument("participant " + s.participant + " has no session in " +
                                 s.study.string() + " to resume");

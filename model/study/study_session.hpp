@@ -90,6 +90,8 @@ struct StudySettings {
   bool resume = false;
   std::string respondent = "a person";  // recorded in participant.json
   unsigned threads = 0;                 // the adaptive plan's refits
+  // How the face asks to resume, named where a taken ID is refused: an option, a checkbox.
+  std::string resume_named = "--resume";
 };
 
 // The participant's folder (study/participants/ID).

@@ -47,6 +47,7 @@ study::StudySettings ExperimentView::study_settings() const {
   settings.participant = form_.participant;
   settings.resume = form_.resume;
   settings.respondent = "a person (the panel)";
+  settings.resume_named = "\"resume this participant\" (ticked)";
   return settings;
 }
 
