@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "model/io/rig_session_json.hpp"
 #include "rig/rig.hpp"
 #include "rig/speed_profile.hpp"
 
@@ -27,9 +28,10 @@ enum class RigKind { simulated, usb, replay };
 inline constexpr double kShortestCaptureSeconds = 0.01;
 inline constexpr double kLightestLoadN = 0.01;
 inline constexpr double kHeaviestLoadN = 50.0;
-// An accelerometer's m/s² at full scale (`calibrate --accelerometer`): 0.001 g to 100 000 g.
-inline constexpr double kLeastAccelerometerM_s2 = 0.01;
-inline constexpr double kMostAccelerometerM_s2 = 1e6;
+// An accelerometer's m/s² at full scale (`calibrate --accelerometer`): 0.001 g to 100 000 g, the
+// range a session's reader holds session.json to (model/io/rig_session_json.hpp).
+inline constexpr double kLeastAccelerometerM_s2 = model::io::session_json::kLeastAccelerometerM_s2PerUnit;
+inline constexpr double kMostAccelerometerM_s2 = model::io::session_json::kMostAccelerometerM_s2PerUnit;
 
 // Throw std::invalid_argument "<who>: <value>: expected ..." for a value outside those ranges (or
 // not finite); `who` is the option or argument that set it ("--load", "load").

@@ -1,9 +1,11 @@
 #include "model/io/rig_session_json.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/io/paper_friction.hpp"
 
 namespace nibrig::model::io::session_json {
 
@@ -33,16 +35,24 @@ std::optional<Problem> check(const RigSessionInfo& info) {
   if (info.tool.empty()) return Problem{"tool", "expected a tool id, found an empty string"};
   if (info.surface.empty())
     return Problem{"surface", "expected a surface id, found an empty string"};
-  if (!std::isfinite(info.normal_load_N) || info.normal_load_N < 0.0) {
-    return Problem{"normal_load_N", "expected a load in newtons (>= 0), found " +
-                                        nlohmann::json(info.normal_load_N).dump()};
+  // 0: no load (a session not about friction); else the range a recording's load is held to
+  // (paper_friction.hpp): a load of 1e-320 N divided the tangential force into infinities.
+  if (const double load = info.normal_load_N;
+      !(load == 0.0 || (load >= kLightestFrictionLoadN && load <= kHeaviestFrictionLoadN))) {
+    std::ostringstream what;
+    what << "expected a load in newtons, 0 or " << kLightestFrictionLoadN << " to " << kHeaviestFrictionLoadN
+         << ", found " << nlohmann::json(load).dump();
+    return Problem{"normal_load_N", what.str()};
   }
   if (auto p = check_rate(info.acceleration_rate_hz, "acceleration_rate_hz")) return p;
   if (auto p = check_rate(info.speed_rate_hz, "speed_rate_hz")) return p;
   if (auto p = check_rate(info.force_rate_hz, "force_rate_hz")) return p;
-  if (auto p = check_positive(info.calibration.accelerometer_m_s2_per_unit,
-                              "calibration.accelerometer_m_s2_per_unit")) {
-    return p;
+  if (const double a = info.calibration.accelerometer_m_s2_per_unit;
+      !(a >= kLeastAccelerometerM_s2PerUnit && a <= kMostAccelerometerM_s2PerUnit)) {
+    std::ostringstream what;
+    what << "expected an accelerometer's m/s² at full scale, " << kLeastAccelerometerM_s2PerUnit << " to "
+         << kMostAccelerometerM_s2PerUnit << ", found " << nlohmann::json(a).dump();
+    return Problem{"calibration.accelerometer_m_s2_per_unit", what.str()};
   }
   if (auto p =
           check_positive(info.calibration.force_counts_per_N, "calibration.force_counts_per_N")) {

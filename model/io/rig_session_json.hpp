@@ -20,13 +20,20 @@ inline constexpr int kVersion = 1;
 inline constexpr std::array<const char*, 4> kStreams = {"acceleration", "speed", "normal_force",
                                                         "tangential_force"};
 
+// The range of calibration.accelerometer_m_s2_per_unit, the accelerometer's m/s² at its stream's full
+// scale (`calibrate --accelerometer`): 0.001 g to 100 000 g. Held here, where both the session's
+// reader and the rig's requests (rig/rig_request.hpp, whose --accelerometer checks the same) see
+// it: a positive 1e-320 made every sample a subnormal nothing and 1e308 an overflow.
+inline constexpr double kLeastAccelerometerM_s2PerUnit = 0.01;
+inline constexpr double kMostAccelerometerM_s2PerUnit = 1e6;
+
 struct Problem {
   std::string field;  // JSON path
   std::string what;
 };
 
 // The first thing wrong with `info`, if any (empty tool, rates that are not whole positive hertz,
-// non-positive calibration factors, ...).
+// non-positive calibration factors, an accelerometer scale outside the range above, ...).
 std::optional<Problem> check(const RigSessionInfo& info);
 
 // The rate session.json declares for stream k of kStreams.

@@ -12,6 +12,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "model/io/rig_session_json.hpp"
 #include "tests/model/io/io_test_files.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -338,6 +339,30 @@ TEST_F(SessionMalformed, BadFieldIsNamed) {
   set_json(j);
   expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
                        {"field 'force_rate_hz'", "expected a whole number of hertz"});
+}
+
+// Issue 46: a positive 1e-320 passed as an accelerometer scale, and the analysis then met every
+// sample as a subnormal nothing. The scale is held to the range a rig's request is (--accelerometer,
+// 0.01 to 1e6 m/s² at full scale), by the reader and the writer alike.
+TEST_F(SessionMalformed, AccelerometerScaleOutsideTheRigsRange) {
+  for (const double scale : {1e-320, 1e-3, 1e7}) {
+    auto j = json();
+    j["calibration"]["accelerometer_m_s2_per_unit"] = scale;
+    set_json(j);
+    expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
+                         {"session.json", "field 'calibration.accelerometer_m_s2_per_unit'",
+                          "expected an accelerometer's m/s² at full scale, 0.01 to 1e+06"});
+  }
+  for (const double scale : {session_json::kLeastAccelerometerM_s2PerUnit, 49.05,
+                             session_json::kMostAccelerometerM_s2PerUnit}) {
+    auto j = json();
+    j["calibration"]["accelerometer_m_s2_per_unit"] = scale;
+    set_json(j);
+    EXPECT_EQ(read_rig_session(folder_).info.calibration.accelerometer_m_s2_per_unit, scale);
+  }
+  RigSessionInfo tiny = rig_info();
+  tiny.calibration.accelerometer_m_s2_per_unit = 1e-320;
+  EXPECT_THROW(RigSessionWriter(dir_ / "tiny", tiny), std::invalid_argument);
 }
 
 TEST_F(SessionMalformed, WrongSampleRate) {
