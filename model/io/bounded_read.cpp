@@ -7,6 +7,7 @@
 
 #include "model/io/format_error.hpp"
 #include "model/io/job_files.hpp"
+#include "model/io/pipe_spool.hpp"
 
 namespace nibrig::model::io {
 
@@ -24,7 +25,7 @@ std::string read_bounded_file(const std::filesystem::path& file, std::size_t max
   if (std::filesystem::is_directory(file, ec)) {
     throw FormatError(file, "", "is a folder, expected " + std::string(kind));
   }
-  std::ifstream in(file, std::ios::binary);
+  std::ifstream in(readable_path(file), std::ios::binary);
   if (!in) {
     const int error = errno;
     throw FormatError(file, "",

@@ -14,6 +14,7 @@
 #include "model/io/bounded_read.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/job_files.hpp"
+#include "model/io/pipe_spool.hpp"
 #include "model/io/quoted_csv.hpp"
 
 namespace nibrig::model::io {
@@ -41,7 +42,7 @@ TextLineReader::TextLineReader(std::filesystem::path file) : file_(std::move(fil
   if (std::filesystem::is_directory(file_, ec)) {
     throw FormatError(file_, "", "is a folder, expected a file");
   }
-  gz_ = gzopen(file_.c_str(), "rb");
+  gz_ = gzopen(readable_path(file_).c_str(), "rb");
   if (gz_ == nullptr) {
     const int error = errno;
     throw FormatError(file_, "",
