@@ -53,7 +53,7 @@ MODELTRANSFORM translation_mm(const std::array<double, 3>& offset_m) {
 
 void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
   if (part.regions.empty()) throw std::invalid_argument(file.string() + ": a 3MF part needs at least one region");
-  const OutputTarget target = output_target(file);
+  output_target(file);  // refused before the model is built: a folder, a device, an input
   const Lib3mfCall call(file.string());
   PLib3MFModel* raw = nullptr;
   call(lib3mf_createmodel(&raw), nullptr, "create a model");
@@ -117,15 +117,14 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
   PLib3MFModelWriter* writer_raw = nullptr;
   call(lib3mf_model_querywriter(model.get(), "3mf", &writer_raw), model.get(), "make a 3MF writer");
   const Owned writer(writer_raw);
-  const auto temporary = temporary_beside(target);
-  try {
-    call(lib3mf_writer_writetofileutf8(writer.get(), temporary.c_str()), writer.get(), "write the file");
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
-  commit_output(temporary, target);
+  // Made in memory and written by write_file_atomically: lib3mf's own file writer aborts the
+  // process when the disk is full (its exception escapes a destructor).
+  ULONG64 size = 0;
+  call(lib3mf_writer_getstreamsize(writer.get(), &size), writer.get(), "measure the file");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  call(lib3mf_writer_writetobuffer(writer.get(), reinterpret_cast<BYTE*>(bytes.data()), size), writer.get(),
+       "write the file");
+  write_file_atomically(file, bytes);
 }
 
 std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file) {

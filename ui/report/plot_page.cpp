@@ -255,6 +255,20 @@ void PlotPage::cells(double x0, double y0, double x1, double y1, const std::vect
   page_space();
 }
 
+namespace {
+
+// Cairo does not report a failed write (a full disk) to PLplot: a PNG is whole only when it ends
+// with its IEND chunk.
+bool png_is_whole(const std::filesystem::path& file) {
+  static constexpr unsigned char kIend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+  std::ifstream in(file, std::ios::binary);
+  in.seekg(-12, std::ios::end);
+  char tail[12] = {};
+  return in.read(tail, 12) && std::memcmp(tail, kIend, 12) == 0;
+}
+
+}  // namespace
+
 void PlotPage::commit() {
   finish_stream();
   if (error_code_ != 0) {
@@ -264,6 +278,10 @@ void PlotPage::commit() {
   const auto bytes = std::filesystem::file_size(temporary_, ec);
   if (ec || bytes == 0) {
     throw std::runtime_error(figure(name_) + ": PLplot wrote nothing to " + temporary_.string());
+  }
+  if (!png_is_whole(temporary_)) {
+    throw std::runtime_error(figure(name_) + ": cannot write " + png_.string() + ": the image was cut off after " +
+                             std::to_string(bytes) + " bytes (is the disk full?)");
   }
   try {
     model::io::commit_output(temporary_, target_);
