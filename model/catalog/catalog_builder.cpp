@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "model/catalog/tool_names.hpp"
+#include "model/io/job_files.hpp"
 #include "model/io/paper_friction.hpp"
 #include "model/io/paper_recording.hpp"
 #include "model/io/paper_vibration.hpp"
@@ -93,6 +94,7 @@ FoundRecordings find_recordings(const std::filesystem::path& folder) {
     if (is_under(path, "drawing")) continue;
     try {
       found.files.push_back({path, classify_recording(path)});
+      io::note_input(path);  // to be read: no output of this job may replace it
     } catch (const std::exception& e) {
       found.skipped.push_back(e.what());
     }

@@ -25,6 +25,8 @@ struct FoundRecordings {
   std::vector<std::string> skipped;  // "<path>: <reason>" for files that are not recordings
 };
 
+// Each file found is noted as an input of the running job (io/job_files.hpp): an output named onto
+// one is refused before the analysis starts, not after.
 FoundRecordings find_recordings(const std::filesystem::path& folder);
 
 // Which kind of recording a single path is; throws std::runtime_error naming the path if none.

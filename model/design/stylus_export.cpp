@@ -140,6 +140,8 @@ StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const Styl
   check_stylus_folder(folder);
   std::filesystem::create_directories(folder);
   const StylusFiles files = stylus_files(three_mf, print);
+  for (const auto& stl : files.stls) io::refuse_companion_link(stl, three_mf);
+  io::refuse_companion_link(files.recipe, three_mf);
 
   // Lying along x, on the bed (lowest point at z = 0), centred on it.
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};

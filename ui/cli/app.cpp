@@ -9,6 +9,8 @@
 #include <exception>
 #include <thread>
 
+#include "model/io/interrupt_cleanup.hpp"
+#include "model/io/job_files.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/options/number_checks.hpp"
@@ -86,6 +88,10 @@ int run(int argc, char** argv) {
   add_global_options(app, global);
   check_outputs_before_running(app);
 
+  // One command is one job: no file it writes may replace one it read, and Ctrl-C leaves no
+  // temporary file behind.
+  const model::io::JobFiles job;
+  model::io::remove_temporaries_on_signals();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,6 +9,7 @@
 #include "model/catalog/catalog_builder.hpp"
 #include "model/catalog/friction_comparison.hpp"
 #include "model/catalog/compact.hpp"
+#include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
@@ -81,6 +82,7 @@ void build(const CatalogOptions& options, unsigned threads) {
   if (found.files.empty()) {
     throw std::runtime_error(options.folder.string() + ": no recordings found");
   }
+  model::io::output_target(options.output);  // not one of the recordings, before minutes of work
   Progress progress("analysing", found.files.size());
   const catalog::AnalysisOptions analysis_options;
   auto result =

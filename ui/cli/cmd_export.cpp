@@ -52,6 +52,10 @@ struct ExportOptions {
 design::PredictedDesign design_to_export(const std::string& text) {
   std::error_code error;
   if (std::filesystem::is_regular_file(text, error)) return design::read_predicted_design(text);
+  // A JSON file's name or a path is a file that is not there, not a design point without a tip.
+  if (std::filesystem::path(text).extension() == ".json" || text.find('/') != std::string::npos)
+    throw CLI::ValidationError("DESIGN", text + ": no such file (expected a prediction file, or a design "
+                                                "point such as \"DM85:0.62,vero:0.38,tip=2.7mm\")");
   try {
     return {design::parse_design_point(text), {}};
   } catch (const std::invalid_argument& e) {

@@ -181,7 +181,8 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "Hz, the 2 mm VeroClear tool as reference) and writes them as forcing.json.");
   add_forcing_input_options(fit, fit_options->inputs);
   fit->add_option("-o,--output", fit_options->output, "Forcing model JSON to write")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(file_to_write());
   fit->add_option("--plots", fit_options->plots,
                   "Also write tip_curves.png and material_curves.png (Fig. 13) to this folder");
   fit->callback([fit_options, global] {

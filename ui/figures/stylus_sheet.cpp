@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "model/io/atomic_file.hpp"
 #include "model/mechanics/region_surface.hpp"
 #include "ui/figures/predicted_text.hpp"
 #include "ui/figures/space_scatter.hpp"
@@ -117,10 +118,14 @@ std::filesystem::path stylus_sheet_path(const std::filesystem::path& three_mf) {
 
 ExportedStylus export_stylus(const std::filesystem::path& three_mf, const design::StylusPrint& print,
                              const StylusSheetInputs& inputs) {
-  // The sheet is made before anything is written, so that its refusals leave no files behind.
+  // The sheet is made before anything is written, so that its refusals leave no files behind; the
+  // files then appear together or not at all.
   const auto sheet = stylus_sheet(print, design::stylus_files(three_mf, print), inputs);
+  model::io::refuse_companion_link(stylus_sheet_path(three_mf), three_mf);
+  model::io::OutputSet files;
   ExportedStylus out{design::write_stylus_files(three_mf, print), stylus_sheet_path(three_mf)};
   report::write_print_sheet(sheet, out.sheet);
+  files.commit();
   return out;
 }
 

@@ -7,6 +7,8 @@
 #include <optional>
 #include <thread>
 
+#include "model/io/job_files.hpp"
+
 namespace nibrig::ui::python {
 
 namespace py = pybind11;
@@ -30,6 +32,7 @@ struct Shared {
 }  // namespace
 
 void run_long_call(const std::function<void(std::stop_token, const Report&)>& work, const py::object& progress) {
+  const model::io::JobFiles job;  // one call is one job: what it writes replaces nothing it read
   Shared shared;
   std::stop_source stop;
   const Report report = [&shared](const std::string& step, std::size_t done, std::size_t total) {
