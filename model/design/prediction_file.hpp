@@ -23,9 +23,11 @@ nlohmann::json prediction_json(const PredictedTool& tool, const std::string& thr
 
 // A prediction JSON read back as the catalog entries of a predicted tool (kind "predicted", id
 // "pred:<design>"), its vibration descriptors recomputed from its spectrum with `threshold`, and
-// its descriptor error (empty when the file has none). Throws io::FormatError naming the file and
-// field (not a prediction, a missing or bad field, a covariance that is not square over its names,
-// not symmetric or with a negative variance).
+// its descriptor error (empty when the file has none). Every field prediction_json writes is checked
+// to its type and range, read or not (descriptors, design, notes, a comparison): throws
+// io::FormatError naming the file and field (not a prediction, a missing field, a string for a
+// number, null, 1e300, a μ beyond 10, a design whose tip or mix differs from its tool, a covariance
+// that is not square over its names, not symmetric or with a negative variance).
 struct ReadPrediction {
   DesignPoint point;    // the design predicted
   std::string surface;  // on which surface
@@ -36,7 +38,8 @@ struct ReadPrediction {
 ReadPrediction read_prediction(const std::filesystem::path& file,
                                const measure::ThresholdCurve& threshold);
 
-// Only the design a prediction file predicted and on which surface, with the same refusals.
+// Only the design a prediction file predicted and on which surface, with the same refusals (what
+// `export` takes: a damaged file is refused there too).
 struct PredictedDesign {
   DesignPoint point;
   std::string surface;

@@ -9,6 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
@@ -109,6 +113,109 @@ TEST(PredictionFile, AFileThatIsNotAPredictionIsRefusedNamingTheFileAndField) {
   EXPECT_THROW(read_prediction(dir / "mix.json", threshold), io::FormatError);
   EXPECT_THROW(read_predicted_design(dir / "mix.json"), io::FormatError);
   EXPECT_THROW(read_predicted_design(dir / "kind.json"), io::FormatError);
+}
+
+// Issue 46: fields no reader used were never checked, so a damaged file reached `space embed
+// --predicted` and `export`. Each field prediction_json writes, damaged as a hand edit or a bad
+// disk would (a number as a string, null, 1e300, an array), is refused by both readers, naming the
+// file and the field.
+TEST(PredictionFileDamage, EveryFieldIsCheckedReadOrNot) {
+  const auto [tool, threshold] = crayon_as_a_prediction();
+  const auto dir = nibrig::test::scratch_dir("prediction_file_damage");
+  const nlohmann::json good = prediction_json(tool, threshold.source());
+  // The JSON pointer of each field and the name the message gives it.
+  const std::vector<std::pair<std::string, std::string>> fields = {
+      {"/kind", "'kind'"},
+      {"/tool", "'tool'"},
+      {"/surface", "'surface'"},
+      {"/mu", "'mu'"},
+      {"/frequencies_hz", "'frequencies_hz'"},
+      {"/speeds_mm_s/0", "'speeds_mm_s[0]'"},
+      {"/amplitude_m_s2/0/0", "'amplitude_m_s2[0][0]'"},
+      {"/descriptors", "'descriptors'"},
+      {"/descriptors/weighted_mean", "'descriptors.weighted_mean'"},
+      {"/descriptors/weighted_power", "'descriptors.weighted_power'"},
+      {"/descriptors/band_energies/3/0", "'descriptors.band_energies.3[0]'"},
+      {"/threshold_curve", "'threshold_curve'"},
+      {"/design", "'design'"},
+      {"/design/name", "'design.name'"},
+      {"/design/first_mode_hz", "'design.first_mode_hz'"},
+      {"/design/tip_diameter_mm", "'design.tip_diameter_mm'"},
+      {"/design/mix/DM85", "'design.mix.DM85'"},
+      {"/notes/0", "'notes[0]'"},
+      {"/descriptor_error_covariance/names/0", "'descriptor_error_covariance.names[0]'"},
+      {"/descriptor_error_covariance/matrix/0/0", "'descriptor_error_covariance.matrix[0][0]'"},
+      {"/descriptor_error_covariance/vibration_samples", "'descriptor_error_covariance.vibration_samples'"},
+  };
+  const std::vector<std::pair<std::string, nlohmann::json>> damages = {
+      {"string", "0.5"}, {"null", nullptr}, {"huge", 1e300}, {"array", nlohmann::json::array()}};
+  int refused = 0;
+  for (const auto& [pointer, name] : fields) {
+    ASSERT_TRUE(good.contains(nlohmann::json::json_pointer(pointer))) << pointer << ": not written";
+    for (const auto& [damage, value] : damages) {
+      // A string where a string belongs is no damage; nor an array where one does.
+      const auto& original = good.at(nlohmann::json::json_pointer(pointer));
+      if ((original.is_string() && value.is_string()) || (original.is_array() && value.is_array())) continue;
+      nlohmann::json j = good;
+      j[nlohmann::json::json_pointer(pointer)] = value;
+      const auto file = dir / ("damaged-" + damage + ".json");
+      io::write_file_atomically(file, j.dump());
+      for (const bool whole : {true, false}) {
+        try {
+          if (whole)
+            read_prediction(file, threshold);
+          else
+            read_predicted_design(file);
+          ADD_FAILURE() << pointer << " = " << value.dump() << " was taken by "
+                        << (whole ? "read_prediction" : "read_predicted_design");
+        } catch (const io::FormatError& e) {
+          ++refused;
+          EXPECT_THAT(e.what(), HasSubstr(file.filename().string())) << pointer;
+          EXPECT_THAT(e.what(), HasSubstr(name)) << pointer << " = " << value.dump();
+        }
+      }
+    }
+  }
+  // 7 string fields × 3 damages, 1 array × 3, 13 others × 4: 76 damaged files, each read twice.
+  EXPECT_EQ(refused, 152);
+}
+
+// Values of the right type outside their range, and a design that contradicts its tool.
+TEST(PredictionFileDamage, ValuesOutsideTheirRangeAreRefusedSayingWhatWasExpected) {
+  const Made made = crayon_as_a_prediction();  // named, not bound: clang 14's lambdas cannot capture a binding
+  const PredictedTool& tool = made.tool;
+  const measure::ThresholdCurve& threshold = made.threshold;
+  const auto dir = nibrig::test::scratch_dir("prediction_file_range");
+  const nlohmann::json good = prediction_json(tool, threshold.source());
+  const std::vector<std::tuple<std::string, nlohmann::json, std::string>> cases = {
+      {"/mu", 12.0, "expected 0 to 10"},
+      {"/mu", -0.1, "expected 0 to 10"},
+      {"/descriptors/weighted_power", -1.0, "expected 0 to"},
+      {"/design/first_mode_hz", 2e6, "expected 0 to 1e+06"},
+      {"/design/tip_diameter_mm", 2.0, "expected the tool's tip, 3 mm"},
+      {"/design/mix/DM85", 0.5, "expected the tool's share of DM85, 0.25"},
+      {"/speeds_mm_s/0", 0.0, "above 0"},
+      {"/surface", "", "expected a surface id"},
+  };
+  for (const auto& [pointer, value, expected] : cases) {
+    nlohmann::json j = good;
+    j[nlohmann::json::json_pointer(pointer)] = value;
+    const auto file = dir / "range.json";
+    io::write_file_atomically(file, j.dump());
+    EXPECT_THAT([&] { read_predicted_design(file); },
+                ::testing::ThrowsMessage<io::FormatError>(HasSubstr(expected)))
+        << pointer << " = " << value.dump();
+  }
+  // A comparison (predict --against) is checked too when there is one.
+  nlohmann::json j = good;
+  j["comparison"] = {{"against", "cryon/office"}, {"rms_db", 2.5}, {"rms_db_by_speed", {2.0, 3.0}},
+                     {"no_interpolation_baselines", nlohmann::json::array()}, {"beats_every_baseline", true}};
+  io::write_file_atomically(dir / "compared.json", j.dump());
+  EXPECT_NO_THROW(read_prediction(dir / "compared.json", threshold));
+  j["comparison"]["beats_every_baseline"] = "yes";
+  io::write_file_atomically(dir / "compared.json", j.dump());
+  EXPECT_THAT([&] { read_prediction(dir / "compared.json", threshold); },
+              ::testing::ThrowsMessage<io::FormatError>(HasSubstr("'comparison.beats_every_baseline'")));
 }
 
 }  // namespace
