@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "model/io/format_error.hpp"
@@ -167,17 +168,30 @@ SessionAnalysis analyze_session(const io::RigSession& session,
       load = sum / static_cast<double>(session.normal_force_N.size());
     }
     friction.normal_load_N = load;
-    // The Coulomb fit finds sliding as a step of the tangential force out of rest. A capture that
-    // slides from its first instant (a sweep) has no such step: the session is still measured for
-    // its vibration, and the reason friction was not is said.
-    try {
-      friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N,
-                                                   friction.sample_rate_hz, load, options.sweep);
-      friction.upstream_mu = std::nan("");
-      analysis.friction = std::move(friction);
-    } catch (const std::runtime_error& e) {
-      analysis.warnings.push_back(std::string("friction not measured: ") + e.what());
-      spdlog::warn("{}: friction not measured: {}", session.folder.string(), e.what());
+    // μ divides by the load: one below a pen resting on paper (a session's load of 0, a lifted arm's
+    // measured mean, or a damaged 1e-320) makes it meaningless, so friction is not measured and the
+    // warning says the load, where it came from and the range μ needs.
+    if (!(load >= io::kLightestFrictionLoadN && load <= io::kHeaviestFrictionLoadN)) {
+      std::ostringstream why;
+      why << "the normal load is " << load << " N ("
+          << (session.normal_force_N.empty() ? "session.json normal_load_N" : "the mean of normal_force")
+          << "), expected " << io::kLightestFrictionLoadN << " to " << io::kHeaviestFrictionLoadN
+          << " N to divide the tangential force by";
+      analysis.warnings.push_back("friction not measured: " + why.str());
+      spdlog::warn("{}: friction not measured: {}", session.folder.string(), why.str());
+    } else {
+      // The Coulomb fit finds sliding as a step of the tangential force out of rest. A capture that
+      // slides from its first instant (a sweep) has no such step: the session is still measured for
+      // its vibration, and the reason friction was not is said.
+      try {
+        friction.fit = measure::fit_coulomb_friction(friction.tangential_force_N,
+                                                     friction.sample_rate_hz, load, options.sweep);
+        friction.upstream_mu = std::nan("");
+        analysis.friction = std::move(friction);
+      } catch (const std::runtime_error& e) {
+        analysis.warnings.push_back(std::string("friction not measured: ") + e.what());
+        spdlog::warn("{}: friction not measured: {}", session.folder.string(), e.what());
+      }
     }
   }
 

@@ -17,7 +17,7 @@ namespace {
 // sees a 100 Hz sinusoid whose amplitude is 10 s^-1 x speed (stored in raw units at 0.5 m/s^2 per
 // unit, so the calibration must be applied), and after 2 s the tangential force is 0.25 x the 2 N
 // load.
-io::RigSession write_and_read_synthetic_session(const std::filesystem::path& folder) {
+io::RigSession write_and_read_synthetic_session(const std::filesystem::path& folder, float normal_force_N = 2.0f) {
   io::RigSessionInfo info;
   info.tool = "synthetic";
   info.surface = "bench";
@@ -47,7 +47,7 @@ io::RigSession write_and_read_synthetic_session(const std::filesystem::path& fol
   std::vector<float> normal, tangential;
   for (int i = 0; i < static_cast<int>(duration_s * info.force_rate_hz); ++i) {
     const double t = i / info.force_rate_hz;
-    normal.push_back(2.0f);
+    normal.push_back(normal_force_N);
     tangential.push_back(static_cast<float>((t >= 2.0 ? 0.5 : 0.0) + noise(rng)));
   }
   writer.append_normal_force(normal);
@@ -84,6 +84,23 @@ TEST(AnalyzeSession, RecoversFrictionAndTheSpeedDependentSpectrum) {
     EXPECT_NEAR(row[static_cast<std::size_t>(peak)], 10.0 * spectrum.speeds_m_s[s],
                 0.02 * 10.0 * spectrum.speeds_m_s[s]);
   }
+}
+
+// Issue 46: a load near nothing ("autocorrelation: non-finite sample" once the tangential force was
+// divided by it) is named with where it came from and the range μ needs; the vibration is still
+// measured.
+TEST(AnalyzeSession, ALoadBelowAPenRestingOnPaperIsNamedNotDividedBy) {
+  const auto dir = nibrig::test::scratch_dir("analyze_session_no_load");
+  const auto session = write_and_read_synthetic_session(dir / "lifted", 0.0f);
+  const auto threshold =
+      measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds/israr2006_pen_hold.csv");
+  const SessionAnalysis a = analyze_session(session, threshold, AnalysisOptions{});
+  EXPECT_FALSE(a.friction.has_value());
+  EXPECT_TRUE(a.vibration.has_value());
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_EQ(a.warnings[0],
+            "friction not measured: the normal load is 0 N (the mean of normal_force), expected 0.01 to 50 N to "
+            "divide the tangential force by");
 }
 
 TEST(AnalyzeSession, ReadsASessionCutShortAndSaysSo) {
