@@ -1,5 +1,6 @@
 #include "model/io/paper_friction.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -168,6 +169,30 @@ TEST_F(FrictionMalformed, NaNField) {
   expect_message_names(
       format_error_of([&] { read_paper_friction(file); }),
       {"p2h_note_2.2N_14_1.csv.gz", "line 2, field 'Z'", "expected a finite number"});
+}
+
+// Issue 46: a count of 1e308 is named by line and field, as the force it would be at the tip.
+TEST_F(FrictionMalformed, ACountBeyondAnyTipForceIsNamedByLine) {
+  const auto file = write("TimeStamp,X,Y,Z\n10:8:52.800,0,-1,1\n10:8:52.801,0,1e308,1\n");
+  expect_message_names(format_error_of([&] { read_paper_friction(file); }),
+                       {"p2h_note_2.2N_14_1.csv.gz", "line 3, field 'Y'",
+                        "expected a force at the tip of at most 1000 N, found 1e+308 counts"});
+}
+
+// A load stated for a file named otherwise (a face's --load, Python's load=) is held to the same
+// range as a name's: 1e-320 N ended in "autocorrelation: non-finite sample".
+TEST_F(FrictionMalformed, AStatedLoadOrLeverOutsideItsRangeIsNamed) {
+  const auto file = write("TimeStamp,X,Y,Z\n" + friction_rows(10), "anything.csv.gz");
+  FrictionFileName name;
+  name.tool = "p2h", name.surface = "note", name.normal_load_N = 1e-320, name.lever_factor = 14.0;
+  EXPECT_THAT([&] { read_paper_friction(file, name); },
+              ::testing::ThrowsMessage<std::invalid_argument>(::testing::AllOf(
+                  ::testing::HasSubstr("anything.csv.gz"),
+                  ::testing::HasSubstr("load 9.99989e-321 N: expected a normal load in N, 0.01 to 50"))));
+  name.normal_load_N = 2.2, name.lever_factor = 1e308;
+  EXPECT_THAT([&] { read_paper_friction(file, name); },
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  ::testing::HasSubstr("lever 1e+308: expected a lever factor, 0.1 to 100")));
 }
 
 TEST_F(FrictionMalformed, MissingColumn) {

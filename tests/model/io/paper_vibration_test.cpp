@@ -198,6 +198,19 @@ TEST_F(VibrationMalformed, NaNField) {
       {"arm_vero_1_glass.csv.gz", "line 5, field 'xAccel'", "expected a finite number"});
 }
 
+// Issue 46: 1e308 g inside a recording reached step segmentation ("no sweep of 6 moving blocks
+// found"); it is named by line and field with the largest acceleration a stylus is read to have.
+TEST_F(VibrationMalformed, AnAccelerationBeyondAnyStylusIsNamedByLine) {
+  for (const char* value : {"1e308", "-1000.5"}) {
+    const auto file = write(header() + vibration_rows(3) + "t,1515589189351," + value + ",0,0,0\n");
+    expect_message_names(format_error_of([&] { read_paper_vibration(file); }),
+                         {"arm_vero_1_glass.csv.gz", "line 5, field 'xAccel'",
+                          "expected an acceleration in g of at most 1000", std::string("found '") + value + "'"});
+  }
+  // 1000 g itself is a value, if an implausible one.
+  EXPECT_NO_THROW(read_paper_vibration(write(header() + vibration_rows(3) + "t,1515589189351,1000,0,0,0\n")));
+}
+
 TEST_F(VibrationMalformed, MissingColumn) {
   const auto file = write("time,stamp,xAccel\n" + vibration_rows(3));
   expect_message_names(

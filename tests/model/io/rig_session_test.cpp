@@ -365,6 +365,24 @@ TEST_F(SessionMalformed, AccelerometerScaleOutsideTheRigsRange) {
   EXPECT_THROW(RigSessionWriter(dir_ / "tiny", tiny), std::invalid_argument);
 }
 
+// A load of 1e-320 N was divided into the tangential force; 0 (a session not about friction) and
+// the friction reader's range are what a session may say.
+TEST_F(SessionMalformed, ALoadOutsideTheFrictionRangeIsNamed) {
+  for (const double load : {1e-320, 0.005, 51.0}) {
+    auto j = json();
+    j["normal_load_N"] = load;
+    set_json(j);
+    expect_message_names(format_error_of([&] { read_rig_session(folder_); }),
+                         {"session.json", "field 'normal_load_N'", "expected a load in newtons, 0 or 0.01 to 50"});
+  }
+  for (const double load : {0.0, 0.01, 2.2, 50.0}) {
+    auto j = json();
+    j["normal_load_N"] = load;
+    set_json(j);
+    EXPECT_EQ(read_rig_session(folder_).info.normal_load_N, load);
+  }
+}
+
 TEST_F(SessionMalformed, WrongSampleRate) {
   auto j = json();
   j["speed_rate_hz"] = 2000;
