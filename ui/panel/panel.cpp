@@ -321,7 +321,12 @@ void Panel::handle_keys() {
     if (pressed(GLFW_KEY_A + k)) audio_->select(static_cast<std::size_t>(k));
   if (pressed(GLFW_KEY_SPACE)) audio_->stop();
   if (pressed(GLFW_KEY_F12)) frame_times_window_ = !frame_times_window_;
-  if (pressed(GLFW_KEY_ENTER)) space_view_->play_chosen();
+  // Enter plays again what the status line says it does: the tools chosen in the space view, or
+  // else what is loaded (a space opened since forgets the choice, not what was compared).
+  if (pressed(GLFW_KEY_ENTER)) {
+    if (!space_view_->chosen().empty()) space_view_->play_chosen();
+    else audio_->play_again();
+  }
 }
 
 void Panel::show(View view) { requested_ = view; }
@@ -440,7 +445,11 @@ std::string Panel::status_line() const {
   const std::string moving = audio_->stroke_description();
   const std::string stroke = moving == "stopped" ? "stroke: " + audio_->chosen_stroke_description()
                                                  : moving == "the pad" ? "moved by the pad" : "stroke: " + moving;
-  return device + " | " + playing + " | " + stroke;
+  // The rig's simulation on the actuator is a second output: said here too while it runs.
+  std::string rig;
+  if (rig_view_->running())
+    if (const std::string line = rig_view_->actuator_line(); !line.empty()) rig = " | rig: " + line;
+  return device + " | " + playing + " | " + stroke + rig;
 }
 
 void Panel::follow_audio_error() {

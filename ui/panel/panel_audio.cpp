@@ -189,6 +189,7 @@ void PanelAudio::contact(double speed_m_s, double force_n) {
   try {
     audition_.set_contact(speed_m_s, force_n);
     driver_ = Driver::pad;
+    pad_pressing_ = speed_m_s > 0.0 && force_n > 0.0;
   } catch (const std::exception& e) {
     error_ = e.what();
   }
@@ -212,8 +213,19 @@ std::string PanelAudio::stroke_description() const {
   return "stopped";
 }
 
+void PanelAudio::play_again() {
+  if (playing_.empty() || lent_) return;
+  try {
+    attach_stroke();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
 std::optional<ToolChoice> PanelAudio::sounding() const {
   if (driver_ == Driver::none || lent_) return std::nullopt;
+  if (driver_ == Driver::pad && !pad_pressing_) return std::nullopt;
+  if (audition_.output_status() != playback::OutputStatus::running) return std::nullopt;
   const std::size_t slot = audition_.selected();
   if (slot >= playing_.size()) return std::nullopt;
   return playing_[slot];

@@ -70,6 +70,9 @@ class PanelAudio {
   void contact(double speed_m_s, double force_n);
   // Silence: the engine is held at rest until something is played again.
   void stop();
+  // What is loaded plays again under the stroke (after stop(), or the pad let go): what the
+  // status line's "Enter plays again" promises when no tool is chosen in the space view.
+  void play_again();
 
   // Called every frame: loads the sounds that are ready. Never blocks.
   void poll();
@@ -86,7 +89,8 @@ class PanelAudio {
   const std::string& error() const { return error_; }
   // What moves the engine: the stroke's description, "the pad", or "stopped".
   std::string stroke_description() const;
-  // The tool heard now (the selected slot), none when stopped or nothing is loaded.
+  // The tool heard now (the selected slot): none when stopped, nothing is loaded, the pad is
+  // not pressed, or no device is running (none open, or lost: a dead JACK server).
   std::optional<ToolChoice> sounding() const;
   // The stroke chosen, in words ("constant 250.00 mm/s", "sweep ..."), whether or not it plays.
   const std::string& chosen_stroke_description() const { return chosen_description_; }
@@ -125,6 +129,7 @@ class PanelAudio {
   std::vector<ToolChoice> requested_, playing_;
   StrokeChoice stroke_choice_;
   Driver driver_ = Driver::none;
+  bool pad_pressing_ = false;  // the pad's last contact had speed and force
   std::string stroke_description_, chosen_description_;
   std::string error_;
   std::uint64_t seed_ = 1;

@@ -293,9 +293,10 @@ void RigView::draw_controls() {
   ImGui::SliderFloat("seconds", &choice_.seconds, 0.0f, 60.0f, "%.0f");
   if (choice_.kind != 2) ImGui::SliderFloat("speed-up", &choice_.speedup, 1.0f, 8.0f, "%.0f x");
   ImGui::Checkbox("play the simulation on the actuator", &choice_.play_on_actuator);
-  if (!actuator_state_.empty()) {
-    if (actuator_playing_) ImGui::TextWrapped("%s", actuator_state_.c_str());
-    else ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", actuator_state_.c_str());
+  bool heard = false;
+  if (const std::string line = actuator_line(&heard); !line.empty()) {
+    if (heard) ImGui::TextWrapped("%s", line.c_str());
+    else ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", line.c_str());
   }
   if (!running()) {
     if (ImGui::Button("Start")) start();
@@ -396,6 +397,18 @@ rig::RigRequest rig_request_of(const RigChoice& c) {
   request.input_device = c.input_device;
   request.input_channel = static_cast<unsigned>(std::max(1, c.input_channel));
   return request;
+}
+
+std::string RigView::actuator_line(bool* heard) const {
+  if (heard) *heard = false;
+  if (actuator_state_.empty()) return {};
+  // The player hides its stream's state (rig::ActuatorPlayer has no status()); it plays on the
+  // panel's device, whose loss the panel's own stream sees.
+  const auto& audition = audio_ ? &audio_->audition() : nullptr;
+  if (actuator_playing_ && audition && audition->output_status() == playback::OutputStatus::lost)
+    return "the simulation is not heard: the device is lost (" + audition->last_problem() + ")";
+  if (heard) *heard = actuator_playing_;
+  return actuator_state_;
 }
 
 }  // namespace nibrig::ui::panel

@@ -17,6 +17,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
+// ... and while it plays, the status line says so; with the server dead, neither says "playing".
 TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurnedOff) {
   nibrig::testing::JackServer server;
   testing::WindowedPanel s(testing::small_space_on_jack("panel_rig_actuator"));
@@ -54,6 +55,19 @@ TEST(PanelRigActuator, TheSimulationPlaysOnTheActuatorWhileTheRigRunsUntilTurned
   ASSERT_TRUE(s.frames_until([&] { return !rig.actuator_playing(); }, 30s));
   EXPECT_TRUE(rig.running());  // the rig goes on; only the actuator fell silent
   EXPECT_EQ(actuator_rms(4800), 0.0);  // the player's client is gone, the audition silent
+
+  // On again: the status line says what the actuator plays, as the view does.
+  rig.choice().play_on_actuator = true;
+  ASSERT_TRUE(s.frames_until([&] { return rig.actuator_playing(); }, 30s)) << rig.actuator_state();
+  EXPECT_NE(s.panel.status_line().find("| rig: playing cryon"), std::string::npos) << s.panel.status_line();
+  // The server dies: neither the view nor the status line says "playing" any more.
+  server.kill();
+  ASSERT_TRUE(s.frames_until([&] { return rig.actuator_line().find("not heard") != std::string::npos; }, 20s))
+      << rig.actuator_line();
+  EXPECT_EQ(s.panel.status_line().find("playing cryon"), std::string::npos) << s.panel.status_line();
+  EXPECT_NE(s.panel.status_line().find("| rig: the simulation is not heard"), std::string::npos)
+      << s.panel.status_line();
+  server.start();
 
   rig.stop();
   ASSERT_TRUE(s.frames_until([&] { return !rig.running(); }, 30s));
