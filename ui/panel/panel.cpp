@@ -452,6 +452,19 @@ std::string Panel::status_line() const {
   return device + " | " + playing + " | " + stroke + rig;
 }
 
+void Panel::follow_error_view() {
+  // An error is about what was being done in the view it came up in: once the person moves to
+  // another view the line empties (Help > Errors keeps it), so that a catalog's error is not read
+  // as the rig's or the pad's minutes later.
+  if (errors_.current() != error_seen_) {
+    error_seen_ = errors_.current();
+    error_view_ = requested_.value_or(current_);  // an error reported as a view is asked for is that view's
+  } else if (!error_seen_.empty() && current_ != error_view_) {
+    errors_.clear();
+    error_seen_.clear();
+  }
+}
+
 void Panel::follow_audio_error() {
   const std::string& now = audio_->error();
   if (now == audio_error_seen_) return;
@@ -545,6 +558,7 @@ void Panel::draw_views() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_MenuBar |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
   draw_menu();
+  follow_error_view();
   const std::string status = status_line();  // once a frame: laid out, then drawn
   const float status_height = this->status_height(status);
   if (ImGui::BeginTabBar("views")) {

@@ -54,8 +54,8 @@ class Panel {
   View current() const { return current_; }
   // True once nothing is loading in the background for the view shown (screenshots wait for it).
   bool settled() const;
-  // The error line: what went wrong last, until something succeeds (then empty); every error
-  // stays in errors().history() (Help > Errors).
+  // The error line: what went wrong last, until something succeeds or the person moves to
+  // another view (then empty); every error stays in errors().history() (Help > Errors).
   const std::string& error() const { return errors_.current(); }
   const ErrorLine& errors() const { return errors_; }
   // Shown in the error line (e.g. a settings file that could not be read).
@@ -135,6 +135,8 @@ class Panel {
   void draw_views();
   // The audio's own error joins the error line when it changes.
   void follow_audio_error();
+  // The error line moves on when the view does (see error_view_).
+  void follow_error_view();
 
   PanelSetup setup_;
   std::filesystem::path space_file_;
@@ -156,6 +158,9 @@ class Panel {
   FileDialog files_;
   SpaceFitRequest fit_request_;
   bool showing_default_ = false;
+  // The error line's error and the view it came up in: moving to another view moves on from it.
+  std::string error_seen_;
+  View error_view_ = View::space;
   bool fit_window_ = false, keys_window_ = false, errors_window_ = false, frame_times_window_ = false;
   // The panel's widget time per frame (ms), the last kFrameTimes frames, for the readout.
   static constexpr std::size_t kFrameTimes = 120;
