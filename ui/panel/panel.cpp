@@ -350,14 +350,28 @@ void Panel::poll_jobs() {
   if (space_job_ && space_job_->done()) {
     if (auto loaded = space_job_->take_result()) {
       errors_.clear();
+      if (!fallback_reason_.empty()) errors_.report(fallback_reason_ + " (the default space is shown instead)");
+      fallback_reason_.clear();
       for (const auto& w : loaded->warnings) errors_.report(w);
       design_view_->set_space(loaded->scene, loaded->map);
       space_view_->set_scene(std::move(loaded->scene));
       space_ = std::move(loaded->file);
+      shown_space_file_ = space_file_;
+      space_job_.reset();
     } else {
-      errors_.report(space_job_->error());
+      const std::string failed = space_job_->error();
+      const bool was_default = showing_default_;
+      space_job_.reset();
+      errors_.report(failed);
+      // The space shown stays the one remembered: a file that failed is not opened next start.
+      space_file_ = shown_space_file_;
+      // Nothing shown (a remembered or given file that no longer reads): the default is computed,
+      // as the empty view says it will be.
+      if (!space_ && !was_default) {
+        fallback_reason_ = failed;
+        load_default_space();
+      }
     }
-    space_job_.reset();
   }
   if (file_job_ && file_job_->done()) {
     auto apply = file_job_->take_result();

@@ -158,6 +158,10 @@ class Panel {
   FileDialog files_;
   SpaceFitRequest fit_request_;
   bool showing_default_ = false;
+  // The file of the space shown (space_file_ is the one asked for, until it fails to load), and
+  // why the default is computed in place of a file that failed with nothing shown.
+  std::filesystem::path shown_space_file_;
+  std::string fallback_reason_;
   // The error line's error and the view it came up in: moving to another view moves on from it.
   std::string error_seen_;
   View error_view_ = View::space;
