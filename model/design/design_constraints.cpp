@@ -56,7 +56,7 @@ void check_constraints(const DesignConstraints& c, const ConstraintNames& names)
     check_constraint_value(*c.max_tip_m * 1e3, kSmallestConstraintTipMm, kLargestConstraintTipMm, names.max_tip, tip);
   if (c.min_tip_m && c.max_tip_m && *c.min_tip_m > *c.max_tip_m)
     throw std::invalid_argument(names.min_tip + ": " + mm(*c.min_tip_m) + " is above " + names.max_tip + ", " +
-                                mm(*c.max_tip_m));
+                                mm(*c.max_tip_m) + ": expected the smallest tip at most the largest");
   std::set<std::string> seen;
   for (const auto& m : c.materials)
     if (m.empty() || !seen.insert(m).second)

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 
+#include "model/design/design_constraints.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_file.hpp"
 #include "model/design/stylus_export.hpp"
@@ -97,6 +98,19 @@ std::string joined(const std::vector<std::string>& names) {
 
 void run_design(const DesignOptions& o) {
   if (!o.export_folder.empty()) design::check_stylus_folder(o.export_folder);  // before minutes of search
+  // The options' own checks first, before any file is read: a bad --cost is named as such, not
+  // after a space file's error or a forcing model's fit.
+  const auto constraints = constraints_of(o);
+  std::optional<design::DesignPoint> a, b;
+  if (!o.between.empty()) {
+    if (o.between.size() != 2)
+      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
+    a = design::parse_design_point(o.between[0]);
+    b = design::parse_design_point(o.between[1]);
+    // A line no allowed design lies on is refused now, naming the constraint (and an allowed
+    // material the line does not hold, as "--allow steel"), not after the forcing model is loaded.
+    design::feasible_segment(*a, *b, constraints);
+  }
   const auto catalog_path =
       o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;
   const space::SpaceFile space_file = space::read_space_file(o.space_file);
@@ -123,19 +137,11 @@ void run_design(const DesignOptions& o) {
   if (o.aim != "largest" && o.aim != "mean")
     throw CLI::ValidationError("--aim", "'" + o.aim + "' is not largest or mean");
   const auto aim = o.aim == "mean" ? space::GroupAim::mean : space::GroupAim::largest;
-  const auto constraints = constraints_of(o);
   const std::string target_words =
       group ? fmt::format("{} ({} of {} targets)", joined(o.targets), o.aim == "mean" ? "mean distance" : "largest distance",
                           o.targets.size())
             : o.targets.front();
 
-  std::optional<design::DesignPoint> a, b;
-  if (!o.between.empty()) {
-    if (o.between.size() != 2)
-      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
-    a = design::parse_design_point(o.between[0]);
-    b = design::parse_design_point(o.between[1]);
-  }
   design::RangeSearchOptions range;
   range.constraints = constraints;
   if (const auto comma = o.mix.find(','); comma != std::string::npos) {

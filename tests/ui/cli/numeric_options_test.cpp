@@ -108,6 +108,12 @@ const std::vector<Row> kRows = {
     {"space fit FILE --lambda=1e308", "--lambda"},
     {"measure FILE --load=1e-320", "--load"},
     {"mechanics modes FILE --tip 0,1e300,0 --sensor 0,0,0", "--tip"},
+    // Issue 46: ranges the library holds every face to, still named as the option typed.
+    {"design --target cryon/office --surface glass --space FILE --cost vero=1 --max-cost=nan", "--max-cost"},
+    {"design --target cryon/office --surface glass --space FILE --cost vero=-1", "--cost of vero"},
+    {"design --target cryon/office --surface glass --space FILE --min-tip-mm 3 --max-tip-mm 2", "--min-tip-mm"},
+    {"rig capture --simulated --tool cryon --surface office -o OUT --load=1e308", "--load"},
+    {"render --tool cryon --surface office -o OUT --force=1e308", "--force"},
 };
 
 std::vector<std::string> words(const std::string& command, const std::filesystem::path& dir) {
