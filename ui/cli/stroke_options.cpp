@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "playback/offline_render.hpp"
 #include "rt/reference_load.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/options/number_checks.hpp"
@@ -24,10 +25,12 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
                   "Stylus design JSON whose modes shape the vibration (default: assets/designs/"
                   "stylus_vero_tip2mm.json)");
   // Set through a function so that "not given" is an empty optional: no typed value can mean it.
+  // The ranges are playback's (offline_render.hpp), which every face's stroke is held to.
   auto* speed = cmd->add_option_function<double>(
                        "--speed", [&o](const double& v) { o.speed_mm_s = v; },
                        "Constant tip speed in mm/s (measured: 17-250)")
-                    ->check(off_or_in_range(0.01, 10000, "a speed in mm/s"));
+                    ->check(off_or_in_range(1e3 * playback::kSlowestStrokeM_s, 1e3 * playback::kFastestStrokeM_s,
+                                            "a speed in mm/s"));
   auto* sweep = cmd->add_flag("--sweep", o.sweep, "The rig's sweep, 17 -> 250 mm/s, 3 s period");
   auto* trajectory = cmd->add_option(
       "--trajectory", o.trajectory,
@@ -38,7 +41,7 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   cmd->add_option_function<double>(
          "--force", [&o](const double& v) { o.force_n = v; },
          "Constant normal force in N (default 2.2, the paper's)")
-      ->check(off_or_in_range(0.001, 50, "a normal force in N"));
+      ->check(off_or_in_range(playback::kLightestStrokeN, playback::kHeaviestStrokeN, "a normal force in N"));
   cmd->add_option("--seed", o.seed, "Seed of the forcing noise (same seed, same samples)")
       ->check(any_seed());
 }
