@@ -7,11 +7,6 @@
 #include <sys/eventfd.h>
 #include <unistd.h>
 
-// libwacom's header declares C functions without extern "C".
-extern "C" {
-#include <libwacom/libwacom.h>
-}
-
 #include <algorithm>
 #include <cstdlib>
 #include <atomic>
@@ -25,6 +20,8 @@ extern "C" {
 #include <fstream>
 #include <mutex>
 #include <thread>
+
+#include "rig/pen/tablet_model_name.hpp"
 
 namespace nibrig::rig::pen {
 namespace {
@@ -86,19 +83,17 @@ TabletInfo describe(libinput_device* device) {
     info.width_mm = width;
     info.height_mm = height;
   }
-  // libwacom knows a tablet by its USB or Bluetooth ids; its sizes are whole inches, so the kernel's
-  // resolution (above) is preferred when there is one.
-  if (WacomDeviceDatabase* db = libwacom_database_new()) {
-    if (WacomDevice* w = libwacom_new_from_usbid(db, static_cast<int>(libinput_device_get_id_vendor(device)),
-                                                 static_cast<int>(libinput_device_get_id_product(device)), nullptr)) {
-      if (const char* model = libwacom_get_name(w)) info.model = model;
-      if (info.width_mm <= 0 || info.height_mm <= 0) {
-        info.width_mm = 25.4 * libwacom_get_width(w);
-        info.height_mm = 25.4 * libwacom_get_height(w);
-      }
-      libwacom_destroy(w);
-    }
-    libwacom_database_destroy(db);
+  // libwacom names the model from the USB id and the kernel's name together (tablet_model_name.hpp:
+  // one id may be many models); its sizes are whole inches, so the kernel's resolution (above) is
+  // preferred when there is one.
+  const auto vendor = static_cast<std::uint16_t>(libinput_device_get_id_vendor(device));
+  const auto product = static_cast<std::uint16_t>(libinput_device_get_id_product(device));
+  const TabletModelName model = name_tablet_model(libwacom_usb_matches(vendor, product), info.name, vendor, product);
+  info.model = model.model;
+  info.model_told_apart = model.told_apart;
+  if ((info.width_mm <= 0 || info.height_mm <= 0) && model.told_apart) {
+    info.width_mm = model.width_mm;
+    info.height_mm = model.height_mm;
   }
   read_axes(device, info);
   return info;

@@ -15,7 +15,12 @@ namespace nibrig::rig::pen {
 
 struct TabletInfo {
   std::string name;     // the kernel's device name, e.g. "Wacom Intuos S Pen"
-  std::string model;    // libwacom's model name when it knows the tablet, else empty
+  // libwacom's model name when the USB id and the kernel's name tell the model apart; when several
+  // models share the id and the name tells none of them, a sentence saying so (e.g. "a GAOMON or
+  // Huion tablet (model not told apart by its USB id 256c:006d)"); empty when libwacom lists no
+  // tablet for the id.
+  std::string model;
+  bool model_told_apart = false;
   std::string devnode;  // /dev/input/eventN
   double width_mm = 0.0, height_mm = 0.0;  // the active area; 0 when neither source knows it
   bool has_pressure = false, has_tilt = false;
