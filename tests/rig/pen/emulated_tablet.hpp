@@ -9,23 +9,41 @@
 
 #include <cstdint>
 #include <mutex>
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace nibrig::rig::pen::testing {
 
-// A tablet model by the kernel's numbers (drivers/hid/wacom_wac.c) and libwacom's entry.
+// A tablet model by the kernel's numbers (drivers/hid/wacom_wac.c, hid-uclogic) and libwacom's entry.
 struct EvdevTabletModel {
   std::string name;  // the kernel's device name
   std::uint16_t vendor = 0, product = 0, version = 0;
   int x_max = 0, y_max = 0;  // ABS_X, ABS_Y maxima
   int resolution = 0;        // units per mm
-  int pressure_max = 0, distance_max = 0;
+  int pressure_max = 0, distance_max = 0;  // distance_max 0: the tablet has no ABS_DISTANCE
+  int tilt_max = 0;          // ABS_TILT_X/Y span -tilt_max-1 … tilt_max; 0: no tilt
+  int tilt_resolution = 0;   // tilt units per radian
   double report_hz = 0.0;  // how often the pen reports while in reach
 };
 
 // Wacom Intuos S (CTL-4100, USB 056a:0374): 152 x 95 mm active area at 100 units/mm, 4096
 // pressure levels, no tilt, 133 reports a second.
 EvdevTabletModel wacom_intuos_s();
+// Wacom Intuos Pro M (PTH-660, USB 056a:0357): 224 x 148 mm at 200 units/mm, 8192 levels, tilt,
+// 200 reports a second.
+EvdevTabletModel wacom_intuos_pro_m();
+// Huion H640P (USB 256c:006d, an id Huion shares among many models): 160 x 100 mm at 200 units/mm,
+// 8192 levels, 233 reports a second.
+EvdevTabletModel huion_h640p();
+// XP-Pen Deco 01 V2 (USB 28bd:0905): 254 x 158.75 mm at 100 units/mm, 8192 levels, 266 reports a
+// second.
+EvdevTabletModel xp_pen_deco_01_v2();
+// The four, for tests that run on every maker's tablets.
+std::vector<EvdevTabletModel> tablets_of_every_maker();
+// A test parameter as gtest lists it: the name, not the struct's bytes (which hold pointers, and
+// would change ctest's test names from one discovery to the next).
+inline void PrintTo(const EvdevTabletModel& model, std::ostream* os) { *os << model.name; }
 
 class EmulatedTablet {
  public:

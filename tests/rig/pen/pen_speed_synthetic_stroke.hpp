@@ -32,6 +32,20 @@ struct TabletModel {
   unsigned seed = 32;
 };
 
+// The worst a single estimate can be off, from the tablet's imperfections alone: each position is
+// rounded by up to half the resolution per axis (√2·r/2 in the plane), twice per difference; the
+// two stamps move the 2T between them by up to ±2·jitter; on a circle the chord is shorter than
+// the arc by the factor `chord`.
+struct PenSpeedBounds {
+  double low, high;
+};
+inline PenSpeedBounds pen_speed_bounds(double speed, const TabletModel& tablet, double chord = 1.0) {
+  const double span = 2.0 / tablet.rate_hz;
+  const double position = 2.0 * std::sqrt(2.0) * tablet.resolution_m / 2.0;
+  return {(chord * speed * span - position) / (span + 2.0 * tablet.jitter_s),
+          (speed * span + position) / (span - 2.0 * tablet.jitter_s)};
+}
+
 inline double quantise_to(double value, double step) { return std::round(value / step) * step; }
 
 inline std::vector<SyntheticReport> synthetic_stroke(const Path& path, double duration_s,

@@ -15,20 +15,8 @@ namespace {
 
 using testing::SyntheticReport;
 using testing::TabletModel;
-
-// The worst a single estimate can be off, from the tablet's imperfections alone: each position is
-// rounded by up to half the resolution per axis (√2·r/2 in the plane), twice per difference; the
-// two stamps move the 2T between them by up to ±2·jitter; on a circle the chord is shorter than
-// the arc by the factor `chord`.
-struct PenSpeedBounds {
-  double low, high;
-};
-PenSpeedBounds pen_speed_bounds(double speed, const TabletModel& tablet, double chord = 1.0) {
-  const double span = 2.0 / tablet.rate_hz;
-  const double position = 2.0 * std::sqrt(2.0) * tablet.resolution_m / 2.0;
-  return {(chord * speed * span - position) / (span + 2.0 * tablet.jitter_s),
-          (speed * span + position) / (span - 2.0 * tablet.jitter_s)};
-}
+using testing::PenSpeedBounds;
+using testing::pen_speed_bounds;
 
 // The mean over n estimates is far closer: the first-order jitter and rounding terms of successive
 // differences cancel but for the stroke's ends (4 stamps, 4 positions); the jitter's second-order
