@@ -13,6 +13,7 @@ struct DrawingTrajectory {
   std::string tool, surface, subject;  // <tool>_<surface>_<subject>.csv[.gz]; subject may hold '_'
   std::filesystem::path source;
   // Frames per second while tracking: frame steps of up to 50 ms divided by the time they cover.
+  // Nothing downstream assumes a rate: rt::TrajectoryStroke interpolates between the stamps.
   double frame_rate_hz = 0.0;
   std::vector<double> time_s, x_m, y_m, normal_force_N;
   std::vector<bool> touching;
@@ -29,8 +30,10 @@ struct DrawingTrajectory {
 // so the median lands on 125.0 or 142.9 Hz depending on which step happens to be commonest, up to
 // 25 % above the true frame rate (about 111-139 Hz across the files). Steps longer than 50 ms are
 // tracking dropouts (pen out of range) and are left out.
-// Throws FormatError "expected about 120 Hz ..." for a frame rate outside 60-240 Hz: the files
-// measure 111-139 Hz, and a timestamp unit error (s or µs for ms) lands far outside.
+// Throws FormatError "expected about 120 Hz (the paper's tracker) or a pen tablet's 100-300 Hz
+// (30-500 Hz accepted) ..." for a frame rate outside 30-500 Hz: the paper's files measure
+// 111-139 Hz, strokes recorded from pen tablets (rig/pen's StrokeRecorder) their report rate,
+// 100-300 Hz; stamps 1 ms apart (1000 Hz) are no tablet's.
 DrawingTrajectory read_paper_drawing(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::io
