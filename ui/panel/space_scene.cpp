@@ -10,6 +10,37 @@ namespace nibrig::ui::panel {
 
 namespace space = model::space;
 
+namespace {
+
+// The bundled catalog's surfaces, in its order: each takes the palette's slot of its index. Read
+// once (on the first worker that makes a scene); empty when it cannot be read.
+const std::vector<std::string>& scene_bundled_surfaces() {
+  static const std::vector<std::string> ids = [] {
+    std::vector<std::string> out;
+    try {
+      for (const auto& s : model::io::read_catalog(model::io::or_default({}, model::io::default_catalog)).surfaces)
+        out.push_back(s.id);
+    } catch (const std::exception&) {
+    }
+    return out;
+  }();
+  return ids;
+}
+
+// A surface's palette slot from its name alone: the bundled catalog's index, else a hash into the
+// slots after the bundled ones (two other surfaces may then share a colour; the legend names both).
+std::size_t scene_surface_slot(const std::string& surface) {
+  const auto& bundled = scene_bundled_surfaces();
+  const auto at = std::find(bundled.begin(), bundled.end(), surface);
+  if (at != bundled.end()) return static_cast<std::size_t>(at - bundled.begin());
+  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a: the same on every machine and run
+  for (const unsigned char c : surface) h = (h ^ c) * 1099511628211ULL;
+  const std::size_t free = kSurfaceSlots > bundled.size() ? kSurfaceSlots - bundled.size() : kSurfaceSlots;
+  return (kSurfaceSlots - free) + static_cast<std::size_t>(h % free);
+}
+
+}  // namespace
+
 SpaceScene scene_of(const space::SpaceTools& tools, std::size_t dims, const std::string& title) {
   SpaceScene scene;
   scene.title = title;
@@ -32,8 +63,10 @@ SpaceScene scene_of(const space::SpaceTools& tools, std::size_t dims, const std:
     for (Eigen::Index k = 0; k < t.descriptors.size(); ++k)
       if (static_cast<std::size_t>(k) < tools.descriptor_names.size())
         s.descriptors.emplace_back(tools.descriptor_names[static_cast<std::size_t>(k)], t.descriptors[k]);
-    if (std::find(scene.surfaces.begin(), scene.surfaces.end(), t.surface_id) == scene.surfaces.end())
+    if (std::find(scene.surfaces.begin(), scene.surfaces.end(), t.surface_id) == scene.surfaces.end()) {
       scene.surfaces.push_back(t.surface_id);
+      scene.surface_slots.push_back(scene_surface_slot(t.surface_id));
+    }
     scene.tools.push_back(std::move(s));
   }
   return scene;

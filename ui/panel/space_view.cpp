@@ -54,8 +54,11 @@ void SpaceView::set_axes(int x, int y) {
 }
 
 ImU32 SpaceView::surface_colour(const std::string& surface, int alpha) const {
+  static_assert(std::size(kPalette) == kSurfaceSlots);
   const auto at = std::find(scene_.surfaces.begin(), scene_.surfaces.end(), surface);
-  const std::size_t i = static_cast<std::size_t>(at - scene_.surfaces.begin()) % std::size(kPalette);
+  const auto k = static_cast<std::size_t>(at - scene_.surfaces.begin());
+  // A scene made before slots were given (none known): the order of appearance, as before.
+  const std::size_t i = (k < scene_.surface_slots.size() ? scene_.surface_slots[k] : k) % kSurfaceSlots;
   return (kPalette[i] & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha) << IM_COL32_A_SHIFT);
 }
 

@@ -30,11 +30,17 @@ struct SceneTool {
   std::vector<std::pair<std::string, double>> descriptors;
 };
 
+// How many colours surfaces are drawn in (SpaceScene::surface_slots index them).
+inline constexpr std::size_t kSurfaceSlots = 8;
+
 struct SpaceScene {
   std::string title;  // where the space comes from, e.g. "SIMULATED observer" when it is
   std::vector<std::string> axis_names;  // one per dimension
   std::vector<SceneTool> tools;
-  std::vector<std::string> surfaces;  // the colour order
+  std::vector<std::string> surfaces;  // as they first appear among the tools
+  // Each surface's colour, by name (surface_slots): the same surface has the same colour in
+  // every space, where the order of appearance had made glass pink in one space, green in another.
+  std::vector<std::size_t> surface_slots;  // as surfaces
   std::string judgment_model;         // the space's model and its fitted parts, in words
   std::string model_reason;           // why that model
 };
