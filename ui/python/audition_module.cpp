@@ -21,6 +21,7 @@
 #include "playback/actuator_store.hpp"
 #include "playback/audio_devices.hpp"
 #include "playback/live_audition.hpp"
+#include "playback/offline_render.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/submodules.hpp"
@@ -38,10 +39,17 @@ constexpr double kDefaultForceN = 2.2;  // the paper's recordings
 
 char letter_of(std::size_t slot) { return static_cast<char>('A' + slot); }
 
-void check_contact(double value, const char* what, const char* unit) {
-  if (!std::isfinite(value) || value < 0)
-    throw std::invalid_argument(std::string(what) + " is " + std::to_string(value) + "; expected a finite " + unit +
-                                " of 0 or more");
+// A live contact is held to the ranges a rendered stroke is (playback/offline_render.hpp), as the
+// command line's --speed and --force are: 1e308 m/s once played.
+void check_speed(double speed_m_s) {
+  rt::StrokeRequest request;
+  request.speed_m_s = speed_m_s;
+  playback::check_stroke_request(request);
+}
+void check_force(double force_n) {
+  rt::StrokeRequest request;
+  request.force_n = force_n;
+  playback::check_stroke_request(request);
 }
 
 struct PlayerOptions {
@@ -55,9 +63,9 @@ class Player {
  public:
   explicit Player(const PlayerOptions& o) {
     if (o.channel < 1) throw std::invalid_argument("channel is 0; expected an output channel from 1");
-    if (o.rate != 0 && (o.rate < 8000 || o.rate > 384000))
-      throw std::invalid_argument("rate is " + std::to_string(o.rate) + " Hz; expected 8000 to 384000, or 0 for the device's");
-    if (o.period < 1) throw std::invalid_argument("period is 0; expected a period of at least 1 frame");
+    // A rendered engine's ranges (0: the device's rate), as the command line's --rate and --period.
+    if (o.rate != 0) playback::check_render_rate(o.rate, "rate");
+    playback::check_render_block(o.period, "period");
     py::gil_scoped_release unlocked;
     const auto settings = playback::output_settings_for(o.api, o.device, o.rate, o.period, o.channel, o.name);
     rt::EngineSettings engine;
@@ -94,8 +102,8 @@ class Player {
     if (speed && (trajectory || sweep))
       throw std::invalid_argument("speed is for a constant stroke; give speed, trajectory or sweep, not two");
     if (trajectory && sweep) throw std::invalid_argument("trajectory and sweep are two strokes; give one");
-    if (speed) check_contact(*speed, "speed", "speed in m/s");
-    if (force) check_contact(*force, "force", "force in N");
+    if (speed) check_speed(*speed);
+    if (force) check_force(*force);
     std::vector<model::design::ToolSound> sounds;
     std::optional<rt::Stroke> stroke;
     run_long_call(
@@ -128,14 +136,14 @@ class Player {
   }
 
   void set_speed(double speed) {
-    check_contact(speed, "speed", "speed in m/s");
+    check_speed(speed);
     std::lock_guard lock(mutex_);
     open_or_throw();
     speed_m_s_ = speed;
     contact_locked();
   }
   void set_force(double force) {
-    check_contact(force, "force", "force in N");
+    check_force(force);
     std::lock_guard lock(mutex_);
     open_or_throw();
     force_n_ = force;

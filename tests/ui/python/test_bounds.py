@@ -36,3 +36,13 @@ def test_a_fit_takes_a_path_or_judgments_and_a_bounded_number_of_starts(tmp_path
         nibrig.space.fit(42)
     with pytest.raises(ValueError, match=r"^starts: 1000000000"):
         nibrig.space.fit(tmp_path / "none.csv", starts=10**9)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"rate": 100}, r"^rate: 100 Hz: expected a sample rate in Hz, 8000 to 384000"),
+    ({"period": 10**9}, r"^period: 1e\+09 frames: expected a block size in frames, 1 to 65536"),
+])
+def test_a_player_is_held_to_the_command_lines_ranges_before_a_device_opens(kwargs, message):
+    # Refused before any audio API is asked for the device, which does not exist.
+    with pytest.raises(ValueError, match=message):
+        nibrig.audition.Player("jack", "no such device", **kwargs)
