@@ -130,13 +130,13 @@ std::string prediction_number(double x) {
   return s.str();
 }
 
-bool as_bool(const nlohmann::json& value, const std::filesystem::path& file, const std::string& path) {
+bool prediction_bool(const nlohmann::json& value, const std::filesystem::path& file, const std::string& path) {
   if (!value.is_boolean())
     throw io::FormatError(file, fields::place(path), "expected true or false, found " + value.dump());
   return value.get<bool>();
 }
 
-void check_strings(const nlohmann::json& value, const std::filesystem::path& file, const std::string& path) {
+void check_prediction_strings(const nlohmann::json& value, const std::filesystem::path& file, const std::string& path) {
   const auto& array = fields::as_array(value, file, path);
   for (std::size_t i = 0; i < array.size(); ++i) fields::as_string(array[i], file, fields::element_path(path, i));
 }
@@ -216,7 +216,7 @@ void check_written_comparison(const nlohmann::json& j, const std::filesystem::pa
     fields::string_member(baselines[i], "scalings_of", file, b_at);
     check_errors(baselines[i], b_at);
   }
-  as_bool(fields::member(c, "beats_every_baseline", file, at), file, fields::member_path(at, "beats_every_baseline"));
+  prediction_bool(fields::member(c, "beats_every_baseline", file, at), file, fields::member_path(at, "beats_every_baseline"));
 }
 
 // Every field prediction_json writes, checked to its type and range whether a reader uses it or not,
@@ -251,7 +251,7 @@ PredictedDesign checked_prediction(const nlohmann::json& j, const std::filesyste
   check_written_descriptors(j, file);
   fields::string_member(j, "threshold_curve", file, "");
   check_written_design(j, out.point, file);
-  check_strings(fields::member(j, "notes", file, ""), file, "notes");
+  check_prediction_strings(fields::member(j, "notes", file, ""), file, "notes");
   check_written_comparison(j, file);
   return out;
 }
