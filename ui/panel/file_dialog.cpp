@@ -57,6 +57,19 @@ std::vector<FolderEntry> list_folder(const fs::path& folder, const std::vector<s
   return folders;
 }
 
+namespace {
+
+// Where a file was last chosen, in any of the panel's dialogs: where the next one without a
+// folder of its own opens (a person's files are rarely in the folder the panel was started in).
+fs::path& file_dialog_last_folder() {
+  static fs::path folder;
+  return folder;
+}
+
+}  // namespace
+
+fs::path FileDialog::last_folder() { return file_dialog_last_folder(); }
+
 void FileDialog::open(std::string title, Mode mode, std::vector<std::string> endings, fs::path folder, Chosen chosen) {
   title_ = std::move(title);
   mode_ = mode;
@@ -65,6 +78,7 @@ void FileDialog::open(std::string title, Mode mode, std::vector<std::string> end
   name_[0] = 0;
   error_.clear();
   std::error_code ec;
+  if (folder.empty() || !fs::is_directory(folder, ec)) folder = file_dialog_last_folder();
   if (folder.empty() || !fs::is_directory(folder, ec)) folder = fs::current_path(ec);
   enter(folder);
   open_ = true;
@@ -112,7 +126,9 @@ bool FileDialog::choose(const std::string& name) {
   }
   open_ = false;
   error_.clear();
-  if (chosen_) chosen_(fs::weakly_canonical(path, ec));
+  const fs::path taken = fs::weakly_canonical(path, ec);
+  file_dialog_last_folder() = taken.parent_path();
+  if (chosen_) chosen_(taken);
   return true;
 }
 

@@ -33,13 +33,16 @@ class FileDialog {
   enum class Mode { open, save };
   using Chosen = std::function<void(const std::filesystem::path&)>;
 
-  // Opens the dialog titled `title` in `folder` (the working folder when empty or missing);
-  // `chosen` is called with the file once a person confirms one.
+  // Opens the dialog titled `title` in `folder`; when that is empty or missing, in the folder a
+  // file was last chosen in (by any dialog), else the working folder. `chosen` is called with
+  // the file once a person confirms one.
   void open(std::string title, Mode mode, std::vector<std::string> endings, std::filesystem::path folder,
             Chosen chosen);
   // Each frame: the modal dialog while it is open.
   void draw();
   bool is_open() const { return open_; }
+  // The folder of the file last chosen in any dialog (empty: none yet).
+  static std::filesystem::path last_folder();
 
   // What the buttons do, for scripted sessions: a name (or path) of a folder enters it (false); of
   // a file, takes it (true: the dialog closes and `chosen` is called). False with error() set when
