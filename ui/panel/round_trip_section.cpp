@@ -60,6 +60,10 @@ void RoundTripSection::start(const DeviceRequest& output) {
     return;
   }
   const RoundTripRequest request = request_;
+  measuring_ = request;
+  measured_output_ = output;
+  started_ = period_started_ = std::chrono::steady_clock::now();
+  periods_done_ = 0.0;
   job_ = std::make_unique<BackgroundJob<std::vector<playback::RoundTripResult>>>(
       "measuring the round trip", [output, request](JobControl& control) {
         control.message("opening the device");
@@ -89,7 +93,35 @@ void RoundTripSection::start(const DeviceRequest& output) {
       });
 }
 
+double RoundTripSection::shown_progress() const {
+  if (!job_) return 0.0;
+  const double periods = static_cast<double>(std::max<std::size_t>(1, measuring_.periods.size()));
+  const double period_s = std::max(1e-3, measuring_.impulses * measuring_.interval_ms / 1e3);
+  const double in_period =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - period_started_).count() / period_s;
+  // Within a period the time is an estimate: it stops short of the period's end until reported.
+  return std::min(1.0, periods_done_ + std::min(in_period, 0.95) / periods);
+}
+
+std::string RoundTripSection::hint() const {
+  const bool none_found = std::any_of(results_.begin(), results_.end(),
+                                      [](const playback::RoundTripResult& r) { return r.stats.found == 0; });
+  if (!none_found) return {};
+  const std::string input = measuring_.input_device.empty() ? "the output's own device" : measuring_.input_device;
+  std::string hint = "No impulse came back: nothing played on the output reached input channel " +
+                     std::to_string(measuring_.input_channel) + " of " + input +
+                     ". Connect the output to that input (a loopback cable, or the actuator's accelerometer)";
+  if (measured_output_.api == "jack")
+    hint += "; a JACK server on its dummy driver returns nothing (jackd -L adds a loopback device, or "
+            "connect the ports with jack_connect)";
+  return hint + ".";
+}
+
 void RoundTripSection::poll() {
+  if (job_ && job_->progress() > periods_done_) {
+    periods_done_ = job_->progress();
+    period_started_ = std::chrono::steady_clock::now();
+  }
   if (!job_ || !job_->done()) return;
   if (auto results = job_->take_result()) results_ = std::move(*results);
   error_ = job_->error();
@@ -112,8 +144,11 @@ void RoundTripSection::draw(const DeviceRequest& output) {
   if (ImGui::InputInt("impulses per period", &request_.impulses))
     request_.impulses = std::clamp(request_.impulses, 1, 100000);
   if (job_) {
-    if (progress_with_cancel("round-trip", static_cast<float>(job_->progress()),
-                             job_->message().c_str()))
+    const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    const double total_s = measuring_.impulses * measuring_.interval_ms / 1e3 * static_cast<double>(measuring_.periods.size());
+    char label[160];
+    std::snprintf(label, sizeof label, "%s (%.0f of about %.0f s)", job_->message().c_str(), elapsed_s, total_s);
+    if (progress_with_cancel("round-trip", static_cast<float>(shown_progress()), label))
       job_->cancel();
     measure_button_.reset();
   } else {
@@ -122,6 +157,8 @@ void RoundTripSection::draw(const DeviceRequest& output) {
     measure_button_ = ImVec2{0.5f * (min.x + max.x), 0.5f * (min.y + max.y)};
   }
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+  if (const std::string why = hint(); !why.empty() && !job_)
+    ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "%s", why.c_str());
   draw_table();
 }
 

@@ -3,6 +3,7 @@
 // its figures per period as a table. The UI thread only starts, polls and draws.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,6 +45,11 @@ class RoundTripSection {
   const std::string& error() const { return error_; }
   // The table's cells as last drawn, a row per period: what a person reads.
   const std::vector<std::vector<std::string>>& shown_rows() const { return shown_rows_; }
+  // What the bar shows while measuring (0-1): the periods done, and within one the time its
+  // impulses take (impulses × interval), since the measurement reports only whole periods.
+  double shown_progress() const;
+  // Why no impulse came back, when a period found none (else empty): what to connect.
+  std::string hint() const;
   // Where the measure button was last drawn (screen pixels), for a test to click.
   std::optional<ImVec2> measure_button() const { return measure_button_; }
 
@@ -54,6 +60,10 @@ class RoundTripSection {
   RoundTripRequest request_;
   char input_device_[128] = "", periods_[64] = "64";
   std::unique_ptr<BackgroundJob<std::vector<playback::RoundTripResult>>> job_;
+  RoundTripRequest measuring_;  // the request job_ runs
+  DeviceRequest measured_output_;  // its output, for the hint
+  std::chrono::steady_clock::time_point started_, period_started_;
+  double periods_done_ = 0.0;  // job_->progress() when period_started_ was taken
   std::vector<playback::RoundTripResult> results_;
   std::string error_;
   std::vector<std::vector<std::string>> shown_rows_;
