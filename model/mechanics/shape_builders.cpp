@@ -1,6 +1,7 @@
 #include "model/mechanics/shape_builders.hpp"
 
 #include <gmsh.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,23 +34,37 @@ void require_positive(double value, const std::string& shape, const std::string&
           field, got.str());
 }
 
-// The mesh is bounded by what the FEM solves in memory: about six tetrahedra fill an element-sized
-// cube, and beyond two million of them (some nine million unknowns) the factorisation would not
-// fit. `box_volume` is the shape's bounding box (m^3).
-void require_mesh_size(double mesh_size, double box_volume, const std::string& shape) {
+// What a solve's peak memory was measured at (`nibrig predict` on the bundled stylus at 1 mm:
+// about 81,600 elements by the estimate below, 2.31 GB peak; at 1.5 and 3 mm 0.57 and 0.14 GB).
+constexpr double kMeasuredElements = 81600;
+constexpr double kMeasuredPeakBytes = 2.22e9;  // above the process's own 0.09 GB
+constexpr double kProcessBytes = 0.09e9;
+
+// About six tetrahedra fill an element-sized cube of the shape's bounding box (m^3).
+double elements_estimate(double box_volume, double mesh_size) {
+  return 6 * box_volume / (mesh_size * mesh_size * mesh_size);
+}
+
+// The mesh is bounded by what the FEM solves in the memory it may use: a finer mesh was refused
+// only past two million elements, which needs some 150 GB; one at 0.35 mm ran for minutes at 4 GB
+// and more before it could fail.
+void require_mesh_size(double mesh_size, double box_volume, const std::string& shape, double memory_bytes) {
   std::ostringstream why;
   if (!(std::isfinite(mesh_size) && mesh_size >= kShortestLength && mesh_size <= kLongestLength)) {
     why << "mesh size must be a length between " << kShortestLength << " and " << kLongestLength
         << " m, got " << mesh_size;
     throw std::invalid_argument(why.str());
   }
-  constexpr double kMostElements = 2e6;
-  const double elements = 6 * box_volume / (mesh_size * mesh_size * mesh_size);
-  if (elements > kMostElements) {
-    why << "mesh size " << mesh_size << " m would cut the " << shape << " into about "
-        << elements << " elements, more than the " << kMostElements
-        << " the FEM solves in memory; choose at least "
-        << std::cbrt(6 * box_volume / kMostElements) << " m";
+  const double elements = elements_estimate(box_volume, mesh_size);
+  const double needed = fem_peak_bytes(elements);
+  if (needed > memory_bytes) {
+    const double most = kMeasuredElements *
+                        std::pow(std::max(memory_bytes - kProcessBytes, 0.0) / kMeasuredPeakBytes, 0.75);
+    why.precision(3);
+    why << "mesh size " << mesh_size << " m would cut the " << shape << " into about " << elements
+        << " elements, whose solve needs about " << needed / 1e9 << " GB, more than the "
+        << memory_bytes / 1e9 << " GB it may use (half this machine's memory); choose at least "
+        << std::cbrt(6 * box_volume / most) << " m";
     throw std::invalid_argument(why.str());
   }
 }
@@ -109,12 +124,25 @@ void name_region(const std::string& name, const std::vector<int>& volumes) {
 
 }  // namespace
 
-void validate_mesh_size(double mesh_size) { require_mesh_size(mesh_size, 0.0, "shape"); }
-void validate_mesh_size(const BarGeometry& bar, double mesh_size) {
-  require_mesh_size(mesh_size, bar.length * bar.width * bar.thickness, "bar");
+double fem_peak_bytes(double elements) {
+  // Above some 20,000 elements the measured peaks grow as elements^(4/3), the fill of a sparse
+  // factorisation of a 3-D mesh ordered by nested dissection.
+  return kProcessBytes + kMeasuredPeakBytes * std::pow(elements / kMeasuredElements, 4.0 / 3.0);
 }
-void validate_mesh_size(const StylusGeometry& s, double mesh_size) {
-  require_mesh_size(mesh_size, s.overall_length() * s.body_diameter * s.body_diameter, "stylus");
+
+double fem_memory_budget_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * static_cast<double>(page) : 4e9;
+}
+
+void validate_mesh_size(double mesh_size) {
+  require_mesh_size(mesh_size, 0.0, "shape", fem_memory_budget_bytes());
+}
+void validate_mesh_size(const BarGeometry& bar, double mesh_size, double memory_bytes) {
+  require_mesh_size(mesh_size, bar.length * bar.width * bar.thickness, "bar", memory_bytes);
+}
+void validate_mesh_size(const StylusGeometry& s, double mesh_size, double memory_bytes) {
+  require_mesh_size(mesh_size, s.overall_length() * s.body_diameter * s.body_diameter, "stylus", memory_bytes);
 }
 
 void validate(const BarGeometry& bar) {

@@ -50,11 +50,20 @@ struct StylusGeometry {
 void validate(const StylusGeometry& stylus);
 TetMesh mesh_stylus(const StylusGeometry& stylus, double mesh_size);
 
+// The peak memory (bytes) of meshing and solving a shape cut into about `elements` tetrahedra, as
+// measured for `nibrig predict`.
+double fem_peak_bytes(double elements);
+// What a solve may use: half this machine's physical memory.
+double fem_memory_budget_bytes();
+
 // Throws std::invalid_argument when `mesh_size` is not a length in [1e-5, 1] m, or would cut the
-// shape into more elements than the FEM solves in memory (the message gives the finest that fits).
+// shape so fine that its solve needs more than `memory_bytes` (the message gives the finest mesh
+// size that fits).
 void validate_mesh_size(double mesh_size);  // a shape not known yet: the bounds alone
-void validate_mesh_size(const BarGeometry& bar, double mesh_size);
-void validate_mesh_size(const StylusGeometry& stylus, double mesh_size);
+void validate_mesh_size(const BarGeometry& bar, double mesh_size,
+                        double memory_bytes = fem_memory_budget_bytes());
+void validate_mesh_size(const StylusGeometry& stylus, double mesh_size,
+                        double memory_bytes = fem_memory_budget_bytes());
 
 // Every node inside the axis-aligned box [lo, hi] (inclusive, with a tolerance of 1e-9 m), sorted.
 std::vector<int> nodes_in_box(const TetMesh& mesh, const Eigen::Vector3d& lo,

@@ -8,6 +8,9 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <string>
+
+#include <unistd.h>
 
 #include "model/mechanics/tet10_element.hpp"
 #include "tests/model/mechanics/mesh_volume.hpp"
@@ -146,6 +149,52 @@ TEST(StylusMesh, ImpossibleStyliNameTheirField) {
   s.tip_insert_length = 0.13;
   EXPECT_THAT([&] { validate(s); },
               ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("tip insert")));
+}
+
+}  // namespace
+}  // namespace nibrig::model::mechanics
+
+namespace nibrig::model::mechanics {
+namespace {
+
+std::string mesh_size_refusal(const StylusGeometry& stylus, double mesh_size, double memory_bytes) {
+  try {
+    validate_mesh_size(stylus, mesh_size, memory_bytes);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return {};
+}
+
+// `predict --mesh-size 0.00035` passed the old bound (two million elements) and ran for minutes at
+// 4 GB and more: its solve needs some 150 GB. With the memory of this 24 GB machine's half, it is
+// refused, and the finest size the message suggests is the finest that passes.
+TEST(MeshSizeBound, TheTrialsFineMeshIsRefusedNamingTheFinestThatFits) {
+  const StylusGeometry stylus;
+  const double budget = 12e9;
+  const std::string message = mesh_size_refusal(stylus, 0.00035, budget);
+  ASSERT_FALSE(message.empty());
+  EXPECT_THAT(message, ::testing::HasSubstr("GB"));
+  const std::string marker = "choose at least ";
+  const auto at = message.find(marker);
+  ASSERT_NE(at, std::string::npos) << message;
+  const double finest = std::stod(message.substr(at + marker.size()));
+  // Printed to 3 significant digits: 0.1 % either side is past its rounding (0.08 % at most).
+  EXPECT_EQ(mesh_size_refusal(stylus, finest * 1.001, budget), "");
+  EXPECT_NE(mesh_size_refusal(stylus, finest * 0.999, budget), "");
+  // Between the sizes measured (1 mm needed 2.3 GB) and the trial's (0.35 mm).
+  EXPECT_GT(finest, 0.00035);
+  EXPECT_LT(finest, 0.001);
+}
+
+TEST(MeshSizeBound, TheTemplatesMeshFitsASmallMachineAndTheBudgetIsHalfThisOnes) {
+  const StylusGeometry stylus;
+  EXPECT_EQ(mesh_size_refusal(stylus, 0.003, 1e9), "");  // the bundled stylus's 3 mm
+  EXPECT_NE(mesh_size_refusal(stylus, 0.0005, 1e9), "");
+  const double physical = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGESIZE);
+  EXPECT_DOUBLE_EQ(fem_memory_budget_bytes(), physical / 2);
+  // The peak grows faster than the element count (the factorisation's fill), never slower.
+  EXPECT_GT(fem_peak_bytes(2e5) / fem_peak_bytes(1e5), 2.0);
 }
 
 }  // namespace

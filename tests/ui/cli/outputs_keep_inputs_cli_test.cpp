@@ -176,6 +176,30 @@ TEST(OutputsKeepInputsCli, AnExportThatCannotFinishLeavesTheEarlierSetWhole) {
   }
 }
 
+// What a stopped command was making is gone; what it was told to leave (an earlier report) stays.
+void expect_nothing_left_after_ctrl_c(const std::vector<std::string>& args, const fs::path& folder,
+                                      const std::string& temporary_prefix,
+                                      const std::vector<std::string>& kept) {
+  const pid_t pid = test::start_cli(args);
+  bool writing = false;  // the temporary exists: the command is making its output
+  for (int i = 0; i < 1200 && !writing; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    for (const auto& entry : fs::directory_iterator(folder))
+      writing = writing || entry.path().filename().string().rfind(temporary_prefix, 0) == 0;
+  }
+  ::kill(pid, SIGINT);
+  const int code = test::wait_cli(pid);
+  EXPECT_TRUE(writing) << args[0] << " never started its output";
+  EXPECT_EQ(code, 128 + SIGINT) << args[0];
+  EXPECT_EQ(names_in(folder), kept) << args[0];
+}
+
+TEST(OutputsKeepInputsCli, CtrlCDuringADemoLeavesNoWorkFolder) {
+  const fs::path folder = nibrig::test::scratch_dir("cli_outputs_demo_stopped");
+  expect_nothing_left_after_ctrl_c({"demo", "--only", "descriptors", "-o", (folder / "dm").string()}, folder,
+                                   ".dm.partial-", {});
+}
+
 TEST(OutputsKeepInputsCli, CtrlCDuringARenderLeavesNoTemporaryFile) {
   const fs::path folder = nibrig::test::scratch_dir("cli_outputs_render_stopped");
   const pid_t pid = test::start_cli({"render", "--tool", "cryon", "--surface", "office", "--seconds", "3600",
