@@ -98,6 +98,15 @@ OutputTarget output_target(const std::filesystem::path& named) {
   }
 }
 
+void refuse_companion_link(const std::filesystem::path& companion, const std::filesystem::path& named) {
+  std::error_code ec;
+  if (!std::filesystem::is_symlink(std::filesystem::symlink_status(companion, ec))) return;
+  const auto points_to = std::filesystem::read_symlink(companion, ec);
+  throw OutputFileError(companion.string() + ": is a link (to " + points_to.string() + "), where " +
+                        named.string() + " puts a file of its own; nothing was written: remove "
+                        "the link or name the output elsewhere");
+}
+
 std::filesystem::path temporary_beside(const OutputTarget& target) {
   static std::atomic<unsigned> counter{0};
   std::filesystem::path temporary = target.stream ? std::filesystem::temp_directory_path() /

@@ -32,6 +32,11 @@ struct OutputTarget {
 // OutputFileError when the file it would replace is an input of the running job (job_files.hpp).
 OutputTarget output_target(const std::filesystem::path& named);
 
+// A file an output names beside itself (the recipe and STLs beside a 3MF) must not be a link: the
+// person named `named`, not what a link beside it points to (a catalog, once). Throws
+// OutputFileError naming both.
+void refuse_companion_link(const std::filesystem::path& companion, const std::filesystem::path& named);
+
 // Where to write a temporary whole file for `target` (beside it, so the rename stays on one file
 // system), unique per process and call.
 std::filesystem::path temporary_beside(const OutputTarget& target);

@@ -18,14 +18,14 @@ namespace {
 
 enum State : int { kFree = 0, kBusy = 1, kTracked = 2 };
 
-struct Slot {
+struct TrackedSlot {
   std::atomic<int> state{kFree};
   char path[PATH_MAX];
 };
 
 // Static and fixed, so that the signal handler reads it without allocating or locking.
 constexpr std::size_t kSlots = 64;
-std::array<Slot, kSlots> slots;
+std::array<TrackedSlot, kSlots> tracked_slots;
 
 // Removes a folder's contents and then the folder with system calls only (opendir allocates).
 // Deeper than a work folder ever nests is left: a partial cleanup beats a handler that recurses
@@ -58,7 +58,7 @@ void remove_tree_at(int parent, const char* name, int depth) {
 }
 
 void remove_tracked() {
-  for (Slot& slot : slots)
+  for (TrackedSlot& slot : tracked_slots)
     if (slot.state.load(std::memory_order_acquire) == kTracked) remove_tree_at(AT_FDCWD, slot.path, 0);
 }
 
@@ -70,7 +70,7 @@ void on_signal(int signal) {
   ::raise(signal);
 }
 
-bool claim(Slot& slot, int from) {
+bool claim_slot(TrackedSlot& slot, int from) {
   int expected = from;
   return slot.state.compare_exchange_strong(expected, kBusy, std::memory_order_acquire);
 }
@@ -78,8 +78,8 @@ bool claim(Slot& slot, int from) {
 // A slot whose path is gone (a writer removed its temporary on a way out that does not untrack it)
 // is free again.
 void free_vanished() {
-  for (Slot& slot : slots) {
-    if (!claim(slot, kTracked)) continue;
+  for (TrackedSlot& slot : tracked_slots) {
+    if (!claim_slot(slot, kTracked)) continue;
     struct stat info {};
     const bool gone = ::lstat(slot.path, &info) != 0 && errno == ENOENT;
     slot.state.store(gone ? kFree : kTracked, std::memory_order_release);
@@ -87,8 +87,8 @@ void free_vanished() {
 }
 
 bool try_track(const std::string& text) {
-  for (Slot& slot : slots) {
-    if (!claim(slot, kFree)) continue;
+  for (TrackedSlot& slot : tracked_slots) {
+    if (!claim_slot(slot, kFree)) continue;
     std::memcpy(slot.path, text.c_str(), text.size() + 1);
     slot.state.store(kTracked, std::memory_order_release);
     return true;
@@ -108,8 +108,8 @@ void track_temporary(const std::filesystem::path& path) {
 
 void untrack_temporary(const std::filesystem::path& path) {
   const std::string text = std::filesystem::absolute(path).string();
-  for (Slot& slot : slots) {
-    if (!claim(slot, kTracked)) continue;
+  for (TrackedSlot& slot : tracked_slots) {
+    if (!claim_slot(slot, kTracked)) continue;
     const bool same = text == slot.path;
     slot.state.store(same ? kFree : kTracked, std::memory_order_release);
     if (same) return;
@@ -125,7 +125,7 @@ void remove_temporaries_on_signals() {
 
 int tracked_temporaries() {
   int n = 0;
-  for (Slot& slot : slots) n += slot.state.load(std::memory_order_acquire) == kTracked;
+  for (TrackedSlot& slot : tracked_slots) n += slot.state.load(std::memory_order_acquire) == kTracked;
   return n;
 }
 
