@@ -575,6 +575,7 @@ void Panel::draw_views() {
   follow_error_view();
   const std::string status = status_line();  // once a frame: laid out, then drawn
   const float status_height = this->status_height(status);
+  last_status_height_ = status_height;
   if (ImGui::BeginTabBar("views")) {
     for (View v : kViews) {
       const bool select = requested_ && *requested_ == v;
@@ -608,7 +609,12 @@ void Panel::draw_frame_times() {
   const std::size_t n = std::min(frame_at_, kFrameTimes);
   float sum = 0.0f, worst = 0.0f;
   for (std::size_t i = 0; i < n; ++i) sum += frame_ms_[i], worst = std::max(worst, frame_ms_[i]);
-  ImGui::SetNextWindowPos({ImGui::GetMainViewport()->WorkSize.x - 330.0f, 40.0f}, ImGuiCond_FirstUseEver);
+  // Bottom left of the view, above the status block: the space view's side panel (the stroke's
+  // controls) is on the right, where the readout had covered it. Placed each time it is shown.
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({viewport->WorkPos.x + 12.0f,
+                           viewport->WorkPos.y + viewport->WorkSize.y - last_status_height_ - 12.0f},
+                          ImGuiCond_Appearing, {0.0f, 1.0f});
   if (ImGui::Begin("Frame times", &frame_times_window_, ImGuiWindowFlags_AlwaysAutoResize)) {
     const float rate = ImGui::GetIO().Framerate;
     ImGui::Text("%.1f frames/s (%.1f ms apart)", rate, rate > 0.0f ? 1000.0f / rate : 0.0f);

@@ -170,6 +170,7 @@ class Panel {
   static constexpr std::size_t kFrameTimes = 120;
   std::array<float, kFrameTimes> frame_ms_{};
   std::size_t frame_at_ = 0;
+  float last_status_height_ = 0.0f;  // the status block's, as last laid out: the readout sits above it
 };
 
 }  // namespace nibrig::ui::panel
