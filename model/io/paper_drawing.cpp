@@ -1,6 +1,7 @@
 #include "model/io/paper_drawing.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "model/io/format_error.hpp"
 #include "model/io/text_lines.hpp"
@@ -19,6 +20,9 @@ constexpr long long kLongestFrameStep_ms = 50;
 // format's whole-millisecond stamps still tell apart.
 constexpr double kLowestFrameRate_hz = 30.0;
 constexpr double kHighestFrameRate_hz = 500.0;
+// The force a stroke may press with, as `render --force` takes it (50 N); the artists' recordings
+// read -1.7 to 9.4 N, the sensor's offset making some slightly negative.
+constexpr double kHeaviestForce_N = 50.0;
 
 }  // namespace
 
@@ -74,6 +78,11 @@ DrawingTrajectory read_paper_drawing(const std::filesystem::path& file) {
     const double x_mm = parse_number(fields[c_x], file, line, "X");
     const double y_mm = parse_number(fields[c_y], file, line, "Y");
     const double force = parse_number(fields[c_force], file, line, "F");
+    if (std::abs(force) > kHeaviestForce_N) {
+      throw FormatError(file, field_place(line, "F"),
+                        "expected a force within +-" + std::to_string(static_cast<int>(kHeaviestForce_N)) +
+                            " N (a pen's, as render --force takes), found " + in_quotes(fields[c_force]));
+    }
     const long long touch = parse_integer(fields[c_touch], file, line, "Touch");
     if (touch != 0 && touch != 1) {
       throw FormatError(file, field_place(line, "Touch"),

@@ -221,5 +221,24 @@ TEST_F(DrawingMalformed, TouchAndTimestampsAreChecked) {
                        {"line 4, field 'Speed'", "expected a distance per frame (>= 0)"});
 }
 
+// A force of 1e308 N in a stroke was taken, and rendered: the file is held to render --force's
+// bound (every real recording, -1.7 to 9.4 N, is read by the test above).
+TEST(PaperDrawing, AForceBeyondAPensIsRefusedNamingItsLine) {
+  const auto dir = nibrig::test::scratch_dir("drawing_force");
+  const std::string header = "Unix Timestamp,X,Y,Z,Phi,Theta,F,Ground,Touch,Speed,Acceeration\n";
+  for (const char* force : {"1e308", "-51", "50.001"}) {
+    nibrig::test::write_text(dir / "pen_paper_s.csv", header +
+                                                          "1700000000000,10,40,0,0,0,1.2,0,1,0,0\n"
+                                                          "1700000000008,10.3,40,0,0,0," +
+                                                          force + ",0,1,0.3,0\n");
+    expect_message_names(format_error_of([&] { read_paper_drawing(dir / "pen_paper_s.csv"); }),
+                         {"pen_paper_s.csv", "line 3, field 'F'", "50 N", force});
+  }
+  nibrig::test::write_text(dir / "pen_paper_s.csv", header +
+                                                        "1700000000000,10,40,0,0,0,50,0,1,0,0\n"
+                                                        "1700000000008,10.3,40,0,0,0,-1.7,0,1,0.3,0\n");
+  EXPECT_NO_THROW(read_paper_drawing(dir / "pen_paper_s.csv"));
+}
+
 }  // namespace
 }  // namespace nibrig::model::io
