@@ -198,9 +198,10 @@ ResponseFile read_response_file(const std::filesystem::path& file,
       throw io::FormatError(file, io::field_place(line, "chosen"),
                             "expected left or right, found " + io::in_quotes(f[c_chosen]));
     r.response_s = io::parse_number(f[c_time], file, line, "response_s");
-    if (r.response_s < 0)
+    // A day: a trial left open over a break is still an answer; 1e308 s is not.
+    if (r.response_s < 0 || r.response_s > 86400)
       throw io::FormatError(file, io::field_place(line, "response_s"),
-                            "expected a time >= 0 s, found " + io::in_quotes(f[c_time]));
+                            "expected a time from 0 to 86400 s (a day), found " + io::in_quotes(f[c_time]));
     r.plays = std::string(f[c_plays]);
     if (r.plays.find_first_not_of("RAB") != std::string::npos)
       throw io::FormatError(file, io::field_place(line, "plays"),

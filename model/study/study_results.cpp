@@ -24,6 +24,23 @@ MainAnswers main_answers(const ParticipantData& p) {
   return m;
 }
 
+// A log with more answers than the study's plan presents was not written by a session of this
+// study (one stops when the plan ends): its extra answers would weigh in the fit unnoticed. The
+// participant's order is replayed from their seed, as a resumed session does.
+void refuse_answers_beyond_the_plan(const std::vector<LoggedResponse>& responses,
+                                    const StudyDefinition& definition, std::uint64_t seed,
+                                    const std::filesystem::path& file) {
+  TrialSequence sequence(definition, seed);
+  for (const LoggedResponse& r : responses) {
+    if (!sequence.next())
+      throw io::FormatError(file, io::line_place(r.trial + 1),
+                            "trial " + std::to_string(r.trial) + " is beyond the study's plan, which ends after " +
+                                std::to_string(sequence.answered()) +
+                                " trials for this participant: this log is not one of this study's sessions");
+    sequence.record(r.chosen);
+  }
+}
+
 }  // namespace
 
 StudyData read_study(const std::filesystem::path& folder) {
@@ -69,6 +86,7 @@ StudyData read_study(const std::filesystem::path& folder) {
     }
     if (std::filesystem::exists(f / kResponsesFile)) {
       ResponseFile file = read_response_file(f / kResponsesFile, names, last);
+      refuse_answers_beyond_the_plan(file.responses, study.definition, p.record.seed, f / kResponsesFile);
       p.responses = std::move(file.responses);
       study.warnings.insert(study.warnings.end(), file.warnings.begin(), file.warnings.end());
     }

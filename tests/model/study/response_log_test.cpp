@@ -94,6 +94,7 @@ TEST(ResponseLog, BadLinesAreRefusedNamingTheFileLineAndField) {
       {"2,0,1,crayon/office,D1,pencil/stone,left,1.0,RAB,t\n", "expected trial 1"},
       {"1,0,1,crayon/office,D1,pencil/stone,up,1.0,RAB,t\n", "field 'chosen'"},
       {"1,0,1,crayon/office,D1,pencil/stone,left,-1,RAB,t\n", "field 'response_s'"},
+      {"1,0,1,crayon/office,D1,pencil/stone,left,1e308,RAB,t\n", "field 'response_s'"},
       {"1,0,1,crayon/office,D1,pencil/stone,left,1.0,RXB,t\n", "field 'plays'"},
       {"1,2,1,crayon/office,D1,pencil/stone,left,1.0,RAB,t\n", "field 'practice'"},
       {"1,0,7,crayon/office,D1,pencil/stone,left,1.0,RAB,2026-11-26T04:00:00Z\n",

@@ -234,6 +234,34 @@ TEST(StudySession, TheReportCountsEveryParticipantOrSaysWhyNot) {
   }
 }
 
+// The trial's report took an answer appended beyond the plan: no session of the study writes one.
+TEST(StudySession, AnAnswerBeyondThePlanIsRefusedNamingItsLine) {
+  const auto study = test::make_study(nibrig::test::scratch_dir("session_beyond"), small_study());
+  NothingPresented nothing;
+  test::StoppingParticipant p(session_truth(7), 1);
+  run_study(settings_for(study, "P01"), nothing, p);
+  const auto log = participant_folder(study, "P01") / kResponsesFile;
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(log);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_NO_THROW(read_study(study));
+  const std::size_t answered = lines.size() - 1;
+  const std::string last = lines.back();
+  std::ofstream(log, std::ios::app) << std::to_string(answered + 1) << last.substr(last.find(',')) << "\n";
+  try {
+    read_study(study);
+    ADD_FAILURE() << "an answer beyond the plan was read";
+  } catch (const io::FormatError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(log.string()), std::string::npos) << message;
+    EXPECT_NE(message.find("line " + std::to_string(answered + 2)), std::string::npos) << message;
+    EXPECT_NE(message.find("beyond the study's plan"), std::string::npos) << message;
+  }
+}
+
 TEST(StudySession, DecliningTheConsentRecordsNothing) {
   const auto study = test::make_study(nibrig::test::scratch_dir("session_declined"), small_study());
   NothingPresented nothing;
