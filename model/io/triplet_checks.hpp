@@ -25,4 +25,8 @@ std::optional<std::string> triplet_problem(const Triplet& triplet,
 TripletSet read_triplet_csv(const std::filesystem::path& file, Responses responses);
 TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses);
 
+class CsvHeader;
+// A header with the columns of a study session's responses.csv.
+bool is_response_log_header(const CsvHeader& header);
+
 }  // namespace nibrig::model::io

@@ -166,11 +166,13 @@ TripletSet read_any_triplets(const std::filesystem::path& file, Responses respon
   if (start != std::string::npos && first[start] == '{') return read_lagunas_json(file, responses);
   const CsvHeader header(first, file, 1, kTripletHeader);
   if (header.find("Center") && header.find("Answer")) return read_salmon_csv(file);
+  if (is_response_log_header(header)) return read_response_log_triplets(file);
   if (header.find("reference")) return read_triplet_csv(file, responses);
   throw FormatError(
       file, line_place(1),
       "unrecognised triplet file: expected a header " + std::string(kTripletHeader) +
-          " (nibrig), one with Participant.ID,Center,Left,Right,Answer (Salmon), or a "
+          " (nibrig), one with Participant.ID,Center,Left,Right,Answer (Salmon), a study's "
+          "responses.csv, or a "
           "JSON object with answers and agreement (Lagunas et al.), found " +
           in_quotes(first));
 }

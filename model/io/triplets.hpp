@@ -45,8 +45,13 @@ TripletSet read_lagunas_json(const std::filesystem::path& file);
 // say which one was the Answer, observer = Participant.ID. Stimuli are the item names, sorted.
 TripletSet read_salmon_csv(const std::filesystem::path& file);
 
+// A study session's responses.csv (trial,practice,stage,reference,left,right,chosen,...): each main
+// answer one response, practice left out, the observer the participant folder's name.
+TripletSet read_response_log_triplets(const std::filesystem::path& file);
+
 // Any of the above, told apart by content: a JSON object is Lagunas', a CSV header with Center and
-// Answer is Salmon's, one with reference,a,b is ours.
+// Answer is Salmon's, one with reference,left,right,chosen a study's log, one with reference,a,b
+// ours.
 TripletSet read_triplets(const std::filesystem::path& file);
 
 // The same formats read as triplets to predict (`nibrig space predict`): counts are not used, so a

@@ -143,6 +143,30 @@ TEST(Triplets, QuotedFieldsAreTheSameStimuliAsUnquoted) {
                        {"after.csv", "line 2", "closing quote"});
 }
 
+// The experiment view's own log, as the panel's "Fit a space from judgments" is given it.
+TEST(Triplets, AStudySessionsResponsesAreJudgmentsWithoutPractice) {
+  const auto dir = nibrig::test::scratch_dir("triplets_responses") / "participants" / "P07";
+  std::filesystem::create_directories(dir);
+  nibrig::test::write_text(dir / "responses.csv",
+                           "trial,practice,stage,reference,left,right,chosen,response_s,plays,answered_utc\n"
+                           "1,1,1,chalk,pencil,crayon,left,2.0,RAB,2026-11-26T04:00:00Z\n"
+                           "2,0,1,crayon,chalk,pencil,right,1.5,RAB,2026-11-26T04:00:05Z\n"
+                           "3,0,1,pencil,crayon,chalk,left,1.1,RA,2026-11-26T04:00:09Z\n"
+                           "4,0,2,crayon,pencil,cha");  // cut off by a crash: dropped
+  const TripletSet set = read_triplets(dir / "responses.csv");
+  EXPECT_EQ(set.stimuli, (std::vector<std::string>{"crayon", "chalk", "pencil"}));
+  ASSERT_EQ(set.triplets.size(), 2u) << "practice and the cut-off line are not fitted";
+  EXPECT_EQ(set.triplets[0].count_a, 0);
+  EXPECT_EQ(set.triplets[0].count_b, 1);
+  EXPECT_EQ(set.triplets[1].count_a, 1);
+  EXPECT_EQ(set.triplets[1].observer, "P07");
+  nibrig::test::write_text(dir / "practice_only.csv",
+                           "trial,practice,stage,reference,left,right,chosen,response_s,plays,answered_utc\n"
+                           "1,1,1,chalk,pencil,crayon,left,2.0,RAB,2026-11-26T04:00:00Z\n");
+  expect_message_names(format_error_of([&] { read_triplets(dir / "practice_only.csv"); }),
+                       {"practice_only.csv", "no main answer"});
+}
+
 TEST(Triplets, WriterRefusesWhatTheFormatCannotHold) {
   const auto dir = nibrig::test::scratch_dir("triplets_writer");
   TripletSet out_of_range{{"a", "b"}, {{0, 1, 2, 1, 0, ""}}, {}};
