@@ -164,20 +164,25 @@ void PadView::draw() {
   pen_.poll(ImGui::GetTime());
   rig::pen::PenStylus* stylus = pen_.stylus();
   section("Tool");
+  // One row where the window is wide enough, wrapped where it is not (800 px cut the last button).
   ImGui::SetNextItemWidth(140.0f);
   ImGui::InputText("tool", tool_text_, sizeof tool_text_);
-  ImGui::SameLine();
+  same_line_if_fits(labelled_width("surface", 140.0f));
   ImGui::SetNextItemWidth(140.0f);
   ImGui::InputText("surface", surface_text_, sizeof surface_text_);
-  ImGui::SameLine();
-  if (ImGui::Button(loaded_ ? "Use" : "Load")) use_tool({tool_text_, surface_text_});
+  const char* load = loaded_ ? "Use" : "Load";
+  same_line_if_fits(button_width(load));
+  if (ImGui::Button(load)) use_tool({tool_text_, surface_text_});
   if (!stylus) {
-    ImGui::SameLine();
+    same_line_if_fits(labelled_width("mouse force N", 160.0f));
     ImGui::SetNextItemWidth(160.0f);
     ImGui::SliderFloat("mouse force N", &force_n_, 0.5f, 4.0f, "%.1f");
   }
-  ImGui::SameLine();
-  if (ImGui::Button(replay_ ? "Stop the replay" : "Replay a stroke...")) {
+  const char* replay_label = replay_ ? "Stop the replay" : "Replay a stroke...";
+  same_line_if_fits(button_width(replay_label));
+  const bool replay_pressed = ImGui::Button(replay_label);
+  replay_button_ = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+  if (replay_pressed) {
     if (replay_) {
       replay_.reset();
       drawing_ = false;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "imgui.h"
@@ -30,6 +31,8 @@ class PadView {
   double speed_mm_s() const { return speed_mm_s_; }
   double force_n() const { return sent_force_n_; }
   bool drawing() const { return drawing_; }
+  // Where "Replay a stroke..." was last drawn (screen pixels: min, max), for a test to measure.
+  std::pair<ImVec2, ImVec2> replay_button() const { return replay_button_; }
   const std::deque<float>& trace() const { return trace_; }
   const std::deque<float>& force_trace() const { return force_trace_; }
   PadPen& pen() { return pen_; }
@@ -64,6 +67,7 @@ class PadView {
   double event_s_[2]{};
   int events_ = 0;
   std::vector<std::vector<ImVec2>> strokes_;  // in canvas coordinates
+  std::pair<ImVec2, ImVec2> replay_button_{};
   std::deque<float> trace_;                   // speed per frame, the last 600
   std::deque<float> force_trace_;             // force per frame, the last 600
   double sent_force_n_ = 0.0;

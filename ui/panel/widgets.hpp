@@ -8,6 +8,20 @@
 
 namespace nibrig::ui::panel {
 
+// Puts the next item beside the last one when `next_width` fits before the window's right edge,
+// else on the next line: a row of widgets wraps in a narrow window instead of running off it.
+inline void same_line_if_fits(float next_width) {
+  const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + next_width;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+// The width a button labelled `label` takes; a labelled field `field_width` wide.
+inline float button_width(const char* label) {
+  return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+inline float labelled_width(const char* label, float field_width) {
+  return field_width + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
 // A titled separator (ImGui 1.89's SeparatorText).
 inline void section(const char* title) {
   ImGui::Spacing();

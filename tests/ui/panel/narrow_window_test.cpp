@@ -1,0 +1,45 @@
+// At the panel's smallest window (800 × 500) the pad's row of controls ends inside the view: its
+// last button, "Replay a stroke...", had run off the right edge, cut.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "imgui.h"
+#include "imgui_internal.h"
+#include "tests/ui/panel/panel_test_setup.hpp"
+#include "tests/ui/panel/test_space.hpp"
+#include "ui/panel/pad_view.hpp"
+#include "ui/panel/panel.hpp"
+
+namespace nibrig::ui::panel {
+namespace {
+
+TEST(NarrowWindow, ThePadsControlsEndInsideTheViewAtTheSmallestWindow) {
+  const auto dir = nibrig::test::scratch_dir("panel_narrow_window");
+  WindowSettings settings = testing::hidden_window();
+  settings.width = PanelWindow::kMinWidth;
+  settings.height = PanelWindow::kMinHeight;
+  PanelWindow window(settings);
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  Panel panel(setup);
+  panel.pad_view().pen().stop_looking();
+  panel.show(View::pad);
+  float view_right = 0.0f;
+  for (int i = 0; i < 5; ++i) {
+    window.begin_frame();
+    panel.draw();
+    for (ImGuiWindow* w : GImGui->Windows)
+      if (w->Active && std::string(w->Name).find("/view_") != std::string::npos) view_right = w->Rect().Max.x;
+    window.end_frame();
+  }
+  ASSERT_EQ(panel.current(), View::pad);
+  ASSERT_GT(view_right, 0.0f);
+  const auto [low, high] = panel.pad_view().replay_button();
+  const float label = ImGui::CalcTextSize("Replay a stroke...").x;
+  EXPECT_GE(high.x - low.x, label) << "the button is narrower than its label";
+  EXPECT_LE(high.x, view_right) << "the button ends at " << high.x << ", the view at " << view_right;
+}
+
+}  // namespace
+}  // namespace nibrig::ui::panel
