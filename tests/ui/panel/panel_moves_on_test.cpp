@@ -97,7 +97,8 @@ TEST(PanelMovesOn, ASpaceThatFailedIsNotRememberedAndNothingShownMeansTheDefault
   MovesOn s(setup);
   ASSERT_TRUE(s.until([&] { return !s.panel.error().empty(); }, std::chrono::seconds(60)));
   EXPECT_NE(s.panel.error().find("broken_space.json"), std::string::npos) << s.panel.error();
-  ASSERT_TRUE(s.panel.busy()) << "nothing is computed";
+  // Computing it, or (read from the cache) done already: either way not an empty view idling.
+  ASSERT_TRUE(s.panel.busy() || !s.panel.space_view().scene().tools.empty()) << "nothing is computed";
   EXPECT_EQ(s.panel.space_file(), std::filesystem::path());
   // Read from the tests' cache once computed (about a second); computed afresh, a few minutes.
   ASSERT_TRUE(s.until([&] { return !s.panel.space_view().scene().tools.empty(); }, std::chrono::seconds(400)))
