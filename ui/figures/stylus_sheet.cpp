@@ -101,6 +101,7 @@ report::PrintSheet stylus_sheet(const design::StylusPrint& print, const design::
       if (t.placed) placed.push_back({t.name, *t.placed, "target", true});
     placed.push_back({"this design", *inputs.placement, "this design", true});
     sheet.scatter_plot = space_scatter(*inputs.space, placed, "Where it lies in the perceptual space");
+    sheet.scatter_plot->leave_out_crowded_labels = true;  // a third of a page: labels must be readable
   } else {
     line(sheet.lines, "its place in the space: not on this sheet (no space given)");
   }

@@ -135,6 +135,10 @@ struct ScatterPlot {
   // otherwise it must name every style a point uses.
   std::vector<std::string> region_labels;
   bool equal_axes = true;  // same scale on x and y (distances in a perceptual space are isotropic)
+  // A label that cannot be free of the others is left out, not drawn over them (a print sheet's
+  // small plot); so is every such label beyond 40 points. Hollow points (placed tools: what the
+  // figure is about) are labelled first and always.
+  bool leave_out_crowded_labels = false;
   ImageSize size{};
 };
 

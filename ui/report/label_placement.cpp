@@ -82,8 +82,10 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
   }
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return crowd[a] > crowd[b]; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (requests[a].first != requests[b].first) return requests[a].first;
+    return crowd[a] > crowd[b];
+  });
 
   std::vector<PlacedLabel> out(n);
   std::vector<Box> placed;
@@ -111,7 +113,7 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
       if (cost < best) best = cost, best_box = box;
     }
     const bool clean = std::get<1>(best) == 0;
-    if (options.skip_overlapping && !clean) continue;
+    if (options.skip_overlapping && !clean && !r.first) continue;
     out[i].placed = true;
     const int spot = std::get<3>(best) % near_candidates;
     out[i].leader = std::get<3>(best) >= near_candidates;

@@ -12,6 +12,7 @@ namespace nibrig::ui::report::detail {
 struct LabelRequest {
   double x, y;           // the marker's centre
   double width, height;  // the label's box; width 0 means no label
+  bool first = false;    // placed before the others and never left out (what a figure is about)
 };
 
 struct PlacementOptions {
@@ -40,8 +41,8 @@ struct PlacedLabel {
   double just = 0.0;
 };
 
-// One entry per request (not placed when width is 0, or skipped in a crowd). Labels are placed
-// most crowded point first, so that the points with the fewest free spots choose before their
+// One entry per request (not placed when width is 0, or skipped in a crowd). Labels asked `first`
+// are placed before the others; then the most crowded point first, so that the points with the fewest free spots choose before their
 // neighbours take them; ties between spots go to the earlier spot in the order above.
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
                                       const PlacementOptions& options);

@@ -132,7 +132,7 @@ ScatterFrame layout_scatter(const ScatterPlot& plot, const Style& style, const B
   const double label_height = 1.4 * f.label_cap;
   f.placement.marker_radius = f.marker_radius;
   f.placement.gap = 0.35 * f.label_cap;
-  f.placement.skip_overlapping = plot.points.size() > max_points_all_labelled;
+  f.placement.skip_overlapping = plot.points.size() > max_points_all_labelled || plot.leave_out_crowded_labels;
   // Labels keep clear of the frame by this much.
   const double inset = 0.25 * st.pad;
 
@@ -209,7 +209,7 @@ ScatterFrame layout_scatter(const ScatterPlot& plot, const Style& style, const B
   for (const auto& p : plot.points) {
     f.label_requests.push_back({m.px(p.x), m.py(p.y),
                                 p.label.empty() ? 0.0 : st.text_width(p.label, f.label_cap),
-                                label_height});
+                                label_height, p.hollow});
   }
   const auto& b = f.axes.box;
   f.placement.bounds = {b.x0 + inset, b.y0 + inset, b.x1 - inset, b.y1 - inset};

@@ -293,6 +293,43 @@ TEST(ReportScatterPlot, UpToFortyPointsAreAllLabelledEvenWhenCrowded) {
   for (std::size_t i = 0; i < f.labels.size(); ++i) EXPECT_TRUE(f.labels[i].placed) << i;
 }
 
+// The print sheet's space plot, a third of a page, had its stimuli's labels drawn over each other.
+// There a crowded label is left out instead; the placed design and target are labelled always.
+TEST(ReportScatterPlot, ASheetsSmallPlotLeavesOutCrowdedLabelsButNotThePlacedTools) {
+  ScatterPlot plot;
+  for (int i = 0; i < 15; ++i) {  // a 15-tool space, its tools crowded near the middle
+    const double a = 2.4 * i, r = 0.05 + 0.02 * i;
+    plot.points.push_back({"tool" + std::to_string(i) + "/office", r * std::cos(a), r * std::sin(a), "office", {}, false});
+  }
+  plot.points.push_back({"this design", 0.01, 0.02, "this design", {}, true});
+  plot.points.push_back({"cryon/office (target)", -0.03, 0.0, "target", {}, true});
+  plot.leave_out_crowded_labels = true;
+  const detail::Style st = detail::Style::for_size({1600, 1000});
+  const detail::Box sheet_corner{900, 60, 1560, 420};  // where the sheet puts it: 660 x 360 px
+  const auto f = detail::layout_scatter(plot, st, sheet_corner);
+  const auto overlap = [](const detail::Box& a, const detail::Box& b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+  };
+  int placed = 0;
+  for (std::size_t i = 0; i < f.labels.size(); ++i) {
+    if (!f.labels[i].placed) continue;
+    ++placed;
+    for (std::size_t j = 0; j < f.labels.size(); ++j) {
+      const auto& q = f.label_requests[j];
+      const double r = f.marker_radius;
+      if (i < 15) EXPECT_FALSE(overlap(f.labels[i].box, {q.x - r, q.y - r, q.x + r, q.y + r})) << i << " covers marker " << j;
+      if (j != i && f.labels[j].placed && i < 15)
+        EXPECT_FALSE(overlap(f.labels[i].box, f.labels[j].box)) << "labels " << i << " and " << j;
+    }
+  }
+  EXPECT_TRUE(f.labels[15].placed && f.labels[16].placed) << "the design and the target are named";
+  EXPECT_LT(placed, 17) << "crowded enough that some label had no free spot";
+  EXPECT_GE(placed, 6) << "the outer tools still get theirs";
+
+  plot.leave_out_crowded_labels = false;  // a full figure names every one of up to 40 points
+  for (const auto& l : detail::layout_scatter(plot, st, sheet_corner).labels) EXPECT_TRUE(l.placed);
+}
+
 TEST(ReportScatterPlot, BadScatterPlotsAreRefused) {
   const auto refuse = [](const std::function<void(ScatterPlot&)>& spoil, const std::string& fault) {
     auto plot = sample_space();
