@@ -10,6 +10,7 @@
 #include "model/io/json_fields.hpp"
 #include "model/io/finite_output.hpp"
 #include "ui/panel/devices_view.hpp"
+#include "ui/panel/experiment_view.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -60,6 +61,11 @@ PanelSettings read_panel_settings(const std::filesystem::path& file) {
       take(t, "trajectory", s.stroke.trajectory);
       if (s.stroke.kind < 0 || s.stroke.kind > 2) throw std::runtime_error("stroke kind must be 0, 1 or 2");
     }
+    if (j.contains("experiment")) {
+      const json& e = j.at("experiment");
+      take(e, "study", s.study);
+      take(e, "stimuli", s.stimuli);
+    }
     if (j.contains("rig")) {
       const json& r = j.at("rig");
       take(r, "kind", s.rig.kind);
@@ -106,6 +112,7 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"input_api", s.rig.input_api}, {"input_device", s.rig.input_device},
               {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup},
               {"play_on_actuator", s.rig.play_on_actuator}};
+  j["experiment"] = {{"study", s.study}, {"stimuli", s.stimuli}};
   std::filesystem::create_directories(file.parent_path());
   model::io::write_file_atomically(file, model::io::json_text(j, file));
 }
@@ -115,6 +122,8 @@ void apply_panel_settings(Panel& panel, const PanelSettings& settings) {
   panel.audio().stroke() = settings.stroke;
   panel.audio().stroke_changed();
   panel.rig_view().choice() = settings.rig;
+  panel.experiment_view().form().study = settings.study;
+  panel.experiment_view().form().stimuli = settings.stimuli;
 }
 
 PanelSettings panel_settings_of(Panel& panel) {
@@ -124,6 +133,8 @@ PanelSettings panel_settings_of(Panel& panel) {
   kept.space = panel.space_file();
   kept.stroke = panel.audio().stroke();
   kept.rig = panel.rig_view().choice();
+  kept.study = panel.experiment_view().form().study;
+  kept.stimuli = panel.experiment_view().form().stimuli;
   return kept;
 }
 

@@ -1,5 +1,5 @@
 // What the panel remembers between runs: the view it showed, the actuator's device, the space it
-// had open, the stroke and the rig's choices. Kept as JSON in $XDG_CONFIG_HOME/nibrig/panel.json
+// had open, the stroke, the rig's choices and the experiment's study folder and stimulus list. Kept as JSON in $XDG_CONFIG_HOME/nibrig/panel.json
 // (else ~/.config/nibrig/panel.json), written atomically when the panel closes; a file that cannot
 // be read is reported in the window and the defaults are used (never a crash).
 #pragma once
@@ -19,6 +19,9 @@ struct PanelSettings {
   std::filesystem::path space;
   StrokeChoice stroke;
   RigChoice rig;
+  // The experiment view's study folder and stimulus list: a study runs over days, one
+  // participant a start, and the form had come back empty each time.
+  std::string study, stimuli;
 };
 
 // $NIBRIG_PANEL_SETTINGS, else $XDG_CONFIG_HOME/nibrig/panel.json, else ~/.config/nibrig/panel.json.
