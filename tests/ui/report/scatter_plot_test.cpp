@@ -252,6 +252,10 @@ ScatterPlot hundred_points() {
   return plot;
 }
 
+bool overlap(const detail::Box& a, const detail::Box& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
 TEST(ReportScatterPlot, AHundredLabelledPointsRenderWithoutLabelsOverlapping) {
   const auto plot = hundred_points();
   const auto dir = nibrig::test::scratch_dir("scatter_hundred");
@@ -261,9 +265,6 @@ TEST(ReportScatterPlot, AHundredLabelledPointsRenderWithoutLabelsOverlapping) {
 
   // Beyond 40 points a label is either free of every other label and marker, or left out.
   const auto f = layout_scatter(plot);
-  const auto overlap = [](const detail::Box& a, const detail::Box& b) {
-    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-  };
   int placed = 0;
   for (std::size_t i = 0; i < f.labels.size(); ++i) {
     if (!f.labels[i].placed) continue;
@@ -307,9 +308,6 @@ TEST(ReportScatterPlot, ASheetsSmallPlotLeavesOutCrowdedLabelsButNotThePlacedToo
   const detail::Style st = detail::Style::for_size({1600, 1000});
   const detail::Box sheet_corner{900, 60, 1560, 420};  // where the sheet puts it: 660 x 360 px
   const auto f = detail::layout_scatter(plot, st, sheet_corner);
-  const auto overlap = [](const detail::Box& a, const detail::Box& b) {
-    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-  };
   int placed = 0;
   for (std::size_t i = 0; i < f.labels.size(); ++i) {
     if (!f.labels[i].placed) continue;
