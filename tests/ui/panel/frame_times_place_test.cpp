@@ -21,36 +21,42 @@ ImGuiWindow* frame_times_window_named(const std::string& part) {
   return nullptr;
 }
 
-TEST(FrameTimesPlace, TheReadoutCoversNeitherTheStrokeControlsNorTheStatus) {
-  const auto dir = nibrig::test::scratch_dir("panel_frame_times_place");
-  for (const auto& [width, height] : {std::pair{PanelWindow::kMinWidth, PanelWindow::kMinHeight}, std::pair{1280, 800}}) {
-    SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
-    WindowSettings settings = testing::hidden_window();
-    settings.width = width;
-    settings.height = height;
-    PanelWindow window(settings);
-    PanelSetup setup;
-    setup.space = testing::write_small_space(dir);
-    Panel panel(setup);
-    panel.show_frame_times(true);
-    for (int i = 0; i < 10; ++i) {  // the readout sizes itself to its text over the first frames
-      window.begin_frame();
-      panel.draw();
-      ImGuiWindow* readout = frame_times_window_named("Frame times");
-      ImGuiWindow* side = frame_times_window_named("/space-side_");
-      ImGuiWindow* view = frame_times_window_named("/view_");
-      if (i == 9) {
-        ASSERT_NE(readout, nullptr);
-        ASSERT_NE(side, nullptr);
-        ASSERT_NE(view, nullptr);
-        const ImRect r = readout->Rect(), s = side->Rect(), v = view->Rect();
-        EXPECT_FALSE(r.Overlaps(s)) << "readout x " << r.Min.x << "-" << r.Max.x << ", side panel from " << s.Min.x;
-        EXPECT_LE(r.Max.y, v.Max.y + 0.5f) << "the readout reaches into the status block";
-        EXPECT_GE(r.Min.y, v.Min.y - 0.5f) << "the readout reaches above the view";
-      }
-      window.end_frame();
+// One window a test, as the suite's other window tests.
+void frame_times_place_at(int width, int height) {
+  const auto dir = nibrig::test::scratch_dir("panel_frame_times_place_" + std::to_string(width));
+  WindowSettings settings = testing::hidden_window();
+  settings.width = width;
+  settings.height = height;
+  PanelWindow window(settings);
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  Panel panel(setup);
+  panel.show_frame_times(true);
+  for (int i = 0; i < 10; ++i) {  // the readout sizes itself to its text over the first frames
+    window.begin_frame();
+    panel.draw();
+    ImGuiWindow* readout = frame_times_window_named("Frame times");
+    ImGuiWindow* side = frame_times_window_named("/space-side_");
+    ImGuiWindow* view = frame_times_window_named("/view_");
+    if (i == 9) {
+      ASSERT_NE(readout, nullptr);
+      ASSERT_NE(side, nullptr);
+      ASSERT_NE(view, nullptr);
+      const ImRect r = readout->Rect(), s = side->Rect(), v = view->Rect();
+      EXPECT_FALSE(r.Overlaps(s)) << "readout x " << r.Min.x << "-" << r.Max.x << ", side panel from " << s.Min.x;
+      EXPECT_LE(r.Max.y, v.Max.y + 0.5f) << "the readout reaches into the status block";
+      EXPECT_GE(r.Min.y, v.Min.y - 0.5f) << "the readout reaches above the view";
     }
+    window.end_frame();
   }
+}
+
+TEST(FrameTimesPlace, AtTheSmallestWindowTheReadoutCoversNeitherTheStrokeControlsNorTheStatus) {
+  frame_times_place_at(PanelWindow::kMinWidth, PanelWindow::kMinHeight);
+}
+
+TEST(FrameTimesPlace, AtTheDefaultWindowTheReadoutCoversNeitherTheStrokeControlsNorTheStatus) {
+  frame_times_place_at(1280, 800);
 }
 
 }  // namespace
