@@ -47,13 +47,16 @@ nlohmann::json bundled_catalog() {
 TEST(Demo, AnEarlierReportIsReplacedWholeAndAnyOtherFolderIsRefused) {
   const auto dir = nibrig::test::scratch_dir("cli_demo_replace");
   const auto report = dir / "demo";
-  std::filesystem::create_directories(report / "space");
-  std::ofstream(report / "SUMMARY.json") << "{\"sections\": [\"space\"]}\n";
-  std::ofstream(report / "space" / "space.json") << "{}\n";
+  // An earlier report, as a demo writes it (with the list of what it wrote: a folder holding
+  // anything else is a person's, FolderResult's own test).
+  ::testing::internal::CaptureStdout();
+  ASSERT_EQ(run_cli({"demo", "--only", "render", "-o", report.string()}), 0);
+  ::testing::internal::GetCapturedStdout();
+  ASSERT_TRUE(std::filesystem::exists(report / "render"));
   ::testing::internal::CaptureStdout();
   ASSERT_EQ(run_cli({"demo", "--only", "descriptors", "-o", report.string()}), 0);
   const std::string out = ::testing::internal::GetCapturedStdout();
-  EXPECT_FALSE(std::filesystem::exists(report / "space")) << "a file of the earlier report is left";
+  EXPECT_FALSE(std::filesystem::exists(report / "render")) << "a file of the earlier report is left";
   EXPECT_EQ(read_json(report / "SUMMARY.json")["sections"], nlohmann::json::array({"descriptors"}));
   // What it printed names the folder the user gave, not where it was built.
   EXPECT_NE(out.find("report: " + report.string() + "/"), std::string::npos) << out;
