@@ -135,6 +135,16 @@ void check_stylus_folder(const std::filesystem::path& folder) {
                              " cannot be written (" + std::strerror(errno) + ")");
 }
 
+void check_stylus_outputs(const std::filesystem::path& three_mf) {
+  check_stylus_folder(three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path());
+  const auto recipe = stylus_files(three_mf, StylusPrint{}).recipe;
+  io::refuse_companion_link(recipe, three_mf);
+  for (const auto& file : {three_mf, recipe}) {
+    std::error_code ec;
+    if (std::filesystem::exists(file, ec)) io::output_target(file);
+  }
+}
+
 StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
   const auto folder = three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path();
   check_stylus_folder(folder);

@@ -68,6 +68,11 @@ nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& f
 // search checks its --export folder with this before it starts.
 void check_stylus_folder(const std::filesystem::path& folder);
 
+// The same for the files themselves, before the work that makes them: the folder, then the 3MF and
+// the recipe, each refused when it would replace a file the running job read (io/job_files.hpp),
+// and the recipe when it is a link. Throws std::runtime_error naming the file.
+void check_stylus_outputs(const std::filesystem::path& three_mf);
+
 // Where write_stylus_files puts everything for a 3MF named `three_mf`.
 StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print);
 

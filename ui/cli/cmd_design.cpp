@@ -114,6 +114,7 @@ void run_design(const DesignOptions& o) {
   const auto catalog_path =
       o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;
   const space::SpaceFile space_file = space::read_space_file(o.space_file);
+  if (!o.export_folder.empty()) design::check_stylus_outputs(o.export_folder / "stylus.3mf");
   if (!space_file.descriptor_map)
     throw std::invalid_argument(o.space_file.string() +
                                 " has no descriptor map (fit it with --descriptors): designs are "

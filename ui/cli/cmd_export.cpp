@@ -69,6 +69,7 @@ void run_export(const ExportOptions& o) {
   if (o.output.extension() != ".3mf")
     throw CLI::ValidationError("--output", "'" + o.output.string() + "' is not a .3mf file");
   const auto [point, file_surface] = design_to_export(o.design);
+  design::check_stylus_outputs(o.output);  // not onto what was just read, before the prediction
   const std::string surface = o.surface.empty() ? file_surface : o.surface;
   if (!o.space_file.empty() && surface.empty())
     throw CLI::ValidationError("--space", "places the design from its prediction: give --surface too");

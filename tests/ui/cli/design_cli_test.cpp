@@ -213,6 +213,33 @@ void expect_a_group_design_within_constraints(const std::filesystem::path& out,
   EXPECT_FALSE(std::filesystem::exists(out / "refused.json"));
 }
 
+// The trial's `design … --space D/stylus.json --export D`: the recipe (D/stylus.json) would replace
+// the space it searches in. Refused before the search, the space as it was.
+TEST(DesignCli, AnExportOntoItsOwnSpaceIsRefusedBeforeTheSearch) {
+  const auto out = nibrig::test::scratch_dir("cli_design_export_onto_space");
+  const auto made = write_test_space(out);
+  const auto folder = out / "D";
+  std::filesystem::create_directories(folder);
+  std::filesystem::rename(made, folder / "stylus.json");
+  std::ifstream before_in(folder / "stylus.json");
+  const std::string before((std::istreambuf_iterator<char>(before_in)), std::istreambuf_iterator<char>());
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
+  const int code = run_cli({"design", "--target", "cryon/office", "--surface", "protector", "--space",
+                            (folder / "stylus.json").string(), "--between", "vero:1,tip=1mm", "DM85:1,tip=4mm",
+                            "--export", folder.string()});
+  const std::string printed = ::testing::internal::GetCapturedStdout();
+  const std::string errors = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(code, 1) << errors;
+  EXPECT_NE(errors.find("read as an input"), std::string::npos) << errors;
+  EXPECT_EQ(printed.find("optimum"), std::string::npos) << "refused before the search: " << printed;
+  std::ifstream after_in(folder / "stylus.json");
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after_in)), std::istreambuf_iterator<char>()), before);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(folder)) ++entries;
+  EXPECT_EQ(entries, 1u);
+}
+
 TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   const auto out = nibrig::test::scratch_dir("cli_design");
   const auto space_file = write_test_space(out);

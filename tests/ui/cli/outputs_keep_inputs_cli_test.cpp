@@ -83,6 +83,15 @@ TEST(OutputsKeepInputsCli, AnExportsRecipeNamedOntoItsPredictionIsRefused) {
       << "no 3MF, STL or sheet of the refused set, no temporary file";
 }
 
+TEST(OutputsKeepInputsCli, AMissingPredictionFileIsSaidToBeMissing) {
+  const fs::path folder = nibrig::test::scratch_dir("cli_outputs_missing");
+  const CliRun run = quietly({"export", (folder / "nothere.json").string(), "-o", (folder / "s.3mf").string()});
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.errors.find("nothere.json: no such file"), std::string::npos) << run.errors;
+  EXPECT_EQ(run.errors.find("tip diameter"), std::string::npos) << run.errors;
+  EXPECT_EQ(names_in(folder), std::vector<std::string>{});
+}
+
 TEST(OutputsKeepInputsCli, AnStlNameLinkedToTheCatalogIsNotWrittenThrough) {
   const fs::path folder = nibrig::test::scratch_dir("cli_outputs_linked");
   fs::copy_file(nibrig::test::assets_dir() / "default_catalog.json", folder / "catalog.json");
