@@ -14,7 +14,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include "model/io/interrupt_cleanup.hpp"
 
