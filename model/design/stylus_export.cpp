@@ -139,10 +139,7 @@ void check_stylus_outputs(const std::filesystem::path& three_mf) {
   check_stylus_folder(three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path());
   const auto recipe = stylus_files(three_mf, StylusPrint{}).recipe;
   io::refuse_companion_link(recipe, three_mf);
-  for (const auto& file : {three_mf, recipe}) {
-    std::error_code ec;
-    if (std::filesystem::exists(file, ec)) io::output_target(file);
-  }
+  for (const auto& file : {three_mf, recipe}) io::output_target(file);
 }
 
 StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {

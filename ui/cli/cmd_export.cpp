@@ -69,11 +69,9 @@ void run_export(const ExportOptions& o) {
   if (o.output.extension() != ".3mf")
     throw CLI::ValidationError("--output", "'" + o.output.string() + "' is not a .3mf file");
   const auto [point, file_surface] = design_to_export(o.design);
-  design::check_stylus_outputs(o.output);  // not onto what was just read, before the prediction
   const std::string surface = o.surface.empty() ? file_surface : o.surface;
   if (!o.space_file.empty() && surface.empty())
     throw CLI::ValidationError("--space", "places the design from its prediction: give --surface too");
-  design::check_stylus_folder(o.output.parent_path());
   std::optional<model::space::SpaceFile> space;
   if (!o.space_file.empty()) {
     space = model::space::read_space_file(o.space_file);
@@ -82,6 +80,7 @@ void run_export(const ExportOptions& o) {
                                   " has no descriptor map (fit it with --descriptors): a design is "
                                   "placed from its predicted descriptors");
   }
+  design::check_stylus_outputs(o.output);  // not onto the design or space just read, before the prediction
   if (surface.empty()) {  // the print alone: no prediction to put on the sheet
     const auto print = design::stylus_print(o.inputs, point);
     print_stylus_files(print, figures::export_stylus(o.output, print, {}));
