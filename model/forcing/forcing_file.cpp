@@ -53,6 +53,19 @@ std::vector<double> curve_at(const json& entry, const std::filesystem::path& fil
   return values;
 }
 
+// A calibration's standard errors of natural-log values: one per knot or frequency, each finite
+// and >= 0 (50, like the gains' bound, is far beyond what any calibration reports).
+std::vector<double> standard_errors_at(const json& values, const std::filesystem::path& file,
+                                       const std::string& path, std::size_t count,
+                                       const std::string& per) {
+  auto out = jf::as_number_array_in(values, file, path, 0.0, 50.0,
+                                    "a standard error of a natural log (>= 0)");
+  require(out.size() == count, file, path,
+          "expected one value per " + per + " (" + std::to_string(count) + "), found " +
+              std::to_string(out.size()));
+  return out;
+}
+
 nlohmann::json descriptor_errors_json(const ForcingModel& model) {
   json exemplars = json::array();
   for (const auto& e : model.held_out_descriptor_errors) {
@@ -112,13 +125,22 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
   for (const auto& [diameter, curve] : model.tip_log_gain)
     out["tip_curves"].push_back({{"tip_diameter_mm", diameter * 1e3}, {"log_gain", curve}});
   out["material_curves"] = json::array();
-  for (const auto& [material, curve] : model.material_log_gain)
-    out["material_curves"].push_back({{"material", material}, {"log_gain", curve}});
+  for (const auto& [material, curve] : model.material_log_gain) {
+    json entry = {{"material", material}, {"log_gain", curve}};
+    if (const auto se = model.material_log_gain_se.find(material);
+        se != model.material_log_gain_se.end())
+      entry["log_gain_se"] = se->second;
+    out["material_curves"].push_back(entry);
+  }
   out["frequencies_hz"] = model.frequencies_hz;
   out["speeds_mm_s"] = scaled(model.speeds_m_s, 1e3);
   out["surfaces"] = json::array();
-  for (const auto& [id, forcing] : model.surface_forcing)
-    out["surfaces"].push_back({{"id", id}, {"forcing_n", forcing}});
+  for (const auto& [id, forcing] : model.surface_forcing) {
+    json entry = {{"id", id}, {"forcing_n", forcing}};
+    if (const auto se = model.surface_log_forcing_se.find(id); se != model.surface_log_forcing_se.end())
+      entry["log_forcing_se"] = se->second;
+    out["surfaces"].push_back(entry);
+  }
   json exemplars = json::array();
   for (const auto& e : model.exemplar_fits)
     exemplars.push_back({{"tool", e.tool}, {"surface", e.surface}, {"rms_db", e.rms_db}});
@@ -166,6 +188,10 @@ ForcingModel read_forcing_model(const std::filesystem::path& file) {
     require(!model.material_log_gain.count(name), file, jf::member_path(at, "material"),
             "a second curve for material '" + name + "'");
     model.material_log_gain[name] = curve_at(materials[i], file, at, knots);
+    if (materials[i].contains("log_gain_se"))
+      model.material_log_gain_se[name] = standard_errors_at(materials[i]["log_gain_se"], file,
+                                                            jf::member_path(at, "log_gain_se"),
+                                                            knots, "knot");
   }
   // The gauge: the reference tip and material must be there, at gain 1.
   bool reference_tip = false;
@@ -211,6 +237,17 @@ ForcingModel read_forcing_model(const std::filesystem::path& file) {
       for (std::size_t j = 0; j < row.size(); ++j)
         require(row[j] >= 0, file, jf::element_path(row_at, j), "expected a force >= 0 N");
       forcing.push_back(std::move(row));
+    }
+    if (surfaces[i].contains("log_forcing_se")) {
+      const std::string se_at = jf::member_path(at, "log_forcing_se");
+      const auto& se_rows = jf::as_array(surfaces[i]["log_forcing_se"], file, se_at);
+      require(se_rows.size() == model.speeds_m_s.size(), file, se_at,
+              "expected one row per speed (" + std::to_string(model.speeds_m_s.size()) +
+                  "), found " + std::to_string(se_rows.size()));
+      auto& se = model.surface_log_forcing_se[id];
+      for (std::size_t s = 0; s < se_rows.size(); ++s)
+        se.push_back(standard_errors_at(se_rows[s], file, jf::element_path(se_at, s),
+                                        model.frequencies_hz.size(), "frequency"));
     }
   }
 

@@ -11,15 +11,18 @@ namespace nibrig::model::forcing {
 // {"format": "nibrig-forcing", "version": 1, "knot_frequencies_hz": [...],
 //  "reference": {"tip_diameter_mm", "material"},
 //  "tip_curves": [{"tip_diameter_mm", "log_gain": [one per knot]}],
-//  "material_curves": [{"material", "log_gain": [...]}],
+//  "material_curves": [{"material", "log_gain": [...], "log_gain_se": [optional, per knot]}],
 //  "frequencies_hz": [...], "speeds_mm_s": [...],
-//  "surfaces": [{"id", "forcing_n": [[one per frequency] per speed]}],
+//  "surfaces": [{"id", "forcing_n": [[one per frequency] per speed],
+//                "log_forcing_se": [optional, shaped like forcing_n]}],
 //  "fit": {"residual_rms_db", "observations", "skipped_nonpositive",
 //          "exemplars": [{"tool", "surface", "rms_db"}]},
 //  "held_out_descriptor_errors": {"threshold_curve", "exemplars": [{"tool", "surface",
 //          "log10_weighted_mean", "log10_band_energies": {"2": [2 values], …, "5": [5 values]}}]},
 //  "notes": [...]}
-// log_gain is the natural log of the gain. held_out_descriptor_errors is optional (files written
+// log_gain is the natural log of the gain; log_gain_se and log_forcing_se, the standard errors of
+// a material or surface calibrated from a few prints (forcing_model.hpp), are optional, and a file
+// without them reads as before. held_out_descriptor_errors is optional (files written
 // before it existed lack it; the model's vector is then empty). Written through a temporary file
 // and a rename.
 void write_forcing_model(const std::filesystem::path& file, const ForcingModel& model);

@@ -65,6 +65,28 @@ double ForcingModel::material_log_gain_at(const std::string& material, double fr
   return hermite_value(knot_frequencies_hz, material_curve(material), frequency_hz);
 }
 
+double ForcingModel::material_log_gain_se_at(const std::string& material,
+                                             double frequency_hz) const {
+  const auto it = material_log_gain_se.find(material);
+  if (it == material_log_gain_se.end()) return 0.0;
+  double se = 0.0;
+  for (const auto& [k, w] : hermite_weights(knot_frequencies_hz, frequency_hz))
+    se += std::abs(w) * it->second.at(k);
+  return se;
+}
+
+double ForcingModel::surface_log_forcing_se_at(const std::string& surface, std::size_t speed,
+                                               std::size_t frequency) const {
+  const auto it = surface_log_forcing_se.find(surface);
+  return it == surface_log_forcing_se.end() ? 0.0 : it->second.at(speed).at(frequency);
+}
+
+double ForcingModel::prediction_log_se(const std::string& surface, const std::string& material,
+                                       std::size_t speed, std::size_t frequency) const {
+  return std::hypot(material_log_gain_se_at(material, frequencies_hz.at(frequency)),
+                    surface_log_forcing_se_at(surface, speed, frequency));
+}
+
 io::VelocitySpectrum ForcingModel::predict(std::span<const double> response_magnitude,
                                            const std::string& surface, double tip_diameter_m,
                                            const std::string& material) const {

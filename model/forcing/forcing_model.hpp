@@ -54,6 +54,12 @@ struct ForcingModel {
   // measured.
   std::vector<DescriptorError> held_out_descriptor_errors;
   std::string descriptor_error_threshold;
+  // Standard errors of what was calibrated from a few prints after the fit
+  // (material_calibration.hpp, surface_calibration.hpp): per knot of ln m for a calibrated
+  // material, per cell [speed][frequency] of ln F for a calibrated surface. Curves and surfaces
+  // fitted with the catalog have none here (their errors are the jackknife's, computed apart).
+  std::map<std::string, std::vector<double>> material_log_gain_se;
+  std::map<std::string, std::vector<std::vector<double>>> surface_log_forcing_se;
 
   std::size_t exemplar_count() const { return exemplar_fits.size(); }
 
@@ -70,6 +76,17 @@ struct ForcingModel {
   io::VelocitySpectrum predict(std::span<const double> response_magnitude,
                                const std::string& surface, double tip_diameter_m,
                                const std::string& material) const;
+
+  // The standard error of ln m_μ(f) and of ln F_S at a model speed and frequency index: 0 where
+  // nothing was calibrated. Between knots the knots' errors are combined as Σ|w_k|·se_k, exact
+  // when they move together and an upper bound otherwise (only per-knot errors are stored).
+  double material_log_gain_se_at(const std::string& material, double frequency_hz) const;
+  double surface_log_forcing_se_at(const std::string& surface, std::size_t speed,
+                                   std::size_t frequency) const;
+  // The standard error of ln M predicted for `material` on `surface` at a model speed and
+  // frequency index: the two calibrations are independent, so their variances add.
+  double prediction_log_se(const std::string& surface, const std::string& material,
+                           std::size_t speed, std::size_t frequency) const;
 
   // The curve of a tip diameter (same_tip) or material; throws like the *_at functions.
   const std::vector<double>& tip_curve(double tip_diameter_m) const;

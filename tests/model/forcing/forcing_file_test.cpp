@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -75,6 +76,46 @@ TEST(ForcingFile, AFileWithoutDescriptorErrorsReadsWithNone) {
   std::ifstream in(dir / "forcing.json");
   EXPECT_FALSE(nlohmann::json::parse(in).contains("held_out_descriptor_errors"));
   EXPECT_TRUE(read_forcing_model(dir / "forcing.json").held_out_descriptor_errors.empty());
+}
+
+// A calibrated material's per-knot errors and a calibrated surface's per-cell errors are written
+// and read back; a model without them (every file before calibrations existed) writes no such
+// field and reads with none.
+ForcingModel with_calibration_errors(ForcingModel model) {
+  model.material_log_gain_se["DM95"] = std::vector<double>(model.knot_frequencies_hz.size(), 0.0);
+  for (std::size_t k = 0; k < model.knot_frequencies_hz.size(); ++k)
+    model.material_log_gain_se["DM95"][k] = 0.01 * static_cast<double>(k + 1);
+  auto& surface = model.surface_log_forcing_se[model.surface_forcing.begin()->first];
+  for (std::size_t s = 0; s < model.speeds_m_s.size(); ++s)
+    surface.push_back(std::vector<double>(model.frequencies_hz.size(), 0.05 + 0.01 * s));
+  return model;
+}
+
+TEST(ForcingFile, CalibrationErrorsRoundTripAndAreOptional) {
+  const auto dir = nibrig::test::scratch_dir("forcing_file_calibration_errors");
+  const ForcingModel model = with_calibration_errors(fitted_model());
+  write_forcing_model(dir / "calibrated.json", model);
+  const ForcingModel back = read_forcing_model(dir / "calibrated.json");
+  EXPECT_EQ(back.material_log_gain_se, model.material_log_gain_se);
+  EXPECT_EQ(back.surface_log_forcing_se, model.surface_log_forcing_se);
+  // The knots' errors at a knot are the knot's own; a prediction's adds the surface's in quadrature.
+  const std::string surface = model.surface_forcing.begin()->first;
+  EXPECT_NEAR(back.material_log_gain_se_at("DM95", back.knot_frequencies_hz[3]), 0.04, 1e-12);
+  const std::size_t bin = 0;
+  const double material_se = back.material_log_gain_se_at("DM95", back.frequencies_hz[bin]);
+  EXPECT_NEAR(back.prediction_log_se(surface, "DM95", 1, bin), std::hypot(material_se, 0.06),
+              1e-12);
+  EXPECT_EQ(back.prediction_log_se(surface, "vero", 0, bin), 0.05);  // vero: fitted, no SE stored
+
+  write_forcing_model(dir / "plain.json", fitted_model());
+  std::ifstream in(dir / "plain.json");
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_FALSE(json["material_curves"][0].contains("log_gain_se"));
+  EXPECT_FALSE(json["surfaces"][0].contains("log_forcing_se"));
+  const ForcingModel plain = read_forcing_model(dir / "plain.json");
+  EXPECT_TRUE(plain.material_log_gain_se.empty());
+  EXPECT_TRUE(plain.surface_log_forcing_se.empty());
+  EXPECT_EQ(plain.prediction_log_se(surface, "DM95", 0, bin), 0.0);
 }
 
 class DamagedForcingFile : public ::testing::Test {
@@ -162,6 +203,23 @@ TEST_F(DamagedForcingFile, BadDescriptorErrorsAreNamed) {
   j["held_out_descriptor_errors"]["exemplars"][0]["log10_weighted_mean"] = "loud";
   expect_refused(j, "held_out_descriptor_errors.exemplars[0].log10_weighted_mean",
                  "expected a number");
+}
+
+TEST_F(DamagedForcingFile, BadCalibrationErrorsAreNamed) {
+  auto j = good_;
+  j["material_curves"][1]["log_gain_se"] = std::vector<double>(10, 0.1);
+  expect_refused(j, "material_curves[1].log_gain_se", "one value per knot (11), found 10");
+  j = good_;
+  j["material_curves"][1]["log_gain_se"] = std::vector<double>(11, -0.1);
+  expect_refused(j, "material_curves[1].log_gain_se[0]", "standard error");
+  j = good_;
+  j["surfaces"][0]["log_forcing_se"] = nlohmann::json::array({std::vector<double>(3, 0.1)});
+  expect_refused(j, "surfaces[0].log_forcing_se", "one row per speed");
+  j = good_;
+  const std::size_t bins = j["frequencies_hz"].size();
+  j["surfaces"][0]["log_forcing_se"] =
+      nlohmann::json::array({std::vector<double>(bins, 0.1), std::vector<double>(bins - 1, 0.1)});
+  expect_refused(j, "surfaces[0].log_forcing_se[1]", "one value per frequency");
 }
 
 // A gain far outside what a fit reaches is refused by the reader, so that `predict` never reports an
