@@ -1,0 +1,72 @@
+#include "model/forcing/calibration_prints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace nibrig::model::forcing {
+
+std::string print_name(const ForcingExemplar& print) { return print.tool + " on " + print.surface; }
+
+void check_print_grid(const ForcingModel& model, const ForcingExemplar& print,
+                      const std::string& what) {
+  const std::string name = what + ": " + print_name(print);
+  const auto& m = print.measured;
+  if (m.frequencies_hz != model.frequencies_hz || m.speeds_m_s != model.speeds_m_s)
+    throw std::invalid_argument(name + ": its spectrum's frequencies or speeds differ from the "
+                                       "forcing model's (" +
+                                std::to_string(model.frequencies_hz.size()) + " frequencies, " +
+                                std::to_string(model.speeds_m_s.size()) + " speeds)");
+  if (m.amplitude_m_s2.size() != m.speeds_m_s.size())
+    throw std::invalid_argument(name + ": one amplitude row per speed expected");
+  for (const auto& row : m.amplitude_m_s2)
+    if (row.size() != m.frequencies_hz.size())
+      throw std::invalid_argument(name + ": one amplitude per frequency expected in every row");
+  if (print.response_magnitude.size() != m.frequencies_hz.size())
+    throw std::invalid_argument(name + ": its response has " +
+                                std::to_string(print.response_magnitude.size()) + " values for " +
+                                std::to_string(m.frequencies_hz.size()) + " frequencies");
+  for (double h : print.response_magnitude)
+    if (!(std::isfinite(h) && h > 0))
+      throw std::invalid_argument(name + ": its response magnitude must be finite and > 0");
+}
+
+LogCells print_log_data(const ForcingExemplar& print) {
+  LogCells y;
+  for (const auto& row : print.measured.amplitude_m_s2) {
+    y.emplace_back();
+    for (std::size_t j = 0; j < row.size(); ++j)
+      y.back().push_back(row[j] > 0 && std::isfinite(row[j])
+                             ? std::log(row[j]) - std::log(print.response_magnitude[j])
+                             : std::numeric_limits<double>::quiet_NaN());
+  }
+  return y;
+}
+
+CalibrationResiduals residual_summary(std::span<const ForcingExemplar> prints,
+                                      const std::vector<LogCells>& residuals) {
+  CalibrationResiduals out;
+  double total = 0.0;
+  std::size_t total_count = 0;
+  for (std::size_t g = 0; g < prints.size(); ++g) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (const auto& row : residuals[g])
+      for (double r : row)
+        if (std::isfinite(r)) {
+          sum += r * r;
+          ++count;
+        }
+    total += sum;
+    total_count += count;
+    out.per_print.push_back(
+        {prints[g].tool, prints[g].surface,
+         log_gain_to_db(std::sqrt(sum / static_cast<double>(std::max<std::size_t>(count, 1))))});
+  }
+  out.rms_db =
+      log_gain_to_db(std::sqrt(total / static_cast<double>(std::max<std::size_t>(total_count, 1))));
+  return out;
+}
+
+}  // namespace nibrig::model::forcing
