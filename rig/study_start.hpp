@@ -92,6 +92,10 @@ class StudyStart {
   // Who answers, as the participant's file records it, for a face that knows it only now (a
   // simulated participant judges by the space's model for these stimuli).
   void record_respondent(std::string words) { request_.settings.respondent = std::move(words); }
+  // The folder, participant, seed and resume the session will open with.
+  const model::study::StudySettings& settings() const noexcept { return request_.settings; }
+  // The catalog the stimuli come from (empty: the bundled one).
+  const std::filesystem::path& catalog_file() const noexcept { return request_.sounds.catalog; }
 
   // Makes or joins the study folder, checks the participant against it again, and makes the sound
   // of each stimulus the actuator will play (none in rig mode or with nothing presented; seconds

@@ -25,6 +25,7 @@
 #include "playback/live_audition.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
+#include "rig/study_rehearsal.hpp"
 #include "rig/study_start.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/experiment_commands.hpp"
@@ -193,29 +194,14 @@ void run_experiment(const ExperimentRunOptions& o, unsigned threads) {
     throw_as_option(e);
   }
   const study::StudyDefinition& definition = start->definition();
-  std::optional<study::SimulatedParticipant> simulated_participant;
+  std::unique_ptr<study::SimulatedParticipant> simulated_participant;
   Eigen::MatrixXd truth;
   model::space::JudgmentModel judging;  // the paper's, unless the space judged by another
   if (simulated) {
-    const model::space::SpaceFile space = model::space::read_space_file(o.simulate);
-    model::design::ToolSounds& sounds = start->tool_sounds();
-    // A design point is placed where its predicted descriptors put it (seconds each: the FEM).
-    const study::PlaceOther predicted = [&](const study::Stimulus& s) -> std::optional<Eigen::VectorXd> {
-      if (!model::design::names_design_point(s.tool) || !space.descriptor_map) return std::nullopt;
-      return model::design::place_predicted(*space.descriptor_map, sounds.predict(s.tool, s.surface)).mean;
-    };
-    truth = study::truth_for_stimuli(space, o.simulate, definition.stimuli, o.catalog, predicted);
-    judging = study::judgment_model_for_stimuli(space, definition.stimuli);
-    study::SimulatedParticipantOptions options;
-    options.lapse_rate = o.lapse_rate;
-    // The participant's own seed, so that a resumed simulation answers as an uninterrupted one.
-    std::uint64_t seed = o.seed.value_or(study::seed_of_participant(o.participant));
-    const auto record = study::participant_folder(o.output, o.participant) / study::kParticipantFile;
-    if (o.resume && !o.seed && std::filesystem::exists(record)) seed = study::read_participant_file(record).seed;
-    simulated_participant.emplace(truth, options, seed, judging);
-    start->record_respondent("simulated from " + o.simulate.string() +
-                             fmt::format(" (judging by {}, lapse rate {} besides)",
-                                         model::space::family_name(judging.family), o.lapse_rate));
+    rig::Rehearsal rehearsal = rig::rehearse_from(*start, o.simulate, o.lapse_rate, o.seed);
+    truth = std::move(rehearsal.truth);
+    judging = rehearsal.judging;
+    simulated_participant = std::move(rehearsal.participant);
   } else {
     // No space to answer from: the estimate asks observers of a random space of the usual spread.
     truth = study::estimate_space(definition.dims, definition.stimuli.size());

@@ -2,10 +2,13 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 
 #include "imgui.h"
+#include "rig/study_rehearsal.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
@@ -91,14 +94,19 @@ void ExperimentView::start() {
     // views play. The rig's simulation asks it for each stimulus it runs, on the rig's worker.
     request.sounds = sound_options_();
     request.sounds.progress = {};
-    request.audition = [this]() -> playback::LiveAudition& { return audio_.lend_audition(); };
+    const std::filesystem::path rehearse = form_.rehearse;
+    // A rehearsal presents nothing on the actuator (no sound is made): the simulated participant
+    // hears nothing; on the rig the turntable still runs each stimulus.
+    if (rehearse.empty())
+      request.audition = [this]() -> playback::LiveAudition& { return audio_.lend_audition(); };
     request.rig = rig_;  // asked for in rig mode only: refuses a rig that cannot present (replay)
-    // The rig's worker asks and waits; Stop abandons the desk so that it stops waiting.
+    // The rig's worker asks and waits; Stop abandons the desk so that it stops waiting. In a
+    // rehearsal nobody mounts: the request is only shown.
     desk_ = std::make_shared<OperatorDesk>();
-    request.mount = [desk = desk_](const std::string& message) {
+    request.mount = [desk = desk_, rehearsal = !rehearse.empty()](const std::string& message) {
       std::unique_lock lock(desk->mutex);
       desk->request = message;
-      desk->done = false;
+      desk->done = rehearsal;
       desk->changed.wait(lock, [&] { return desk->done || desk->abandoned; });
       if (desk->abandoned) throw std::runtime_error("stopped while the operator mounted a tool");
     };
@@ -111,15 +119,22 @@ void ExperimentView::start() {
     const bool on_rig = checked->definition().mode == study::StudyMode::rig;
     // The folder, then the sounds (none in rig mode: the rig's simulation makes its own). The bar
     // names the sound being made; Cancel stops the job before the next one.
-    sounds_job_ = std::make_unique<BackgroundJob<std::shared_ptr<rig::StudyStart>>>(
-        on_rig ? "joining the study" : "making the stimuli's sounds",
-        [checked, on_rig](JobControl& control) {
+    sounds_job_ = std::make_unique<BackgroundJob<Prepared>>(
+        !rehearse.empty() ? "preparing the rehearsal"
+        : on_rig          ? "joining the study"
+                          : "making the stimuli's sounds",
+        [checked, on_rig, rehearse](JobControl& control) {
+          Prepared prepared{checked, nullptr};
+          if (!rehearse.empty()) {
+            control.message("placing the stimuli in " + rehearse.filename().string());
+            prepared.rehearsal = rig::rehearse_from(*checked, rehearse, 0.0).participant;
+          }
           const std::vector<study::Stimulus>& stimuli = checked->definition().stimuli;
           const auto making = [&control, &stimuli](std::size_t index) {
             control.message(std::to_string(index + 1) + " of " + std::to_string(stimuli.size()) + " (" +
                             stimuli[index].name + ")");
           };
-          if (on_rig)
+          if (on_rig || prepared.rehearsal)
             control.message("the study folder");
           else if (!stimuli.empty())
             making(0);
@@ -128,7 +143,7 @@ void ExperimentView::start() {
             control.progress(static_cast<double>(done) / static_cast<double>(total));
             if (done < total) making(done);
           });
-          return checked;
+          return prepared;
         });
     stage_ = Stage::preparing;
   } catch (const rig::StudyStartRefused& e) {
@@ -178,6 +193,7 @@ void ExperimentView::poll() {
     if (!failed.empty()) {
       stop();
       error_ = failed;  // an unplugged rig, say: every answer before is on disk
+      return;
     }
     return;
   }
@@ -192,7 +208,8 @@ void ExperimentView::poll() {
   }
   try {
     // On the UI thread: the actuator's presenter borrows the panel's audition.
-    rig::ReadyStudy ready = (*prepared)->ready();
+    rig::ReadyStudy ready = prepared->start->ready();
+    rehearsal_ = prepared->rehearsal;
     presenter_ = std::move(ready.presenter);
     session_ = std::move(ready.session);
     stage_ = Stage::consent;
@@ -233,7 +250,7 @@ void ExperimentView::play(study::Role role) {
   stage_ = Stage::presenting;
 }
 
-void ExperimentView::answer(model::space::Choice choice) {
+void ExperimentView::answer(model::space::Choice choice, std::optional<double> response_s) {
   if (stage_ != Stage::trial) return;
   const std::string& p = session_->plays();
   // Each of the three felt at least once before an answer counts.
@@ -241,12 +258,43 @@ void ExperimentView::answer(model::space::Choice choice) {
       p.find('B') == std::string::npos)
     return;
   try {
-    const bool rest = session_->answer(choice);
+    const bool rest = session_->answer(choice, response_s);
     stage_ = session_->complete() ? Stage::done : rest ? Stage::rest : Stage::trial;
   } catch (const std::exception& e) {
     error_ = e.what();
     stop();
   }
+}
+
+// The simulated participant acts as a person would at this screen, through the same calls as the
+// buttons: agrees, feels the trial's stimuli in its own order at its own pace (the frames time it,
+// nothing waits), answers, goes on after a rest. On the rig each play runs on the worker as a
+// person's does.
+void ExperimentView::rehearse_step() {
+  if (!rehearsal_) return;
+  if (stage_ == Stage::consent) return agree(true);
+  if (stage_ == Stage::rest) return go_on();
+  if (stage_ != Stage::trial) return;
+  const auto prompt = session_->current();
+  if (!prompt) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!rehearsed_ || rehearsed_->trial != prompt->number) {
+    RehearsedTrial next;
+    next.trial = prompt->number;
+    next.answer = rehearsal_->answer(*prompt, [&](study::Role r) { next.plays.push_back(r); });
+    const double pace = form_.pace;
+    const double each = pace > 0 ? next.answer.response_s.value_or(0.0) / pace /
+                                       static_cast<double>(std::max<std::size_t>(next.plays.size(), 1))
+                                 : 0.0;
+    next.each = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(each));
+    next.next_at = now + next.each;
+    rehearsed_ = std::move(next);
+  }
+  RehearsedTrial& t = *rehearsed_;
+  if (now < t.next_at) return;
+  t.next_at = now + t.each;
+  if (t.played < t.plays.size()) return play(t.plays[t.played++]);
+  answer(t.answer.choice, t.answer.response_s);  // the modelled time, as `experiment run --simulate` records
 }
 
 void ExperimentView::go_on() {
@@ -267,6 +315,8 @@ void ExperimentView::stop() {
   if (presenter_) presenter_->pause();
   session_.reset();
   presenter_.reset();
+  rehearsal_.reset();
+  rehearsed_.reset();  // a stopped trial is asked again: the participant's answers depend on its number
   if (sounds_job_) {
     sounds_job_->cancel();
     cancelled_sounds_.push_back(std::move(sounds_job_));
@@ -294,6 +344,12 @@ void ExperimentView::draw_setup() {
   field("study folder", study_text_, sizeof study_text_, form_.study);
   field("stimulus list (tool/surface a line)", stimuli_text_, sizeof stimuli_text_, form_.stimuli);
   field("participant ID", participant_text_, sizeof participant_text_, form_.participant);
+  field("rehearse from space (a simulated participant answers; empty: a person)", rehearse_text_,
+        sizeof rehearse_text_, form_.rehearse);
+  if (!form_.rehearse.empty()) {
+    ImGui::InputDouble("rehearsal pace (times a person's speed; 0: no waiting)", &form_.pace, 0.0, 0.0, "%.1f");
+    form_.pace = std::clamp(form_.pace, 0.0, 1e6);
+  }
   ImGui::Combo("mode", &form_.mode,
                "actuator\0validation (designs against the first stimulus)\0rig (the rig view's rig)\0");
   ImGui::Checkbox("adaptive plan (else the paper's two stages)", &form_.adaptive);
@@ -316,7 +372,9 @@ void ExperimentView::draw_setup() {
     if (progress_with_cancel("sounds", static_cast<float>(sounds_job_ ? sounds_job_->progress() : 0.0),
                              preparing_label().c_str()))
       stop();
-  } else if (ImGui::Button(form_.resume ? "Resume" : "Start")) {
+  } else if (ImGui::Button(!form_.rehearse.empty() ? (form_.resume ? "Resume the rehearsal" : "Rehearse")
+                          : form_.resume            ? "Resume"
+                                                    : "Start")) {
     start();
   }
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.35f, 1.0f}, "%s", error_.c_str());
@@ -338,7 +396,11 @@ void ExperimentView::handle_keys() {
 
 void ExperimentView::draw_participant() {
   handle_keys();
+  rehearse_step();
   if (stage_ == Stage::setup) return;  // stopped by a key
+  if (rehearsal_)
+    ImGui::TextColored({0.95f, 0.75f, 0.30f, 1.0f}, "Rehearsal: a simulated participant answers from %s (Esc stops)",
+                       form_.rehearse.c_str());
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const ImVec2 big{size.x / 3.0f - 12.0f, size.y / 4.0f};
   if (stage_ == Stage::consent) {

@@ -261,7 +261,13 @@ TEST(ExperimentView, InRigModeTheOperatorMountsEachToolAndTheTurntableRunsOffThe
     r.speedup = 0;
     return r;
   });
-  view.form() = {(dir / "study").string(), (dir / "stimuli.txt").string(), "R01", 2, false, 0, 100, false, 0};
+  ExperimentView::Form form;
+  form.study = (dir / "study").string();
+  form.stimuli = (dir / "stimuli.txt").string();
+  form.participant = "R01";
+  form.mode = 2;
+  form.practice = 0;
+  view.form() = form;
   view.start();
   ASSERT_EQ(view.error(), "");
   wait_for_sounds(imgui, view);
