@@ -9,6 +9,7 @@
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 
+#include "model/forcing/leave_one_out.hpp"
 #include "tests/model/forcing/calibration_truth.hpp"
 
 namespace nibrig::model::forcing {
