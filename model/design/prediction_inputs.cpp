@@ -4,6 +4,7 @@
 
 #include "model/design/default_forcing.hpp"
 #include "model/forcing/forcing_file.hpp"
+#include "model/forcing/forcing_store.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "model/mechanics/stylus_description.hpp"
@@ -20,7 +21,8 @@ std::unique_ptr<PredictionInputs> load_prediction_inputs(
   if (fitted) {
     in->model = std::move(*fitted);
   } else if (!forcing_file.empty()) {
-    in->model = forcing::read_forcing_model(forcing_file);
+    // A file, or a model a lab calibrated and stored by name (forcing_store.hpp).
+    in->model = forcing::read_forcing_model(forcing::find_forcing_model(forcing_file.string()));
   } else {
     DefaultsOptions defaults;
     defaults.catalog = options.catalog;

@@ -29,7 +29,8 @@ struct PredictionInputs {
 };
 
 // `options` names the catalog, template, materials and the designs' modes and mesh size (empty or
-// 0: the bundled ones and the template's); `forcing_file` the model (empty: the default model
+// 0: the bundled ones and the template's); `forcing_file` the model, a file or the name of one a lab
+// stored (forcing_store.hpp) (empty: the default model
 // fitted to the catalog at the same modes and mesh size, read from the user cache or fitted and
 // kept there, with `progress` as its designs are simulated); `fitted`, when given, is used instead.
 // A model without held-out descriptor errors (a file from before them) is used with a warning: its
