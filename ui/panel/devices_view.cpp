@@ -1,5 +1,7 @@
 #include "ui/panel/devices_view.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "ui/panel/widgets.hpp"
@@ -68,6 +70,13 @@ void DevicesView::draw() {
   else shown_stream_.reset();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginChild("devices-choice", {avail.x * 0.5f, avail.y});
+  // Every field leaves room for the longest label beside it, so that none is cut at the smallest
+  // window (800 pixels: half of it is this column).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float label = std::ceil(std::max(ImGui::CalcTextSize("api (jack, alsa, pulse)").x,
+                                         ImGui::CalcTextSize(RoundTripSection::kWidestLabel).x)) +
+                      style.ItemInnerSpacing.x + 1.0f;  // + 1: positions are whole pixels
+  ImGui::PushItemWidth(-label);
   section("Output to the actuator");
   ImGui::InputText("api (jack, alsa, pulse)", api_, sizeof api_);
   ImGui::InputText("device (by name)", device_, sizeof device_);
@@ -80,14 +89,17 @@ void DevicesView::draw() {
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
   draw_stream();
   section("Actuator calibration");
+  ImGui::SetNextItemWidth(-(std::ceil(ImGui::CalcTextSize("name or file").x + ImGui::CalcTextSize("Use").x) +
+                            style.ItemInnerSpacing.x + 2.0f * style.FramePadding.x + style.ItemSpacing.x + 1.0f));
   ImGui::InputText("name or file", actuator_, sizeof actuator_);
   ImGui::SameLine();
   if (ImGui::Button("Use")) {
     error_ = audio_.use_actuator(actuator_);
   }
-  ImGui::Text("in use: %s", audio_.audition().actuator().empty() ? "none (the output is the requested m/s2 times a plain gain)"
+  ImGui::TextWrapped("in use: %s", audio_.audition().actuator().empty() ? "none (the output is the requested m/s2 times a plain gain)"
                                                                 : audio_.audition().actuator().c_str());
   round_trip_.draw(shown_request());
+  ImGui::PopItemWidth();
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("devices-listing", {0.0f, avail.y});

@@ -136,7 +136,7 @@ void RoundTripSection::draw(const DeviceRequest& output) {
       "loopback cable) and finds each in the input by its correlation with the pulse; impulses "
       "not found are counted, not averaged in. No input device: the output's. Several periods: "
       "64, 256.");
-  ImGui::InputText("input device (by name)", input_device_, sizeof input_device_);
+  ImGui::InputText(kWidestLabel, input_device_, sizeof input_device_);
   int channel = static_cast<int>(request_.input_channel);
   if (ImGui::InputInt("input channel", &channel))
     request_.input_channel = static_cast<unsigned>(std::max(1, channel));

@@ -31,6 +31,8 @@ std::vector<unsigned> parse_periods(const std::string& text);
 
 class RoundTripSection {
  public:
+  // Its longest field label: the view that holds the section leaves room for it.
+  static constexpr const char* kWidestLabel = "input device (by name)";
   RoundTripSection();
   // The section's widgets; `output` is the devices view's form (api, device, output channel).
   void draw(const DeviceRequest& output);
