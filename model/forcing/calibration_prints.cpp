@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/forcing/leave_one_out.hpp"
+
 namespace nibrig::model::forcing {
 
 std::string print_name(const ForcingExemplar& print) { return print.tool + " on " + print.surface; }
@@ -66,6 +68,58 @@ CalibrationResiduals residual_summary(std::span<const ForcingExemplar> prints,
   }
   out.rms_db =
       log_gain_to_db(std::sqrt(total / static_cast<double>(std::max<std::size_t>(total_count, 1))));
+  return out;
+}
+
+std::vector<ForcingExemplar> prints_of_material(std::span<const ForcingExemplar> exemplars,
+                                                const std::string& material,
+                                                std::span<const double> tips_m) {
+  std::vector<ForcingExemplar> out;
+  for (const auto& e : exemplars)
+    if (e.material == material &&
+        (tips_m.empty() || std::any_of(tips_m.begin(), tips_m.end(), [&](double t) {
+           return same_tip(t, e.tip_diameter_m);
+         })))
+      out.push_back(e);
+  if (std::none_of(exemplars.begin(), exemplars.end(),
+                   [&](const auto& e) { return e.material == material; }))
+    throw std::invalid_argument("no printed tool of material '" + material + "' was measured");
+  for (double t : tips_m)
+    if (std::none_of(out.begin(), out.end(),
+                     [&](const auto& e) { return same_tip(t, e.tip_diameter_m); }))
+      throw std::invalid_argument("no print of material '" + material + "' has a " +
+                                  tip_label(t) + " tip");
+  return out;
+}
+
+std::vector<ForcingExemplar> tools_on_surface(std::span<const ForcingExemplar> exemplars,
+                                              const std::string& surface,
+                                              std::span<const std::string> tools) {
+  std::vector<ForcingExemplar> out;
+  for (const auto& e : exemplars)
+    if (e.surface == surface &&
+        (tools.empty() || std::find(tools.begin(), tools.end(), e.tool) != tools.end()))
+      out.push_back(e);
+  if (std::none_of(exemplars.begin(), exemplars.end(),
+                   [&](const auto& e) { return e.surface == surface; }))
+    throw std::invalid_argument("no printed tool was measured on surface '" + surface + "'");
+  for (const auto& t : tools)
+    if (std::none_of(out.begin(), out.end(), [&](const auto& e) { return e.tool == t; }))
+      throw std::invalid_argument("tool '" + t + "' was not measured on surface '" + surface +
+                                  "' (or is not a printed tool with a design)");
+  return out;
+}
+
+std::vector<ExemplarFit> prediction_errors(const ForcingModel& model,
+                                           std::span<const ForcingExemplar> exemplars) {
+  std::vector<ExemplarFit> out;
+  for (const auto& e : exemplars)
+    out.push_back(
+        {e.tool, e.surface,
+         log_spectrum_error(
+             model.predict(e.response_magnitude, e.surface, e.tip_diameter_m, e.material),
+             e.measured)
+             .rms_db});
   return out;
 }
 

@@ -37,4 +37,22 @@ struct CalibrationResiduals {
 CalibrationResiduals residual_summary(std::span<const ForcingExemplar> prints,
                                       const std::vector<LogCells>& residuals);
 
+// The exemplars of `material`, only those with a tip among `tips_m` when it is not empty. Throws
+// std::invalid_argument naming the material, or the tip, that no exemplar has.
+std::vector<ForcingExemplar> prints_of_material(std::span<const ForcingExemplar> exemplars,
+                                                const std::string& material,
+                                                std::span<const double> tips_m = {});
+
+// The exemplars on `surface`, only those of the tools named when `tools` is not empty. Throws
+// std::invalid_argument naming the surface, or a tool not measured on it.
+std::vector<ForcingExemplar> tools_on_surface(std::span<const ForcingExemplar> exemplars,
+                                              const std::string& surface,
+                                              std::span<const std::string> tools = {});
+
+// Each exemplar predicted by `model` (its |H| on its surface, with its tip and material) against
+// its measurement: RMS of 20·log10(predicted/measured) over the cells. Throws what
+// ForcingModel::predict throws for a surface, tip or material the model lacks.
+std::vector<ExemplarFit> prediction_errors(const ForcingModel& model,
+                                           std::span<const ForcingExemplar> exemplars);
+
 }  // namespace nibrig::model::forcing

@@ -24,10 +24,10 @@ double material_prediction_se_db(const ForcingModel& model, const ForcingExempla
 
 }  // namespace
 
-MaterialCalibrationCheck check_material_calibration(std::span<const ForcingExemplar> exemplars,
-                                                    const std::string& material,
-                                                    std::span<const double> calibration_tips_m,
-                                                    const ForcingFitOptions& options) {
+MaterialCalibrationCheck check_material_calibration(
+    std::span<const ForcingExemplar> exemplars, const std::string& material,
+    std::span<const double> calibration_tips_m, const ForcingFitOptions& options,
+    const measure::ThresholdCurve* threshold) {
   const std::string what = "treating material '" + material + "' as new";
   if (material == options.reference_material)
     throw std::invalid_argument(what + ": it is the reference material, whose curve is the gauge");
@@ -59,7 +59,12 @@ MaterialCalibrationCheck check_material_calibration(std::span<const ForcingExemp
   MaterialCalibrationCheck out;
   out.material = material;
   out.calibration_tips_m.assign(calibration_tips_m.begin(), calibration_tips_m.end());
-  out.calibration = calibrate_material(fit_forcing_model(training, options), calibration, material);
+  ForcingModel without = fit_forcing_model(training, options);
+  if (threshold) {
+    without.held_out_descriptor_errors = held_out_descriptor_errors(training, *threshold, options);
+    without.descriptor_error_threshold = threshold->source();
+  }
+  out.calibration = calibrate_material(without, calibration, material);
   const ForcingModel full = fit_forcing_model(exemplars, options);
   out.full_fit_log_gain = full.material_curve(material);
   const LeaveOneOut loo = leave_one_out(exemplars, held, options);

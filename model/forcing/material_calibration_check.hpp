@@ -12,6 +12,7 @@
 
 #include "model/forcing/forcing_fit.hpp"
 #include "model/forcing/material_calibration.hpp"
+#include "model/measure/threshold_curve.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -43,10 +44,12 @@ struct MaterialCalibrationCheck {
 
 // Throws std::invalid_argument naming the material or tips: no exemplar of the material, no
 // calibration print at a tip asked for, the reference material (its curve is the gauge), or the
-// rest not fittable without it (fit_problems).
-MaterialCalibrationCheck check_material_calibration(std::span<const ForcingExemplar> exemplars,
-                                                    const std::string& material,
-                                                    std::span<const double> calibration_tips_m,
-                                                    const ForcingFitOptions& options = {});
+// rest not fittable without it (fit_problems). With a threshold curve, the model calibrated against
+// carries the held-out descriptor errors of its exemplars, as every model predictions are placed
+// with (forcing_inputs.hpp).
+MaterialCalibrationCheck check_material_calibration(
+    std::span<const ForcingExemplar> exemplars, const std::string& material,
+    std::span<const double> calibration_tips_m, const ForcingFitOptions& options = {},
+    const measure::ThresholdCurve* threshold = nullptr);
 
 }  // namespace nibrig::model::forcing

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "model/forcing/calibration_prints.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/forcing/surface_calibration.hpp"
 
@@ -151,6 +152,23 @@ SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplar
     out.steps.push_back(std::move(step));
   }
   return out;
+}
+
+SurfaceCalibration calibrate_held_out_surface(std::span<const ForcingExemplar> exemplars,
+                                              const std::string& surface,
+                                              std::span<const std::string> tools,
+                                              const measure::ThresholdCurve* threshold,
+                                              const ForcingFitOptions& options) {
+  const auto reference = tools_on_surface(exemplars, surface, tools);
+  std::vector<ForcingExemplar> training;
+  for (const auto& e : exemplars)
+    if (e.surface != surface) training.push_back(e);
+  ForcingModel without = fit_forcing_model(training, options);
+  if (threshold) {
+    without.held_out_descriptor_errors = held_out_descriptor_errors(training, *threshold, options);
+    without.descriptor_error_threshold = threshold->source();
+  }
+  return calibrate_surface(without, reference, surface);
 }
 
 }  // namespace nibrig::model::forcing

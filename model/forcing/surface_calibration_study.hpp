@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "model/forcing/forcing_fit.hpp"
+#include "model/forcing/surface_calibration.hpp"
+#include "model/measure/threshold_curve.hpp"
 
 namespace nibrig::model::forcing {
 
@@ -49,5 +51,15 @@ struct SurfaceStudy {
 SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplars,
                                        const std::string& surface, std::size_t max_subsets = 200,
                                        unsigned seed = 1, const ForcingFitOptions& options = {});
+
+// The surface calibrated from the tools named (all measured on it when none are) against the model
+// fitted to every exemplar not on it: what a study's calibration is written as. With a threshold
+// curve that model carries its held-out descriptor errors (forcing_inputs.hpp). Throws as
+// tools_on_surface, fit_forcing_model and calibrate_surface do.
+SurfaceCalibration calibrate_held_out_surface(std::span<const ForcingExemplar> exemplars,
+                                              const std::string& surface,
+                                              std::span<const std::string> tools = {},
+                                              const measure::ThresholdCurve* threshold = nullptr,
+                                              const ForcingFitOptions& options = {});
 
 }  // namespace nibrig::model::forcing

@@ -209,6 +209,7 @@ void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   });
 
   add_forcing_holdout_command(forcing_cmd, global);
+  add_forcing_calibrate_commands(forcing_cmd, global);
 }
 
 }  // namespace nibrig::ui::cli

@@ -19,6 +19,8 @@ void add_space_command(CLI::App& app, std::shared_ptr<const GlobalOptions> globa
 void add_forcing_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `forcing holdout`, registered by add_forcing_command on its `forcing` subcommand.
 void add_forcing_holdout_command(CLI::App* forcing, std::shared_ptr<const GlobalOptions> global);
+// `forcing calibrate-material` and `calibrate-surface`, registered on `forcing` too.
+void add_forcing_calibrate_commands(CLI::App* forcing, std::shared_ptr<const GlobalOptions> global);
 void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `export`: a design's stylus as 3MF and STL files.
