@@ -174,6 +174,18 @@ StudyReport report_study(const std::filesystem::path& study_folder,
   if (report.judgments.triplets.empty())
     throw std::invalid_argument(study_folder.string() + ": no participant has answered a trial " +
                                 "of the study yet (practice is not counted)");
+  // The space is read before anything is written: it may lie in the report's folder.
+  std::optional<space::SpaceFile> scored_against;
+  if (d.mode == StudyMode::validation) {
+    if (settings.validation_space.empty())
+      throw std::invalid_argument(
+          "a validation study is scored against a perceptual space: give the space it tests");
+    scored_against = space::read_space_file(settings.validation_space);
+  } else if (!settings.validation_space.empty()) {
+    throw std::invalid_argument(settings.validation_space.string() +
+                                ": a space scores a validation study only; the study in " +
+                                study_folder.string() + " is not one (its space is fitted to its answers)");
+  }
   std::filesystem::create_directories(report_folder);
   const std::filesystem::path judgments_file = report_folder / kReportJudgments;
   io::write_triplet_csv(judgments_file, report.judgments);
@@ -181,12 +193,7 @@ StudyReport report_study(const std::filesystem::path& study_folder,
   for (const auto& s : d.stimuli) names.push_back(s.name);
   const std::filesystem::path catalog = io::or_default(settings.catalog, io::default_catalog);
 
-  std::optional<space::SpaceFile> scored_against;
   if (d.mode == StudyMode::validation) {
-    if (settings.validation_space.empty())
-      throw std::invalid_argument(
-          "a validation study is scored against a perceptual space: give the space it tests");
-    scored_against = space::read_space_file(settings.validation_space);
     report.validation_space = settings.validation_space;
     const space::SpaceFile& s = *scored_against;
     space::StimulusLocator locator(s, settings.validation_space,

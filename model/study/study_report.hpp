@@ -25,7 +25,7 @@ struct StudyReportSettings {
   unsigned seed = 1;
   unsigned threads = 0;
   std::filesystem::path catalog;  // of the descriptors and placements; empty: the bundled one
-  // The space a validation study is scored against (required for one, ignored otherwise).
+  // The space a validation study is scored against (required for one, refused for another).
   std::filesystem::path validation_space;
   space::StepProgress progress;
   std::stop_token stop;
@@ -64,8 +64,9 @@ inline constexpr const char* kReportStatistics = "report.json";
 
 // Reads the study in `study_folder`, writes judgments.csv, space.json (not for a validation study)
 // and report.json into `report_folder` (created), and returns what it wrote. Throws
-// std::invalid_argument for a study without answers or a validation study without a space, and
-// what read_study, fit_space_file and bootstrap_space throw (numeric::Cancelled when cancelled).
+// std::invalid_argument for a study without answers, a validation study without a space or another
+// study with one, and what read_study, fit_space_file and bootstrap_space throw
+// (numeric::Cancelled when cancelled). The space is read before anything is written.
 StudyReport report_study(const std::filesystem::path& study_folder,
                          const std::filesystem::path& report_folder,
                          const StudyReportSettings& settings = {});

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <map>
 
+#include "model/io/atomic_file.hpp"
+#include "model/io/job_files.hpp"
 #include "model/space/simulated_observer.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/synthetic_study.hpp"
@@ -132,6 +136,61 @@ TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
     EXPECT_EQ(p.with_others->trials, 10.0);
     EXPECT_EQ(p.answers, 10u);
   }
+}
+
+// A space named among the report's own outputs is read before anything is written, and the job's
+// check refuses replacing it; a space given to a study that is not a validation one is refused,
+// not ignored (the trial's `report -o out --space out/space.json` had overwritten it).
+TEST(StudyReport, AGivenSpaceIsNeverReplacedByTheReportItScores) {
+  std::mt19937_64 generator(6);
+  const Eigen::MatrixXd truth = space::random_space(2, 6, generator);
+  const auto dir = nibrig::test::scratch_dir("report_keeps_space");
+  StudyDefinition d = test::definition_of(6);
+  d.mode = StudyMode::validation;
+  d.practice = 0;
+  const auto study = test::make_study(dir, d);
+  space::SpaceFile space;
+  for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
+  space.coordinates = truth;
+  space.model.scale = space::kThurstoneScale;
+  NothingPresented nothing;
+  for (int k = 0; k < 3; ++k) {
+    SimulatedParticipant p(truth, {}, 200 + static_cast<std::uint64_t>(k));
+    run_study(simulated_session(study, "V" + std::to_string(k)), nothing, p);
+  }
+  const auto bytes = [](const std::filesystem::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* name : {kReportJudgments, kReportStatistics}) {
+    SCOPED_TRACE(name);
+    const auto out = dir / (std::string("out_") + name);
+    std::filesystem::create_directories(out);
+    space::write_space_file(out / name, space);
+    const std::string before = bytes(out / name);
+    const io::JobFiles job;  // as a face opens one for the command or the Python call
+    StudyReportSettings settings;
+    settings.validation_space = out / name;
+    EXPECT_THROW(report_study(study, out, settings), io::OutputFileError);
+    EXPECT_EQ(bytes(out / name), before);
+  }
+
+  StudyDefinition a = test::definition_of(6);
+  a.practice = 0;
+  const auto actuator = test::make_study(dir / "actuator", a);
+  SimulatedParticipant p(truth, {}, 300);
+  run_study(simulated_session(actuator, "A1"), nothing, p);
+  space::write_space_file(dir / "space.json", space);
+  StudyReportSettings settings;
+  settings.validation_space = dir / "space.json";
+  try {
+    report_study(actuator, dir, settings);
+    ADD_FAILURE() << "a space given to a study that does not validate was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "space.json").string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("validation study only"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / kReportJudgments)) << "refused before anything was written";
 }
 
 }  // namespace

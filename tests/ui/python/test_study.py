@@ -118,6 +118,18 @@ def test_bad_folders_and_settings_are_python_errors(study, tmp_path):
         nibrig.study.report(study, output=tmp_path / "r", starts=0)
 
 
+def test_a_space_given_to_a_study_that_does_not_validate_is_refused_and_kept(study, tmp_path):
+    # The trial's `report(study, output=out, space=out/"space.json")` fitted a space over the one given.
+    out = tmp_path / "out"
+    out.mkdir()
+    kept = (study.parent / "truth.json").read_bytes()
+    (out / "space.json").write_bytes(kept)
+    with pytest.raises(ValueError, match="validation study only"):
+        nibrig.study.report(study, output=out, space=out / "space.json", bootstrap=0, starts=2)
+    assert (out / "space.json").read_bytes() == kept
+    assert not (out / "judgments.csv").exists()
+
+
 def test_a_validation_study_is_scored_against_its_space_as_the_command_line_scores_it(study, tmp_path):
     # Sec. 6.1: candidates judged against the first stimulus, here by three simulated participants
     # answering from the space the study is then scored against.
@@ -146,3 +158,11 @@ def test_a_validation_study_is_scored_against_its_space_as_the_command_line_scor
     assert v["mean_absolute_error"] == pytest.approx(cli["mean_absolute_error"], rel=1e-12)
     with pytest.raises(ValueError, match="space"):
         nibrig.study.report(folder, output=tmp_path / "unscored")  # a validation study needs its space
+    # The space named as one of the report's own files: the call is one job, and its input is kept.
+    for name in ("judgments.csv", "report.json"):
+        out = tmp_path / ("onto_" + name)
+        out.mkdir()
+        (out / name).write_bytes((root / "truth.json").read_bytes())
+        with pytest.raises(OSError, match="would replace .*" + name.replace(".", r"\.")):
+            nibrig.study.report(folder, output=out, space=out / name)
+        assert (out / name).read_bytes() == (root / "truth.json").read_bytes()
