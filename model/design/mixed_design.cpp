@@ -21,6 +21,7 @@ MixedDesign mixed_design(const DesignPoint& point, const mechanics::Design& temp
 
   mechanics::Material mixed;
   mixed.name = "mix " + to_string(point);
+  mixed.basis = "fitted";
   mixed.source = "rule of mixtures (E, Poisson ratio, density linear in the fractions) of";
   for (const auto& share : point.mix) {
     const mechanics::Material& m = materials.find(forcing::printed_tip_of(share.material).material);
@@ -28,6 +29,7 @@ MixedDesign mixed_design(const DesignPoint& point, const mechanics::Design& temp
     mixed.poisson_ratio += share.fraction * m.poisson_ratio;
     mixed.density += share.fraction * m.density;
     mixed.source += " " + m.name;
+    mixed.basis = mechanics::least_calibrated(mixed.basis, m.basis);  // as calibrated as its least part
   }
   mechanics::validate(mixed);
   std::vector<mechanics::Material> all = materials.materials();

@@ -7,6 +7,8 @@
 
 #include "model/design/mixed_design.hpp"
 #include "model/design/tip_bracket.hpp"
+#include "model/forcing/printed_tool_design.hpp"
+#include "model/mechanics/material_table.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/modal/frequency_response.hpp"
 
@@ -116,6 +118,24 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
   tool.response_magnitude = std::move(response.response_magnitude);
   tool.spectrum = predict_spectrum(*setup.model, point, surface, tool.response_magnitude);
   tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
+  // The template's body and each material of the mix as printed (forcing/printed_tool_design).
+  const auto body = setup.template_design.region_materials.find("body");
+  tool.material_basis = "fitted";
+  const auto basis_of = [&](const std::string& table_name) {
+    for (const auto& m : setup.materials.materials())
+      if (m.name == table_name) return m.basis;
+    return std::string();
+  };
+  if (body != setup.template_design.region_materials.end())
+    tool.material_basis = mechanics::least_calibrated(tool.material_basis, basis_of(body->second));
+  for (const auto& share : point.mix) {
+    std::string table_name = share.material;
+    try {
+      table_name = forcing::printed_tip_of(share.material).material;
+    } catch (const std::invalid_argument&) {  // a lab's material: its own name in the table
+    }
+    tool.material_basis = mechanics::least_calibrated(tool.material_basis, basis_of(table_name));
+  }
   return tool;
 }
 

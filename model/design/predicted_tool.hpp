@@ -78,6 +78,9 @@ struct PredictedTool {
   // The error its descriptors carry (setup's, without friction when μ was measured); empty when
   // the setup had none.
   DescriptorErrorCovariance descriptor_errors;
+  // What the design's materials stand on, its least calibrated one's (mechanics::Material::basis:
+  // "fitted", "datasheet", "estimate"; "" when the table does not say).
+  std::string material_basis;
 };
 
 // Meshes and solves the point's design (mixed_design.hpp), or `own_design` when given (a

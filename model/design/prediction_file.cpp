@@ -9,6 +9,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/measure/descriptors.hpp"
+#include "model/mechanics/material_table.hpp"
 
 namespace nibrig::model::design {
 
@@ -29,6 +30,7 @@ nlohmann::json prediction_json(const PredictedTool& tool, const std::string& thr
                  {"first_mode_hz", tool.first_mode_hz},
                  {"tip_diameter_mm", tool.point.tip_diameter_m * 1e3}};
   for (const auto& share : tool.point.mix) j["design"]["mix"][share.material] = share.fraction;
+  if (!tool.material_basis.empty()) j["design"]["material_basis"] = tool.material_basis;
   j["notes"] = {
       "amplitude = |H| (simulated design) x F_S (fitted surface forcing) x t x m (tip and "
       "material scaling interpolated linearly, Sec. 5.3); mu interpolated linearly between "
@@ -177,6 +179,10 @@ void check_written_design(const nlohmann::json& j, const DesignPoint& point, con
     throw io::FormatError(file, fields::place(tip_at),
                           "found " + prediction_number(tip_mm) + " mm, expected the tool's tip, " +
                               prediction_number(point.tip_diameter_m * 1e3) + " mm");
+  if (d.contains("material_basis") &&
+      !mechanics::is_material_basis(fields::string_member(d, "material_basis", file, "design")))
+    throw io::FormatError(file, fields::place(fields::member_path("design", "material_basis")),
+                          "expected fitted, datasheet or estimate");
   const std::string mix_at = fields::member_path("design", "mix");
   const auto& mix = fields::as_object(fields::member(d, "mix", file, "design"), file, mix_at);
   for (const auto& [material, value] : mix.items()) {
@@ -278,6 +284,7 @@ ReadPrediction read_prediction(const std::filesystem::path& file,
   tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, threshold);
   tool.design_name = fields::string_member(j["design"], "name", file, "design");
   tool.first_mode_hz = fields::number_member(j["design"], "first_mode_hz", file, "design");
+  if (j["design"].contains("material_basis")) tool.material_basis = j["design"]["material_basis"].get<std::string>();
   if (j.contains("descriptor_error_covariance"))
     tool.descriptor_errors = read_descriptor_errors(j, file);
   return {tool.point, tool.surface, predicted_tool_entry(tool),

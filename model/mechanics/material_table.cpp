@@ -44,6 +44,26 @@ const Material& MaterialTable::find(const std::string& name) const {
   throw std::invalid_argument("unknown material '" + name + "' (known: " + known + ")");
 }
 
+bool is_material_basis(const std::string& basis) {
+  return basis == "fitted" || basis == "datasheet" || basis == "estimate";
+}
+
+std::string least_calibrated(const std::string& a, const std::string& b) {
+  const auto rank = [](const std::string& basis) {
+    return basis == "fitted" ? 3 : basis == "datasheet" ? 2 : basis == "estimate" ? 1 : 0;
+  };
+  return rank(b) < rank(a) ? b : a;
+}
+
+std::string describe_basis(const std::string& basis) {
+  if (basis == "fitted") return "fitted to prints";
+  if (basis == "datasheet") return "datasheet values, not calibrated";
+  if (basis == "estimate") return "an estimate, not calibrated";
+  return "basis not stated";
+}
+
+std::string describe_basis(const Material& material) { return describe_basis(material.basis); }
+
 IsotropicMaterial elastic_part(const Material& m) {
   return {m.name, m.youngs_modulus, m.poisson_ratio, m.density};
 }
@@ -52,6 +72,8 @@ void validate(const Material& m) {
   const std::string who = "material '" + m.name + "': ";
   if (m.name.empty()) throw std::invalid_argument("a material has no name");
   validate(elastic_part(m));
+  if (!m.basis.empty() && !is_material_basis(m.basis))
+    throw std::invalid_argument(who + "basis '" + m.basis + "' is not fitted, datasheet or estimate");
   if (m.damping) {
     if (!(std::isfinite(m.damping->mass) && m.damping->mass >= 0))
       throw std::invalid_argument(who + "Rayleigh mass coefficient must be zero or positive, got " +
@@ -85,6 +107,7 @@ MaterialTable read_material_table(const std::filesystem::path& file) {
         d.stiffness = jf::number_member(entry, "rayleigh_stiffness", file, path);
       m.damping = d;
     }
+    if (entry.contains("basis")) m.basis = jf::string_member(entry, "basis", file, path);
     m.source = jf::string_member(entry, "source", file, path);
     try {
       validate(m);

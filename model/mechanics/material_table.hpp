@@ -23,8 +23,23 @@ struct Material {
   double poisson_ratio = 0.0;
   double density = 0.0;  // kg/m³
   std::optional<RayleighDamping> damping;
+  // Where the numbers stand: "fitted" to measurements of prints, a "datasheet"'s (until calibrated),
+  // an "estimate" (e.g. from a Shore hardness); empty when a table does not say.
+  std::string basis;
   std::string source;
 };
+
+// "fitted", "datasheet", "estimate": what a table's `basis` may say.
+bool is_material_basis(const std::string& basis);
+
+// Of two bases, the less calibrated (estimate < datasheet < fitted; an unstated one is the least):
+// what a mix or a design of several materials stands on.
+std::string least_calibrated(const std::string& a, const std::string& b);
+
+// For people: "datasheet values, not calibrated", "fitted to prints", "an estimate", "basis not
+// stated".
+std::string describe_basis(const Material& material);
+std::string describe_basis(const std::string& basis);
 
 class MaterialTable {
  public:
@@ -46,7 +61,8 @@ IsotropicMaterial elastic_part(const Material& material);
 // validate(IsotropicMaterial) checks them, negative damping, anything not finite.
 void validate(const Material& material);
 
-// Format "nibrig-materials", version 1. Throws io::FormatError naming the file and field.
+// Format "nibrig-materials", version 1 (`basis` optional). Throws io::FormatError naming the file and
+// field.
 MaterialTable read_material_table(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::mechanics

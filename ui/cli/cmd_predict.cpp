@@ -19,6 +19,7 @@
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/mechanics/material_table.hpp"
 #include "ui/cli/commands.hpp"
 #include "model/design/prediction_file.hpp"
 #include "ui/cli/design_reports.hpp"
@@ -91,6 +92,9 @@ void run_predict(const PredictOptions& o) {
   std::cout << fmt::format("{} on {}: design '{}' (first mode {:.1f} Hz), {}; {:.1f} s\n",
                            design::label(point), o.surface, tool.design_name, tool.first_mode_hz,
                            describe_descriptors(tool), seconds_since(start));
+  if (tool.material_basis != "fitted")  // the numbers the FEM used are not yet a print's
+    std::cout << fmt::format("its materials' constants: {} (the material table's basis)\n",
+                             model::mechanics::describe_basis(tool.material_basis));
 
   nlohmann::json j = design::prediction_json(tool, threshold.source());
 

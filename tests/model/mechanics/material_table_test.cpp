@@ -52,7 +52,7 @@ TEST(MaterialTable, NegativeModulusNamesFileAndField) {
 }
 
 TEST(MaterialTable, RejectsImpossiblePoissonRatioDensityAndDamping) {
-  Material m{"m", 1e9, 0.5, 1000, std::nullopt, ""};
+  Material m{"m", 1e9, 0.5, 1000, std::nullopt, "", ""};
   EXPECT_THAT([&] { validate(m); },
               ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("Poisson ratio")));
   m.poisson_ratio = 0.3;
@@ -75,6 +75,34 @@ TEST(MaterialTable, MissingFieldAndDuplicateNames) {
     {"name": "M", "youngs_modulus": 2e9, "poisson_ratio": 0.3, "density": 1000, "source": "y"}])");
   EXPECT_THAT([&] { read_material_table(twice); },
               ::testing::ThrowsMessage<io::FormatError>(HasSubstr("defined twice")));
+}
+
+// A lab's materials are in the bundled table, each marked with what its numbers stand on until a
+// print calibrates it.
+TEST(MaterialTable, TheLabsMaterialsSayTheyAreDatasheetValues) {
+  const MaterialTable table = read_material_table(nibrig::test::assets_dir() / "materials.json");
+  for (const char* name : {"PLA", "PETG", "TPU-95A", "resin-standard", "resin-flexible"}) {
+    const Material& m = table.find(name);
+    EXPECT_TRUE(m.basis == "datasheet" || m.basis == "estimate") << name << ": " << m.basis;
+    EXPECT_THAT(m.source, HasSubstr("data sheet")) << name << " names its datasheet";
+    EXPECT_EQ(describe_basis(m).find("not calibrated") != std::string::npos, true) << name;
+  }
+  EXPECT_EQ(table.find("VeroClear-Piovarci2018").basis, "fitted");
+  for (const auto& m : table.materials()) EXPECT_TRUE(is_material_basis(m.basis)) << m.name << " states no basis";
+}
+
+TEST(MaterialTable, ABasisIsOptionalButOnlyOneOfThree) {
+  const auto plain = write_table("no_basis.json", R"([{"name": "x", "youngs_modulus": 1e9, "poisson_ratio": 0.3,
+                                                     "density": 1000, "source": "s"}])");
+  EXPECT_EQ(describe_basis(read_material_table(plain).find("x")), "basis not stated");
+  const auto bad = write_table("bad_basis.json", R"([{"name": "x", "youngs_modulus": 1e9, "poisson_ratio": 0.3,
+                                                   "density": 1000, "basis": "guessed", "source": "s"}])");
+  try {
+    read_material_table(bad);
+    ADD_FAILURE() << "a basis of 'guessed' was read";
+  } catch (const io::FormatError& e) {
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("bad_basis.json"), HasSubstr("materials[0]"), HasSubstr("guessed")));
+  }
 }
 
 }  // namespace
