@@ -7,8 +7,13 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
+#include "model/design/printability.hpp"
+#include "model/design/slicer_settings.hpp"
+#include "model/forcing/printed_tool_design.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/stl_writer.hpp"
@@ -30,11 +35,43 @@ std::array<std::uint8_t, 3> display_colour(const StylusRegion& region) {
   return {level, level, static_cast<std::uint8_t>(std::min(255.0, level + 20.0))};
 }
 
+// A lab's material (in the table, never printed in the catalog): the whole template stylus of it.
+std::optional<MixedDesign> lab_material_design(const PredictionSetup& setup, const DesignPoint& point) {
+  if (point.mix.size() != 1) return std::nullopt;
+  const std::string& name = point.mix.front().material;
+  try {
+    forcing::printed_tip_of(name);
+    return std::nullopt;  // a catalog material: the fitted tools' design
+  } catch (const std::invalid_argument&) {
+  }
+  const auto& table = setup.materials.materials();
+  const auto found = std::find_if(table.begin(), table.end(), [&](const mechanics::Material& m) {
+    return catalog_material_name(m.name) == catalog_material_name(name);
+  });
+  if (found == table.end()) return std::nullopt;  // unknown: solved_design names what it knows
+  mechanics::Design template_design = setup.template_design;
+  template_design.region_materials["body"] = found->name;
+  MixedDesign mixed{forcing::printed_tool_design({found->name, 0.0}, point.tip_diameter_m, template_design,
+                                                 setup.materials),
+                    setup.materials};
+  if (setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
+  if (setup.modes > 0) mixed.design.modes = setup.modes;
+  return mixed;
+}
+
+// Stood on its back end (the stylus's +x becomes +z), a proper rotation: the triangles keep their
+// outward winding.
+io::SurfaceMesh stood_up(io::SurfaceMesh surface) {
+  for (auto& v : surface.vertices) v = {-v[2], v[1], v[0]};
+  return surface;
+}
+
 }  // namespace
 
 StylusPrint stylus_print(const PredictionSetup& setup, const DesignPoint& point) {
   MixedDesign mixed = [&] {
     try {
+      if (auto lab = lab_material_design(setup, point)) return std::move(*lab);
       return solved_design(setup, point);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("design " + label(point) + ": " + e.what());
@@ -84,7 +121,9 @@ std::string printer_material(const StylusRegion& region) {
 }
 
 StylusFiles stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
-  StylusFiles files{three_mf, {}, three_mf.parent_path() / (three_mf.stem().string() + ".json")};
+  StylusFiles files{three_mf, {}, three_mf.parent_path() / (three_mf.stem().string() + ".json"), {}};
+  if (print.printer && reads_prusa_slicer(*print.printer))
+    files.slicer_config = three_mf.parent_path() / (three_mf.stem().string() + ".ini");
   for (const auto& region : print.regions)
     files.stls.push_back(three_mf.parent_path() / (three_mf.stem().string() + "-" + region.surface.name + ".stl"));
   return files;
@@ -102,6 +141,8 @@ nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& f
     r["name"] = region.surface.name;
     r["material"] = region.material;
     r["printer_material"] = printer_material(region);
+    for (const auto& m : print.materials.materials())
+      if (m.name == region.material) r["material_basis"] = m.basis.empty() ? "unstated" : m.basis;
     r["mix"] = nlohmann::json::array();
     for (const auto& share : region.mix) r["mix"].push_back({{"material", share.material}, {"fraction", share.fraction}});
     r["triangles"] = region.surface.triangles.size();
@@ -119,6 +160,32 @@ nlohmann::json stylus_recipe_json(const StylusPrint& print, const StylusFiles& f
   }
   j["files"]["three_mf"] = files.three_mf.filename().string();
   for (const auto& stl : files.stls) j["files"]["stls"].push_back(stl.filename().string());
+  if (!files.slicer_config.empty()) j["files"]["slicer_config"] = files.slicer_config.filename().string();
+  if (print.printer) {
+    const auto& p = *print.printer;
+    nlohmann::json printer{{"name", p.name},
+                           {"printer", p.printer},
+                           {"process", io::process_name(p.process)},
+                           {"orientation", p.orientation},
+                           {"orientation_reason", p.orientation_reason},
+                           {"supports", p.supports},
+                           {"post_process", p.post_process},
+                           {"slicer", p.slicer},
+                           {"layer_height_mm", p.layer_height_m * 1e3},
+                           {"smallest_tip_mm", smallest_tip_m(p) * 1e3},
+                           {"profile", p.file.string()}};
+    if (p.process == io::PrintProcess::fdm) printer["nozzle_diameter_mm"] = p.nozzle_diameter_m * 1e3;
+    if (p.process == io::PrintProcess::msla) printer["pixel_size_mm"] = p.pixel_size_m() * 1e3;
+    if (p.process == io::PrintProcess::polyjet) printer["xy_resolution_mm"] = p.xy_resolution_m * 1e3;
+    printer["slicer_settings"] = nlohmann::json::object();
+    for (const auto& [k, v] : prusa_slicer_settings(p)) printer["slicer_settings"][k] = v;
+    printer["sources"] = nlohmann::json::object();
+    for (const auto& [k, v] : p.sources) printer["sources"][k] = v;
+    if (!files.slicer_config.empty())
+      printer["slice_command"] =
+          prusa_slicer_command(p, files.slicer_config.filename(), files.three_mf.filename());
+    j["printer"] = printer;
+  }
   return j;
 }
 
@@ -138,37 +205,52 @@ void check_stylus_folder(const std::filesystem::path& folder) {
 void check_stylus_outputs(const std::filesystem::path& three_mf) {
   check_stylus_folder(three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path());
   const auto recipe = stylus_files(three_mf, StylusPrint{}).recipe;
+  const auto ini = three_mf.parent_path() / (three_mf.stem().string() + ".ini");
   io::refuse_companion_link(recipe, three_mf);
-  for (const auto& file : {three_mf, recipe}) io::output_target(file);
+  io::refuse_companion_link(ini, three_mf);
+  for (const auto& file : {three_mf, recipe, ini}) io::output_target(file);
 }
 
 StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const StylusPrint& print) {
+  if (print.printer) check_printable(*print.printer, print);
   const auto folder = three_mf.parent_path().empty() ? std::filesystem::path(".") : three_mf.parent_path();
   check_stylus_folder(folder);
   std::filesystem::create_directories(folder);
   const StylusFiles files = stylus_files(three_mf, print);
   for (const auto& stl : files.stls) io::refuse_companion_link(stl, three_mf);
   io::refuse_companion_link(files.recipe, three_mf);
+  if (!files.slicer_config.empty()) io::refuse_companion_link(files.slicer_config, three_mf);
 
-  // Lying along x, on the bed (lowest point at z = 0), centred on it.
+  // As the printer orients it (lying along x without one), on the bed (lowest point at z = 0),
+  // centred on it.
+  const bool standing = print.printer && print.printer->orientation == "standing";
+  std::vector<io::SurfaceMesh> oriented;
+  for (const auto& region : print.regions) oriented.push_back(standing ? stood_up(region.surface) : region.surface);
+  const double centre_x = print.printer ? 0.5 * print.printer->build_volume_m[0] : kBedCentreM;
+  const double centre_y = print.printer ? 0.5 * print.printer->build_volume_m[1] : kBedCentreM;
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (const auto& region : print.regions)
-    for (const auto& v : region.surface.vertices)
+  for (const auto& surface : oriented)
+    for (const auto& v : surface.vertices)
       for (int k = 0; k < 3; ++k) {
         lo[k] = std::min(lo[k], v[static_cast<std::size_t>(k)]);
         hi[k] = std::max(hi[k], v[static_cast<std::size_t>(k)]);
       }
   io::ThreeMfPart part;
   part.name = "nibrig stylus " + to_string(print.point);
-  part.placement_m = {kBedCentreM - 0.5 * (lo[0] + hi[0]), kBedCentreM - 0.5 * (lo[1] + hi[1]), -lo[2]};
+  part.placement_m = {centre_x - 0.5 * (lo[0] + hi[0]), centre_y - 0.5 * (lo[1] + hi[1]), -lo[2]};
   part.metadata = {{"Title", part.name},
                    {"Application", "nibrig"},
                    {"Description", "design " + to_string(print.point) + " (" + print.design_name + "), meshed at " +
                                        std::to_string(1e3 * print.design.mesh_size) + " mm"}};
-  for (const auto& region : print.regions)
-    part.regions.push_back({region.surface, printer_material(region), display_colour(region)});
+  for (std::size_t i = 0; i < print.regions.size(); ++i)
+    part.regions.push_back({oriented[i], printer_material(print.regions[i]), display_colour(print.regions[i])});
+  const SlicerSettings settings = print.printer ? prusa_slicer_settings(*print.printer) : SlicerSettings{};
+  if (!settings.empty()) {
+    part.attachments.emplace_back("Metadata/Slic3r_PE.config", prusa_slicer_3mf_config(settings));
+  }
   io::write_3mf(files.three_mf, part);
-  for (std::size_t i = 0; i < print.regions.size(); ++i) io::write_binary_stl(files.stls[i], print.regions[i].surface);
+  for (std::size_t i = 0; i < print.regions.size(); ++i) io::write_binary_stl(files.stls[i], oriented[i]);
+  if (!files.slicer_config.empty()) io::write_file_atomically(files.slicer_config, prusa_slicer_ini(settings));
   io::write_file_atomically(files.recipe, stylus_recipe_json(print, files).dump(2) + "\n");
   return files;
 }

@@ -114,6 +114,18 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
   call(lib3mf_model_addbuilditem(model.get(), assembly.get(), &placement, &item_raw), model.get(), "place the part");
   const Owned item(item_raw);
 
+  for (const auto& [path, content] : part.attachments) {
+    // The relationship type is ours: PrusaSlicer finds its config by the path alone.
+    std::string uri = "/" + path, relationship = "http://schemas.nibrig.org/3mf/slicer-config";
+    PLib3MFModelAttachment* attachment_raw = nullptr;
+    call(lib3mf_model_addattachmentutf8(model.get(), uri.data(), relationship.data(), &attachment_raw), model.get(),
+         "attach " + path);
+    const Owned attachment(attachment_raw);
+    std::string bytes = content;
+    call(lib3mf_attachment_readfrombuffer(attachment.get(), reinterpret_cast<BYTE*>(bytes.data()), bytes.size()),
+         attachment.get(), "fill " + path);
+  }
+
   PLib3MFModelWriter* writer_raw = nullptr;
   call(lib3mf_model_querywriter(model.get(), "3mf", &writer_raw), model.get(), "make a 3MF writer");
   const Owned writer(writer_raw);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/io/surface_mesh.hpp"
@@ -26,6 +27,9 @@ struct ThreeMfPart {
   // 3MF's well-known metadata (Title, Description, Application, …), in order.
   std::vector<std::pair<std::string, std::string>> metadata;
   std::array<double, 3> placement_m{0, 0, 0};  // the build item's translation
+  // Files the package carries beside the model, by their path in it: a slicer's own settings
+  // ("Metadata/Slic3r_PE.config", which PrusaSlicer reads on opening the 3MF).
+  std::vector<std::pair<std::string, std::string>> attachments;
 };
 
 // Written atomically (atomic_file.hpp). Throws std::runtime_error naming the file and lib3mf's

@@ -13,6 +13,7 @@
 #include "model/design/design_constraints.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_file.hpp"
+#include "model/design/printability.hpp"
 #include "model/design/stylus_export.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
@@ -49,6 +50,7 @@ struct DesignOptions {
   std::filesystem::path output = "design_search.json";
   std::filesystem::path plot;
   std::filesystem::path export_folder;  // the optimum's stylus files
+  std::string printer;                  // --printer, for --export
   std::optional<double> min_tip_mm, max_tip_mm;
   std::vector<std::string> allow;  // materials a printer may load
   std::string cost;                // "vero=1,DM85=3"
@@ -98,6 +100,9 @@ std::string joined(const std::vector<std::string>& names) {
 
 void run_design(const DesignOptions& o) {
   if (!o.export_folder.empty()) design::check_stylus_folder(o.export_folder);  // before minutes of search
+  if (!o.printer.empty() && o.export_folder.empty())
+    throw CLI::ValidationError("--printer", "is the printer of --export: give --export too");
+  const auto printer = printer_option(o.printer);
   // The options' own checks first, before any file is read: a bad --cost is named as such, not
   // after a space file's error or a forcing model's fit.
   const auto constraints = constraints_of(o);
@@ -251,6 +256,8 @@ void run_design(const DesignOptions& o) {
                                group ? "the targets, " + o.aim : "the target",
                                s.outside_constraints.empty() ? "" : "; outside the constraints: " + s.outside_constraints);
     }
+    print.printer = printer;
+    if (printer) design::check_printable(*printer, print);  // before the sheet's prediction
     const auto tool = design::predict_tool(inputs->setup, best.point, o.surface);  // the sheet's spectrum
     figures::StylusSheetInputs sheet{&tool, &space_file, best.placement, {}, o.aim};
     for (std::size_t t = 0; t < targets.size(); ++t)
@@ -315,6 +322,7 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       ->check(file_to_write());
   cmd->add_option("--export", o->export_folder,
                   "Folder to write the optimum's stylus into: stylus.3mf, an STL per region, the recipe and the print sheet");
+  cmd->add_option("--printer", o->printer, printer_option_help());
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_design(*o);

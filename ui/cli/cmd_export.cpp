@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "model/design/prediction_file.hpp"
+#include "model/design/printability.hpp"
+#include "model/design/slicer_settings.hpp"
 #include "model/design/stylus_export.hpp"
 #include "model/mechanics/region_surface.hpp"
 #include "model/space/space_file.hpp"
@@ -24,15 +26,44 @@ namespace nibrig::ui::cli {
 
 namespace design = model::design;
 
+std::optional<model::io::PrinterProfile> printer_option(const std::string& name_or_file) {
+  if (name_or_file.empty()) return std::nullopt;
+  try {
+    return model::io::find_printer_profile(name_or_file);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--printer", e.what());
+  }
+}
+
+std::string printer_option_help() {
+  std::string names;
+  for (const auto& n : model::io::bundled_printer_names()) names += (names.empty() ? "" : ", ") + n;
+  return "Printer profile, a name or a file: the 3MF carries its slicer settings (100 % infill, walls, layers, "
+         "orientation, supports), a .ini beside it for `prusa-slicer --load`, and a design it cannot make is refused "
+         "(bundled: " + names + "; your own: " + model::io::user_printers_folder().string() + "/NAME.json)";
+}
+
 void print_stylus_files(const design::StylusPrint& print, const figures::ExportedStylus& exported) {
   std::cout << fmt::format("stylus {} ({}), meshed at {:.2f} mm:\n", design::label(print.point), print.design_name,
                            print.design.mesh_size * 1e3);
-  for (const auto& region : print.regions)
-    std::cout << fmt::format("  {}: {}, {} triangles, {:.1f} mm3\n", region.surface.name,
+  for (const auto& region : print.regions) {
+    std::string basis;
+    for (const auto& m : print.materials.materials())
+      if (m.name == region.material) basis = ", " + model::mechanics::describe_basis(m);
+    std::cout << fmt::format("  {}: {}, {} triangles, {:.1f} mm3{}\n", region.surface.name,
                              design::printer_material(region), region.surface.triangles.size(),
-                             model::mechanics::enclosed_volume(region.surface) * 1e9);
+                             model::mechanics::enclosed_volume(region.surface) * 1e9, basis);
+  }
+  if (print.printer) {
+    std::cout << fmt::format("printer {}: {}\n", print.printer->name, design::describe_print_settings(*print.printer));
+    if (!exported.files.slicer_config.empty())
+      std::cout << "slice with: "
+                << design::prusa_slicer_command(*print.printer, exported.files.slicer_config, exported.files.three_mf)
+                << "\n";
+  }
   say_wrote(exported.files.three_mf);
   for (const auto& stl : exported.files.stls) say_wrote(stl);
+  if (!exported.files.slicer_config.empty()) say_wrote(exported.files.slicer_config);
   say_wrote(exported.files.recipe);
   say_wrote(exported.sheet);
 }
@@ -46,6 +77,7 @@ struct ExportOptions {
   std::string surface;  // the sheet's prediction; default: a prediction file's own
   std::filesystem::path space_file;
   std::filesystem::path forcing_model;
+  std::string printer;  // --printer: a profile's name or file
 };
 
 // A design point has no surface: the prediction file's is its own.
@@ -80,11 +112,17 @@ void run_export(const ExportOptions& o) {
                                   " has no descriptor map (fit it with --descriptors): a design is "
                                   "placed from its predicted descriptors");
   }
+  const auto printer = printer_option(o.printer);
   design::check_stylus_outputs(o.output);  // not onto the design or space just read, before the prediction
   if (surface.empty()) {  // the print alone: no prediction to put on the sheet
-    const auto print = design::stylus_print(o.inputs, point);
+    auto print = design::stylus_print(o.inputs, point);
+    print.printer = printer;
     print_stylus_files(print, figures::export_stylus(o.output, print, {}));
     return;
+  }
+  if (printer && !space) {  // refused before the prediction when no substitute can be offered
+    auto print = design::stylus_print(o.inputs, point);
+    design::check_printable(*printer, print);
   }
   if (o.forcing_model.empty() && warnings_shown())
     std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
@@ -103,6 +141,7 @@ void run_export(const ExportOptions& o) {
       std::cout << fmt::format("without mixing: {} is {:.3f} ± {:.3f} from the design in the space\n",
                                design::label(s.point), s.cost, s.cost_sd);
   }
+  print.printer = printer;
   print_stylus_files(print, figures::export_stylus(o.output, print, sheet));
 }
 
@@ -117,7 +156,10 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "with an object per region and its material (a mixed tip: the fractions to mix); an STL per\n"
       "region is written beside it as <name>-<region>.stl, the recipe as <name>.json and the\n"
       "print sheet as <name>-sheet.png: the design, its recipe, its predicted mu and spectrum on\n"
-      "--surface, and with --space its place in the space.");
+      "--surface, and with --space its place in the space. With --printer the 3MF carries\n"
+      "the printer's slicer settings (Metadata/Slic3r_PE.config) and <name>.ini is written for\n"
+      "`prusa-slicer --load <name>.ini --export-gcode <name>.3mf`; a design the printer cannot\n"
+      "make (a material it lacks, a mix it cannot mix, a tip below its nozzle or pixels) is refused.");
   cmd->add_option("DESIGN", o->design, "A design point (DM85:0.62,vero:0.38,tip=2.7mm) or a prediction file")
       ->required();
   cmd->add_option("-o,--output", o->output, "The 3MF file to write")->capture_default_str()->check(file_to_write());
@@ -136,6 +178,7 @@ void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--forcing", o->forcing_model,
                   "Forcing model from `nibrig forcing fit` (default: the catalog's, cached)");
   cmd->add_option("--catalog", o->inputs.catalog, "Tool catalog JSON (default: the bundled one)");
+  cmd->add_option("--printer", o->printer, printer_option_help());
   cmd->callback([o, global] {
     configure_logging(global->verbosity);
     run_export(*o);

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "model/design/slicer_settings.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/mechanics/region_surface.hpp"
 #include "ui/figures/predicted_text.hpp"
@@ -29,10 +30,25 @@ void print_lines(Lines& lines, const design::StylusPrint& print, const design::S
   line(lines, fmt::format("meshed at {:.2f} mm, as the prediction solved it", print.design.mesh_size * 1e3));
   heading(lines, fmt::format("Print: one part of {} object{} ({})", print.regions.size(),
                              print.regions.size() == 1 ? "" : "s", files.three_mf.filename().string()));
-  for (const auto& region : print.regions)
-    line(lines, fmt::format("{}: {}, {:.1f} mm3", region.surface.name,
-                            design::printer_material(region),
-                            model::mechanics::enclosed_volume(region.surface) * 1e9));
+  for (const auto& region : print.regions) {
+    std::string basis;
+    for (const auto& m : print.materials.materials())
+      if (m.name == region.material) basis = " (" + model::mechanics::describe_basis(m) + ")";
+    line(lines, fmt::format("{}: {}, {:.1f} mm3{}", region.surface.name, design::printer_material(region),
+                            model::mechanics::enclosed_volume(region.surface) * 1e9, basis));
+  }
+  if (print.printer) {
+    const auto& p = *print.printer;
+    heading(lines, "Printer: " + p.name);
+    line(lines, p.printer);
+    line(lines, design::describe_print_settings(p));
+    if (!files.slicer_config.empty())
+      line(lines, "slice: " + design::prusa_slicer_command(p, files.slicer_config.filename(), files.three_mf.filename()));
+    else
+      line(lines, "slicer: " + p.slicer);
+  } else {
+    line(lines, "no printer given (--printer): the slicer's defaults are not a solid part");
+  }
   if (!print.substitutes.empty()) {
     heading(lines, "Without mixing (distance in the space)");
     for (const auto& s : print.substitutes)
@@ -109,6 +125,8 @@ report::PrintSheet stylus_sheet(const design::StylusPrint& print, const design::
   heading(sheet.lines, "Files");
   line(sheet.lines, files.three_mf.filename().string());
   for (const auto& stl : files.stls) line(sheet.lines, stl.filename().string());
+  if (!files.slicer_config.empty())
+    line(sheet.lines, files.slicer_config.filename().string() + " (the slicer's settings)");
   line(sheet.lines, files.recipe.filename().string() + " (the recipe)");
   return sheet;
 }

@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "model/io/bundled_assets.hpp"
+#include "model/io/printer_profile.hpp"
 #include "model/mechanics/region_surface.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -154,6 +155,20 @@ TEST(StylusSheet, ExportWritesTheFilesAndTheSheetOrNothingWhenRefused) {
   char signature[8] = {};
   png.read(signature, 8);
   EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+}
+
+TEST(StylusSheet, APrintersSettingsAndTheMaterialsBasisAreOnTheSheet) {
+  auto print = design::stylus_print(bundled_setup(), design::parse_design_point("PLA,tip=2mm"));
+  print.printer = model::io::read_printer_profile(nibrig::test::assets_dir() / "printers" / "prusa-mk3s.json");
+  const auto sheet = stylus_sheet(print, design::stylus_files("out/stylus.3mf", print), {});
+  std::string text;
+  for (const auto& line : sheet.lines) text += line.text + "\n";
+  EXPECT_NE(text.find("PLA, 9"), std::string::npos) << text;
+  EXPECT_NE(text.find("(datasheet values, not calibrated)"), std::string::npos) << text;
+  EXPECT_NE(text.find("FDM, 100% infill (rectilinear), 2 perimeters, 0.15 mm layers, 0.4 mm nozzle"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("slice: prusa-slicer --load stylus.ini --export-gcode stylus.3mf"), std::string::npos) << text;
+  EXPECT_NE(text.find("stylus.ini (the slicer's settings)"), std::string::npos) << text;
 }
 
 }  // namespace
