@@ -33,13 +33,18 @@ std::filesystem::path find_forcing_model(const std::string& name_or_file) {
                      : " (stored: " + known + ")"));
 }
 
-std::filesystem::path save_forcing_model(const std::string& name, const ForcingModel& model,
-                                         bool replace) {
+void check_can_save(const std::string& name, bool replace) {
   if (name.empty()) throw std::invalid_argument("saving a forcing model: no name given");
   const auto file = forcing_store_path(name);
   if (!replace && std::filesystem::exists(file))
     throw std::invalid_argument("a forcing model named '" + name + "' is stored already (" +
                                 file.string() + "): choose another name, or replace it");
+}
+
+std::filesystem::path save_forcing_model(const std::string& name, const ForcingModel& model,
+                                         bool replace) {
+  check_can_save(name, replace);
+  const auto file = forcing_store_path(name);
   std::filesystem::create_directories(file.parent_path());
   write_forcing_model(file, model);
   return file;

@@ -20,6 +20,9 @@ std::filesystem::path forcing_store_path(const std::string& name);
 // std::invalid_argument naming both places and the names stored when it is neither.
 std::filesystem::path find_forcing_model(const std::string& name_or_file);
 
+// Throws what save_forcing_model throws for a name that cannot be saved, before any work is done.
+void check_can_save(const std::string& name, bool replace = false);
+
 // Writes `model` under `name` (the folder made when missing) and returns the file. Throws
 // std::invalid_argument when a model of that name is stored and `replace` is false, or the name is
 // empty.

@@ -175,9 +175,8 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
 }
 
 // A lab's calibration against a model it has: the prints of the material at the tips asked for.
-void run_material_calibration(const MaterialCalibrateOptions& o, const ForcingInputs& inputs) {
-  const auto file = forcing::find_forcing_model(o.forcing_model);
-  const forcing::ForcingModel model = forcing::read_forcing_model(file);
+void run_material_calibration(const MaterialCalibrateOptions& o, const std::filesystem::path& file,
+                              const forcing::ForcingModel& model, const ForcingInputs& inputs) {
   const auto tips = metres(o.tips_mm);
   const auto prints = forcing::prints_of_material(inputs.exemplars, o.material, tips);
   const forcing::MaterialCalibration c = forcing::calibrate_material(model, prints, o.material);
@@ -201,13 +200,23 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const ForcingIn
   write_outputs(c.model, o.out);
 }
 
+// A model named but not there, or a name stored already, fail before the designs are simulated.
+std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> model_first(
+    const std::string& forcing_model, const CalibrationOutput& out) {
+  if (!out.save.empty()) forcing::check_can_save(out.save, out.replace);
+  if (forcing_model.empty()) return std::nullopt;
+  const auto file = forcing::find_forcing_model(forcing_model);
+  return std::pair{file, forcing::read_forcing_model(file)};
+}
+
 void run_calibrate_material(const MaterialCalibrateOptions& o) {
+  const auto against = model_first(o.forcing_model, o.out);
   const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
-  if (o.forcing_model.empty())
-    run_material_check(o, inputs);
+  if (against)
+    run_material_calibration(o, against->first, against->second, inputs);
   else
-    run_material_calibration(o, inputs);
+    run_material_check(o, inputs);
 }
 
 // The study: the catalog's surface taken as new, calibrated from k of its tools for every k.
@@ -271,9 +280,8 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
   }
 }
 
-void run_surface_calibration(const SurfaceCalibrateOptions& o, const ForcingInputs& inputs) {
-  const auto file = forcing::find_forcing_model(o.forcing_model);
-  const forcing::ForcingModel model = forcing::read_forcing_model(file);
+void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesystem::path& file,
+                             const forcing::ForcingModel& model, const ForcingInputs& inputs) {
   const auto tools = forcing::tools_on_surface(inputs.exemplars, o.surface, o.tools);
   const forcing::SurfaceCalibration c = forcing::calibrate_surface(model, tools, o.surface);
   const auto repeatability = catalog_repeatability(o.inputs);
@@ -290,12 +298,13 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const ForcingInpu
 }
 
 void run_calibrate_surface(const SurfaceCalibrateOptions& o) {
+  const auto against = model_first(o.forcing_model, o.out);
   const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
-  if (o.forcing_model.empty())
-    run_surface_study(o, inputs);
+  if (against)
+    run_surface_calibration(o, against->first, against->second, inputs);
   else
-    run_surface_calibration(o, inputs);
+    run_surface_study(o, inputs);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "model/forcing/forcing_file.hpp"
 #include "tests/support/test_paths.hpp"
@@ -68,6 +70,28 @@ TEST_F(ForcingCalibrateCli, AMaterialTakenAsNewIsCalibratedWrittenAndStored) {
             0);
   EXPECT_NE(error_.find("a forcing model named 'lab-DM95' is stored already"), std::string::npos)
       << error_;
+
+  // A lab's model without DM95 (the file above, its DM95 curve taken out): DM95 calibrated against
+  // it from its 1 and 4 mm prints, its 2 mm prints predicted, the result written with its errors.
+  std::ifstream in(file);
+  auto json = nlohmann::json::parse(in);
+  auto& curves = json["material_curves"];
+  curves.erase(std::remove_if(curves.begin(), curves.end(),
+                              [](const auto& c) { return c["material"] == "DM95"; }),
+               curves.end());
+  std::ofstream(out_ / "without.json") << json.dump();
+  const auto again = out_ / "again.json";
+  ASSERT_EQ(run(with_coarse({"forcing", "calibrate-material", "--material", "DM95", "--forcing",
+                             (out_ / "without.json").string(), "-o", again.string()})),
+            0)
+      << text_ << error_;
+  EXPECT_NE(text_.find("DM95 calibrated against"), std::string::npos) << text_;
+  EXPECT_NE(text_.find("DM952       glass"), std::string::npos) << text_;
+  EXPECT_NE(text_.find("(predicted)"), std::string::npos) << text_;
+  // Against the same held model and prints, the same curve as the check's (to the file's digits).
+  const auto recalibrated = model::forcing::read_forcing_model(again);
+  for (std::size_t k = 0; k < 11; ++k)
+    EXPECT_NEAR(recalibrated.material_curve("DM95")[k], model.material_curve("DM95")[k], 1e-12);
 }
 
 TEST_F(ForcingCalibrateCli, ACalibrationAgainstAStoredModelFindsItByName) {
