@@ -6,7 +6,6 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
-#include <unordered_map>
 #include <vector>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -16,6 +15,7 @@
 #include "model/io/triplets.hpp"
 #include "model/space/synthetic_study.hpp"
 #include "model/space/trial_plan.hpp"
+#include "model/space/two_stage_lists.hpp"
 #include "model/study/stimulus_list.hpp"
 #include "ui/cli/elapsed.hpp"
 #include "ui/cli/output.hpp"
@@ -128,50 +128,6 @@ void run_space_synth(const SpaceSynthOptions& o, unsigned threads) {
   }
 }
 
-namespace {
-
-// The stimuli of a two-stage experiment are the stage-1 trials': stage 2 repeats some of their
-// ties, so a stimulus that only a stage-2 trial names (a typo, a list from another study) is not
-// one of the experiment's, and is refused naming it, its file and its trial, not fitted as a
-// stimulus judged a handful of times.
-struct TwoStageStimuli {
-  std::vector<std::string> names;                     // in the order stage 1 first names them
-  std::unordered_map<std::string, std::size_t> index;
-};
-
-TwoStageStimuli stage_one_stimuli(const std::vector<std::filesystem::path>& files,
-                                  const std::vector<space::TrialList>& lists) {
-  TwoStageStimuli s;
-  for (const auto& list : lists)
-    for (const auto& t : list.trials)
-      if (t.stage == 1)
-        for (std::size_t i : {t.reference, t.left, t.right})
-          if (s.index.emplace(list.stimuli[i], s.names.size()).second) s.names.push_back(list.stimuli[i]);
-  if (s.names.empty())
-    throw model::io::FormatError(files.front(), "",
-                                 "no stage-1 trial: the stimuli of a two-stage experiment are its stage 1's");
-  return s;
-}
-
-// `list` (read from `file`) with its indices into `stimuli`'s names.
-void into_stage_one_stimuli(space::TrialList& list, const std::filesystem::path& file, const TwoStageStimuli& stimuli) {
-  for (std::size_t k = 0; k < list.trials.size(); ++k) {
-    space::Trial& t = list.trials[k];
-    for (std::size_t* i : {&t.reference, &t.left, &t.right}) {
-      const auto it = stimuli.index.find(list.stimuli[*i]);
-      if (it == stimuli.index.end())
-        throw model::io::FormatError(file, "trial row " + std::to_string(k + 1),
-                                     "unknown stimulus " + model::io::in_quotes(list.stimuli[*i]) + " in stage " +
-                                         std::to_string(t.stage) + ": no stage-1 trial names it (expected one of the " +
-                                         std::to_string(stimuli.names.size()) + " stimuli of stage 1)");
-      *i = it->second;
-    }
-  }
-  list.stimuli = stimuli.names;
-}
-
-}  // namespace
-
 void run_space_plan(const SpacePlanOptions& o) {
   space::TrialList list;
   if (o.stage == 1) {
@@ -180,7 +136,7 @@ void run_space_plan(const SpacePlanOptions& o) {
                                            o.seed, o.fraction);
   } else {
     space::TrialList answered = space::read_trial_csv(o.input, {}, space::kTwoStageLast);
-    into_stage_one_stimuli(answered, o.input, stage_one_stimuli({o.input}, {answered}));
+    space::into_stage_one_stimuli(answered, o.input, space::stage_one_stimuli({o.input}, {answered}));
     const auto counts = space::merge_trials(answered.trials, answered.choices, 1);
     if (counts.empty())
       throw model::io::FormatError(o.input, "", "no answered stage-1 trial to find ties in");
@@ -201,13 +157,13 @@ void run_space_plan(const SpacePlanOptions& o) {
 void run_space_merge(const SpaceMergeOptions& o) {
   std::vector<space::TrialList> lists;
   for (const auto& file : o.lists) lists.push_back(space::read_trial_csv(file, {}, space::kTwoStageLast));
-  const TwoStageStimuli two_stage = stage_one_stimuli(o.lists, lists);
+  const space::TwoStageStimuli two_stage = space::stage_one_stimuli(o.lists, lists);
   const std::vector<std::string>& stimuli = two_stage.names;
   std::vector<space::Trial> trials;
   std::vector<space::Choice> choices;
   for (std::size_t f = 0; f < lists.size(); ++f) {
     space::TrialList& list = lists[f];
-    into_stage_one_stimuli(list, o.lists[f], two_stage);
+    space::into_stage_one_stimuli(list, o.lists[f], two_stage);
     trials.insert(trials.end(), list.trials.begin(), list.trials.end());
     choices.insert(choices.end(), list.choices.begin(), list.choices.end());
   }
