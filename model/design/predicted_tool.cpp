@@ -5,11 +5,13 @@
 #include <map>
 #include <stdexcept>
 
+#include "model/design/calibration_uncertainty.hpp"
 #include "model/design/mixed_design.hpp"
 #include "model/design/tip_bracket.hpp"
 #include "model/forcing/printed_tool_design.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "model/mechanics/design_model.hpp"
+#include "model/space/catalog_descriptors.hpp"
 #include "model/modal/frequency_response.hpp"
 
 namespace nibrig::model::design {
@@ -118,6 +120,19 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
   tool.response_magnitude = std::move(response.response_magnitude);
   tool.spectrum = predict_spectrum(*setup.model, point, surface, tool.response_magnitude);
   tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
+  // A material or surface calibrated from a few prints moves the descriptors by its own error,
+  // beside the cross-validated one (calibration_uncertainty.hpp).
+  if (has_calibration_errors(*setup.model, point, surface)) {
+    auto& errors = tool.descriptor_errors;
+    if (errors.empty()) {
+      errors.names = space::all_paper_descriptor_names();
+      const auto n = static_cast<Eigen::Index>(errors.names.size());
+      errors.covariance = Eigen::MatrixXd::Zero(n, n);
+    }
+    errors.covariance += calibration_descriptor_covariance(*setup.model, point, surface,
+                                                           tool.spectrum, *setup.threshold,
+                                                           errors.names);
+  }
   // The template's body and each material of the mix as printed (forcing/printed_tool_design).
   const auto body = setup.template_design.region_materials.find("body");
   tool.material_basis = "fitted";

@@ -75,8 +75,8 @@ struct PredictedTool {
   io::VelocitySpectrum spectrum;
   double mu = 0.0;
   measure::VibrationDescriptors vibration;
-  // The error its descriptors carry (setup's, without friction when μ was measured); empty when
-  // the setup had none.
+  // The error its descriptors carry (setup's, without friction when μ was measured), plus what a
+  // calibrated material or surface adds (calibration_uncertainty.hpp); empty when there is none.
   DescriptorErrorCovariance descriptor_errors;
   // What the design's materials stand on, its least calibrated one's (mechanics::Material::basis:
   // "fitted", "datasheet", "estimate"; "" when the table does not say).
