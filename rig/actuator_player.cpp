@@ -39,4 +39,11 @@ std::optional<playback::StreamInfo> ActuatorPlayer::stream_info() const {
   return output_->stream_info();
 }
 
+std::optional<playback::OutputStatus> ActuatorPlayer::output_status() const {
+  if (!output_) return std::nullopt;
+  return output_->status();
+}
+
+std::string ActuatorPlayer::last_problem() const { return output_ ? output_->last_problem() : std::string(); }
+
 }  // namespace nibrig::rig

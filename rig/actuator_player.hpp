@@ -54,6 +54,10 @@ class ActuatorPlayer {
   const std::optional<playback::InverseFilter>& inverse_filter() const noexcept { return filter_; }
   // Of the device while playing; nullopt otherwise.
   std::optional<playback::StreamInfo> stream_info() const;
+  // The stream's state while it plays (lost: the device went away and is looked for again), and
+  // why it was last lost; nullopt and empty while stopped. Any thread that also calls play().
+  std::optional<playback::OutputStatus> output_status() const;
+  std::string last_problem() const;
   // From each frame's arrival to the audio block that applied it, over everything followed so far.
   FollowLatency latency() const { return follower_->latency(); }
 

@@ -60,7 +60,7 @@ class RigActuatorSwitch {
 
   void apply() {
     const bool wanted = wanted_->load();
-    if (wanted == asked_) return;
+    if (wanted == asked_) return follow_stream();
     asked_ = wanted;
     if (!wanted) {
       if (player_) player_->stop();
@@ -70,9 +70,8 @@ class RigActuatorSwitch {
     } else {
       try {
         player_->play();
-        const auto info = *player_->stream_info();
-        say(true, "playing " + player_->sound_name() + " on " + info.api + " '" + info.device + "' channel " +
-                      std::to_string(player_->device().output_channel));
+        lost_ = false;
+        say_playing();
       } catch (const std::exception& e) {
         say(false, e.what());
       }
@@ -80,6 +79,23 @@ class RigActuatorSwitch {
   }
 
  private:
+  // The player's own stream: a device lost while it plays (a JACK server gone) is said, and said
+  // again when the stream is back.
+  void follow_stream() {
+    if (!asked_ || !player_ || !player_->playing()) return;
+    const bool lost = player_->output_status() == playback::OutputStatus::lost;
+    if (lost == lost_) return;
+    lost_ = lost;
+    if (lost)
+      say(false, "the simulation is not heard: the device is lost (" + player_->last_problem() + ")");
+    else
+      say_playing();
+  }
+  void say_playing() {
+    const auto info = *player_->stream_info();
+    say(true, "playing " + player_->sound_name() + " on " + info.api + " '" + info.device + "' channel " +
+                  std::to_string(player_->device().output_channel));
+  }
   void say(bool playing, std::string state) {
     std::lock_guard lock(feed_->mutex);
     feed_->actuator_playing = playing;
@@ -90,6 +106,7 @@ class RigActuatorSwitch {
   std::shared_ptr<std::atomic<bool>> wanted_;
   std::shared_ptr<RigFeed> feed_;
   bool asked_ = false;
+  bool lost_ = false;
 };
 
 rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& catalog,
@@ -402,11 +419,6 @@ rig::RigRequest rig_request_of(const RigChoice& c) {
 std::string RigView::actuator_line(bool* heard) const {
   if (heard) *heard = false;
   if (actuator_state_.empty()) return {};
-  // The player hides its stream's state (rig::ActuatorPlayer has no status()); it plays on the
-  // panel's device, whose loss the panel's own stream sees.
-  const auto& audition = audio_ ? &audio_->audition() : nullptr;
-  if (actuator_playing_ && audition && audition->output_status() == playback::OutputStatus::lost)
-    return "the simulation is not heard: the device is lost (" + audition->last_problem() + ")";
   if (heard) *heard = actuator_playing_;
   return actuator_state_;
 }

@@ -82,9 +82,9 @@ class RigView {
   // Whether the run's simulation plays on the actuator now, and what it plays or why it does not.
   bool actuator_playing() const { return actuator_playing_; }
   const std::string& actuator_state() const { return actuator_state_; }
-  // What a person is told of the actuator, for this view and the status line: actuator_state(),
-  // unless the device the panel plays on is lost (a dead JACK server), when nothing is heard
-  // whatever the player was told. Empty when the simulation is not asked to play. `heard` says which.
+  // What a person is told of the actuator, for this view and the status line: what the player's
+  // own stream does (playing, or not heard while its device is lost: a dead JACK server). Empty when
+  // the simulation is not asked to play. `heard` says which.
   std::string actuator_line(bool* heard = nullptr) const;
   // For tests: the waterfalls (null before the first rows) and the last table.
   const Waterfall* measured() const { return measured_.get(); }
