@@ -147,6 +147,13 @@ case "$job" in
     # The command alone: the panel is `./setup.sh panel`'s.
     targets=nibrig configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF \
       -DNIBRIG_LEAK_CHECK=OFF -DNIBRIG_BUILD_PANEL=OFF
+    # A nibrig-demo/ without the list of what a demo wrote there (an older nibrig's, or a folder of
+    # one's own) cannot be replaced safely: it is kept under another name, and the demo writes anew.
+    if [ -d nibrig-demo ] && [ ! -e nibrig-demo/.nibrig-files ] && [ -n "$(ls -A nibrig-demo)" ]; then
+      kept="nibrig-demo.kept-$(date +%Y%m%d-%H%M%S)"
+      mv nibrig-demo "$kept"
+      echo "setup.sh: nibrig-demo/ holds no list of what a demo wrote there (an older nibrig's?): kept as $kept/"
+    fi
     ./build/release/ui/nibrig demo -o nibrig-demo
     stage_done "running the demo"
     ;;
