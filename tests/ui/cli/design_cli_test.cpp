@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -403,6 +404,32 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
     EXPECT_GT(s["cost"].get<double>(), 0.0) << s;  // each material alone lies elsewhere than the mix
     EXPECT_FALSE(s.contains("to_target")) << s;
   }
+
+  // On a printer that cannot mix, the mix is refused and the single materials it has are offered
+  // with their distance from the design: a PolyJet profile of the lab's without digital materials.
+  std::string profile = [] {
+    std::ifstream in(nibrig::test::assets_dir() / "printers" / "stratasys-objet260-connex.json");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }();
+  profile.replace(profile.find("\"mixes_materials\": true"), 23, "\"mixes_materials\": false");
+  std::ofstream(out / "no-mix.json") << profile;
+  std::vector<std::string> on_printer = exported_alone;
+  on_printer[3] = (out / "no_mix" / "stylus.3mf").string();
+  on_printer.insert(on_printer.end(), {"--printer", (out / "no-mix.json").string()});
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const int refused_code = run_cli(on_printer);
+  ::testing::internal::GetCapturedStdout();
+  const std::string refused_text = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(refused_code, 1) << refused_text;
+  EXPECT_NE(refused_text.find("cannot mix materials"), std::string::npos) << refused_text;
+  for (const auto& s : alone_recipe["substitutes"]) {  // the same draws: the same distances, as printed
+    char offered[256];
+    std::snprintf(offered, sizeof offered, "%s (%.3f ± %.3f from the design in the space)",
+                  s["design"].get<std::string>().c_str(), s["cost"].get<double>(), s["cost_sd"].get<double>());
+    EXPECT_NE(refused_text.find(offered), std::string::npos) << offered << "\n" << refused_text;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out / "no_mix" / "stylus.3mf"));
 }
 
 }  // namespace

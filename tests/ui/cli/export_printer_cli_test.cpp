@@ -240,6 +240,20 @@ TEST(ExportPrinterCli, ThePapersPolyJetTakesTheMixAndOthersRefuseWhatTheyCannotM
   EXPECT_EQ(unknown, 2) << "a usage error";
   EXPECT_NE(errors.find("--printer"), std::string::npos) << errors;
   EXPECT_NE(errors.find("prusa-mk3s"), std::string::npos) << "the bundled names are listed: " << errors;
+
+  // design takes the printer of its --export, and a wrong one is refused before any search.
+  const std::string any_file = (nibrig::test::assets_dir() / "printers" / "prusa-mk3s.json").string();
+  for (const auto& [extra, named] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--printer", "prusa-mk3s"}, "give --export too"},
+           {{"--printer", "ultimaker", "--export", (out / "design").string()}, "no printer profile 'ultimaker'"}}) {
+    std::vector<std::string> args{"design", "--target", "cryon/office", "--surface", "glass", "--space", any_file};
+    args.insert(args.end(), extra.begin(), extra.end());
+    ::testing::internal::CaptureStderr();
+    const int design_code = test::run_cli(args);
+    const std::string design_errors = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(design_code, 2) << design_errors;
+    EXPECT_NE(design_errors.find(named), std::string::npos) << design_errors;
+  }
 }
 
 }  // namespace
