@@ -59,7 +59,7 @@ struct SurfaceCalibrateOptions {
   CalibrationOutput out;
 };
 
-void add_output_options(CLI::App* cmd, CalibrationOutput& o) {
+void add_calibration_output_options(CLI::App* cmd, CalibrationOutput& o) {
   cmd->add_option("-o,--output", o.output, "Write the calibrated forcing model to this file")
       ->check(file_to_write());
   cmd->add_option("--save", o.save,
@@ -68,7 +68,7 @@ void add_output_options(CLI::App* cmd, CalibrationOutput& o) {
   cmd->add_flag("--replace", o.replace, "With --save: write over a model stored under that name");
 }
 
-void write_outputs(const forcing::ForcingModel& model, const CalibrationOutput& o) {
+void write_calibration_outputs(const forcing::ForcingModel& model, const CalibrationOutput& o) {
   if (!o.output.empty()) {
     ensure_folder(o.output.parent_path());
     forcing::write_forcing_model(o.output, model);
@@ -81,7 +81,7 @@ void write_outputs(const forcing::ForcingModel& model, const CalibrationOutput& 
 }
 
 // The measurement's repeatability from the catalog's prints recorded twice, when it has any.
-std::optional<forcing::Repeatability> catalog_repeatability(const ForcingInputOptions& inputs) {
+std::optional<forcing::Repeatability> calibration_repeatability(const ForcingInputOptions& inputs) {
   const auto catalog = model::io::read_catalog(
       model::io::or_default(inputs.catalog, model::io::default_catalog));
   try {
@@ -105,7 +105,7 @@ std::string versus_repeatability(double db, const std::optional<forcing::Repeata
                      r->rms_db);
 }
 
-std::vector<double> metres(const std::vector<double>& mm) {
+std::vector<double> calibration_metres(const std::vector<double>& mm) {
   std::vector<double> out;
   for (double d : mm) out.push_back(d * 1e-3);
   return out;
@@ -113,14 +113,14 @@ std::vector<double> metres(const std::vector<double>& mm) {
 
 constexpr int kCalibrationLabelWidth = 30;
 
-std::string curve_rows(const forcing::MaterialCalibration& c) {
+std::string calibrated_curve_rows(const forcing::MaterialCalibration& c) {
   return knot_table_header("gain (dB) at Hz", c.model.knot_frequencies_hz,
                            kCalibrationLabelWidth) +
          knot_table_rows(c.material + " calibrated", c.log_gain, c.log_gain_se,
                          kCalibrationLabelWidth);
 }
 
-std::string uncertainty_note(const forcing::MaterialCalibration& c) {
+std::string calibration_uncertainty_note(const forcing::MaterialCalibration& c) {
   return fmt::format(
       "SE: cluster-robust over {} exemplars ({} prints × surfaces; t with {} degrees of "
       "freedom), the surface forcing and tip curves held\n",
@@ -129,11 +129,11 @@ std::string uncertainty_note(const forcing::MaterialCalibration& c) {
 
 // The check: the catalog's material taken as new, its other prints predicted.
 void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& inputs) {
-  const auto repeatability = catalog_repeatability(o.inputs);
+  const auto repeatability = calibration_repeatability(o.inputs);
   const auto start = std::chrono::steady_clock::now();
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   const forcing::MaterialCalibrationCheck check = forcing::check_material_calibration(
-      inputs.exemplars, o.material, metres(o.tips_mm), {}, &threshold);
+      inputs.exemplars, o.material, calibration_metres(o.tips_mm), {}, &threshold);
   const auto& c = check.calibration;
   std::string tips;
   for (double d : o.tips_mm) tips += (tips.empty() ? "" : ", ") + fmt::format("{:g} mm", d);
@@ -167,23 +167,23 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
     if (e.material != o.material && e.material.find(o.material) != std::string::npos) ++mixes;
   std::cout << fmt::format("prints of a mix containing {} among the exemplars: {}\n", o.material,
                            mixes);
-  std::cout << curve_rows(c)
+  std::cout << calibrated_curve_rows(c)
             << knot_table_rows(o.material + " (fit of everything)", check.full_fit_log_gain, {},
                                kCalibrationLabelWidth)
-            << uncertainty_note(c);
-  write_outputs(c.model, o.out);
+            << calibration_uncertainty_note(c);
+  write_calibration_outputs(c.model, o.out);
 }
 
 // A lab's calibration against a model it has: the prints of the material at the tips asked for.
 void run_material_calibration(const MaterialCalibrateOptions& o, const std::filesystem::path& file,
                               const forcing::ForcingModel& model, const ForcingInputs& inputs) {
-  const auto tips = metres(o.tips_mm);
+  const auto tips = calibration_metres(o.tips_mm);
   const auto prints = forcing::prints_of_material(inputs.exemplars, o.material, tips);
   const forcing::MaterialCalibration c = forcing::calibrate_material(model, prints, o.material);
   std::cout << fmt::format(
       "{} calibrated against {} from {} prints ({} exemplars): residual {:.2f} dB RMS\n",
       o.material, file.string(), c.prints, c.exemplars, c.residual_rms_db);
-  const auto repeatability = catalog_repeatability(o.inputs);
+  const auto repeatability = calibration_repeatability(o.inputs);
   std::cout << repeatability_line(repeatability);
   for (const auto& p : c.print_fits)
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (in sample)\n", p.tool, p.surface, p.rms_db);
@@ -196,12 +196,12 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
   for (const auto& p : forcing::prediction_errors(c.model, others))
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (predicted){}\n", p.tool, p.surface,
                              p.rms_db, versus_repeatability(p.rms_db, repeatability));
-  std::cout << curve_rows(c) << uncertainty_note(c);
-  write_outputs(c.model, o.out);
+  std::cout << calibrated_curve_rows(c) << calibration_uncertainty_note(c);
+  write_calibration_outputs(c.model, o.out);
 }
 
 // A model named but not there, or a name stored already, fail before the designs are simulated.
-std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> model_first(
+std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> calibration_model_first(
     const std::string& forcing_model, const CalibrationOutput& out) {
   if (!out.save.empty()) forcing::check_can_save(out.save, out.replace);
   if (forcing_model.empty()) return std::nullopt;
@@ -210,7 +210,7 @@ std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> model_fir
 }
 
 void run_calibrate_material(const MaterialCalibrateOptions& o) {
-  const auto against = model_first(o.forcing_model, o.out);
+  const auto against = calibration_model_first(o.forcing_model, o.out);
   const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   if (against)
@@ -221,7 +221,7 @@ void run_calibrate_material(const MaterialCalibrateOptions& o) {
 
 // The study: the catalog's surface taken as new, calibrated from k of its tools for every k.
 void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& inputs) {
-  const auto repeatability = catalog_repeatability(o.inputs);
+  const auto repeatability = calibration_repeatability(o.inputs);
   const auto start = std::chrono::steady_clock::now();
   const forcing::SurfaceStudy study =
       forcing::study_surface_calibration(inputs.exemplars, o.surface, o.subsets);
@@ -276,7 +276,7 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
                                                        &threshold);
     std::cout << fmt::format("written: {} calibrated from {} tools, SE of F {:.2f} dB RMS\n",
                              o.surface, c.tools.size(), c.rms_se_db);
-    write_outputs(c.model, o.out);
+    write_calibration_outputs(c.model, o.out);
   }
 }
 
@@ -284,7 +284,7 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesy
                              const forcing::ForcingModel& model, const ForcingInputs& inputs) {
   const auto tools = forcing::tools_on_surface(inputs.exemplars, o.surface, o.tools);
   const forcing::SurfaceCalibration c = forcing::calibrate_surface(model, tools, o.surface);
-  const auto repeatability = catalog_repeatability(o.inputs);
+  const auto repeatability = calibration_repeatability(o.inputs);
   std::cout << repeatability_line(repeatability);
   std::cout << fmt::format("{} calibrated against {} from {} tools: residual {:.2f} dB RMS, ",
                            o.surface, file.string(), c.tools.size(), c.residual_rms_db)
@@ -294,11 +294,11 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesy
                                   versus_repeatability(c.rms_se_db, repeatability)));
   for (const auto& t : c.tool_fits)
     std::cout << fmt::format("  {:<12}{:>8.2f} dB (in sample)\n", t.tool, t.rms_db);
-  write_outputs(c.model, o.out);
+  write_calibration_outputs(c.model, o.out);
 }
 
 void run_calibrate_surface(const SurfaceCalibrateOptions& o) {
-  const auto against = model_first(o.forcing_model, o.out);
+  const auto against = calibration_model_first(o.forcing_model, o.out);
   const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
   std::cout << describe_inputs(inputs);
   if (against)
@@ -331,7 +331,7 @@ void add_forcing_calibrate_commands(CLI::App* forcing_cmd,
   material->add_option("--forcing", m->forcing_model,
                        "Forcing model to calibrate against (a file or a stored name); default: "
                        "the check on the catalog");
-  add_output_options(material, m->out);
+  add_calibration_output_options(material, m->out);
   material->callback([m, global] {
     configure_logging(global->verbosity);
     run_calibrate_material(*m);
@@ -357,7 +357,7 @@ void add_forcing_calibrate_commands(CLI::App* forcing_cmd,
                       "The study's most sets of k tools tried per k (all when fewer)")
       ->capture_default_str()
       ->check(whole_in_range(1, 100000, "a number of subsets"));
-  add_output_options(surface, s->out);
+  add_calibration_output_options(surface, s->out);
   surface->callback([s, global] {
     configure_logging(global->verbosity);
     run_calibrate_surface(*s);

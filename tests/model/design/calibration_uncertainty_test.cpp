@@ -26,7 +26,7 @@ const measure::ThresholdCurve& calibration_threshold() {
 
 DesignPoint half_dm85() { return {{{"DM85", 0.5}, {"vero", 0.5}}, 0.002}; }
 
-std::size_t at(const std::vector<std::string>& names, const std::string& name) {
+std::size_t descriptor_index(const std::vector<std::string>& names, const std::string& name) {
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
@@ -58,14 +58,14 @@ TEST(CalibrationUncertainty, AnUncertainSurfaceMovesEveryDescriptorByItsScale) {
   // shift linear in the step, up to round-off.
   const double shift = s / std::numbers::ln10;
   const std::string mean = space::paper_descriptor_names(2).back();
-  EXPECT_NEAR(c(at(names, mean), at(names, mean)), shift * shift, 1e-9);
+  EXPECT_NEAR(c(descriptor_index(names, mean), descriptor_index(names, mean)), shift * shift, 1e-9);
   const auto bands = space::paper_descriptor_names(4);  // μ and three band energies
   for (std::size_t j = 1; j < bands.size(); ++j) {
-    EXPECT_NEAR(c(at(names, bands[j]), at(names, bands[j])), 4 * shift * shift, 1e-9) << bands[j];
-    EXPECT_NEAR(c(at(names, bands[j]), at(names, mean)), 2 * shift * shift, 1e-9) << bands[j];
+    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, bands[j])), 4 * shift * shift, 1e-9) << bands[j];
+    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, mean)), 2 * shift * shift, 1e-9) << bands[j];
   }
   const std::string mu = space::paper_descriptor_names(1).front();
-  EXPECT_EQ(c.row(at(names, mu)).norm(), 0.0);
+  EXPECT_EQ(c.row(descriptor_index(names, mu)).norm(), 0.0);
 }
 
 TEST(CalibrationUncertainty, AnUncertainKnotMovesTheDescriptorsByItsShare) {
@@ -78,8 +78,8 @@ TEST(CalibrationUncertainty, AnUncertainKnotMovesTheDescriptorsByItsShare) {
   const auto variance = [&](const DesignPoint& p) {
     const auto spectrum = predict_spectrum(model, p, "office", kResponse);
     return calibration_descriptor_covariance(model, p, "office", spectrum,
-                                             calibration_threshold(), names)(at(names, mean),
-                                                                             at(names, mean));
+                                             calibration_threshold(), names)(descriptor_index(names, mean),
+                                                                             descriptor_index(names, mean));
   };
   const double half = variance(half_dm85());
   const double whole = variance({{{"DM85", 1.0}}, 0.002});
@@ -110,7 +110,7 @@ TEST(CalibrationUncertainty, APredictedToolCarriesItBesideItsOwnError) {
   const Eigen::MatrixXd added = calibration_descriptor_covariance(
       model, half_dm85(), "office", tool.spectrum, calibration_threshold(), own.names);
   const std::string mean = space::paper_descriptor_names(2).back();
-  const std::size_t m = at(own.names, mean);
+  const std::size_t m = descriptor_index(own.names, mean);
   EXPECT_NEAR(tool.descriptor_errors.covariance(m, m), 1e-4 + added(m, m), 1e-15);
   EXPECT_GT(added(m, m), 0.0);
   // Without a setup error the calibration's alone is carried.

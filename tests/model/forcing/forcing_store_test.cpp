@@ -24,7 +24,7 @@ class ForcingStore : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-ForcingModel small_model(const std::string& note) {
+ForcingModel stored_test_model(const std::string& note) {
   ForcingModel model = fit_forcing_model(test::make_synthetic_truth(5).exemplars);
   model.notes = {note};
   return model;
@@ -32,29 +32,29 @@ ForcingModel small_model(const std::string& note) {
 
 TEST_F(ForcingStore, ASavedModelIsFoundByNameAndNotWrittenOver) {
   EXPECT_EQ(forcing_store_folder(), dir_);
-  const auto file = save_forcing_model("lab PLA", small_model("first"));
+  const auto file = save_forcing_model("lab PLA", stored_test_model("first"));
   EXPECT_EQ(file, dir_ / "lab_PLA.json");  // the name made safe for a file name
   EXPECT_EQ(find_forcing_model("lab PLA"), file);
   EXPECT_EQ(read_forcing_model(find_forcing_model("lab PLA")).notes,
             std::vector<std::string>{"first"});
   // A file is a file, whatever the store holds.
   const auto other = nibrig::test::scratch_dir("forcing_store_file") / "mine.json";
-  write_forcing_model(other, small_model("file"));
+  write_forcing_model(other, stored_test_model("file"));
   EXPECT_EQ(find_forcing_model(other.string()), other);
 
   try {
-    save_forcing_model("lab PLA", small_model("second"));
+    save_forcing_model("lab PLA", stored_test_model("second"));
     ADD_FAILURE() << "a stored model was written over";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("stored already"), std::string::npos) << e.what();
   }
   EXPECT_EQ(read_forcing_model(file).notes, std::vector<std::string>{"first"});
-  save_forcing_model("lab PLA", small_model("second"), true);
+  save_forcing_model("lab PLA", stored_test_model("second"), true);
   EXPECT_EQ(read_forcing_model(file).notes, std::vector<std::string>{"second"});
 }
 
 TEST_F(ForcingStore, AnUnknownNameIsRefusedWithWhatIsStored) {
-  save_forcing_model("resin", small_model("r"));
+  save_forcing_model("resin", stored_test_model("r"));
   try {
     find_forcing_model("pla");
     ADD_FAILURE() << "an unknown name was found";

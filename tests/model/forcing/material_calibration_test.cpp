@@ -16,7 +16,7 @@ namespace nibrig::model::forcing {
 namespace {
 
 // The 1 mm and 4 mm prints of a material with curve `knots`, on every surface of the model.
-std::vector<ForcingExemplar> lab_prints(const test::LabTruth& truth, const std::string& material,
+std::vector<ForcingExemplar> hidden_material_prints(const test::LabTruth& truth, const std::string& material,
                                         const std::vector<double>& knots, unsigned seed) {
   std::mt19937 rng(seed);
   std::vector<ForcingExemplar> prints;
@@ -27,7 +27,7 @@ std::vector<ForcingExemplar> lab_prints(const test::LabTruth& truth, const std::
   return prints;
 }
 
-std::vector<double> hidden_curve(std::size_t knots, unsigned seed) {
+std::vector<double> hidden_material_curve(std::size_t knots, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 0.5);
   std::vector<double> out;
@@ -38,8 +38,8 @@ std::vector<double> hidden_curve(std::size_t knots, unsigned seed) {
 TEST(MaterialCalibration, NoiselessPrintsGiveTheCurveExactly) {
   test::LabTruth truth = test::make_lab_truth(3);
   truth.noise_log = 0.0;
-  const auto hidden = hidden_curve(truth.model.knot_frequencies_hz.size(), 4);
-  const auto prints = lab_prints(truth, "pla", hidden, 5);
+  const auto hidden = hidden_material_curve(truth.model.knot_frequencies_hz.size(), 4);
+  const auto prints = hidden_material_prints(truth, "pla", hidden, 5);
   const MaterialCalibration c = calibrate_material(truth.model, prints, "pla");
   ASSERT_EQ(c.log_gain.size(), hidden.size());
   // Linear least squares on exact data: round-off only.
@@ -76,8 +76,8 @@ TEST(MaterialCalibration, TheHiddenCurveLiesWithinTheReportedUncertainty) {
   for (int draw = 0; draw < draws; ++draw) {
     const test::LabTruth truth = test::make_lab_truth(100 + draw);
     repeatability = truth.repeatability_db;
-    const auto hidden = hidden_curve(truth.model.knot_frequencies_hz.size(), 200 + draw);
-    const auto prints = lab_prints(truth, "resin", hidden, 300 + draw);
+    const auto hidden = hidden_material_curve(truth.model.knot_frequencies_hz.size(), 200 + draw);
+    const auto prints = hidden_material_prints(truth, "resin", hidden, 300 + draw);
     const MaterialCalibration c = calibrate_material(truth.model, prints, "resin");
     const boost::math::students_t t(static_cast<double>(c.degrees_of_freedom));
     const double t95 = boost::math::quantile(boost::math::complement(t, 0.025));
@@ -106,8 +106,8 @@ TEST(MaterialCalibration, TheHiddenCurveLiesWithinTheReportedUncertainty) {
 
 TEST(MaterialCalibration, PrintsThatCannotCalibrateAreRefusedByName) {
   const test::LabTruth truth = test::make_lab_truth(7);
-  const auto hidden = hidden_curve(truth.model.knot_frequencies_hz.size(), 8);
-  auto prints = lab_prints(truth, "petg", hidden, 9);
+  const auto hidden = hidden_material_curve(truth.model.knot_frequencies_hz.size(), 8);
+  auto prints = hidden_material_prints(truth, "petg", hidden, 9);
   const auto refused = [&](const std::vector<ForcingExemplar>& p, const std::string& material,
                            const std::string& expected) {
     try {

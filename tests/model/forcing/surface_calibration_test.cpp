@@ -14,7 +14,7 @@ namespace nibrig::model::forcing {
 namespace {
 
 // A hidden forcing on a new surface: each cell's ln F drawn around the model's stone.
-std::vector<std::vector<double>> hidden_forcing(const ForcingModel& model, unsigned seed) {
+std::vector<std::vector<double>> hidden_surface_forcing(const ForcingModel& model, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 0.5);
   auto forcing = model.surface_forcing.at("stone");
@@ -24,7 +24,7 @@ std::vector<std::vector<double>> hidden_forcing(const ForcingModel& model, unsig
 }
 
 // The known tools (material × tip) measured on the new surface.
-std::vector<ForcingExemplar> reference_tools(const test::LabTruth& truth,
+std::vector<ForcingExemplar> surface_reference_tools(const test::LabTruth& truth,
                                              const std::vector<std::vector<double>>& forcing,
                                              std::size_t count, unsigned seed) {
   const std::vector<std::pair<std::string, double>> tools{
@@ -43,8 +43,8 @@ std::vector<ForcingExemplar> reference_tools(const test::LabTruth& truth,
 TEST(SurfaceCalibration, NoiselessToolsGiveTheForcingExactly) {
   test::LabTruth truth = test::make_lab_truth(11);
   truth.noise_log = 0.0;
-  const auto hidden = hidden_forcing(truth.model, 12);
-  const auto tools = reference_tools(truth, hidden, 3, 13);
+  const auto hidden = hidden_surface_forcing(truth.model, 12);
+  const auto tools = surface_reference_tools(truth, hidden, 3, 13);
   const SurfaceCalibration c = calibrate_surface(truth.model, tools, "protector2");
   const auto& forcing = c.model.surface_forcing.at("protector2");
   for (std::size_t s = 0; s < hidden.size(); ++s)
@@ -68,8 +68,8 @@ TEST(SurfaceCalibration, TheHiddenForcingLiesWithinTheReportedUncertainty) {
   const int draws = 20;
   for (int draw = 0; draw < draws; ++draw) {
     const test::LabTruth truth = test::make_lab_truth(400 + draw);
-    const auto hidden = hidden_forcing(truth.model, 500 + draw);
-    const auto tools = reference_tools(truth, hidden, 3, 600 + draw);
+    const auto hidden = hidden_surface_forcing(truth.model, 500 + draw);
+    const auto tools = surface_reference_tools(truth, hidden, 3, 600 + draw);
     const SurfaceCalibration c = calibrate_surface(truth.model, tools, "protector2");
     for (std::size_t s = 0; s < hidden.size(); ++s)
       for (std::size_t j = 0; j < hidden[s].size(); ++j) {
@@ -91,9 +91,9 @@ TEST(SurfaceCalibration, TheHiddenForcingLiesWithinTheReportedUncertainty) {
 
 TEST(SurfaceCalibration, OneToolGivesTheForcingButNoUncertainty) {
   const test::LabTruth truth = test::make_lab_truth(21);
-  const auto hidden = hidden_forcing(truth.model, 22);
+  const auto hidden = hidden_surface_forcing(truth.model, 22);
   const SurfaceCalibration c =
-      calibrate_surface(truth.model, reference_tools(truth, hidden, 1, 23), "protector2");
+      calibrate_surface(truth.model, surface_reference_tools(truth, hidden, 1, 23), "protector2");
   EXPECT_TRUE(c.log_forcing_se.empty());
   EXPECT_EQ(c.rms_se_db, 0.0);
   EXPECT_EQ(c.model.surface_log_forcing_se.count("protector2"), 0u);
@@ -103,8 +103,8 @@ TEST(SurfaceCalibration, OneToolGivesTheForcingButNoUncertainty) {
 
 TEST(SurfaceCalibration, ToolsThatCannotCalibrateAreRefusedByName) {
   const test::LabTruth truth = test::make_lab_truth(31);
-  const auto hidden = hidden_forcing(truth.model, 32);
-  const auto tools = reference_tools(truth, hidden, 3, 33);
+  const auto hidden = hidden_surface_forcing(truth.model, 32);
+  const auto tools = surface_reference_tools(truth, hidden, 3, 33);
   const auto refused = [&](const std::vector<ForcingExemplar>& t, const std::string& surface,
                            const std::string& expected) {
     try {
