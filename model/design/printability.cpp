@@ -119,6 +119,21 @@ std::vector<std::string> print_refusals(const io::PrinterProfile& printer, const
   return reasons;
 }
 
+std::string unprintable_line(const io::PrinterProfile& printer, const DesignPoint& a, const DesignPoint& b) {
+  const auto has_all = [&](const DesignPoint& p) {
+    return std::all_of(p.mix.begin(), p.mix.end(), [&](const MaterialShare& m) { return printer_has(printer, m.material); });
+  };
+  if (has_all(a) || has_all(b)) return "";  // an end at least; between them only a mixing printer
+  std::vector<std::string> lacking;
+  for (const auto* p : {&a, &b})
+    for (const auto& m : p->mix)
+      if (!printer_has(printer, m.material) &&
+          std::find(lacking.begin(), lacking.end(), m.material) == lacking.end())
+        lacking.push_back(m.material);
+  return fmt::format("{} has neither end of the line between {} and {}: it lacks {} (it prints {})", printer.name,
+                     label(a), label(b), printability_list(lacking), printability_list(printer.materials));
+}
+
 void check_printable(const io::PrinterProfile& printer, const StylusPrint& print) {
   const auto reasons = print_refusals(printer, print);
   if (reasons.empty()) return;

@@ -26,6 +26,11 @@ std::vector<std::string> print_refusals(const io::PrinterProfile& printer, const
 // Throws PrintRefused joining print_refusals, naming the printer, when there is any.
 void check_printable(const io::PrinterProfile& printer, const StylusPrint& print);
 
+// Why no design on the line from `a` to `b` (the line a search walks) can be printed by `printer`
+// for its materials, "" when one can: an end all of whose materials it has, or, when it mixes,
+// every material of both. Lets a search be refused before it runs, not at its export.
+std::string unprintable_line(const io::PrinterProfile& printer, const DesignPoint& a, const DesignPoint& b);
+
 // The narrowest tip `printer` makes: its nozzle (FDM), min_feature_pixels pixels (MSLA), its dot
 // pitch (PolyJet).
 double smallest_tip_m(const io::PrinterProfile& printer);

@@ -115,6 +115,9 @@ void run_design(const DesignOptions& o) {
     // A line no allowed design lies on is refused now, naming the constraint (and an allowed
     // material the line does not hold, as "--allow steel"), not after the forcing model is loaded.
     design::feasible_segment(*a, *b, constraints);
+    if (printer)  // its export would be refused: say so before the search
+      if (const std::string why = design::unprintable_line(*printer, *a, *b); !why.empty())
+        throw CLI::ValidationError("--printer", why);
   }
   const auto catalog_path =
       o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;

@@ -103,5 +103,14 @@ TEST(Printability, AMixOnAPrinterThatCannotMixOffersTheSubstitutesItHas) {
   EXPECT_EQ(why.find("teflon"), std::string::npos) << why;
 }
 
+TEST(Printability, ALineOfDesignsIsPrintableWhenAnEndIs) {
+  const auto mk3s = io::find_printer_profile("prusa-mk3s");
+  const auto connex = io::find_printer_profile("stratasys-objet260-connex");
+  const auto vero = parse_design_point("vero,tip=1mm"), dm85 = parse_design_point("DM85,tip=4mm");
+  EXPECT_THAT(unprintable_line(mk3s, vero, dm85), HasSubstr("it lacks vero, DM85 (it prints PLA, PETG, TPU-95A)"));
+  EXPECT_EQ(unprintable_line(connex, vero, dm85), "");
+  EXPECT_EQ(unprintable_line(mk3s, parse_design_point("PLA,tip=1mm"), dm85), "") << "the PLA end prints";
+}
+
 }  // namespace
 }  // namespace nibrig::model::design

@@ -255,7 +255,10 @@ TEST(ExportPrinterCli, ThePapersPolyJetTakesTheMixAndOthersRefuseWhatTheyCannotM
   const std::string any_file = (nibrig::test::assets_dir() / "printers" / "prusa-mk3s.json").string();
   for (const auto& [extra, named] : std::vector<std::pair<std::vector<std::string>, std::string>>{
            {{"--printer", "prusa-mk3s"}, "give --export too"},
-           {{"--printer", "ultimaker", "--export", (out / "design").string()}, "no printer profile 'ultimaker'"}}) {
+           {{"--printer", "ultimaker", "--export", (out / "design").string()}, "no printer profile 'ultimaker'"},
+           {{"--printer", "prusa-mk3s", "--export", (out / "design").string(), "--between", "vero,tip=1mm",
+             "DM85,tip=4mm"},
+            "prusa-mk3s has neither end of the line"}}) {
     std::vector<std::string> args{"design", "--target", "cryon/office", "--surface", "glass", "--space", any_file};
     args.insert(args.end(), extra.begin(), extra.end());
     ::testing::internal::CaptureStderr();
