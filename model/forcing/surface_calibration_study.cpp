@@ -8,44 +8,11 @@
 #include <stdexcept>
 
 #include "model/forcing/calibration_prints.hpp"
+#include "model/forcing/calibration_subsets.hpp"
 #include "model/forcing/leave_one_out.hpp"
 #include "model/forcing/surface_calibration.hpp"
 
 namespace nibrig::model::forcing {
-
-namespace {
-
-// Every k-subset of n as an index list when C(n, k) <= most; else `most` distinct ones at random.
-std::vector<std::vector<std::size_t>> study_subsets(std::size_t n, std::size_t k, std::size_t most,
-                                                    std::mt19937& rng) {
-  double count = 1.0;
-  for (std::size_t i = 0; i < k; ++i)
-    count = count * static_cast<double>(n - i) / static_cast<double>(i + 1);
-  std::vector<std::vector<std::size_t>> out;
-  if (count <= static_cast<double>(most)) {
-    std::vector<bool> chosen(n, false);
-    std::fill(chosen.begin(), chosen.begin() + static_cast<std::ptrdiff_t>(k), true);
-    do {  // prev_permutation over a k-true mask visits each subset once
-      std::vector<std::size_t> subset;
-      for (std::size_t i = 0; i < n; ++i)
-        if (chosen[i]) subset.push_back(i);
-      out.push_back(std::move(subset));
-    } while (std::prev_permutation(chosen.begin(), chosen.end()));
-    return out;
-  }
-  std::set<std::vector<std::size_t>> drawn;
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  while (drawn.size() < most) {
-    std::shuffle(order.begin(), order.end(), rng);
-    std::vector<std::size_t> subset(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
-    std::sort(subset.begin(), subset.end());
-    drawn.insert(std::move(subset));
-  }
-  return {drawn.begin(), drawn.end()};
-}
-
-}  // namespace
 
 std::optional<std::size_t> SurfaceStudy::fewest_tools_within(double db) const {
   for (const auto& step : steps)
@@ -81,8 +48,9 @@ SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplar
   std::vector<std::size_t> known;
   for (std::size_t e : on_surface) {
     const auto& x = exemplars[e];
-    const bool tip = std::any_of(without.tip_log_gain.begin(), without.tip_log_gain.end(),
-                                 [&](const auto& t) { return same_tip(t.first, x.tip_diameter_m); });
+    const bool tip =
+        std::any_of(without.tip_log_gain.begin(), without.tip_log_gain.end(),
+                    [&](const auto& t) { return same_tip(t.first, x.tip_diameter_m); });
     if (tip && without.material_log_gain.count(x.material)) known.push_back(e);
   }
   if (known.size() < 2)
@@ -117,7 +85,7 @@ SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplar
     std::vector<std::size_t> tool_count(n, 0);
     double total = 0.0;
     std::size_t total_count = 0;
-    for (const auto& subset : study_subsets(n, k, max_subsets, rng)) {
+    for (const auto& subset : calibration_subsets(n, k, max_subsets, rng)) {
       std::vector<ForcingExemplar> reference;
       for (std::size_t i : subset) reference.push_back(exemplars[known[i]]);
       const SurfaceCalibration calibration = calibrate_surface(without, reference, surface);
@@ -126,11 +94,11 @@ SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplar
       for (std::size_t i = 0; i < n; ++i) {
         if (std::binary_search(subset.begin(), subset.end(), i)) continue;
         const ForcingExemplar& x = exemplars[known[i]];
-        const double db = log_spectrum_error(calibration.model.predict(x.response_magnitude,
-                                                                       surface, x.tip_diameter_m,
-                                                                       x.material),
-                                             x.measured)
-                              .rms_db;
+        const double db =
+            log_spectrum_error(calibration.model.predict(x.response_magnitude, surface,
+                                                         x.tip_diameter_m, x.material),
+                               x.measured)
+                .rms_db;
         tool_sum[i] += db;
         ++tool_count[i];
         subset_sum += db;
@@ -146,9 +114,8 @@ SurfaceStudy study_surface_calibration(std::span<const ForcingExemplar> exemplar
     step.prediction_rms_db = total / static_cast<double>(total_count);
     step.se_rms_db /= static_cast<double>(step.subsets);
     for (std::size_t i = 0; i < n; ++i)
-      step.tool_rms_db.push_back(tool_count[i] > 0
-                                     ? tool_sum[i] / static_cast<double>(tool_count[i])
-                                     : std::nan(""));
+      step.tool_rms_db.push_back(
+          tool_count[i] > 0 ? tool_sum[i] / static_cast<double>(tool_count[i]) : std::nan(""));
     out.steps.push_back(std::move(step));
   }
   return out;

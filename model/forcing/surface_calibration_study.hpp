@@ -32,11 +32,11 @@ struct SurfaceStudyStep {
 
 struct SurfaceStudy {
   std::string surface;
-  std::vector<std::string> tools;        // measured on the surface, known to the model without it
-  std::vector<double> full_fit_rms_db;   // per tool: the model fitted on every exemplar
-  std::vector<double> full_loo_rms_db;   // per tool: the model fitted on every other exemplar
+  std::vector<std::string> tools;       // measured on the surface, known to the model without it
+  std::vector<double> full_fit_rms_db;  // per tool: the model fitted on every exemplar
+  std::vector<double> full_loo_rms_db;  // per tool: the model fitted on every other exemplar
   double mean_full_fit_db = 0.0, mean_full_loo_db = 0.0;
-  std::vector<SurfaceStudyStep> steps;   // k = 1, 2, …, tools − 1
+  std::vector<SurfaceStudyStep> steps;  // k = 1, 2, …, tools − 1
   // The fewest reference tools whose held-out tools are predicted within `db` on the mean, if any.
   std::optional<std::size_t> fewest_tools_within(double db) const;
   // The fewest reference tools whose calibration's standard error (RMS over cells) is within `db`,

@@ -16,6 +16,7 @@
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/forcing_store.hpp"
 #include "model/forcing/material_calibration_check.hpp"
+#include "model/forcing/material_calibration_study.hpp"
 #include "model/forcing/measurement_repeatability.hpp"
 #include "model/forcing/surface_calibration.hpp"
 #include "model/forcing/surface_calibration_study.hpp"
@@ -64,7 +65,8 @@ void add_calibration_output_options(CLI::App* cmd, CalibrationOutput& o) {
       ->check(file_to_write());
   cmd->add_option("--save", o.save,
                   "Keep the calibrated model under this name in the user store, for --forcing NAME "
-                  "(" + forcing::forcing_store_folder().string() + ")");
+                  "(" +
+                      forcing::forcing_store_folder().string() + ")");
   cmd->add_flag("--replace", o.replace, "With --save: write over a model stored under that name");
 }
 
@@ -82,8 +84,8 @@ void write_calibration_outputs(const forcing::ForcingModel& model, const Calibra
 
 // The measurement's repeatability from the catalog's prints recorded twice, when it has any.
 std::optional<forcing::Repeatability> calibration_repeatability(const ForcingInputOptions& inputs) {
-  const auto catalog = model::io::read_catalog(
-      model::io::or_default(inputs.catalog, model::io::default_catalog));
+  const auto catalog =
+      model::io::read_catalog(model::io::or_default(inputs.catalog, model::io::default_catalog));
   try {
     return forcing::nail_pair_repeatability(catalog);
   } catch (const std::invalid_argument& e) {
@@ -114,8 +116,7 @@ std::vector<double> calibration_metres(const std::vector<double>& mm) {
 constexpr int kCalibrationLabelWidth = 30;
 
 std::string calibrated_curve_rows(const forcing::MaterialCalibration& c) {
-  return knot_table_header("gain (dB) at Hz", c.model.knot_frequencies_hz,
-                           kCalibrationLabelWidth) +
+  return knot_table_header("gain (dB) at Hz", c.model.knot_frequencies_hz, kCalibrationLabelWidth) +
          knot_table_rows(c.material + " calibrated", c.log_gain, c.log_gain_se,
                          kCalibrationLabelWidth);
 }
@@ -143,8 +144,7 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
       o.material, tips, c.exemplars, seconds_since(start));
   std::cout << repeatability_line(repeatability);
   std::cout << fmt::format("{:<12}{:<11}{:>11}{:>14}{:>10}{:>17}{:>9}\n", "tool", "surface",
-                           "calibrated", "uncalibrated", "full fit", "full fit w/o it",
-                           "SE (dB)");
+                           "calibrated", "uncalibrated", "full fit", "full fit w/o it", "SE (dB)");
   for (const bool calibration : {false, true}) {
     if (calibration) std::cout << "calibrated from (in sample):\n";
     for (const auto& p : check.prints)
@@ -171,6 +171,18 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
             << knot_table_rows(o.material + " (fit of everything)", check.full_fit_log_gain, {},
                                kCalibrationLabelWidth)
             << calibration_uncertainty_note(c);
+  if (check.predicted > 0) {
+    // What each surface the calibration prints are measured on buys.
+    const forcing::MaterialStudy study = forcing::study_material_calibration(
+        inputs.exemplars, o.material, calibration_metres(o.tips_mm));
+    std::cout << fmt::format(
+        "the same prints measured on fewer surfaces (of the {} with every tip; mean over the sets "
+        "of surfaces):\n{:>9}{:>11}{:>16}{:>15}\n",
+        study.surfaces.size(), "surfaces", "exemplars", "SE of m (dB)", "predicted");
+    for (const auto& step : study.steps)
+      std::cout << fmt::format("{:>9}{:>11}{:>16.2f}{:>15.2f}\n", step.surfaces, step.exemplars,
+                               step.se_rms_db, step.prediction_rms_db);
+  }
   write_calibration_outputs(c.model, o.out);
 }
 
@@ -186,7 +198,8 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
   const auto repeatability = calibration_repeatability(o.inputs);
   std::cout << repeatability_line(repeatability);
   for (const auto& p : c.print_fits)
-    std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (in sample)\n", p.tool, p.surface, p.rms_db);
+    std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (in sample)\n", p.tool, p.surface,
+                             p.rms_db);
   std::vector<forcing::ForcingExemplar> others;
   for (const auto& e : forcing::prints_of_material(inputs.exemplars, o.material))
     if (std::none_of(prints.begin(), prints.end(),
@@ -230,8 +243,8 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
       "tools, the others predicted; {:.2f} s\n",
       o.surface, study.tools.size(), seconds_since(start));
   std::cout << repeatability_line(repeatability);
-  std::cout << fmt::format("{:>6}{:>9}{:>16}{:>14}{:>16}\n", "tools", "subsets",
-                           "SE of F (dB)", "predicted", "worst subset");
+  std::cout << fmt::format("{:>6}{:>9}{:>16}{:>14}{:>16}\n", "tools", "subsets", "SE of F (dB)",
+                           "predicted", "worst subset");
   for (const auto& s : study.steps)
     std::cout << fmt::format("{:>6}{:>9}{:>16}{:>14.2f}{:>16.2f}\n", s.tools, s.subsets,
                              s.tools >= 2 ? fmt::format("{:.2f}", s.se_rms_db) : "-",
@@ -258,10 +271,11 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
   const std::size_t k = fewest.value_or(2);
   if (k <= study.steps.size()) {
     const auto& step = study.steps[k - 1];
-    std::cout << fmt::format("each tool predicted from {} others (mean over the subsets leaving it "
-                             "out):\n"
-                             "{:<12}{:>11}{:>10}{:>17}\n",
-                             k, "tool", "predicted", "full fit", "full fit w/o it");
+    std::cout << fmt::format(
+        "each tool predicted from {} others (mean over the subsets leaving it "
+        "out):\n"
+        "{:<12}{:>11}{:>10}{:>17}\n",
+        k, "tool", "predicted", "full fit", "full fit w/o it");
     for (std::size_t i = 0; i < study.tools.size(); ++i)
       std::cout << fmt::format("{:<12}{:>11.2f}{:>10.2f}{:>17.2f}\n", study.tools[i],
                                step.tool_rms_db[i], study.full_fit_rms_db[i],
@@ -272,8 +286,8 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
     // the model fitted without it.
     const auto threshold =
         model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-    const auto c = forcing::calibrate_held_out_surface(inputs.exemplars, o.surface, o.tools,
-                                                       &threshold);
+    const auto c =
+        forcing::calibrate_held_out_surface(inputs.exemplars, o.surface, o.tools, &threshold);
     std::cout << fmt::format("written: {} calibrated from {} tools, SE of F {:.2f} dB RMS\n",
                              o.surface, c.tools.size(), c.rms_se_db);
     write_calibration_outputs(c.model, o.out);
@@ -344,7 +358,8 @@ void add_forcing_calibrate_commands(CLI::App* forcing_cmd,
       "Fits the surface's forcing F(f, v), every tool's H, tip and material curves held, from the\n"
       "catalog's tools measured on it (--tools, default all), with per-cell standard errors. With\n"
       "--forcing against that model; without it, the study on the catalog: the surface taken out\n"
-      "of the fit and calibrated from k of its tools for every k, the others predicted, to say how\n"
+      "of the fit and calibrated from k of its tools for every k, the others predicted, to say "
+      "how\n"
       "many tools bring the uncertainty within the measurement's repeatability.");
   add_forcing_input_options(surface, s->inputs);
   surface->add_option("--surface", s->surface, "The catalog's surface to calibrate")->required();
@@ -353,8 +368,9 @@ void add_forcing_calibrate_commands(CLI::App* forcing_cmd,
   surface->add_option("--forcing", s->forcing_model,
                       "Forcing model to calibrate against (a file or a stored name); default: the "
                       "study on the catalog");
-  surface->add_option("--subsets", s->subsets,
-                      "The study's most sets of k tools tried per k (all when fewer)")
+  surface
+      ->add_option("--subsets", s->subsets,
+                   "The study's most sets of k tools tried per k (all when fewer)")
       ->capture_default_str()
       ->check(whole_in_range(1, 100000, "a number of subsets"));
   add_calibration_output_options(surface, s->out);
