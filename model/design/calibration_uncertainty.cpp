@@ -45,10 +45,10 @@ Eigen::VectorXd calibration_log_descriptors(const io::VelocitySpectrum& spectrum
 
 // The descriptors' change per unit of a log perturbation `delta` [speed][frequency], by a central
 // difference at a step small against the curvature of log10 of a sum of exponentials.
-Eigen::VectorXd calibration_sensitivity(const io::VelocitySpectrum& spectrum,
-                                        const measure::ThresholdCurve& threshold,
-                                        const std::vector<std::string>& names,
-                                        const std::function<double(std::size_t, std::size_t)>& delta) {
+Eigen::VectorXd calibration_sensitivity(
+    const io::VelocitySpectrum& spectrum, const measure::ThresholdCurve& threshold,
+    const std::vector<std::string>& names,
+    const std::function<double(std::size_t, std::size_t)>& delta) {
   constexpr double kStep = 1e-4;
   auto shifted = [&](double step) {
     io::VelocitySpectrum s = spectrum;

@@ -129,9 +129,8 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
       const auto n = static_cast<Eigen::Index>(errors.names.size());
       errors.covariance = Eigen::MatrixXd::Zero(n, n);
     }
-    errors.covariance += calibration_descriptor_covariance(*setup.model, point, surface,
-                                                           tool.spectrum, *setup.threshold,
-                                                           errors.names);
+    errors.covariance += calibration_descriptor_covariance(
+        *setup.model, point, surface, tool.spectrum, *setup.threshold, errors.names);
   }
   // The template's body and each material of the mix as printed (forcing/printed_tool_design).
   const auto body = setup.template_design.region_materials.find("body");

@@ -16,8 +16,9 @@ void check_print_grid(const ForcingModel& model, const ForcingExemplar& print,
   const std::string name = what + ": " + print_name(print);
   const auto& m = print.measured;
   if (m.frequencies_hz != model.frequencies_hz || m.speeds_m_s != model.speeds_m_s)
-    throw std::invalid_argument(name + ": its spectrum's frequencies or speeds differ from the "
-                                       "forcing model's (" +
+    throw std::invalid_argument(name +
+                                ": its spectrum's frequencies or speeds differ from the "
+                                "forcing model's (" +
                                 std::to_string(model.frequencies_hz.size()) + " frequencies, " +
                                 std::to_string(model.speeds_m_s.size()) + " speeds)");
   if (m.amplitude_m_s2.size() != m.speeds_m_s.size())
@@ -77,9 +78,8 @@ std::vector<ForcingExemplar> prints_of_material(std::span<const ForcingExemplar>
   std::vector<ForcingExemplar> out;
   for (const auto& e : exemplars)
     if (e.material == material &&
-        (tips_m.empty() || std::any_of(tips_m.begin(), tips_m.end(), [&](double t) {
-           return same_tip(t, e.tip_diameter_m);
-         })))
+        (tips_m.empty() || std::any_of(tips_m.begin(), tips_m.end(),
+                                       [&](double t) { return same_tip(t, e.tip_diameter_m); })))
       out.push_back(e);
   if (std::none_of(exemplars.begin(), exemplars.end(),
                    [&](const auto& e) { return e.material == material; }))
@@ -87,8 +87,8 @@ std::vector<ForcingExemplar> prints_of_material(std::span<const ForcingExemplar>
   for (double t : tips_m)
     if (std::none_of(out.begin(), out.end(),
                      [&](const auto& e) { return same_tip(t, e.tip_diameter_m); }))
-      throw std::invalid_argument("no print of material '" + material + "' has a " +
-                                  tip_label(t) + " tip");
+      throw std::invalid_argument("no print of material '" + material + "' has a " + tip_label(t) +
+                                  " tip");
   return out;
 }
 
@@ -114,12 +114,11 @@ std::vector<ExemplarFit> prediction_errors(const ForcingModel& model,
                                            std::span<const ForcingExemplar> exemplars) {
   std::vector<ExemplarFit> out;
   for (const auto& e : exemplars)
-    out.push_back(
-        {e.tool, e.surface,
-         log_spectrum_error(
-             model.predict(e.response_magnitude, e.surface, e.tip_diameter_m, e.material),
-             e.measured)
-             .rms_db});
+    out.push_back({e.tool, e.surface,
+                   log_spectrum_error(
+                       model.predict(e.response_magnitude, e.surface, e.tip_diameter_m, e.material),
+                       e.measured)
+                       .rms_db});
   return out;
 }
 

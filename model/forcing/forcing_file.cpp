@@ -137,7 +137,8 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
   out["surfaces"] = json::array();
   for (const auto& [id, forcing] : model.surface_forcing) {
     json entry = {{"id", id}, {"forcing_n", forcing}};
-    if (const auto se = model.surface_log_forcing_se.find(id); se != model.surface_log_forcing_se.end())
+    if (const auto se = model.surface_log_forcing_se.find(id);
+        se != model.surface_log_forcing_se.end())
       entry["log_forcing_se"] = se->second;
     out["surfaces"].push_back(entry);
   }
@@ -189,9 +190,8 @@ ForcingModel read_forcing_model(const std::filesystem::path& file) {
             "a second curve for material '" + name + "'");
     model.material_log_gain[name] = curve_at(materials[i], file, at, knots);
     if (materials[i].contains("log_gain_se"))
-      model.material_log_gain_se[name] = standard_errors_at(materials[i]["log_gain_se"], file,
-                                                            jf::member_path(at, "log_gain_se"),
-                                                            knots, "knot");
+      model.material_log_gain_se[name] = standard_errors_at(
+          materials[i]["log_gain_se"], file, jf::member_path(at, "log_gain_se"), knots, "knot");
   }
   // The gauge: the reference tip and material must be there, at gain 1.
   bool reference_tip = false;

@@ -38,10 +38,10 @@ std::vector<LogCells> material_targets(const ForcingModel& model,
     const auto& forcing = model.surface_forcing.at(p.surface);
     for (std::size_t s = 0; s < y.size(); ++s)
       for (std::size_t j = 0; j < y[s].size(); ++j)
-        y[s][j] -= forcing[s][j] > 0 ? std::log(forcing[s][j]) + hermite_value(
-                                                                     model.knot_frequencies_hz,
-                                                                     tip, model.frequencies_hz[j])
-                                     : std::numeric_limits<double>::quiet_NaN();
+        y[s][j] -= forcing[s][j] > 0
+                       ? std::log(forcing[s][j]) +
+                             hermite_value(model.knot_frequencies_hz, tip, model.frequencies_hz[j])
+                       : std::numeric_limits<double>::quiet_NaN();
     targets.push_back(std::move(y));
   }
   return targets;
@@ -55,8 +55,9 @@ MaterialCalibration calibrate_material(const ForcingModel& model,
   const std::string what = "calibrating material '" + material + "'";
   if (material.empty()) throw std::invalid_argument("calibrating a material: no name given");
   if (model.material_log_gain.count(material))
-    throw std::invalid_argument(what + ": the forcing model already has a curve for it (a "
-                                       "calibration adds a material under a new name)");
+    throw std::invalid_argument(what +
+                                ": the forcing model already has a curve for it (a "
+                                "calibration adds a material under a new name)");
   if (prints.size() < 2)
     throw std::invalid_argument(
         what + ": " + std::to_string(prints.size()) +

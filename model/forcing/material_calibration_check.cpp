@@ -24,10 +24,11 @@ double material_prediction_se_db(const ForcingModel& model, const ForcingExempla
 
 }  // namespace
 
-MaterialCalibrationCheck check_material_calibration(
-    std::span<const ForcingExemplar> exemplars, const std::string& material,
-    std::span<const double> calibration_tips_m, const ForcingFitOptions& options,
-    const measure::ThresholdCurve* threshold) {
+MaterialCalibrationCheck check_material_calibration(std::span<const ForcingExemplar> exemplars,
+                                                    const std::string& material,
+                                                    std::span<const double> calibration_tips_m,
+                                                    const ForcingFitOptions& options,
+                                                    const measure::ThresholdCurve* threshold) {
   const std::string what = "treating material '" + material + "' as new";
   if (material == options.reference_material)
     throw std::invalid_argument(what + ": it is the reference material, whose curve is the gauge");
@@ -76,11 +77,10 @@ MaterialCalibrationCheck check_material_calibration(
     p.surface = e.surface;
     p.tip_diameter_m = e.tip_diameter_m;
     p.calibration_print = is_calibration_tip(e.tip_diameter_m);
-    p.calibrated_rms_db =
-        log_spectrum_error(calibrated.predict(e.response_magnitude, e.surface, e.tip_diameter_m,
-                                              material),
-                           e.measured)
-            .rms_db;
+    p.calibrated_rms_db = log_spectrum_error(calibrated.predict(e.response_magnitude, e.surface,
+                                                                e.tip_diameter_m, material),
+                                             e.measured)
+                              .rms_db;
     p.uncalibrated_rms_db =
         log_spectrum_error(calibrated.predict(e.response_magnitude, e.surface, e.tip_diameter_m,
                                               calibrated.reference_material),

@@ -24,8 +24,8 @@ struct CalibratedPrintError {
   // The same model without calibrating: the material taken as the reference (m ≡ 1), the
   // prediction a lab has before any print. What the calibration must beat.
   double uncalibrated_rms_db = 0.0;
-  double full_fit_rms_db = 0.0;    // the model fitted on every exemplar, this one among them
-  double full_loo_rms_db = 0.0;    // the model fitted on every other exemplar (leave one out)
+  double full_fit_rms_db = 0.0;  // the model fitted on every exemplar, this one among them
+  double full_loo_rms_db = 0.0;  // the model fitted on every other exemplar (leave one out)
   // RMS over the cells of the prediction's standard error from the calibration, in dB.
   double predicted_se_db = 0.0;
 };
@@ -33,8 +33,8 @@ struct CalibratedPrintError {
 struct MaterialCalibrationCheck {
   std::string material;
   std::vector<double> calibration_tips_m;
-  MaterialCalibration calibration;  // against the model fitted without the material
-  std::vector<double> full_fit_log_gain;  // the material's curve in the fit of everything
+  MaterialCalibration calibration;           // against the model fitted without the material
+  std::vector<double> full_fit_log_gain;     // the material's curve in the fit of everything
   std::vector<CalibratedPrintError> prints;  // every exemplar of the material, catalog order
   // Means over the prints not calibrated from (the predictions proper), dB RMS.
   double mean_calibrated_db = 0.0, mean_uncalibrated_db = 0.0, mean_full_fit_db = 0.0,

@@ -12,8 +12,8 @@
 namespace nibrig::model::forcing {
 
 struct Repeatability {
-  double rms_db = 0.0;              // the mean over the pairs of their RMS dB difference
-  std::vector<std::string> pairs;   // "DM851_nail1 / DM851_nail2 on note: 2.41 dB"
+  double rms_db = 0.0;             // the mean over the pairs of their RMS dB difference
+  std::vector<std::string> pairs;  // "DM851_nail1 / DM851_nail2 on note: 2.41 dB"
 };
 
 // Every "<print>_nail1" with a "<print>_nail2" on the same surface, both with spectra, is a pair.

@@ -41,7 +41,8 @@ std::vector<LogCells> surface_estimates(const ForcingModel& model,
     for (std::size_t s = 0; s < y.size(); ++s)
       for (std::size_t j = 0; j < y[s].size(); ++j) {
         const double f = model.frequencies_hz[j];
-        y[s][j] -= model.tip_log_gain_at(t.tip_diameter_m, f) + model.material_log_gain_at(t.material, f);
+        y[s][j] -=
+            model.tip_log_gain_at(t.tip_diameter_m, f) + model.material_log_gain_at(t.material, f);
       }
     estimates.push_back(std::move(y));
   }
@@ -56,8 +57,9 @@ SurfaceCalibration calibrate_surface(const ForcingModel& model,
   const std::string what = "calibrating surface '" + surface + "'";
   if (surface.empty()) throw std::invalid_argument("calibrating a surface: no name given");
   if (model.surface_forcing.count(surface))
-    throw std::invalid_argument(what + ": the forcing model already has it (a calibration adds a "
-                                       "surface under a new name)");
+    throw std::invalid_argument(what +
+                                ": the forcing model already has it (a calibration adds a "
+                                "surface under a new name)");
   if (tools.empty()) throw std::invalid_argument(what + ": no tools measured on it were given");
   const std::vector<LogCells> estimates = surface_estimates(model, tools, surface);
 

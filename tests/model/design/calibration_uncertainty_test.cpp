@@ -50,9 +50,8 @@ TEST(CalibrationUncertainty, AnUncertainSurfaceMovesEveryDescriptorByItsScale) {
   const auto spectrum = predict_spectrum(model, half_dm85(), "office", kResponse);
   const auto names = space::all_paper_descriptor_names();
   ASSERT_TRUE(has_calibration_errors(model, half_dm85(), "office"));
-  const Eigen::MatrixXd c = calibration_descriptor_covariance(model, half_dm85(), "office",
-                                                              spectrum, calibration_threshold(),
-                                                              names);
+  const Eigen::MatrixXd c = calibration_descriptor_covariance(
+      model, half_dm85(), "office", spectrum, calibration_threshold(), names);
   // The weighted mean is linear in the amplitudes, band energies quadratic: scaling every cell by
   // e^s shifts their log10 by s·log10(e) and 2s·log10(e). The central difference is exact for a
   // shift linear in the step, up to round-off.
@@ -61,8 +60,12 @@ TEST(CalibrationUncertainty, AnUncertainSurfaceMovesEveryDescriptorByItsScale) {
   EXPECT_NEAR(c(descriptor_index(names, mean), descriptor_index(names, mean)), shift * shift, 1e-9);
   const auto bands = space::paper_descriptor_names(4);  // μ and three band energies
   for (std::size_t j = 1; j < bands.size(); ++j) {
-    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, bands[j])), 4 * shift * shift, 1e-9) << bands[j];
-    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, mean)), 2 * shift * shift, 1e-9) << bands[j];
+    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, bands[j])),
+                4 * shift * shift, 1e-9)
+        << bands[j];
+    EXPECT_NEAR(c(descriptor_index(names, bands[j]), descriptor_index(names, mean)),
+                2 * shift * shift, 1e-9)
+        << bands[j];
   }
   const std::string mu = space::paper_descriptor_names(1).front();
   EXPECT_EQ(c.row(descriptor_index(names, mu)).norm(), 0.0);
@@ -77,9 +80,9 @@ TEST(CalibrationUncertainty, AnUncertainKnotMovesTheDescriptorsByItsShare) {
   const std::string mean = space::paper_descriptor_names(2).back();
   const auto variance = [&](const DesignPoint& p) {
     const auto spectrum = predict_spectrum(model, p, "office", kResponse);
-    return calibration_descriptor_covariance(model, p, "office", spectrum,
-                                             calibration_threshold(), names)(descriptor_index(names, mean),
-                                                                             descriptor_index(names, mean));
+    return calibration_descriptor_covariance(model, p, "office", spectrum, calibration_threshold(),
+                                             names)(descriptor_index(names, mean),
+                                                    descriptor_index(names, mean));
   };
   const double half = variance(half_dm85());
   const double whole = variance({{{"DM85", 1.0}}, 0.002});
@@ -95,7 +98,8 @@ TEST(CalibrationUncertainty, AnUncertainKnotMovesTheDescriptorsByItsShare) {
 
 TEST(CalibrationUncertainty, APredictedToolCarriesItBesideItsOwnError) {
   auto model = hand_made_model();
-  model.surface_log_forcing_se["office"] = {std::vector<double>(5, 0.1), std::vector<double>(5, 0.1)};
+  model.surface_log_forcing_se["office"] = {std::vector<double>(5, 0.1),
+                                            std::vector<double>(5, 0.1)};
   const auto catalog = io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   DescriptorErrorCovariance own;
   own.names = space::all_paper_descriptor_names();

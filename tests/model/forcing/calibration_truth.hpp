@@ -21,8 +21,8 @@
 namespace nibrig::model::forcing::test {
 
 struct LabTruth {
-  ForcingModel model;         // what the lab's calibration starts from: the truth itself
-  double noise_log = 0.0;     // one recording's noise, SD of ln M per bin
+  ForcingModel model;      // what the lab's calibration starts from: the truth itself
+  double noise_log = 0.0;  // one recording's noise, SD of ln M per bin
   double repeatability_db = 0.0;
 };
 
@@ -96,14 +96,14 @@ inline ForcingExemplar simulated_print(const LabTruth& truth, const std::string&
   e.response_magnitude = synthetic_response(m.frequencies_hz, 90 + 3e3 * tip_m);
   e.measured.frequencies_hz = m.frequencies_hz;
   e.measured.speeds_m_s = m.speeds_m_s;
-  const auto noise = recording_noise(m.speeds_m_s.size(), m.frequencies_hz.size(), truth.noise_log, rng);
+  const auto noise =
+      recording_noise(m.speeds_m_s.size(), m.frequencies_hz.size(), truth.noise_log, rng);
   for (std::size_t s = 0; s < m.speeds_m_s.size(); ++s) {
     e.measured.amplitude_m_s2.emplace_back();
     for (std::size_t j = 0; j < m.frequencies_hz.size(); ++j) {
       const double f = m.frequencies_hz[j];
       const double log_gain = m.tip_log_gain_at(tip_m, f) +
-                              hermite_value(m.knot_frequencies_hz, material_knots, f) +
-                              noise[s][j];
+                              hermite_value(m.knot_frequencies_hz, material_knots, f) + noise[s][j];
       e.measured.amplitude_m_s2.back().push_back(e.response_magnitude[j] * forcing[s][j] *
                                                  std::exp(log_gain));
     }

@@ -98,7 +98,7 @@ TEST(ForcingFile, CalibrationErrorsRoundTripAndAreOptional) {
   const ForcingModel back = read_forcing_model(dir / "calibrated.json");
   EXPECT_EQ(back.material_log_gain_se, model.material_log_gain_se);
   EXPECT_EQ(back.surface_log_forcing_se, model.surface_log_forcing_se);
-  // The knots' errors at a knot are the knot's own; a prediction's adds the surface's in quadrature.
+  // At a knot the error is the knot's own; a prediction's adds the surface's in quadrature.
   const std::string surface = model.surface_forcing.begin()->first;
   EXPECT_NEAR(back.material_log_gain_se_at("DM95", back.knot_frequencies_hz[3]), 0.04, 1e-12);
   const std::size_t bin = 0;

@@ -16,8 +16,10 @@ namespace nibrig::model::forcing {
 namespace {
 
 // The 1 mm and 4 mm prints of a material with curve `knots`, on every surface of the model.
-std::vector<ForcingExemplar> hidden_material_prints(const test::LabTruth& truth, const std::string& material,
-                                        const std::vector<double>& knots, unsigned seed) {
+std::vector<ForcingExemplar> hidden_material_prints(const test::LabTruth& truth,
+                                                    const std::string& material,
+                                                    const std::vector<double>& knots,
+                                                    unsigned seed) {
   std::mt19937 rng(seed);
   std::vector<ForcingExemplar> prints;
   for (double tip : {0.001, 0.004})

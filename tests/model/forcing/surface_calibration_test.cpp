@@ -24,9 +24,9 @@ std::vector<std::vector<double>> hidden_surface_forcing(const ForcingModel& mode
 }
 
 // The known tools (material × tip) measured on the new surface.
-std::vector<ForcingExemplar> surface_reference_tools(const test::LabTruth& truth,
-                                             const std::vector<std::vector<double>>& forcing,
-                                             std::size_t count, unsigned seed) {
+std::vector<ForcingExemplar> surface_reference_tools(
+    const test::LabTruth& truth, const std::vector<std::vector<double>>& forcing, std::size_t count,
+    unsigned seed) {
   const std::vector<std::pair<std::string, double>> tools{
       {"vero", 0.002}, {"DM85", 0.001}, {"vero", 0.004}, {"DM85", 0.004}, {"vero", 0.001}};
   std::mt19937 rng(seed);

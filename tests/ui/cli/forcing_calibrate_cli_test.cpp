@@ -5,8 +5,8 @@
 // an input and a name stored already are refused.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -65,8 +65,8 @@ TEST_F(ForcingCalibrateCli, AMaterialTakenAsNewIsCalibratedWrittenAndStored) {
             model.material_log_gain_se);
 
   // Stored again under the same name: refused, the stored model kept.
-  EXPECT_NE(run(with_coarse({"forcing", "calibrate-material", "--material", "DM95", "--save",
-                             "lab-DM95"})),
+  EXPECT_NE(run(with_coarse(
+                {"forcing", "calibrate-material", "--material", "DM95", "--save", "lab-DM95"})),
             0);
   EXPECT_NE(error_.find("a forcing model named 'lab-DM95' is stored already"), std::string::npos)
       << error_;
@@ -109,12 +109,12 @@ TEST_F(ForcingCalibrateCli, ACalibrationAgainstAStoredModelFindsItByName) {
   const auto stored = model::forcing::read_forcing_model(out_ / "store" / "no-glass.json");
   ASSERT_EQ(stored.surface_log_forcing_se.count("glass"), 1u);
 
-  EXPECT_NE(run(with_coarse({"forcing", "calibrate-material", "--material", "DM85", "--forcing",
-                             "no-glass"})),
+  EXPECT_NE(run(with_coarse(
+                {"forcing", "calibrate-material", "--material", "DM85", "--forcing", "no-glass"})),
             0);
   EXPECT_NE(error_.find("already has a curve"), std::string::npos) << error_;
-  EXPECT_NE(run(with_coarse({"forcing", "calibrate-surface", "--surface", "glass", "--forcing",
-                             "not-stored"})),
+  EXPECT_NE(run(with_coarse(
+                {"forcing", "calibrate-surface", "--surface", "glass", "--forcing", "not-stored"})),
             0);
   EXPECT_NE(error_.find("no forcing model file 'not-stored'"), std::string::npos) << error_;
   EXPECT_NE(error_.find("stored: no-glass"), std::string::npos) << error_;
@@ -122,8 +122,8 @@ TEST_F(ForcingCalibrateCli, ACalibrationAgainstAStoredModelFindsItByName) {
 
 TEST_F(ForcingCalibrateCli, AnOutputThatIsAnInputIsRefused) {
   const auto model_file = out_ / "model.json";
-  ASSERT_EQ(run(with_coarse({"forcing", "calibrate-surface", "--surface", "paperlike",
-                             "--subsets", "3", "-o", model_file.string()})),
+  ASSERT_EQ(run(with_coarse({"forcing", "calibrate-surface", "--surface", "paperlike", "--subsets",
+                             "3", "-o", model_file.string()})),
             0)
       << error_;
   const auto before = model::forcing::read_forcing_model(model_file).surface_forcing;
