@@ -125,10 +125,12 @@ TEST_F(CalibrationOnTheCatalog, EachSurfaceAMaterialIsMeasuredOnNarrowsItsCurve)
   }
 }
 
-// Every surface in turn taken as new, calibrated from k of its tools, the rest predicted.
+// Surfaces in turn taken as new, calibrated from k of their tools, the rest predicted: the two
+// papers with the most tools, glass and the surface with the fewest (office and protector behave
+// alike, `forcing calibrate-surface` shows them; each surface costs a leave-one-out per tool).
 TEST_F(CalibrationOnTheCatalog, ASurfaceCalibratedFromAFewToolsPredictsTheRest) {
   const double repeatability = nail_pair_repeatability(*catalog_).rms_db;
-  for (const std::string surface : {"stone", "note", "glass", "office", "protector", "paperlike"}) {
+  for (const std::string surface : {"stone", "note", "glass", "paperlike"}) {
     SCOPED_TRACE(surface);
     // 60 subsets per k: enough to average the held-out tools' errors to ~0.05 dB.
     const auto study = study_surface_calibration(selection_->exemplars, surface, 60);
