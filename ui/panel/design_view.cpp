@@ -81,6 +81,14 @@ void DesignView::stop_work() {
 void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map) {
   space_->set_scene(scene);
   map_ = std::move(map);
+  if (grid_ && !coarse_) {
+    if (error_job_) {
+      error_stale_ = true;
+      error_job_->cancel();
+    } else {
+      start_error_job();
+    }
+  }
   targets_.clear();
   search_.reset();
   update_design(false);
@@ -324,18 +332,7 @@ void DesignView::take_grids() {
     tip_mm_ = std::clamp(tip_mm_, static_cast<float>(grid_->axes.tips_m.front() * 1e3),
                          static_cast<float>(grid_->axes.tips_m.back() * 1e3));
     update_design(heard);  // the finer prediction replaces the one heard, if it is heard
-    // The interpolation's error against the full FEM, measured here in the background.
-    error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
-        "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points),
-                       map = map_, surface = surface()](JobControl& control) {
-          const std::size_t dims = map ? map->descriptor_names.size() : 2;
-          return design::measure_grid_error_at(
-              inputs_->setup, *grid_, points, surface, dims, map ? &*map : nullptr,
-              [&control](std::size_t done, std::size_t total) {
-                control.progress(static_cast<double>(done) / static_cast<double>(total));
-              },
-              control.stop_token(), 1);
-        });
+    start_error_job();
   } else {
     error_ = job_->error();
   }
@@ -343,11 +340,32 @@ void DesignView::take_grids() {
   coarse_handover_.reset();
 }
 
+// The interpolation's error against the full FEM, measured in the background in the space shown
+// (its map places the cells): a space opened meanwhile makes the measurement start again once the
+// one running ends, since the UI does not wait for a cell's FEM solve.
+void DesignView::start_error_job() {
+  error_stale_ = false;
+  grid_error_.reset();
+  error_job_ = std::make_unique<BackgroundJob<design::GridError>>(
+      "grid error", [this, points = spread_cell_centres(grid_->axes, settings_.error_points), map = map_,
+                     surface = surface()](JobControl& control) {
+        const std::size_t dims = map ? map->descriptor_names.size() : 2;
+        return design::measure_grid_error_at(
+            inputs_->setup, *grid_, points, surface, dims, map ? &*map : nullptr,
+            [&control](std::size_t done, std::size_t total) {
+              control.progress(static_cast<double>(done) / static_cast<double>(total));
+            },
+            control.stop_token(), 1);
+      });
+}
+
 void DesignView::draw() {
   take_grids();
   if (error_job_ && error_job_->done()) {
-    if (auto e = error_job_->take_result()) grid_error_ = std::move(*e);
+    auto measured = error_job_->take_result();
     error_job_.reset();
+    if (error_stale_) start_error_job();
+    else if (measured) grid_error_ = std::move(*measured);
   }
   if (!inputs_ && !job_ && error_.empty()) prepare();
   const ImVec2 avail = ImGui::GetContentRegionAvail();

@@ -131,6 +131,7 @@ class DesignView {
   // Whether the sound heard now is this view's design (a grid that arrives replaces it then).
   bool design_heard() const;
   void take_grids();
+  void start_error_job();
   void draw_controls();
   void draw_target_controls();
   void draw_constraint_controls();
@@ -146,6 +147,7 @@ class DesignView {
   std::optional<model::space::DescriptorMap> map_;
   std::unique_ptr<BackgroundJob<DesignInputs>> job_;
   std::unique_ptr<BackgroundJob<model::design::GridError>> error_job_;
+  bool error_stale_ = false;  // the space changed while the error was measured: measure again
   std::shared_ptr<const model::design::PredictionInputs> inputs_;
   std::shared_ptr<CoarseHandover> coarse_handover_;
   bool coarse_ = false;
