@@ -70,8 +70,9 @@ TEST_F(CalibrationOnTheCatalog, AMaterialCalibratedFromTwoTipsPredictsItsThird) 
       // Calibrating must beat not calibrating (m ≡ 1) on every print of DM85, which differs from
       // VeroClear by 1-3 dB at 50-150 Hz, 3-5 of its SEs (material_hold_out.hpp). DM95 lies within
       // about 1 dB of VeroClear, inside the noise of one print: only the mean below holds it.
-      if (material == "DM85")
+      if (material == "DM85") {
         EXPECT_LT(p.calibrated_rms_db, p.uncalibrated_rms_db) << p.tool << " on " << p.surface;
+      }
       calibrated_sum += p.calibrated_rms_db;
       uncalibrated_sum += p.uncalibrated_rms_db;
       // Against the model fitted on everything else (this print alone left out): two of three
