@@ -70,6 +70,11 @@ fs::path& file_dialog_last_folder() {
 
 fs::path FileDialog::last_folder() { return file_dialog_last_folder(); }
 
+void FileDialog::remember_last_folder(const fs::path& folder) {
+  std::error_code ec;
+  if (!folder.empty() && fs::is_directory(folder, ec)) file_dialog_last_folder() = folder;
+}
+
 void FileDialog::open(std::string title, Mode mode, std::vector<std::string> endings, fs::path folder, Chosen chosen) {
   title_ = std::move(title);
   mode_ = mode;

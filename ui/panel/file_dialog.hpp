@@ -43,6 +43,8 @@ class FileDialog {
   bool is_open() const { return open_; }
   // The folder of the file last chosen in any dialog (empty: none yet).
   static std::filesystem::path last_folder();
+  // As the panel's settings remember it from an earlier start (ignored when not a folder now).
+  static void remember_last_folder(const std::filesystem::path& folder);
 
   // What the buttons do, for scripted sessions: a name (or path) of a folder enters it (false); of
   // a file, takes it (true: the dialog closes and `chosen` is called). False with error() set when

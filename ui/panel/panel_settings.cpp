@@ -11,6 +11,7 @@
 #include "model/io/finite_output.hpp"
 #include "ui/panel/devices_view.hpp"
 #include "ui/panel/experiment_view.hpp"
+#include "ui/panel/file_dialog.hpp"
 
 namespace nibrig::ui::panel {
 
@@ -66,6 +67,11 @@ PanelSettings read_panel_settings(const std::filesystem::path& file) {
       take(e, "study", s.study);
       take(e, "stimuli", s.stimuli);
     }
+    if (j.contains("files")) {
+      std::string folder;
+      take(j.at("files"), "last_folder", folder);
+      s.dialog_folder = folder;
+    }
     if (j.contains("rig")) {
       const json& r = j.at("rig");
       take(r, "kind", s.rig.kind);
@@ -113,6 +119,7 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"input_channel", s.rig.input_channel}, {"speedup", s.rig.speedup},
               {"play_on_actuator", s.rig.play_on_actuator}};
   j["experiment"] = {{"study", s.study}, {"stimuli", s.stimuli}};
+  j["files"] = {{"last_folder", s.dialog_folder.string()}};
   std::filesystem::create_directories(file.parent_path());
   model::io::write_file_atomically(file, model::io::json_text(j, file));
 }
@@ -124,6 +131,7 @@ void apply_panel_settings(Panel& panel, const PanelSettings& settings) {
   panel.rig_view().choice() = settings.rig;
   panel.experiment_view().form().study = settings.study;
   panel.experiment_view().form().stimuli = settings.stimuli;
+  FileDialog::remember_last_folder(settings.dialog_folder);
 }
 
 PanelSettings panel_settings_of(Panel& panel) {
@@ -135,6 +143,7 @@ PanelSettings panel_settings_of(Panel& panel) {
   kept.rig = panel.rig_view().choice();
   kept.study = panel.experiment_view().form().study;
   kept.stimuli = panel.experiment_view().form().stimuli;
+  kept.dialog_folder = FileDialog::last_folder();
   return kept;
 }
 

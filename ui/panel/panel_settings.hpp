@@ -22,6 +22,8 @@ struct PanelSettings {
   // The experiment view's study folder and stimulus list: a study runs over days, one
   // participant a start, and the form had come back empty each time.
   std::string study, stimuli;
+  // Where a file was last chosen in a dialog: where the next start's dialogs open.
+  std::filesystem::path dialog_folder;
 };
 
 // $NIBRIG_PANEL_SETTINGS, else $XDG_CONFIG_HOME/nibrig/panel.json, else ~/.config/nibrig/panel.json.

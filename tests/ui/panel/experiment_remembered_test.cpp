@@ -5,6 +5,7 @@
 #include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/experiment_view.hpp"
+#include "ui/panel/file_dialog.hpp"
 #include "ui/panel/panel.hpp"
 #include "ui/panel/panel_settings.hpp"
 
@@ -32,6 +33,24 @@ TEST(ExperimentRemembered, TheStudyFolderAndListComeBackIntoTheFormAtTheNextStar
   EXPECT_EQ(next.experiment_view().form().study, "/studies/tablets");
   EXPECT_EQ(next.experiment_view().form().stimuli, "/studies/tablets.txt");
   EXPECT_EQ(next.experiment_view().form().participant, "");
+}
+
+// Where the last file was chosen comes back too: the next start's dialogs open there.
+TEST(ExperimentRemembered, TheDialogsFolderComesBackAtTheNextStart) {
+  const auto dir = std::filesystem::weakly_canonical(nibrig::test::scratch_dir("panel_dialog_remembered"));
+  std::filesystem::create_directories(dir / "studies");
+  PanelWindow window(testing::hidden_window());
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  {
+    Panel first(setup);
+    FileDialog::remember_last_folder(dir / "studies");
+    write_panel_settings(dir / "panel.json", panel_settings_of(first));
+  }
+  FileDialog::remember_last_folder(std::filesystem::current_path());
+  Panel next(setup);
+  apply_panel_settings(next, read_panel_settings(dir / "panel.json"));
+  EXPECT_EQ(FileDialog::last_folder(), dir / "studies");
 }
 
 }  // namespace

@@ -7,9 +7,35 @@
 #include <fstream>
 
 #include "tests/support/test_paths.hpp"
+#include "ui/panel/panel_settings.hpp"
 
 namespace nibrig::ui::panel {
 namespace {
+
+// The last folder is kept in the panel's settings: the next start's dialogs open there (they had
+// opened in the working folder after every start).
+TEST(FileDialogFolder, TheNextStartOpensWhereTheLastOneChoseAFile) {
+  const auto dir = std::filesystem::weakly_canonical(nibrig::test::scratch_dir("panel_dialog_folder_kept"));
+  std::filesystem::create_directories(dir / "designs");
+  std::ofstream(dir / "designs" / "a.json") << "{}";
+  FileDialog first;
+  first.open("Open a design", FileDialog::Mode::open, {".json"}, dir / "designs", {});
+  ASSERT_TRUE(first.choose("a.json"));
+  PanelSettings kept;
+  kept.dialog_folder = FileDialog::last_folder();
+  write_panel_settings(dir / "panel.json", kept);
+
+  FileDialog::remember_last_folder(std::filesystem::current_path());  // as a fresh start has it
+  const PanelSettings back = read_panel_settings(dir / "panel.json");
+  EXPECT_EQ(back.dialog_folder, dir / "designs");
+  FileDialog::remember_last_folder(back.dialog_folder);
+  FileDialog next;
+  next.open("Replay a recorded stroke", FileDialog::Mode::open, {".csv"}, {}, {});
+  EXPECT_EQ(next.folder(), dir / "designs");
+  // A folder gone since is not where anything opens.
+  FileDialog::remember_last_folder(dir / "gone");
+  EXPECT_EQ(FileDialog::last_folder(), dir / "designs");
+}
 
 TEST(FileDialogFolder, OpensWhereAFileWasLastChosenUnlessGivenAFolder) {
   const auto dir = std::filesystem::weakly_canonical(nibrig::test::scratch_dir("panel_dialog_folder"));
