@@ -11,6 +11,7 @@
 #include "model/design/design_grid_file.hpp"
 #include "model/design/prediction_file.hpp"
 #include "model/design/stylus_export.hpp"
+#include "model/io/printer_profile.hpp"
 #include "ui/figures/stylus_sheet.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/design/tool_sound.hpp"
@@ -252,7 +253,8 @@ std::function<void()> DesignView::stylus_export(const std::filesystem::path& fil
       targets.push_back({t.choice.tool + "/" + t.choice.surface, t.judged ? std::nullopt : std::optional(placements.back())});
     }
   return [file, point = predicted_->point, surface = surface(), inputs = inputs_, map = map_,
-          space = std::move(space), targets = std::move(targets), placements = std::move(placements), aim = aim_] {
+          space = std::move(space), targets = std::move(targets), placements = std::move(placements), aim = aim_,
+          printer = printer_] {
     // The sheet's prediction solves the design itself (the sliders show the grid's interpolation).
     std::optional<design::PredictedTool> tool;
     const design::Predict predict = [&](const design::DesignPoint& p) {
@@ -262,6 +264,7 @@ std::function<void()> DesignView::stylus_export(const std::filesystem::path& fil
     figures::StylusSheetInputs sheet;
     sheet.aim = aim == model::space::GroupAim::mean ? "mean" : "largest";
     auto print = design::stylus_print(inputs->setup, point);
+    if (!printer.empty()) print.printer = model::io::find_printer_profile(printer);  // the library refuses what it cannot make
     if (!placements.empty()) {
       const auto candidate = design::distance_to_targets(predict, *map, placements, aim)(point);
       // A printer that cannot mix prints one material: each alone, placed, against the targets.
@@ -490,6 +493,7 @@ void DesignView::draw_controls() {
                        last_search_ms_, targets_.size() > 1 ? (aim_ == model::space::GroupAim::mean ? " on mean" : " at worst") : "",
                        design::label(best.point).c_str(), best.distance, best.distance_sd);
   }
+  draw_printer_choice();
   section("Interpolation against the FEM");
   if (error_job_) ImGui::ProgressBar(static_cast<float>(error_job_->progress()), {-1.0f, 0.0f}, "solving cell centres");
   if (grid_error_) {
@@ -501,6 +505,25 @@ void DesignView::draw_controls() {
                      grid_->axes.fractions.size(), grid_->axes.tips_m.size(), grid_->axes.material_a.c_str(),
                      grid_->axes.material_b.c_str(), grid_->mode_jumps);
   if (!error_.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", error_.c_str());
+}
+
+// The printer "Export stylus for printing..." writes for: the bundled profiles and the lab's own,
+// listed once (a folder read is not for every frame).
+void DesignView::draw_printer_choice() {
+  section("Printing");
+  if (printer_names_.empty()) {
+    printer_names_ = model::io::bundled_printer_names();
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(model::io::user_printers_folder(), ec))
+      if (e.path().extension() == ".json") printer_names_.push_back(e.path().stem().string());
+  }
+  const std::string none = "none (the printer's own settings)";
+  if (ImGui::BeginCombo("printer", printer_.empty() ? none.c_str() : printer_.c_str())) {
+    if (ImGui::Selectable(none.c_str(), printer_.empty())) printer_.clear();
+    for (const auto& name : printer_names_)
+      if (ImGui::Selectable(name.c_str(), name == printer_)) printer_ = name;
+    ImGui::EndCombo();
+  }
 }
 
 void DesignView::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const {

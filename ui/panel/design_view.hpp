@@ -105,6 +105,10 @@ class DesignView {
   // change meanwhile; it throws what the export throws. Empty when no design is shown yet.
   std::function<void()> stylus_export(const std::filesystem::path& file,
                                       std::optional<model::space::SpaceFile> space = std::nullopt) const;
+  // The printer the export is for (a profile's name or file; empty: none, its settings unstated):
+  // the 3MF then carries its slicer settings, and a design it cannot make is refused, naming why.
+  void set_printer(std::string name) { printer_ = std::move(name); }
+  const std::string& printer() const { return printer_; }
 
   // What the view shows, for tests and the status: the current prediction and its placement,
   // how long the last slider move took to a placement and a loaded sound, the last search, the
@@ -132,6 +136,7 @@ class DesignView {
   bool design_heard() const;
   void take_grids();
   void start_error_job();
+  void draw_printer_choice();
   void draw_controls();
   void draw_target_controls();
   void draw_constraint_controls();
@@ -155,6 +160,8 @@ class DesignView {
   std::vector<std::size_t> targets_;  // indices into the scene's tools; the first sets the surface
   bool group_mode_ = false;
   model::space::GroupAim aim_ = model::space::GroupAim::largest;
+  std::string printer_;
+  std::vector<std::string> printer_names_;  // for the choice: bundled, then the lab's own
   model::design::DesignConstraints constraints_;
   float fraction_ = 0.5f, tip_mm_ = 2.0f;
   bool play_ = true;

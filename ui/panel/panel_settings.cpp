@@ -67,6 +67,7 @@ PanelSettings read_panel_settings(const std::filesystem::path& file) {
       take(e, "study", s.study);
       take(e, "stimuli", s.stimuli);
     }
+    if (j.contains("design")) take(j.at("design"), "printer", s.printer);
     if (j.contains("files")) {
       std::string folder;
       take(j.at("files"), "last_folder", folder);
@@ -120,6 +121,7 @@ void write_panel_settings(const std::filesystem::path& file, const PanelSettings
               {"play_on_actuator", s.rig.play_on_actuator}};
   j["experiment"] = {{"study", s.study}, {"stimuli", s.stimuli}};
   j["files"] = {{"last_folder", s.dialog_folder.string()}};
+  j["design"] = {{"printer", s.printer}};
   std::filesystem::create_directories(file.parent_path());
   model::io::write_file_atomically(file, model::io::json_text(j, file));
 }
@@ -132,6 +134,7 @@ void apply_panel_settings(Panel& panel, const PanelSettings& settings) {
   panel.experiment_view().form().study = settings.study;
   panel.experiment_view().form().stimuli = settings.stimuli;
   FileDialog::remember_last_folder(settings.dialog_folder);
+  panel.design_view().set_printer(settings.printer);
 }
 
 PanelSettings panel_settings_of(Panel& panel) {
@@ -144,6 +147,7 @@ PanelSettings panel_settings_of(Panel& panel) {
   kept.study = panel.experiment_view().form().study;
   kept.stimuli = panel.experiment_view().form().stimuli;
   kept.dialog_folder = FileDialog::last_folder();
+  kept.printer = panel.design_view().printer();
   return kept;
 }
 

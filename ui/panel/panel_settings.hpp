@@ -24,6 +24,7 @@ struct PanelSettings {
   std::string study, stimuli;
   // Where a file was last chosen in a dialog: where the next start's dialogs open.
   std::filesystem::path dialog_folder;
+  std::string printer;  // the design view's export printer (empty: none)
 };
 
 // $NIBRIG_PANEL_SETTINGS, else $XDG_CONFIG_HOME/nibrig/panel.json, else ~/.config/nibrig/panel.json.

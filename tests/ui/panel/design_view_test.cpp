@@ -107,6 +107,27 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   EXPECT_EQ(nibrig::test::decode_png(dir / "stylus-sheet.png").width, 2000);
   std::ifstream recipe(dir / "stylus.json");
   EXPECT_EQ(nlohmann::json::parse(recipe)["design"].get<std::string>(), model::design::to_string(shown));
+  // For a printer: the FDM one has no VeroClear or DM85 and is refused before a file is written,
+  // naming the material; the paper's PolyJet mixes them, and the recipe names it.
+  view.set_printer("prusa-mk3s");
+  const auto on_fdm = view.stylus_export(dir / "fdm" / "stylus.3mf", panel.shown_space());
+  ASSERT_TRUE(on_fdm);
+  EXPECT_THROW(
+      {
+        try {
+          on_fdm();
+        } catch (const std::exception& e) {
+          EXPECT_THAT(e.what(), ::testing::HasSubstr("prusa-mk3s"));
+          throw;
+        }
+      },
+      std::exception);
+  EXPECT_FALSE(std::filesystem::exists(dir / "fdm" / "stylus.3mf"));
+  view.set_printer("stratasys-objet260-connex");
+  view.stylus_export(dir / "polyjet" / "stylus.3mf", panel.shown_space())();
+  const auto polyjet = nlohmann::json::parse(std::ifstream(dir / "polyjet" / "stylus.json"));
+  EXPECT_EQ(polyjet["printer"]["name"].get<std::string>(), "stratasys-objet260-connex");
+  view.set_printer("");
   view.set_design(0.0, 2.5);
   EXPECT_EQ(view.open_prediction(saved), "");
   EXPECT_NEAR(view.predicted()->point.fraction_of("DM85"), shown.fraction_of("DM85"), 1e-6);

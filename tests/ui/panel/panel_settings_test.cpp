@@ -28,6 +28,7 @@ TEST(PanelSettings, WhatWasKeptComesBack) {
   s.rig.replay = "/sessions/one";
   s.rig.speedup = 4.0f;
   s.rig.play_on_actuator = true;
+  s.printer = "prusa-sl1s";
   write_panel_settings(file, s);
   const PanelSettings back = read_panel_settings(file);
   EXPECT_EQ(back.view, View::rig);
@@ -42,6 +43,7 @@ TEST(PanelSettings, WhatWasKeptComesBack) {
   EXPECT_EQ(back.rig.replay, "/sessions/one");
   EXPECT_EQ(back.rig.speedup, 4.0f);
   EXPECT_TRUE(back.rig.play_on_actuator);
+  EXPECT_EQ(back.printer, "prusa-sl1s");
 }
 
 TEST(PanelSettings, AMissingFileGivesTheDefaultsAndADamagedOneSaysWhere) {
