@@ -92,26 +92,38 @@ TEST(StudyReport, ATwoStageRunWithASimulatedParticipantRecoversItsSpaceAsTheSynt
   EXPECT_NEAR(report.participants[0].with_space.fraction, expected / n, 0.03);
 }
 
+// A validation study of six stimuli in a random 2-D space (drawn with `space_seed`), answered by
+// `participants` simulated participants (seeds from `first_seed`), and the space they answer from.
+struct ValidationStudy {
+  ValidationStudy(const std::filesystem::path& dir, unsigned space_seed, int participants, std::uint64_t first_seed) {
+    std::mt19937_64 generator(space_seed);
+    truth = space::random_space(2, 6, generator);
+    StudyDefinition d = test::definition_of(6);
+    d.mode = StudyMode::validation;
+    d.practice = 0;
+    folder = test::make_study(dir, d);
+    for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
+    space.coordinates = truth;
+    space.model.scale = space::kThurstoneScale;
+    NothingPresented nothing;
+    for (int k = 0; k < participants; ++k) {
+      SimulatedParticipant p(truth, {}, first_seed + static_cast<std::uint64_t>(k));
+      run_study(simulated_session(folder, "V" + std::to_string(k)), nothing, p);
+    }
+  }
+  Eigen::MatrixXd truth;
+  std::filesystem::path folder;
+  space::SpaceFile space;
+};
+
 TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
   // Sec. 6.1: designs judged against a reference by 12 participants, scored against the space
   // they answer from. The majority agreement is counted here from the logs, independently.
-  std::mt19937_64 generator(5);
-  const Eigen::MatrixXd truth = space::random_space(2, 6, generator);
   const auto dir = nibrig::test::scratch_dir("report_validation");
-  StudyDefinition d = test::definition_of(6);
-  d.mode = StudyMode::validation;
-  d.practice = 0;
-  const auto study = test::make_study(dir, d);
-  space::SpaceFile space;
-  for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
-  space.coordinates = truth;
-  space.model.scale = space::kThurstoneScale;
-  space::write_space_file(dir / "truth.json", space);
-  NothingPresented nothing;
-  for (int k = 0; k < 12; ++k) {
-    SimulatedParticipant p(truth, {}, 100 + static_cast<std::uint64_t>(k));
-    run_study(simulated_session(study, "V" + std::to_string(k)), nothing, p);
-  }
+  const ValidationStudy v(dir, 5, 12, 100);
+  const Eigen::MatrixXd& truth = v.truth;
+  const auto& study = v.folder;
+  space::write_space_file(dir / "truth.json", v.space);
   StudyReportSettings settings;
   EXPECT_THROW(report_study(study, dir / "report", settings), std::invalid_argument)
       << "a validation study needs its space";
@@ -142,22 +154,12 @@ TEST(StudyReport, AValidationStudyGivesThePapersStatisticsAgainstTheSpace) {
 // check refuses replacing it; a space given to a study that is not a validation one is refused,
 // not ignored (the trial's `report -o out --space out/space.json` had overwritten it).
 TEST(StudyReport, AGivenSpaceIsNeverReplacedByTheReportItScores) {
-  std::mt19937_64 generator(6);
-  const Eigen::MatrixXd truth = space::random_space(2, 6, generator);
   const auto dir = nibrig::test::scratch_dir("report_keeps_space");
-  StudyDefinition d = test::definition_of(6);
-  d.mode = StudyMode::validation;
-  d.practice = 0;
-  const auto study = test::make_study(dir, d);
-  space::SpaceFile space;
-  for (const auto& s : d.stimuli) space.stimuli.push_back(s.name);
-  space.coordinates = truth;
-  space.model.scale = space::kThurstoneScale;
+  const ValidationStudy v(dir, 6, 3, 200);
+  const Eigen::MatrixXd& truth = v.truth;
+  const auto& study = v.folder;
+  const space::SpaceFile& space = v.space;
   NothingPresented nothing;
-  for (int k = 0; k < 3; ++k) {
-    SimulatedParticipant p(truth, {}, 200 + static_cast<std::uint64_t>(k));
-    run_study(simulated_session(study, "V" + std::to_string(k)), nothing, p);
-  }
   const auto bytes = [](const std::filesystem::path& f) {
     std::ifstream in(f, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});

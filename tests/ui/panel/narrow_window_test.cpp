@@ -18,17 +18,31 @@
 namespace nibrig::ui::panel {
 namespace {
 
+// The panel at its smallest window, on a small space, showing `view`; no pen looked for.
+struct SmallestWindow {
+  SmallestWindow(const char* scratch, View view)
+      : window([] {
+          WindowSettings settings = testing::hidden_window();
+          settings.width = PanelWindow::kMinWidth;
+          settings.height = PanelWindow::kMinHeight;
+          return settings;
+        }()),
+        panel([&] {
+          PanelSetup setup;
+          setup.space = testing::write_small_space(nibrig::test::scratch_dir(scratch));
+          return setup;
+        }()) {
+    panel.pad_view().pen().stop_looking();
+    panel.show(view);
+  }
+  PanelWindow window;
+  Panel panel;
+};
+
 TEST(NarrowWindow, ThePadsControlsEndInsideTheViewAtTheSmallestWindow) {
-  const auto dir = nibrig::test::scratch_dir("panel_narrow_window");
-  WindowSettings settings = testing::hidden_window();
-  settings.width = PanelWindow::kMinWidth;
-  settings.height = PanelWindow::kMinHeight;
-  PanelWindow window(settings);
-  PanelSetup setup;
-  setup.space = testing::write_small_space(dir);
-  Panel panel(setup);
-  panel.pad_view().pen().stop_looking();
-  panel.show(View::pad);
+  SmallestWindow w("panel_narrow_window", View::pad);
+  PanelWindow& window = w.window;
+  Panel& panel = w.panel;
   float view_right = 0.0f;
   for (int i = 0; i < 5; ++i) {
     window.begin_frame();
@@ -46,16 +60,9 @@ TEST(NarrowWindow, ThePadsControlsEndInsideTheViewAtTheSmallestWindow) {
 }
 
 TEST(NarrowWindow, TheDevicesViewsColumnsHoldWhatTheyDrawAtTheSmallestWindow) {
-  const auto dir = nibrig::test::scratch_dir("panel_narrow_devices");
-  WindowSettings settings = testing::hidden_window();
-  settings.width = PanelWindow::kMinWidth;
-  settings.height = PanelWindow::kMinHeight;
-  PanelWindow window(settings);
-  PanelSetup setup;
-  setup.space = testing::write_small_space(dir);
-  Panel panel(setup);
-  panel.pad_view().pen().stop_looking();
-  panel.show(View::devices);
+  SmallestWindow w("panel_narrow_devices", View::devices);
+  PanelWindow& window = w.window;
+  Panel& panel = w.panel;
   // A column's content width is what its widest line needed in the frame before: the last frames
   // measure what the first ones laid out.
   std::vector<std::pair<std::string, float>> overrun;
