@@ -9,9 +9,17 @@
 // the units: the covariance is the cluster-robust (sandwich) one, an exemplar per cluster, scaled
 // by G/(G−1) for G of them (Cameron and Miller, "A Practitioner's Guide to Cluster-Robust
 // Inference", J. Human Resources 50(2), 2015, Sec. II-C, VI). With all exemplars on one grid it is
-// the spread of the per-exemplar curves over √G, with G − 1 degrees of freedom. What it leaves out:
-// the errors of the held F_S and tip curves, which the catalog's fit carries (curve_jackknife.hpp),
-// and differences between prints of one material beyond those between their exemplars.
+// the spread of the per-exemplar curves over √G, with G − 1 degrees of freedom.
+//
+// Exemplars of one print share that print (and its tip curve, held from other materials): on the
+// catalog, DM95 calibrated from its 1 mm prints alone and from its 4 mm prints alone differ by
+// ~1 dB at most knots, 2-3 of those standard errors. So a print's own curve varies about the
+// material's by τ beyond its exemplars' noise, a one-way random effect (Searle, Casella and
+// McCulloch, "Variance Components", 1992, Sec. 3.5: the ANOVA estimator); τ² is the prints' curves'
+// spread minus what the within part explains of it, pooled over the knots (two prints give one
+// degree of freedom per knot) and floored at 0; τ²/P adds to each knot's variance. With P prints
+// that part has P − 1 degrees of freedom: with two prints the error of the error is large, and the
+// interval's t quantile (degrees_of_freedom) says so. Left out: the held F_S's own error.
 #pragma once
 
 #include <cstddef>
@@ -28,8 +36,14 @@ struct MaterialCalibration {
   ForcingModel model;  // the input, with the material's curve and its standard errors added
   std::string material;
   std::vector<double> log_gain, log_gain_se;  // per knot of the model, natural log
+  std::vector<double> log_gain_within_se;     // the exemplars' part of log_gain_se alone
   std::size_t exemplars = 0, prints = 0;      // prints: distinct tool ids
-  std::size_t degrees_of_freedom = 0;         // of a knot's t-interval: exemplars − 1
+  // The spread of one print's curve about the material's beyond its exemplars' noise (ln, pooled
+  // over the knots): 0 from one print, or when the prints agree within that noise.
+  double print_log_gain_sd = 0.0;
+  // Of a knot's t-interval (Welch-Satterthwaite over the two parts, knots averaged): exemplars − 1
+  // when the prints agree, towards prints − 1 when they do not.
+  double degrees_of_freedom = 0.0;
   // How far the calibrated model is from the prints it was calibrated on (dB RMS), and per print.
   double residual_rms_db = 0.0;
   std::vector<ExemplarFit> print_fits;

@@ -68,10 +68,13 @@ MaterialStudy study_material_calibration(std::span<const ForcingExemplar> exempl
         for (std::size_t i : subset)
           if (e.surface == out.surfaces[i]) prints.push_back(e);
       const MaterialCalibration c = calibrate_material(without, prints, material);
-      double se_squares = 0.0;
-      for (double se : c.log_gain_se) se_squares += se * se;
-      step.se_rms_db +=
-          log_gain_to_db(std::sqrt(se_squares / static_cast<double>(c.log_gain_se.size())));
+      const auto rms_db = [](const std::vector<double>& se) {
+        double squares = 0.0;
+        for (double x : se) squares += x * x;
+        return log_gain_to_db(std::sqrt(squares / static_cast<double>(se.size())));
+      };
+      step.se_rms_db += rms_db(c.log_gain_se);
+      step.within_se_rms_db += rms_db(c.log_gain_within_se);
       double errors = 0.0;
       for (const auto& p : prediction_errors(c.model, predicted)) errors += p.rms_db;
       step.prediction_rms_db += errors / static_cast<double>(predicted.size());
@@ -79,6 +82,7 @@ MaterialStudy study_material_calibration(std::span<const ForcingExemplar> exempl
       ++step.subsets;
     }
     step.se_rms_db /= static_cast<double>(step.subsets);
+    step.within_se_rms_db /= static_cast<double>(step.subsets);
     step.prediction_rms_db /= static_cast<double>(step.subsets);
     out.steps.push_back(step);
   }

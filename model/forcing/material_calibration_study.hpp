@@ -18,9 +18,10 @@ struct MaterialStudyStep {
   std::size_t surfaces = 0;   // k: the surfaces the calibration prints were measured on
   std::size_t subsets = 0;    // how many sets of k surfaces were tried
   std::size_t exemplars = 0;  // calibration exemplars per subset (the prints on k surfaces)
-  // Means over the subsets: the curve's standard error (RMS over knots, dB) and the error of the
+  // Means over the subsets: the curve's standard error (RMS over knots, dB), its exemplars' part
+  // alone (what more surfaces shrink; the prints' part only more prints do), and the error of the
   // prints at the other tips predicted (dB RMS, mean over them).
-  double se_rms_db = 0.0, prediction_rms_db = 0.0;
+  double se_rms_db = 0.0, within_se_rms_db = 0.0, prediction_rms_db = 0.0;
 };
 
 struct MaterialStudy {

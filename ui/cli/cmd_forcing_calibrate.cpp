@@ -123,9 +123,10 @@ std::string calibrated_curve_rows(const forcing::MaterialCalibration& c) {
 
 std::string calibration_uncertainty_note(const forcing::MaterialCalibration& c) {
   return fmt::format(
-      "SE: cluster-robust over {} exemplars ({} prints × surfaces; t with {} degrees of "
-      "freedom), the surface forcing and tip curves held\n",
-      c.exemplars, c.prints, c.degrees_of_freedom);
+      "SE: the spread of its {} exemplars (cluster-robust, the surface forcing and tip curves "
+      "held) and of its {} prints' own curves ({:.2f} dB between prints beyond that, pooled over "
+      "the knots); t with {:.1f} degrees of freedom\n",
+      c.exemplars, c.prints, forcing::log_gain_to_db(c.print_log_gain_sd), c.degrees_of_freedom);
 }
 
 // The check: the catalog's material taken as new, its other prints predicted.
@@ -177,11 +178,14 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
         inputs.exemplars, o.material, calibration_metres(o.tips_mm));
     std::cout << fmt::format(
         "the same prints measured on fewer surfaces (of the {} with every tip; mean over the sets "
-        "of surfaces):\n{:>9}{:>11}{:>16}{:>15}\n",
-        study.surfaces.size(), "surfaces", "exemplars", "SE of m (dB)", "predicted");
+        "of surfaces; more surfaces shrink the exemplars' part, only more prints the prints'):\n"
+        "{:>9}{:>11}{:>16}{:>18}{:>15}\n",
+        study.surfaces.size(), "surfaces", "exemplars", "SE of m (dB)", "exemplars' part",
+        "predicted");
     for (const auto& step : study.steps)
-      std::cout << fmt::format("{:>9}{:>11}{:>16.2f}{:>15.2f}\n", step.surfaces, step.exemplars,
-                               step.se_rms_db, step.prediction_rms_db);
+      std::cout << fmt::format("{:>9}{:>11}{:>16.2f}{:>18.2f}{:>15.2f}\n", step.surfaces,
+                               step.exemplars, step.se_rms_db, step.within_se_rms_db,
+                               step.prediction_rms_db);
   }
   write_calibration_outputs(c.model, o.out);
 }

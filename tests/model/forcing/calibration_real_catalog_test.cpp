@@ -106,21 +106,31 @@ TEST_F(CalibrationOnTheCatalog, EachSurfaceAMaterialIsMeasuredOnNarrowsItsCurve)
     const auto study = study_material_calibration(selection_->exemplars, material, tips);
     std::cout << material << " from its 1 and 4 mm prints on k surfaces:";
     for (const auto& s : study.steps)
-      std::cout << " k=" << s.surfaces << " SE " << s.se_rms_db << " predicted "
-                << s.prediction_rms_db;
+      std::cout << " k=" << s.surfaces << " SE " << s.se_rms_db << " (exemplars' "
+                << s.within_se_rms_db << ") predicted " << s.prediction_rms_db;
     std::cout << "\n";
     // DM95's 1 and 4 mm prints were both measured on all six surfaces, DM85's on five (DM854 has
     // no protector recording), and one surface is two exemplars: the fewest with an SE.
     ASSERT_EQ(study.surfaces.size(), material == "DM95" ? 6u : 5u);
     EXPECT_EQ(study.steps.front().exemplars, 2u);
-    // The SE falls as surfaces are added, as 1/√(exemplars) if every exemplar were alike: from two
-    // surfaces to all by √(2/n). Surfaces differ in how far their exemplars scatter, so 30 % is
-    // allowed over that; k = 1 is left out of the comparison, its SE having one degree of freedom
-    // (its mean over subsets is biased low by ~20 %).
+    // The exemplars' part of the SE falls as surfaces are added, as 1/√(exemplars) if every
+    // exemplar were alike: from two surfaces to all by √(2/n). Surfaces differ in how far their
+    // exemplars scatter, so 30 % is allowed over that; k = 1 is left out, its SE having one
+    // degree of freedom (its mean over subsets is biased low by ~20 %). The prints' part does not
+    // fall with surfaces: the whole SE falls by less.
     const auto& one = study.steps.front();
     const auto& two = study.steps[1];
     const auto& all = study.steps.back();
-    EXPECT_LT(all.se_rms_db, 1.3 * two.se_rms_db * std::sqrt(2.0 / double(study.surfaces.size())));
+    const double expected = std::sqrt(2.0 / double(study.surfaces.size()));
+    EXPECT_LT(all.within_se_rms_db, 1.3 * two.within_se_rms_db * expected);
+    // DM95's 1 mm and 4 mm prints differ beyond their exemplars' noise (calibrated apart, their
+    // curves are 2-3 SE apart at 6 of 11 knots): with every surface the prints' part is the
+    // larger. DM85's prints agree within that noise, and its SE is its exemplars'.
+    if (material == "DM95") {
+      EXPECT_GT(all.se_rms_db, 1.3 * all.within_se_rms_db);
+    } else {
+      EXPECT_NEAR(all.se_rms_db, all.within_se_rms_db, 0.05);
+    }
     // And the prints at the other tip are predicted better from all surfaces than from one.
     EXPECT_LT(all.prediction_rms_db, one.prediction_rms_db);
   }
