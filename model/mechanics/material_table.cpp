@@ -7,6 +7,7 @@
 
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
+#include "model/mechanics/lab_materials.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -41,7 +42,9 @@ const Material& MaterialTable::find(const std::string& name) const {
     if (same_name(m.name, name)) return m;
   std::string known;
   for (const auto& m : materials_) known += (known.empty() ? "" : ", ") + m.name;
-  throw std::invalid_argument("unknown material '" + name + "' (known: " + known + ")");
+  std::string places;
+  for (const auto& p : looked_in_) places += (places.empty() ? "; looked in " : " and ") + p;
+  throw std::invalid_argument("unknown material '" + name + "' (known: " + known + places + ")");
 }
 
 bool is_material_basis(const std::string& basis) {
@@ -85,7 +88,7 @@ void validate(const Material& m) {
   }
 }
 
-MaterialTable read_material_table(const std::filesystem::path& file) {
+MaterialTable read_material_file(const std::filesystem::path& file) {
   const nlohmann::json root = jf::parse_file(file);
   jf::as_object(root, file, "");
   jf::check_format_and_version(root, file, "nibrig-materials", 1);
@@ -117,10 +120,16 @@ MaterialTable read_material_table(const std::filesystem::path& file) {
     materials.push_back(std::move(m));
   }
   try {
-    return MaterialTable(std::move(materials));
+    MaterialTable table(std::move(materials));
+    table.set_looked_in({file.string()});
+    return table;
   } catch (const std::invalid_argument& e) {
     throw io::FormatError(file, jf::place("materials"), e.what());
   }
+}
+
+MaterialTable read_material_table(const std::filesystem::path& file) {
+  return with_lab_materials(read_material_file(file));
 }
 
 }  // namespace nibrig::model::mechanics

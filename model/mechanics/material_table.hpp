@@ -47,11 +47,17 @@ class MaterialTable {
   explicit MaterialTable(std::vector<Material> materials);
 
   const std::vector<Material>& materials() const { return materials_; }
-  // Case-insensitive; throws std::invalid_argument listing the known names when there is none.
+  // Case-insensitive; throws std::invalid_argument listing the known names, and where they were
+  // looked for, when there is none.
   const Material& find(const std::string& name) const;
+
+  // Where the materials come from ("assets/materials.json", "the lab's folder …"), for find's error.
+  const std::vector<std::string>& looked_in() const { return looked_in_; }
+  void set_looked_in(std::vector<std::string> places) { looked_in_ = std::move(places); }
 
  private:
   std::vector<Material> materials_;
+  std::vector<std::string> looked_in_;
 };
 
 // The elastic constants the FEM needs.
@@ -61,8 +67,13 @@ IsotropicMaterial elastic_part(const Material& material);
 // validate(IsotropicMaterial) checks them, negative damping, anything not finite.
 void validate(const Material& material);
 
-// Format "nibrig-materials", version 1 (`basis` optional). Throws io::FormatError naming the file and
-// field.
+// Format "nibrig-materials", version 1 (`basis` optional): the file alone. Throws io::FormatError
+// naming the file and field.
+MaterialTable read_material_file(const std::filesystem::path& file);
+
+// The file's materials, then the lab's own calibrated ones (lab_materials.hpp: the user store's
+// materials folder), so that every command that takes a material by name finds a lab's. On a name in
+// both, the file's wins. Throws what read_material_file throws, for the file or a lab file.
 MaterialTable read_material_table(const std::filesystem::path& file);
 
 }  // namespace nibrig::model::mechanics

@@ -55,7 +55,9 @@ struct RingDownFit {
 
 // Coarse search over modulus and first-mode damping on magnitude spectra (insensitive to release
 // time and gain), release time from the cross-correlation, then Levenberg-Marquardt on
-// (ln E, ln λ, release time) with the gain solved in closed form at every step. Throws
+// (ln E, ln λ, release time) with the gain solved in closed form at every step, and last
+// Gauss-Newton on all four together, so that the fit is the least-squares one whose uncertainty
+// ring_down_uncertainty.hpp gives. Throws
 // std::invalid_argument for an empty model, a non-positive reference modulus or preload, or a trace
 // without signal.
 RingDownFit fit_ring_down(const modal::ModalModel& reference, const RingDownOptions& options,

@@ -13,15 +13,15 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr double kLength = 0.18, kWidth = 0.02, kThickness = 0.002, kModulus = 0.45e9;
+constexpr double kBuilderLength = 0.18, kBuilderWidth = 0.02, kBuilderThickness = 0.002, kBuilderModulus = 0.45e9;
 
 class CantileverModel : public ::testing::Test {
  protected:
   // ν = 0 so that beam theory is the exact thin limit (see modal_analysis_test.cpp); 12 modes of
   // the 8 mm mesh hold the first six thickness bendings.
   CantileverModel()
-      : mesh_(test::box_mesh({kLength, kWidth, kThickness}, 8e-3)),
-        system_(assemble(mesh_, {{"VeroClear", kModulus, 0.0, 1180.0}}, {"clamp"})),
+      : mesh_(test::box_mesh({kBuilderLength, kBuilderWidth, kBuilderThickness}, 8e-3)),
+        system_(assemble(mesh_, {{"VeroClear", kBuilderModulus, 0.0, 1180.0}}, {"clamp"})),
         modes_(compute_modes(system_, options())),
         locator_(mesh_) {}
 
@@ -39,9 +39,9 @@ class CantileverModel : public ::testing::Test {
 
 TEST_F(CantileverModel, ModalSumsGiveTheBeamsStaticCompliances) {
   ModalProbe probe;
-  probe.tip = {kLength, kWidth / 2, kThickness / 2};  // middle of the free end
+  probe.tip = {kBuilderLength, kBuilderWidth / 2, kBuilderThickness / 2};  // middle of the free end
   probe.tip_direction = Eigen::Vector3d::UnitZ();
-  probe.sensor = {kLength / 2, kWidth / 2, kThickness};  // mid-span, on the top face
+  probe.sensor = {kBuilderLength / 2, kBuilderWidth / 2, kBuilderThickness};  // mid-span, on the top face
   probe.sensor_axis = Eigen::Vector3d::UnitZ();
   const double alpha = 0.5, lambda = 1.25e-3;  // 1/s and s; the paper's fitted λ
   const modal::ModalModel model = build_modal_model(locator_, modes_, alpha, lambda, probe);
@@ -53,14 +53,14 @@ TEST_F(CantileverModel, ModalSumsGiveTheBeamsStaticCompliances) {
   // many bendings) carry all but 0.03 % of the tip sum (Σ_n 4/(β_n L)⁴ = 1/3, and n > 5 adds
   // 1e-4 of it); shear adds 0.007 % and the 8 mm mesh is 0.03 % stiff in the first mode: 0.5 %
   // bounds them all with room, and a wrong normalisation or probe would be off by far more.
-  const double ei = kModulus * kWidth * std::pow(kThickness, 3) / 12.0;
+  const double ei = kBuilderModulus * kBuilderWidth * std::pow(kBuilderThickness, 3) / 12.0;
   double tip = 0.0, mid = 0.0;
   for (std::size_t i = 0; i < model.size(); ++i) {
     tip += model.input[i] * model.input[i] / (model.omega[i] * model.omega[i]);
     mid += model.output[i] * model.input[i] / (model.omega[i] * model.omega[i]);
   }
-  const double tip_beam = std::pow(kLength, 3) / (3 * ei);
-  const double mid_beam = 5 * std::pow(kLength, 3) / (48 * ei);
+  const double tip_beam = std::pow(kBuilderLength, 3) / (3 * ei);
+  const double mid_beam = 5 * std::pow(kBuilderLength, 3) / (48 * ei);
   EXPECT_NEAR(tip, tip_beam, 0.005 * tip_beam);
   EXPECT_NEAR(mid, mid_beam, 0.005 * mid_beam);
 
@@ -73,8 +73,8 @@ TEST_F(CantileverModel, ModalSumsGiveTheBeamsStaticCompliances) {
 
 TEST_F(CantileverModel, BadProbesAndCoefficientsAreRejected) {
   ModalProbe good;
-  good.tip = {kLength, kWidth / 2, kThickness / 2};
-  good.sensor = {kLength / 2, kWidth / 2, kThickness};
+  good.tip = {kBuilderLength, kBuilderWidth / 2, kBuilderThickness / 2};
+  good.sensor = {kBuilderLength / 2, kBuilderWidth / 2, kBuilderThickness};
   EXPECT_NO_THROW(build_modal_model(locator_, modes_, 0.0, 1e-3, good));
 
   ModalProbe p = good;
@@ -88,7 +88,7 @@ TEST_F(CantileverModel, BadProbesAndCoefficientsAreRejected) {
   EXPECT_THAT([&] { build_modal_model(locator_, modes_, 0.0, -1e-3, good); },
               ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("lambda")));
   p = good;
-  p.tip = {kLength + 0.01, kWidth / 2, kThickness / 2};  // 10 mm past the end
+  p.tip = {kBuilderLength + 0.01, kBuilderWidth / 2, kBuilderThickness / 2};  // 10 mm past the end
   EXPECT_THAT([&] { build_modal_model(locator_, modes_, 0.0, 1e-3, p); },
               ::testing::ThrowsMessage<std::invalid_argument>(
                   HasSubstr("is outside the body: nearest surface is 10 mm away")));

@@ -1,0 +1,114 @@
+#include "model/mechanics/lab_materials.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+#include <system_error>
+
+#include "model/io/atomic_file.hpp"
+#include "model/io/format_error.hpp"
+#include "model/io/user_store.hpp"
+
+namespace nibrig::model::mechanics {
+namespace {
+
+bool same_lab_name(const std::string& a, const std::string& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](unsigned char x, unsigned char y) {
+    return std::tolower(x) == std::tolower(y);
+  });
+}
+
+bool table_has(const MaterialTable& table, const std::string& name) {
+  return std::any_of(table.materials().begin(), table.materials().end(),
+                     [&](const Material& m) { return same_lab_name(m.name, name); });
+}
+
+nlohmann::json material_entry(const Material& m) {
+  nlohmann::json j{{"name", m.name},
+                   {"youngs_modulus", m.youngs_modulus},
+                   {"poisson_ratio", m.poisson_ratio},
+                   {"density", m.density}};
+  if (m.damping) j["rayleigh_mass"] = m.damping->mass, j["rayleigh_stiffness"] = m.damping->stiffness;
+  j["basis"] = m.basis;
+  j["source"] = m.source;
+  return j;
+}
+
+}  // namespace
+
+std::filesystem::path lab_materials_folder() {
+  return io::user_store_folder("NIBRIG_MATERIALS", "materials");
+}
+
+std::filesystem::path lab_material_file(const std::string& name) {
+  return io::user_store_file(lab_materials_folder(), name, "material");
+}
+
+std::vector<Material> read_lab_materials(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return {};
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  std::vector<Material> out;
+  for (const auto& file : files) {
+    const MaterialTable one = read_material_file(file);
+    if (one.materials().size() != 1)
+      throw io::FormatError(file, "field 'materials'",
+                            "a lab material's file holds exactly one material, found " +
+                                std::to_string(one.materials().size()));
+    const Material& m = one.materials().front();
+    // The file name is how the lab finds it again: a file renamed by hand would hide its material.
+    if (io::user_store_file(folder, m.name, "material").filename() != file.filename())
+      throw io::FormatError(file, "field 'materials[0].name'",
+                            "'" + m.name + "' belongs in " +
+                                io::user_store_file(folder, m.name, "material").filename().string());
+    out.push_back(m);
+  }
+  return out;
+}
+
+MaterialTable with_lab_materials(const MaterialTable& table, const std::filesystem::path& folder) {
+  std::vector<Material> all = table.materials();
+  for (auto& m : read_lab_materials(folder))
+    if (!table_has(table, m.name)) all.push_back(std::move(m));
+  MaterialTable out(std::move(all));
+  std::vector<std::string> places = table.looked_in();
+  places.push_back("the lab's materials in " + folder.string());
+  out.set_looked_in(std::move(places));
+  return out;
+}
+
+void check_lab_material_name(const std::string& name, const MaterialTable& bundled, bool replace) {
+  if (name.empty()) throw std::invalid_argument("a lab material needs a name");
+  const auto file = lab_material_file(name);
+  if (table_has(bundled, name))
+    throw std::invalid_argument("material name '" + name +
+                                "' is a bundled material's: give the lab's own a distinct name "
+                                "(e.g. '" + name + "-lab'); the bundled table is never "
+                                "written over");
+  std::error_code error;
+  if (!replace && std::filesystem::exists(file, error))
+    throw std::invalid_argument("the lab already has a material '" + name + "' (" +
+                                file.string() + "): give another name, or replace it on purpose");
+}
+
+std::filesystem::path save_lab_material(const Material& material, const nlohmann::json& calibration,
+                                        const MaterialTable& bundled, bool replace) {
+  validate(material);
+  check_lab_material_name(material.name, bundled, replace);
+  const auto file = lab_material_file(material.name);
+  Material saved = material;
+  saved.basis = "fitted";
+  nlohmann::json root{{"format", "nibrig-materials"},
+                      {"version", 1},
+                      {"comment", "A lab's own material, fitted by nibrig material calibrate."},
+                      {"materials", nlohmann::json::array({material_entry(saved)})},
+                      {"calibration", calibration}};
+  std::filesystem::create_directories(file.parent_path());
+  io::write_file_atomically(file, root.dump(2) + "\n");
+  return file;
+}
+
+}  // namespace nibrig::model::mechanics
