@@ -78,6 +78,7 @@ int run(int argc, char** argv) {
   add_predict_command(app, global);
   add_design_command(app, global);
   add_export_command(app, global);
+  add_material_command(app, global);
   add_render_command(app, global);
   add_audio_commands(app, global);
   add_pen_command(app, global);

@@ -35,6 +35,8 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
 void add_rig_setup_commands(CLI::App* rig, std::shared_ptr<const GlobalOptions> global);
 // `rig parts`: the rig's printed parts as files a printer takes, registered on `rig` too.
 void add_rig_parts_command(CLI::App* rig, std::shared_ptr<const GlobalOptions> global);
+// `material calibrate bar|ringdown` and `material list`: a lab's materials calibrated from prints.
+void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 

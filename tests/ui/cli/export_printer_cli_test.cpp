@@ -19,6 +19,7 @@
 #include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
+#include "tests/ui/cli/gcode_reading.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -31,57 +32,6 @@ std::string printer_text_of(const std::filesystem::path& file) {
 // The profiles by their bundled names only: a lab's own folder must not stand in for them.
 void printer_isolated_store() {
   ::setenv("NIBRIG_PRINTERS", nibrig::test::scratch_dir("cli_printer_store").c_str(), 1);
-}
-
-// "; key = value" of a G-code's settings block (PrusaSlicer writes it at the end).
-std::map<std::string, std::string> gcode_settings(const std::string& gcode) {
-  std::map<std::string, std::string> out;
-  std::istringstream in(gcode);
-  for (std::string l; std::getline(in, l);) {
-    if (l.rfind("; ", 0) != 0) continue;
-    const auto eq = l.find(" = ");
-    if (eq != std::string::npos) out[l.substr(2, eq - 2)] = l.substr(eq + 3);
-  }
-  return out;
-}
-
-// Filament (mm of it) pushed by extruding moves (with X or Y), by the ;TYPE: of the feature they
-// print: absolute E (M82) reset by G92, or relative (M83). Retractions and primes move E alone and
-// are left out, so the sum is what was laid down.
-std::map<std::string, double> gcode_filament_by_feature(const std::string& gcode) {
-  std::map<std::string, double> mm;
-  std::istringstream in(gcode);
-  std::string type = "none";
-  double e = 0.0;
-  bool relative = false;
-  for (std::string l; std::getline(in, l);) {
-    if (l.rfind(";TYPE:", 0) == 0) {
-      type = l.substr(6);
-      continue;
-    }
-    l = l.substr(0, l.find(';'));
-    std::istringstream words(l);
-    std::string command;
-    if (!(words >> command)) continue;
-    if (command == "M83") relative = true;
-    if (command == "M82") relative = false;
-    if (command != "G1" && command != "G0" && command != "G92") continue;
-    bool xy = false, has_e = false;
-    double new_e = 0.0;
-    for (std::string w; words >> w;) {
-      if (w[0] == 'X' || w[0] == 'Y') xy = true;
-      if (w[0] == 'E') has_e = true, new_e = std::stod(w.substr(1));
-    }
-    if (!has_e) continue;
-    if (command == "G92") {
-      e = new_e;
-      continue;
-    }
-    const double pushed = relative ? new_e : new_e - e;
-    if (!relative) e = new_e;
-    if (pushed > 0 && xy) mm[type] += pushed;
-  }
-  return mm;
 }
 
 double solid_volume_mm3(const std::filesystem::path& three_mf) {
@@ -124,7 +74,7 @@ TEST(ExportPrinterCli, PrusaSlicerSlicesTheFdmProfilesExportAsTheSolidItModelled
       const auto sliced = nibrig::test::run_program(args, out);
       ASSERT_EQ(sliced.exit_code, 0) << sliced.output;
       const std::string gcode = printer_text_of(gcode_file);
-      const auto settings = gcode_settings(gcode);
+      const auto settings = test::gcode_settings(gcode);
       const auto printed = [&](const std::string& key) { return settings.count(key) ? settings.at(key) : "(missing)"; };
       // PrusaSlicer's own record of what it printed with: a solid part, and every setting the
       // profile gives as the profile gives it.
@@ -132,7 +82,7 @@ TEST(ExportPrinterCli, PrusaSlicerSlicesTheFdmProfilesExportAsTheSolidItModelled
       for (const auto& [key, value] : profile.slicer_settings) EXPECT_EQ(printed(key), value) << key;
       EXPECT_NEAR(std::stod(printed("nozzle_diameter")), profile.nozzle_diameter_m * 1e3, 1e-9);
       EXPECT_NEAR(std::stod(printed("layer_height")), profile.layer_height_m * 1e3, 1e-9);
-      features[with_ini] = gcode_filament_by_feature(gcode);
+      features[with_ini] = test::gcode_filament_by_feature(gcode);
       const std::string diameter = profile.slicer_setting("filament_diameter");
       const double filament_mm = diameter.empty() ? 1.75 : std::stod(diameter);  // PrusaSlicer's default: 1.75
       const double filament_area = std::numbers::pi * filament_mm * filament_mm / 4;  // mm²
