@@ -122,4 +122,15 @@ std::vector<ExemplarFit> prediction_errors(const ForcingModel& model,
   return out;
 }
 
+std::vector<ExemplarFit> unused_print_errors(const ForcingModel& model, std::span<const ForcingExemplar> exemplars,
+                                             const std::string& material, std::span<const ForcingExemplar> used) {
+  std::vector<ForcingExemplar> others;
+  for (const auto& e : exemplars)
+    if (e.material == material && model.surface_forcing.count(e.surface) &&
+        std::none_of(used.begin(), used.end(),
+                     [&](const auto& p) { return p.tool == e.tool && p.surface == e.surface; }))
+      others.push_back(e);
+  return prediction_errors(model, others);
+}
+
 }  // namespace nibrig::model::forcing

@@ -55,4 +55,9 @@ std::vector<ForcingExemplar> tools_on_surface(std::span<const ForcingExemplar> e
 std::vector<ExemplarFit> prediction_errors(const ForcingModel& model,
                                            std::span<const ForcingExemplar> exemplars);
 
+// The exemplars of `material` a calibration did not use (`used`), on surfaces `model` has,
+// predicted by it: how well a calibration from a few prints predicts the material's others.
+std::vector<ExemplarFit> unused_print_errors(const ForcingModel& model, std::span<const ForcingExemplar> exemplars,
+                                             const std::string& material, std::span<const ForcingExemplar> used);
+
 }  // namespace nibrig::model::forcing

@@ -204,13 +204,7 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
   for (const auto& p : c.print_fits)
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (in sample)\n", p.tool, p.surface,
                              p.rms_db);
-  std::vector<forcing::ForcingExemplar> others;
-  for (const auto& e : forcing::prints_of_material(inputs.exemplars, o.material))
-    if (std::none_of(prints.begin(), prints.end(),
-                     [&](const auto& p) { return p.tool == e.tool && p.surface == e.surface; }) &&
-        c.model.surface_forcing.count(e.surface))
-      others.push_back(e);
-  for (const auto& p : forcing::prediction_errors(c.model, others))
+  for (const auto& p : forcing::unused_print_errors(c.model, inputs.exemplars, o.material, prints))
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (predicted){}\n", p.tool, p.surface,
                              p.rms_db, versus_repeatability(p.rms_db, repeatability));
   std::cout << calibrated_curve_rows(c) << calibration_uncertainty_note(c);

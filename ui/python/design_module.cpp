@@ -219,6 +219,7 @@ void add_design_module(py::module_ m) {
         "catalog once and kept in the user cache), the stylus template and materials; modes and mesh_size (m) "
         "as the template's when 0.");
   add_design_mechanics(m);
+  add_forcing_calibration(m);
 }
 
 }  // namespace nibrig::ui::python

@@ -97,3 +97,41 @@ def test_the_forcing_model_predicts_what_a_prediction_predicts(designer):
     assert forcing.residual_rms_db > 0 and len(forcing.exemplar_fits) > 0
     with pytest.raises(ValueError, match="moon"):
         forcing.surface_forcing("moon")
+
+
+def test_a_material_calibrated_in_python_is_what_the_command_line_calibrates(tmp_path, monkeypatch):
+    # A lab's model without DM95 (the command line's check writes one with DM95 calibrated; its curve
+    # is taken out here), then DM95 calibrated against it from its 1 and 4 mm prints, in both faces.
+    monkeypatch.setenv("NIBRIG_FORCING_MODELS", str(tmp_path / "store"))
+    command = nibrig_command()
+    coarse = ["--modes", "32", "--mesh-size", "0.004"]
+    subprocess.run([command, "forcing", "calibrate-material", "--material", "DM95", "-o", str(tmp_path / "dm95.json")]
+                   + coarse, check=True, capture_output=True)
+    model = json.loads((tmp_path / "dm95.json").read_text())
+    model["material_curves"] = [c for c in model["material_curves"] if c["material"] != "DM95"]
+    (tmp_path / "without.json").write_text(json.dumps(model))
+    subprocess.run([command, "forcing", "calibrate-material", "--material", "DM95", "--tips", "1,4", "--forcing",
+                    str(tmp_path / "without.json"), "-o", str(tmp_path / "cli.json")] + coarse,
+                   check=True, capture_output=True)
+    cli = next(c for c in json.loads((tmp_path / "cli.json").read_text())["material_curves"] if c["material"] == "DM95")
+
+    c = nibrig.design.calibrate_material("DM95", forcing=tmp_path / "without.json", tips_mm=[1, 4], **COARSE)
+    assert c.name == "DM95" and c.prints == 2
+    db = 20 / np.log(10)
+    # The same fit of the same prints: equal to the file's 17 digits.
+    np.testing.assert_allclose(c.gain_db, db * np.array(cli["log_gain"]), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(c.gain_se_db, db * np.array(cli["log_gain_se"]), rtol=0, atol=1e-9)
+    assert all(se > 0 for se in c.gain_se_db)
+    # The 2 mm prints, not calibrated on, are predicted; every print calibrated on is fitted.
+    assert {p["tool"] for p in c.predicted} == {"DM952"}
+    assert {p["tool"] for p in c.fits} == {"DM951", "DM954"}
+
+    kept = c.keep("lab-DM95")
+    assert kept == tmp_path / "store" / "lab-DM95.json"
+    with pytest.raises(ValueError, match="stored already"):
+        c.keep("lab-DM95")
+    # Kept by name, it is the model a designer predicts with.
+    assert "DM95" in nibrig.design.designer(forcing="lab-DM95", **COARSE).forcing.materials
+    # A material the model has already is refused (a calibration adds one, under a new name).
+    with pytest.raises(ValueError, match="DM85"):
+        nibrig.design.calibrate_material("DM85", forcing=tmp_path / "without.json", **COARSE)

@@ -8,5 +8,9 @@ Search = _design.Search
 Modes = _design.Modes
 Forcing = _design.Forcing
 designer = _design.designer
+Calibration = _design.Calibration
+calibrate_material = _design.calibrate_material
+calibrate_surface = _design.calibrate_surface
 
-__all__ = ["Designer", "Prediction", "Search", "Modes", "Forcing", "designer"]
+__all__ = ["Designer", "Prediction", "Search", "Modes", "Forcing", "designer", "Calibration", "calibrate_material",
+           "calibrate_surface"]

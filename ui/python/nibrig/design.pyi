@@ -1,6 +1,7 @@
 """Predicted designs (Sec. 5.3), their place in a space, and the design searches (Sec. 6.2, 7)."""
 
 import os
+import pathlib
 from typing import Any, Callable, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -124,3 +125,55 @@ def designer(
     progress: Optional[Callable[[str, int, int], object]] = None,
 ) -> Designer:
     """Reads what predicting needs; mesh_size in m, 0: the template's."""
+
+class Calibration:
+    @property
+    def name(self) -> str: ...
+    @property
+    def knot_frequencies_hz(self) -> list[float]: ...
+    @property
+    def gain_db(self) -> list[float]:
+        """A material's 20 log10 m(f) at the knots (empty for a surface)."""
+    @property
+    def gain_se_db(self) -> list[float]: ...
+    @property
+    def rms_se_db(self) -> float: ...
+    @property
+    def prints(self) -> int: ...
+    @property
+    def exemplars(self) -> int: ...
+    @property
+    def degrees_of_freedom(self) -> float: ...
+    @property
+    def residual_rms_db(self) -> float: ...
+    @property
+    def fits(self) -> list[dict[str, Any]]: ...
+    @property
+    def predicted(self) -> list[dict[str, Any]]: ...
+    def save(self, path: _Path) -> None: ...
+    def keep(self, name: str, *, replace: bool = False) -> pathlib.Path:
+        """Keeps the model by name in the lab's store; designer(forcing=name) finds it."""
+
+def calibrate_material(
+    material: str,
+    *,
+    forcing: _Path,
+    tips_mm: Optional[Sequence[float]] = None,
+    catalog: Optional[_Path] = None,
+    modes: int = 0,
+    mesh_size: float = 0.0,
+    progress: Optional[Callable[[str, int, int], object]] = None,
+) -> Calibration:
+    """A new material's curve from its prints in the catalog, against a forcing model (a name or file)."""
+
+def calibrate_surface(
+    surface: str,
+    *,
+    forcing: _Path,
+    tools: Optional[Sequence[str]] = None,
+    catalog: Optional[_Path] = None,
+    modes: int = 0,
+    mesh_size: float = 0.0,
+    progress: Optional[Callable[[str, int, int], object]] = None,
+) -> Calibration:
+    """A new surface's forcing from the tools measured on it in the catalog, against a forcing model."""
