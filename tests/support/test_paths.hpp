@@ -35,4 +35,18 @@ class ScopedCacheDir {
   std::optional<std::string> old_;
 };
 
+// An environment variable set for one scope and put back as it was after it: a lab's own store
+// (NIBRIG_MATERIALS, NIBRIG_PRINTERS) pointed at a test's scratch folder.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(std::string name, const std::string& value);
+  ~ScopedEnvironment();
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  std::string name_;
+  std::optional<std::string> old_;
+};
+
 }  // namespace nibrig::test

@@ -25,24 +25,6 @@ std::string lab_file_text(const std::filesystem::path& file) {
   return s.str();
 }
 
-// $NIBRIG_MATERIALS pointed at a scratch folder for one test, and put back after it (the suite's
-// own setting keeps a developer's materials out of every test).
-class LabStoreForTest {
- public:
-  explicit LabStoreForTest(const std::string& name) : folder_(nibrig::test::scratch_dir(name)) {
-    if (const char* v = std::getenv("NIBRIG_MATERIALS")) before_ = v;
-    ::setenv("NIBRIG_MATERIALS", folder_.c_str(), 1);
-  }
-  ~LabStoreForTest() {
-    if (before_.empty()) ::unsetenv("NIBRIG_MATERIALS");
-    else ::setenv("NIBRIG_MATERIALS", before_.c_str(), 1);
-  }
-  const std::filesystem::path& folder() const { return folder_; }
-
- private:
-  std::filesystem::path folder_;
-  std::string before_;
-};
 
 Material lab_pla(const std::string& name) {
   Material m;
@@ -57,8 +39,8 @@ Material lab_pla(const std::string& name) {
 }
 
 TEST(LabMaterials, SavedInTheUserStoreBesideNeverOverTheBundledTable) {
-  const LabStoreForTest lab("lab_materials_saved");
-  const auto& store = lab.folder();
+  const auto store = nibrig::test::scratch_dir("lab_materials_saved");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
   const auto bundled_file = io::default_materials();
   const std::string bundled_before = lab_file_text(bundled_file);
   const MaterialTable bundled = read_material_file(bundled_file);
@@ -81,7 +63,7 @@ TEST(LabMaterials, SavedInTheUserStoreBesideNeverOverTheBundledTable) {
 }
 
 TEST(LabMaterials, ABundledNameIsRefusedAndADistinctOneTaken) {
-  const LabStoreForTest lab("lab_materials_bundled_name");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_bundled_name").string());
   const MaterialTable bundled = read_material_file(io::default_materials());
   try {
     save_lab_material(lab_pla("pla"), {}, bundled, true);  // even with replace: never the bundled
@@ -95,8 +77,8 @@ TEST(LabMaterials, ABundledNameIsRefusedAndADistinctOneTaken) {
 }
 
 TEST(LabMaterials, AnUnknownNameSaysWhereItLooked) {
-  const LabStoreForTest lab("lab_materials_unknown");
-  const auto& store = lab.folder();
+  const auto store = nibrig::test::scratch_dir("lab_materials_unknown");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
   const MaterialTable table = read_material_table(io::default_materials());
   try {
     table.find("no-such-resin");
@@ -109,7 +91,7 @@ TEST(LabMaterials, AnUnknownNameSaysWhereItLooked) {
 }
 
 TEST(LabMaterials, ATableGivenByNameWinsOverALabMaterialOfTheSameName) {
-  const LabStoreForTest lab("lab_materials_shadow");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_shadow").string());
   const MaterialTable bundled = read_material_file(io::default_materials());
   save_lab_material(lab_pla("shop-resin"), {}, bundled, false);
   const auto own = nibrig::test::scratch_dir("lab_materials_own_table") / "own.json";
@@ -122,8 +104,8 @@ TEST(LabMaterials, ATableGivenByNameWinsOverALabMaterialOfTheSameName) {
 }
 
 TEST(LabMaterials, AFileRenamedByHandOrHoldingTwoIsRefusedNamingIt) {
-  const LabStoreForTest lab("lab_materials_bad_file");
-  const auto& store = lab.folder();
+  const auto store = nibrig::test::scratch_dir("lab_materials_bad_file");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
   std::ofstream(store / "other.json") << R"({"format": "nibrig-materials", "version": 1, "materials": [
     {"name": "shop-resin", "youngs_modulus": 1.5e9, "poisson_ratio": 0.4, "density": 1100,
      "source": "s"}]})";

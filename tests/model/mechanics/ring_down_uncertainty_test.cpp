@@ -124,28 +124,10 @@ TEST(RingDownUncertainty, CorrelatedResidualsWidenTheBounds) {
   EXPECT_GT(uc.youngs_modulus_sd, 2.0 * uw.youngs_modulus_sd);
 }
 
-// $NIBRIG_MATERIALS pointed at a scratch folder for one test, and put back after it (the suite's
-// own setting keeps a developer's materials out of every test).
-class RingDownLabStore {
- public:
-  explicit RingDownLabStore(const std::string& name) : folder_(nibrig::test::scratch_dir(name)) {
-    if (const char* v = std::getenv("NIBRIG_MATERIALS")) before_ = v;
-    ::setenv("NIBRIG_MATERIALS", folder_.c_str(), 1);
-  }
-  ~RingDownLabStore() {
-    if (before_.empty()) ::unsetenv("NIBRIG_MATERIALS");
-    else ::setenv("NIBRIG_MATERIALS", before_.c_str(), 1);
-  }
-  const std::filesystem::path& folder() const { return folder_; }
-
- private:
-  std::filesystem::path folder_;
-  std::string before_;
-};
 
 TEST(RingDownUncertainty, AFittedMaterialSavedByNameIsTheOnePredictionsUse) {
-  const RingDownLabStore lab("ring_down_lab_store");
-  const auto& store = lab.folder();
+  const auto store = nibrig::test::scratch_dir("ring_down_lab_store");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
   const HiddenBar h;
   RingDownCalibrationOptions options;
   options.name = "lab-pla-hidden";

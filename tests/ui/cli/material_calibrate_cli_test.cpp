@@ -38,15 +38,18 @@ std::string calibrate_text_of(const std::filesystem::path& file) {
 }
 
 // The lab's materials and printers of this test alone: nothing of a developer's enters.
-std::filesystem::path calibrate_isolated_stores(const std::string& name) {
-  const auto root = nibrig::test::scratch_dir(name);
-  ::setenv("NIBRIG_MATERIALS", (root / "lab_materials").c_str(), 1);
-  ::setenv("NIBRIG_PRINTERS", (root / "lab_printers").c_str(), 1);
-  return root;
-}
+struct CalibrateStores {
+  explicit CalibrateStores(const std::string& name)
+      : root(nibrig::test::scratch_dir(name)),
+        materials("NIBRIG_MATERIALS", (root / "lab_materials").string()),
+        printers("NIBRIG_PRINTERS", (root / "lab_printers").string()) {}
+  std::filesystem::path root;
+  nibrig::test::ScopedEnvironment materials, printers;
+};
 
 TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
-  const auto out = calibrate_isolated_stores("cli_material_bar");
+  const CalibrateStores stores("cli_material_bar");
+  const auto& out = stores.root;
   const auto bar = out / "bar";
   ::testing::internal::CaptureStdout();
   const int code = test::run_cli(
@@ -102,7 +105,8 @@ TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
 }
 
 TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) {
-  const auto out = calibrate_isolated_stores("cli_material_ringdown");
+  const CalibrateStores stores("cli_material_ringdown");
+  const auto& out = stores.root;
   const auto bar = out / "bar";
   ASSERT_EQ(test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer", "prusa-mk3s", "-o",
                            bar.string()}),
@@ -176,7 +180,8 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
 }
 
 TEST(MaterialCalibrateCli, AnUnknownMaterialOrAPrinterThatCannotMakeTheBarIsRefused) {
-  const auto out = calibrate_isolated_stores("cli_material_refusals");
+  const CalibrateStores stores("cli_material_refusals");
+  const auto& out = stores.root;
   ::testing::internal::CaptureStderr();
   EXPECT_NE(test::run_cli({"material", "calibrate", "bar", "--material", "unobtainium", "--printer", "prusa-mk3s",
                            "-o", (out / "bar").string()}),
