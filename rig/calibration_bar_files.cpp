@@ -118,7 +118,8 @@ std::string calibration_bar_instructions(const CalibrationBar& bar,
       "- Pull the middle of the round end ({:g} mm from the square end) {:g} mm aside, along the "
       "thickness, against a ruler, and let go cleanly: slide the finger off, or cut a thread.\n",
       tip.x() * 1e3, bar.preload * 1e3);
-  out += "- Save the trace as CSV `time_s,acceleration_m_s2` (any gain: the fit finds it).\n\n";
+  out += "- Save the accelerometer's channel as a mono WAV, or as CSV "
+         "`time_s,acceleration_m_s2` (any gain: the fit finds it).\n\n";
   out += "## 4. Fit and save\n\n";
   out += fmt::format(
       "`nibrig material calibrate ringdown TRACE.csv --bar {} --name NAME` fits the modulus and "

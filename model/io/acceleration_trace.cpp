@@ -1,12 +1,17 @@
 #include "model/io/acceleration_trace.hpp"
 
+#include <sndfile.h>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
+#include "model/io/job_files.hpp"
 #include "model/io/rig_session.hpp"
 #include "model/io/text_lines.hpp"
 
@@ -73,12 +78,55 @@ AccelerationTrace read_csv_trace(const std::filesystem::path& file) {
   return trace;
 }
 
+// Closes a trace's WAV on every path out, including exceptions.
+struct TraceWavHandle {
+  SNDFILE* handle = nullptr;
+  ~TraceWavHandle() {
+    if (handle != nullptr) sf_close(handle);
+  }
+};
+
+// An accelerometer recorded through an audio input: one channel, any sample format, in the
+// input's full-scale units (libsndfile scales integers to ±1), which the fit's gain absorbs.
+AccelerationTrace read_wav_trace(const std::filesystem::path& file) {
+  SF_INFO info{};
+  TraceWavHandle wav;
+  wav.handle = sf_open(file.c_str(), SFM_READ, &info);
+  if (wav.handle == nullptr)
+    throw FormatError(file, "",
+                      std::string("expected a WAV file (libsndfile: ") + sf_strerror(nullptr) + ")");
+  note_input(file);
+  if (info.channels != 1)
+    throw FormatError(file, "header",
+                      "expected 1 channel (the accelerometer's), found " +
+                          std::to_string(info.channels) +
+                          ": save that channel alone, e.g. sox in.wav out.wav remix 1");
+  AccelerationTrace trace;
+  trace.sample_rate_hz = info.samplerate;
+  trace.acceleration_m_s2.resize(static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0)));
+  const sf_count_t got = sf_read_double(wav.handle, trace.acceleration_m_s2.data(), info.frames);
+  if (got != info.frames)
+    throw FormatError(file, "", "truncated: the header announces " + std::to_string(info.frames) +
+                                    " frames, the file holds " + std::to_string(got));
+  for (std::size_t i = 0; i < trace.acceleration_m_s2.size(); ++i)
+    if (!std::isfinite(trace.acceleration_m_s2[i]))
+      throw FormatError(file, "sample " + std::to_string(i), "expected a finite value");
+  if (trace.acceleration_m_s2.size() < kFewestSamples)
+    throw FormatError(file, "", "expected at least 16 samples, found " +
+                                    std::to_string(trace.acceleration_m_s2.size()));
+  return trace;
+}
+
 }  // namespace
 
 AccelerationTrace read_acceleration_trace(const std::filesystem::path& file_or_session) {
   std::error_code error;
   if (std::filesystem::is_directory(file_or_session, error))
     return read_session_trace(file_or_session);
+  std::string extension = file_or_session.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".wav") return read_wav_trace(file_or_session);
   return read_csv_trace(file_or_session);
 }
 

@@ -1,5 +1,6 @@
 // A single accelerometer trace sampled at a constant rate, as a ring-down test records it: a CSV
-// file with columns time_s,acceleration_m_s2 (optionally .csv.gz), or one of our session folders
+// file with columns time_s,acceleration_m_s2 (optionally .csv.gz), a mono WAV recorded through an
+// audio input (in its full-scale units: a fit must find the gain), or one of our session folders
 // (its acceleration stream, calibrated to m/s²).
 #pragma once
 
@@ -15,7 +16,8 @@ struct AccelerationTrace {
 
 inline constexpr const char* kAccelerationTraceHeader = "time_s,acceleration_m_s2";
 
-// Throws FormatError naming the file and line: missing column, non-numeric or non-finite value,
+// A file ending in .wav (any case) is read as a WAV. Throws FormatError naming the file and line:
+// a WAV of several channels, missing column, non-numeric or non-finite value,
 // times that do not increase or are not evenly spaced (within 1 % of the median step: a trace with
 // gaps cannot be fitted sample by sample), fewer than 16 samples.
 AccelerationTrace read_acceleration_trace(const std::filesystem::path& file_or_session);

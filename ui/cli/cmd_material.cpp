@@ -146,7 +146,7 @@ void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> gl
   auto fit = std::make_shared<RingDownSaveOptions>();
   auto* fit_cmd = calibrate->add_subcommand(
       "ringdown", "Fit a printed bar's ring-down and save the material by name");
-  fit_cmd->add_option("trace", fit->trace, "The accelerometer's trace: CSV time_s,acceleration_m_s2 or a session folder")
+  fit_cmd->add_option("trace", fit->trace, "The accelerometer's trace: a mono WAV from an audio input, CSV time_s,acceleration_m_s2, or a session folder")
       ->required();
   fit_cmd->add_option("--bar", fit->bar, "The bar's folder (or its calibration_bar.json)")->required();
   fit_cmd->add_option("--name", fit->name, "Name to save the fitted material under")->required();

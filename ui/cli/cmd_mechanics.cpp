@@ -330,12 +330,12 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
   ring_cmd->footer(
       "The test of the paper's Sec. 5.1: the design is clamped, its tip pushed aside by --preload "
       "and\n"
-      "released; <trace> is the sensor's acceleration (CSV time_s,acceleration_m_s2 or a session\n"
-      "folder). Fits E (all regions scaled together) and the Rayleigh stiffness term, with the "
+      "released; <trace> is the sensor's acceleration (CSV time_s,acceleration_m_s2, a mono WAV\n"
+      "from an audio input, or a session folder). Fits E (all regions scaled together) and the Rayleigh stiffness term, with the "
       "release\n"
       "time and, unless --calibrated, the sensor gain; writes a PNG of measured vs simulated (Fig. "
       "11).");
-  ring_cmd->add_option("trace", ring->trace, "Acceleration trace: CSV or session folder")
+  ring_cmd->add_option("trace", ring->trace, "Acceleration trace: CSV, mono WAV or session folder")
       ->required();
   ring_cmd->add_option("design", ring->design.design, "design.json or mesh file");
   add_design_options(ring_cmd, ring->design, false);

@@ -1,9 +1,12 @@
 #include "model/io/acceleration_trace.hpp"
 
 #include <gtest/gtest.h>
+#include <sndfile.h>
 
 #include <cmath>
+#include <vector>
 
+#include "model/io/format_error.hpp"
 #include "model/io/rig_session.hpp"
 #include "tests/model/io/io_test_files.hpp"
 #include "tests/support/test_paths.hpp"
@@ -86,6 +89,42 @@ TEST(AccelerationTrace, BadFilesNameFileLineAndExpectation) {
   nibrig::test::write_text(dir / "empty.csv", "");
   expect_message_names(format_error_of([&] { read_acceleration_trace(dir / "empty.csv"); }),
                        {"empty.csv", "time_s,acceleration_m_s2"});
+}
+
+// A WAV as an audio interface records it: 16-bit PCM at 8 kHz.
+void write_pcm16_wav(const std::filesystem::path& file, int channels, const std::vector<short>& frames) {
+  SF_INFO info{};
+  info.samplerate = 8000;
+  info.channels = channels;
+  info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
+  SNDFILE* out = sf_open(file.c_str(), SFM_WRITE, &info);
+  ASSERT_NE(out, nullptr) << sf_strerror(nullptr);
+  sf_write_short(out, frames.data(), static_cast<sf_count_t>(frames.size()));
+  sf_close(out);
+}
+
+TEST(AccelerationTrace, AnAudioInputsMonoWavIsReadInFullScaleUnits) {
+  const auto dir = nibrig::test::scratch_dir("acceleration_trace_wav");
+  std::vector<short> samples(400);
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    samples[i] = static_cast<short>(std::lround(16384 * std::sin(0.05 * static_cast<double>(i))));
+  write_pcm16_wav(dir / "ring.WAV", 1, samples);
+  const AccelerationTrace trace = read_acceleration_trace(dir / "ring.WAV");
+  EXPECT_EQ(trace.sample_rate_hz, 8000.0);  // the header's whole number, exactly
+  ASSERT_EQ(trace.acceleration_m_s2.size(), samples.size());
+  // libsndfile scales 16-bit integers by 1/32768: exact in a double.
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    EXPECT_EQ(trace.acceleration_m_s2[i], samples[i] / 32768.0) << i;
+
+  // A stereo recording is refused: which channel is the accelerometer's is for a person to say.
+  write_pcm16_wav(dir / "stereo.wav", 2, std::vector<short>(800, 100));
+  try {
+    read_acceleration_trace(dir / "stereo.wav");
+    FAIL() << "a stereo WAV was read";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("stereo.wav"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected 1 channel"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
