@@ -27,6 +27,8 @@ model::mechanics::RingDownCalibration calibrate_bar(const CalibrationBarRecord& 
                                    g.length * 1e3, g.width * 1e3, g.thickness * 1e3,
                                    g.clamp_length * 1e3, g.cutout ? "with its hole" : "no hole",
                                    bar.bar.material)},
+      // What the printer loads for it: a lab material is its printer's material, calibrated.
+      {"printed_as", bar.bar.material},
       {"printer", bar.printer},
       {"printer_process", bar.printer_process},
       {"date", model::io::now_utc_iso8601()}};

@@ -138,6 +138,7 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
   EXPECT_NEAR(e, true_modulus, 3 * e_sd);
   EXPECT_NEAR(l, lambda, 3 * l_sd);
   EXPECT_EQ(fit["printer"], "prusa-mk3s");
+  EXPECT_EQ(fit["printed_as"], "PLA");
   EXPECT_THAT(fit["recording"].get<std::string>(), HasSubstr("ring.csv"));
   EXPECT_THAT(fit["bar"].get<std::string>(), HasSubstr("calibration_bar.json"));
 

@@ -65,6 +65,8 @@ const std::vector<Row> kRows = {
     {"mechanics modes FILE --tip 0,nan,0 --sensor 0,0,0", "--tip"},
     {"mechanics modes FILE --tip 0,0,0 --sensor 0,0,0 --sensor-axis inf,0,0", "--sensor-axis"},
     {"mechanics ringdown FILE --preload=nan", "--preload"},
+    {"material calibrate bar --material PLA --printer prusa-mk3s -o OUT --length=nan", "--length"},
+    {"material calibrate bar --material PLA --printer prusa-mk3s -o OUT --length 210", "--length"},
     {"design --target cryon/office --surface glass --space FILE --modes=0", "--modes"},
     {"design --target cryon/office --surface glass --space FILE --mesh-size=nan", "--mesh-size"},
     {"design --target cryon/office --surface glass --space FILE --runners-up=-1", "--runners-up"},
