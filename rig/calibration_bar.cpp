@@ -1,8 +1,9 @@
 #include "rig/calibration_bar.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "model/design/printability.hpp"
 #include "model/design/slicer_settings.hpp"
@@ -41,7 +42,8 @@ Eigen::Vector3d bar_tip_on_print(const CalibrationBar& bar) {
   return fem_to_print(bar.geometry, mech::default_tip(bar.geometry).point);
 }
 
-PrintedPart calibration_bar_part(const CalibrationBar& bar, const model::io::PrinterProfile& printer) {
+PrintedPart calibration_bar_part(const CalibrationBar& bar,
+                                 const model::io::PrinterProfile& printer) {
   const mech::BarGeometry& g = bar.geometry;
   mech::validate(g);
   const double w = g.width, t = g.thickness, r = g.end_radius, end = g.length - r;
@@ -60,7 +62,8 @@ PrintedPart calibration_bar_part(const CalibrationBar& bar, const model::io::Pri
       s.cylinders.push_back({{end, y, 0}, {0, 0, t}, r});
   }
   if (g.cutout)  // through the thickness, overshooting both faces so no skin is left
-    s.cylinder_cuts.push_back({{g.length - g.cutout_offset, 0, -t}, {0, 0, 3 * t}, g.cutout_radius});
+    s.cylinder_cuts.push_back(
+        {{g.length - g.cutout_offset, 0, -t}, {0, 0, 3 * t}, g.cutout_radius});
 
   PrintSettings& p = part.settings;
   p.material = bar.material;
@@ -106,14 +109,15 @@ std::vector<std::string> calibration_bar_refusals(const model::io::PrinterProfil
   const double bed_short = std::min(printer.build_volume_m[0], printer.build_volume_m[1]);
   if (g.length > bed_long || g.width > bed_short || g.thickness > printer.build_volume_m[2])
     reasons.push_back(fmt::format(
-        "the {:g} × {:g} mm bar does not fit its {:g} × {:g} mm bed: give a length of at most {:g} mm "
+        "the {:g} × {:g} mm bar does not fit its {:g} × {:g} mm bed: give a length of at most {:g} "
+        "mm "
         "(with the clamp kept at {:g} mm)",
         g.length * 1e3, g.width * 1e3, printer.build_volume_m[0] * 1e3,
         printer.build_volume_m[1] * 1e3, std::floor(bed_long * 1e3), g.clamp_length * 1e3));
   const double smallest = model::design::smallest_tip_m(printer);
-  const double rim = g.cutout ? std::min(g.width / 2 - g.cutout_radius,
-                                         g.cutout_offset - g.cutout_radius)
-                              : g.width;
+  const double rim =
+      g.cutout ? std::min(g.width / 2 - g.cutout_radius, g.cutout_offset - g.cutout_radius)
+               : g.width;
   if (std::min(g.thickness, rim) < smallest)
     reasons.push_back(fmt::format("its thinnest wall, {:g} mm, is below the {:g} mm it resolves",
                                   std::min(g.thickness, rim) * 1e3, smallest * 1e3));

@@ -30,9 +30,10 @@ Eigen::Vector3d bar_sensor_on_print(const CalibrationBar& bar);
 Eigen::Vector3d bar_tip_on_print(const CalibrationBar& bar);
 
 // The bar lying flat (thickness along z, the clamped end at x = 0): its layers then run along the
-// bar, so the ring-down measures the in-plane modulus, the one a stylus lying on the bed bends with.
-// The print settings are the profile's. Throws what validate(BarGeometry) throws.
-PrintedPart calibration_bar_part(const CalibrationBar& bar, const model::io::PrinterProfile& printer);
+// bar, so the ring-down measures the in-plane modulus, the one a stylus lying on the bed bends
+// with. The print settings are the profile's. Throws what validate(BarGeometry) throws.
+PrintedPart calibration_bar_part(const CalibrationBar& bar,
+                                 const model::io::PrinterProfile& printer);
 
 // Why `printer` cannot make the bar, in words (empty when it can): a material it does not list, a
 // bar longer than its bed (naming the longest that fits), a thickness or the hole's rim below its

@@ -1,8 +1,9 @@
 #include "rig/calibration_bar_files.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <stdexcept>
 
 #include "model/design/printability.hpp"
@@ -38,7 +39,9 @@ nlohmann::json bar_geometry_json(const mech::BarGeometry& g) {
           {"cutout_offset_mm", g.cutout_offset * 1e3}};
 }
 
-nlohmann::json point_mm(const Eigen::Vector3d& p) { return {p.x() * 1e3, p.y() * 1e3, p.z() * 1e3}; }
+nlohmann::json point_mm(const Eigen::Vector3d& p) {
+  return {p.x() * 1e3, p.y() * 1e3, p.z() * 1e3};
+}
 
 }  // namespace
 
@@ -69,8 +72,10 @@ std::string calibration_bar_instructions(const CalibrationBar& bar,
   const double per_mm = 4e-3 / g.free_length();
   std::string slice = printer.slicer.empty() ? "the printer's own software" : printer.slicer;
   if (!files.ini.empty())
-    slice = "`" + model::design::prusa_slicer_command(printer, files.ini.filename(),
-                                                      files.three_mf.filename()) + "`";
+    slice = "`" +
+            model::design::prusa_slicer_command(printer, files.ini.filename(),
+                                                files.three_mf.filename()) +
+            "`";
   std::string out;
   out += fmt::format("# Ring-down calibration bar: {} on {}\n\n", bar.material, printer.printer);
   out += fmt::format(
@@ -84,16 +89,18 @@ std::string calibration_bar_instructions(const CalibrationBar& bar,
       bar.material);
   out += "## 1. Print\n\n";
   out += fmt::format("- Slice {} with {}.\n", files.three_mf.filename().string(), slice);
-  out += fmt::format("- The profile's settings: {}. Whatever they say of a stylus's orientation, "
-                     "the bar lies flat on the bed and needs no supports; its layers run along it, "
-                     "as a lying stylus's do.\n",
-                     model::design::describe_print_settings(printer));
+  out += fmt::format(
+      "- The profile's settings: {}. Whatever they say of a stylus's orientation, "
+      "the bar lies flat on the bed and needs no supports; its layers run along it, "
+      "as a lying stylus's do.\n",
+      model::design::describe_print_settings(printer));
   if (!printer.post_process.empty())
     out += "- After printing (the profile's advice for a stylus): " + printer.post_process + "\n";
-  out += fmt::format("- Weigh it: a solid bar of the table's density weighs {:.1f} g. Much less "
-                     "means it is not solid, and the fit would be of the infill, not the "
-                     "material.\n\n",
-                     mass * 1e3);
+  out += fmt::format(
+      "- Weigh it: a solid bar of the table's density weighs {:.1f} g. Much less "
+      "means it is not solid, and the fit would be of the infill, not the "
+      "material.\n\n",
+      mass * 1e3);
   out += "## 2. Mark, clamp, place the accelerometer\n\n";
   out += fmt::format(
       "- Mark a line across the bar {:g} mm from the square end, and the accelerometer's centre "
@@ -104,9 +111,10 @@ std::string calibration_bar_instructions(const CalibrationBar& bar,
       "clamp's edge on the line. The fit assumes a free length of {:g} mm: each millimetre off "
       "moves the fitted modulus by {:.1f} %.\n",
       g.clamp_length * 1e3, g.free_length() * 1e3, 100 * per_mm);
-  out += "- Glue the accelerometer (cyanoacrylate, or wax for a reusable sensor) on the mark, its "
-         "measuring axis through the thickness. The fit does not model its mass: use the lightest "
-         "board you have, and tape its cable to the table, not to the free bar.\n\n";
+  out +=
+      "- Glue the accelerometer (cyanoacrylate, or wax for a reusable sensor) on the mark, its "
+      "measuring axis through the thickness. The fit does not model its mass: use the lightest "
+      "board you have, and tape its cable to the table, not to the free bar.\n\n";
   out += "## 3. Pluck and record\n\n";
   out += fmt::format(
       "- The table's values for {} put the first bending mode near {:.1f} Hz. Record the "
@@ -118,8 +126,9 @@ std::string calibration_bar_instructions(const CalibrationBar& bar,
       "- Pull the middle of the round end ({:g} mm from the square end) {:g} mm aside, along the "
       "thickness, against a ruler, and let go cleanly: slide the finger off, or cut a thread.\n",
       tip.x() * 1e3, bar.preload * 1e3);
-  out += "- Save the accelerometer's channel as a mono WAV, or as CSV "
-         "`time_s,acceleration_m_s2` (any gain: the fit finds it).\n\n";
+  out +=
+      "- Save the accelerometer's channel as a mono WAV, or as CSV "
+      "`time_s,acceleration_m_s2` (any gain: the fit finds it).\n\n";
   out += "## 4. Fit and save\n\n";
   out += fmt::format(
       "`nibrig material calibrate ringdown TRACE.csv --bar {} --name NAME` fits the modulus and "
@@ -159,14 +168,14 @@ CalibrationBarWritten write_calibration_bar(const std::filesystem::path& folder,
     for (auto& v : surface.vertices) v = {-v[1], v[0], v[2]};
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const auto& v : surface.vertices)
-    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+    for (std::size_t k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
   model::io::ThreeMfPart three_mf;
   three_mf.name = "nibrig calibration bar " + bar.material;
   three_mf.placement_m = {printer.build_volume_m[0] / 2 - (lo[0] + hi[0]) / 2,
                           printer.build_volume_m[1] / 2 - (lo[1] + hi[1]) / 2, -lo[2]};
-  three_mf.metadata = {{"Title", three_mf.name},
-                       {"Application", "nibrig"},
-                       {"Description", part.purpose}};
+  three_mf.metadata = {
+      {"Title", three_mf.name}, {"Application", "nibrig"}, {"Description", part.purpose}};
   three_mf.regions.push_back({surface, bar.material, {230, 120, 40}});
   const auto settings = model::design::prusa_slicer_settings(printer);
   if (!settings.empty())
@@ -209,8 +218,8 @@ CalibrationBarWritten write_calibration_bar(const std::filesystem::path& folder,
 }
 
 CalibrationBarRecord read_calibration_bar(const std::filesystem::path& folder_or_file) {
-  const auto file = std::filesystem::is_directory(folder_or_file) ? folder_or_file / kBarRecord
-                                                                   : folder_or_file;
+  const auto file =
+      std::filesystem::is_directory(folder_or_file) ? folder_or_file / kBarRecord : folder_or_file;
   if (!std::filesystem::exists(file))
     throw std::invalid_argument(file.string() +
                                 ": no such file (expected the calibration_bar.json that `nibrig "

@@ -15,7 +15,8 @@
 namespace nibrig::rig {
 
 struct CalibrationBarFiles {
-  std::filesystem::path three_mf, stl, ini, drawing, instructions, record;  // ini: empty without PrusaSlicer
+  std::filesystem::path three_mf, stl, ini, drawing, instructions,
+      record;  // ini: empty without PrusaSlicer
 };
 
 // Where the files go in `folder`.

@@ -6,11 +6,9 @@
 
 namespace nibrig::rig {
 
-model::mechanics::RingDownCalibration calibrate_bar(const CalibrationBarRecord& bar,
-                                                    const std::filesystem::path& trace,
-                                                    const std::string& name,
-                                                    const model::mechanics::MaterialTable& materials,
-                                                    bool calibrated_trace) {
+model::mechanics::RingDownCalibration calibrate_bar(
+    const CalibrationBarRecord& bar, const std::filesystem::path& trace, const std::string& name,
+    const model::mechanics::MaterialTable& materials, bool calibrated_trace) {
   // The trace first: a wrong file should fail before a minute of meshing, not after.
   const model::io::AccelerationTrace recording = model::io::read_acceleration_trace(trace);
   const model::mechanics::DesignModel model =
@@ -23,10 +21,10 @@ model::mechanics::RingDownCalibration calibrate_bar(const CalibrationBarRecord& 
   options.provenance = {
       {"recording", std::filesystem::absolute(trace).lexically_normal().string()},
       {"bar", std::filesystem::absolute(bar.file).lexically_normal().string()},
-      {"bar_geometry", fmt::format("{:g} x {:g} x {:g} mm, clamped over {:g} mm, {} in {}",
-                                   g.length * 1e3, g.width * 1e3, g.thickness * 1e3,
-                                   g.clamp_length * 1e3, g.cutout ? "with its hole" : "no hole",
-                                   bar.bar.material)},
+      {"bar_geometry",
+       fmt::format("{:g} x {:g} x {:g} mm, clamped over {:g} mm, {} in {}", g.length * 1e3,
+                   g.width * 1e3, g.thickness * 1e3, g.clamp_length * 1e3,
+                   g.cutout ? "with its hole" : "no hole", bar.bar.material)},
       // What the printer loads for it: a lab material is its printer's material, calibrated.
       {"printed_as", bar.bar.material},
       {"printer", bar.printer},

@@ -15,10 +15,8 @@ namespace nibrig::rig {
 // (model/io/acceleration_trace.hpp: CSV or a session folder) and fits it; the provenance names the
 // recording, the bar's record and geometry, the printer profile and the time. Throws what reading,
 // building and fitting throw, each naming its file.
-model::mechanics::RingDownCalibration calibrate_bar(const CalibrationBarRecord& bar,
-                                                    const std::filesystem::path& trace,
-                                                    const std::string& name,
-                                                    const model::mechanics::MaterialTable& materials,
-                                                    bool calibrated_trace = false);
+model::mechanics::RingDownCalibration calibrate_bar(
+    const CalibrationBarRecord& bar, const std::filesystem::path& trace, const std::string& name,
+    const model::mechanics::MaterialTable& materials, bool calibrated_trace = false);
 
 }  // namespace nibrig::rig

@@ -28,7 +28,8 @@ nlohmann::json material_entry(const Material& m) {
                    {"youngs_modulus", m.youngs_modulus},
                    {"poisson_ratio", m.poisson_ratio},
                    {"density", m.density}};
-  if (m.damping) j["rayleigh_mass"] = m.damping->mass, j["rayleigh_stiffness"] = m.damping->stiffness;
+  if (m.damping)
+    j["rayleigh_mass"] = m.damping->mass, j["rayleigh_stiffness"] = m.damping->stiffness;
   j["basis"] = m.basis;
   j["source"] = m.source;
   return j;
@@ -61,9 +62,10 @@ std::vector<Material> read_lab_materials(const std::filesystem::path& folder) {
     const Material& m = one.materials().front();
     // The file name is how the lab finds it again: a file renamed by hand would hide its material.
     if (io::user_store_file(folder, m.name, "material").filename() != file.filename())
-      throw io::FormatError(file, "field 'materials[0].name'",
-                            "'" + m.name + "' belongs in " +
-                                io::user_store_file(folder, m.name, "material").filename().string());
+      throw io::FormatError(
+          file, "field 'materials[0].name'",
+          "'" + m.name + "' belongs in " +
+              io::user_store_file(folder, m.name, "material").filename().string());
     out.push_back(m);
   }
   return out;
@@ -86,12 +88,14 @@ void check_lab_material_name(const std::string& name, const MaterialTable& bundl
   if (table_has(bundled, name))
     throw std::invalid_argument("material name '" + name +
                                 "' is a bundled material's: give the lab's own a distinct name "
-                                "(e.g. '" + name + "-lab'); the bundled table is never "
+                                "(e.g. '" +
+                                name +
+                                "-lab'); the bundled table is never "
                                 "written over");
   std::error_code error;
   if (!replace && std::filesystem::exists(file, error))
-    throw std::invalid_argument("the lab already has a material '" + name + "' (" +
-                                file.string() + "): give another name, or replace it on purpose");
+    throw std::invalid_argument("the lab already has a material '" + name + "' (" + file.string() +
+                                "): give another name, or replace it on purpose");
 }
 
 std::filesystem::path save_lab_material(const Material& material, const nlohmann::json& calibration,

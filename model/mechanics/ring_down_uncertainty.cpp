@@ -9,7 +9,8 @@ namespace nibrig::model::mechanics {
 namespace {
 
 // The trace the fit's model makes at p = (ln E, ln λ, release time), before the gain.
-std::vector<double> released_trace(const modal::ModalModel& reference, const RingDownOptions& options,
+std::vector<double> released_trace(const modal::ModalModel& reference,
+                                   const RingDownOptions& options,
                                    const io::AccelerationTrace& trace, const Eigen::Vector3d& p) {
   const double ratio = std::exp(p[0]) / options.reference_modulus;
   const modal::ModalModel model =
@@ -21,9 +22,10 @@ std::vector<double> released_trace(const modal::ModalModel& reference, const Rin
 }  // namespace
 
 RingDownLinearisation linearise_ring_down(const modal::ModalModel& reference,
-                                         const RingDownOptions& options,
-                                         const io::AccelerationTrace& trace, double youngs_modulus,
-                                         double rayleigh_stiffness, double release_time, double gain) {
+                                          const RingDownOptions& options,
+                                          const io::AccelerationTrace& trace, double youngs_modulus,
+                                          double rayleigh_stiffness, double release_time,
+                                          double gain) {
   const auto& measured = trace.acceleration_m_s2;
   const int parameters = options.fit_gain ? 4 : 3;
   const auto n = static_cast<Eigen::Index>(measured.size());
@@ -43,25 +45,29 @@ RingDownLinearisation linearise_ring_down(const modal::ModalModel& reference,
     const auto a = released_trace(reference, options, trace, up);
     const auto b = released_trace(reference, options, trace, down);
     for (Eigen::Index i = 0; i < n; ++i)
-      out.jacobian(i, k) = gain * (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) / span;
+      out.jacobian(i, k) =
+          gain * (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) / span;
   }
   const auto at_fit = released_trace(reference, options, trace, p);
   out.residual.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     if (options.fit_gain) out.jacobian(i, 3) = at_fit[static_cast<std::size_t>(i)];
-    out.residual[i] = measured[static_cast<std::size_t>(i)] - gain * at_fit[static_cast<std::size_t>(i)];
+    out.residual[i] =
+        measured[static_cast<std::size_t>(i)] - gain * at_fit[static_cast<std::size_t>(i)];
   }
   return out;
 }
 
 RingDownUncertainty ring_down_uncertainty(const modal::ModalModel& reference,
                                           const RingDownOptions& options,
-                                          const io::AccelerationTrace& trace, const RingDownFit& fit) {
+                                          const io::AccelerationTrace& trace,
+                                          const RingDownFit& fit) {
   const auto& measured = trace.acceleration_m_s2;
   const int parameters = options.fit_gain ? 4 : 3;
   const auto n = static_cast<Eigen::Index>(measured.size());
   if (n <= parameters)
-    throw std::invalid_argument("ring-down uncertainty: the trace has no more samples than parameters");
+    throw std::invalid_argument(
+        "ring-down uncertainty: the trace has no more samples than parameters");
   if (!(fit.youngs_modulus > 0) || !(fit.rayleigh_stiffness > 0))
     throw std::invalid_argument(
         "ring-down uncertainty: the fit has no positive modulus and stiffness damping");
@@ -90,9 +96,8 @@ RingDownUncertainty ring_down_uncertainty(const modal::ModalModel& reference,
     throw std::invalid_argument(
         "ring-down uncertainty: the trace does not determine modulus, damping and release (too "
         "short, or no ring-down in it)");
-  const Eigen::MatrixXd covariance =
-      variance * u.variance_inflation *
-      ldlt.solve(Eigen::MatrixXd::Identity(parameters, parameters));
+  const Eigen::MatrixXd covariance = variance * u.variance_inflation *
+                                     ldlt.solve(Eigen::MatrixXd::Identity(parameters, parameters));
   // Standard deviations of the logs are relative ones (the delta method), accurate while they are
   // small, as they are for any trace the fit accepts.
   u.youngs_modulus_sd = fit.youngs_modulus * std::sqrt(covariance(0, 0));

@@ -32,15 +32,17 @@ struct RingDownLinearisation {
   Eigen::VectorXd residual;
 };
 RingDownLinearisation linearise_ring_down(const modal::ModalModel& reference,
-                                         const RingDownOptions& options,
-                                         const io::AccelerationTrace& trace, double youngs_modulus,
-                                         double rayleigh_stiffness, double release_time, double gain);
+                                          const RingDownOptions& options,
+                                          const io::AccelerationTrace& trace, double youngs_modulus,
+                                          double rayleigh_stiffness, double release_time,
+                                          double gain);
 
 // The uncertainty of `fit`, fitted by fit_ring_down(reference, options, trace). Throws
 // std::invalid_argument when the trace has no more samples than parameters, or when the trace does
 // not determine the parameters (JᵀJ singular: a trace that ends before the bar rings).
 RingDownUncertainty ring_down_uncertainty(const modal::ModalModel& reference,
                                           const RingDownOptions& options,
-                                          const io::AccelerationTrace& trace, const RingDownFit& fit);
+                                          const io::AccelerationTrace& trace,
+                                          const RingDownFit& fit);
 
 }  // namespace nibrig::model::mechanics

@@ -53,9 +53,10 @@ void write_bar(const CalibrationBarOptions& o) {
               printer->name.c_str());
   std::printf("print: %s\n", written.record["printer"]["settings"].get<std::string>().c_str());
   const auto sensor = rig::bar_sensor_on_print(bar);
-  std::printf("clamp the first %g mm; accelerometer at %g mm from the square end; pull the round "
-              "end %g mm aside and let go\n",
-              g.clamp_length * 1e3, sensor.x() * 1e3, bar.preload * 1e3);
+  std::printf(
+      "clamp the first %g mm; accelerometer at %g mm from the square end; pull the round "
+      "end %g mm aside and let go\n",
+      g.clamp_length * 1e3, sensor.x() * 1e3, bar.preload * 1e3);
   const auto& f = written.files;
   for (const auto& file : {f.three_mf, f.stl, f.ini, f.drawing, f.instructions, f.record})
     if (!file.empty()) say_wrote(file);
@@ -65,8 +66,8 @@ void fit_bar(const RingDownSaveOptions& o) {
   const mech::MaterialTable materials = material_table_option(o.materials);
   const rig::CalibrationBarRecord bar = rig::read_calibration_bar(o.bar);
   // Refused before the fit: a name the lab cannot take should not cost a minute of meshing.
-  const mech::MaterialTable bundled = mech::read_material_file(
-      o.materials.empty() ? model::io::default_materials() : o.materials);
+  const mech::MaterialTable bundled =
+      mech::read_material_file(o.materials.empty() ? model::io::default_materials() : o.materials);
   materials.find(bar.bar.material);  // the bar's material must still be in the table
   mech::check_lab_material_name(o.name, bundled, o.replace);
   const auto result = rig::calibrate_bar(bar, o.trace, o.name, materials, o.calibrated);
@@ -79,10 +80,12 @@ void fit_bar(const RingDownSaveOptions& o) {
               result.material.damping ? result.material.damping->mass : 0.0);
   std::printf("first mode          %.4f Hz, damping ratio %.5f\n", fit.first_mode_hz,
               fit.first_mode_damping_ratio);
-  std::printf("residual            %.2f %% of the trace's RMS; lag-one correlation %.2f "
-              "(variances widened %.2fx for it)\n",
-              100 * fit.relative_residual, u.residual_correlation, u.variance_inflation);
-  const auto saved = mech::save_lab_material(result.material, result.calibration, bundled, o.replace);
+  std::printf(
+      "residual            %.2f %% of the trace's RMS; lag-one correlation %.2f "
+      "(variances widened %.2fx for it)\n",
+      100 * fit.relative_residual, u.residual_correlation, u.variance_inflation);
+  const auto saved =
+      mech::save_lab_material(result.material, result.calibration, bundled, o.replace);
   std::printf("saved '%s' among the lab's materials (basis fitted)\n", o.name.c_str());
   say_wrote(saved);
   if (!o.output.empty()) {
@@ -120,21 +123,30 @@ void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> gl
   calibrate->require_subcommand(1);
   calibrate->footer(
       "1. `material calibrate bar --material PLA --printer prusa-mk3s -o bar/` writes the\n"
-      "   ring-down bar of the paper's Sec. 5.1 (3MF, STL, slicer .ini, drawing) and how to clamp,\n"
+      "   ring-down bar of the paper's Sec. 5.1 (3MF, STL, slicer .ini, drawing) and how to "
+      "clamp,\n"
       "   instrument and pluck it (calibration_bar.md).\n"
       "2. `material calibrate ringdown TRACE.csv --bar bar/ --name my-pla` fits its ring-down for\n"
       "   Young's modulus and Rayleigh damping with their uncertainty and saves my-pla among the\n"
-      "   lab's materials (" + mech::lab_materials_folder().string() + ", or $NIBRIG_MATERIALS),\n"
-      "   beside the bundled table, never over it; predict, design and export then find it by name.");
+      "   lab's materials (" +
+      mech::lab_materials_folder().string() +
+      ", or $NIBRIG_MATERIALS),\n"
+      "   beside the bundled table, never over it; predict, design and export then find it by "
+      "name.");
 
   auto bar = std::make_shared<CalibrationBarOptions>();
-  auto* bar_cmd = calibrate->add_subcommand("bar", "Write the calibration bar's print files and instructions");
-  bar_cmd->add_option("--material", bar->material, "The material to calibrate, as the table and printer name it")
+  auto* bar_cmd =
+      calibrate->add_subcommand("bar", "Write the calibration bar's print files and instructions");
+  bar_cmd
+      ->add_option("--material", bar->material,
+                   "The material to calibrate, as the table and printer name it")
       ->required();
   bar_cmd->add_option("--printer", bar->printer, printer_option_help())->required();
-  bar_cmd->add_option("-o,--output", bar->output, "Folder for the bar's files (made when new)")->required();
-  bar_cmd->add_option("--length", bar->length,
-                      "Bar length in metres (default the paper's 0.21), for a bed too small for it")
+  bar_cmd->add_option("-o,--output", bar->output, "Folder for the bar's files (made when new)")
+      ->required();
+  bar_cmd
+      ->add_option("--length", bar->length,
+                   "Bar length in metres (default the paper's 0.21), for a bed too small for it")
       ->check(stylus_metres("a bar length"));
   bar_cmd->add_option("--materials", bar->materials, "Material table (default: the bundled one)")
       ->check(CLI::ExistingFile);
@@ -146,11 +158,16 @@ void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> gl
   auto fit = std::make_shared<RingDownSaveOptions>();
   auto* fit_cmd = calibrate->add_subcommand(
       "ringdown", "Fit a printed bar's ring-down and save the material by name");
-  fit_cmd->add_option("trace", fit->trace, "The accelerometer's trace: a mono WAV from an audio input, CSV time_s,acceleration_m_s2, or a session folder")
+  fit_cmd
+      ->add_option("trace", fit->trace,
+                   "The accelerometer's trace: a mono WAV from an audio input, CSV "
+                   "time_s,acceleration_m_s2, or a session folder")
       ->required();
-  fit_cmd->add_option("--bar", fit->bar, "The bar's folder (or its calibration_bar.json)")->required();
+  fit_cmd->add_option("--bar", fit->bar, "The bar's folder (or its calibration_bar.json)")
+      ->required();
   fit_cmd->add_option("--name", fit->name, "Name to save the fitted material under")->required();
-  fit_cmd->add_flag("--calibrated", fit->calibrated, "The trace is m/s^2 along the sensor axis: do not fit a gain");
+  fit_cmd->add_flag("--calibrated", fit->calibrated,
+                    "The trace is m/s^2 along the sensor axis: do not fit a gain");
   fit_cmd->add_flag("--replace", fit->replace, "Replace a lab material of that name");
   fit_cmd->add_option("--materials", fit->materials, "Material table (default: the bundled one)")
       ->check(CLI::ExistingFile);
@@ -164,7 +181,8 @@ void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> gl
   });
 
   auto list_table = std::make_shared<std::filesystem::path>();
-  auto* list_cmd = cmd->add_subcommand("list", "The materials a name finds: the table's, then the lab's");
+  auto* list_cmd =
+      cmd->add_subcommand("list", "The materials a name finds: the table's, then the lab's");
   list_cmd->add_option("--materials", *list_table, "Material table (default: the bundled one)")
       ->check(CLI::ExistingFile);
   list_cmd->callback([list_table, global] {

@@ -25,7 +25,6 @@ std::string lab_file_text(const std::filesystem::path& file) {
   return s.str();
 }
 
-
 Material lab_pla(const std::string& name) {
   Material m;
   m.name = name;
@@ -63,7 +62,8 @@ TEST(LabMaterials, SavedInTheUserStoreBesideNeverOverTheBundledTable) {
 }
 
 TEST(LabMaterials, ABundledNameIsRefusedAndADistinctOneTaken) {
-  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_bundled_name").string());
+  const nibrig::test::ScopedEnvironment lab(
+      "NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_bundled_name").string());
   const MaterialTable bundled = read_material_file(io::default_materials());
   try {
     save_lab_material(lab_pla("pla"), {}, bundled, true);  // even with replace: never the bundled
@@ -91,7 +91,8 @@ TEST(LabMaterials, AnUnknownNameSaysWhereItLooked) {
 }
 
 TEST(LabMaterials, ATableGivenByNameWinsOverALabMaterialOfTheSameName) {
-  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_shadow").string());
+  const nibrig::test::ScopedEnvironment lab(
+      "NIBRIG_MATERIALS", nibrig::test::scratch_dir("lab_materials_shadow").string());
   const MaterialTable bundled = read_material_file(io::default_materials());
   save_lab_material(lab_pla("shop-resin"), {}, bundled, false);
   const auto own = nibrig::test::scratch_dir("lab_materials_own_table") / "own.json";
@@ -106,7 +107,8 @@ TEST(LabMaterials, ATableGivenByNameWinsOverALabMaterialOfTheSameName) {
 TEST(LabMaterials, AFileRenamedByHandOrHoldingTwoIsRefusedNamingIt) {
   const auto store = nibrig::test::scratch_dir("lab_materials_bad_file");
   const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
-  std::ofstream(store / "other.json") << R"({"format": "nibrig-materials", "version": 1, "materials": [
+  std::ofstream(store / "other.json")
+      << R"({"format": "nibrig-materials", "version": 1, "materials": [
     {"name": "shop-resin", "youngs_modulus": 1.5e9, "poisson_ratio": 0.4, "density": 1100,
      "source": "s"}]})";
   try {

@@ -34,15 +34,16 @@ const DesignModel& pla_bar() {
 // damping ratio near 1 %, a printed polymer's; a release between samples, an unknown gain.
 struct HiddenBar {
   double modulus_ratio = 0.71;
-  double lambda = 2.9e-4;  // s
+  double lambda = 2.9e-4;   // s
   double release = 0.1234;  // s
   double gain = 0.8;
-  double rate = 2000.0;     // Hz: the first mode near 11 Hz and the next ones well below Nyquist
+  double rate = 2000.0;        // Hz: the first mode near 11 Hz and the next ones well below Nyquist
   std::size_t samples = 3000;  // 1.5 s: the first mode decays to e^{-ζωt} ≈ 0.5 %
 };
 
 io::AccelerationTrace hidden_trace(const HiddenBar& h, double noise, unsigned seed) {
-  const modal::ModalModel truth = rescale_modulus(pla_bar().modal, h.modulus_ratio, {0.0, h.lambda});
+  const modal::ModalModel truth =
+      rescale_modulus(pla_bar().modal, h.modulus_ratio, {0.0, h.lambda});
   io::AccelerationTrace trace{h.rate, simulate_release(truth, 0.05, h.rate, h.samples, h.release)};
   for (double& a : trace.acceleration_m_s2) a *= h.gain;
   add_relative_noise(trace.acceleration_m_s2, noise, seed);
@@ -88,8 +89,9 @@ TEST(RingDownUncertainty, TheHiddenTruthLiesWithinTheReportedUncertainty) {
   const double z_rms = std::sqrt(z_squares / (2.0 * seeds));
   EXPECT_GT(z_rms, 0.6);
   EXPECT_LT(z_rms, 1.5);
-  std::printf("hidden truth over %d seeds: %d of %d z-scores outside 2 sd, RMS z %.2f, worst %.2f\n",
-              seeds, outside_two_sd, 2 * seeds, z_rms, worst_z);
+  std::printf(
+      "hidden truth over %d seeds: %d of %d z-scores outside 2 sd, RMS z %.2f, worst %.2f\n", seeds,
+      outside_two_sd, 2 * seeds, z_rms, worst_z);
 }
 
 TEST(RingDownUncertainty, CorrelatedResidualsWidenTheBounds) {
@@ -124,7 +126,6 @@ TEST(RingDownUncertainty, CorrelatedResidualsWidenTheBounds) {
   EXPECT_GT(uc.youngs_modulus_sd, 2.0 * uw.youngs_modulus_sd);
 }
 
-
 TEST(RingDownUncertainty, AFittedMaterialSavedByNameIsTheOnePredictionsUse) {
   const auto store = nibrig::test::scratch_dir("ring_down_lab_store");
   const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
@@ -132,9 +133,11 @@ TEST(RingDownUncertainty, AFittedMaterialSavedByNameIsTheOnePredictionsUse) {
   RingDownCalibrationOptions options;
   options.name = "lab-pla-hidden";
   options.provenance = {{"recording", "simulated"}, {"printer", "prusa-mk3s"}};
-  const RingDownCalibration calibration = calibrate_ring_down(pla_bar(), hidden_trace(h, 0.05, 3), options);
+  const RingDownCalibration calibration =
+      calibrate_ring_down(pla_bar(), hidden_trace(h, 0.05, 3), options);
   const MaterialTable bundled = read_material_file(io::default_materials());
-  const auto file = save_lab_material(calibration.material, calibration.calibration, bundled, false);
+  const auto file =
+      save_lab_material(calibration.material, calibration.calibration, bundled, false);
   EXPECT_EQ(file.parent_path(), store);
 
   // Found by name through the table every command reads, after the bundled ones.

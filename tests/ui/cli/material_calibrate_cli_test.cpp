@@ -52,8 +52,8 @@ TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
   const auto& out = stores.root;
   const auto bar = out / "bar";
   ::testing::internal::CaptureStdout();
-  const int code = test::run_cli(
-      {"material", "calibrate", "bar", "--material", "PLA", "--printer", "prusa-mk3s", "-o", bar.string()});
+  const int code = test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer",
+                                  "prusa-mk3s", "-o", bar.string()});
   const std::string said = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << said;
   const auto record = nlohmann::json::parse(calibrate_text_of(bar / "calibration_bar.json"));
@@ -81,8 +81,8 @@ TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
 
   const auto gcode_file = bar / "calibration_bar.gcode";
   const auto sliced = nibrig::test::run_program(
-      {"prusa-slicer", "--loglevel", "2", "--load", (bar / "calibration_bar.ini").string(), "--export-gcode",
-       (bar / "calibration_bar.3mf").string(), "-o", gcode_file.string()},
+      {"prusa-slicer", "--loglevel", "2", "--load", (bar / "calibration_bar.ini").string(),
+       "--export-gcode", (bar / "calibration_bar.3mf").string(), "-o", gcode_file.string()},
       out);
   ASSERT_EQ(sliced.exit_code, 0) << sliced.output;
   const std::string gcode = calibrate_text_of(gcode_file);
@@ -91,7 +91,8 @@ TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
   EXPECT_EQ(settings.at("fill_density"), "100%");
   const auto profile = model::io::find_printer_profile("prusa-mk3s");
   const std::string diameter = profile.slicer_setting("filament_diameter");
-  const double filament_mm = diameter.empty() ? 1.75 : std::stod(diameter);  // PrusaSlicer's default
+  const double filament_mm =
+      diameter.empty() ? 1.75 : std::stod(diameter);  // PrusaSlicer's default
   const double area = std::numbers::pi * filament_mm * filament_mm / 4;
   double part = 0.0;
   for (const auto& [type, mm] : test::gcode_filament_by_feature(gcode))
@@ -108,8 +109,8 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
   const CalibrateStores stores("cli_material_ringdown");
   const auto& out = stores.root;
   const auto bar = out / "bar";
-  ASSERT_EQ(test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer", "prusa-mk3s", "-o",
-                           bar.string()}),
+  ASSERT_EQ(test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer",
+                           "prusa-mk3s", "-o", bar.string()}),
             0);
   // The hidden truth: the bar's FEM in PLA (the command's reference) at 0.83 × its modulus and a
   // damping the table does not know, released 0.2 s into the trace, 5 % sensor noise, gain 0.6.
@@ -120,14 +121,16 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
   const double true_modulus = ratio * table.find("PLA").youngs_modulus;
   model::io::AccelerationTrace trace{
       2000.0, model::mechanics::simulate_release(
-                  model::mechanics::rescale_modulus(reference.modal, ratio, {0.0, lambda}), 0.05, 2000.0, 3000, 0.2)};
+                  model::mechanics::rescale_modulus(reference.modal, ratio, {0.0, lambda}), 0.05,
+                  2000.0, 3000, 0.2)};
   for (double& a : trace.acceleration_m_s2) a *= 0.6;
   model::mechanics::add_relative_noise(trace.acceleration_m_s2, 0.05, 11);
   model::io::write_acceleration_trace(out / "ring.csv", trace);
 
   ::testing::internal::CaptureStdout();
-  const int code = test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(), "--bar",
-                                  bar.string(), "--name", "lab-pla", "--no-plots", "-o", (out / "fit.json").string()});
+  const int code = test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(),
+                                  "--bar", bar.string(), "--name", "lab-pla", "--no-plots", "-o",
+                                  (out / "fit.json").string()});
   const std::string said = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << said;
   const auto fit = nlohmann::json::parse(calibrate_text_of(out / "fit.json"));
@@ -155,10 +158,11 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
   int k = 0;
   for (const std::string material : {"PLA", "lab-pla"}) {
     const auto modes = out / (material + "_modes.json");
-    ASSERT_EQ(test::run_cli({"mechanics", "modes", "--bar", "0.21,0.02,0.002", "--material", material,
-                             "--no-plots", "-o", modes.string()}),
+    ASSERT_EQ(test::run_cli({"mechanics", "modes", "--bar", "0.21,0.02,0.002", "--material",
+                             material, "--no-plots", "-o", modes.string()}),
               0);
-    first_mode[k++] = nlohmann::json::parse(calibrate_text_of(modes))["modes"][0]["frequency"].get<double>();
+    first_mode[k++] =
+        nlohmann::json::parse(calibrate_text_of(modes))["modes"][0]["frequency"].get<double>();
   }
   const double expected = first_mode[0] * std::sqrt(e / table.find("PLA").youngs_modulus);
   EXPECT_NEAR(first_mode[1], expected, 1e-6 * expected);
@@ -167,25 +171,27 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
 
   // A bundled name is refused before the fit, naming why; nothing is written.
   ::testing::internal::CaptureStderr();
-  EXPECT_NE(test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(), "--bar", bar.string(),
-                           "--name", "PETG", "--no-plots"}),
+  EXPECT_NE(test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(),
+                           "--bar", bar.string(), "--name", "PETG", "--no-plots"}),
             0);
-  EXPECT_THAT(::testing::internal::GetCapturedStderr(), HasSubstr("'PETG' is a bundled material's"));
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(),
+              HasSubstr("'PETG' is a bundled material's"));
   EXPECT_FALSE(std::filesystem::exists(out / "lab_materials" / "PETG.json"));
   // And an existing lab name unless --replace.
   ::testing::internal::CaptureStderr();
-  EXPECT_NE(test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(), "--bar", bar.string(),
-                           "--name", "lab-pla", "--no-plots"}),
+  EXPECT_NE(test::run_cli({"material", "calibrate", "ringdown", (out / "ring.csv").string(),
+                           "--bar", bar.string(), "--name", "lab-pla", "--no-plots"}),
             0);
-  EXPECT_THAT(::testing::internal::GetCapturedStderr(), HasSubstr("already has a material 'lab-pla'"));
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(),
+              HasSubstr("already has a material 'lab-pla'"));
 }
 
 TEST(MaterialCalibrateCli, AnUnknownMaterialOrAPrinterThatCannotMakeTheBarIsRefused) {
   const CalibrateStores stores("cli_material_refusals");
   const auto& out = stores.root;
   ::testing::internal::CaptureStderr();
-  EXPECT_NE(test::run_cli({"material", "calibrate", "bar", "--material", "unobtainium", "--printer", "prusa-mk3s",
-                           "-o", (out / "bar").string()}),
+  EXPECT_NE(test::run_cli({"material", "calibrate", "bar", "--material", "unobtainium", "--printer",
+                           "prusa-mk3s", "-o", (out / "bar").string()}),
             0);
   const std::string unknown = ::testing::internal::GetCapturedStderr();
   EXPECT_THAT(unknown, HasSubstr("unknown material 'unobtainium'"));
@@ -193,8 +199,8 @@ TEST(MaterialCalibrateCli, AnUnknownMaterialOrAPrinterThatCannotMakeTheBarIsRefu
   EXPECT_THAT(unknown, HasSubstr("the lab's materials in " + (out / "lab_materials").string()));
   // The SL1S has no PLA, and its 127 × 80 mm mask is shorter than the paper's bar.
   ::testing::internal::CaptureStderr();
-  EXPECT_NE(test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer", "prusa-sl1s", "-o",
-                           (out / "bar").string()}),
+  EXPECT_NE(test::run_cli({"material", "calibrate", "bar", "--material", "PLA", "--printer",
+                           "prusa-sl1s", "-o", (out / "bar").string()}),
             0);
   const std::string refused = ::testing::internal::GetCapturedStderr();
   EXPECT_THAT(refused, HasSubstr("PLA is not a material it prints"));
