@@ -60,6 +60,14 @@ std::vector<study::LoggedResponse> reference_session(const std::filesystem::path
   return study::read_study(folder).participants.at(0).responses;
 }
 
+// The form of participant S01 in <dir>/study, rehearsed from `space` with <dir>/stimuli.txt.
+void rehearsal_form(ExperimentView& view, const std::filesystem::path& dir, const std::filesystem::path& space) {
+  view.form().study = (dir / "study").string();
+  view.form().stimuli = (dir / "stimuli.txt").string();
+  view.form().participant = "S01";
+  view.form().rehearse = space.string();
+}
+
 TEST(ExperimentRehearsal, ASimulatedParticipantAnswersEveryTrialThroughTheScreensAsTheLibraryRunsIt) {
   const auto dir = nibrig::test::scratch_dir("panel_experiment_rehearsal");
   const auto space = testing::write_descriptor_space(dir);
@@ -70,12 +78,9 @@ TEST(ExperimentRehearsal, ASimulatedParticipantAnswersEveryTrialThroughTheScreen
   testing::HeadlessImGui imgui;
   PanelAudio audio(model::design::ToolSoundOptions{});
   ExperimentView view(audio, [] { return model::design::ToolSoundOptions{}; });
-  view.form().study = (dir / "study").string();
-  view.form().stimuli = (dir / "stimuli.txt").string();
-  view.form().participant = "S01";
+  rehearsal_form(view, dir, space);
   view.form().practice = 1;
   view.form().break_every = 5;
-  view.form().rehearse = space.string();
   view.form().pace = 0.0;  // one move a frame
   view.start();
   ASSERT_EQ(view.error(), "");
@@ -119,10 +124,7 @@ TEST(ExperimentRehearsal, ASpaceThatCannotPlaceAStimulusIsRefusedBeforeTheStudyI
   testing::HeadlessImGui imgui;
   PanelAudio audio(model::design::ToolSoundOptions{});
   ExperimentView view(audio, [] { return model::design::ToolSoundOptions{}; });
-  view.form().study = (dir / "study").string();
-  view.form().stimuli = (dir / "stimuli.txt").string();
-  view.form().participant = "S01";
-  view.form().rehearse = space.string();
+  rehearsal_form(view, dir, space);
   view.start();
   frames_while(imgui, view, ExperimentView::Stage::preparing);
   EXPECT_EQ(view.stage(), ExperimentView::Stage::setup);
