@@ -1,6 +1,7 @@
 #include "tests/playback/jack_recorder.hpp"
 
 #include <algorithm>
+#include <ctime>
 #include <stdexcept>
 #include <thread>
 
@@ -69,7 +70,11 @@ int JackRecorder::process(jack_nframes_t frames, void* self) noexcept {
     jack_time_t started = 0, next = 0;
     float period = 0.0f;
     jack_get_cycle_times(r.client_, &first, &started, &next, &period);
-    r.cycles_[cycle] = Cycle{jack_last_frame_time(r.client_), at, n, started};
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    const double heard_s =
+        static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+    r.cycles_[cycle] = Cycle{jack_last_frame_time(r.client_), at, n, started, heard_s};
     r.cycle_count_.store(cycle + 1, std::memory_order_release);
   }
   for (std::size_t i = 0; i < r.ports_.size(); ++i) {

@@ -41,6 +41,9 @@ class JackRecorder {
     std::size_t start = 0;
     std::size_t frames = 0;
     jack_time_t started_us = 0;  // when the cycle began, on JACK's clock (jack_get_cycle_times)
+    // When this client's callback ran for the cycle, on CLOCK_MONOTONIC: after every client
+    // upstream of it rendered the cycle, so nothing it hears was rendered later than this.
+    double heard_monotonic_s = 0.0;
   };
   // The recorded cycles; read once the recording is full.
   std::vector<Cycle> cycles() const {

@@ -1,9 +1,11 @@
 // Stroke to sound through the pen path, beside the mouse path, on the tests' JACK server: strokes
 // drawn on the emulated tablet (libinput, the reader's thread, PenContact, play_pen's loop, the
 // engine, the JACK graph) and strokes posted as the pad posts a mouse's (LiveAudition::set_contact
-// on the control thread), each timed from its start to the first sound an independent libjack
-// client hears. Both on CLOCK_MONOTONIC: the kernel's stamp of the tablet's first tip-down report,
-// and JACK's frame times moved onto it by the clocks' measured offset.
+// on the control thread), each timed from its start to the cycle in which an independent libjack
+// client first hears it. Both on CLOCK_MONOTONIC: the kernel's stamp of the tablet's first tip-down
+// report, and the listener's callback read at its wake-up. JACK's own cycle stamps are not used:
+// its clock filter may put a cycle's start before the late wake-up that rendered it, so a stroke
+// would seem heard before it began.
 #include <gtest/gtest.h>
 #include <jack/jack.h>
 
@@ -35,57 +37,56 @@ void sleep_until_s(double t) {
   std::this_thread::sleep_for(std::chrono::duration<double>(std::max(0.0, t - pen_clock_now_s())));
 }
 
-// CLOCK_MONOTONIC minus JACK's clock, read back to back (jack2 runs on a raw monotonic clock that
-// is not slewed as CLOCK_MONOTONIC is: here they differed by 0.12 s, drifting by ppm, which over a
-// test's seconds is microseconds).
-double jack_clock_offset_s() {
-  const double before = pen_clock_now_s();
-  const double jack = 1e-6 * static_cast<double>(jack_get_time());
-  const double after = pen_clock_now_s();
-  return 0.5 * (before + after) - jack;
-}
-
-// The time of each recorded sample on CLOCK_MONOTONIC, from when the recorder's cycles began.
-std::vector<double> sample_times(const playback::testing::JackRecorder& ear, double offset_s) {
+// When each recorded sample was heard: its cycle's wake-up in the listener, on CLOCK_MONOTONIC.
+std::vector<double> heard_times(const playback::testing::JackRecorder& ear) {
   std::vector<double> t(ear.samples(0).size(), -1.0);
   for (const auto& cycle : ear.cycles()) {
-    const double start = offset_s + 1e-6 * static_cast<double>(cycle.started_us);
-    for (std::size_t i = 0; i < cycle.frames && cycle.start + i < t.size(); ++i) t[cycle.start + i] = start + i / 48000.0;
+    for (std::size_t i = 0; i < cycle.frames && cycle.start + i < t.size(); ++i)
+      t[cycle.start + i] = cycle.heard_monotonic_s;
   }
   return t;
 }
 
-// From `start_s` to the first sample clearly above what sounded just before it (the last stroke's
-// ring-down, 350 ms old): four times the largest of the 30 ms before, and at least a thousandth of
-// the stroke's loudest, so that the numbers' own noise is never taken for a start.
+// From `start_s` to the cycle of the first sample clearly above what sounded just before it (the
+// last stroke's ring-down, 350 ms old): four times the largest of the 30 ms before, and at least a
+// thousandth of the stroke's loudest, so that the numbers' own noise is never taken for a start.
 double onset_after(const std::vector<float>& x, const std::vector<double>& t, double start_s) {
   const auto quiet = std::lower_bound(t.begin(), t.end(), start_s - 0.03) - t.begin();
-  const auto first = std::lower_bound(t.begin(), t.end(), start_s) - t.begin();
-  const auto end = std::lower_bound(t.begin(), t.end(), start_s + kStrokeSeconds + 0.05) - t.begin();
+  // Cycles heard after the start: the only ones the stroke can be in.
+  const auto first = std::upper_bound(t.begin(), t.end(), start_s) - t.begin();
+  const auto end =
+      std::lower_bound(t.begin(), t.end(), start_s + kStrokeSeconds + 0.05) - t.begin();
   float floor = 0.0f, peak = 0.0f;
-  for (auto i = quiet; i < first; ++i) floor = std::max(floor, std::abs(x[static_cast<std::size_t>(i)]));
-  for (auto i = first; i < end; ++i) peak = std::max(peak, std::abs(x[static_cast<std::size_t>(i)]));
+  for (auto i = quiet; i < first; ++i)
+    floor = std::max(floor, std::abs(x[static_cast<std::size_t>(i)]));
+  for (auto i = first; i < end; ++i)
+    peak = std::max(peak, std::abs(x[static_cast<std::size_t>(i)]));
   const float threshold = std::max(4.0f * floor, 1e-3f * peak);
   for (auto i = first; i < end; ++i) {
-    if (std::abs(x[static_cast<std::size_t>(i)]) > threshold) return t[static_cast<std::size_t>(i)] - start_s;
+    if (std::abs(x[static_cast<std::size_t>(i)]) > threshold)
+      return t[static_cast<std::size_t>(i)] - start_s;
   }
   return NAN;
 }
 
 struct PathLatency {
-  double mean_s = 0.0, worst_s = 0.0;
+  double mean_s = 0.0, median_s = 0.0, worst_s = 0.0;
   int heard = 0;
 };
 
 PathLatency summarise(const std::vector<double>& onsets) {
   PathLatency l;
-  for (double o : onsets) {
-    if (!std::isfinite(o)) continue;
-    ++l.heard;
-    l.mean_s += o;
-    l.worst_s = std::max(l.worst_s, o);
-  }
-  if (l.heard > 0) l.mean_s /= l.heard;
+  std::vector<double> heard;
+  for (double o : onsets)
+    if (std::isfinite(o)) heard.push_back(o);
+  l.heard = static_cast<int>(heard.size());
+  if (heard.empty()) return l;
+  std::sort(heard.begin(), heard.end());
+  for (double o : heard) l.mean_s += o;
+  l.mean_s /= l.heard;
+  const std::size_t mid = heard.size() / 2;
+  l.median_s = heard.size() % 2 ? heard[mid] : 0.5 * (heard[mid - 1] + heard[mid]);
+  l.worst_s = heard.back();
   return l;
 }
 
@@ -95,12 +96,14 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
   {
     testing::EmulatedTablet tablet(testbed, testing::wacom_intuos_s());
     playback::LiveAudition audition(rt::EngineSettings{});
-    audition.load(0, {"cryon", "small stylus", rt::testing::small_stylus(), rt::testing::catalog_spectrum("cryon", "note")}, 7);
+    audition.load(0,
+                  {"cryon", "small stylus", rt::testing::small_stylus(),
+                   rt::testing::catalog_spectrum("cryon", "note")},
+                  7);
     audition.open(playback::testing::jack_settings("audition"));
     const double seconds = 2 * kStrokesPerPath * (kStrokeSeconds + kRestSeconds) + 1.5;
     playback::testing::JackRecorder ear("ear", 1, static_cast<std::size_t>(seconds * 48000));
     ASSERT_TRUE(ear.connect("audition:outport 0", 0));
-    const double offset_s = jack_clock_offset_s();
     ear.start();
     std::this_thread::sleep_for(300ms);
 
@@ -145,14 +148,13 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
     loop.join();
     ASSERT_TRUE(ear.wait_full(30s)) << "recorded " << ear.recorded() << " frames";
 
-    // The two clocks kept their offset through the run, to well under the latencies measured.
-    ASSERT_NEAR(jack_clock_offset_s(), offset_s, 1e-4);
-    const auto times = sample_times(ear, offset_s);
+    const auto times = heard_times(ear);
     std::vector<double> mouse, pen;
     for (double s : mouse_starts) mouse.push_back(onset_after(ear.samples(0), times, s));
     for (double s : pen_starts) pen.push_back(onset_after(ear.samples(0), times, s));
     const PathLatency m = summarise(mouse), p = summarise(pen);
-    for (std::size_t k = 0; k < pen.size(); ++k) std::printf("stroke %zu: mouse %.2f ms, pen %.2f ms\n", k + 1, 1e3 * mouse[k], 1e3 * pen[k]);
+    for (std::size_t k = 0; k < pen.size(); ++k)
+      std::printf("stroke %zu: mouse %.2f ms, pen %.2f ms\n", k + 1, 1e3 * mouse[k], 1e3 * pen[k]);
     // The device plays a cycle's output after its playback latency, the same for both paths.
     jack_latency_range_t playback{0, 0};
     if (jack_port_t* out = jack_port_by_name(ear.client(), "system:playback_1")) {
@@ -161,20 +163,28 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
     const double device_s = playback.max / 48000.0;
     RecordProperty("device_playback_ms", std::to_string(1e3 * device_s));
     RecordProperty("mouse_mean_ms", std::to_string(1e3 * m.mean_s));
+    RecordProperty("mouse_median_ms", std::to_string(1e3 * m.median_s));
     RecordProperty("mouse_worst_ms", std::to_string(1e3 * m.worst_s));
     RecordProperty("pen_mean_ms", std::to_string(1e3 * p.mean_s));
+    RecordProperty("pen_median_ms", std::to_string(1e3 * p.median_s));
     RecordProperty("pen_worst_ms", std::to_string(1e3 * p.worst_s));
-    std::printf("stroke to the cycle that renders it, on JACK (48 kHz, 64-frame periods): mouse path %.2f ms mean, "
-                "%.2f worst; pen path %.2f ms mean, %.2f worst (%d and %d strokes heard); the device then plays it "
-                "%.2f ms later (its playback latency)\n",
-                1e3 * m.mean_s, 1e3 * m.worst_s, 1e3 * p.mean_s, 1e3 * p.worst_s, m.heard, p.heard, 1e3 * device_s);
+    std::printf(
+        "stroke to the cycle a listener hears it in, on JACK (48 kHz, 64-frame periods): mouse "
+        "path %.2f ms median, "
+        "%.2f worst; pen path %.2f ms median, %.2f worst (%d and %d strokes heard); the device "
+        "then plays "
+        "it %.2f ms later (its playback latency)\n",
+        1e3 * m.median_s, 1e3 * m.worst_s, 1e3 * p.median_s, 1e3 * p.worst_s, m.heard, p.heard,
+        1e3 * device_s);
     EXPECT_EQ(m.heard, kStrokesPerPath);
     EXPECT_EQ(p.heard, kStrokesPerPath);
     // The pen's first report has no speed yet (PenSpeed needs a second), so its sound starts one
-    // report later than its tip; beyond that it shares the mouse path's engine and graph. Bound:
-    // the mouse path's worst, one report, and 5 ms for libinput, the reader, the loop's 1 ms turn
-    // and a scheduler on two busy cores.
-    EXPECT_LT(p.worst_s, m.worst_s + period + 5e-3);
+    // report later than its tip; beyond that it shares the mouse path's engine and graph. Bound on
+    // the typical stroke (the median): the mouse path's, one report, and 5 ms for libinput, the
+    // reader, the loop's 1 ms turn and a scheduler on two busy cores. A stroke whose reader was
+    // scheduled late (19 ms, once in 25 runs under ASan) may take one report more, no further.
+    EXPECT_LT(p.median_s, m.median_s + period + 5e-3);
+    EXPECT_LT(p.worst_s, m.worst_s + 2 * period + 5e-3);
     // And the mouse path itself within a few periods of the graph (64 frames = 1.33 ms each).
     EXPECT_LT(m.worst_s, 10e-3);
     EXPECT_EQ(audition.engine_stats().refused_commands, 0u);
