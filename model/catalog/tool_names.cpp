@@ -68,6 +68,16 @@ io::ToolEntry describe_tool(const std::string& tool_id) {
     entry.name = material_name(entry.material) + " in a pen holder";
     return entry;
   }
+  // A lab's print of one material: "<material>-<tip>mm" ("PLA-1mm", "TPU-95A-0.8mm"), the material
+  // as its table names it. A recording's name keeps '-' and '.' in a tool id and no '_'.
+  static const std::regex lab_print(R"(^([A-Za-z][A-Za-z0-9.+-]*)-(\d+(?:\.\d+)?)mm$)");
+  if (std::regex_match(tool_id, match, lab_print)) {
+    entry.kind = "printed";
+    entry.material = match[1];
+    entry.tip_diameter_m = std::stod(match[2]) * 1e-3;
+    entry.name = entry.material + ", " + std::string(match[2]) + " mm tip (printed whole)";
+    return entry;
+  }
   entry.name = tool_id;
   entry.kind = "unknown";
   return entry;

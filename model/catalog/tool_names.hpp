@@ -9,7 +9,8 @@
 
 namespace nibrig::model::catalog {
 
-// Builds the catalog entry of a tool id such as "p2h", "vero1", "DM852", "apencil", "penh_DM85".
+// Builds the catalog entry of a tool id such as "p2h", "vero1", "DM852", "apencil", "penh_DM85",
+// or a lab's one-material print "<material>-<tip>mm" such as "PLA-1mm".
 io::ToolEntry describe_tool(const std::string& tool_id);
 
 io::SurfaceEntry describe_surface(const std::string& surface_id);

@@ -13,7 +13,7 @@ double equal_modulus_fraction(const mechanics::MaterialTable& materials,
                               const std::string& material, const std::string& first,
                               const std::string& second) {
   const auto modulus = [&](const std::string& m) {
-    return materials.find(forcing::printed_tip_of(m).material).youngs_modulus;
+    return materials.find(forcing::printed_tip_of(m, materials).material).youngs_modulus;
   };
   const double e = modulus(material), e_first = modulus(first), e_second = modulus(second);
   const auto mpa = [](double pa) {

@@ -9,10 +9,10 @@
 #include "model/design/mixed_design.hpp"
 #include "model/design/tip_bracket.hpp"
 #include "model/forcing/printed_tool_design.hpp"
-#include "model/mechanics/material_table.hpp"
 #include "model/mechanics/design_model.hpp"
-#include "model/space/catalog_descriptors.hpp"
+#include "model/mechanics/material_table.hpp"
 #include "model/modal/frequency_response.hpp"
+#include "model/space/catalog_descriptors.hpp"
 
 namespace nibrig::model::design {
 
@@ -143,11 +143,8 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
   if (body != setup.template_design.region_materials.end())
     tool.material_basis = mechanics::least_calibrated(tool.material_basis, basis_of(body->second));
   for (const auto& share : point.mix) {
-    std::string table_name = share.material;
-    try {
-      table_name = forcing::printed_tip_of(share.material).material;
-    } catch (const std::invalid_argument&) {  // a lab's material: its own name in the table
-    }
+    const std::string table_name =
+        forcing::printed_tip_of(share.material, setup.materials).material;
     tool.material_basis = mechanics::least_calibrated(tool.material_basis, basis_of(table_name));
   }
   return tool;
@@ -165,7 +162,8 @@ MixedDesign solved_design(const PredictionSetup& setup, const DesignPoint& point
 SimulatedResponse simulate_response(const PredictionSetup& setup, const DesignPoint& point,
                                     const mechanics::Design* own_design) {
   require_setup(setup);
-  MixedDesign mixed = own_design ? MixedDesign{*own_design, setup.materials} : solved_design(setup, point);
+  MixedDesign mixed =
+      own_design ? MixedDesign{*own_design, setup.materials} : solved_design(setup, point);
   if (own_design != nullptr && setup.mesh_size > 0) mixed.design.mesh_size = setup.mesh_size;
   if (own_design != nullptr && setup.modes > 0) mixed.design.modes = setup.modes;
   const mechanics::DesignModel built = mechanics::build_design_model(mixed.design, mixed.materials);

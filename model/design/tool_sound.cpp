@@ -1,7 +1,9 @@
 #include "model/design/tool_sound.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "model/catalog/tool_names.hpp"
 #include "model/design/design_point.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/design/stylus_modes.hpp"
@@ -10,6 +12,15 @@
 namespace nibrig::model::design {
 
 bool names_design_point(const std::string& tool) { return tool.find("tip=") != std::string::npos; }
+
+std::optional<DesignPoint> unmeasured_print(const io::Catalog& catalog, const std::string& tool) {
+  if (std::any_of(catalog.tools.begin(), catalog.tools.end(),
+                  [&](const io::ToolEntry& t) { return t.id == tool; }))
+    return std::nullopt;
+  const io::ToolEntry entry = catalog::describe_tool(tool);
+  if (entry.kind != "printed" || !entry.tip_diameter_m) return std::nullopt;
+  return DesignPoint{{{catalog_material_name(entry.material), 1.0}}, *entry.tip_diameter_m};
+}
 
 const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
                                              const std::filesystem::path& catalog_file,
@@ -37,11 +48,12 @@ const io::VelocitySpectrum& pairing_spectrum(const io::Catalog& catalog,
 struct ToolSounds::State {
   ToolSoundOptions options;
   io::Catalog catalog;
-  std::optional<ToolSound> stylus;                   // name and modes; on first need (cached)
-  std::unique_ptr<PredictionInputs> prediction;      // loaded on the first design point
+  std::optional<ToolSound> stylus;               // name and modes; on first need (cached)
+  std::unique_ptr<PredictionInputs> prediction;  // loaded on the first design point
 };
 
-ToolSounds::ToolSounds(ToolSoundOptions options) : state_(new State{std::move(options), {}, {}, {}}) {
+ToolSounds::ToolSounds(ToolSoundOptions options)
+    : state_(new State{std::move(options), {}, {}, {}}) {
   state_->catalog = io::read_catalog(io::or_default(state_->options.catalog, io::default_catalog));
 }
 
@@ -52,18 +64,21 @@ const io::Catalog& ToolSounds::catalog() const { return state_->catalog; }
 void ToolSounds::check(const std::string& tool, const std::string& surface) const {
   if (names_design_point(tool))
     parse_design_point(tool);
-  else
+  else if (!unmeasured_print(state_->catalog, tool))
     pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
 }
 
 PredictedTool ToolSounds::predict(const std::string& point, const std::string& surface) {
-  const DesignPoint design = parse_design_point(point);  // refuses a bad point before any work
+  return predict(parse_design_point(point), surface);  // refuses a bad point before any work
+}
+
+PredictedTool ToolSounds::predict(const DesignPoint& design, const std::string& surface) {
   if (!state_->prediction) {
     forcing::ForcingInputOptions options;
     options.catalog = state_->options.catalog;
     options.design_template = io::default_stylus_design();
-    state_->prediction = load_prediction_inputs(options, state_->options.forcing_model, std::nullopt,
-                                                state_->options.progress);
+    state_->prediction = load_prediction_inputs(options, state_->options.forcing_model,
+                                                std::nullopt, state_->options.progress);
   }
   return predict_tool(state_->prediction->setup, design, surface);
 }
@@ -75,11 +90,14 @@ ToolSound predicted_sound(PredictedTool p) {
 
 bool ToolSounds::solves_stylus_modes() const {
   std::error_code error;
-  return !state_->stylus && !std::filesystem::exists(stylus_modes_file(state_->options.stylus_design), error);
+  return !state_->stylus &&
+         !std::filesystem::exists(stylus_modes_file(state_->options.stylus_design), error);
 }
 
 ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {
   if (names_design_point(tool)) return predicted_sound(predict(tool, surface));
+  if (auto print = unmeasured_print(state_->catalog, tool))
+    return predicted_sound(predict(*print, surface));
   const io::VelocitySpectrum& spectrum =
       pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
   if (!state_->stylus) {

@@ -1,8 +1,8 @@
 // "Tool X on surface Y" made into what a real-time voice plays: the modes of a stylus and the
 // acceleration spectrum it is driven with. A catalog tool is its measured spectrum through the
 // modes of a stylus design (by default the bundled printed stylus with a 2 mm tip); a design point
-// ("DM85:0.5,vero:0.5,tip=2mm") is predicted (Sec. 5.3) with its own modes. Whatever plays a tool
-// asks here.
+// ("DM85:0.5,vero:0.5,tip=2mm"), or a printed tool the catalog has not measured ("PLA-1mm"), is
+// predicted (Sec. 5.3) with its own modes. Whatever plays a tool asks here.
 #pragma once
 
 #include <filesystem>
@@ -28,6 +28,11 @@ ToolSound predicted_sound(PredictedTool tool);
 
 // Whether `tool` is a design point to predict ("...tip=2mm") rather than a catalog id.
 bool names_design_point(const std::string& tool);
+
+// A printed tool's id that `catalog` has not measured ("PLA-1mm", a lab's first print of a
+// material it calibrates; catalog/tool_names.hpp): the design point it is printed as, which is
+// played as predicted. Nothing for a catalog's own tool or an id that names no printed tool.
+std::optional<DesignPoint> unmeasured_print(const io::Catalog& catalog, const std::string& tool);
 
 // The measured acceleration spectrum of tool on surface. Throws std::invalid_argument naming the
 // catalog (`catalog_file`; empty: "the bundled catalog") and listing the surfaces the tool has (or
@@ -63,6 +68,7 @@ class ToolSounds {
   bool solves_stylus_modes() const;
   // A design point's full prediction (its descriptors, μ, response), for faces that show them.
   PredictedTool predict(const std::string& point, const std::string& surface);
+  PredictedTool predict(const DesignPoint& point, const std::string& surface);
   const io::Catalog& catalog() const;
 
  private:

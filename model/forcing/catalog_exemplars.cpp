@@ -14,20 +14,11 @@
 
 namespace nibrig::model::forcing {
 
-namespace {
-
-bool has_design(const std::string& material) {
-  try {
-    printed_tip_of(material);
-    return true;
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
-}
-
-}  // namespace
-
-ExemplarSelection select_printed_exemplars(const io::Catalog& catalog) {
+ExemplarSelection select_printed_exemplars(const io::Catalog& catalog,
+                                           const mechanics::MaterialTable* materials) {
+  const auto has_design = [&](const std::string& material) {
+    return materials ? has_printed_design(material, *materials) : has_printed_design(material, {});
+  };
   std::map<std::string, const io::ToolEntry*> tools;
   for (const auto& t : catalog.tools) tools[t.id] = &t;
   ExemplarSelection selection;
@@ -85,13 +76,14 @@ std::vector<DesignResponse> attach_responses(
     std::vector<ForcingExemplar>& exemplars, const mechanics::Design& template_design,
     const mechanics::MaterialTable& materials, const ResponseOptions& options,
     const std::function<void(const DesignResponse&, std::size_t, std::size_t)>& progress) {
-  // Key of a design: tip material, insert length, tip diameter in µm (tips come from a file in mm).
-  using Key = std::tuple<std::string, double, long long>;
+  // Key of a design: tip material, insert length, whole tool, tip diameter in µm (tips come from a
+  // file in mm).
+  using Key = std::tuple<std::string, double, bool, long long>;
   std::map<Key, std::vector<std::size_t>> users;
   std::vector<Key> order;
   for (std::size_t e = 0; e < exemplars.size(); ++e) {
-    const PrintedTip tip = printed_tip_of(exemplars[e].material);
-    const Key key{materials.find(tip.material).name, tip.insert_length,
+    const PrintedTip tip = printed_tip_of(exemplars[e].material, materials);
+    const Key key{materials.find(tip.material).name, tip.insert_length, tip.whole_tool,
                   std::llround(exemplars[e].tip_diameter_m * 1e6)};
     if (!users.count(key)) order.push_back(key);
     users[key].push_back(e);
@@ -102,8 +94,9 @@ std::vector<DesignResponse> attach_responses(
     const auto& members = users.at(key);
     const ForcingExemplar& first = exemplars[members.front()];
     const auto start = std::chrono::steady_clock::now();
-    mechanics::Design design = printed_tool_design(
-        printed_tip_of(first.material), first.tip_diameter_m, template_design, materials);
+    mechanics::Design design =
+        printed_tool_design(printed_tip_of(first.material, materials), first.tip_diameter_m,
+                            template_design, materials);
     if (options.mesh_size > 0) design.mesh_size = options.mesh_size;
     if (options.modes > 0) design.modes = options.modes;
     const mechanics::DesignModel model = mechanics::build_design_model(design, materials);

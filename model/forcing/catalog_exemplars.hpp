@@ -23,10 +23,12 @@ struct ExemplarSelection {
 };
 
 // A pairing is an exemplar when its tool is "printed", has a material with a design
-// (printed_tip_of) and a tip diameter, is not a variant (an id with "_nail": the same print worn
-// by a nail test, no design of its own), and the pairing has a vibration spectrum. The pen-holder
-// prints (penh_*) have no tip diameter.
-ExemplarSelection select_printed_exemplars(const io::Catalog& catalog);
+// (printed_tip_of: the paper's, or with `materials` also any of that table printed whole) and a tip
+// diameter, is not a variant (an id with "_nail": the same print worn by a nail test, no design of
+// its own), and the pairing has a vibration spectrum. The pen-holder prints (penh_*) have no tip
+// diameter.
+ExemplarSelection select_printed_exemplars(const io::Catalog& catalog,
+                                           const mechanics::MaterialTable* materials = nullptr);
 
 // The paper's 27 tools: {vero, DM95, DM85} × {1, 2, 4 mm} × {office, note, stone} (Sec. 5.2).
 bool is_paper_tool(const ForcingExemplar& exemplar);

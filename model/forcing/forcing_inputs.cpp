@@ -46,8 +46,9 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProg
     if (!std::filesystem::exists(path))
       throw std::runtime_error(path.string() + ": no such file (expected " + what + ")");
   const io::Catalog catalog = io::read_catalog(catalog_path);
+  const mech::MaterialTable materials = mech::read_material_table(materials_path);
   ForcingInputs inputs;
-  inputs.selection = select_printed_exemplars(catalog);
+  inputs.selection = select_printed_exemplars(catalog, &materials);
   inputs.exemplars = std::move(inputs.selection.exemplars);
   inputs.selection.exemplars.clear();
   for (const auto& excluded : inputs.selection.excluded) spdlog::info("left out: {}", excluded);
@@ -56,7 +57,6 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProg
                              ": no printed tool with a material, a tip diameter and a vibration "
                              "spectrum: nothing to fit");
 
-  const mech::MaterialTable materials = mech::read_material_table(materials_path);
   const mech::Design template_design = mech::read_design(template_path, materials);
   ResponseOptions response_options;
   response_options.modes = o.modes;

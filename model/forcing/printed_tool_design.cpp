@@ -22,6 +22,31 @@ PrintedTip printed_tip_of(const std::string& catalog_material) {
                               "' has no design (known: vero, DM95, DM85, teflon)");
 }
 
+PrintedTip printed_tip_of(const std::string& catalog_material,
+                          const mechanics::MaterialTable& materials) {
+  try {
+    return printed_tip_of(catalog_material);
+  } catch (const std::invalid_argument&) {
+  }
+  try {
+    return {materials.find(catalog_material).name, 0.0, true};
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(
+        "printed tool material '" + catalog_material +
+        "' has no design: not one of the paper's (vero, DM95, DM85, teflon), and " + e.what());
+  }
+}
+
+bool has_printed_design(const std::string& catalog_material,
+                        const mechanics::MaterialTable& materials) {
+  try {
+    printed_tip_of(catalog_material, materials);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
 mechanics::Design printed_tool_design(const PrintedTip& tip, double tip_diameter_m,
                                       const mechanics::Design& template_design,
                                       const mechanics::MaterialTable& materials) {
@@ -39,20 +64,23 @@ mechanics::Design printed_tool_design(const PrintedTip& tip, double tip_diameter
   mechanics::Design design = template_design;
   mechanics::StylusGeometry geometry = *stylus;
   geometry.tip_diameter = tip_diameter_m;
-  const bool insert = materials.find(tip.material).name != materials.find(body->second).name &&
+  const mechanics::Material& tip_material = materials.find(tip.material);
+  const bool insert = !tip.whole_tool && tip_material.name != materials.find(body->second).name &&
                       tip.insert_length > 0;
   geometry.tip_insert_length = insert ? tip.insert_length : 0.0;
   mechanics::validate(geometry);
   design.shape = geometry;
 
   design.region_materials.clear();
-  design.region_materials["body"] = body->second;
+  design.region_materials["body"] = tip.whole_tool ? tip_material.name : body->second;
   if (insert) design.region_materials["tip"] = tip.material;
-  design.damping = mechanics::design_damping(template_design, materials).first;
+  design.damping = tip.whole_tool && tip_material.damping
+                       ? *tip_material.damping
+                       : mechanics::design_damping(template_design, materials).first;
 
   design.tip.point = mechanics::default_tip(geometry).point;  // the apex moved with the diameter
-  design.name = "printed " + (insert ? tip.material + " tip" : body->second) + ", " +
-                tip_label(tip_diameter_m);
+  design.name = "printed " + (insert ? tip.material + " tip" : design.region_materials["body"]) +
+                ", " + tip_label(tip_diameter_m);
   return design;
 }
 

@@ -16,9 +16,11 @@ inline constexpr double kPrintedTipInsertLength = 0.006;  // m
 
 // How a catalog material is printed: the material (a name in assets/materials.json) of the tip
 // insert and the insert's length; insert_length = 0 means the whole tool is the body material.
+// whole_tool: the whole tool, body and tip, is `material` (a lab's one-material print).
 struct PrintedTip {
   std::string material;
   double insert_length = 0.0;  // m
+  bool whole_tool = false;
 };
 
 // The catalog's printed materials:
@@ -33,6 +35,16 @@ struct PrintedTip {
 // have no design).
 PrintedTip printed_tip_of(const std::string& catalog_material);
 
+// The paper's materials as above; any other name a material of `materials` (a lab's own, or a
+// bundled one such as PLA) printed as the whole tool, as an FDM or SLA printer makes a stylus of
+// one material. Throws std::invalid_argument naming the material and what the table knows.
+PrintedTip printed_tip_of(const std::string& catalog_material,
+                          const mechanics::MaterialTable& materials);
+
+// Whether printed_tip_of(catalog_material, materials) has a design for it.
+bool has_printed_design(const std::string& catalog_material,
+                        const mechanics::MaterialTable& materials);
+
 // `template_design` must be a parametric stylus ("kind": "stylus"): its body (length, diameter,
 // taper, grip), body material, mesh size, mode count and sensor are kept (assumptions stated in
 // that file and in mechanics/stylus_description.hpp: 10 mm × 120 mm body, 15 mm taper, 30 mm grip,
@@ -40,7 +52,9 @@ PrintedTip printed_tip_of(const std::string& catalog_material);
 // tip insert becomes `tip` (no insert when its material is the body's), the tip probe moves to the
 // new apex with the template's force direction, and the damping is fixed to the template's (its
 // own, else its body material's): Rayleigh damping must be one for the whole body to keep modes
-// uncoupled, and the soft materials' own damping is not known. Throws std::invalid_argument for a
+// uncoupled, and the soft materials' own damping is not known. A whole-tool print is the template
+// in `tip.material` throughout, damped as that material when its table entry has damping (a
+// ring-down calibration gives it), else as the template. Throws std::invalid_argument for a
 // template that is not a stylus or has no "body" material, and for a non-positive diameter.
 mechanics::Design printed_tool_design(const PrintedTip& tip, double tip_diameter_m,
                                       const mechanics::Design& template_design,

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+#include <vector>
+
 #include "model/mechanics/design_model.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -97,6 +101,49 @@ TEST_F(PrintedToolDesign, RefusesWhatHasNoDesign) {
   EXPECT_EQ(printed_tool_design(printed_tip_of("DM95"), 0.001, template_design, materials)
                 .region_materials.at("tip"),
             "DM95");
+}
+
+TEST_F(PrintedToolDesign, ALabsMaterialIsTheWholeToolDampedAsItselfWhenItsDampingIsKnown) {
+  const PrintedTip pla = printed_tip_of("PLA", materials);
+  EXPECT_TRUE(pla.whole_tool);
+  EXPECT_EQ(pla.material, "PLA");
+  EXPECT_EQ(printed_tip_of("pla", materials).material, "PLA");  // as the table names it
+  const mech::Design whole = printed_tool_design(pla, 0.001, template_design, materials);
+  EXPECT_EQ(whole.region_materials, (std::map<std::string, std::string>{{"body", "PLA"}}));
+  EXPECT_DOUBLE_EQ(std::get<mech::StylusGeometry>(whole.shape).tip_insert_length, 0.0);
+  // The datasheet PLA has no damping: the template's (VeroClear's fitted Rayleigh damping) holds.
+  ASSERT_TRUE(whole.damping.has_value());
+  EXPECT_DOUBLE_EQ(whole.damping->stiffness,
+                   mech::design_damping(template_design, materials).first.stiffness);
+  // A ring-down calibration gives a material its own damping: the whole print takes it.
+  std::vector<mech::Material> all = materials.materials();
+  mech::Material lab = materials.find("PLA");
+  lab.name = "PLA-lab";
+  lab.damping = mech::RayleighDamping{3.0, 2.0e-6};
+  all.push_back(lab);
+  const mech::MaterialTable with_lab(std::move(all));
+  const mech::Design damped =
+      printed_tool_design(printed_tip_of("PLA-lab", with_lab), 0.004, template_design, with_lab);
+  EXPECT_EQ(damped.region_materials.at("body"), "PLA-lab");
+  EXPECT_DOUBLE_EQ(damped.damping->mass, 3.0);
+  EXPECT_DOUBLE_EQ(damped.damping->stiffness, 2.0e-6);
+  // The paper's names keep their own designs with a table too.
+  EXPECT_FALSE(printed_tip_of("DM95", materials).whole_tool);
+  EXPECT_EQ(printed_tip_of("vero", materials).material, "VeroClear-Piovarci2018");
+}
+
+TEST_F(PrintedToolDesign, AMaterialNoTableHoldsHasNoDesignAndIsNamed) {
+  try {
+    printed_tip_of("unobtainium", materials);
+    FAIL() << "an unknown material has no design";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'unobtainium'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PLA"), std::string::npos)
+        << e.what();  // what the table has
+  }
+  EXPECT_FALSE(has_printed_design("unobtainium", materials));
+  EXPECT_TRUE(has_printed_design("TPU-95A", materials));
+  EXPECT_FALSE(has_printed_design("TPU-95A", mech::MaterialTable{}));  // the paper's alone
 }
 
 }  // namespace
