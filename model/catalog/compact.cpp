@@ -11,31 +11,10 @@ io::VelocitySpectrum resample_spectrum(const io::VelocitySpectrum& spectrum,
   const auto& f = spectrum.frequencies_hz;
   if (!(frequency_step_hz > 0.0)) throw std::invalid_argument("frequency step must be positive");
   if (f.size() < 2) return spectrum;
-  io::VelocitySpectrum out;
-  out.speeds_m_s = spectrum.speeds_m_s;
+  std::vector<double> grid;
   const double first = std::ceil(f.front() / frequency_step_hz) * frequency_step_hz;
-  for (double x = first; x <= f.back() + 1e-9; x += frequency_step_hz)
-    out.frequencies_hz.push_back(x);
-  for (const auto& row : spectrum.amplitude_m_s2) {
-    std::vector<double> resampled;
-    resampled.reserve(out.frequencies_hz.size());
-    for (double x : out.frequencies_hz) {
-      const auto upper = std::lower_bound(f.begin(), f.end(), x);
-      if (upper == f.begin()) {
-        resampled.push_back(row.front());
-        continue;
-      }
-      if (upper == f.end()) {
-        resampled.push_back(row.back());
-        continue;
-      }
-      const auto i = static_cast<std::size_t>(upper - f.begin());
-      const double t = (x - f[i - 1]) / (f[i] - f[i - 1]);
-      resampled.push_back(row[i - 1] + t * (row[i] - row[i - 1]));
-    }
-    out.amplitude_m_s2.push_back(std::move(resampled));
-  }
-  return out;
+  for (double x = first; x <= f.back() + 1e-9; x += frequency_step_hz) grid.push_back(x);
+  return io::spectrum_at_frequencies(spectrum, grid);
 }
 
 double round_significant(double value, int digits) {

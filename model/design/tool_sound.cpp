@@ -68,11 +68,7 @@ void ToolSounds::check(const std::string& tool, const std::string& surface) cons
     pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
 }
 
-PredictedTool ToolSounds::predict(const std::string& point, const std::string& surface) {
-  return predict(parse_design_point(point), surface);  // refuses a bad point before any work
-}
-
-PredictedTool ToolSounds::predict(const DesignPoint& design, const std::string& surface) {
+const PredictionSetup& ToolSounds::prediction_setup() {
   if (!state_->prediction) {
     forcing::ForcingInputOptions options;
     options.catalog = state_->options.catalog;
@@ -80,7 +76,23 @@ PredictedTool ToolSounds::predict(const DesignPoint& design, const std::string& 
     state_->prediction = load_prediction_inputs(options, state_->options.forcing_model,
                                                 std::nullopt, state_->options.progress);
   }
-  return predict_tool(state_->prediction->setup, design, surface);
+  return state_->prediction->setup;
+}
+
+PredictedTool ToolSounds::predict(const std::string& point, const std::string& surface) {
+  const DesignPoint design = parse_design_point(point);  // refuses a bad point before any work
+  return predict_tool(prediction_setup(), design, surface);
+}
+
+// A print's sound is its modes driven by its predicted spectrum; its friction, which a print the
+// catalog has not measured lacks, plays no part in it.
+ToolSound ToolSounds::print_sound(const DesignPoint& point, const std::string& surface) {
+  const PredictionSetup& setup = prediction_setup();
+  SimulatedResponse response = simulate_response(setup, point);
+  io::VelocitySpectrum spectrum =
+      predict_spectrum(*setup.model, point, surface, response.response_magnitude);
+  return {"predicted " + label(point) + " on " + surface, std::move(response.design_name),
+          std::move(response.modal), std::move(spectrum)};
 }
 
 ToolSound predicted_sound(PredictedTool p) {
@@ -96,8 +108,7 @@ bool ToolSounds::solves_stylus_modes() const {
 
 ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {
   if (names_design_point(tool)) return predicted_sound(predict(tool, surface));
-  if (auto print = unmeasured_print(state_->catalog, tool))
-    return predicted_sound(predict(*print, surface));
+  if (auto print = unmeasured_print(state_->catalog, tool)) return print_sound(*print, surface);
   const io::VelocitySpectrum& spectrum =
       pairing_spectrum(state_->catalog, state_->options.catalog, tool, surface);
   if (!state_->stylus) {

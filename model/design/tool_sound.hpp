@@ -68,10 +68,11 @@ class ToolSounds {
   bool solves_stylus_modes() const;
   // A design point's full prediction (its descriptors, μ, response), for faces that show them.
   PredictedTool predict(const std::string& point, const std::string& surface);
-  PredictedTool predict(const DesignPoint& point, const std::string& surface);
   const io::Catalog& catalog() const;
 
  private:
+  const PredictionSetup& prediction_setup();
+  ToolSound print_sound(const DesignPoint& point, const std::string& surface);
   struct State;
   std::unique_ptr<State> state_;
 };

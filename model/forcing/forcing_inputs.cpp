@@ -14,6 +14,7 @@
 #include "model/forcing/leave_one_out.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
+#include "model/io/velocity_spectrum.hpp"
 #include "model/measure/threshold_curve.hpp"
 #include "model/mechanics/material_table.hpp"
 
@@ -23,13 +24,16 @@ namespace mech = mechanics;
 
 void check_forcing_input_options(const ForcingInputOptions& o) {
   if (o.modes < 0 || o.modes > kMostModes)
-    throw std::invalid_argument("modes: " + std::to_string(o.modes) + ": expected 0 (the template's) or 1 to " +
+    throw std::invalid_argument("modes: " + std::to_string(o.modes) +
+                                ": expected 0 (the template's) or 1 to " +
                                 std::to_string(kMostModes));
   // A size below DBL_MIN is no size: it would mesh without end.
   if (!(o.mesh_size == 0.0 || (o.mesh_size >= DBL_MIN && o.mesh_size <= kLargestMeshSizeM))) {
     std::ostringstream message;
-    message << "mesh_size: " << o.mesh_size << ": expected 0 (the template's) or an element size in metres, > 0 and at "
-            << "most " << kLargestMeshSizeM << " (a stylus is centimetres long: millimetres given as metres?)";
+    message << "mesh_size: " << o.mesh_size
+            << ": expected 0 (the template's) or an element size in metres, > 0 and at "
+            << "most " << kLargestMeshSizeM
+            << " (a stylus is centimetres long: millimetres given as metres?)";
     throw std::invalid_argument(message.str());
   }
 }
@@ -52,6 +56,23 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProg
   inputs.exemplars = std::move(inputs.selection.exemplars);
   inputs.selection.exemplars.clear();
   for (const auto& excluded : inputs.selection.excluded) spdlog::info("left out: {}", excluded);
+  if (!o.frequencies_hz.empty()) {
+    std::size_t resampled = 0;
+    for (auto& e : inputs.exemplars) {
+      if (e.measured.frequencies_hz == o.frequencies_hz) continue;
+      try {
+        e.measured = io::spectrum_at_frequencies(e.measured, o.frequencies_hz);
+      } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(catalog_path.string() + ": " + e.tool + " on " + e.surface +
+                                    ": " + error.what() + " (the model's grid)");
+      }
+      ++resampled;
+    }
+    if (resampled > 0)
+      inputs.notes.push_back(
+          fmt::format("{} spectra interpolated linearly onto the model's {} frequencies", resampled,
+                      o.frequencies_hz.size()));
+  }
   if (inputs.exemplars.empty())
     throw std::runtime_error(catalog_path.string() +
                              ": no printed tool with a material, a tip diameter and a vibration "
@@ -62,13 +83,13 @@ ForcingInputs load_forcing_inputs(const ForcingInputOptions& o, const DesignProg
   response_options.modes = o.modes;
   response_options.mesh_size = o.mesh_size;
   const auto start = std::chrono::steady_clock::now();
-  inputs.designs = attach_responses(
-      inputs.exemplars, template_design, materials, response_options,
-      [&](const DesignResponse& r, std::size_t done, std::size_t total) {
-        spdlog::info("{}: {} modes, first at {:.1f} Hz, {:.2f} s", r.design, r.modes,
-                     r.first_mode_hz, r.seconds);
-        if (progress) progress(r, done, total);
-      });
+  inputs.designs =
+      attach_responses(inputs.exemplars, template_design, materials, response_options,
+                       [&](const DesignResponse& r, std::size_t done, std::size_t total) {
+                         spdlog::info("{}: {} modes, first at {:.1f} Hz, {:.2f} s", r.design,
+                                      r.modes, r.first_mode_hz, r.seconds);
+                         if (progress) progress(r, done, total);
+                       });
   inputs.response_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -22,6 +22,10 @@ struct ForcingInputOptions {
   std::filesystem::path materials;        // empty: assets/materials.json
   int modes = 0;                          // 0: the template's
   double mesh_size = 0.0;                 // m; 0: the template's
+  // Empty: each exemplar's spectrum as the catalog holds it. Else every spectrum is put on these
+  // frequencies (io::spectrum_at_frequencies) before its response is computed: a calibration takes
+  // a lab's recordings, whatever their resolution, on its model's grid.
+  std::vector<double> frequencies_hz;
 };
 
 // The ranges every face holds these options to (the command line's check the same numbers): at
@@ -43,7 +47,8 @@ struct ForcingInputs {
 };
 
 // Called as each distinct design has been meshed and solved (done of total), for progress.
-using DesignProgress = std::function<void(const DesignResponse&, std::size_t done, std::size_t total)>;
+using DesignProgress =
+    std::function<void(const DesignResponse&, std::size_t done, std::size_t total)>;
 
 // Reads the catalog first (so a bad catalog fails before any meshing), then the materials and the
 // template, then meshes and solves each distinct design once. Throws std::runtime_error naming a

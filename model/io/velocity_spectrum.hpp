@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace nibrig::model::io {
@@ -44,5 +45,13 @@ inline std::size_t nearest_speed_row(const VelocitySpectrum& spectrum, double v)
       nearest = m;
   return nearest;
 }
+
+// `spectrum` at `frequencies_hz` (ascending), each row linearly interpolated between its two
+// nearest bins: how a spectrum measured at another resolution (a 48 kHz rig session's 0.67 Hz bins)
+// is put on a model's grid (the bundled catalog's 2 Hz), and how a catalog is compacted. Throws
+// std::invalid_argument when the spectrum has fewer than two bins or a frequency lies outside its
+// range by more than a thousandth of its first bin step.
+VelocitySpectrum spectrum_at_frequencies(const VelocitySpectrum& spectrum,
+                                         std::span<const double> frequencies_hz);
 
 }  // namespace nibrig::model::io

@@ -211,6 +211,13 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
   write_calibration_outputs(c.model, o.out);
 }
 
+// The catalog's prints; against a model, on its grid (a lab's recordings have their own).
+ForcingInputs calibration_inputs(ForcingInputOptions options,
+                                 const forcing::ForcingModel* against) {
+  if (against != nullptr) options.frequencies_hz = against->frequencies_hz;
+  return load_forcing_inputs(options, design_progress());
+}
+
 // A model named but not there, or a name stored already, fail before the designs are simulated.
 std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> calibration_model_first(
     const std::string& forcing_model, const CalibrationOutput& out) {
@@ -222,7 +229,7 @@ std::optional<std::pair<std::filesystem::path, forcing::ForcingModel>> calibrati
 
 void run_calibrate_material(const MaterialCalibrateOptions& o) {
   const auto against = calibration_model_first(o.forcing_model, o.out);
-  const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
+  const ForcingInputs inputs = calibration_inputs(o.inputs, against ? &against->second : nullptr);
   std::cout << describe_inputs(inputs);
   if (against)
     run_material_calibration(o, against->first, against->second, inputs);
@@ -311,7 +318,7 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesy
 
 void run_calibrate_surface(const SurfaceCalibrateOptions& o) {
   const auto against = calibration_model_first(o.forcing_model, o.out);
-  const ForcingInputs inputs = load_forcing_inputs(o.inputs, design_progress());
+  const ForcingInputs inputs = calibration_inputs(o.inputs, against ? &against->second : nullptr);
   std::cout << describe_inputs(inputs);
   if (against)
     run_surface_calibration(o, against->first, against->second, inputs);
