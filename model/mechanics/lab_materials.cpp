@@ -1,7 +1,12 @@
 #include "model/mechanics/lab_materials.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <system_error>
 
@@ -35,6 +40,30 @@ nlohmann::json material_entry(const Material& m) {
   return j;
 }
 
+std::vector<std::filesystem::path> lab_material_files(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return {};
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Why a lab file was left out, naming it (a format error names it already).
+std::string left_out(const std::filesystem::path& file, const std::string& why) {
+  return why.find(file.string()) == std::string::npos ? file.string() + ": " + why : why;
+}
+
+// A command reads the table more than once; a person needs to hear of a broken file once.
+void warn_once(const std::filesystem::path& file, const std::string& why) {
+  static std::mutex mutex;
+  static std::set<std::string> warned;
+  std::lock_guard lock(mutex);
+  if (warned.insert(file.string()).second)
+    spdlog::warn("lab material left out: {}", left_out(file, why));
+}
+
 }  // namespace
 
 std::filesystem::path lab_materials_folder() {
@@ -45,39 +74,55 @@ std::filesystem::path lab_material_file(const std::string& name) {
   return io::user_store_file(lab_materials_folder(), name, "material");
 }
 
-std::vector<Material> read_lab_materials(const std::filesystem::path& folder) {
-  std::error_code error;
-  if (!std::filesystem::is_directory(folder, error)) return {};
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  std::vector<Material> out;
-  for (const auto& file : files) {
-    const MaterialTable one = read_material_file(file);
-    if (one.materials().size() != 1)
-      throw io::FormatError(file, "field 'materials'",
-                            "a lab material's file holds exactly one material, found " +
-                                std::to_string(one.materials().size()));
-    const Material& m = one.materials().front();
-    // The file name is how the lab finds it again: a file renamed by hand would hide its material.
-    if (io::user_store_file(folder, m.name, "material").filename() != file.filename())
-      throw io::FormatError(
-          file, "field 'materials[0].name'",
-          "'" + m.name + "' belongs in " +
-              io::user_store_file(folder, m.name, "material").filename().string());
-    out.push_back(m);
+Material read_lab_material_file(const std::filesystem::path& file,
+                                const std::filesystem::path& folder) {
+  const MaterialTable one = read_material_file(file);
+  if (one.materials().size() != 1)
+    throw io::FormatError(file, "field 'materials'",
+                          "a lab material's file holds exactly one material, found " +
+                              std::to_string(one.materials().size()));
+  Material m = one.materials().front();
+  // The file name is how the lab finds it again: a file renamed by hand would hide its material.
+  if (io::user_store_file(folder, m.name, "material").filename() != file.filename())
+    throw io::FormatError(file, "field 'materials[0].name'",
+                          "'" + m.name + "' belongs in " +
+                              io::user_store_file(folder, m.name, "material").filename().string());
+  std::ifstream in(file);
+  const auto root = nlohmann::json::parse(in, nullptr, false);
+  if (root.is_object() && root.contains("calibration") && root["calibration"].is_object()) {
+    const auto& calibration = root["calibration"];
+    if (calibration.contains("printed_as")) {
+      if (!calibration["printed_as"].is_string())
+        throw io::FormatError(file, "field 'calibration.printed_as'",
+                              "expected the name of the material printed");
+      m.printed_as = calibration["printed_as"].get<std::string>();
+    }
   }
+  return m;
+}
+
+std::vector<Material> read_lab_materials(const std::filesystem::path& folder) {
+  std::vector<Material> out;
+  for (const auto& file : lab_material_files(folder))
+    out.push_back(read_lab_material_file(file, folder));
   return out;
 }
 
 MaterialTable with_lab_materials(const MaterialTable& table, const std::filesystem::path& folder) {
   std::vector<Material> all = table.materials();
-  for (auto& m : read_lab_materials(folder))
-    if (!table_has(table, m.name)) all.push_back(std::move(m));
+  std::string skipped;
+  for (const auto& file : lab_material_files(folder)) {
+    try {
+      Material m = read_lab_material_file(file, folder);
+      if (!table_has(table, m.name)) all.push_back(std::move(m));
+    } catch (const std::exception& e) {  // io::FormatError, or a file that vanished meanwhile
+      skipped += "; skipped " + left_out(file, e.what());
+      warn_once(file, e.what());
+    }
+  }
   MaterialTable out(std::move(all));
   std::vector<std::string> places = table.looked_in();
-  places.push_back("the lab's materials in " + folder.string());
+  places.push_back("the lab's materials in " + folder.string() + skipped);
   out.set_looked_in(std::move(places));
   return out;
 }

@@ -19,14 +19,22 @@ std::filesystem::path lab_materials_folder();
 // Where a lab material of `name` is kept: <folder>/<name>.json (made safe for a file name).
 std::filesystem::path lab_material_file(const std::string& name);
 
-// Every *.json in the folder (none when it does not exist), by file name. Throws io::FormatError
-// naming the file for one that is not a table of exactly one material, or whose material's name
-// is not the one its file name says.
+// One lab material's file in `folder`, its printed_as from its calibration. Throws io::FormatError
+// naming the file for one that is not a table of exactly one material, or whose material's name is
+// not the one its file name says.
+Material read_lab_material_file(const std::filesystem::path& file,
+                                const std::filesystem::path& folder);
+
+// Every *.json in the folder (none when it does not exist), by file name, as
+// read_lab_material_file reads each (and throws).
 std::vector<Material> read_lab_materials(const std::filesystem::path& folder);
 
 // `table` with the lab's materials after its own. A lab material named as one of the table's is
 // left out: the table wins, because the table is what the design was made with (a bundled name is
-// refused at saving, so only a table given with --materials can hold such a name).
+// refused at saving, so only a table given with --materials can hold such a name). A lab file that
+// cannot be read is left out too, so that one broken file stops no command that does not need it:
+// a warning names it once per process, and a material looked for and not found names it in
+// find()'s error with why it was skipped.
 MaterialTable with_lab_materials(const MaterialTable& table,
                                  const std::filesystem::path& folder = lab_materials_folder());
 

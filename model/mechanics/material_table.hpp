@@ -27,6 +27,9 @@ struct Material {
   // an "estimate" (e.g. from a Shore hardness); empty when a table does not say.
   std::string basis;
   std::string source;
+  // A lab's own material: the bundled one its prints are made of (what a printer loads for it; its
+  // calibration's "printed_as"). Empty: the material itself.
+  std::string printed_as;
 };
 
 // "fitted", "datasheet", "estimate": what a table's `basis` may say.

@@ -120,5 +120,28 @@ TEST(LabMaterials, AFileRenamedByHandOrHoldingTwoIsRefusedNamingIt) {
   }
 }
 
+TEST(LabMaterials, ABrokenFileIsLeftOutAndNamedWhenItsMaterialIsAskedFor) {
+  const auto store = nibrig::test::scratch_dir("lab_materials_broken_file");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
+  const MaterialTable bundled = read_material_file(io::default_materials());
+  save_lab_material(lab_pla("shop-pla"), {{"printed_as", "PLA"}}, bundled, false);
+  std::ofstream(store / "half-written.json")
+      << R"({"format": "nibrig-materials", "version": 1, "mater)";
+  // Every other material is found, the lab's own with what it was printed as.
+  const MaterialTable table = read_material_table(io::default_materials());
+  EXPECT_EQ(table.find("shop-pla").printed_as, "PLA");
+  EXPECT_EQ(table.find("PETG").printed_as, "");
+  // The broken one is named, with why, where a material is looked for in vain.
+  try {
+    table.find("half-written");
+    FAIL() << "a broken file's material was found";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr("skipped " + (store / "half-written.json").string() + " line 1"));
+  }
+  // The strict reading, for a face that lists the lab's materials, still refuses it.
+  EXPECT_THROW(read_lab_materials(store), io::FormatError);
+}
+
 }  // namespace
 }  // namespace nibrig::model::mechanics

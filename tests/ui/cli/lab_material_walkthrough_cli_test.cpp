@@ -198,6 +198,19 @@ TEST(LabMaterialWalkthrough, AHiddenMaterialIsCalibratedFromItsBarAndTwoPrintsOn
       model::forcing::nail_pair_repeatability(model::io::read_catalog(model::io::default_catalog()))
           .rms_db;
   EXPECT_LT(new_tip.rms_db, repeatability_db);
+  // And the lab prints it: the export for its FDM printer takes lab-pla as the PLA it was printed
+  // in, its print sheet predicted with the calibrated model.
+  const auto stylus = root / "print" / "lab-2mm.3mf";
+  ::testing::internal::CaptureStdout();
+  const int exported = test::run_cli({"export", "lab-pla,tip=2mm", "--printer", "prusa-mk3s",
+                                      "--surface", "office", "--forcing", "lab", "--catalog",
+                                      catalog_file.string(), "-o", stylus.string()});
+  const std::string export_said = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(exported, 0) << export_said;
+  EXPECT_TRUE(std::filesystem::exists(stylus));
+  const auto recipe = json_of(root / "print" / "lab-2mm.json");
+  EXPECT_EQ(recipe["printer"]["name"], "prusa-mk3s") << recipe.dump(1);
+
   const auto knot_error_db = [&](std::size_t k) {
     return 20 * std::log10(std::exp(curve[k] - truth_curve[k]));
   };
