@@ -2,6 +2,7 @@
 
 #include "model/forcing/forcing_file.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/mechanics/lab_materials.hpp"
 
 namespace nibrig::model::design {
 
@@ -23,6 +24,7 @@ io::CacheKey default_forcing_key(const DefaultsOptions& o, const ForcingResoluti
   key.add_file(io::or_default(o.stylus_design, io::default_stylus_design));
   key.add_file(io::or_default(o.materials, io::default_materials));
   key.add_file(io::default_threshold_curve());
+  mechanics::add_lab_materials(key);
   key.add(std::int64_t{resolution.modes}).add(resolution.mesh_size);
   return key;
 }

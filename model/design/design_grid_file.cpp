@@ -6,10 +6,11 @@
 #include <system_error>
 
 #include "model/io/atomic_file.hpp"
+#include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/user_cache.hpp"
-#include "model/io/finite_output.hpp"
+#include "model/mechanics/lab_materials.hpp"
 
 namespace nibrig::model::design {
 
@@ -32,12 +33,14 @@ std::string design_grid_cache_key(const PredictionInputs& inputs, const GridAxes
   io::CacheKey key;
   key.add(std::string_view(kFormat)).add(static_cast<std::int64_t>(kDesignGridFormatVersion));
   key.add_file(inputs.design_template_file).add_file(inputs.materials_file);
+  mechanics::add_lab_materials(key);
   key.add(axes.material_a).add(axes.material_b);
   key.add(static_cast<std::int64_t>(axes.fractions.size()));
   for (double f : axes.fractions) key.add(f);
   key.add(static_cast<std::int64_t>(axes.tips_m.size()));
   for (double t : axes.tips_m) key.add(t);
-  key.add(solved_mesh_size(inputs.setup)).add(static_cast<std::int64_t>(solved_modes(inputs.setup)));
+  key.add(solved_mesh_size(inputs.setup))
+      .add(static_cast<std::int64_t>(solved_modes(inputs.setup)));
   key.add(static_cast<std::int64_t>(inputs.model.frequencies_hz.size()));
   for (double f : inputs.model.frequencies_hz) key.add(f);
   return key.hex();
@@ -88,9 +91,9 @@ DesignResponseGrid read_design_grid(const std::filesystem::path& file,
                               " (an older grid is recomputed, not read)");
   const std::string key = jf::string_member(root, "key", file, "");
   if (!expected_key.empty() && key != expected_key)
-    throw io::FormatError(file, jf::place("key"),
-                          "expected '" + expected_key + "' (the grid of these inputs), found '" +
-                              key + "'");
+    throw io::FormatError(
+        file, jf::place("key"),
+        "expected '" + expected_key + "' (the grid of these inputs), found '" + key + "'");
   DesignResponseGrid grid;
   const json& materials = jf::as_array(jf::member(root, "materials", file, ""), file, "materials");
   if (materials.size() != 2)
@@ -158,8 +161,9 @@ DesignResponseGrid compute_and_cache_grid(const PredictionInputs& inputs, const 
   try {
     write_design_grid(design_grid_cache_file(key), grid, key);
   } catch (const std::exception& e) {
-    spdlog::warn("the design grid was computed but cannot be cached (it is recomputed next time): {}",
-                 e.what());
+    spdlog::warn(
+        "the design grid was computed but cannot be cached (it is recomputed next time): {}",
+        e.what());
   }
   return grid;
 }

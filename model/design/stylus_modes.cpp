@@ -7,13 +7,14 @@
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/mechanics/design_model.hpp"
+#include "model/mechanics/lab_materials.hpp"
 #include "model/mechanics/material_table.hpp"
 #include "model/mechanics/stylus_description.hpp"
 #include "model/modal/modal_model_checks.hpp"
-#include "model/io/finite_output.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -39,12 +40,9 @@ StylusModes read_stylus_modes(const std::filesystem::path& file) {
 }
 
 void write_stylus_modes(const std::filesystem::path& file, const StylusModes& modes) {
-  const nlohmann::json out = {{"format", kStylusModesFormat},
-                              {"version", kStylusModesVersion},
-                              {"design", modes.design_name},
-                              {"omega_rad_s", modes.modal.omega},
-                              {"zeta", modes.modal.zeta},
-                              {"input", modes.modal.input},
+  const nlohmann::json out = {{"format", kStylusModesFormat}, {"version", kStylusModesVersion},
+                              {"design", modes.design_name},  {"omega_rad_s", modes.modal.omega},
+                              {"zeta", modes.modal.zeta},     {"input", modes.modal.input},
                               {"output", modes.modal.output}};
   // dump() writes each double with the digits that read back to the same double.
   io::write_file_atomically(file, io::json_text(out, file, -1));
@@ -56,7 +54,9 @@ std::filesystem::path stylus_modes_file(const std::filesystem::path& design_file
                                         const std::filesystem::path& cache_dir) {
   io::CacheKey key;
   key.add("nibrig stylus modes").add(std::int64_t{kStylusModesVersion});
-  key.add_file(io::or_default(design_file, io::default_stylus_design)).add_file(io::default_materials());
+  key.add_file(io::or_default(design_file, io::default_stylus_design))
+      .add_file(io::default_materials());
+  mechanics::add_lab_materials(key);
   return cache_file(cache_dir.empty() ? io::user_cache_dir() : cache_dir, "stylus_modes", key);
 }
 

@@ -127,6 +127,19 @@ MaterialTable with_lab_materials(const MaterialTable& table, const std::filesyst
   return out;
 }
 
+void add_lab_materials(io::CacheKey& key, const std::filesystem::path& folder) {
+  const auto files = lab_material_files(folder);
+  key.add(static_cast<std::int64_t>(files.size()));
+  for (const auto& file : files) {
+    key.add(file.filename().string());
+    try {
+      key.add_file(file);
+    } catch (const std::runtime_error&) {  // gone meanwhile: as if never there
+      key.add(std::string_view("unreadable"));
+    }
+  }
+}
+
 void check_lab_material_name(const std::string& name, const MaterialTable& bundled, bool replace) {
   if (name.empty()) throw std::invalid_argument("a lab material needs a name");
   const auto file = lab_material_file(name);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "model/io/user_cache.hpp"
 #include "model/mechanics/material_table.hpp"
 
 namespace nibrig::model::mechanics {
@@ -37,6 +38,11 @@ std::vector<Material> read_lab_materials(const std::filesystem::path& folder);
 // find()'s error with why it was skipped.
 MaterialTable with_lab_materials(const MaterialTable& table,
                                  const std::filesystem::path& folder = lab_materials_folder());
+
+// Adds every lab material file's name and content to `key`: a cached result computed from the
+// material table (io/user_cache.hpp) is stale once the lab recalibrates, adds or removes one.
+void add_lab_materials(io::CacheKey& key,
+                       const std::filesystem::path& folder = lab_materials_folder());
 
 // Refuses (std::invalid_argument naming the name and the file) a name that `bundled` holds, and a
 // name the lab already has unless `replace`: what save_lab_material checks, for a face to ask

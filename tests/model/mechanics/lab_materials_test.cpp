@@ -143,5 +143,27 @@ TEST(LabMaterials, ABrokenFileIsLeftOutAndNamedWhenItsMaterialIsAskedFor) {
   EXPECT_THROW(read_lab_materials(store), io::FormatError);
 }
 
+TEST(LabMaterials, ACachedResultsKeyChangesWithTheLabsFilesAndOnlyWithThem) {
+  const auto store = nibrig::test::scratch_dir("lab_materials_cache_key");
+  const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
+  const auto key = [&] {
+    io::CacheKey k;
+    add_lab_materials(k, store);
+    return k.hex();
+  };
+  const std::string none = key();
+  const MaterialTable bundled = read_material_file(io::default_materials());
+  save_lab_material(lab_pla("shop-pla"), {}, bundled, false);
+  const std::string one = key();
+  EXPECT_NE(one, none);
+  EXPECT_EQ(key(), one);  // nothing changed: the same key
+  Material stiffer = lab_pla("shop-pla");
+  stiffer.youngs_modulus *= 1.1;
+  save_lab_material(stiffer, {}, bundled, true);  // recalibrated
+  EXPECT_NE(key(), one);
+  std::filesystem::remove(store / "shop-pla.json");
+  EXPECT_EQ(key(), none);
+}
+
 }  // namespace
 }  // namespace nibrig::model::mechanics
