@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "model/io/bundled_assets.hpp"
 #include "model/io/utc_time.hpp"
+#include "model/mechanics/lab_materials.hpp"
 
 namespace nibrig::rig {
 
@@ -31,6 +33,24 @@ model::mechanics::RingDownCalibration calibrate_bar(
       {"printer_process", bar.printer_process},
       {"date", model::io::now_utc_iso8601()}};
   return model::mechanics::calibrate_ring_down(model, recording, options);
+}
+
+SavedBarCalibration calibrate_and_save_bar(const std::filesystem::path& bar_folder,
+                                           const std::filesystem::path& trace,
+                                           const std::string& name,
+                                           const std::filesystem::path& materials_file,
+                                           bool calibrated_trace, bool replace) {
+  const auto file = materials_file.empty() ? model::io::default_materials() : materials_file;
+  const model::mechanics::MaterialTable bundled = model::mechanics::read_material_file(file);
+  const model::mechanics::MaterialTable materials = model::mechanics::with_lab_materials(bundled);
+  const CalibrationBarRecord bar = read_calibration_bar(bar_folder);
+  materials.find(bar.bar.material);  // the bar's material must still be in the table
+  model::mechanics::check_lab_material_name(name, bundled, replace);
+  SavedBarCalibration out;
+  out.result = calibrate_bar(bar, trace, name, materials, calibrated_trace);
+  out.saved = model::mechanics::save_lab_material(out.result.material, out.result.calibration,
+                                                  bundled, replace);
+  return out;
 }
 
 }  // namespace nibrig::rig

@@ -19,4 +19,20 @@ model::mechanics::RingDownCalibration calibrate_bar(
     const CalibrationBarRecord& bar, const std::filesystem::path& trace, const std::string& name,
     const model::mechanics::MaterialTable& materials, bool calibrated_trace = false);
 
+struct SavedBarCalibration {
+  model::mechanics::RingDownCalibration result;
+  std::filesystem::path saved;  // the lab's file of the material
+};
+
+// The whole step, as every face runs it: the bar's record read from `bar_folder` (or its file), the
+// name checked against the bundled table `materials_file` (empty: assets/materials.json) and the
+// lab's store (a name it holds is refused unless `replace`), and the bar's material found in the
+// table, all before the fit, which takes seconds of meshing; then calibrate_bar, and the material
+// saved among the lab's (basis fitted). Throws what those throw, each naming its file or name.
+SavedBarCalibration calibrate_and_save_bar(const std::filesystem::path& bar_folder,
+                                           const std::filesystem::path& trace,
+                                           const std::string& name,
+                                           const std::filesystem::path& materials_file,
+                                           bool calibrated_trace, bool replace);
+
 }  // namespace nibrig::rig

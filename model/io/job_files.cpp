@@ -79,7 +79,18 @@ void note_output(const std::filesystem::path& file) {
   if (std::find(n.outputs.begin(), n.outputs.end(), id) == n.outputs.end()) n.outputs.push_back(id);
 }
 
-void refuse_replacing_input(const std::filesystem::path& named, const std::filesystem::path& target) {
+void release_input(const std::filesystem::path& file) {
+  FileId id;
+  if (!identify(file, id)) return;
+  Notes& n = notes();
+  std::lock_guard lock(n.mutex);
+  n.inputs.erase(
+      std::remove_if(n.inputs.begin(), n.inputs.end(), [&](const Input& i) { return i.id == id; }),
+      n.inputs.end());
+}
+
+void refuse_replacing_input(const std::filesystem::path& named,
+                            const std::filesystem::path& target) {
   FileId id;
   if (!identify(target, id)) return;
   std::filesystem::path input;

@@ -26,8 +26,13 @@ void note_input(const std::filesystem::path& file);
 // A writer put its output at `file` (its final name, after links).
 void note_output(const std::filesystem::path& file);
 
+// `file`, read by this job, is to be replaced on purpose (a lab's material recalibrated with
+// replace): no longer an input. Nothing outside a job, or for a file not read.
+void release_input(const std::filesystem::path& file);
+
 // Throws OutputFileError when `target`, the file an output named `named` would replace, is a file
 // this job read: the message names both.
-void refuse_replacing_input(const std::filesystem::path& named, const std::filesystem::path& target);
+void refuse_replacing_input(const std::filesystem::path& named,
+                            const std::filesystem::path& target);
 
 }  // namespace nibrig::model::io

@@ -12,6 +12,7 @@
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
+#include "model/io/job_files.hpp"
 #include "model/io/user_store.hpp"
 
 namespace nibrig::model::mechanics {
@@ -169,6 +170,8 @@ std::filesystem::path save_lab_material(const Material& material, const nlohmann
                       {"materials", nlohmann::json::array({material_entry(saved)})},
                       {"calibration", calibration}};
   std::filesystem::create_directories(file.parent_path());
+  // Every command reads the lab's files with the table; replacing one was asked for.
+  if (replace) io::release_input(file);
   io::write_file_atomically(file, root.dump(2) + "\n");
   return file;
 }

@@ -63,14 +63,9 @@ void write_bar(const CalibrationBarOptions& o) {
 }
 
 void fit_bar(const RingDownSaveOptions& o) {
-  const mech::MaterialTable materials = material_table_option(o.materials);
-  const rig::CalibrationBarRecord bar = rig::read_calibration_bar(o.bar);
-  // Refused before the fit: a name the lab cannot take should not cost a minute of meshing.
-  const mech::MaterialTable bundled =
-      mech::read_material_file(o.materials.empty() ? model::io::default_materials() : o.materials);
-  materials.find(bar.bar.material);  // the bar's material must still be in the table
-  mech::check_lab_material_name(o.name, bundled, o.replace);
-  const auto result = rig::calibrate_bar(bar, o.trace, o.name, materials, o.calibrated);
+  const auto saved =
+      rig::calibrate_and_save_bar(o.bar, o.trace, o.name, o.materials, o.calibrated, o.replace);
+  const auto& result = saved.result;
   const auto& fit = result.fit;
   const auto& u = result.uncertainty;
   std::printf("Young's modulus     %.4g +- %.2g GPa (one standard deviation)\n",
@@ -84,10 +79,8 @@ void fit_bar(const RingDownSaveOptions& o) {
       "residual            %.2f %% of the trace's RMS; lag-one correlation %.2f "
       "(variances widened %.2fx for it)\n",
       100 * fit.relative_residual, u.residual_correlation, u.variance_inflation);
-  const auto saved =
-      mech::save_lab_material(result.material, result.calibration, bundled, o.replace);
   std::printf("saved '%s' among the lab's materials (basis fitted)\n", o.name.c_str());
-  say_wrote(saved);
+  say_wrote(saved.saved);
   if (!o.output.empty()) {
     write_json_file(o.output, result.calibration);
     say_wrote(o.output);

@@ -220,6 +220,7 @@ void add_design_module(py::module_ m) {
         "as the template's when 0.");
   add_design_mechanics(m);
   add_forcing_calibration(m);
+  add_material_calibration(m);
 }
 
 }  // namespace nibrig::ui::python

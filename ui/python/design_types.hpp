@@ -16,5 +16,6 @@ struct Designer {
 // Designer.modes and Designer.forcing, added to the submodule once Designer is registered.
 void add_design_mechanics(pybind11::module_ m);
 void add_forcing_calibration(pybind11::module_ m);
+void add_material_calibration(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

@@ -86,6 +86,18 @@ TEST(JobFiles, WhatTheJobWroteAndReadBackItMayWriteAgain) {
   EXPECT_EQ(content_of(folder / "summary.json"), "new\n");
 }
 
+TEST(JobFiles, AnInputReleasedToBeReplacedOnPurposeMayBeWritten) {
+  const fs::path folder = test::scratch_dir("job_files_release");
+  const fs::path file = folder / "lab-pla.json";
+  std::ofstream(file) << "old\n";
+  JobFiles job;
+  read_whole(file);
+  EXPECT_NE(refusal_of(file), "");
+  release_input(file);
+  EXPECT_EQ(refusal_of(file), "");
+  EXPECT_EQ(content_of(file), "new\n");
+}
+
 TEST(OutputSet, WithoutCommitNoneOfItsFilesAppearAndEarlierOnesStay) {
   const fs::path folder = test::scratch_dir("output_set_abandoned");
   std::ofstream(folder / "s.3mf") << "old 3mf";

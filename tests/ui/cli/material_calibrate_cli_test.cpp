@@ -184,6 +184,10 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
             0);
   EXPECT_THAT(::testing::internal::GetCapturedStderr(),
               HasSubstr("already has a material 'lab-pla'"));
+  // Replaced on purpose: the file the table read is written anew.
+  EXPECT_EQ(test::run_cli({"-q", "material", "calibrate", "ringdown", (out / "ring.csv").string(),
+                           "--bar", bar.string(), "--name", "lab-pla", "--no-plots", "--replace"}),
+            0);
 }
 
 TEST(MaterialCalibrateCli, AnUnknownMaterialOrAPrinterThatCannotMakeTheBarIsRefused) {

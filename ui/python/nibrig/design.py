@@ -11,6 +11,10 @@ designer = _design.designer
 Calibration = _design.Calibration
 calibrate_material = _design.calibrate_material
 calibrate_surface = _design.calibrate_surface
+CalibrationBar = _design.CalibrationBar
+RingDownCalibration = _design.RingDownCalibration
+calibration_bar = _design.calibration_bar
+calibrate_ring_down = _design.calibrate_ring_down
 
 __all__ = ["Designer", "Prediction", "Search", "Modes", "Forcing", "designer", "Calibration", "calibrate_material",
-           "calibrate_surface"]
+           "calibrate_surface", "CalibrationBar", "RingDownCalibration", "calibration_bar", "calibrate_ring_down"]

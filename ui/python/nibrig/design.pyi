@@ -177,3 +177,70 @@ def calibrate_surface(
     progress: Optional[Callable[[str, int, int], object]] = None,
 ) -> Calibration:
     """A new surface's forcing from the tools measured on it in the catalog, against a forcing model."""
+
+class CalibrationBar:
+    """The ring-down bar written for a material on a printer."""
+    @property
+    def material(self) -> str: ...
+    @property
+    def printer(self) -> str: ...
+    @property
+    def length_mm(self) -> float: ...
+    @property
+    def volume_mm3(self) -> float: ...
+    @property
+    def three_mf(self) -> pathlib.Path: ...
+    @property
+    def stl(self) -> pathlib.Path: ...
+    @property
+    def ini(self) -> Optional[pathlib.Path]: ...
+    @property
+    def drawing(self) -> pathlib.Path: ...
+    @property
+    def instructions(self) -> pathlib.Path: ...
+    @property
+    def record(self) -> pathlib.Path: ...
+
+class RingDownCalibration:
+    """A material fitted to its bar's ring-down and saved among the lab's."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def youngs_modulus_Pa(self) -> float: ...
+    @property
+    def youngs_modulus_sd_Pa(self) -> float: ...
+    @property
+    def rayleigh_stiffness_s(self) -> float: ...
+    @property
+    def rayleigh_stiffness_sd_s(self) -> float: ...
+    @property
+    def first_mode_hz(self) -> float: ...
+    @property
+    def first_mode_damping_ratio(self) -> float: ...
+    @property
+    def relative_residual(self) -> float: ...
+    @property
+    def fitted(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def saved(self) -> pathlib.Path: ...
+
+def calibration_bar(
+    material: str,
+    *,
+    printer: str,
+    folder: _Path,
+    length_mm: Optional[float] = None,
+    materials: Optional[_Path] = None,
+) -> CalibrationBar:
+    """Writes the ring-down bar of the paper's Sec. 5.1 in a material for a printer."""
+
+def calibrate_ring_down(
+    trace: _Path,
+    *,
+    bar: _Path,
+    name: str,
+    calibrated: bool = False,
+    replace: bool = False,
+    materials: Optional[_Path] = None,
+) -> RingDownCalibration:
+    """Fits the bar's ring-down for Young's modulus and Rayleigh damping and saves the material by name."""
