@@ -60,6 +60,27 @@ void write_bar(const CalibrationBarOptions& o) {
   const auto& f = written.files;
   for (const auto& file : {f.three_mf, f.stl, f.ini, f.drawing, f.instructions, f.record})
     if (!file.empty()) say_wrote(file);
+  std::printf(
+      "next: print it, record its ring-down as %s says, then\n"
+      "  nibrig material calibrate ringdown TRACE --bar %s --name %s-lab\n",
+      f.instructions.filename().string().c_str(), o.output.string().c_str(), bar.material.c_str());
+}
+
+// What makes the material's forcing curve once its modulus and damping are known: two printed tips
+// captured on the rig, then the curve fitted against a forcing model (step 3 of `material
+// calibrate`'s footer).
+void say_next_after_ring_down(const std::string& name, const std::string& printer) {
+  const std::string on = printer.empty() ? "PRINTER" : printer;
+  const char* n = name.c_str();
+  std::printf(
+      "next: print two calibration styli of %s and capture each on the rig on your surfaces\n"
+      "  nibrig export %s,tip=1mm --printer %s -o styli/%s-1mm.3mf   (and tip=4mm)\n"
+      "  nibrig rig capture --usb --tool %s-1mm --surface office -o sessions/%s-1mm_office\n"
+      "  nibrig catalog build sessions -o lab_catalog.json\n"
+      "  nibrig forcing calibrate-material lab_catalog.json --material %s --forcing FORCING.json "
+      "--save %s\n"
+      "(FORCING.json: `nibrig forcing fit -o FORCING.json`, the model of the bundled catalog)\n",
+      n, n, on.c_str(), n, n, n, n, n);
 }
 
 void fit_bar(const RingDownSaveOptions& o) {
@@ -81,6 +102,7 @@ void fit_bar(const RingDownSaveOptions& o) {
       100 * fit.relative_residual, u.residual_correlation, u.variance_inflation);
   std::printf("saved '%s' among the lab's materials (basis fitted)\n", o.name.c_str());
   say_wrote(saved.saved);
+  say_next_after_ring_down(o.name, result.calibration.value("printer", std::string()));
   if (!o.output.empty()) {
     write_json_file(o.output, result.calibration);
     say_wrote(o.output);
@@ -125,7 +147,13 @@ void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> gl
       mech::lab_materials_folder().string() +
       ", or $NIBRIG_MATERIALS),\n"
       "   beside the bundled table, never over it; predict, design and export then find it by "
-      "name.");
+      "name.\n"
+      "3. Its forcing curve: print it whole with two tips (`export my-pla,tip=1mm` and 4mm, with\n"
+      "   --printer), capture each on the rig on your surfaces as tools my-pla-1mm and "
+      "my-pla-4mm,\n"
+      "   build a catalog of the sessions (`catalog build`) and `forcing calibrate-material` it\n"
+      "   against a forcing model with --save: `--forcing NAME` then predicts with it. Each step\n"
+      "   says the next one's command.");
 
   auto bar = std::make_shared<CalibrationBarOptions>();
   auto* bar_cmd =

@@ -141,6 +141,10 @@ TEST(MaterialCalibrateCli, AHiddenMaterialsRingDownIsFittedSavedAndFoundByName) 
   EXPECT_NEAR(e, true_modulus, 3 * e_sd);
   EXPECT_NEAR(l, lambda, 3 * l_sd);
   EXPECT_EQ(fit["printer"], "prusa-mk3s");
+  // The next step's commands, with the material's name as the prints and the rig must carry it.
+  EXPECT_THAT(said, HasSubstr("nibrig export lab-pla,tip=1mm --printer prusa-mk3s"));
+  EXPECT_THAT(said, HasSubstr("--tool lab-pla-1mm"));
+  EXPECT_THAT(said, HasSubstr("--material lab-pla"));
   EXPECT_EQ(fit["printed_as"], "PLA");
   EXPECT_THAT(fit["recording"].get<std::string>(), HasSubstr("ring.csv"));
   EXPECT_THAT(fit["bar"].get<std::string>(), HasSubstr("calibration_bar.json"));
