@@ -1,5 +1,6 @@
 #include "model/forcing/forcing_store.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "model/forcing/forcing_file.hpp"
@@ -15,6 +16,15 @@ std::filesystem::path forcing_store_path(const std::string& name) {
   return io::user_store_file(forcing_store_folder(), name, "forcing");
 }
 
+std::vector<std::string> stored_forcing_models() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(forcing_store_folder(), error))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 std::filesystem::path find_forcing_model(const std::string& name_or_file) {
   if (std::filesystem::is_regular_file(name_or_file)) return name_or_file;
   if (!name_or_file.empty()) {
@@ -22,10 +32,7 @@ std::filesystem::path find_forcing_model(const std::string& name_or_file) {
     if (std::filesystem::is_regular_file(stored)) return stored;
   }
   std::string known;
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(forcing_store_folder(), error))
-    if (entry.path().extension() == ".json")
-      known += (known.empty() ? "" : ", ") + entry.path().stem().string();
+  for (const auto& name : stored_forcing_models()) known += (known.empty() ? "" : ", ") + name;
   throw std::invalid_argument(
       "no forcing model file '" + name_or_file + "' and no model stored under that name in " +
       forcing_store_folder().string() +

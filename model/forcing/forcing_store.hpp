@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "model/forcing/forcing_model.hpp"
 
@@ -15,6 +16,9 @@ namespace nibrig::model::forcing {
 std::filesystem::path forcing_store_folder();
 // <folder>/<name>.json (the name made safe for a file name).
 std::filesystem::path forcing_store_path(const std::string& name);
+
+// The names of the models stored, sorted (none when the folder does not exist).
+std::vector<std::string> stored_forcing_models();
 
 // `name_or_file` itself when it is a file; else the model stored under that name. Throws
 // std::invalid_argument naming both places and the names stored when it is neither.

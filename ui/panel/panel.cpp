@@ -12,6 +12,7 @@
 
 #include "model/design/default_forcing.hpp"
 #include "model/forcing/forcing_file.hpp"
+#include "model/forcing/forcing_store.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/io/user_cache.hpp"
@@ -32,19 +33,22 @@ constexpr int kErrorLines = 3;
 // Room kept right of the status line for its A, B, C buttons.
 constexpr float kStatusButtons = 90.0f;
 
-constexpr View kViews[] = {View::space, View::design, View::rig, View::pad, View::devices,
-                           View::experiment};
+constexpr View kViews[] = {View::space, View::design,  View::rig,
+                           View::pad,   View::devices, View::experiment};
 
 std::filesystem::path sessions_folder() {
   const char* data = std::getenv("XDG_DATA_HOME");
   const char* home = std::getenv("HOME");
-  const std::filesystem::path base = data && *data ? std::filesystem::path(data)
-                                                   : std::filesystem::path(home && *home ? home : ".") / ".local" / "share";
+  const std::filesystem::path base =
+      data && *data ? std::filesystem::path(data)
+                    : std::filesystem::path(home && *home ? home : ".") / ".local" / "share";
   return base / "nibrig" / "sessions";
 }
 
 // Where a file dialog starts: the folder of the file in use, else the working folder.
-std::filesystem::path folder_of(const std::filesystem::path& file) { return file.empty() ? file : file.parent_path(); }
+std::filesystem::path folder_of(const std::filesystem::path& file) {
+  return file.empty() ? file : file.parent_path();
+}
 
 // A fit's two steps (the starts, then the bootstrap's refits) as the two halves of one bar.
 std::vector<std::string> fit_steps(const model::space::SpaceFitSettings& s) {
@@ -63,7 +67,8 @@ model::space::StepProgress fit_progress(JobControl& control, std::vector<std::st
     const auto at = std::find(steps.begin(), steps.end(), step);
     if (steps.size() < 2 || at == steps.end()) return;
     const double part = total ? static_cast<double>(done) / static_cast<double>(total) : 0.0;
-    control.progress((static_cast<double>(at - steps.begin()) + part) / static_cast<double>(steps.size()));
+    control.progress((static_cast<double>(at - steps.begin()) + part) /
+                     static_cast<double>(steps.size()));
   };
 }
 
@@ -77,12 +82,18 @@ std::optional<View> view_named(std::string_view name) {
 
 const char* view_name(View view) {
   switch (view) {
-    case View::space: return "space";
-    case View::design: return "design";
-    case View::rig: return "rig";
-    case View::pad: return "pad";
-    case View::devices: return "devices";
-    case View::experiment: return "experiment";
+    case View::space:
+      return "space";
+    case View::design:
+      return "design";
+    case View::rig:
+      return "rig";
+    case View::pad:
+      return "pad";
+    case View::devices:
+      return "devices";
+    case View::experiment:
+      return "experiment";
   }
   return "space";
 }
@@ -92,13 +103,14 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
   sounds.catalog = setup_.catalog;
   sounds.forcing_model = setup_.forcing;
   audio_ = std::make_unique<PanelAudio>(sounds);
-  space_view_ = std::make_unique<SpaceView>(SpaceScene{},
-                                            [this](const std::vector<ToolChoice>& tools) { audio_->play(tools); });
+  space_view_ = std::make_unique<SpaceView>(
+      SpaceScene{}, [this](const std::vector<ToolChoice>& tools) { audio_->play(tools); });
   space_view_->share_stroke(&audio_->stroke(), [this] { audio_->stroke_changed(); });
   rig_view_ = std::make_unique<RigView>(setup_.catalog, setup_.forcing, sessions_folder());
   rig_view_->play_through(audio_.get());
   pad_view_ = std::make_unique<PadView>(*audio_);
-  design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
+  design_view_ =
+      std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   devices_view_ = std::make_unique<DevicesView>(*audio_);
   experiment_view_ = std::make_unique<ExperimentView>(
       *audio_,
@@ -119,8 +131,10 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
     devices_view_->set_request(*setup_.device);
     if (const std::string e = audio_->open(*setup_.device); !e.empty()) errors_.report(e);
   }
-  if (!setup_.space.empty()) load_space(setup_.space);
-  else load_default_space();
+  if (!setup_.space.empty())
+    load_space(setup_.space);
+  else
+    load_default_space();
   if (setup_.start_rig) {
     rig_view_->choice().speedup = 8.0f;
     rig_view_->start();
@@ -165,8 +179,10 @@ void Panel::fit_space(const SpaceFitRequest& r) {
       "fitting a space", [r, catalog = setup_.catalog](JobControl& control) {
         control.message("reading " + r.judgments.string());
         const std::filesystem::path descriptors =
-            r.descriptors ? model::io::or_default(catalog, model::io::default_catalog) : std::filesystem::path();
-        const auto inputs = model::space::read_space_inputs(r.judgments, descriptors, static_cast<std::size_t>(r.dims),
+            r.descriptors ? model::io::or_default(catalog, model::io::default_catalog)
+                          : std::filesystem::path();
+        const auto inputs = model::space::read_space_inputs(r.judgments, descriptors,
+                                                            static_cast<std::size_t>(r.dims),
                                                             r.descriptors ? r.lambda : 0.0);
         model::space::SpaceFitSettings settings;
         settings.starts = r.starts;
@@ -177,8 +193,9 @@ void Panel::fit_space(const SpaceFitRequest& r) {
         settings.stop = control.stop_token();
         auto fitted = model::space::fit_space_file(inputs, r.judgments, descriptors, settings,
                                                    fit_progress(control, fit_steps(settings)));
-        auto loaded = loaded_space_of(std::move(fitted.file), catalog,
-                                      "space fitted to " + r.judgments.filename().string() + " (not saved)");
+        auto loaded =
+            loaded_space_of(std::move(fitted.file), catalog,
+                            "space fitted to " + r.judgments.filename().string() + " (not saved)");
         loaded.warnings = std::move(fitted.warnings);
         return loaded;
       });
@@ -214,7 +231,8 @@ void Panel::open_catalog(const std::filesystem::path& file) {
     model::design::ToolSoundOptions options;
     options.catalog = file;
     options.forcing_model = forcing;
-    auto sounds = std::make_shared<model::design::ToolSounds>(options);  // reads the catalog, or throws naming it
+    auto sounds = std::make_shared<model::design::ToolSounds>(
+        options);  // reads the catalog, or throws naming it
     return [sounds, file, forcing](Panel& p) {
       p.use_sources(sounds, file, forcing);
       p.notice_ = "the catalog is " + file.string();
@@ -223,33 +241,44 @@ void Panel::open_catalog(const std::filesystem::path& file) {
 }
 
 void Panel::open_forcing(const std::filesystem::path& file) {
-  file_job("opening the forcing model", [file, catalog = setup_.catalog](JobControl& control) -> Apply {
-    control.message("reading " + file.string());
-    model::forcing::read_forcing_model(file);  // the whole file checked before it is used
-    model::design::ToolSoundOptions options;
-    options.catalog = catalog;
-    options.forcing_model = file;
-    auto sounds = std::make_shared<model::design::ToolSounds>(options);
-    return [sounds, file, catalog](Panel& p) {
-      p.use_sources(sounds, catalog, file);
-      p.notice_ = "the forcing model is " + file.string();
-    };
-  });
+  file_job("opening the forcing model",
+           [file, catalog = setup_.catalog](JobControl& control) -> Apply {
+             control.message("reading " + file.string());
+             model::forcing::read_forcing_model(file);  // the whole file checked before it is used
+             model::design::ToolSoundOptions options;
+             options.catalog = catalog;
+             options.forcing_model = file;
+             auto sounds = std::make_shared<model::design::ToolSounds>(options);
+             return [sounds, file, catalog](Panel& p) {
+               p.use_sources(sounds, catalog, file);
+               p.notice_ = "the forcing model is " + file.string();
+             };
+           });
+}
+
+void Panel::open_stored_forcing(const std::string& name) {
+  try {
+    open_forcing(model::forcing::find_forcing_model(name));
+  } catch (const std::invalid_argument& e) {
+    errors_.report(e.what());
+  }
 }
 
 void Panel::save_forcing(const std::filesystem::path& file) {
-  file_job("saving the forcing model",
-           [file, forcing = setup_.forcing, catalog = setup_.catalog](JobControl& control) -> Apply {
-             if (!forcing.empty()) {
-               model::forcing::write_forcing_model(file, model::forcing::read_forcing_model(forcing));
-             } else {  // the demo's, from the user cache (fitted there first if it is not yet)
-               model::design::DefaultsOptions defaults;
-               defaults.catalog = catalog;
-               defaults.progress = step_reporter(control, "the default forcing model: ");
-               model::forcing::write_forcing_model(file, model::design::default_forcing_model(defaults).value);
-             }
-             return [file](Panel& p) { p.notice_ = "wrote " + file.string(); };
-           });
+  file_job(
+      "saving the forcing model",
+      [file, forcing = setup_.forcing, catalog = setup_.catalog](JobControl& control) -> Apply {
+        if (!forcing.empty()) {
+          model::forcing::write_forcing_model(file, model::forcing::read_forcing_model(forcing));
+        } else {  // the demo's, from the user cache (fitted there first if it is not yet)
+          model::design::DefaultsOptions defaults;
+          defaults.catalog = catalog;
+          defaults.progress = step_reporter(control, "the default forcing model: ");
+          model::forcing::write_forcing_model(file,
+                                              model::design::default_forcing_model(defaults).value);
+        }
+        return [file](Panel& p) { p.notice_ = "wrote " + file.string(); };
+      });
 }
 
 void Panel::open_design(const std::filesystem::path& file) {
@@ -279,12 +308,14 @@ void Panel::export_stylus(const std::filesystem::path& file) {
   }
   file_job("exporting the stylus", [work = std::move(work), file](JobControl&) -> Apply {
     work();
-    return [file](Panel& p) { p.notice_ = "wrote " + file.string() + ", the STLs and the print sheet beside it"; };
+    return [file](Panel& p) {
+      p.notice_ = "wrote " + file.string() + ", the STLs and the print sheet beside it";
+    };
   });
 }
 
-void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::filesystem::path catalog,
-                        std::filesystem::path forcing) {
+void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds,
+                        std::filesystem::path catalog, std::filesystem::path forcing) {
   setup_.catalog = std::move(catalog);
   setup_.forcing = std::move(forcing);
   audio_->use_sounds(std::move(sounds));
@@ -293,10 +324,13 @@ void Panel::use_sources(std::shared_ptr<model::design::ToolSounds> sounds, std::
   // own thread and goes once that has ended (the UI does not wait for a FEM solve).
   design_view_->stop_work();
   retired_designs_.push_back(std::move(design_view_));
-  design_view_ = std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
+  design_view_ =
+      std::make_unique<DesignView>(*audio_, setup_.catalog, setup_.forcing, setup_.design);
   // The tools of the space are placed from the catalog: placed again.
-  if (!space_file_.empty()) load_space(space_file_);
-  else if (showing_default_ || !space_) load_default_space();
+  if (!space_file_.empty())
+    load_space(space_file_);
+  else if (showing_default_ || !space_)
+    load_default_space();
   else
     space_job_ = std::make_unique<BackgroundJob<LoadedSpace>>(
         "placing the tools", [space = *space_, catalog = setup_.catalog](JobControl&) {
@@ -324,8 +358,10 @@ void Panel::handle_keys() {
   // Enter plays again what the status line says it does: the tools chosen in the space view, or
   // else what is loaded (a space opened since forgets the choice, not what was compared).
   if (pressed(GLFW_KEY_ENTER)) {
-    if (!space_view_->chosen().empty()) space_view_->play_chosen();
-    else audio_->play_again();
+    if (!space_view_->chosen().empty())
+      space_view_->play_chosen();
+    else
+      audio_->play_again();
   }
 }
 
@@ -333,14 +369,21 @@ void Panel::show(View view) { requested_ = view; }
 
 bool Panel::settled() const {
   switch (current_) {
-    case View::space: return !space_job_ && !audio_->making_sounds();
-    case View::rig: return !rig_view_->running() || rig_view_->progress() >= 0.5;
-    case View::devices: return devices_view_->listing().has_value();
-    case View::experiment: return experiment_view_->stage() != ExperimentView::Stage::preparing;
+    case View::space:
+      return !space_job_ && !audio_->making_sounds();
+    case View::rig:
+      return !rig_view_->running() || rig_view_->progress() >= 0.5;
+    case View::devices:
+      return devices_view_->listing().has_value();
+    case View::experiment:
+      return experiment_view_->stage() != ExperimentView::Stage::preparing;
     case View::design:
-      return !space_job_ && design_view_->ready() && !design_view_->preparing() && !design_view_->measuring_error();
-    case View::pad: return !file_job_;
-    default: return true;
+      return !space_job_ && design_view_->ready() && !design_view_->preparing() &&
+             !design_view_->measuring_error();
+    case View::pad:
+      return !file_job_;
+    default:
+      return true;
   }
 }
 
@@ -350,7 +393,8 @@ void Panel::poll_jobs() {
   if (space_job_ && space_job_->done()) {
     if (auto loaded = space_job_->take_result()) {
       errors_.clear();
-      if (!fallback_reason_.empty()) errors_.report(fallback_reason_ + " (the default space is shown instead)");
+      if (!fallback_reason_.empty())
+        errors_.report(fallback_reason_ + " (the default space is shown instead)");
       fallback_reason_.clear();
       for (const auto& w : loaded->warnings) errors_.report(w);
       design_view_->set_space(loaded->scene, loaded->map);
@@ -394,26 +438,42 @@ void Panel::draw_menu() {
   };
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Open space...", "Ctrl+O"))
-      files_.open("Open a space", Mode::open, {".json"}, folder_of(space_file_), chosen(&Panel::open_space));
+      files_.open("Open a space", Mode::open, {".json"}, folder_of(space_file_),
+                  chosen(&Panel::open_space));
     if (ImGui::MenuItem("The default space")) load_default_space();
     if (ImGui::MenuItem("Fit a space from judgments...")) fit_window_ = true;
     if (ImGui::MenuItem("Save space as...", nullptr, false, space_.has_value()))
-      files_.open("Save the space", Mode::save, {".json"}, folder_of(space_file_), chosen(&Panel::save_space));
+      files_.open("Save the space", Mode::save, {".json"}, folder_of(space_file_),
+                  chosen(&Panel::save_space));
     ImGui::Separator();
     if (ImGui::MenuItem("Open catalog..."))
       files_.open("Open a catalog", Mode::open, {".json", ".json.gz"}, folder_of(setup_.catalog),
                   chosen(&Panel::open_catalog));
     if (ImGui::MenuItem("Open forcing model..."))
-      files_.open("Open a forcing model", Mode::open, {".json"}, folder_of(setup_.forcing), chosen(&Panel::open_forcing));
+      files_.open("Open a forcing model", Mode::open, {".json"}, folder_of(setup_.forcing),
+                  chosen(&Panel::open_forcing));
+    if (ImGui::BeginMenu("Stored forcing model")) {
+      if (ImGui::IsWindowAppearing()) stored_forcing_ = model::forcing::stored_forcing_models();
+      if (stored_forcing_.empty())
+        ImGui::TextDisabled("none yet: forcing calibrate-material --save NAME");
+      for (const auto& name : stored_forcing_)
+        if (ImGui::MenuItem(name.c_str(), nullptr,
+                            setup_.forcing == model::forcing::forcing_store_path(name)))
+          open_stored_forcing(name);
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Save forcing model as..."))
       files_.open("Save the forcing model", Mode::save, {".json"}, folder_of(setup_.forcing),
                   chosen(&Panel::save_forcing));
     ImGui::Separator();
     if (ImGui::MenuItem("Open design...", nullptr, false, design_view_->ready()))
-      files_.open("Open a design (a prediction file)", Mode::open, {".json"}, {}, chosen(&Panel::open_design));
+      files_.open("Open a design (a prediction file)", Mode::open, {".json"}, {},
+                  chosen(&Panel::open_design));
     if (ImGui::MenuItem("Save design as...", nullptr, false, design_view_->predicted().has_value()))
-      files_.open("Save the design (a prediction file)", Mode::save, {".json"}, {}, chosen(&Panel::save_design));
-    if (ImGui::MenuItem("Export stylus for printing...", nullptr, false, design_view_->predicted().has_value()))
+      files_.open("Save the design (a prediction file)", Mode::save, {".json"}, {},
+                  chosen(&Panel::save_design));
+    if (ImGui::MenuItem("Export stylus for printing...", nullptr, false,
+                        design_view_->predicted().has_value()))
       files_.open("Export the stylus (3MF, an STL per region beside it)", Mode::save, {".3mf"}, {},
                   chosen(&Panel::export_stylus));
     ImGui::EndMenu();
@@ -431,8 +491,9 @@ void Panel::draw_fit_window() {
   if (!fit_window_) return;
   ImGui::SetNextWindowSize({560.0f, 0.0f}, ImGuiCond_Appearing);
   if (ImGui::Begin("Fit a space from judgments", &fit_window_)) {
-    ImGui::TextWrapped("Triplet judgments (ours, Lagunas et al. or Salmon's CSV). The fit runs in the background; "
-                       "the space it makes is shown, and File > Save space as keeps it.");
+    ImGui::TextWrapped(
+        "Triplet judgments (ours, Lagunas et al. or Salmon's CSV). The fit runs in the background; "
+        "the space it makes is shown, and File > Save space as keeps it.");
     if (space_fit_form(fit_request_, files_)) fit_space(fit_request_);
   }
   ImGui::End();
@@ -454,11 +515,14 @@ std::string Panel::status_line() const {
     playing += std::string(i ? ", " : "") + static_cast<char>('A' + i) + ": " + audio_->names()[i] +
                (heard ? " (sounding)" : "");
   }
-  if (playing.empty()) playing = "nothing loaded";
-  else if (!sounding) playing = "stopped (" + playing + "; Enter plays again)";
+  if (playing.empty())
+    playing = "nothing loaded";
+  else if (!sounding)
+    playing = "stopped (" + playing + "; Enter plays again)";
   const std::string moving = audio_->stroke_description();
   const std::string stroke = moving == "stopped" ? "stroke: " + audio_->chosen_stroke_description()
-                                                 : moving == "the pad" ? "moved by the pad" : "stroke: " + moving;
+                             : moving == "the pad" ? "moved by the pad"
+                                                   : "stroke: " + moving;
   // The rig's simulation on the actuator is a second output: said here too while it runs.
   std::string rig;
   if (rig_view_->running())
@@ -472,7 +536,8 @@ void Panel::follow_error_view() {
   // as the rig's or the pad's minutes later.
   if (errors_.current() != error_seen_) {
     error_seen_ = errors_.current();
-    error_view_ = requested_.value_or(current_);  // an error reported as a view is asked for is that view's
+    error_view_ =
+        requested_.value_or(current_);  // an error reported as a view is asked for is that view's
   } else if (!error_seen_.empty() && current_ != error_view_) {
     errors_.clear();
     error_seen_.clear();
@@ -482,35 +547,46 @@ void Panel::follow_error_view() {
 void Panel::follow_audio_error() {
   const std::string& now = audio_->error();
   if (now == audio_error_seen_) return;
-  if (!now.empty()) errors_.report(now);
-  else if (errors_.current() == audio_error_seen_) errors_.clear();  // the audio's problem is over
+  if (!now.empty())
+    errors_.report(now);
+  else if (errors_.current() == audio_error_seen_)
+    errors_.clear();  // the audio's problem is over
   audio_error_seen_ = now;
 }
 
 float Panel::status_height(const std::string& status) const {
   const float line = ImGui::GetFrameHeightWithSpacing();
-  const float bars = static_cast<float>((space_job_ ? 1 : 0) + (file_job_ ? 1 : 0) + (audio_->making_sounds() ? 1 : 0));
+  const float bars = static_cast<float>((space_job_ ? 1 : 0) + (file_job_ ? 1 : 0) +
+                                        (audio_->making_sounds() ? 1 : 0));
   const float width = ImGui::GetContentRegionAvail().x;
   // The status line wraps (long tool names are read whole), the buttons A-C beside it.
   const float text = ImGui::CalcTextSize(status.c_str(), nullptr, false, width - kStatusButtons).y;
-  return ImGui::GetStyle().ItemSpacing.y * 3.0f + line * (1.0f + bars) + text + errors_.height(width, kErrorLines);
+  return ImGui::GetStyle().ItemSpacing.y * 3.0f + line * (1.0f + bars) + text +
+         errors_.height(width, kErrorLines);
 }
 
 void Panel::draw_status(const std::string& status) {
   ImGui::Separator();
   if (space_job_) {
-    if (progress_with_cancel("space-job", static_cast<float>(space_job_->progress()), space_job_->message().c_str()))
+    if (progress_with_cancel("space-job", static_cast<float>(space_job_->progress()),
+                             space_job_->message().c_str()))
       space_job_.reset();
   }
-  if (file_job_) ImGui::ProgressBar(static_cast<float>(file_job_->progress()), {-1.0f, 0.0f}, file_job_->message().c_str());
+  if (file_job_)
+    ImGui::ProgressBar(static_cast<float>(file_job_->progress()), {-1.0f, 0.0f},
+                       file_job_->message().c_str());
   if (audio_->making_sounds() &&
       progress_with_cancel("making-sounds", static_cast<float>(audio_->making_progress()),
                            audio_->making_message().c_str()))
     audio_->cancel_making();
-  if (!errors_.current().empty()) errors_.draw(kErrorLines);
-  else if (!notice_.empty()) ImGui::TextDisabled("%s", notice_.c_str());
-  else ImGui::NewLine();
-  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x - kStatusButtons);
+  if (!errors_.current().empty())
+    errors_.draw(kErrorLines);
+  else if (!notice_.empty())
+    ImGui::TextDisabled("%s", notice_.c_str());
+  else
+    ImGui::NewLine();
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x -
+                         kStatusButtons);
   ImGui::TextUnformatted(status.c_str());
   ImGui::PopTextWrapPos();
   if (audio_->playing().size() > 1) {
@@ -519,7 +595,8 @@ void Panel::draw_status(const std::string& status) {
       ImGui::SameLine();
       const char label[2] = {static_cast<char>('A' + i), 0};
       const bool heard = sounding && audio_->audition().selected() == i;
-      if (heard) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      if (heard)
+        ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
       if (ImGui::SmallButton(label)) audio_->select(i);
       if (heard) ImGui::PopStyleColor();
     }
@@ -529,12 +606,12 @@ void Panel::draw_status(const std::string& status) {
 double Panel::idle_wait_s() const {
   const ImGuiIO& io = ImGui::GetIO();
   const bool pressed = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
-  if (pressed || ImGui::IsAnyItemActive() || experiment_view_->fullscreen() || pad_view_->drawing() || pad_view_->replaying() ||
-      audio_->handing_over())
+  if (pressed || ImGui::IsAnyItemActive() || experiment_view_->fullscreen() ||
+      pad_view_->drawing() || pad_view_->replaying() || audio_->handing_over())
     return 0.0;
   if (rig_view_->running()) return current_ == View::rig ? 0.0 : kProgressRefresh_s;
-  const bool working = space_job_ || file_job_ || audio_->making_sounds() || design_view_->preparing() ||
-                       devices_view_->measuring() ||
+  const bool working = space_job_ || file_job_ || audio_->making_sounds() ||
+                       design_view_->preparing() || devices_view_->measuring() ||
                        design_view_->measuring_error() ||
                        experiment_view_->stage() == ExperimentView::Stage::preparing;
   return working ? kProgressRefresh_s : kIdleRefresh_s;
@@ -558,9 +635,9 @@ void Panel::draw_views() {
     // the other views.
     ImGui::SetNextWindowPos(viewport->WorkPos);
     ImGui::SetNextWindowSize(viewport->WorkSize);
-    ImGui::Begin("nibrig-experiment", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin(
+        "nibrig-experiment", nullptr,
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
     experiment_view_->draw();
     ImGui::End();
     return;
@@ -583,12 +660,24 @@ void Panel::draw_views() {
         current_ = v;
         ImGui::BeginChild("view", {0.0f, -status_height});
         switch (v) {
-          case View::space: space_view_->draw(); break;
-          case View::design: design_view_->draw(); break;
-          case View::rig: rig_view_->draw(); break;
-          case View::pad: pad_view_->draw(); break;
-          case View::devices: devices_view_->draw(); break;
-          case View::experiment: experiment_view_->draw(); break;
+          case View::space:
+            space_view_->draw();
+            break;
+          case View::design:
+            design_view_->draw();
+            break;
+          case View::rig:
+            rig_view_->draw();
+            break;
+          case View::pad:
+            pad_view_->draw();
+            break;
+          case View::devices:
+            devices_view_->draw();
+            break;
+          case View::experiment:
+            experiment_view_->draw();
+            break;
         }
         ImGui::EndChild();
         ImGui::EndTabItem();
@@ -612,16 +701,19 @@ void Panel::draw_frame_times() {
   // Bottom left of the view, above the status block: the space view's side panel (the stroke's
   // controls) is on the right, where the readout had covered it. Placed each time it is shown.
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos({viewport->WorkPos.x + 12.0f,
-                           viewport->WorkPos.y + viewport->WorkSize.y - last_status_height_ - 12.0f},
+  ImGui::SetNextWindowPos({viewport->WorkPos.x + 12.0f, viewport->WorkPos.y + viewport->WorkSize.y -
+                                                            last_status_height_ - 12.0f},
                           ImGuiCond_Appearing, {0.0f, 1.0f});
   if (ImGui::Begin("Frame times", &frame_times_window_, ImGuiWindowFlags_AlwaysAutoResize)) {
     const float rate = ImGui::GetIO().Framerate;
     ImGui::Text("%.1f frames/s (%.1f ms apart)", rate, rate > 0.0f ? 1000.0f / rate : 0.0f);
-    ImGui::Text("the panel's widgets: %.2f ms a frame (worst %.2f) over the last %zu", n ? sum / n : 0.0f, worst, n);
+    ImGui::Text("the panel's widgets: %.2f ms a frame (worst %.2f) over the last %zu",
+                n ? sum / n : 0.0f, worst, n);
     const double wait = idle_wait_s();
-    if (wait > 0.0) ImGui::Text("idle: drawn on input, else every %.1f s", wait);
-    else ImGui::TextUnformatted("something moves: drawn at the display's rate");
+    if (wait > 0.0)
+      ImGui::Text("idle: drawn on input, else every %.1f s", wait);
+    else
+      ImGui::TextUnformatted("something moves: drawn at the display's rate");
   }
   ImGui::End();
 }

@@ -35,9 +35,9 @@ std::optional<View> view_named(std::string_view name);
 const char* view_name(View view);
 
 struct PanelSetup {
-  std::filesystem::path catalog;  // empty: the bundled one
-  std::filesystem::path space;    // empty: the default (computed on first start, then cached)
-  std::filesystem::path forcing;  // empty: the default
+  std::filesystem::path catalog;        // empty: the bundled one
+  std::filesystem::path space;          // empty: the default (computed on first start, then cached)
+  std::filesystem::path forcing;        // empty: the default
   std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
   bool start_rig = false;               // the rig view's run starts at once
   DesignSettings design;                // how finely the design view solves its grid
@@ -77,6 +77,9 @@ class Panel {
   void save_space(const std::filesystem::path& file);
   void open_catalog(const std::filesystem::path& file);
   void open_forcing(const std::filesystem::path& file);
+  // A forcing model the lab keeps by name (forcing calibrate-material --save): what the File menu's
+  // "Stored forcing model" lists (model::forcing::stored_forcing_models).
+  void open_stored_forcing(const std::string& name);
   void save_forcing(const std::filesystem::path& file);
   void open_design(const std::filesystem::path& file);
   void save_design(const std::filesystem::path& file);
@@ -128,7 +131,8 @@ class Panel {
   void draw_menu();
   void draw_fit_window();
   void draw_status(const std::string& status);
-  // Height the status block under the views takes this frame with `status` (it and the error line wrap).
+  // Height the status block under the views takes this frame with `status` (it and the error line
+  // wrap).
   float status_height(const std::string& status) const;
   void draw_help_windows();
   void draw_frame_times();
@@ -150,11 +154,12 @@ class Panel {
   std::unique_ptr<BackgroundJob<Apply>> file_job_;
   std::unique_ptr<DesignView> design_view_;
   std::vector<std::unique_ptr<DesignView>> retired_designs_;  // replaced, their work ending
-  std::optional<model::space::SpaceFile> space_;  // the space shown, for Save space as
+  std::optional<model::space::SpaceFile> space_;              // the space shown, for Save space as
   View current_ = View::space;
   std::optional<View> requested_;
   ErrorLine errors_;
   std::string notice_, audio_error_seen_;
+  std::vector<std::string> stored_forcing_;  // read as the File menu opens its list
   FileDialog files_;
   SpaceFitRequest fit_request_;
   bool showing_default_ = false;
@@ -165,12 +170,14 @@ class Panel {
   // The error line's error and the view it came up in: moving to another view moves on from it.
   std::string error_seen_;
   View error_view_ = View::space;
-  bool fit_window_ = false, keys_window_ = false, errors_window_ = false, frame_times_window_ = false;
+  bool fit_window_ = false, keys_window_ = false, errors_window_ = false,
+       frame_times_window_ = false;
   // The panel's widget time per frame (ms), the last kFrameTimes frames, for the readout.
   static constexpr std::size_t kFrameTimes = 120;
   std::array<float, kFrameTimes> frame_ms_{};
   std::size_t frame_at_ = 0;
-  float last_status_height_ = 0.0f;  // the status block's, as last laid out: the readout sits above it
+  float last_status_height_ =
+      0.0f;  // the status block's, as last laid out: the readout sits above it
 };
 
 }  // namespace nibrig::ui::panel

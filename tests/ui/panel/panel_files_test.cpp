@@ -3,22 +3,23 @@
 // shown, saved and opened again; a catalog that cannot be read leaves everything as it was, with
 // the file named in the error line, and one that can replaces the one in use; the keys switch
 // views and the compared tools. In a hidden window on Xvfb, as a person would use it.
+#include <GLFW/glfw3.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <GLFW/glfw3.h>
 
 #include <chrono>
 #include <fstream>
 #include <functional>
 #include <thread>
 
+#include "model/forcing/forcing_store.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/triplets.hpp"
 #include "model/space/fit.hpp"
 #include "model/space/model_choice.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/space_inputs.hpp"
+#include "tests/model/design/hand_made_forcing_model.hpp"
 #include "tests/model/space/study_fixture.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
@@ -60,7 +61,8 @@ TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
   touch(dir / "space.json");
   fs::path taken;
   FileDialog dialog;
-  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir / "sub", [&](const fs::path& f) { taken = f; });
+  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir / "sub",
+              [&](const fs::path& f) { taken = f; });
   EXPECT_TRUE(dialog.is_open());
   EXPECT_TRUE(dialog.entries().empty());
   EXPECT_FALSE(dialog.choose(".."));  // a folder: entered
@@ -73,7 +75,8 @@ TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
   EXPECT_EQ(taken, fs::canonical(dir / "space.json"));
   EXPECT_FALSE(dialog.is_open());
   // Saving takes a new name, but not in a folder that does not exist.
-  dialog.open("Save the space", FileDialog::Mode::save, {".json"}, dir, [&](const fs::path& f) { taken = f; });
+  dialog.open("Save the space", FileDialog::Mode::save, {".json"}, dir,
+              [&](const fs::path& f) { taken = f; });
   EXPECT_FALSE(dialog.choose("no/such/new.json"));
   EXPECT_THAT(dialog.error(), HasSubstr("no such folder"));
   EXPECT_TRUE(dialog.choose((dir / "new.json").string()));
@@ -81,8 +84,8 @@ TEST(FileDialog, AChoiceEntersAFolderOrTakesAFile) {
 }
 
 // The dialog alone in a hidden window, driven as a person would: the mouse and keys written into
-// ImGui's IO after the back end read the (unfocused, so absent) real ones. Each frame lasts 1/60 s of
-// ImGui's time whatever it takes on llvmpipe, so that two presses two frames apart are a
+// ImGui's IO after the back end read the (unfocused, so absent) real ones. Each frame lasts 1/60 s
+// of ImGui's time whatever it takes on llvmpipe, so that two presses two frames apart are a
 // double-click (ImGui's limit: 0.30 s) and presses 30 frames apart never are.
 struct DialogWindow {
   PanelWindow window{testing::hidden_window()};
@@ -127,7 +130,8 @@ TEST(FileDialog, InAWindowAClickSelectsADoubleClickEntersAFolderOnceOrTakesAFile
   std::vector<fs::path> taken;
   FileDialog dialog;
   DialogWindow w(dialog);
-  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir, [&](const fs::path& f) { taken.push_back(f); });
+  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir,
+              [&](const fs::path& f) { taken.push_back(f); });
   w.frames(3);  // the modal appears and is laid out
 
   w.click("sub", 1);
@@ -159,7 +163,8 @@ TEST(FileDialog, InAWindowEnterTakesTheSelectedFileOrEntersTheSelectedFolder) {
   std::vector<fs::path> taken;
   FileDialog dialog;
   DialogWindow w(dialog);
-  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir, [&](const fs::path& f) { taken.push_back(f); });
+  dialog.open("Open a space", FileDialog::Mode::open, {".json"}, dir,
+              [&](const fs::path& f) { taken.push_back(f); });
   w.frames(3);
 
   w.click("sub", 1);
@@ -185,7 +190,8 @@ struct FilesSession {
     panel.draw();
     window.end_frame();
   }
-  bool until(const std::function<bool()>& done, std::chrono::seconds limit = std::chrono::seconds(600)) {
+  bool until(const std::function<bool()>& done,
+             std::chrono::seconds limit = std::chrono::seconds(600)) {
     const auto deadline = std::chrono::steady_clock::now() + limit;
     while (!done() && std::chrono::steady_clock::now() < deadline) {
       frame();
@@ -197,13 +203,16 @@ struct FilesSession {
 
 // Eight catalog pairings, every triplet of them judged `repeats` times by an observer of a random
 // `dims`-D space (seed for the space, seed + 1 for the answers), written as dir/judgments.csv.
-const std::vector<std::string> kJudgedStimuli = {"vero1/office", "vero2/office", "vero4/office", "DM851/office",
-                                                 "DM854/office", "DM951/office", "cryon/office", "stab/office"};
+const std::vector<std::string> kJudgedStimuli = {"vero1/office", "vero2/office", "vero4/office",
+                                                 "DM851/office", "DM854/office", "DM951/office",
+                                                 "cryon/office", "stab/office"};
 void write_judgments(const fs::path& dir, Eigen::Index dims, int repeats, unsigned seed) {
   model::io::TripletSet judged;
   judged.stimuli = kJudgedStimuli;
   judged.triplets = model::space::testing::every_triplet_judged(
-                        model::space::testing::random_truth(dims, static_cast<Eigen::Index>(kJudgedStimuli.size()), seed), repeats, seed + 1)
+                        model::space::testing::random_truth(
+                            dims, static_cast<Eigen::Index>(kJudgedStimuli.size()), seed),
+                        repeats, seed + 1)
                         .triplets;
   model::io::write_triplet_csv(dir / "judgments.csv", judged);
 }
@@ -232,7 +241,8 @@ TEST(PanelFiles, ASpaceFittedInTheWindowIsShownSavedAndOpenedAgain) {
   // The space shown is the fit of those judgments with the catalog's descriptors: its eight judged
   // tools where fit_space puts them from the same starts, with their bootstrap regions, and every
   // other pairing of the catalog placed through the map the fit learnt.
-  const auto in = model::space::read_space_inputs(dir / "judgments.csv", model::io::default_catalog(), 2, 1.0);
+  const auto in =
+      model::space::read_space_inputs(dir / "judgments.csv", model::io::default_catalog(), 2, 1.0);
   model::space::FitOptions options;
   options.starts = 4;
   options.seed = 5;
@@ -322,7 +332,8 @@ TEST(PanelFiles, AFitInTheWindowJudgesByTheModelAskedOrChosenAndTheViewSaysWhich
   choice.cross_validation.fit.seed = 1;
   const auto reference = model::space::choose_model(in.problem, choice);
   const auto& chosen = s.panel.space_view().scene();
-  EXPECT_THAT(chosen.judgment_model, ::testing::StartsWith(model::space::family_name(reference.chosen)));
+  EXPECT_THAT(chosen.judgment_model,
+              ::testing::StartsWith(model::space::family_name(reference.chosen)));
   EXPECT_EQ(chosen.model_reason, reference.reason);
   s.panel.save_space(dir / "auto.json");
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
@@ -349,13 +360,34 @@ TEST(PanelFiles, ACatalogThatCannotBeReadChangesNothingAndOneThatCanIsUsed) {
   EXPECT_EQ(s.panel.catalog_file(), dir / "catalog.json");
   EXPECT_THAT(s.panel.notice(), HasSubstr("catalog.json"));
   EXPECT_EQ(s.panel.space_view().scene().tools.size(), 3u);  // the space's tools placed again
-  EXPECT_EQ(s.panel.audio().catalog().pairings.size(), model::io::read_catalog(dir / "catalog.json").pairings.size());
+  EXPECT_EQ(s.panel.audio().catalog().pairings.size(),
+            model::io::read_catalog(dir / "catalog.json").pairings.size());
 
   // A forcing model that is not one is refused the same way.
   s.panel.open_forcing(dir / "broken.json");
   ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
   EXPECT_THAT(s.panel.error(), HasSubstr("broken.json"));
   EXPECT_TRUE(s.panel.forcing_file().empty());
+}
+
+TEST(PanelFiles, AForcingModelTheLabStoredIsOpenedByItsName) {
+  const auto dir = nibrig::test::scratch_dir("panel_stored_forcing");
+  const nibrig::test::ScopedEnvironment store("NIBRIG_FORCING_MODELS", (dir / "store").string());
+  const auto kept = model::forcing::save_forcing_model("lab-pla", model::design::hand_made_model());
+  ASSERT_EQ(model::forcing::stored_forcing_models(), std::vector<std::string>{"lab-pla"});
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  FilesSession s(setup);
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  s.panel.open_stored_forcing("lab-pla");
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  EXPECT_TRUE(s.panel.error().empty()) << s.panel.error();
+  EXPECT_EQ(s.panel.forcing_file(), kept);
+  // A name the store does not hold changes nothing and says what it holds.
+  s.panel.open_stored_forcing("lab-petg");
+  ASSERT_TRUE(s.until([&] { return !s.panel.busy(); }));
+  EXPECT_THAT(s.panel.error(), HasSubstr("stored: lab-pla"));
+  EXPECT_EQ(s.panel.forcing_file(), kept);
 }
 
 TEST(PanelKeys, CtrlNumbersShowViewsAndLettersSwitchTheComparedTools) {
