@@ -2,10 +2,13 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 #include "model/forcing/hermite_curve.hpp"
 #include "model/measure/descriptors.hpp"
+#include "model/mechanics/ring_down.hpp"
+#include "model/modal/frequency_response.hpp"
 #include "model/space/catalog_descriptors.hpp"
 
 namespace nibrig::model::design {
@@ -103,6 +106,52 @@ Eigen::MatrixXd calibration_descriptor_covariance(const forcing::ForcingModel& m
         [&](std::size_t v, std::size_t j) { return se->second.at(v).at(j); });
     covariance += g * g.transpose();
   }
+  return covariance;
+}
+
+Eigen::MatrixXd material_constants_covariance(const modal::ModalModel& modal,
+                                              const mechanics::RayleighDamping& damping,
+                                              const mechanics::Material& material,
+                                              const io::VelocitySpectrum& spectrum,
+                                              const measure::ThresholdCurve& threshold,
+                                              const std::vector<std::string>& names) {
+  const auto n = static_cast<Eigen::Index>(names.size());
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(n, n);
+  calibration_log_descriptors(spectrum, threshold, names);  // names checked even with no errors
+  // d ln|H(f_j)| / d ln(parameter), from the stylus at parameter × (1 ± h).
+  constexpr double h = 1e-3;
+  const auto log_response_slope = [&](const std::function<modal::ModalModel(double)>& at) {
+    const auto up = modal::frequency_response(at(1 + h), spectrum.frequencies_hz);
+    const auto down = modal::frequency_response(at(1 - h), spectrum.frequencies_hz);
+    std::vector<double> slope(up.size());
+    for (std::size_t j = 0; j < up.size(); ++j)
+      slope[j] = (std::log(std::abs(up[j])) - std::log(std::abs(down[j]))) /
+                 (std::log1p(h) - std::log1p(-h));
+    return slope;
+  };
+  const auto sensitivity = [&](const std::vector<double>& slope) {
+    return calibration_sensitivity(spectrum, threshold, names,
+                                   [&](std::size_t, std::size_t j) { return slope[j]; });
+  };
+  std::optional<Eigen::VectorXd> g_modulus, g_damping;
+  double sd_modulus = 0.0, sd_damping = 0.0;  // of ln E and ln λ
+  if (material.youngs_modulus_sd && *material.youngs_modulus_sd > 0) {
+    sd_modulus = *material.youngs_modulus_sd / material.youngs_modulus;
+    g_modulus = sensitivity(log_response_slope(
+        [&](double ratio) { return mechanics::rescale_modulus(modal, ratio, damping); }));
+    covariance += *g_modulus * g_modulus->transpose() * sd_modulus * sd_modulus;
+  }
+  if (material.rayleigh_stiffness_sd && *material.rayleigh_stiffness_sd > 0 &&
+      damping.stiffness > 0) {
+    sd_damping = *material.rayleigh_stiffness_sd / damping.stiffness;
+    g_damping = sensitivity(log_response_slope([&](double ratio) {
+      return mechanics::rescale_modulus(modal, 1.0, {damping.mass, damping.stiffness * ratio});
+    }));
+    covariance += *g_damping * g_damping->transpose() * sd_damping * sd_damping;
+  }
+  if (g_modulus && g_damping)
+    covariance += material.modulus_damping_correlation * sd_modulus * sd_damping *
+                  (*g_modulus * g_damping->transpose() + *g_damping * g_modulus->transpose());
   return covariance;
 }
 

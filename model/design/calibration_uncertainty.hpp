@@ -18,6 +18,8 @@
 #include "model/forcing/forcing_model.hpp"
 #include "model/io/velocity_spectrum.hpp"
 #include "model/measure/threshold_curve.hpp"
+#include "model/mechanics/material_table.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::model::design {
 
@@ -32,6 +34,20 @@ Eigen::MatrixXd calibration_descriptor_covariance(const forcing::ForcingModel& m
                                                   const io::VelocitySpectrum& spectrum,
                                                   const measure::ThresholdCurve& threshold,
                                                   const std::vector<std::string>& names);
+
+// What a lab material's ring-down calibration adds for a stylus printed whole of it: its modulus
+// and Rayleigh stiffness term, each known to a standard deviation with their correlation
+// (mechanics::Material), move every mode (ω_i ∝ √E; ζ_i from the damping) and so |H| and the
+// predicted spectrum. `modal` is the stylus's modal model at the material's values, damped by
+// `damping`; the whole body being that material, a modulus ratio scales every mode alike
+// (mechanics::rescale_modulus). The sensitivities are central differences in ln E and ln λ.
+// Zero when the material carries no standard deviations.
+Eigen::MatrixXd material_constants_covariance(const modal::ModalModel& modal,
+                                              const mechanics::RayleighDamping& damping,
+                                              const mechanics::Material& material,
+                                              const io::VelocitySpectrum& spectrum,
+                                              const measure::ThresholdCurve& threshold,
+                                              const std::vector<std::string>& names);
 
 // Whether the model carries standard errors for any of the point's materials or for the surface.
 bool has_calibration_errors(const forcing::ForcingModel& model, const DesignPoint& point,

@@ -121,16 +121,30 @@ PredictedTool assemble(const PredictionSetup& setup, const DesignPoint& point,
   tool.spectrum = predict_spectrum(*setup.model, point, surface, tool.response_magnitude);
   tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *setup.threshold);
   // A material or surface calibrated from a few prints moves the descriptors by its own error,
-  // beside the cross-validated one (calibration_uncertainty.hpp).
-  if (has_calibration_errors(*setup.model, point, surface)) {
-    auto& errors = tool.descriptor_errors;
+  // beside the cross-validated one, and so does a lab material's ring-down calibration of its
+  // modulus and damping for a stylus printed whole of it (calibration_uncertainty.hpp).
+  auto& errors = tool.descriptor_errors;
+  const auto with_errors = [&]() -> DescriptorErrorCovariance& {
     if (errors.empty()) {
       errors.names = space::all_paper_descriptor_names();
       const auto n = static_cast<Eigen::Index>(errors.names.size());
       errors.covariance = Eigen::MatrixXd::Zero(n, n);
     }
-    errors.covariance += calibration_descriptor_covariance(
-        *setup.model, point, surface, tool.spectrum, *setup.threshold, errors.names);
+    return errors;
+  };
+  if (has_calibration_errors(*setup.model, point, surface))
+    with_errors().covariance += calibration_descriptor_covariance(
+        *setup.model, point, surface, tool.spectrum, *setup.threshold, with_errors().names);
+  if (point.mix.size() == 1) {
+    const forcing::PrintedTip tip =
+        forcing::printed_tip_of(point.mix.front().material, setup.materials);
+    const mechanics::Material& material = setup.materials.find(tip.material);
+    if (tip.whole_tool && (material.youngs_modulus_sd || material.rayleigh_stiffness_sd)) {
+      const auto damping = mixed_design(point, setup.template_design, setup.materials)
+                               .design.damping.value_or(mechanics::RayleighDamping{});
+      with_errors().covariance += material_constants_covariance(
+          tool.modal, damping, material, tool.spectrum, *setup.threshold, with_errors().names);
+    }
   }
   // The template's body and each material of the mix as printed (forcing/printed_tool_design).
   const auto body = setup.template_design.region_materials.find("body");

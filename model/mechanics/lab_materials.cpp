@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <mutex>
 #include <set>
@@ -92,6 +93,23 @@ Material read_lab_material_file(const std::filesystem::path& file,
   const auto root = nlohmann::json::parse(in, nullptr, false);
   if (root.is_object() && root.contains("calibration") && root["calibration"].is_object()) {
     const auto& calibration = root["calibration"];
+    const auto number = [&](const char* key) -> std::optional<double> {
+      if (!calibration.contains(key)) return std::nullopt;
+      const auto& v = calibration[key];
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0)
+        throw io::FormatError(file, std::string("field 'calibration.") + key + "'",
+                              "expected a standard deviation, a finite number >= 0");
+      return v.get<double>();
+    };
+    m.youngs_modulus_sd = number("youngs_modulus_sd");
+    m.rayleigh_stiffness_sd = number("rayleigh_stiffness_sd");
+    if (calibration.contains("modulus_damping_correlation")) {
+      const auto& r = calibration["modulus_damping_correlation"];
+      if (!r.is_number() || !(r.get<double>() >= -1 && r.get<double>() <= 1))
+        throw io::FormatError(file, "field 'calibration.modulus_damping_correlation'",
+                              "expected a number from -1 to 1");
+      m.modulus_damping_correlation = r.get<double>();
+    }
     if (calibration.contains("printed_as")) {
       if (!calibration["printed_as"].is_string())
         throw io::FormatError(file, "field 'calibration.printed_as'",

@@ -30,6 +30,10 @@ struct Material {
   // A lab's own material: the bundled one its prints are made of (what a printer loads for it; its
   // calibration's "printed_as"). Empty: the material itself.
   std::string printed_as;
+  // A ring-down calibration's standard deviations of E (Pa) and of the Rayleigh stiffness term
+  // (s), and their correlation: how sure the lab's entry is, which predictions carry.
+  std::optional<double> youngs_modulus_sd, rayleigh_stiffness_sd;
+  double modulus_damping_correlation = 0.0;
 };
 
 // "fitted", "datasheet", "estimate": what a table's `basis` may say.

@@ -124,12 +124,22 @@ TEST(LabMaterials, ABrokenFileIsLeftOutAndNamedWhenItsMaterialIsAskedFor) {
   const auto store = nibrig::test::scratch_dir("lab_materials_broken_file");
   const nibrig::test::ScopedEnvironment lab("NIBRIG_MATERIALS", store.string());
   const MaterialTable bundled = read_material_file(io::default_materials());
-  save_lab_material(lab_pla("shop-pla"), {{"printed_as", "PLA"}}, bundled, false);
+  save_lab_material(lab_pla("shop-pla"),
+                    {{"printed_as", "PLA"},
+                     {"youngs_modulus_sd", 1e7},
+                     {"rayleigh_stiffness_sd", 1e-6},
+                     {"modulus_damping_correlation", -0.2}},
+                    bundled, false);
   std::ofstream(store / "half-written.json")
       << R"({"format": "nibrig-materials", "version": 1, "mater)";
   // Every other material is found, the lab's own with what it was printed as.
   const MaterialTable table = read_material_table(io::default_materials());
   EXPECT_EQ(table.find("shop-pla").printed_as, "PLA");
+  // With how sure its ring-down is, which predictions carry.
+  EXPECT_EQ(table.find("shop-pla").youngs_modulus_sd, 1e7);
+  EXPECT_EQ(table.find("shop-pla").rayleigh_stiffness_sd, 1e-6);
+  EXPECT_EQ(table.find("shop-pla").modulus_damping_correlation, -0.2);
+  EXPECT_FALSE(table.find("PETG").youngs_modulus_sd.has_value());
   EXPECT_EQ(table.find("PETG").printed_as, "");
   // The broken one is named, with why, where a material is looked for in vain.
   try {

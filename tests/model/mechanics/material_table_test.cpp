@@ -52,7 +52,7 @@ TEST(MaterialTable, NegativeModulusNamesFileAndField) {
 }
 
 TEST(MaterialTable, RejectsImpossiblePoissonRatioDensityAndDamping) {
-  Material m{"m", 1e9, 0.5, 1000, std::nullopt, "", "", ""};
+  Material m{"m", 1e9, 0.5, 1000, std::nullopt, "", "", "", std::nullopt, std::nullopt, 0.0};
   EXPECT_THAT([&] { validate(m); },
               ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("Poisson ratio")));
   m.poisson_ratio = 0.3;
