@@ -63,6 +63,15 @@ Eigen::VectorXd calibration_sensitivity(
   return (shifted(kStep) - shifted(-kStep)) / (2 * kStep);
 }
 
+// Zero over `names`, once they are checked to be descriptors: a name that is not one is refused
+// even when there is no error to add.
+Eigen::MatrixXd zero_covariance(const io::VelocitySpectrum& spectrum, const measure::ThresholdCurve& threshold,
+                                const std::vector<std::string>& names) {
+  calibration_log_descriptors(spectrum, threshold, names);
+  const auto n = static_cast<Eigen::Index>(names.size());
+  return Eigen::MatrixXd::Zero(n, n);
+}
+
 }  // namespace
 
 bool has_calibration_errors(const forcing::ForcingModel& model, const DesignPoint& point,
@@ -79,9 +88,7 @@ Eigen::MatrixXd calibration_descriptor_covariance(const forcing::ForcingModel& m
                                                   const io::VelocitySpectrum& spectrum,
                                                   const measure::ThresholdCurve& threshold,
                                                   const std::vector<std::string>& names) {
-  const auto n = static_cast<Eigen::Index>(names.size());
-  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(n, n);
-  calibration_log_descriptors(spectrum, threshold, names);  // names checked even with no errors
+  Eigen::MatrixXd covariance = zero_covariance(spectrum, threshold, names);
   for (const auto& share : point.mix) {
     const auto se = model.material_log_gain_se.find(share.material);
     if (se == model.material_log_gain_se.end() || share.fraction <= 0) continue;
@@ -115,9 +122,7 @@ Eigen::MatrixXd material_constants_covariance(const modal::ModalModel& modal,
                                               const io::VelocitySpectrum& spectrum,
                                               const measure::ThresholdCurve& threshold,
                                               const std::vector<std::string>& names) {
-  const auto n = static_cast<Eigen::Index>(names.size());
-  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(n, n);
-  calibration_log_descriptors(spectrum, threshold, names);  // names checked even with no errors
+  Eigen::MatrixXd covariance = zero_covariance(spectrum, threshold, names);
   // d ln|H(f_j)| / d ln(parameter), from the stylus at parameter × (1 ± h).
   constexpr double h = 1e-3;
   const auto log_response_slope = [&](const std::function<modal::ModalModel(double)>& at) {
