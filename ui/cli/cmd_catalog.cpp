@@ -9,6 +9,7 @@
 #include "model/catalog/catalog_builder.hpp"
 #include "model/catalog/friction_comparison.hpp"
 #include "model/catalog/compact.hpp"
+#include "model/catalog/merge.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "ui/cli/commands.hpp"
@@ -113,6 +114,23 @@ void build(const CatalogOptions& options, unsigned threads) {
   }
 }
 
+struct MergeOptions {
+  std::vector<std::filesystem::path> catalogs;
+  std::filesystem::path output;
+};
+
+void merge(const MergeOptions& options) {
+  std::vector<model::catalog::NamedCatalog> catalogs;
+  for (const auto& file : options.catalogs)
+    catalogs.push_back({file.string(), model::io::read_catalog(file)});
+  const auto merged = model::catalog::merge_catalogs(catalogs);
+  ensure_folder(options.output.parent_path());
+  model::io::write_catalog(options.output, merged);
+  std::cout << merged.tools.size() << " tools, " << merged.surfaces.size() << " surfaces, "
+            << merged.pairings.size() << " pairings from " << catalogs.size() << " catalogs\n";
+  say_wrote(options.output);
+}
+
 }  // namespace
 
 void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
@@ -146,6 +164,22 @@ void add_catalog_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->callback([options, global] {
     configure_logging(global->verbosity);
     build(*options, worker_threads(*global));
+  });
+
+  auto merging = std::make_shared<MergeOptions>();
+  auto* merge_cmd = catalog->add_subcommand("merge", "Several catalogs -> one (the bundled and a lab's own)");
+  merge_cmd->footer(
+      "A lab's catalog of its own prints beside the bundled one: predictions of its material read\n"
+      "their friction from it while a design's targets stay the paper's tools. A tool measured on\n"
+      "one surface in two catalogs is refused: keep one measurement.");
+  merge_cmd->add_option("catalogs", merging->catalogs, "Catalog JSON files, two or more")
+      ->required()
+      ->expected(2, -1)
+      ->check(CLI::ExistingFile);
+  merge_cmd->add_option("-o,--output", merging->output, "Catalog JSON to write")->required()->check(file_to_write());
+  merge_cmd->callback([merging, global] {
+    configure_logging(global->verbosity);
+    merge(*merging);
   });
 }
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "model/design/design_point.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/forcing/measurement_repeatability.hpp"
 #include "model/io/acceleration_trace.hpp"
@@ -22,6 +23,7 @@
 #include "model/mechanics/stylus_description.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
+#include "tests/ui/panel/test_space.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -210,6 +212,28 @@ TEST(LabMaterialWalkthrough, AHiddenMaterialIsCalibratedFromItsBarAndTwoPrintsOn
   EXPECT_TRUE(std::filesystem::exists(stylus));
   const auto recipe = json_of(root / "print" / "lab-2mm.json");
   EXPECT_EQ(recipe["printer"]["name"], "prusa-mk3s") << recipe.dump(1);
+
+  // A design of it: the bundled catalog (the target) and the lab's (its prints' friction) merged,
+  // the line between its two calibration tips searched towards the crayon on office paper.
+  const auto merged = root / "merged_catalog.json";
+  ASSERT_EQ(test::run_cli({"-q", "catalog", "merge", model::io::default_catalog().string(), catalog_file.string(), "-o",
+                           merged.string()}),
+            0);
+  const auto space = panel::testing::write_descriptor_space(root / "space");
+  const auto search_file = root / "lab_design.json";
+  ::testing::internal::CaptureStdout();
+  const int designed = test::run_cli({"design", "--target", "cryon/office", "--surface", "office", "--space",
+                                      space.string(), "--forcing", "lab", "--catalog", merged.string(), "--between",
+                                      "lab-pla,tip=1mm", "lab-pla,tip=4mm", "--mesh-size", "0.004", "--modes", "24",
+                                      "--runners-up", "0", "-o", search_file.string()});
+  const std::string design_said = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(designed, 0) << design_said;
+  const auto optimum =
+      model::design::parse_design_point(json_of(search_file)["optimum"]["design"].get<std::string>());
+  ASSERT_EQ(optimum.mix.size(), 1u);
+  EXPECT_EQ(optimum.mix.front().material, "lab-pla");
+  EXPECT_GE(optimum.tip_diameter_m, 0.001 * (1 - 1e-9));
+  EXPECT_LE(optimum.tip_diameter_m, 0.004 * (1 + 1e-9));
 
   const auto knot_error_db = [&](std::size_t k) {
     return 20 * std::log10(std::exp(curve[k] - truth_curve[k]));
