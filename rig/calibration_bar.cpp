@@ -30,6 +30,14 @@ int setting_int(const model::io::PrinterProfile& printer, const std::string& key
 
 }  // namespace
 
+CalibrationBar calibration_bar_of(const std::string& material, const mech::MaterialTable& materials,
+                                  std::optional<double> length_m) {
+  CalibrationBar bar;
+  bar.material = materials.find(material).name;
+  if (length_m) bar.geometry.length = *length_m;
+  return bar;
+}
+
 mech::Design calibration_bar_design(const CalibrationBar& bar) {
   return mech::bar_design(bar.geometry, bar.material);
 }

@@ -5,10 +5,12 @@
 // BarGeometry so that what is printed is what is fitted.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "model/io/printer_profile.hpp"
+#include "model/mechanics/material_table.hpp"
 #include "model/mechanics/stylus_description.hpp"
 #include "rig/printed_parts.hpp"
 
@@ -19,6 +21,13 @@ struct CalibrationBar {
   std::string material;                    // the material table's name, as the printer lists it
   double preload = 0.05;                   // m: the paper pulls the free end 5 cm aside
 };
+
+// The bar of `material` as `materials` names it (any case), the paper's length unless `length_m` is
+// given (checked with the geometry when the bar is written). Throws what MaterialTable::find throws
+// for a material the table lacks.
+CalibrationBar calibration_bar_of(const std::string& material,
+                                  const model::mechanics::MaterialTable& materials,
+                                  std::optional<double> length_m = std::nullopt);
 
 // The FEM design the fit uses: model::mechanics::bar_design, its tip the middle of the free end and
 // its sensor on the centre line 20 mm from that end, axis through the thickness.

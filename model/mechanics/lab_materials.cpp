@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -14,6 +13,7 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/job_files.hpp"
+#include "model/io/json_fields.hpp"
 #include "model/io/user_store.hpp"
 
 namespace nibrig::model::mechanics {
@@ -78,7 +78,8 @@ std::filesystem::path lab_material_file(const std::string& name) {
 
 Material read_lab_material_file(const std::filesystem::path& file,
                                 const std::filesystem::path& folder) {
-  const MaterialTable one = read_material_file(file);
+  const nlohmann::json root = io::json_fields::parse_file(file);
+  const MaterialTable one = material_table_from_json(root, file);
   if (one.materials().size() != 1)
     throw io::FormatError(file, "field 'materials'",
                           "a lab material's file holds exactly one material, found " +
@@ -89,9 +90,7 @@ Material read_lab_material_file(const std::filesystem::path& file,
     throw io::FormatError(file, "field 'materials[0].name'",
                           "'" + m.name + "' belongs in " +
                               io::user_store_file(folder, m.name, "material").filename().string());
-  std::ifstream in(file);
-  const auto root = nlohmann::json::parse(in, nullptr, false);
-  if (root.is_object() && root.contains("calibration") && root["calibration"].is_object()) {
+  if (root.contains("calibration") && root["calibration"].is_object()) {
     const auto& calibration = root["calibration"];
     const auto number = [&](const char* key) -> std::optional<double> {
       if (!calibration.contains(key)) return std::nullopt;

@@ -89,7 +89,11 @@ void validate(const Material& m) {
 }
 
 MaterialTable read_material_file(const std::filesystem::path& file) {
-  const nlohmann::json root = jf::parse_file(file);
+  return material_table_from_json(jf::parse_file(file), file);
+}
+
+MaterialTable material_table_from_json(const nlohmann::json& root,
+                                       const std::filesystem::path& file) {
   jf::as_object(root, file, "");
   jf::check_format_and_version(root, file, "nibrig-materials", 1);
   const auto& list = jf::as_array(jf::member(root, "materials", file, ""), file, "materials");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,6 +78,10 @@ void validate(const Material& material);
 // Format "nibrig-materials", version 1 (`basis` optional): the file alone. Throws io::FormatError
 // naming the file and field.
 MaterialTable read_material_file(const std::filesystem::path& file);
+// The same from the file's parsed `root` (`file` names it in errors), for a reader that needs the
+// file's other fields too.
+MaterialTable material_table_from_json(const nlohmann::json& root,
+                                       const std::filesystem::path& file);
 
 // The file's materials, then the lab's own calibrated ones (lab_materials.hpp: the user store's
 // materials folder), so that every command that takes a material by name finds a lab's. On a name in

@@ -43,9 +43,8 @@ mech::MaterialTable material_table_option(const std::filesystem::path& materials
 void write_bar(const CalibrationBarOptions& o) {
   const auto printer = printer_option(o.printer);
   const mech::MaterialTable materials = material_table_option(o.materials);
-  rig::CalibrationBar bar;
-  bar.material = materials.find(o.material).name;
-  if (o.length > 0) bar.geometry.length = o.length;
+  const rig::CalibrationBar bar = rig::calibration_bar_of(
+      o.material, materials, o.length > 0 ? std::optional<double>(o.length) : std::nullopt);
   const auto written = rig::write_calibration_bar(o.output, bar, *printer, materials);
   const auto& g = bar.geometry;
   std::printf("calibration bar: %g x %g x %g mm of %s, %.0f mm3 solid, on %s\n", g.length * 1e3,

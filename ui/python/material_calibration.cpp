@@ -39,8 +39,8 @@ WrittenBar calibration_bar(const std::string& material, const std::string& print
   const mech::MaterialTable table =
       mech::read_material_table(materials.value_or(model::io::default_materials()));
   WrittenBar out;
-  out.bar.material = table.find(material).name;
-  if (length_mm) out.bar.geometry.length = *length_mm * 1e-3;
+  out.bar = rig::calibration_bar_of(
+      material, table, length_mm ? std::optional<double>(*length_mm * 1e-3) : std::nullopt);
   out.printer = profile.name;
   run_long_call(
       [&](std::stop_token, const Report&) {
