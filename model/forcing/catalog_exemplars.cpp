@@ -43,7 +43,7 @@ ExemplarSelection select_printed_exemplars(const io::Catalog& catalog,
       selection.excluded.push_back(name + ": no vibration spectrum in the catalog");
     } else {
       selection.exemplars.push_back(
-          {p.tool, p.surface, tool.material, *tool.tip_diameter_m, p.vibration->spectrum, {}});
+          {p.tool, p.surface, tool.material, *tool.tip_diameter_m, p.vibration->spectrum, {}, {}, false});
     }
   }
   return selection;

@@ -21,26 +21,52 @@ std::string joined(const std::set<std::string>& names) {
   return out;
 }
 
-// Which free curve (a block of knot values) each exemplar's tip and material use. The reference
-// tip and material are pinned at zero and own no block.
+// Which free curve (a block of knot values) each exemplar's tip and material use, and with what
+// weight: 1 for a tool of one material at a fitted tip; a mix's fractions, and an interpolated
+// tip's two linear weights. The reference tip and material are pinned at zero and own no block.
 struct Layout {
+  using Weights = std::vector<std::pair<std::size_t, double>>;  // (index, weight)
   std::vector<double> knots;
-  std::vector<double> tips;            // distinct diameters, ascending, the reference among them
+  std::vector<double> tips;            // distinct fitted diameters, ascending, the reference among them
   std::vector<std::string> materials;  // distinct names, sorted, the reference among them
   std::vector<std::optional<std::size_t>> tip_block, material_block;  // per tip / material
-  std::vector<std::size_t> exemplar_tip, exemplar_material;           // per exemplar: an index
+  std::vector<Weights> exemplar_tip, exemplar_material;               // per exemplar
   std::size_t blocks = 0;
   std::vector<std::string> block_names;  // "tip 1 mm", "material 'DM85'"
 
   std::size_t knot_count() const { return knots.size(); }
   std::size_t unknowns() const { return blocks * knots.size(); }
-  std::vector<std::size_t> blocks_of(std::size_t e) const {
-    std::vector<std::size_t> out;
-    if (tip_block[exemplar_tip[e]]) out.push_back(*tip_block[exemplar_tip[e]]);
-    if (material_block[exemplar_material[e]]) out.push_back(*material_block[exemplar_material[e]]);
+  // (block, weight) of every free curve exemplar e's ln t + ln m sums.
+  Weights blocks_of(std::size_t e) const {
+    Weights out;
+    for (const auto& [t, w] : exemplar_tip[e])
+      if (tip_block[t]) out.emplace_back(*tip_block[t], w);
+    for (const auto& [m, w] : exemplar_material[e])
+      if (material_block[m]) out.emplace_back(*material_block[m], w);
     return out;
   }
+  bool uses(std::size_t e, std::size_t block) const {
+    const auto b = blocks_of(e);
+    return std::any_of(b.begin(), b.end(), [&](const auto& bw) { return bw.first == block && bw.second != 0; });
+  }
 };
+
+std::vector<std::pair<std::string, double>> shares_of(const ForcingExemplar& e) {
+  if (e.mix.empty()) return {{e.material, 1.0}};
+  return e.mix;
+}
+
+// The two fitted tips around `d` and their weights, linear in the diameter (as
+// design::interpolated_log_gain weighs them); empty when d lies outside the fitted tips.
+Layout::Weights tip_weights(const std::vector<double>& tips, double d) {
+  for (std::size_t t = 0; t < tips.size(); ++t)
+    if (same_tip(tips[t], d)) return {{t, 1.0}};
+  const auto upper = std::lower_bound(tips.begin(), tips.end(), d);
+  if (upper == tips.begin() || upper == tips.end()) return {};
+  const auto j = static_cast<std::size_t>(upper - tips.begin());
+  const double w = (d - tips[j - 1]) / (tips[j] - tips[j - 1]);
+  return {{j - 1, 1.0 - w}, {j, w}};
+}
 
 Layout make_layout(std::span<const ForcingExemplar> exemplars, const ForcingFitOptions& options) {
   Layout layout;
@@ -49,7 +75,8 @@ Layout make_layout(std::span<const ForcingExemplar> exemplars, const ForcingFitO
   layout.tips.push_back(options.reference_tip_diameter_m);
   std::set<std::string> materials{options.reference_material};
   for (const auto& e : exemplars) {
-    materials.insert(e.material);
+    for (const auto& [m, f] : shares_of(e)) materials.insert(m);
+    if (e.tip_interpolated) continue;
     const bool known = std::any_of(layout.tips.begin(), layout.tips.end(),
                                    [&](double d) { return same_tip(d, e.tip_diameter_m); });
     if (!known) layout.tips.push_back(e.tip_diameter_m);
@@ -67,12 +94,14 @@ Layout make_layout(std::span<const ForcingExemplar> exemplars, const ForcingFitO
     if (!reference) layout.block_names.push_back("material '" + m + "'");
   }
   for (const auto& e : exemplars) {
-    const auto tip = std::find_if(layout.tips.begin(), layout.tips.end(),
-                                  [&](double d) { return same_tip(d, e.tip_diameter_m); });
-    layout.exemplar_tip.push_back(static_cast<std::size_t>(tip - layout.tips.begin()));
-    layout.exemplar_material.push_back(static_cast<std::size_t>(
-        std::find(layout.materials.begin(), layout.materials.end(), e.material) -
-        layout.materials.begin()));
+    layout.exemplar_tip.push_back(tip_weights(layout.tips, e.tip_diameter_m));
+    Layout::Weights shares;
+    for (const auto& [m, f] : shares_of(e))
+      shares.emplace_back(static_cast<std::size_t>(
+                              std::find(layout.materials.begin(), layout.materials.end(), m) -
+                              layout.materials.begin()),
+                          f);
+    layout.exemplar_material.push_back(std::move(shares));
   }
   return layout;
 }
@@ -89,6 +118,14 @@ std::vector<std::string> data_problems(std::span<const ForcingExemplar> exemplar
     const std::string name = exemplar_name(e);
     if (!(std::isfinite(e.tip_diameter_m) && e.tip_diameter_m > 0))
       problems.push_back(name + ": tip diameter must be a positive length");
+    double sum = 0.0;
+    for (const auto& [m, f] : e.mix) {
+      if (!(std::isfinite(f) && f > 0 && f <= 1))
+        problems.push_back(name + ": the fraction of '" + m + "' must lie in (0, 1]");
+      sum += f;
+    }
+    if (!e.mix.empty() && std::abs(sum - 1.0) > 1e-6)
+      problems.push_back(name + ": its mix's fractions add up to " + std::to_string(sum) + ", not 1");
     if (!io::same_grid(e.measured, grid)) {
       problems.push_back(name + ": its frequencies or speeds differ from those of " +
                          exemplar_name(exemplars.front()));
@@ -138,7 +175,7 @@ std::vector<std::string> identifiability_problems(std::span<const ForcingExempla
   std::vector<Eigen::RowVectorXd> rows;
   auto indicator = [&](std::size_t e) {
     Eigen::RowVectorXd x = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(layout.blocks));
-    for (std::size_t b : layout.blocks_of(e)) x(static_cast<Eigen::Index>(b)) += 1.0;
+    for (const auto& [b, weight] : layout.blocks_of(e)) x(static_cast<Eigen::Index>(b)) += weight;
     return x;
   };
   for (const auto& [surface, members] : surfaces)
@@ -163,8 +200,7 @@ std::vector<std::string> identifiability_problems(std::span<const ForcingExempla
     if (rank_of(with) == base) continue;
     std::set<std::string> on, shared;
     for (std::size_t e = 0; e < exemplars.size(); ++e) {
-      const auto blocks = layout.blocks_of(e);
-      if (std::find(blocks.begin(), blocks.end(), b) == blocks.end()) continue;
+      if (!layout.uses(e, b)) continue;
       on.insert(exemplars[e].surface);
       if (surfaces.at(exemplars[e].surface).size() > 1) shared.insert(exemplars[e].surface);
     }
@@ -235,9 +271,9 @@ double curves_at(const Layout& layout, std::size_t e,
                  const std::vector<std::pair<std::size_t, double>>& weights,
                  const Eigen::VectorXd& theta) {
   double sum = 0.0;
-  for (std::size_t b : layout.blocks_of(e))
+  for (const auto& [b, weight] : layout.blocks_of(e))
     for (const auto& [k, w] : weights)
-      sum += w * theta(static_cast<Eigen::Index>(b * layout.knot_count() + k));
+      sum += weight * w * theta(static_cast<Eigen::Index>(b * layout.knot_count() + k));
   return sum;
 }
 
@@ -251,6 +287,13 @@ std::vector<std::string> fit_problems(std::span<const ForcingExemplar> exemplars
   auto problems = data_problems(exemplars, knots);
   if (!problems.empty()) return problems;
   const Layout layout = make_layout(exemplars, options);
+  for (std::size_t e = 0; e < exemplars.size(); ++e)
+    if (layout.exemplar_tip[e].empty())
+      problems.push_back(exemplar_name(exemplars[e]) + ": its tip, " +
+                         tip_label(exemplars[e].tip_diameter_m) + ", lies outside the fitted tips (" +
+                         tip_label(layout.tips.front()) + " to " + tip_label(layout.tips.back()) +
+                         "), and is interpolated, not extrapolated");
+  if (!problems.empty()) return problems;
   problems = identifiability_problems(exemplars, layout, options);
   for (auto& p : empty_cell_problems(exemplars)) problems.push_back(std::move(p));
   return problems;
@@ -282,7 +325,7 @@ ForcingModel fit_forcing_model(std::span<const ForcingExemplar> exemplars,
         // The unknowns this cell touches: the knots near f_j of every block its exemplars use.
         std::vector<Eigen::Index> columns;
         for (std::size_t e : cell.exemplars)
-          for (std::size_t b : layout.blocks_of(e))
+          for (const auto& [b, weight] : layout.blocks_of(e))
             for (const auto& [k, w] : weights[j])
               columns.push_back(static_cast<Eigen::Index>(b * layout.knot_count() + k));
         std::sort(columns.begin(), columns.end());
@@ -293,12 +336,12 @@ ForcingModel fit_forcing_model(std::span<const ForcingExemplar> exemplars,
         for (Eigen::Index i = 0; i < n; ++i) {
           const std::size_t e = cell.exemplars[static_cast<std::size_t>(i)];
           y(i) = cell.y[static_cast<std::size_t>(i)];
-          for (std::size_t b : layout.blocks_of(e))
+          for (const auto& [b, weight] : layout.blocks_of(e))
             for (const auto& [k, w] : weights[j]) {
               const auto global = static_cast<Eigen::Index>(b * layout.knot_count() + k);
               const auto local =
                   std::lower_bound(columns.begin(), columns.end(), global) - columns.begin();
-              x(i, local) += w;
+              x(i, local) += weight * w;
             }
         }
         x.rowwise() -= x.colwise().mean();

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,13 @@ struct ForcingExemplar {
   double tip_diameter_m = 0.0;
   io::VelocitySpectrum measured;
   std::vector<double> response_magnitude;  // |H| at measured.frequencies_hz, (m/s²)/N
+  // A print of a mix (a design loop's print): each material's fraction, ln m being their weighted
+  // sum as in a prediction. Empty: `material` alone.
+  std::vector<std::pair<std::string, double>> mix;
+  // Its tip is interpolated between the other exemplars' tips as a prediction's is (ln t linear in
+  // the diameter between the two around it), not given a curve of its own: one print at 2.6 mm
+  // says too little to fit a tip curve, but constrains the ones beside it.
+  bool tip_interpolated = false;
 };
 
 struct ForcingFitOptions {

@@ -73,13 +73,21 @@ BruteForce brute_force_fit(const std::vector<ForcingExemplar>& exemplars) {
         Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(columns);
         row(surface_base[e.surface] + static_cast<Eigen::Index>(s * bins + j)) = 1.0;
         const auto weights = hermite_weights(knots, grid.frequencies_hz[j]);
-        auto add_block = [&](const std::string& name) {
+        auto add_block = [&](const std::string& name, double share) {
           const auto b = std::find(blocks.begin(), blocks.end(), name) - blocks.begin();
-          for (const auto& [k, w] : weights) row(b * K + static_cast<Eigen::Index>(k)) += w;
+          for (const auto& [k, w] : weights) row(b * K + static_cast<Eigen::Index>(k)) += share * w;
         };
-        if (std::abs(e.tip_diameter_m - 0.001) < 1e-9) add_block("tip 1");
-        if (std::abs(e.tip_diameter_m - 0.004) < 1e-9) add_block("tip 4");
-        if (e.material != "vero") add_block(e.material);
+        // Tips 1, 2 (the reference, no block) and 4 mm; between them, by hand, linear in the
+        // diameter.
+        const double d_mm = e.tip_diameter_m * 1e3;
+        if (d_mm <= 2.0) add_block("tip 1", (2.0 - d_mm) / 1.0);
+        else add_block("tip 4", (d_mm - 2.0) / 2.0);
+        if (e.mix.empty()) {
+          if (e.material != "vero") add_block(e.material, 1.0);
+        } else {
+          for (const auto& [m, f] : e.mix)
+            if (m != "vero") add_block(m, f);
+        }
         rows.push_back(row);
         rhs.push_back(std::log(a) - std::log(e.response_magnitude[j]));
       }
@@ -135,6 +143,69 @@ TEST(ForcingFit, EliminatingTheForcingGivesTheFullLeastSquaresSolution) {
   // the residual sits below that but well above zero.
   EXPECT_GT(model.residual_rms_db, 1.0);
   EXPECT_LT(model.residual_rms_db, 20 / std::log(10.0) * 0.3);
+}
+
+// A design loop's prints: a mix at a tip between the fitted ones, made from the same truth (ln m
+// the fractions' sum, ln t linear in the diameter) and then measured with noise.
+ForcingExemplar synthetic_mixed_print(const test::SyntheticTruth& truth, const std::string& surface,
+                                      std::vector<std::pair<std::string, double>> mix, double tip_m) {
+  ForcingExemplar e = truth.exemplars.front();
+  e.tool = "loop print";
+  e.surface = surface;
+  e.material = "mix";
+  e.mix = std::move(mix);
+  e.tip_diameter_m = tip_m;
+  e.tip_interpolated = true;
+  e.response_magnitude = test::synthetic_response(e.measured.frequencies_hz, 90 + 3e3 * tip_m + 3);
+  const double lower = tip_m <= 0.002 ? 0.001 : 0.002, upper = tip_m <= 0.002 ? 0.002 : 0.004;
+  const double w = (tip_m - lower) / (upper - lower);
+  for (std::size_t s = 0; s < e.measured.speeds_m_s.size(); ++s)
+    for (std::size_t j = 0; j < e.measured.frequencies_hz.size(); ++j) {
+      const double f = e.measured.frequencies_hz[j];
+      double gain = (1 - w) * hermite_value(truth.knots, truth.tip.at(lower), f) +
+                    w * hermite_value(truth.knots, truth.tip.at(upper), f);
+      for (const auto& [m, share] : e.mix) gain += share * hermite_value(truth.knots, truth.material.at(m), f);
+      e.measured.amplitude_m_s2[s][j] = e.response_magnitude[j] * truth.forcing.at(surface)[s][j] * std::exp(gain);
+    }
+  return e;
+}
+
+TEST(ForcingFit, AMixedPrintAtAnInterpolatedTipIsFittedAsAPredictionWouldMakeIt) {
+  auto truth = make_synthetic_truth(9);
+  truth.exemplars.push_back(synthetic_mixed_print(truth, "a", {{"DM95", 0.4}, {"DM85", 0.6}}, 0.003));
+  truth.exemplars.push_back(synthetic_mixed_print(truth, "b", {{"vero", 0.25}, {"DM85", 0.75}}, 0.0015));
+  // Noise-free: the fit stays exact, the prints adding no tip curve of their own.
+  const ForcingModel exact = fit_forcing_model(truth.exemplars);
+  EXPECT_EQ(exact.tip_log_gain.size(), 3u);
+  EXPECT_LT(exact.residual_rms_db, 1e-8);
+  for (const auto& [m, knots] : truth.material)
+    for (std::size_t k = 0; k < knots.size(); ++k)
+      EXPECT_NEAR(exact.material_curve(m)[k], knots[k], 1e-9) << m << " knot " << k;
+  // With noise, the elimination of F against every unknown written out (brute_force_fit weighs
+  // the prints' rows by hand): one least-squares problem, equal to round-off.
+  add_log_noise(truth.exemplars, 0.3, 11);
+  const ForcingModel model = fit_forcing_model(truth.exemplars);
+  const BruteForce reference = brute_force_fit(truth.exemplars);
+  for (const auto& [name, curve] : std::map<std::string, std::vector<double>>{
+           {"tip 1", model.tip_curve(0.001)}, {"tip 4", model.tip_curve(0.004)},
+           {"DM95", model.material_curve("DM95")}, {"DM85", model.material_curve("DM85")}})
+    for (std::size_t k = 0; k < curve.size(); ++k)
+      EXPECT_NEAR(curve[k], reference.knots.at(name)(static_cast<Eigen::Index>(k)), 1e-9) << name << " knot " << k;
+}
+
+TEST(ForcingFit, AnInterpolatedTipOutsideTheFittedTipsIsRefused) {
+  auto truth = make_synthetic_truth();
+  auto print = synthetic_mixed_print(truth, "a", {{"DM95", 0.5}, {"DM85", 0.5}}, 0.003);
+  print.tip_diameter_m = 0.005;
+  truth.exemplars.push_back(print);
+  const auto problems = fit_problems(truth.exemplars);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("loop print on a: its tip, 5 mm, lies outside the fitted tips (1 mm to 4 mm)"),
+            std::string::npos)
+      << problems[0];
+  auto unbalanced = make_synthetic_truth();
+  unbalanced.exemplars.push_back(synthetic_mixed_print(unbalanced, "a", {{"DM95", 0.5}, {"DM85", 0.4}}, 0.003));
+  EXPECT_THROW(fit_forcing_model(unbalanced.exemplars), std::invalid_argument);
 }
 
 TEST(ForcingFit, AConstantFactorOnAllDataMovesOnlyTheForcing) {
