@@ -24,7 +24,7 @@ std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
   std::vector<std::size_t> order(evaluated.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return evaluated[a].distance < evaluated[b].distance;
+    return evaluated[a].search_key() < evaluated[b].search_key();
   });
   return order;
 }
@@ -76,7 +76,7 @@ std::vector<std::size_t> SearchResult::runners_up(std::size_t count) const {
   return out;
 }
 
-space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool) {
+Eigen::VectorXd predicted_descriptors(const space::DescriptorMap& map, const PredictedTool& tool) {
   io::Catalog one;
   one.tools.push_back(predicted_tool_entry(tool));
   one.pairings.push_back(predicted_pairing(tool, "the catalog's"));
@@ -86,7 +86,11 @@ space::Placement place_predicted(const space::DescriptorMap& map, const Predicte
     throw std::invalid_argument(
         "the space's descriptor map uses descriptors a prediction does "
         "not provide");
-  const Eigen::VectorXd descriptors = row.values.row(0).transpose();
+  return row.values.row(0).transpose();
+}
+
+space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool) {
+  const Eigen::VectorXd descriptors = predicted_descriptors(map, tool);
   if (tool.descriptor_errors.empty()) return space::place_from_descriptors(map, descriptors);
   return space::place_from_descriptors(map, descriptors,
                                        tool.descriptor_errors.block(map.descriptor_names));
@@ -178,13 +182,13 @@ SearchResult line_search(const DesignPoint& a0, const DesignPoint& b0, const Eva
     lambdas.push_back(lambda);
     result.evaluated.push_back(evaluate(interpolate(a, b, lambda)));
     if (progress) progress(result.evaluated.back(), result.evaluated.size(), budget);
-    return result.evaluated.back().distance;
+    return result.evaluated.back().search_key();
   };
   const int n = options.scan_points;
   std::size_t best = 0;
   for (int k = 0; k < n; ++k) {
     at(static_cast<double>(k) / (n - 1));
-    if (result.evaluated.back().distance < result.evaluated[best].distance)
+    if (result.evaluated.back().search_key() < result.evaluated[best].search_key())
       best = result.evaluated.size() - 1;
   }
   // Golden section inside the steps either side of the best scan point.

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ struct Candidate {
   // Its distance to each target, with its sd: one entry for one target; for a group (below),
   // `distance` is their largest or mean.
   std::vector<double> target_distances, target_distance_sds;
+  // What a search minimises when set (a design loop's rule: design_loop.hpp); else `distance`.
+  std::optional<double> score;
+
+  double search_key() const { return score.value_or(distance); }
 };
 
 // Where a predicted tool lies: its descriptors (those the map was fitted with: μ and the weighted
@@ -39,6 +44,8 @@ struct Candidate {
 // (descriptor_uncertainty.hpp). Throws what the descriptor code throws for a tool without a usable
 // descriptor.
 space::Placement place_predicted(const space::DescriptorMap& map, const PredictedTool& tool);
+// The descriptors place_predicted places: the map's, in its order.
+Eigen::VectorXd predicted_descriptors(const space::DescriptorMap& map, const PredictedTool& tool);
 
 using Evaluate = std::function<Candidate(const DesignPoint&)>;
 
