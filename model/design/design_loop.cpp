@@ -150,8 +150,8 @@ std::string describe(LoopStop stop) {
   return "";
 }
 
-LoopStop loop_stop(const std::vector<double>& measured_distances, double threshold, int max_rounds,
-                   const Proposal* next) {
+LoopStop loop_stop(const std::vector<double>& measured_distances, const std::vector<DesignPoint>& printed,
+                   double threshold, int max_rounds, const Proposal* next) {
   if (!measured_distances.empty() && measured_distances.back() <= threshold)
     return LoopStop::within_threshold;
   if (next != nullptr && !measured_distances.empty()) {
@@ -159,6 +159,8 @@ LoopStop loop_stop(const std::vector<double>& measured_distances, double thresho
         *std::min_element(measured_distances.begin(), measured_distances.end());
     if (next->search.evaluated.at(next->nearest).distance >= nearest_measured)
       return LoopStop::no_closer_design;
+    for (const auto& p : printed)
+      if (same_design(p, next->next.candidate.point)) return LoopStop::no_closer_design;
   }
   if (static_cast<int>(measured_distances.size()) >= max_rounds) return LoopStop::round_limit;
   return LoopStop::none;

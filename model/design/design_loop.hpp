@@ -92,10 +92,12 @@ enum class LoopStop { none, within_threshold, no_closer_design, round_limit };
 // "within the threshold", "no design predicted closer", "round limit".
 std::string describe(LoopStop stop);
 
-// Why the loop stops after `measured_distances` (one per round, in order), given the next
-// proposal (none yet: only the measured prints' reasons). Within the threshold first; then the
-// model's nearest predicted distance not below the nearest measured; then the round limit.
-LoopStop loop_stop(const std::vector<double>& measured_distances, double threshold, int max_rounds,
-                   const Proposal* next);
+// Why the loop stops after the prints of `printed` measured at `measured_distances` (one per round,
+// in order), given the next proposal (none yet: only the measured prints' reasons). Within the
+// threshold first; then no design predicted closer: the model's nearest predicted distance not
+// below the nearest measured, or the next print one already printed (same_design: it would measure
+// the same again); then the round limit.
+LoopStop loop_stop(const std::vector<double>& measured_distances, const std::vector<DesignPoint>& printed,
+                   double threshold, int max_rounds, const Proposal* next);
 
 }  // namespace nibrig::model::design

@@ -35,16 +35,6 @@ std::string fmt_mm(double m) {
   return text;
 }
 
-bool same_design(const DesignPoint& a, const DesignPoint& b) {
-  double variation = 0;
-  for (const auto& share : a.mix)
-    variation += std::abs(share.fraction - b.fraction_of(share.material));
-  for (const auto& share : b.mix)
-    if (a.fraction_of(share.material) == 0) variation += share.fraction;
-  return variation / 2 < kSameDesignFraction &&
-         std::abs(a.tip_diameter_m - b.tip_diameter_m) < kSameDesignTip;
-}
-
 // The golden-section refinement shrinks its bracket by the golden ratio per evaluation until it is
 // no wider than the tolerance; the widest bracket is two scan steps (the best point inside).
 std::size_t line_search_budget(const LineSearchOptions& o) {
@@ -62,6 +52,16 @@ std::size_t line_search_budget(const LineSearchOptions& o) {
 
 
 }  // namespace
+
+bool same_design(const DesignPoint& a, const DesignPoint& b) {
+  double variation = 0;
+  for (const auto& share : a.mix)
+    variation += std::abs(share.fraction - b.fraction_of(share.material));
+  for (const auto& share : b.mix)
+    if (a.fraction_of(share.material) == 0) variation += share.fraction;
+  return variation / 2 < kSameDesignFraction &&
+         std::abs(a.tip_diameter_m - b.tip_diameter_m) < kSameDesignTip;
+}
 
 std::vector<std::size_t> SearchResult::runners_up(std::size_t count) const {
   std::vector<std::size_t> listed{ranked.at(0)}, out;

@@ -93,6 +93,7 @@ struct SearchResult {
 // one design for a report: a printer dithers in steps of a few per cent.
 inline constexpr double kSameDesignFraction = 0.05;
 inline constexpr double kSameDesignTip = 0.0001;  // m
+bool same_design(const DesignPoint& a, const DesignPoint& b);
 
 struct LineSearchOptions {
   int scan_points = 9;             // equal steps from a to b, both ends included

@@ -90,7 +90,9 @@ std::vector<double> LoopModel::measured_distances() const {
 }
 
 LoopStop LoopModel::stop(const Proposal* next) const {
-  return loop_stop(measured_distances(), setup_.threshold, setup_.max_rounds, next);
+  std::vector<DesignPoint> printed;
+  for (const auto& p : prints_) printed.push_back(p.point);
+  return loop_stop(measured_distances(), printed, setup_.threshold, setup_.max_rounds, next);
 }
 
 }  // namespace nibrig::model::design

@@ -284,9 +284,9 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "and the fitted tips (a 5 x 4 grid refined twice). Several --target: one design for the\n"
       "group, minimising the largest (or --aim mean) distance. --min-tip-mm, --max-tip-mm,\n"
       "--allow and --max-cost (with --cost) restrict both searches to the designs they allow.");
+  // Required unless `design loop` is run (its own options), so checked in the callback.
   cmd->add_option("--target", o->targets,
                   "Target tool as tool/surface (e.g. cryon/office); several: one design for the group")
-      ->required()
       ->take_all();
   cmd->add_option("--aim", o->aim, "A group's distance to minimise: largest or mean")->capture_default_str();
   cmd->add_option("--min-tip-mm", o->min_tip_mm, "Smallest tip diameter allowed (mm)")
@@ -298,10 +298,8 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--cost", o->cost, "A cost or durability proxy per material, e.g. vero=1,DM85=3");
   cmd->add_option("--max-cost", o->max_cost, "Largest cost of a design's mix (fractions times --cost)")
       ->check(in_range(0, design::kLargestDesignCost, "a cost of a design's mix"));
-  cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)")
-      ->required();
-  cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)")
-      ->required();
+  cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)");
+  cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)");
   cmd->add_option("--between", o->between, "Two designs: search the line between them")
       ->expected(2);
   cmd->add_option("--mix", o->mix, "The two materials of the range search")->capture_default_str();
@@ -326,7 +324,11 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   cmd->add_option("--export", o->export_folder,
                   "Folder to write the optimum's stylus into: stylus.3mf, an STL per region, the recipe and the print sheet");
   cmd->add_option("--printer", o->printer, printer_option_help());
-  cmd->callback([o, global] {
+  add_design_loop_command(cmd, global);
+  cmd->callback([o, global, cmd] {
+    if (cmd->got_subcommand("loop")) return;
+    for (const char* name : {"--target", "--surface", "--space"})
+      if (cmd->count(name) == 0) throw CLI::RequiredError(name);
     configure_logging(global->verbosity);
     run_design(*o);
   });

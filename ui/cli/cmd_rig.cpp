@@ -3,8 +3,6 @@
 // turntable are library calls (rig/); this file holds options and presentation.
 #include <spdlog/spdlog.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -27,6 +25,7 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/forcing_options.hpp"
+#include "ui/cli/interrupt_scope.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
@@ -54,20 +53,6 @@ struct RigOptions {
   DeviceOptions device;
   std::string actuator;
   std::filesystem::path output;  // capture: the session; compare: the report folder
-};
-
-// Ctrl-C during a run: the motor stops and the session is finished with what it holds.
-std::atomic<bool> interrupted{false};
-extern "C" void on_interrupt(int) { interrupted.store(true); }
-
-// SIGINT goes to `interrupted` while this lives.
-class InterruptScope {
- public:
-  InterruptScope() : previous_(std::signal(SIGINT, on_interrupt)) { interrupted.store(false); }
-  ~InterruptScope() { std::signal(SIGINT, previous_); }
-
- private:
-  void (*previous_)(int);
 };
 
 void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
@@ -217,7 +202,7 @@ void capture(const RigOptions& o) {
   options.folder = o.output;
   options.tool = o.tool;
   options.surface = o.surface;
-  options.cancel = &interrupted;
+  options.cancel = &interrupt_requested();
   options.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s{}", p.seconds, p.duration_s, p.speed_m_s * 1e3,
                  p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
@@ -228,7 +213,7 @@ void capture(const RigOptions& o) {
   if (player) report_following(*player);
   std::fflush(stdout);
   say_wrote(result.folder);
-  if (interrupted.load())
+  if (interrupt_requested().load())
     throw Interrupted("the capture was stopped; what it recorded is kept in " +
                       result.folder.string());
 }
@@ -252,7 +237,7 @@ void compare(const RigOptions& o) {
   options.capture.folder = o.output / "session";
   options.capture.tool = o.tool;
   options.capture.surface = o.surface;
-  options.capture.cancel = &interrupted;
+  options.capture.cancel = &interrupt_requested();
   options.seed = o.seed;
   options.capture.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s", p.seconds, p.duration_s, p.speed_m_s * 1e3);
@@ -274,7 +259,7 @@ void compare(const RigOptions& o) {
   say_wrote(run.capture.folder);
   say_wrote(json);
   say_wrote(png);
-  if (interrupted.load())
+  if (interrupt_requested().load())
     throw Interrupted("the capture was stopped; the comparison covers what it recorded");
 }
 

@@ -23,6 +23,8 @@ void add_forcing_holdout_command(CLI::App* forcing, std::shared_ptr<const Global
 void add_forcing_calibrate_commands(CLI::App* forcing, std::shared_ptr<const GlobalOptions> global);
 void add_predict_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `design loop`, under `design`.
+void add_design_loop_command(CLI::App* design, std::shared_ptr<const GlobalOptions> global);
 // `export`: a design's stylus as 3MF and STL files.
 void add_export_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_render_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);

@@ -121,19 +121,24 @@ TEST(JustNoticeableDistance, IsTheProbitsQuartileOverItsScale) {
   EXPECT_NEAR(just_noticeable_distance(lapsed, 2), just_noticeable_distance(paper, 2), 1e-12);
 }
 
-TEST(LoopStop, SaysWhyInOrderWithinTheThresholdThenNoCloserDesignThenTheRoundLimit) {
-  EXPECT_EQ(loop_stop({}, 1.0, 3, nullptr), LoopStop::none);
-  EXPECT_EQ(loop_stop({1.5, 0.9}, 1.0, 2, nullptr), LoopStop::within_threshold);
-  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 2, nullptr), LoopStop::round_limit);
+TEST(LoopStop, SaysWhyWithinTheThresholdThenNoCloserDesignOrAPrintAgainThenTheRoundLimit) {
+  const std::vector<DesignPoint> printed{loop_test_point(0.2, 1.0), loop_test_point(0.8, 3.0)};
+  EXPECT_EQ(loop_stop({}, {}, 1.0, 3, nullptr), LoopStop::none);
+  EXPECT_EQ(loop_stop({1.5, 0.9}, printed, 1.0, 2, nullptr), LoopStop::within_threshold);
+  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 2, nullptr), LoopStop::round_limit);
   Proposal next;
+  next.next.candidate.point = loop_test_point(0.5, 2.0);
   next.search.evaluated.resize(2);
   next.search.evaluated[0].distance = 1.4;
   next.search.evaluated[1].distance = 1.25;
   next.nearest = 1;
   // The model's nearest design (1.25) is not nearer than the nearest print measured (1.2).
-  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::no_closer_design);
+  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::no_closer_design);
   next.search.evaluated[1].distance = 1.1;
-  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::none);
+  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::none);
+  // The next print would be one already printed (within 5 % of mix and 0.1 mm of tip).
+  next.next.candidate.point = loop_test_point(0.82, 3.05);
+  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::no_closer_design);
   EXPECT_EQ(parse_next_print_rule(rule_name(NextPrintRule::predicted_optimum)), NextPrintRule::predicted_optimum);
   EXPECT_THROW(parse_next_print_rule("best"), std::invalid_argument);
 }

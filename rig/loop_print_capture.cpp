@@ -1,0 +1,57 @@
+#include "rig/loop_print_capture.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace nibrig::rig {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A session that is not the round's measurement, kept beside it: <folder>-<why>-<k>.
+fs::path kept_aside(const fs::path& folder, const std::string& why) {
+  for (int k = 1;; ++k) {
+    fs::path kept = folder;
+    kept += "-" + why + "-" + std::to_string(k);
+    if (!fs::exists(kept)) return kept;
+  }
+}
+
+}  // namespace
+
+LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCaptureOptions& options) {
+  const auto round = session.awaiting_measurement();
+  if (!round) throw std::logic_error("no round of the design loop awaits a measurement");
+  const fs::path folder = model::design::round_session_folder(session.folder(), *round);
+  LoopCapture out{*round, std::nullopt};
+  if (!fs::exists(folder)) {
+    fs::path partial = folder;
+    partial += ".partial";
+    if (fs::exists(partial)) fs::rename(partial, kept_aside(folder, "interrupted"));
+    RigRequest request = options.rig;
+    request.tool = model::design::to_string(session.rounds().back().design);
+    request.surface = session.request().surface;
+    model::design::ToolSounds sounds(options.sounds);
+    OpenedRig opened = open_rig_with_profile(request, sounds, options.profile, "steps", options.seconds);
+    CaptureOptions capture;
+    capture.folder = folder;
+    capture.tool = request.tool;
+    capture.surface = request.surface;
+    capture.notes = "design loop round " + std::to_string(*round);
+    capture.cancel = options.cancel;
+    capture.on_progress = options.on_progress;
+    out.capture = capture_session(*opened.rig, opened.profile, capture);
+    if (!out.capture->complete) {
+      const fs::path kept = kept_aside(folder, "ended-early");
+      fs::rename(out.capture->folder, kept);
+      throw std::runtime_error("the print's capture ended early (" + out.capture->record.ended_because +
+                               "): its session is kept in " + kept.string() + "; round " +
+                               std::to_string(*round) + " still awaits its measurement");
+    }
+  }
+  session.take_measurement(session.analyse_session(folder));
+  return out;
+}
+
+}  // namespace nibrig::rig

@@ -1,0 +1,41 @@
+// The rig's part of a design loop: the awaiting round's print run on a rig (simulated, USB) into
+// round-N/session, analysed and taken into the loop (model/design/loop_session.hpp). A capture
+// killed midway leaves its session.partial, and one stopped early a short session: each is kept
+// beside (session-interrupted-K, session-ended-early-K) and the print captured again; a session
+// complete but not yet analysed is analysed, not captured.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "model/design/loop_session.hpp"
+#include "model/design/tool_sound.hpp"
+#include "rig/capture.hpp"
+#include "rig/rig_request.hpp"
+
+namespace nibrig::rig {
+
+struct LoopCaptureOptions {
+  RigRequest rig;  // which rig and how; its tool and surface are set to the round's print
+  // The simulated rig's print: a design point played with this forcing model (a lab's stored one
+  // or a file, standing for the prints as made); empty: the loop's starting model.
+  model::design::ToolSoundOptions sounds;
+  std::string profile = "steps";
+  std::optional<double> seconds;
+  const std::atomic<bool>* cancel = nullptr;
+  std::function<void(const CaptureProgress&)> on_progress;
+};
+
+struct LoopCapture {
+  int round = 0;
+  std::optional<CaptureResult> capture;  // none: a session already captured was analysed
+};
+
+// Throws std::logic_error when no round awaits a measurement, what opening the rig and capturing
+// throw, and std::runtime_error when the capture ended before its profile did (the session is kept
+// and the round still awaits its measurement).
+LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCaptureOptions& options);
+
+}  // namespace nibrig::rig
