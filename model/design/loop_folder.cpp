@@ -5,6 +5,7 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
+#include "model/io/job_files.hpp"
 #include "model/io/json_fields.hpp"
 
 namespace nibrig::model::design {
@@ -98,6 +99,8 @@ void write_round(const fs::path& folder, const LoopRoundRecord& r) {
                      {"descriptors", as_vector(r.measured->descriptors)}};
   if (!r.stopped.empty()) j["stopped"] = r.stopped;
   fs::create_directories(round_folder(folder, r.number));
+  // A resumed loop read the record it now completes: replacing it is the point.
+  io::release_input(round_file(folder, r.number));
   io::write_file_atomically(round_file(folder, r.number), io::json_text(j, round_file(folder, r.number)));
 }
 

@@ -14,7 +14,7 @@
 #include "model/design/loop_model.hpp"
 #include "model/design/print_discrepancy.hpp"
 #include "model/forcing/hermite_curve.hpp"
-#include "tests/model/design/world/loop_world.hpp"
+#include "tests/model/design/fem/loop_world.hpp"
 
 namespace nibrig::model::design {
 namespace {
