@@ -119,7 +119,8 @@ MeasuredPlacement place_measured(const LoopContext& context, const io::Pairing& 
 
 Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& discrepancy,
                             const Predict& predict, const RangeSearchOptions& range,
-                            NextPrintRule rule) {
+                            NextPrintRule rule, const std::vector<DesignPoint>& candidates,
+                            const std::vector<DesignPoint>& printed) {
   Proposal proposal;
   std::vector<LoopPrediction> predictions;
   const Evaluate evaluate = [&](const DesignPoint& point) {
@@ -131,9 +132,25 @@ Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& 
     predictions.push_back(p);
     return p.candidate;
   };
-  proposal.search = range_search(evaluate, range);
+  if (candidates.empty()) {
+    proposal.search = range_search(evaluate, range);
+  } else {
+    for (const auto& c : candidates) proposal.search.evaluated.push_back(evaluate(c));
+    std::vector<std::size_t>& order = proposal.search.ranked;
+    for (std::size_t k = 0; k < candidates.size(); ++k) order.push_back(k);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return proposal.search.evaluated[a].search_key() < proposal.search.evaluated[b].search_key();
+    });
+  }
   for (const auto& p : predictions) proposal.chances.push_back(p.chance_within);
-  proposal.next = predictions.at(proposal.search.ranked.front());
+  const auto is_printed = [&](std::size_t k) {
+    return std::any_of(printed.begin(), printed.end(),
+                       [&](const DesignPoint& p) { return same_design(p, predictions[k].candidate.point); });
+  };
+  for (std::size_t k = 0; k < predictions.size(); ++k) proposal.printed.push_back(is_printed(k));
+  const auto& ranked = proposal.search.ranked;
+  const auto untried = std::find_if(ranked.begin(), ranked.end(), [&](std::size_t k) { return !proposal.printed[k]; });
+  proposal.next = predictions.at(untried == ranked.end() ? ranked.front() : *untried);
   for (std::size_t k = 1; k < predictions.size(); ++k)
     if (predictions[k].candidate.distance < predictions[proposal.nearest].candidate.distance)
       proposal.nearest = k;
@@ -150,17 +167,20 @@ std::string describe(LoopStop stop) {
   return "";
 }
 
-LoopStop loop_stop(const std::vector<double>& measured_distances, const std::vector<DesignPoint>& printed,
-                   double threshold, int max_rounds, const Proposal* next) {
+LoopStop loop_stop(const std::vector<double>& measured_distances, double threshold, int max_rounds,
+                   const Proposal* next) {
   if (!measured_distances.empty() && measured_distances.back() <= threshold)
     return LoopStop::within_threshold;
   if (next != nullptr && !measured_distances.empty()) {
     const double nearest_measured =
         *std::min_element(measured_distances.begin(), measured_distances.end());
-    if (next->search.evaluated.at(next->nearest).distance >= nearest_measured)
-      return LoopStop::no_closer_design;
-    for (const auto& p : printed)
-      if (same_design(p, next->next.candidate.point)) return LoopStop::no_closer_design;
+    bool worth_a_print = false;
+    for (std::size_t k = 0; k < next->search.evaluated.size(); ++k) {
+      if (k < next->printed.size() && next->printed[k]) continue;
+      worth_a_print = worth_a_print || next->search.evaluated[k].distance < nearest_measured ||
+                      (k < next->chances.size() && next->chances[k] >= kLeastChanceWorthAPrint);
+    }
+    if (!worth_a_print) return LoopStop::no_closer_design;
   }
   if (static_cast<int>(measured_distances.size()) >= max_rounds) return LoopStop::round_limit;
   return LoopStop::none;

@@ -75,29 +75,38 @@ struct MeasuredPlacement {
 };
 MeasuredPlacement place_measured(const LoopContext& context, const io::Pairing& pairing);
 
-// The range search for the next print under `rule`: every candidate carries its corrected
-// distance, and `score` the rule's key (the distance, or minus the chance). Its best is the next
-// print; `nearest` the candidate with the smallest predicted distance, whatever the rule.
+// The range search for the next print under `rule` (or, when `candidates` is not empty, each of
+// those designs alone: a lab that can print only some, or prints that exist already): every
+// candidate carries its corrected distance, and `score` the rule's key (the distance, or minus the
+// chance). The next print is its best that is none of `printed` (printed again, a design would
+// only measure the same: the loop is for what it has not tried); `nearest` the candidate with the
+// smallest predicted distance, whatever the rule.
 struct Proposal {
   SearchResult search;
   LoopPrediction next;
   std::vector<double> chances;  // per evaluated candidate
+  std::vector<bool> printed;    // per evaluated candidate: a design printed already
   std::size_t nearest = 0;
 };
 Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& discrepancy,
                             const Predict& predict, const RangeSearchOptions& range,
-                            NextPrintRule rule);
+                            NextPrintRule rule, const std::vector<DesignPoint>& candidates = {},
+                            const std::vector<DesignPoint>& printed = {});
 
 enum class LoopStop { none, within_threshold, no_closer_design, round_limit };
 // "within the threshold", "no design predicted closer", "round limit".
 std::string describe(LoopStop stop);
 
+// Below this chance of landing within the threshold a print is not worth its hours of printing and
+// measuring: the loop's policy, not a measured number.
+inline constexpr double kLeastChanceWorthAPrint = 0.1;
+
 // Why the loop stops after the prints of `printed` measured at `measured_distances` (one per round,
 // in order), given the next proposal (none yet: only the measured prints' reasons). Within the
-// threshold first; then no design predicted closer: the model's nearest predicted distance not
-// below the nearest measured, or the next print one already printed (same_design: it would measure
-// the same again); then the round limit.
-LoopStop loop_stop(const std::vector<double>& measured_distances, const std::vector<DesignPoint>& printed,
-                   double threshold, int max_rounds, const Proposal* next);
+// threshold first; then no design predicted closer: of the designs not printed yet, none predicted
+// nearer than the nearest measured print and none with kLeastChanceWorthAPrint of landing within
+// the threshold (or none left); then the round limit.
+LoopStop loop_stop(const std::vector<double>& measured_distances, double threshold, int max_rounds,
+                   const Proposal* next);
 
 }  // namespace nibrig::model::design

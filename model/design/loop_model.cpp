@@ -80,7 +80,9 @@ LoopPrediction LoopModel::predict(const DesignPoint& point) const {
 
 Proposal LoopModel::propose() const {
   const Predict predict = [this](const DesignPoint& p) { return predict_uncorrected(p); };
-  return propose_next_print(context(), *discrepancy_, predict, setup_.range, setup_.rule);
+  std::vector<DesignPoint> printed;
+  for (const auto& p : prints_) printed.push_back(p.point);
+  return propose_next_print(context(), *discrepancy_, predict, setup_.range, setup_.rule, setup_.candidates, printed);
 }
 
 std::vector<double> LoopModel::measured_distances() const {
@@ -90,9 +92,7 @@ std::vector<double> LoopModel::measured_distances() const {
 }
 
 LoopStop LoopModel::stop(const Proposal* next) const {
-  std::vector<DesignPoint> printed;
-  for (const auto& p : prints_) printed.push_back(p.point);
-  return loop_stop(measured_distances(), printed, setup_.threshold, setup_.max_rounds, next);
+  return loop_stop(measured_distances(), setup_.threshold, setup_.max_rounds, next);
 }
 
 }  // namespace nibrig::model::design

@@ -27,6 +27,9 @@ struct LoopSetup {
   space::Placement target;
   std::string surface;
   RangeSearchOptions range;  // its materials are the grid's
+  // Not empty: the loop chooses among these designs only (each inside the range), as a lab that
+  // prints only some, or whose prints exist already (the paper's recordings).
+  std::vector<DesignPoint> candidates;
   NextPrintRule rule = kDefaultNextPrintRule;
   double threshold = 1.0;
   Eigen::MatrixXd measurement_noise;  // a measurement's descriptor noise, the map's order

@@ -121,24 +121,27 @@ TEST(JustNoticeableDistance, IsTheProbitsQuartileOverItsScale) {
   EXPECT_NEAR(just_noticeable_distance(lapsed, 2), just_noticeable_distance(paper, 2), 1e-12);
 }
 
-TEST(LoopStop, SaysWhyWithinTheThresholdThenNoCloserDesignOrAPrintAgainThenTheRoundLimit) {
-  const std::vector<DesignPoint> printed{loop_test_point(0.2, 1.0), loop_test_point(0.8, 3.0)};
-  EXPECT_EQ(loop_stop({}, {}, 1.0, 3, nullptr), LoopStop::none);
-  EXPECT_EQ(loop_stop({1.5, 0.9}, printed, 1.0, 2, nullptr), LoopStop::within_threshold);
-  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 2, nullptr), LoopStop::round_limit);
+TEST(LoopStop, SaysWhyWithinTheThresholdThenNoUntriedDesignWorthAPrintThenTheRoundLimit) {
+  EXPECT_EQ(loop_stop({}, 1.0, 3, nullptr), LoopStop::none);
+  EXPECT_EQ(loop_stop({1.5, 0.9}, 1.0, 2, nullptr), LoopStop::within_threshold);
+  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 2, nullptr), LoopStop::round_limit);
   Proposal next;
-  next.next.candidate.point = loop_test_point(0.5, 2.0);
-  next.search.evaluated.resize(2);
+  next.search.evaluated.resize(3);
   next.search.evaluated[0].distance = 1.4;
   next.search.evaluated[1].distance = 1.25;
-  next.nearest = 1;
-  // The model's nearest design (1.25) is not nearer than the nearest print measured (1.2).
-  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::no_closer_design);
-  next.search.evaluated[1].distance = 1.1;
-  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::none);
-  // The next print would be one already printed (within 5 % of mix and 0.1 mm of tip).
-  next.next.candidate.point = loop_test_point(0.82, 3.05);
-  EXPECT_EQ(loop_stop({1.5, 1.2}, printed, 1.0, 6, &next), LoopStop::no_closer_design);
+  next.search.evaluated[2].distance = 1.19;  // printed already: it does not count
+  next.printed = {false, false, true};
+  next.chances = {0.02, 0.05, 0.4};
+  // No untried design is predicted nearer than the nearest print measured (1.2), and none has a
+  // chance in ten of landing within the threshold.
+  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::no_closer_design);
+  next.chances[1] = 0.15;  // one has: the loop goes on
+  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::none);
+  next.chances[1] = 0.05;
+  next.search.evaluated[1].distance = 1.1;  // one is predicted nearer
+  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::none);
+  next.printed = {true, true, true};  // nothing left untried
+  EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::no_closer_design);
   EXPECT_EQ(parse_next_print_rule(rule_name(NextPrintRule::predicted_optimum)), NextPrintRule::predicted_optimum);
   EXPECT_THROW(parse_next_print_rule("best"), std::invalid_argument);
 }
