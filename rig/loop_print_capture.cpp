@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "model/numeric/cancellation.hpp"
+
 namespace nibrig::rig {
 
 namespace fs = std::filesystem;
@@ -52,6 +54,35 @@ LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCa
   }
   session.take_measurement(session.analyse_session(folder));
   return out;
+}
+
+void drive_design_loop(model::design::LoopSession& session, const std::optional<LoopCaptureOptions>& capture,
+                       const LoopStepDone& done, const std::atomic<bool>* cancel) {
+  const auto report = [&](LoopStep step, int round) {
+    if (done) done(step, round);
+  };
+  for (;;) {
+    if (cancel != nullptr && cancel->load()) throw model::numeric::Cancelled("the design loop");
+    if (const auto waiting = session.awaiting_measurement()) {
+      const fs::path captured = model::design::round_session_folder(session.folder(), *waiting);
+      if (fs::exists(captured) && !capture) {
+        session.take_measurement(session.analyse_session(captured));
+      } else if (capture) {
+        measure_loop_round(session, *capture);
+      } else {
+        report(LoopStep::waiting, *waiting);
+        return;
+      }
+      report(LoopStep::measured, *waiting);
+      continue;
+    }
+    const auto next = session.advance();
+    if (!next) {
+      report(LoopStep::stopped, 0);
+      return;
+    }
+    report(LoopStep::proposed, *next);
+  }
 }
 
 }  // namespace nibrig::rig

@@ -38,4 +38,16 @@ struct LoopCapture {
 // and the round still awaits its measurement).
 LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCaptureOptions& options);
 
+// What drive_design_loop did, as it does it.
+enum class LoopStep { proposed, measured, waiting, stopped };
+using LoopStepDone = std::function<void(LoopStep step, int round)>;
+
+// Runs the loop on as far as it goes here: a round awaiting its print is measured (its captured
+// session analysed, or with `capture` the print captured first), then the next is proposed, until
+// the loop stops (`stopped`, round 0) or a round awaits a print nobody here can measure (`waiting`:
+// no rig given and no session captured). Each step is reported when done. A set `cancel` (also
+// the capture's) ends it between steps with model::numeric::Cancelled. Throws what the steps throw.
+void drive_design_loop(model::design::LoopSession& session, const std::optional<LoopCaptureOptions>& capture,
+                       const LoopStepDone& done, const std::atomic<bool>* cancel = nullptr);
+
 }  // namespace nibrig::rig

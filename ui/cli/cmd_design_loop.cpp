@@ -12,6 +12,7 @@
 #include <string>
 
 #include "model/design/loop_session.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "rig/loop_print_capture.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
@@ -148,30 +149,23 @@ void run_loop(const LoopOptions& o) {
               r.target.c_str(), r.surface.c_str(), r.first_material.c_str(), r.second_material.c_str(),
               session->threshold(), design::rule_name(r.rule).c_str(), r.max_rounds);
   InterruptScope interrupts;
-  for (;;) {
-    if (const auto waiting = session->awaiting_measurement()) {
-      const bool captured = std::filesystem::exists(design::round_session_folder(session->folder(), *waiting));
-      if (!captured && !capture) {
-        print_waiting(*session, *waiting);
-        break;
-      }
-      if (capture) {
-        rig::measure_loop_round(*session, *capture);
-      } else {
-        session->take_measurement(session->analyse_session(design::round_session_folder(session->folder(), *waiting)));
-      }
-      print_measured(*session, *waiting);
-      std::fflush(stdout);
-      if (interrupt_requested().load()) throw Interrupted("the loop was stopped; resume it with --resume");
-      continue;
-    }
-    const auto next = session->advance();
-    if (!next) {
-      std::printf("the loop stopped: %s\n", design::describe(session->stopped()).c_str());
-      break;
-    }
-    print_proposed(*session, *next);
-    std::fflush(stdout);
+  try {
+    rig::drive_design_loop(
+        *session, capture,
+        [&](rig::LoopStep step, int round) {
+          switch (step) {
+            case rig::LoopStep::proposed: print_proposed(*session, round); break;
+            case rig::LoopStep::measured: print_measured(*session, round); break;
+            case rig::LoopStep::waiting: print_waiting(*session, round); break;
+            case rig::LoopStep::stopped:
+              std::printf("the loop stopped: %s\n", design::describe(session->stopped()).c_str());
+              break;
+          }
+          std::fflush(stdout);
+        },
+        &interrupt_requested());
+  } catch (const model::numeric::Cancelled&) {
+    throw Interrupted("the loop was stopped; resume it with --resume");
   }
   print_rounds(*session);
 }

@@ -221,6 +221,7 @@ void add_design_module(py::module_ m) {
   add_design_mechanics(m);
   add_forcing_calibration(m);
   add_material_calibration(m);
+  add_design_loop(m);
 }
 
 }  // namespace nibrig::ui::python

@@ -17,5 +17,6 @@ struct Designer {
 void add_design_mechanics(pybind11::module_ m);
 void add_forcing_calibration(pybind11::module_ m);
 void add_material_calibration(pybind11::module_ m);
+void add_design_loop(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

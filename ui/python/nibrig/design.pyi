@@ -1,4 +1,4 @@
-"""Predicted designs (Sec. 5.3), their place in a space, and the design searches (Sec. 6.2, 7)."""
+"""Predicted designs (Sec. 5.3), their place in a space, the design searches (Sec. 6.2, 7), and the loop from a print back to its target."""
 
 import os
 import pathlib
@@ -244,3 +244,38 @@ def calibrate_ring_down(
     materials: Optional[_Path] = None,
 ) -> RingDownCalibration:
     """Fits the bar's ring-down for Young's modulus and Rayleigh damping and saves the material by name."""
+
+class DesignLoop:
+    @property
+    def folder(self) -> pathlib.Path: ...
+    @property
+    def threshold(self) -> float: ...
+    @property
+    def rounds(self) -> list[dict[str, Any]]: ...
+    @property
+    def measured_distances(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def stopped(self) -> Optional[str]: ...
+    @property
+    def awaiting(self) -> Optional[int]: ...
+
+def loop(
+    folder: _Path,
+    *,
+    target: Optional[str] = None,
+    surface: Optional[str] = None,
+    space: Optional[_Path] = None,
+    resume: bool = False,
+    rule: str = "likeliest",
+    rounds: int = 6,
+    mix: Tuple[str, str] = ("vero", "DM85"),
+    catalog: Optional[_Path] = None,
+    forcing: Optional[str] = None,
+    printer: Optional[str] = None,
+    simulated: bool = False,
+    simulated_forcing: Optional[_Path] = None,
+    seed: int = 1,
+    seconds: Optional[float] = None,
+    progress: Optional[Callable[[str, int, int], object]] = None,
+) -> DesignLoop:
+    """The design loop of `nibrig design loop` in a folder, run as far as it goes here."""

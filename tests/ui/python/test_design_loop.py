@@ -1,0 +1,45 @@
+"""The design loop in Python: a new loop proposes its first print and waits for its measurement, as
+`nibrig design loop` does without a rig; resumed with the simulated rig it measures the print, and
+every number it returns is the one the loop's folder keeps."""
+
+import json
+
+import numpy as np
+import pytest
+
+import nibrig
+
+
+def test_a_loop_waits_for_its_print_then_resumed_on_the_simulated_rig_measures_it(tmp_path):
+    space_file = tmp_path / "space.json"
+    nibrig.space.default(bootstrap=20).save(space_file)
+    folder = tmp_path / "loop"
+    started = nibrig.design.loop(folder, target="wnylon/glass", surface="glass", space=space_file, rounds=2)
+    assert started.awaiting == 1 and started.stopped is None
+    assert len(started.rounds) == 1 and started.rounds[0]["measured_distance"] is None
+    assert (folder / "round-1" / "print" / "stylus.3mf").exists()
+    # The paper's probit at s = 2/3: Φ(s·d) = 0.75 at d = Φ⁻¹(0.75) / s; the solver's 1e-12.
+    assert started.threshold == pytest.approx(0.6744897501960817 * 1.5, rel=1e-9)
+
+    resumed = nibrig.design.loop(folder, resume=True, simulated=True, seconds=14)
+    assert resumed.awaiting is None
+    assert resumed.stopped in ("within the threshold", "no design predicted closer", "round limit")
+    measured = [r for r in resumed.rounds if r["measured_distance"] is not None]
+    assert len(measured) >= 1 and len(measured) <= 2
+    np.testing.assert_array_equal(resumed.measured_distances, [r["measured_distance"] for r in measured])
+    # What the folder keeps, to the digit JSON writes.
+    for r in resumed.rounds:
+        kept = json.loads((folder / f"round-{r['round']}" / "round.json").read_text())
+        assert kept["design"] == r["design"]
+        assert kept["predicted"]["distance"] == pytest.approx(r["predicted_distance"], rel=1e-15)
+        assert kept["measured"]["distance"] == pytest.approx(r["measured_distance"], rel=1e-15)
+        np.testing.assert_allclose(kept["measured"]["position"], r["measured_position"], rtol=1e-15)
+
+
+def test_a_resumed_loop_takes_no_new_target_and_a_new_one_needs_its_space(tmp_path):
+    with pytest.raises(ValueError, match="resume"):
+        nibrig.design.loop(tmp_path / "loop", resume=True, target="cryon/office")
+    with pytest.raises(ValueError, match="space"):
+        nibrig.design.loop(tmp_path / "loop", target="cryon/office", surface="glass")
+    with pytest.raises(ValueError, match="holds no design loop"):
+        nibrig.design.loop(tmp_path / "nothing", resume=True)

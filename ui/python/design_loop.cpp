@@ -1,0 +1,146 @@
+// nibrig.design.loop: the design loop from a print back to its target (`nibrig design loop`) as
+// one call: it opens or resumes the loop in its folder and runs it as far as it goes here
+// (rig::drive_design_loop), returning every round's prediction and measurement.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <atomic>
+#include <optional>
+#include <stop_token>
+
+#include "model/design/loop_session.hpp"
+#include "rig/loop_print_capture.hpp"
+#include "ui/python/long_call.hpp"
+
+namespace py = pybind11;
+
+namespace nibrig::ui::python {
+
+namespace {
+
+namespace design = model::design;
+
+struct LoopResult {
+  std::filesystem::path folder;
+  double threshold = 0.0;
+  std::vector<design::LoopRoundRecord> rounds;
+  std::optional<std::string> stopped;
+  std::optional<int> awaiting;
+};
+
+py::array_t<double> vector_array(const Eigen::VectorXd& v) {
+  return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+py::dict round_dict(const design::LoopRoundRecord& r) {
+  py::dict d;
+  d["round"] = r.number;
+  d["design"] = design::to_string(r.design);
+  d["predicted_distance"] = r.predicted_distance;
+  d["predicted_distance_sd"] = r.predicted_distance_sd;
+  d["chance_within_threshold"] = r.chance_within;
+  d["predicted_position"] = vector_array(r.predicted_position);
+  d["measured_distance"] = r.measured ? py::cast(r.measured->distance) : py::none();
+  d["measured_distance_sd"] = r.measured ? py::cast(r.measured->distance_sd) : py::none();
+  d["measured_position"] = r.measured ? py::object(vector_array(r.measured->position)) : py::none();
+  d["stopped"] = r.stopped.empty() ? py::none() : py::cast(r.stopped);
+  return d;
+}
+
+LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std::string>& target,
+                    const std::optional<std::string>& surface, const std::optional<std::filesystem::path>& space,
+                    bool resume, const std::string& rule, int rounds, const std::pair<std::string, std::string>& mix,
+                    const std::optional<std::filesystem::path>& catalog, const std::optional<std::string>& forcing,
+                    const std::optional<std::string>& printer, bool simulated,
+                    const std::optional<std::filesystem::path>& simulated_forcing, unsigned seed,
+                    const std::optional<double>& seconds, const py::object& progress) {
+  std::optional<design::LoopRequest> request;
+  if (resume) {
+    if (target || surface || space)
+      throw std::invalid_argument("resume: the loop keeps what its loop.json says; give no target, surface or space");
+  } else {
+    if (!target || !surface || !space)
+      throw std::invalid_argument("a new loop needs target, surface and space (or resume=True)");
+    design::LoopRequest r;
+    r.target = *target;
+    r.surface = *surface;
+    r.space_file = *space;
+    r.catalog_file = catalog.value_or(std::filesystem::path());
+    r.forcing = forcing.value_or("");
+    r.printer = printer.value_or("");
+    r.first_material = design::catalog_material_name(mix.first);
+    r.second_material = design::catalog_material_name(mix.second);
+    r.rule = design::parse_next_print_rule(rule);
+    r.max_rounds = rounds;
+    request = r;
+  }
+  LoopResult out;
+  run_long_call(
+      [&](std::stop_token stop, const Report& report) {
+        std::atomic<bool> cancel{false};
+        const std::stop_callback on_stop(stop, [&] { cancel.store(true); });
+        auto session = design::LoopSession::open(folder, request, report);
+        std::optional<rig::LoopCaptureOptions> capture;
+        if (simulated) {
+          capture.emplace();
+          capture->rig.kind = rig::RigKind::simulated;
+          capture->rig.seed = seed;
+          capture->rig.speedup = 0.0;
+          capture->sounds.catalog = catalog.value_or(std::filesystem::path());
+          capture->sounds.forcing_model = simulated_forcing.value_or(std::filesystem::path());
+          capture->seconds = seconds;
+          capture->cancel = &cancel;
+        }
+        rig::drive_design_loop(*session, capture,
+                               [&](rig::LoopStep, int round) { report("rounds", static_cast<std::size_t>(round), 0); },
+                               &cancel);
+        out.folder = session->folder();
+        out.threshold = session->threshold();
+        out.rounds = session->rounds();
+        if (session->stopped() != design::LoopStop::none) out.stopped = design::describe(session->stopped());
+        out.awaiting = session->awaiting_measurement();
+      },
+      progress);
+  return out;
+}
+
+}  // namespace
+
+void add_design_loop(py::module_ m) {
+  py::class_<LoopResult>(m, "DesignLoop", "A design loop's rounds as far as it has gone")
+      .def_property_readonly("folder", [](const LoopResult& l) { return l.folder; })
+      .def_property_readonly("threshold", [](const LoopResult& l) { return l.threshold; },
+                             "The space's just-noticeable distance: a print within it is as close as the space tells")
+      .def_property_readonly("rounds", [](const LoopResult& l) {
+        py::list out;
+        for (const auto& r : l.rounds) out.append(round_dict(r));
+        return out;
+      }, "Per round: design, predicted and measured distance (with sd) and position, chance within the threshold")
+      .def_property_readonly("measured_distances", [](const LoopResult& l) {
+        std::vector<double> d;
+        for (const auto& r : l.rounds)
+          if (r.measured) d.push_back(r.measured->distance);
+        return py::array_t<double>(static_cast<py::ssize_t>(d.size()), d.data());
+      }, "The measured distance to the target per measured round")
+      .def_property_readonly("stopped", [](const LoopResult& l) { return l.stopped; },
+                             "Why the loop stopped, or None while it goes on")
+      .def_property_readonly("awaiting", [](const LoopResult& l) { return l.awaiting; },
+                             "The round whose print awaits its measurement (capture it into "
+                             "folder/round-N/session, then loop(folder, resume=True)), or None");
+
+  m.def("loop", &run_loop, py::arg("folder"), py::kw_only(), py::arg("target") = py::none(),
+        py::arg("surface") = py::none(), py::arg("space") = py::none(), py::arg("resume") = false,
+        py::arg("rule") = design::rule_name(design::kDefaultNextPrintRule), py::arg("rounds") = design::kDefaultLoopRounds,
+        py::arg("mix") = std::pair<std::string, std::string>{"vero", "DM85"}, py::arg("catalog") = py::none(),
+        py::arg("forcing") = py::none(), py::arg("printer") = py::none(), py::arg("simulated") = false,
+        py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1, py::arg("seconds") = py::none(),
+        py::arg("progress") = py::none(),
+        "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) on surface in "
+        "space, or resume=True. Runs as far as it goes here: with simulated=True each print is measured on the "
+        "simulated rig (its prints playing simulated_forcing, default the loop's model); without, it stops at a "
+        "round awaiting its print's measurement. Releases the GIL; Ctrl-C stops it between steps.");
+}
+
+}  // namespace nibrig::ui::python
