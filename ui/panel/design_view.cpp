@@ -82,6 +82,7 @@ void DesignView::stop_work() {
 void DesignView::set_space(const SpaceScene& scene, std::optional<model::space::DescriptorMap> map) {
   space_->set_scene(scene);
   map_ = std::move(map);
+  place_loop();  // the loop's target is a tool of the new scene, or none
   if (grid_ && !coarse_) {
     if (error_job_) {
       error_stale_ = true;
@@ -453,6 +454,7 @@ void DesignView::draw_constraint_controls() {
 }
 
 void DesignView::draw_controls() {
+  if (loop_) loop_->draw_table();
   draw_target_controls();
   section("Design");
   if (job_) {
@@ -526,7 +528,36 @@ void DesignView::draw_printer_choice() {
   }
 }
 
+std::string DesignView::open_loop(const std::filesystem::path& folder_or_file) {
+  const auto folder = folder_or_file.filename() == "loop.json" ? folder_or_file.parent_path() : folder_or_file;
+  try {
+    LoopRounds opened(folder);  // a loop that does not read leaves the one shown
+    loop_ = std::move(opened);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  place_loop();
+  return {};
+}
+
+void DesignView::place_loop() {
+  if (!loop_) return;
+  std::vector<Eigen::VectorXd> places;
+  for (const auto& r : loop_->rounds()) {
+    places.push_back(r.predicted_position);
+    if (r.measured) places.push_back(r.measured->position);
+  }
+  loop_->set_target_place(std::nullopt);
+  for (const auto& t : space_->scene().tools)
+    if (t.choice.tool + "/" + t.choice.surface == loop_->request().target) {
+      loop_->set_target_place(t.region.mean);
+      places.push_back(t.region.mean);
+    }
+  space_->set_overlay_places(std::move(places));
+}
+
 void DesignView::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const {
+  if (loop_) loop_->draw_overlay(draw, frame, ax, ay);
   const bool one_d = ax == ay;
   const auto at = [&](const Eigen::VectorXd& p) { return frame.to_screen(p[ax], one_d ? 0.0 : p[ay]); };
   for (std::size_t t : targets_) draw->AddCircle(at(space_->scene().tools[t].region.mean), 12.0f, IM_COL32(255, 80, 80, 255), 24, 2.5f);

@@ -4,7 +4,8 @@
 // search over mix × tip toward the target and draws its path (Fig. 17). Live through the
 // design-response grid (model/design/design_response_grid.hpp): solved once in the background with
 // progress and cancel, cached on disk, interpolated per slider move; its error against the full
-// FEM is measured in the background at cell centres and shown.
+// FEM is measured in the background at cell centres and shown. A design loop's rounds (loop_rounds.hpp)
+// are drawn over the space when one is opened.
 #pragma once
 
 #include <chrono>
@@ -23,6 +24,7 @@
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"
 #include "ui/panel/background_job.hpp"
+#include "ui/panel/loop_rounds.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/space_view.hpp"
 
@@ -98,6 +100,11 @@ class DesignView {
   // cannot be read (named with its field), a design that mixes other materials than the grid's two,
   // a tip outside the grid.
   std::string open_prediction(const std::filesystem::path& file);
+  // Shows a design loop's rounds (its folder, or the loop.json in it) over the space and in a
+  // table. Returns the error, if any: a folder that holds no loop, a file that does not read.
+  std::string open_loop(const std::filesystem::path& folder_or_file);
+  const std::optional<LoopRounds>& loop() const { return loop_; }
+
   // The design shown made printable (ui/figures/stylus_sheet.hpp export_stylus: the 3MF, an STL
   // per region, the recipe and the print sheet beside `file`), as work to run off the UI thread: it
   // meshes and solves the stylus. With `space` (the one shown) and a target the sheet places the
@@ -143,6 +150,8 @@ class DesignView {
   // The evaluation the searches use: toward the target, or the group's aggregate.
   model::design::Evaluate search_evaluation() const;
   void draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const;
+  // The loop's places the plot must hold, and its target's place in the scene shown.
+  void place_loop();
   std::string surface() const;
 
   PanelAudio& audio_;
@@ -173,6 +182,7 @@ class DesignView {
   std::chrono::steady_clock::time_point last_sound_sent_{};
   std::string error_;
   std::pair<ImVec2, ImVec2> mix_slider_{};
+  std::optional<LoopRounds> loop_;
 };
 
 }  // namespace nibrig::ui::panel

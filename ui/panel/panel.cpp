@@ -135,6 +135,7 @@ Panel::Panel(PanelSetup setup) : setup_(std::move(setup)) {
     load_space(setup_.space);
   else
     load_default_space();
+  if (!setup_.loop.empty()) open_design_loop(setup_.loop);
   if (setup_.start_rig) {
     rig_view_->choice().speedup = 8.0f;
     rig_view_->start();
@@ -288,6 +289,16 @@ void Panel::open_design(const std::filesystem::path& file) {
   }
   errors_.clear();
   notice_ = "the design of " + file.string();
+  show(View::design);
+}
+
+void Panel::open_design_loop(const std::filesystem::path& file) {
+  if (const std::string e = design_view_->open_loop(file); !e.empty()) {
+    errors_.report(e);
+    return;
+  }
+  errors_.clear();
+  notice_ = "the design loop of " + design_view_->loop()->folder().string();
   show(View::design);
 }
 
@@ -469,6 +480,9 @@ void Panel::draw_menu() {
     if (ImGui::MenuItem("Open design...", nullptr, false, design_view_->ready()))
       files_.open("Open a design (a prediction file)", Mode::open, {".json"}, {},
                   chosen(&Panel::open_design));
+    if (ImGui::MenuItem("Open design loop..."))
+      files_.open("Open a design loop (its loop.json)", Mode::open, {"loop.json"}, {},
+                  chosen(&Panel::open_design_loop));
     if (ImGui::MenuItem("Save design as...", nullptr, false, design_view_->predicted().has_value()))
       files_.open("Save the design (a prediction file)", Mode::save, {".json"}, {},
                   chosen(&Panel::save_design));

@@ -41,6 +41,7 @@ struct PanelSetup {
   std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
   bool start_rig = false;               // the rig view's run starts at once
   DesignSettings design;                // how finely the design view solves its grid
+  std::filesystem::path loop;           // a design loop's folder shown in the design view; empty: none
 };
 
 class Panel {
@@ -82,6 +83,8 @@ class Panel {
   void open_stored_forcing(const std::string& name);
   void save_forcing(const std::filesystem::path& file);
   void open_design(const std::filesystem::path& file);
+  // A design loop's rounds over the Design view's space (its folder or loop.json).
+  void open_design_loop(const std::filesystem::path& file);
   void save_design(const std::filesystem::path& file);
   void export_stylus(const std::filesystem::path& file);
   // True while a file is being read, written or a space fitted.

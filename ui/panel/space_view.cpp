@@ -106,6 +106,11 @@ void SpaceView::draw_plot(ImVec2 size) {
     x0 = std::min(x0, x - reach), x1 = std::max(x1, x + reach);
     y0 = std::min(y0, y - reach), y1 = std::max(y1, y + reach);
   }
+  for (const auto& p : overlay_places_) {
+    if (p.size() <= std::max(axis_x_, axis_y_)) continue;
+    x0 = std::min(x0, p[axis_x_]), x1 = std::max(x1, p[axis_x_]);
+    if (!one_d) y0 = std::min(y0, p[axis_y_]), y1 = std::max(y1, p[axis_y_]);
+  }
   // The legend has a column of its own right of the plot: over the plot it hid the tools under it.
   constexpr const char* kKinds[] = {"real", "printed", "commercial", "predicted"};
   float legend = 0.0f;

@@ -61,6 +61,8 @@ class SpaceView {
   // path), with the plot's mapping and the axes shown.
   using Overlay = std::function<void(ImDrawList*, const PlotFrame&, int axis_x, int axis_y)>;
   void set_overlay(Overlay overlay) { overlay_ = std::move(overlay); }
+  // Places the overlay draws (a design loop's prints) that the plot's range must hold too.
+  void set_overlay_places(std::vector<Eigen::VectorXd> places) { overlay_places_ = std::move(places); }
   // Without its side panel (axes, stroke, chosen tools): the design view has its own controls.
   void set_side_panel(bool shown) { side_panel_ = shown; }
   // The hint under "Play" (what a click does in this view).
@@ -109,6 +111,7 @@ class SpaceView {
   float legend_left_ = 0.0f;
   CachedLayer regions_;
   Overlay overlay_;
+  std::vector<Eigen::VectorXd> overlay_places_;
   bool side_panel_ = true;
   std::string hint_ = "Click a tool to feel it; shift-click to compare up to three (A, B, C).";
   std::uint64_t generation_ = 0;  // bumped when the scene or the axes change
