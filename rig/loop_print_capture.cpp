@@ -22,7 +22,8 @@ fs::path kept_aside(const fs::path& folder, const std::string& why) {
 
 }  // namespace
 
-LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCaptureOptions& options) {
+LoopCapture measure_loop_round(model::design::LoopSession& session,
+                               const LoopCaptureOptions& options) {
   const auto round = session.awaiting_measurement();
   if (!round) throw std::logic_error("no round of the design loop awaits a measurement");
   const fs::path folder = model::design::round_session_folder(session.folder(), *round);
@@ -35,7 +36,8 @@ LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCa
     request.tool = model::design::to_string(session.rounds().back().design);
     request.surface = session.request().surface;
     model::design::ToolSounds sounds(options.sounds);
-    OpenedRig opened = open_rig_with_profile(request, sounds, options.profile, "steps", options.seconds);
+    OpenedRig opened =
+        open_rig_with_profile(request, sounds, options.profile, "steps", options.seconds);
     CaptureOptions capture;
     capture.folder = folder;
     capture.tool = request.tool;
@@ -47,17 +49,19 @@ LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCa
     if (!out.capture->complete) {
       const fs::path kept = kept_aside(folder, "ended-early");
       fs::rename(out.capture->folder, kept);
-      throw std::runtime_error("the print's capture ended early (" + out.capture->record.ended_because +
-                               "): its session is kept in " + kept.string() + "; round " +
-                               std::to_string(*round) + " still awaits its measurement");
+      throw std::runtime_error("the print's capture ended early (" +
+                               out.capture->record.ended_because + "): its session is kept in " +
+                               kept.string() + "; round " + std::to_string(*round) +
+                               " still awaits its measurement");
     }
   }
   session.take_measurement(session.analyse_session(folder));
   return out;
 }
 
-void drive_design_loop(model::design::LoopSession& session, const std::optional<LoopCaptureOptions>& capture,
-                       const LoopStepDone& done, const std::atomic<bool>* cancel) {
+void drive_design_loop(model::design::LoopSession& session,
+                       const std::optional<LoopCaptureOptions>& capture, const LoopStepDone& done,
+                       const std::atomic<bool>* cancel) {
   const auto report = [&](LoopStep step, int round) {
     if (done) done(step, round);
   };

@@ -36,7 +36,8 @@ struct LoopCapture {
 // Throws std::logic_error when no round awaits a measurement, what opening the rig and capturing
 // throw, and std::runtime_error when the capture ended before its profile did (the session is kept
 // and the round still awaits its measurement).
-LoopCapture measure_loop_round(model::design::LoopSession& session, const LoopCaptureOptions& options);
+LoopCapture measure_loop_round(model::design::LoopSession& session,
+                               const LoopCaptureOptions& options);
 
 // What drive_design_loop did, as it does it.
 enum class LoopStep { proposed, measured, waiting, stopped };
@@ -47,7 +48,8 @@ using LoopStepDone = std::function<void(LoopStep step, int round)>;
 // the loop stops (`stopped`, round 0) or a round awaits a print nobody here can measure (`waiting`:
 // no rig given and no session captured). Each step is reported when done. A set `cancel` (also
 // the capture's) ends it between steps with model::numeric::Cancelled. Throws what the steps throw.
-void drive_design_loop(model::design::LoopSession& session, const std::optional<LoopCaptureOptions>& capture,
-                       const LoopStepDone& done, const std::atomic<bool>* cancel = nullptr);
+void drive_design_loop(model::design::LoopSession& session,
+                       const std::optional<LoopCaptureOptions>& capture, const LoopStepDone& done,
+                       const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace nibrig::rig

@@ -4,23 +4,25 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/design/predicted_tool.hpp"
 #include "model/design/tool_sound.hpp"
 #include "rig/replay_rig.hpp"
-#include "model/design/predicted_tool.hpp"
 #include "rig/simulated_rig.hpp"
 #include "rig/usb_rig.hpp"
 
 namespace nibrig::rig {
 namespace {
 
-// The sliding friction the simulated arm feels: the catalog's μ for the pairing; for a design point,
-// the μ a prediction gives it (interpolated between the printed tools measured on the surface); else
-// (a pairing measured without friction, a design the catalog cannot interpolate) the mean μ of the
-// catalog's tools on that surface, or 0.3 when the surface has none.
+// The sliding friction the simulated arm feels: the catalog's μ for the pairing; for a design
+// point, the μ a prediction gives it (interpolated between the printed tools measured on the
+// surface); else (a pairing measured without friction, a design the catalog cannot interpolate) the
+// mean μ of the catalog's tools on that surface, or 0.3 when the surface has none.
 double friction_for(const model::io::Catalog& catalog, const std::string& tool,
                     const std::string& surface) {
   if (tool.find("tip=") != std::string::npos) try {
-      return model::design::interpolated_friction(catalog, model::design::parse_design_point(tool), surface).mu;
+      return model::design::interpolated_friction(catalog, model::design::parse_design_point(tool),
+                                                  surface)
+          .mu;
     } catch (const std::invalid_argument&) {
     }
   double sum = 0.0;

@@ -51,7 +51,8 @@ Eigen::VectorXd measured_descriptors(const space::DescriptorMap& map, const io::
     throw std::invalid_argument("the measured print " + space::pairing_name(pairing) +
                                 " has no friction or no vibration descriptors");
   if (row.names != map.descriptor_names)
-    throw std::invalid_argument("the space's descriptor map uses descriptors a measurement does not provide");
+    throw std::invalid_argument(
+        "the space's descriptor map uses descriptors a measurement does not provide");
   return row.values.row(0).transpose();
 }
 
@@ -60,7 +61,8 @@ namespace {
 // P(‖x − target‖ ≤ radius) for x ~ N(mean, covariance), over `samples` draws seeded alike for
 // every design (common draws: chances compared between designs do not differ by their noise).
 double chance_within(const Eigen::VectorXd& mean, const Eigen::MatrixXd& covariance,
-                     const Eigen::VectorXd& target, double radius, int samples, std::uint64_t seed) {
+                     const Eigen::VectorXd& target, double radius, int samples,
+                     std::uint64_t seed) {
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
   const Eigen::MatrixXd root =
       eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
@@ -100,8 +102,9 @@ LoopPrediction predict_in_loop(const LoopContext& context, const PrintDiscrepanc
   const space::Placement bare = space::place_from_descriptors(map, out.descriptors);
   const space::Placement spread = space::place_from_descriptors(
       map, out.descriptors, correction.covariance + context.measurement_noise);
-  out.chance_within = chance_within(bare.mean, spread.covariance - bare.covariance, context.target.mean,
-                                    context.threshold, context.samples, context.seed);
+  out.chance_within =
+      chance_within(bare.mean, spread.covariance - bare.covariance, context.target.mean,
+                    context.threshold, context.samples, context.seed);
   return out;
 }
 
@@ -144,12 +147,14 @@ Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& 
   }
   for (const auto& p : predictions) proposal.chances.push_back(p.chance_within);
   const auto is_printed = [&](std::size_t k) {
-    return std::any_of(printed.begin(), printed.end(),
-                       [&](const DesignPoint& p) { return same_design(p, predictions[k].candidate.point); });
+    return std::any_of(printed.begin(), printed.end(), [&](const DesignPoint& p) {
+      return same_design(p, predictions[k].candidate.point);
+    });
   };
   for (std::size_t k = 0; k < predictions.size(); ++k) proposal.printed.push_back(is_printed(k));
   const auto& ranked = proposal.search.ranked;
-  const auto untried = std::find_if(ranked.begin(), ranked.end(), [&](std::size_t k) { return !proposal.printed[k]; });
+  const auto untried = std::find_if(ranked.begin(), ranked.end(),
+                                    [&](std::size_t k) { return !proposal.printed[k]; });
   proposal.next = predictions.at(untried == ranked.end() ? ranked.front() : *untried);
   for (std::size_t k = 1; k < predictions.size(); ++k)
     if (predictions[k].candidate.distance < predictions[proposal.nearest].candidate.distance)
@@ -159,10 +164,14 @@ Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& 
 
 std::string describe(LoopStop stop) {
   switch (stop) {
-    case LoopStop::none: return "not stopped";
-    case LoopStop::within_threshold: return "within the threshold";
-    case LoopStop::no_closer_design: return "no design predicted closer";
-    case LoopStop::round_limit: return "round limit";
+    case LoopStop::none:
+      return "not stopped";
+    case LoopStop::within_threshold:
+      return "within the threshold";
+    case LoopStop::no_closer_design:
+      return "no design predicted closer";
+    case LoopStop::round_limit:
+      return "round limit";
   }
   return "";
 }

@@ -1,6 +1,6 @@
-// The design loop's decisions, round by round: a print is proposed, printed, measured on the rig and
-// taken into the model (loop_refit.hpp, print_discrepancy.hpp), and the next is proposed from what
-// the model now predicts, until a print is as close to the target as the space can tell.
+// The design loop's decisions, round by round: a print is proposed, printed, measured on the rig
+// and taken into the model (loop_refit.hpp, print_discrepancy.hpp), and the next is proposed from
+// what the model now predicts, until a print is as close to the target as the space can tell.
 //
 // Which print next (NextPrintRule): the plain rule prints the predicted optimum, the design whose
 // corrected placement lies nearest the target. The default prints the design likeliest to land

@@ -21,8 +21,8 @@ constexpr int kLoopFileVersion = 1;
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
-Eigen::VectorXd vector_member(const nlohmann::json& object, const std::string& key, const fs::path& file,
-                              const std::string& parent) {
+Eigen::VectorXd vector_member(const nlohmann::json& object, const std::string& key,
+                              const fs::path& file, const std::string& parent) {
   const auto values = fields::as_number_array(fields::member(object, key, file, parent), file,
                                               fields::member_path(parent, key));
   return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
@@ -31,16 +31,24 @@ Eigen::VectorXd vector_member(const nlohmann::json& object, const std::string& k
 }  // namespace
 
 fs::path loop_request_file(const fs::path& folder) { return folder / "loop.json"; }
-fs::path round_folder(const fs::path& folder, int round) { return folder / ("round-" + std::to_string(round)); }
-fs::path round_file(const fs::path& folder, int round) { return round_folder(folder, round) / "round.json"; }
+fs::path round_folder(const fs::path& folder, int round) {
+  return folder / ("round-" + std::to_string(round));
+}
+fs::path round_file(const fs::path& folder, int round) {
+  return round_folder(folder, round) / "round.json";
+}
 fs::path round_print_file(const fs::path& folder, int round) {
   return round_folder(folder, round) / "print" / "stylus.3mf";
 }
-fs::path round_session_folder(const fs::path& folder, int round) { return round_folder(folder, round) / "session"; }
+fs::path round_session_folder(const fs::path& folder, int round) {
+  return round_folder(folder, round) / "session";
+}
 fs::path round_measurement_file(const fs::path& folder, int round) {
   return round_folder(folder, round) / "measurement.json";
 }
-fs::path round_forcing_file(const fs::path& folder, int round) { return round_folder(folder, round) / "forcing.json"; }
+fs::path round_forcing_file(const fs::path& folder, int round) {
+  return round_folder(folder, round) / "forcing.json";
+}
 
 void write_loop_request(const fs::path& folder, const LoopRequest& r) {
   const nlohmann::json j{{"format", kLoopFormat},
@@ -78,8 +86,8 @@ LoopRequest read_loop_request(const fs::path& folder) {
   } catch (const std::invalid_argument& e) {
     throw io::FormatError(file, fields::place("rule"), e.what());
   }
-  r.max_rounds = static_cast<int>(fields::as_integer(fields::member(j, "max_rounds", file, ""), file,
-                                                     "max_rounds", 1, kMostLoopRounds));
+  r.max_rounds = static_cast<int>(fields::as_integer(fields::member(j, "max_rounds", file, ""),
+                                                     file, "max_rounds", 1, kMostLoopRounds));
   return r;
 }
 
@@ -88,10 +96,11 @@ void write_round(const fs::path& folder, const LoopRoundRecord& r) {
                    {"version", kLoopFileVersion},
                    {"round", r.number},
                    {"design", to_string(r.design)},
-                   {"predicted", {{"distance", r.predicted_distance},
-                                  {"distance_sd", r.predicted_distance_sd},
-                                  {"chance_within_threshold", r.chance_within},
-                                  {"position", as_vector(r.predicted_position)}}}};
+                   {"predicted",
+                    {{"distance", r.predicted_distance},
+                     {"distance_sd", r.predicted_distance_sd},
+                     {"chance_within_threshold", r.chance_within},
+                     {"position", as_vector(r.predicted_position)}}}};
   if (r.measured)
     j["measured"] = {{"distance", r.measured->distance},
                      {"distance_sd", r.measured->distance_sd},
@@ -101,7 +110,8 @@ void write_round(const fs::path& folder, const LoopRoundRecord& r) {
   fs::create_directories(round_folder(folder, r.number));
   // A resumed loop read the record it now completes: replacing it is the point.
   io::release_input(round_file(folder, r.number));
-  io::write_file_atomically(round_file(folder, r.number), io::json_text(j, round_file(folder, r.number)));
+  io::write_file_atomically(round_file(folder, r.number),
+                            io::json_text(j, round_file(folder, r.number)));
 }
 
 std::vector<LoopRoundRecord> read_rounds(const fs::path& folder) {
@@ -111,16 +121,19 @@ std::vector<LoopRoundRecord> read_rounds(const fs::path& folder) {
     const nlohmann::json j = fields::parse_file(file);
     fields::check_format_and_version(j, file, kRoundFormat, kLoopFileVersion);
     LoopRoundRecord r;
-    r.number = static_cast<int>(fields::as_integer(fields::member(j, "round", file, ""), file, "round", n, n));
+    r.number = static_cast<int>(
+        fields::as_integer(fields::member(j, "round", file, ""), file, "round", n, n));
     try {
       r.design = parse_design_point(fields::string_member(j, "design", file, ""));
     } catch (const std::invalid_argument& e) {
       throw io::FormatError(file, fields::place("design"), e.what());
     }
-    const auto& predicted = fields::as_object(fields::member(j, "predicted", file, ""), file, "predicted");
+    const auto& predicted =
+        fields::as_object(fields::member(j, "predicted", file, ""), file, "predicted");
     r.predicted_distance = fields::number_member(predicted, "distance", file, "predicted");
     r.predicted_distance_sd = fields::number_member(predicted, "distance_sd", file, "predicted");
-    r.chance_within = fields::number_member(predicted, "chance_within_threshold", file, "predicted");
+    r.chance_within =
+        fields::number_member(predicted, "chance_within_threshold", file, "predicted");
     r.predicted_position = vector_member(predicted, "position", file, "predicted");
     if (j.contains("measured")) {
       const auto& m = fields::as_object(j["measured"], file, "measured");

@@ -45,13 +45,15 @@ struct LoopRoundRecord {
   double predicted_distance = 0.0, predicted_distance_sd = 0.0, chance_within = 0.0;
   Eigen::VectorXd predicted_position;
   std::optional<LoopMeasuredRecord> measured;
-  std::string stopped;  // why the loop stopped after this round (describe(LoopStop)); empty: it goes on
+  std::string
+      stopped;  // why the loop stopped after this round (describe(LoopStop)); empty: it goes on
 };
 
 std::filesystem::path loop_request_file(const std::filesystem::path& folder);
 std::filesystem::path round_folder(const std::filesystem::path& folder, int round);
 std::filesystem::path round_file(const std::filesystem::path& folder, int round);
-std::filesystem::path round_print_file(const std::filesystem::path& folder, int round);  // print/stylus.3mf
+std::filesystem::path round_print_file(const std::filesystem::path& folder,
+                                       int round);  // print/stylus.3mf
 std::filesystem::path round_session_folder(const std::filesystem::path& folder, int round);
 std::filesystem::path round_measurement_file(const std::filesystem::path& folder, int round);
 std::filesystem::path round_forcing_file(const std::filesystem::path& folder, int round);

@@ -10,17 +10,21 @@ LoopModel::LoopModel(LoopSetup setup) : setup_(std::move(setup)) {
   if (setup_.inputs == nullptr || setup_.grid == nullptr || setup_.map == nullptr)
     throw std::invalid_argument("a design loop needs its prediction inputs, design grid and space");
   if (!(setup_.threshold > 0) || !std::isfinite(setup_.threshold))
-    throw std::invalid_argument(fmt::format("a design loop's threshold must be a positive distance, not {}", setup_.threshold));
-  if (setup_.max_rounds < 1)
-    throw std::invalid_argument("a design loop needs at least one round");
+    throw std::invalid_argument(fmt::format(
+        "a design loop's threshold must be a positive distance, not {}", setup_.threshold));
+  if (setup_.max_rounds < 1) throw std::invalid_argument("a design loop needs at least one round");
   const auto& names = setup_.map->descriptor_names;
   const auto n = static_cast<Eigen::Index>(names.size());
   if (setup_.measurement_noise.rows() != n || setup_.measurement_noise.cols() != n)
-    throw std::invalid_argument("the measurement's descriptor noise must be one row and column per descriptor of the space's map");
+    throw std::invalid_argument(
+        "the measurement's descriptor noise must be one row and column per descriptor of the "
+        "space's map");
   const auto& axes = setup_.grid->axes;
-  if (axes.material_a != setup_.range.first_material || axes.material_b != setup_.range.second_material)
-    throw std::invalid_argument("the design grid mixes " + axes.material_a + " and " + axes.material_b +
-                                ", the loop's range " + setup_.range.first_material + " and " +
+  if (axes.material_a != setup_.range.first_material ||
+      axes.material_b != setup_.range.second_material)
+    throw std::invalid_argument("the design grid mixes " + axes.material_a + " and " +
+                                axes.material_b + ", the loop's range " +
+                                setup_.range.first_material + " and " +
                                 setup_.range.second_material);
   prior_.names = names;
   const auto& errors = setup_.inputs->descriptor_errors;
@@ -41,9 +45,10 @@ LoopContext LoopModel::context() const {
 }
 
 PredictedTool LoopModel::predict_uncorrected(const DesignPoint& point) const {
-  return predict_from_response(prediction_, point, setup_.surface,
-                               interpolate_response(*setup_.grid, point.fraction_of(setup_.grid->axes.material_b),
-                                                    point.tip_diameter_m));
+  return predict_from_response(
+      prediction_, point, setup_.surface,
+      interpolate_response(*setup_.grid, point.fraction_of(setup_.grid->axes.material_b),
+                           point.tip_diameter_m));
 }
 
 void LoopModel::rebuild() {
@@ -56,19 +61,22 @@ void LoopModel::rebuild() {
   std::vector<PrintResidual> residuals;
   if (setup_.correct_by_prints)
     for (const auto& print : prints_)
-      residuals.push_back({print.point, print.placement.descriptors -
-                                            predicted_descriptors(*setup_.map, predict_uncorrected(print.point))});
+      residuals.push_back(
+          {print.point, print.placement.descriptors -
+                            predicted_descriptors(*setup_.map, predict_uncorrected(print.point))});
   discrepancy_ = std::make_unique<PrintDiscrepancy>(prior_, std::move(residuals));
 }
 
 void LoopModel::add_print(const DesignPoint& point, const io::Pairing& measured) {
   if (!measured.vibration)
-    throw std::invalid_argument("the print " + to_string(point) + " was measured without a vibration spectrum");
+    throw std::invalid_argument("the print " + to_string(point) +
+                                " was measured without a vibration spectrum");
   const std::string name = fmt::format("loop print {} ({})", prints_.size() + 1, to_string(point));
   LoopPrint print{point, measured, place_measured(context(), measured)};
   const SimulatedResponse response = interpolate_response(
       *setup_.grid, point.fraction_of(setup_.grid->axes.material_b), point.tip_diameter_m);
-  print_exemplars_.push_back(print_exemplar(name, point, setup_.surface, measured.vibration->spectrum,
+  print_exemplars_.push_back(print_exemplar(name, point, setup_.surface,
+                                            measured.vibration->spectrum,
                                             response.response_magnitude, setup_.inputs->model));
   prints_.push_back(std::move(print));
   rebuild();
@@ -82,7 +90,8 @@ Proposal LoopModel::propose() const {
   const Predict predict = [this](const DesignPoint& p) { return predict_uncorrected(p); };
   std::vector<DesignPoint> printed;
   for (const auto& p : prints_) printed.push_back(p.point);
-  return propose_next_print(context(), *discrepancy_, predict, setup_.range, setup_.rule, setup_.candidates, printed);
+  return propose_next_print(context(), *discrepancy_, predict, setup_.range, setup_.rule,
+                            setup_.candidates, printed);
 }
 
 std::vector<double> LoopModel::measured_distances() const {

@@ -14,16 +14,17 @@ forcing::ForcingExemplar print_exemplar(const std::string& name, const DesignPoi
                                         const forcing::ForcingModel& model) {
   validate(point);
   if (measured.speeds_m_s.size() != model.speeds_m_s.size())
-    throw std::invalid_argument(fmt::format(
-        "{}: {} speeds measured, the forcing model has {} ({:g} to {:g} mm/s): capture the print over a "
-        "profile that holds each of them (steps, 42 s)",
-        name, measured.speeds_m_s.size(), model.speeds_m_s.size(), model.speeds_m_s.front() * 1e3,
-        model.speeds_m_s.back() * 1e3));
+    throw std::invalid_argument(
+        fmt::format("{}: {} speeds measured, the forcing model has {} ({:g} to {:g} mm/s): capture "
+                    "the print over a "
+                    "profile that holds each of them (steps, 42 s)",
+                    name, measured.speeds_m_s.size(), model.speeds_m_s.size(),
+                    model.speeds_m_s.front() * 1e3, model.speeds_m_s.back() * 1e3));
   for (std::size_t s = 0; s < model.speeds_m_s.size(); ++s)
     if (std::abs(measured.speeds_m_s[s] - model.speeds_m_s[s]) > 1e-6)
-      throw std::invalid_argument(fmt::format("{}: speed {} is {:g} mm/s, the forcing model's {:g} mm/s",
-                                              name, s + 1, measured.speeds_m_s[s] * 1e3,
-                                              model.speeds_m_s[s] * 1e3));
+      throw std::invalid_argument(
+          fmt::format("{}: speed {} is {:g} mm/s, the forcing model's {:g} mm/s", name, s + 1,
+                      measured.speeds_m_s[s] * 1e3, model.speeds_m_s[s] * 1e3));
   forcing::ForcingExemplar e;
   e.tool = name;
   e.surface = surface;

@@ -20,23 +20,28 @@ namespace fs = std::filesystem;
 namespace {
 
 LoopStop stop_named(const std::string& text) {
-  for (const LoopStop s : {LoopStop::within_threshold, LoopStop::no_closer_design, LoopStop::round_limit})
+  for (const LoopStop s :
+       {LoopStop::within_threshold, LoopStop::no_closer_design, LoopStop::round_limit})
     if (describe(s) == text) return s;
   return LoopStop::none;
 }
 
 void check_request(const LoopRequest& r) {
   if (r.target.empty()) throw std::invalid_argument("a design loop needs a target (tool/surface)");
-  if (r.surface.empty()) throw std::invalid_argument("a design loop needs the surface its stylus is for");
+  if (r.surface.empty())
+    throw std::invalid_argument("a design loop needs the surface its stylus is for");
   if (r.max_rounds < 1 || r.max_rounds > kMostLoopRounds)
-    throw std::invalid_argument(fmt::format("rounds: {}: expected 1 to {}", r.max_rounds, kMostLoopRounds));
+    throw std::invalid_argument(
+        fmt::format("rounds: {}: expected 1 to {}", r.max_rounds, kMostLoopRounds));
   if (r.first_material == r.second_material)
-    throw std::invalid_argument("the loop's mix needs two different materials, not " + r.first_material + " twice");
+    throw std::invalid_argument("the loop's mix needs two different materials, not " +
+                                r.first_material + " twice");
 }
 
 }  // namespace
 
-std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder, std::optional<LoopRequest> request,
+std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
+                                               std::optional<LoopRequest> request,
                                                const numeric::StepProgress& progress) {
   std::unique_ptr<LoopSession> s(new LoopSession);
   s->folder_ = folder;
@@ -45,14 +50,17 @@ std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder, std::opti
   const bool exists = fs::exists(loop_request_file(folder));
   if (request) {
     if (exists)
-      throw std::invalid_argument(folder.string() + " holds a design loop already: resume it, or give a new folder");
+      throw std::invalid_argument(folder.string() +
+                                  " holds a design loop already: resume it, or give a new folder");
     if (fs::exists(folder) && !fs::is_empty(folder))
-      throw std::invalid_argument(folder.string() + " is not empty: a new design loop needs a new or empty folder");
+      throw std::invalid_argument(folder.string() +
+                                  " is not empty: a new design loop needs a new or empty folder");
     check_request(*request);
     s->request_ = std::move(*request);
   } else {
     if (!exists)
-      throw std::invalid_argument(folder.string() + " holds no design loop (no loop.json) to resume");
+      throw std::invalid_argument(folder.string() +
+                                  " holds no design loop (no loop.json) to resume");
     s->request_ = read_loop_request(folder);
     s->rounds_ = read_rounds(folder);
   }
@@ -83,9 +91,10 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   const LoopRequest& r = request_;
   space_ = space::read_space_file(r.space_file);
   if (!space_.descriptor_map)
-    throw std::invalid_argument(r.space_file.string() +
-                                " has no descriptor map (fit it with --descriptors): prints and designs are "
-                                "placed from their descriptors");
+    throw std::invalid_argument(
+        r.space_file.string() +
+        " has no descriptor map (fit it with --descriptors): prints and designs are "
+        "placed from their descriptors");
   if (!r.printer.empty()) printer_ = io::find_printer_profile(r.printer);
   forcing::ForcingInputOptions options;
   options.catalog = r.catalog_file;
@@ -104,8 +113,8 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   }
   const auto& model = inputs_->model;
   const GridAxes axes = even_axes(r.first_material, r.second_material, kDefaultFractionPoints,
-                                  model.tip_log_gain.begin()->first, model.tip_log_gain.rbegin()->first,
-                                  kDefaultTipPoints);
+                                  model.tip_log_gain.begin()->first,
+                                  model.tip_log_gain.rbegin()->first, kDefaultTipPoints);
   grid_ = cached_design_response_grid(*inputs_, axes, progress);
 
   LoopSetup setup;
@@ -120,8 +129,10 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   setup.range.min_tip_m = axes.tips_m.front();
   setup.range.max_tip_m = axes.tips_m.back();
   setup.rule = r.rule;
-  setup.threshold = just_noticeable_distance(space_.model, static_cast<std::size_t>(space_.coordinates.rows()));
-  setup.measurement_noise = measurement_descriptor_noise(inputs_->catalog, space_.descriptor_map->descriptor_names);
+  setup.threshold =
+      just_noticeable_distance(space_.model, static_cast<std::size_t>(space_.coordinates.rows()));
+  setup.measurement_noise =
+      measurement_descriptor_noise(inputs_->catalog, space_.descriptor_map->descriptor_names);
   setup.max_rounds = r.max_rounds;
   loop_ = std::make_unique<LoopModel>(setup);
 }
@@ -133,7 +144,8 @@ std::optional<int> LoopSession::awaiting_measurement() const {
 
 std::optional<int> LoopSession::advance() {
   if (awaiting_measurement())
-    throw std::logic_error(fmt::format("round {} awaits its print's measurement", *awaiting_measurement()));
+    throw std::logic_error(
+        fmt::format("round {} awaits its print's measurement", *awaiting_measurement()));
   if (stopped_ != LoopStop::none) return std::nullopt;
   const auto stop_here = [&](LoopStop why) {
     stopped_ = why;
@@ -166,7 +178,8 @@ void LoopSession::take_in(int round, const io::Pairing& measured, bool write) {
   LoopRoundRecord& record = rounds_.at(static_cast<std::size_t>(round - 1));
   loop_->add_print(record.design, measured);
   const MeasuredPlacement& placed = loop_->prints().back().placement;
-  record.measured = LoopMeasuredRecord{placed.distance, placed.distance_sd, placed.placement.mean, placed.descriptors};
+  record.measured = LoopMeasuredRecord{placed.distance, placed.distance_sd, placed.placement.mean,
+                                       placed.descriptors};
   if (!write) return;
   forcing::write_forcing_model(round_forcing_file(folder_, round), loop_->model());
   write_round(folder_, record);
@@ -176,16 +189,19 @@ void LoopSession::take_measurement(const io::Pairing& measured) {
   const auto round = awaiting_measurement();
   if (!round) throw std::logic_error("no round awaits a measurement");
   if (measured.surface != request_.surface)
-    throw std::invalid_argument(fmt::format("the print was measured on '{}', the loop designs for '{}'",
-                                            measured.surface, request_.surface));
+    throw std::invalid_argument(
+        fmt::format("the print was measured on '{}', the loop designs for '{}'", measured.surface,
+                    request_.surface));
   if (!measured.friction || !measured.vibration)
     throw std::invalid_argument("the print's measurement needs both friction and vibration");
   io::Catalog one;
   io::ToolEntry tool;
   tool.id = measured.tool;
-  tool.name = "design loop round " + std::to_string(*round) + ": " + to_string(rounds_.back().design);
+  tool.name =
+      "design loop round " + std::to_string(*round) + ": " + to_string(rounds_.back().design);
   tool.kind = "printed";
-  tool.material = rounds_.back().design.mix.size() == 1 ? rounds_.back().design.mix.front().material : "mix";
+  tool.material =
+      rounds_.back().design.mix.size() == 1 ? rounds_.back().design.mix.front().material : "mix";
   tool.tip_diameter_m = rounds_.back().design.tip_diameter_m;
   one.tools.push_back(tool);
   one.surfaces.push_back({measured.surface, measured.surface});

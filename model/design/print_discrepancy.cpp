@@ -16,7 +16,8 @@ void check_covariance(const Eigen::MatrixXd& m, std::size_t n, const std::string
     throw std::invalid_argument(what + " must be " + std::to_string(n) + " x " + std::to_string(n) +
                                 " (one row per descriptor)");
   if (!m.allFinite() || !m.isApprox(m.transpose(), 1e-9) || (m.diagonal().array() < 0).any())
-    throw std::invalid_argument(what + " must be a finite symmetric matrix with a non-negative diagonal");
+    throw std::invalid_argument(what +
+                                " must be a finite symmetric matrix with a non-negative diagonal");
 }
 
 }  // namespace
@@ -31,24 +32,26 @@ PrintDiscrepancy::PrintDiscrepancy(DiscrepancyPrior prior, std::vector<PrintResi
   for (const auto& r : prints_)
     if (r.measured_minus_predicted.size() != static_cast<Eigen::Index>(p) ||
         !r.measured_minus_predicted.allFinite())
-      throw std::invalid_argument("the print " + to_string(r.point) + " needs " + std::to_string(p) +
-                                  " finite descriptor residuals");
+      throw std::invalid_argument("the print " + to_string(r.point) + " needs " +
+                                  std::to_string(p) + " finite descriptor residuals");
   if (prints_.empty()) return;
   // Σ(s) = s·K ⊗ C + I ⊗ R over the prints' stacked residuals r.
   const auto n = static_cast<Eigen::Index>(prints_.size()), q = static_cast<Eigen::Index>(p);
-  Eigen::MatrixXd kc = Eigen::MatrixXd::Zero(n * q, n * q), noise = Eigen::MatrixXd::Zero(n * q, n * q);
+  Eigen::MatrixXd kc = Eigen::MatrixXd::Zero(n * q, n * q),
+                  noise = Eigen::MatrixXd::Zero(n * q, n * q);
   Eigen::VectorXd r(n * q);
   for (Eigen::Index i = 0; i < n; ++i) {
     r.segment(i * q, q) = prints_[static_cast<std::size_t>(i)].measured_minus_predicted;
     for (Eigen::Index j = 0; j < n; ++j)
-      kc.block(i * q, j * q, q, q) =
-          correlation(prints_[static_cast<std::size_t>(i)].point, prints_[static_cast<std::size_t>(j)].point) *
-          prior_.model_error;
+      kc.block(i * q, j * q, q, q) = correlation(prints_[static_cast<std::size_t>(i)].point,
+                                                 prints_[static_cast<std::size_t>(j)].point) *
+                                     prior_.model_error;
     noise.block(i * q, i * q, q, q) = prior_.measurement_noise;
   }
   // A small ridge keeps two prints of one design with R = 0 solvable; it is far below any
   // descriptor's variance.
-  const double ridge = 1e-12 * (1.0 + kc.diagonal().cwiseAbs().maxCoeff() + noise.diagonal().cwiseAbs().maxCoeff());
+  const double ridge =
+      1e-12 * (1.0 + kc.diagonal().cwiseAbs().maxCoeff() + noise.diagonal().cwiseAbs().maxCoeff());
   const auto sigma_of = [&](double scale) {
     Eigen::MatrixXd sigma = scale * kc + noise;
     sigma.diagonal().array() += ridge;
@@ -77,8 +80,9 @@ PrintDiscrepancy::PrintDiscrepancy(DiscrepancyPrior prior, std::vector<PrintResi
 }
 
 double PrintDiscrepancy::correlation(const DesignPoint& a, const DesignPoint& b) const {
-  const double df = (a.fraction_of(prior_.second_material) - b.fraction_of(prior_.second_material)) /
-                    prior_.fraction_length;
+  const double df =
+      (a.fraction_of(prior_.second_material) - b.fraction_of(prior_.second_material)) /
+      prior_.fraction_length;
   const double dt = (a.tip_diameter_m - b.tip_diameter_m) / prior_.tip_length_m;
   return std::exp(-0.5 * (df * df + dt * dt));
 }
@@ -90,8 +94,9 @@ DescriptorCorrection PrintDiscrepancy::at(const DesignPoint& point) const {
   if (n == 0) return out;
   Eigen::MatrixXd cross(q, n * q);  // s·k(x)ᵀ ⊗ C
   for (Eigen::Index i = 0; i < n; ++i)
-    cross.block(0, i * q, q, q) =
-        scale_ * correlation(point, prints_[static_cast<std::size_t>(i)].point) * prior_.model_error;
+    cross.block(0, i * q, q, q) = scale_ *
+                                  correlation(point, prints_[static_cast<std::size_t>(i)].point) *
+                                  prior_.model_error;
   out.mean = cross * alpha_;
   out.covariance -= cross * solve_ * cross.transpose();
   out.covariance = 0.5 * (out.covariance + out.covariance.transpose());
@@ -111,7 +116,8 @@ Eigen::MatrixXd measurement_descriptor_noise(const io::Catalog& catalog,
       twice.pairings.push_back(p);
       twice.pairings.back().friction = io::FrictionDescriptor{};
     }
-  const space::DescriptorTable table = space::descriptors_of_catalog(twice, "the catalog", names.size());
+  const space::DescriptorTable table =
+      space::descriptors_of_catalog(twice, "the catalog", names.size());
   if (table.names != names)
     throw std::invalid_argument("the catalog's descriptors are not the ones asked for");
   const auto q = static_cast<Eigen::Index>(names.size());

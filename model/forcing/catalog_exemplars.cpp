@@ -42,8 +42,14 @@ ExemplarSelection select_printed_exemplars(const io::Catalog& catalog,
     } else if (!p.vibration) {
       selection.excluded.push_back(name + ": no vibration spectrum in the catalog");
     } else {
-      selection.exemplars.push_back(
-          {p.tool, p.surface, tool.material, *tool.tip_diameter_m, p.vibration->spectrum, {}, {}, false});
+      selection.exemplars.push_back({p.tool,
+                                     p.surface,
+                                     tool.material,
+                                     *tool.tip_diameter_m,
+                                     p.vibration->spectrum,
+                                     {},
+                                     {},
+                                     false});
     }
   }
   return selection;

@@ -27,7 +27,7 @@ std::string joined(const std::set<std::string>& names) {
 struct Layout {
   using Weights = std::vector<std::pair<std::size_t, double>>;  // (index, weight)
   std::vector<double> knots;
-  std::vector<double> tips;            // distinct fitted diameters, ascending, the reference among them
+  std::vector<double> tips;  // distinct fitted diameters, ascending, the reference among them
   std::vector<std::string> materials;  // distinct names, sorted, the reference among them
   std::vector<std::optional<std::size_t>> tip_block, material_block;  // per tip / material
   std::vector<Weights> exemplar_tip, exemplar_material;               // per exemplar
@@ -47,7 +47,8 @@ struct Layout {
   }
   bool uses(std::size_t e, std::size_t block) const {
     const auto b = blocks_of(e);
-    return std::any_of(b.begin(), b.end(), [&](const auto& bw) { return bw.first == block && bw.second != 0; });
+    return std::any_of(b.begin(), b.end(),
+                       [&](const auto& bw) { return bw.first == block && bw.second != 0; });
   }
 };
 
@@ -97,10 +98,10 @@ Layout make_layout(std::span<const ForcingExemplar> exemplars, const ForcingFitO
     layout.exemplar_tip.push_back(tip_weights(layout.tips, e.tip_diameter_m));
     Layout::Weights shares;
     for (const auto& [m, f] : shares_of(e))
-      shares.emplace_back(static_cast<std::size_t>(
-                              std::find(layout.materials.begin(), layout.materials.end(), m) -
-                              layout.materials.begin()),
-                          f);
+      shares.emplace_back(
+          static_cast<std::size_t>(std::find(layout.materials.begin(), layout.materials.end(), m) -
+                                   layout.materials.begin()),
+          f);
     layout.exemplar_material.push_back(std::move(shares));
   }
   return layout;
@@ -125,7 +126,8 @@ std::vector<std::string> data_problems(std::span<const ForcingExemplar> exemplar
       sum += f;
     }
     if (!e.mix.empty() && std::abs(sum - 1.0) > 1e-6)
-      problems.push_back(name + ": its mix's fractions add up to " + std::to_string(sum) + ", not 1");
+      problems.push_back(name + ": its mix's fractions add up to " + std::to_string(sum) +
+                         ", not 1");
     if (!io::same_grid(e.measured, grid)) {
       problems.push_back(name + ": its frequencies or speeds differ from those of " +
                          exemplar_name(exemplars.front()));
@@ -289,10 +291,10 @@ std::vector<std::string> fit_problems(std::span<const ForcingExemplar> exemplars
   const Layout layout = make_layout(exemplars, options);
   for (std::size_t e = 0; e < exemplars.size(); ++e)
     if (layout.exemplar_tip[e].empty())
-      problems.push_back(exemplar_name(exemplars[e]) + ": its tip, " +
-                         tip_label(exemplars[e].tip_diameter_m) + ", lies outside the fitted tips (" +
-                         tip_label(layout.tips.front()) + " to " + tip_label(layout.tips.back()) +
-                         "), and is interpolated, not extrapolated");
+      problems.push_back(
+          exemplar_name(exemplars[e]) + ": its tip, " + tip_label(exemplars[e].tip_diameter_m) +
+          ", lies outside the fitted tips (" + tip_label(layout.tips.front()) + " to " +
+          tip_label(layout.tips.back()) + "), and is interpolated, not extrapolated");
   if (!problems.empty()) return problems;
   problems = identifiability_problems(exemplars, layout, options);
   for (auto& p : empty_cell_problems(exemplars)) problems.push_back(std::move(p));

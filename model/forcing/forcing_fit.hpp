@@ -24,8 +24,8 @@
 #pragma once
 
 #include <span>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/forcing/forcing_model.hpp"

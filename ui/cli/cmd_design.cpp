@@ -285,8 +285,9 @@ void add_design_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "group, minimising the largest (or --aim mean) distance. --min-tip-mm, --max-tip-mm,\n"
       "--allow and --max-cost (with --cost) restrict both searches to the designs they allow.");
   // Required unless `design loop` is run (its own options), so checked in the callback.
-  cmd->add_option("--target", o->targets,
-                  "Target tool as tool/surface (e.g. cryon/office); several: one design for the group")
+  cmd->add_option(
+         "--target", o->targets,
+         "Target tool as tool/surface (e.g. cryon/office); several: one design for the group")
       ->take_all();
   cmd->add_option("--aim", o->aim, "A group's distance to minimise: largest or mean")->capture_default_str();
   cmd->add_option("--min-tip-mm", o->min_tip_mm, "Smallest tip diameter allowed (mm)")

@@ -27,9 +27,9 @@
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/interrupt_scope.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/rig_figures.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 namespace {

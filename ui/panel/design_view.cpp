@@ -529,7 +529,8 @@ void DesignView::draw_printer_choice() {
 }
 
 std::string DesignView::open_loop(const std::filesystem::path& folder_or_file) {
-  const auto folder = folder_or_file.filename() == "loop.json" ? folder_or_file.parent_path() : folder_or_file;
+  const auto folder =
+      folder_or_file.filename() == "loop.json" ? folder_or_file.parent_path() : folder_or_file;
   try {
     LoopRounds opened(folder);  // a loop that does not read leaves the one shown
     loop_ = std::move(opened);

@@ -4,8 +4,8 @@
 // search over mix × tip toward the target and draws its path (Fig. 17). Live through the
 // design-response grid (model/design/design_response_grid.hpp): solved once in the background with
 // progress and cancel, cached on disk, interpolated per slider move; its error against the full
-// FEM is measured in the background at cell centres and shown. A design loop's rounds (loop_rounds.hpp)
-// are drawn over the space when one is opened.
+// FEM is measured in the background at cell centres and shown. A design loop's rounds
+// (loop_rounds.hpp) are drawn over the space when one is opened.
 #pragma once
 
 #include <chrono>

@@ -18,7 +18,9 @@ const ImU32 kNextColour = IM_COL32(255, 200, 60, 255);
 }  // namespace
 
 LoopRounds::LoopRounds(const std::filesystem::path& folder)
-    : folder_(folder), request_(design::read_loop_request(folder)), rounds_(design::read_rounds(folder)) {}
+    : folder_(folder),
+      request_(design::read_loop_request(folder)),
+      rounds_(design::read_rounds(folder)) {}
 
 const design::LoopRoundRecord* LoopRounds::next_print() const {
   if (rounds_.empty() || rounds_.back().measured) return nullptr;
@@ -32,7 +34,9 @@ const std::string& LoopRounds::stopped() const {
 
 void LoopRounds::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, int ay) const {
   const bool one_d = ax == ay;
-  const auto at = [&](const Eigen::VectorXd& p) { return frame.to_screen(p[ax], one_d ? 0.0 : p[ay]); };
+  const auto at = [&](const Eigen::VectorXd& p) {
+    return frame.to_screen(p[ax], one_d ? 0.0 : p[ay]);
+  };
   // The measured prints in round order.
   for (const auto& r : rounds_)
     if (r.measured) draw->PathLineTo(at(r.measured->position));
@@ -47,7 +51,8 @@ void LoopRounds::draw_overlay(ImDrawList* draw, const PlotFrame& frame, int ax, 
       std::snprintf(number, sizeof number, "%d", r.number);
       draw->AddText({measured.x + 6.0f, measured.y - 6.0f}, kMeasuredColour, number);
     }
-    draw_marker(draw, predicted, Marker::circle, 5.0f, r.measured ? kPredictedColour : kNextColour, false);
+    draw_marker(draw, predicted, Marker::circle, 5.0f, r.measured ? kPredictedColour : kNextColour,
+                false);
   }
   if (target_place_ && target_place_->size() > std::max(ax, ay)) {
     const ImVec2 t = at(*target_place_);
@@ -65,7 +70,8 @@ void LoopRounds::draw_table() const {
   section("Design loop");
   ImGui::TextWrapped("%s on %s, %s: %s", request_.target.c_str(), request_.surface.c_str(),
                      design::rule_name(request_.rule).c_str(), folder_.string().c_str());
-  if (ImGui::BeginTable("loop-rounds", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
+  if (ImGui::BeginTable("loop-rounds", 3,
+                        ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("round: design");
     ImGui::TableSetupColumn("predicted");
     ImGui::TableSetupColumn("measured");
@@ -77,13 +83,18 @@ void LoopRounds::draw_table() const {
       ImGui::TableNextColumn();
       ImGui::Text("%.2f ± %.2f", r.predicted_distance, r.predicted_distance_sd);
       ImGui::TableNextColumn();
-      if (r.measured) ImGui::Text("%.2f ± %.2f", r.measured->distance, r.measured->distance_sd);
-      else ImGui::TextColored({1.0f, 0.78f, 0.24f, 1.0f}, "next print");
+      if (r.measured)
+        ImGui::Text("%.2f ± %.2f", r.measured->distance, r.measured->distance_sd);
+      else
+        ImGui::TextColored({1.0f, 0.78f, 0.24f, 1.0f}, "next print");
     }
     ImGui::EndTable();
   }
-  if (!stopped().empty()) ImGui::TextWrapped("stopped: %s", stopped().c_str());
-  else if (next_print()) ImGui::TextWrapped("round %d awaits its print's measurement (design loop --resume)", next_print()->number);
+  if (!stopped().empty())
+    ImGui::TextWrapped("stopped: %s", stopped().c_str());
+  else if (next_print())
+    ImGui::TextWrapped("round %d awaits its print's measurement (design loop --resume)",
+                       next_print()->number);
 }
 
 }  // namespace nibrig::ui::panel

@@ -1,5 +1,5 @@
-// A design loop's rounds in the Design view (model/design/loop_folder.hpp): the measured prints as a
-// path in the space in round order, each round's prediction beside its measurement (the line
+// A design loop's rounds in the Design view (model/design/loop_folder.hpp): the measured prints as
+// a path in the space in round order, each round's prediction beside its measurement (the line
 // between them is what the model missed), and the next print, the round awaiting its measurement.
 // Read from the loop's folder, which `nibrig design loop` and nibrig.design.loop write.
 #pragma once
@@ -25,7 +25,8 @@ class LoopRounds {
   const std::filesystem::path& folder() const { return folder_; }
   const model::design::LoopRequest& request() const { return request_; }
   const std::vector<model::design::LoopRoundRecord>& rounds() const { return rounds_; }
-  // The round whose print awaits its measurement: the next print (none when every round is measured).
+  // The round whose print awaits its measurement: the next print (none when every round is
+  // measured).
   const model::design::LoopRoundRecord* next_print() const;
   const std::string& stopped() const;
   // Where the loop's target lies in the space shown (a tool of its scene), when it is there.

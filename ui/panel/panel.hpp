@@ -41,7 +41,7 @@ struct PanelSetup {
   std::optional<DeviceRequest> device;  // opened at start; none: play nowhere until chosen
   bool start_rig = false;               // the rig view's run starts at once
   DesignSettings design;                // how finely the design view solves its grid
-  std::filesystem::path loop;           // a design loop's folder shown in the design view; empty: none
+  std::filesystem::path loop;  // a design loop's folder shown in the design view; empty: none
 };
 
 class Panel {

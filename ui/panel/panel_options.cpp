@@ -20,7 +20,8 @@ std::optional<PanelOptions> parse_panel_options(int argc, char** argv, int& exit
       ->check(CLI::ExistingFile);
   app.add_option("--forcing", o.setup.forcing, "forcing model file (default: fitted from the catalog and kept)")
       ->check(CLI::ExistingFile);
-  app.add_option("--loop", o.setup.loop, "a design loop's folder, its rounds shown in the design view")
+  app.add_option("--loop", o.setup.loop,
+                 "a design loop's folder, its rounds shown in the design view")
       ->check(CLI::ExistingDirectory);
   app.add_option("--screenshot", o.screenshot, "render one view into this PNG and exit");
   app.add_option("--view", view, "the view shown first (space, design, rig, pad, devices)")

@@ -62,7 +62,9 @@ class SpaceView {
   using Overlay = std::function<void(ImDrawList*, const PlotFrame&, int axis_x, int axis_y)>;
   void set_overlay(Overlay overlay) { overlay_ = std::move(overlay); }
   // Places the overlay draws (a design loop's prints) that the plot's range must hold too.
-  void set_overlay_places(std::vector<Eigen::VectorXd> places) { overlay_places_ = std::move(places); }
+  void set_overlay_places(std::vector<Eigen::VectorXd> places) {
+    overlay_places_ = std::move(places);
+  }
   // Without its side panel (axes, stroke, chosen tools): the design view has its own controls.
   void set_side_panel(bool shown) { side_panel_ = shown; }
   // The hint under "Play" (what a click does in this view).

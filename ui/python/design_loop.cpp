@@ -50,16 +50,20 @@ py::dict round_dict(const design::LoopRoundRecord& r) {
 }
 
 LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std::string>& target,
-                    const std::optional<std::string>& surface, const std::optional<std::filesystem::path>& space,
-                    bool resume, const std::string& rule, int rounds, const std::pair<std::string, std::string>& mix,
-                    const std::optional<std::filesystem::path>& catalog, const std::optional<std::string>& forcing,
+                    const std::optional<std::string>& surface,
+                    const std::optional<std::filesystem::path>& space, bool resume,
+                    const std::string& rule, int rounds,
+                    const std::pair<std::string, std::string>& mix,
+                    const std::optional<std::filesystem::path>& catalog,
+                    const std::optional<std::string>& forcing,
                     const std::optional<std::string>& printer, bool simulated,
                     const std::optional<std::filesystem::path>& simulated_forcing, unsigned seed,
                     const std::optional<double>& seconds, const py::object& progress) {
   std::optional<design::LoopRequest> request;
   if (resume) {
     if (target || surface || space)
-      throw std::invalid_argument("resume: the loop keeps what its loop.json says; give no target, surface or space");
+      throw std::invalid_argument(
+          "resume: the loop keeps what its loop.json says; give no target, surface or space");
   } else {
     if (!target || !surface || !space)
       throw std::invalid_argument("a new loop needs target, surface and space (or resume=True)");
@@ -93,13 +97,15 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
           capture->seconds = seconds;
           capture->cancel = &cancel;
         }
-        rig::drive_design_loop(*session, capture,
-                               [&](rig::LoopStep, int round) { report("rounds", static_cast<std::size_t>(round), 0); },
-                               &cancel);
+        rig::drive_design_loop(
+            *session, capture,
+            [&](rig::LoopStep, int round) { report("rounds", static_cast<std::size_t>(round), 0); },
+            &cancel);
         out.folder = session->folder();
         out.threshold = session->threshold();
         out.rounds = session->rounds();
-        if (session->stopped() != design::LoopStop::none) out.stopped = design::describe(session->stopped());
+        if (session->stopped() != design::LoopStop::none)
+          out.stopped = design::describe(session->stopped());
         out.awaiting = session->awaiting_measurement();
       },
       progress);
@@ -111,35 +117,50 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
 void add_design_loop(py::module_ m) {
   py::class_<LoopResult>(m, "DesignLoop", "A design loop's rounds as far as it has gone")
       .def_property_readonly("folder", [](const LoopResult& l) { return l.folder; })
-      .def_property_readonly("threshold", [](const LoopResult& l) { return l.threshold; },
-                             "The space's just-noticeable distance: a print within it is as close as the space tells")
-      .def_property_readonly("rounds", [](const LoopResult& l) {
-        py::list out;
-        for (const auto& r : l.rounds) out.append(round_dict(r));
-        return out;
-      }, "Per round: design, predicted and measured distance (with sd) and position, chance within the threshold")
-      .def_property_readonly("measured_distances", [](const LoopResult& l) {
-        std::vector<double> d;
-        for (const auto& r : l.rounds)
-          if (r.measured) d.push_back(r.measured->distance);
-        return py::array_t<double>(static_cast<py::ssize_t>(d.size()), d.data());
-      }, "The measured distance to the target per measured round")
-      .def_property_readonly("stopped", [](const LoopResult& l) { return l.stopped; },
-                             "Why the loop stopped, or None while it goes on")
-      .def_property_readonly("awaiting", [](const LoopResult& l) { return l.awaiting; },
-                             "The round whose print awaits its measurement (capture it into "
-                             "folder/round-N/session, then loop(folder, resume=True)), or None");
+      .def_property_readonly(
+          "threshold", [](const LoopResult& l) { return l.threshold; },
+          "The space's just-noticeable distance: a print within it is as close as the space tells")
+      .def_property_readonly(
+          "rounds",
+          [](const LoopResult& l) {
+            py::list out;
+            for (const auto& r : l.rounds) out.append(round_dict(r));
+            return out;
+          },
+          "Per round: design, predicted and measured distance (with sd) and position, chance "
+          "within the threshold")
+      .def_property_readonly(
+          "measured_distances",
+          [](const LoopResult& l) {
+            std::vector<double> d;
+            for (const auto& r : l.rounds)
+              if (r.measured) d.push_back(r.measured->distance);
+            return py::array_t<double>(static_cast<py::ssize_t>(d.size()), d.data());
+          },
+          "The measured distance to the target per measured round")
+      .def_property_readonly(
+          "stopped", [](const LoopResult& l) { return l.stopped; },
+          "Why the loop stopped, or None while it goes on")
+      .def_property_readonly(
+          "awaiting", [](const LoopResult& l) { return l.awaiting; },
+          "The round whose print awaits its measurement (capture it into "
+          "folder/round-N/session, then loop(folder, resume=True)), or None");
 
   m.def("loop", &run_loop, py::arg("folder"), py::kw_only(), py::arg("target") = py::none(),
         py::arg("surface") = py::none(), py::arg("space") = py::none(), py::arg("resume") = false,
-        py::arg("rule") = design::rule_name(design::kDefaultNextPrintRule), py::arg("rounds") = design::kDefaultLoopRounds,
-        py::arg("mix") = std::pair<std::string, std::string>{"vero", "DM85"}, py::arg("catalog") = py::none(),
-        py::arg("forcing") = py::none(), py::arg("printer") = py::none(), py::arg("simulated") = false,
-        py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1, py::arg("seconds") = py::none(),
-        py::arg("progress") = py::none(),
-        "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) on surface in "
-        "space, or resume=True. Runs as far as it goes here: with simulated=True each print is measured on the "
-        "simulated rig (its prints playing simulated_forcing, default the loop's model); without, it stops at a "
+        py::arg("rule") = design::rule_name(design::kDefaultNextPrintRule),
+        py::arg("rounds") = design::kDefaultLoopRounds,
+        py::arg("mix") = std::pair<std::string, std::string>{"vero", "DM85"},
+        py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
+        py::arg("printer") = py::none(), py::arg("simulated") = false,
+        py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1,
+        py::arg("seconds") = py::none(), py::arg("progress") = py::none(),
+        "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) "
+        "on surface in "
+        "space, or resume=True. Runs as far as it goes here: with simulated=True each print is "
+        "measured on the "
+        "simulated rig (its prints playing simulated_forcing, default the loop's model); without, "
+        "it stops at a "
         "round awaiting its print's measurement. Releases the GIL; Ctrl-C stops it between steps.");
 }
 

@@ -2,11 +2,12 @@
 // process, checked against its two-print posterior written out by hand, and its model-error scale
 // against the closed-form maximum), the just-noticeable distance against Φ⁻¹, the measurement's
 // noise against the nail pairs' descriptors read directly, and the stopping rule's reasons.
+#include "model/design/design_loop.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/design/design_loop.hpp"
 #include "model/design/print_discrepancy.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
@@ -35,7 +36,8 @@ DiscrepancyPrior diagonal_prior(double c0, double c1, double r0, double r1) {
 TEST(PrintDiscrepancy, TwoPrintsGiveTheGaussianProcessPosteriorWrittenOut) {
   // Residuals small against C, so the likeliest scale of C is its floor, 1.
   const auto prior = diagonal_prior(0.01, 0.04, 0.002, 0.005);
-  const DesignPoint a = loop_test_point(0.2, 1.5), b = loop_test_point(0.7, 3.0), x = loop_test_point(0.5, 2.0);
+  const DesignPoint a = loop_test_point(0.2, 1.5), b = loop_test_point(0.7, 3.0),
+                    x = loop_test_point(0.5, 2.0);
   const Eigen::Vector2d ra(0.001, -0.002), rb(-0.0005, 0.003);
   const PrintDiscrepancy discrepancy(prior, {{a, ra}, {b, rb}});
   ASSERT_DOUBLE_EQ(discrepancy.model_error_scale(), 1.0);
@@ -45,8 +47,8 @@ TEST(PrintDiscrepancy, TwoPrintsGiveTheGaussianProcessPosteriorWrittenOut) {
     return std::exp(-0.5 * (df * df + dt * dt));
   };
   const auto correction = discrepancy.at(x);
-  // Each descriptor alone (C and R diagonal): mean c·kᵀ(cK + rI)⁻¹y, variance c − c²·kᵀ(cK + rI)⁻¹k,
-  // with the 2 × 2 inverse by its adjugate.
+  // Each descriptor alone (C and R diagonal): mean c·kᵀ(cK + rI)⁻¹y, variance c − c²·kᵀ(cK +
+  // rI)⁻¹k, with the 2 × 2 inverse by its adjugate.
   for (int d = 0; d < 2; ++d) {
     const double c = prior.model_error(d, d), r = prior.measurement_noise(d, d);
     const double m11 = c * k(a, a) + r, m12 = c * k(a, b), m22 = c * k(b, b) + r;
@@ -55,7 +57,8 @@ TEST(PrintDiscrepancy, TwoPrintsGiveTheGaussianProcessPosteriorWrittenOut) {
     const double wa = (m22 * ka - m12 * kb) / det, wb = (m11 * kb - m12 * ka) / det;
     // Both are exact solutions of one small well-conditioned system: round-off apart.
     EXPECT_NEAR(correction.mean(d), c * (wa * ra(d) + wb * rb(d)), 1e-12) << "descriptor " << d;
-    EXPECT_NEAR(correction.covariance(d, d), c - c * c * (wa * ka + wb * kb), 1e-12) << "descriptor " << d;
+    EXPECT_NEAR(correction.covariance(d, d), c - c * c * (wa * ka + wb * kb), 1e-12)
+        << "descriptor " << d;
   }
   EXPECT_NEAR(correction.covariance(0, 1), 0.0, 1e-15);
   // Far from both prints (a tip 20 correlation lengths away) nothing is corrected.
@@ -67,7 +70,8 @@ TEST(PrintDiscrepancy, TwoPrintsGiveTheGaussianProcessPosteriorWrittenOut) {
 TEST(PrintDiscrepancy, ResidualsBeyondTheModelErrorScaleItUpByTheirLikeliestScale) {
   // One print, C = I, R = 0: the likelihood of r under N(0, s·I) peaks at s = |r|² / 2.
   const auto prior = diagonal_prior(1.0, 1.0, 0.0, 0.0);
-  const PrintDiscrepancy discrepancy(prior, {{loop_test_point(0.5, 2.0), Eigen::Vector2d(3.0, -4.0)}});
+  const PrintDiscrepancy discrepancy(prior,
+                                     {{loop_test_point(0.5, 2.0), Eigen::Vector2d(3.0, -4.0)}});
   // The golden-section search stops within 1e-4 of the log of the scale.
   EXPECT_NEAR(discrepancy.model_error_scale(), 12.5, 12.5 * 2e-4);
   // At the print itself, with no measurement noise, the correction is the residual.
@@ -84,7 +88,8 @@ TEST(PrintDiscrepancy, MatricesOfTheWrongSizeAndResidualsThatAreNotFiniteAreRefu
   EXPECT_THROW(PrintDiscrepancy(prior, {}), std::invalid_argument);
 }
 
-TEST(MeasurementDescriptorNoise, IsHalfTheNailPairsSquaredDifferenceAndTheFrictionIntervalsVariance) {
+TEST(MeasurementDescriptorNoise,
+     IsHalfTheNailPairsSquaredDifferenceAndTheFrictionIntervalsVariance) {
   const io::Catalog catalog = io::read_catalog(io::default_catalog());
   const std::vector<std::string> names = space::paper_descriptor_names(2);
   const Eigen::MatrixXd noise = measurement_descriptor_noise(catalog, names);
@@ -93,9 +98,11 @@ TEST(MeasurementDescriptorNoise, IsHalfTheNailPairsSquaredDifferenceAndTheFricti
   int pairs = 0;
   for (const auto& a : catalog.pairings)
     for (const auto& b : catalog.pairings)
-      if (a.surface == b.surface && a.tool.size() > 6 && a.tool.substr(a.tool.size() - 6) == "_nail1" &&
+      if (a.surface == b.surface && a.tool.size() > 6 &&
+          a.tool.substr(a.tool.size() - 6) == "_nail1" &&
           b.tool == a.tool.substr(0, a.tool.size() - 1) + "2") {
-        const double d = std::log10(a.vibration->weighted_mean) - std::log10(b.vibration->weighted_mean);
+        const double d =
+            std::log10(a.vibration->weighted_mean) - std::log10(b.vibration->weighted_mean);
         square += d * d;
         ++pairs;
       }
@@ -105,7 +112,8 @@ TEST(MeasurementDescriptorNoise, IsHalfTheNailPairsSquaredDifferenceAndTheFricti
   int measured = 0;
   for (const auto& p : catalog.pairings)
     if (p.friction && p.friction->mu_ci_high > p.friction->mu_ci_low) {
-      variance += std::pow((p.friction->mu_ci_high - p.friction->mu_ci_low) / (2 * 1.959963984540054), 2);
+      variance +=
+          std::pow((p.friction->mu_ci_high - p.friction->mu_ci_low) / (2 * 1.959963984540054), 2);
       ++measured;
     }
   EXPECT_NEAR(noise(0, 0), variance / measured, 1e-15);
@@ -142,7 +150,8 @@ TEST(LoopStop, SaysWhyWithinTheThresholdThenNoUntriedDesignWorthAPrintThenTheRou
   EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::none);
   next.printed = {true, true, true};  // nothing left untried
   EXPECT_EQ(loop_stop({1.5, 1.2}, 1.0, 6, &next), LoopStop::no_closer_design);
-  EXPECT_EQ(parse_next_print_rule(rule_name(NextPrintRule::predicted_optimum)), NextPrintRule::predicted_optimum);
+  EXPECT_EQ(parse_next_print_rule(rule_name(NextPrintRule::predicted_optimum)),
+            NextPrintRule::predicted_optimum);
   EXPECT_THROW(parse_next_print_rule("best"), std::invalid_argument);
 }
 

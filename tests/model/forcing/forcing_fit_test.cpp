@@ -80,8 +80,10 @@ BruteForce brute_force_fit(const std::vector<ForcingExemplar>& exemplars) {
         // Tips 1, 2 (the reference, no block) and 4 mm; between them, by hand, linear in the
         // diameter.
         const double d_mm = e.tip_diameter_m * 1e3;
-        if (d_mm <= 2.0) add_block("tip 1", (2.0 - d_mm) / 1.0);
-        else add_block("tip 4", (d_mm - 2.0) / 2.0);
+        if (d_mm <= 2.0)
+          add_block("tip 1", (2.0 - d_mm) / 1.0);
+        else
+          add_block("tip 4", (d_mm - 2.0) / 2.0);
         if (e.mix.empty()) {
           if (e.material != "vero") add_block(e.material, 1.0);
         } else {
@@ -148,7 +150,8 @@ TEST(ForcingFit, EliminatingTheForcingGivesTheFullLeastSquaresSolution) {
 // A design loop's prints: a mix at a tip between the fitted ones, made from the same truth (ln m
 // the fractions' sum, ln t linear in the diameter) and then measured with noise.
 ForcingExemplar synthetic_mixed_print(const test::SyntheticTruth& truth, const std::string& surface,
-                                      std::vector<std::pair<std::string, double>> mix, double tip_m) {
+                                      std::vector<std::pair<std::string, double>> mix,
+                                      double tip_m) {
   ForcingExemplar e = truth.exemplars.front();
   e.tool = "loop print";
   e.surface = surface;
@@ -164,16 +167,20 @@ ForcingExemplar synthetic_mixed_print(const test::SyntheticTruth& truth, const s
       const double f = e.measured.frequencies_hz[j];
       double gain = (1 - w) * hermite_value(truth.knots, truth.tip.at(lower), f) +
                     w * hermite_value(truth.knots, truth.tip.at(upper), f);
-      for (const auto& [m, share] : e.mix) gain += share * hermite_value(truth.knots, truth.material.at(m), f);
-      e.measured.amplitude_m_s2[s][j] = e.response_magnitude[j] * truth.forcing.at(surface)[s][j] * std::exp(gain);
+      for (const auto& [m, share] : e.mix)
+        gain += share * hermite_value(truth.knots, truth.material.at(m), f);
+      e.measured.amplitude_m_s2[s][j] =
+          e.response_magnitude[j] * truth.forcing.at(surface)[s][j] * std::exp(gain);
     }
   return e;
 }
 
 TEST(ForcingFit, AMixedPrintAtAnInterpolatedTipIsFittedAsAPredictionWouldMakeIt) {
   auto truth = make_synthetic_truth(9);
-  truth.exemplars.push_back(synthetic_mixed_print(truth, "a", {{"DM95", 0.4}, {"DM85", 0.6}}, 0.003));
-  truth.exemplars.push_back(synthetic_mixed_print(truth, "b", {{"vero", 0.25}, {"DM85", 0.75}}, 0.0015));
+  truth.exemplars.push_back(
+      synthetic_mixed_print(truth, "a", {{"DM95", 0.4}, {"DM85", 0.6}}, 0.003));
+  truth.exemplars.push_back(
+      synthetic_mixed_print(truth, "b", {{"vero", 0.25}, {"DM85", 0.75}}, 0.0015));
   // Noise-free: the fit stays exact, the prints adding no tip curve of their own.
   const ForcingModel exact = fit_forcing_model(truth.exemplars);
   EXPECT_EQ(exact.tip_log_gain.size(), 3u);
@@ -186,11 +193,14 @@ TEST(ForcingFit, AMixedPrintAtAnInterpolatedTipIsFittedAsAPredictionWouldMakeIt)
   add_log_noise(truth.exemplars, 0.3, 11);
   const ForcingModel model = fit_forcing_model(truth.exemplars);
   const BruteForce reference = brute_force_fit(truth.exemplars);
-  for (const auto& [name, curve] : std::map<std::string, std::vector<double>>{
-           {"tip 1", model.tip_curve(0.001)}, {"tip 4", model.tip_curve(0.004)},
-           {"DM95", model.material_curve("DM95")}, {"DM85", model.material_curve("DM85")}})
+  for (const auto& [name, curve] :
+       std::map<std::string, std::vector<double>>{{"tip 1", model.tip_curve(0.001)},
+                                                  {"tip 4", model.tip_curve(0.004)},
+                                                  {"DM95", model.material_curve("DM95")},
+                                                  {"DM85", model.material_curve("DM85")}})
     for (std::size_t k = 0; k < curve.size(); ++k)
-      EXPECT_NEAR(curve[k], reference.knots.at(name)(static_cast<Eigen::Index>(k)), 1e-9) << name << " knot " << k;
+      EXPECT_NEAR(curve[k], reference.knots.at(name)(static_cast<Eigen::Index>(k)), 1e-9)
+          << name << " knot " << k;
 }
 
 TEST(ForcingFit, AnInterpolatedTipOutsideTheFittedTipsIsRefused) {
@@ -200,11 +210,13 @@ TEST(ForcingFit, AnInterpolatedTipOutsideTheFittedTipsIsRefused) {
   truth.exemplars.push_back(print);
   const auto problems = fit_problems(truth.exemplars);
   ASSERT_EQ(problems.size(), 1u);
-  EXPECT_NE(problems[0].find("loop print on a: its tip, 5 mm, lies outside the fitted tips (1 mm to 4 mm)"),
+  EXPECT_NE(problems[0].find(
+                "loop print on a: its tip, 5 mm, lies outside the fitted tips (1 mm to 4 mm)"),
             std::string::npos)
       << problems[0];
   auto unbalanced = make_synthetic_truth();
-  unbalanced.exemplars.push_back(synthetic_mixed_print(unbalanced, "a", {{"DM95", 0.5}, {"DM85", 0.4}}, 0.003));
+  unbalanced.exemplars.push_back(
+      synthetic_mixed_print(unbalanced, "a", {{"DM95", 0.5}, {"DM85", 0.4}}, 0.003));
   EXPECT_THROW(fit_forcing_model(unbalanced.exemplars), std::invalid_argument);
 }
 

@@ -30,13 +30,14 @@ fs::path write_glass_space(const fs::path& folder) {
   const auto catalog_file = nibrig::test::assets_dir() / "default_catalog.json";
   const auto catalog = model::io::read_catalog(catalog_file);
   model::space::SpaceFile s;
-  s.stimuli = {"vero1/glass", "vero4/glass", "DM851/glass", "DM854/glass", "DM951/glass",
+  s.stimuli = {"vero1/glass", "vero4/glass", "DM851/glass", "DM854/glass",  "DM951/glass",
                "DM954/glass", "m2h/glass",   "wfelt/glass", "apencil/glass"};
   const auto table = model::space::descriptors_for_stimuli(catalog, catalog_file, s.stimuli, 2);
   s.coordinates = table.values.transpose();
   s.coordinates.row(0) *= 30.0;
   s.coordinates.row(1) *= 10.0;
-  for (Eigen::Index i = 0; i < s.coordinates.cols(); ++i) s.coordinates(1, i) += 0.05 * static_cast<double>(i % 3);
+  for (Eigen::Index i = 0; i < s.coordinates.cols(); ++i)
+    s.coordinates(1, i) += 0.05 * static_cast<double>(i % 3);
   s.model.scale = 2.0 / 3.0;
   s.descriptor_names = table.names;
   s.descriptors = table.values;
@@ -53,7 +54,8 @@ fs::path write_glass_space(const fs::path& folder) {
 // loop's model knows.
 fs::path write_quieter_dm85(const fs::path& root) {
   const auto paper = root / "paper_forcing.json";
-  if (test::run_cli({"-q", "forcing", "fit", "-o", paper.string()}) != 0) throw std::runtime_error("forcing fit failed");
+  if (test::run_cli({"-q", "forcing", "fit", "-o", paper.string()}) != 0)
+    throw std::runtime_error("forcing fit failed");
   auto truth = model::forcing::read_forcing_model(paper);
   for (double& k : truth.material_log_gain.at("DM85")) k -= 4.0 / (20 / std::log(10.0));
   const auto file = root / "truth_forcing.json";
@@ -75,7 +77,8 @@ double distance_by_hand(const fs::path& space_file, const fs::path& measurement)
   const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   Eigen::VectorXd target;
   for (const auto& p : catalog.pairings)
-    if (p.tool == "DM952" && p.surface == "glass") target = place(p.friction->mu, p.vibration->weighted_mean);
+    if (p.tool == "DM952" && p.surface == "glass")
+      target = place(p.friction->mu, p.vibration->weighted_mean);
   const auto measured = model::io::read_catalog(measurement).pairings.at(0);
   return (place(measured.friction->mu, measured.vibration->weighted_mean) - target).norm();
 }
@@ -89,7 +92,8 @@ void expect_measured_round(const fs::path& loop, const fs::path& space, int roun
   EXPECT_TRUE(fs::is_directory(folder / "session")) << folder / "session";
   const auto record = test::read_json(folder / "round.json");
   ASSERT_TRUE(record.contains("measured")) << folder;
-  EXPECT_NEAR(record["measured"]["distance"].get<double>(), distance_by_hand(space, folder / "measurement.json"), 1e-9)
+  EXPECT_NEAR(record["measured"]["distance"].get<double>(),
+              distance_by_hand(space, folder / "measurement.json"), 1e-9)
       << "round " << round;
 }
 
@@ -100,9 +104,10 @@ TEST(DesignLoopCli, OnTheSimulatedRigAgainstAHiddenTruthThePredictionsComeToTheM
   const auto truth = model::forcing::read_forcing_model(truth_file);
 
   const auto loop = root / "loop";
-  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--target", "DM952/glass", "--surface", "glass", "--space",
-                           space.string(), "--rounds", "3", "--simulated", "--simulated-forcing",
-                           truth_file.string(), "--seconds", "14", "-o", loop.string()}),
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--target", "DM952/glass", "--surface", "glass",
+                           "--space", space.string(), "--rounds", "3", "--simulated",
+                           "--simulated-forcing", truth_file.string(), "--seconds", "14", "-o",
+                           loop.string()}),
             0);
   const auto request = test::read_json(loop / "loop.json");
   EXPECT_EQ(request["rule"], "likeliest");
@@ -115,20 +120,25 @@ TEST(DesignLoopCli, OnTheSimulatedRigAgainstAHiddenTruthThePredictionsComeToTheM
   const auto last = test::read_json(loop / ("round-" + std::to_string(rounds)) / "round.json");
   const std::string why = last["stopped"];
   const double threshold = 0.6744897501960817 * 1.5;  // the probit's 75 % at s = 2/3
-  if (why == "within the threshold") EXPECT_LE(last["measured"]["distance"].get<double>(), threshold);
-  else if (why == "round limit") EXPECT_EQ(rounds, 3);
-  else EXPECT_EQ(why, "no design predicted closer");
+  if (why == "within the threshold")
+    EXPECT_LE(last["measured"]["distance"].get<double>(), threshold);
+  else if (why == "round limit")
+    EXPECT_EQ(rounds, 3);
+  else
+    EXPECT_EQ(why, "no design predicted closer");
   // The open-loop print missed, and the loop's predictions came to its measurements: the last
   // round's predicted distance is within half the first's miss of what it measured.
   const auto first = test::read_json(loop / "round-1" / "round.json");
   EXPECT_GT(first["measured"]["distance"].get<double>(), threshold);
   ASSERT_GE(rounds, 2);
   const auto miss = [](const nlohmann::json& r) {
-    return std::abs(r["predicted"]["distance"].get<double>() - r["measured"]["distance"].get<double>());
+    return std::abs(r["predicted"]["distance"].get<double>() -
+                    r["measured"]["distance"].get<double>());
   };
   EXPECT_LT(miss(last), 0.5 * miss(first));
   // The refitted model took every print in.
-  const auto refitted = model::forcing::read_forcing_model(loop / ("round-" + std::to_string(rounds)) / "forcing.json");
+  const auto refitted = model::forcing::read_forcing_model(
+      loop / ("round-" + std::to_string(rounds)) / "forcing.json");
   EXPECT_EQ(refitted.exemplar_count(), truth.exemplar_count() + static_cast<std::size_t>(rounds));
 }
 
@@ -137,8 +147,9 @@ TEST(DesignLoopCli, ALabMeasuresEachPrintItselfAndResumesKeepingAKilledCaptureAs
   const auto space = write_glass_space(root);
   const auto truth = write_quieter_dm85(root);
   const auto loop = root / "loop";
-  const std::vector<std::string> start{"-q",      "design",  "loop",        "--target", "DM952/glass",
-                                       "--space", space.string(), "--surface", "glass", "--rounds", "2", "-o", loop.string()};
+  const std::vector<std::string> start{
+      "-q",        "design", "loop",     "--target", "DM952/glass", "--space",    space.string(),
+      "--surface", "glass",  "--rounds", "2",        "-o",          loop.string()};
   // Without a rig the loop proposes round 1, writes its print's files and waits.
   ASSERT_EQ(test::run_cli(start), 0);
   const auto round1 = test::read_json(loop / "round-1" / "round.json");
@@ -147,10 +158,13 @@ TEST(DesignLoopCli, ALabMeasuresEachPrintItselfAndResumesKeepingAKilledCaptureAs
   EXPECT_FALSE(fs::exists(loop / "round-2"));
   // A new loop into it, and a resumed loop given a new target, are refused.
   EXPECT_EQ(test::run_cli(start), 1);
-  EXPECT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--target", "cryon/office", "-o", loop.string()}), 2);
+  EXPECT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--target", "cryon/office", "-o",
+                           loop.string()}),
+            2);
   // The lab measures the print as the loop said, and resumes.
-  ASSERT_EQ(test::run_cli({"-q", "rig", "capture", "--simulated", "--tool", round1["design"].get<std::string>(),
-                           "--surface", "glass", "--forcing", truth.string(), "--speedup", "0", "--seconds", "14", "-o",
+  ASSERT_EQ(test::run_cli({"-q", "rig", "capture", "--simulated", "--tool",
+                           round1["design"].get<std::string>(), "--surface", "glass", "--forcing",
+                           truth.string(), "--speedup", "0", "--seconds", "14", "-o",
                            (loop / "round-1" / "session").string()}),
             0);
   ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "-o", loop.string()}), 0);
@@ -161,8 +175,8 @@ TEST(DesignLoopCli, ALabMeasuresEachPrintItselfAndResumesKeepingAKilledCaptureAs
   // A capture of round 2 killed midway left its .partial folder: kept aside, measured again.
   fs::create_directories(loop / "round-2" / "session.partial");
   std::ofstream(loop / "round-2" / "session.partial" / "session.json") << "{}";
-  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--simulated", "--simulated-forcing", truth.string(),
-                           "--seconds", "14", "-o", loop.string()}),
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--simulated", "--simulated-forcing",
+                           truth.string(), "--seconds", "14", "-o", loop.string()}),
             0);
   EXPECT_TRUE(fs::exists(loop / "round-2" / "session-interrupted-1" / "session.json"));
   expect_measured_round(loop, space, 2);

@@ -23,7 +23,9 @@ design::LoopRoundRecord loop_view_round(int number, double x, double y, bool mea
   r.predicted_distance_sd = 0.2;
   r.chance_within = 0.3;
   r.predicted_position = Eigen::Vector2d(x, y);
-  if (measured) r.measured = design::LoopMeasuredRecord{1.2 / number, 0.1, Eigen::Vector2d(x + 0.01, y - 0.02), Eigen::Vector2d(0.2, -1.2)};
+  if (measured)
+    r.measured = design::LoopMeasuredRecord{1.2 / number, 0.1, Eigen::Vector2d(x + 0.01, y - 0.02),
+                                            Eigen::Vector2d(0.2, -1.2)};
   return r;
 }
 

@@ -36,8 +36,10 @@ constexpr int kWorldRounds = 5;
 double printed_friction_spread(const io::Catalog& catalog, const std::string& surface) {
   std::vector<double> mu;
   for (const auto& p : catalog.pairings) {
-    const auto tool = std::find_if(catalog.tools.begin(), catalog.tools.end(), [&](const auto& t) { return t.id == p.tool; });
-    if (p.surface == surface && p.friction && tool != catalog.tools.end() && tool->kind == "printed")
+    const auto tool = std::find_if(catalog.tools.begin(), catalog.tools.end(),
+                                   [&](const auto& t) { return t.id == p.tool; });
+    if (p.surface == surface && p.friction && tool != catalog.tools.end() &&
+        tool->kind == "printed")
       mu.push_back(p.friction->mu);
   }
   double mean = 0.0, square = 0.0;
@@ -66,10 +68,12 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
   const forcing::ForcingForPrediction fitted = forcing::fit_forcing_for_prediction(forcing_inputs);
   const auto inputs = load_prediction_inputs(options, "", fitted.model);
   DefaultsOptions space_options;
-  space_options.bootstrap_resamples = 20;  // the regions are not used: designs are placed by the map
+  space_options.bootstrap_resamples =
+      20;  // the regions are not used: designs are placed by the map
   const auto space = default_space(space_options).value;
   const space::DescriptorMap& map = *space.space.descriptor_map;
-  const double threshold = just_noticeable_distance(space.space.model, static_cast<std::size_t>(space.space.coordinates.rows()));
+  const double threshold = just_noticeable_distance(
+      space.space.model, static_cast<std::size_t>(space.space.coordinates.rows()));
   const Eigen::MatrixXd noise = measurement_descriptor_noise(inputs->catalog, map.descriptor_names);
 
   const std::string surface = "glass";  // the paper's artificial surfaces: glass, protector
@@ -99,8 +103,8 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
       const double lambda = unit(draw), tip = 0.001 + 0.003 * unit(draw);
       hidden = grid_point(axes, lambda, tip);
       std::mt19937_64 silent(1);
-      const io::Pairing target_pairing = test::measure_in_world(*world, axes, hidden, surface,
-                                                                Eigen::MatrixXd::Zero(2, 2), 0.0, silent);
+      const io::Pairing target_pairing = test::measure_in_world(
+          *world, axes, hidden, surface, Eigen::MatrixXd::Zero(2, 2), 0.0, silent);
       const space::Placement target =
           space::place_from_descriptors(map, measured_descriptors(map, target_pairing));
       for (const auto& variant : variants) {
@@ -124,8 +128,8 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
         Proposal next = loop.propose();
         for (int round = 1; round <= kWorldRounds; ++round) {
           loop.add_print(next.next.candidate.point,
-                         test::measure_in_world(*world, axes, next.next.candidate.point, surface, noise,
-                                                cell_noise_db, rig));
+                         test::measure_in_world(*world, axes, next.next.candidate.point, surface,
+                                                noise, cell_noise_db, rig));
           const auto d = loop.measured_distances();
           outcome.best_after.push_back(*std::min_element(d.begin(), d.end()));
           if (d.back() <= threshold) {
@@ -145,8 +149,10 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
 
   // The table: per variant, the share within the threshold and the median nearest print after
   // each round; the open-loop design is every variant's round 1.
-  std::printf("threshold %.3f (just-noticeable distance of the space's model); curves' sd %.2f dB, mu's %.3f\n",
-              threshold, forcing::log_gain_to_db(spread.curve_sd), spread.mu_sd);
+  std::printf(
+      "threshold %.3f (just-noticeable distance of the space's model); curves' sd %.2f dB, mu's "
+      "%.3f\n",
+      threshold, forcing::log_gain_to_db(spread.curve_sd), spread.mu_sd);
   std::map<std::string, double> reached_by_three;
   for (const auto& variant : variants) {
     const auto& list = outcomes[variant.name];
@@ -171,7 +177,10 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
     std::printf("  | open loop missed %d, reached by round 3: %d\n", missed, reached);
   }
   // "Most": more than half of the targets the open-loop print misses.
-  const std::string default_name = "corrected, " + std::string(kDefaultNextPrintRule == NextPrintRule::predicted_optimum ? "optimum" : "likeliest");
+  const std::string default_name =
+      "corrected, " + std::string(kDefaultNextPrintRule == NextPrintRule::predicted_optimum
+                                      ? "optimum"
+                                      : "likeliest");
   EXPECT_GT(reached_by_three.at(default_name), 0.5);
   for (const auto& [name, share] : reached_by_three)
     EXPECT_GE(reached_by_three.at(default_name), share) << "the default rule against " << name;

@@ -14,8 +14,8 @@
 #include "model/design/design_loop.hpp"
 #include "model/design/design_response_grid.hpp"
 #include "model/design/prediction_inputs.hpp"
-#include "model/forcing/hermite_curve.hpp"
 #include "model/forcing/forcing_inputs.hpp"
+#include "model/forcing/hermite_curve.hpp"
 #include "model/measure/descriptors.hpp"
 #include "model/mechanics/material_table.hpp"
 
@@ -50,7 +50,8 @@ inline std::vector<double> smooth_random_curve(const std::vector<double>& knots,
   Eigen::MatrixXd k(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
-      const double d = (knots[static_cast<std::size_t>(i)] - knots[static_cast<std::size_t>(j)]) / correlation_hz;
+      const double d = (knots[static_cast<std::size_t>(i)] - knots[static_cast<std::size_t>(j)]) /
+                       correlation_hz;
       k(i, j) = sd * sd * std::exp(-0.5 * d * d) + (i == j ? 1e-10 : 0.0);
     }
   const Eigen::MatrixXd l = k.llt().matrixL();
@@ -62,8 +63,8 @@ inline std::vector<double> smooth_random_curve(const std::vector<double>& knots,
 }
 
 // Materials by their table names: the two of the vero–DM85 range.
-inline mechanics::MaterialTable scaled_materials(const mechanics::MaterialTable& table, double vero_ratio,
-                                                 double dm85_ratio) {
+inline mechanics::MaterialTable scaled_materials(const mechanics::MaterialTable& table,
+                                                 double vero_ratio, double dm85_ratio) {
   std::vector<mechanics::Material> out = table.materials();
   for (auto& m : out) {
     if (m.name == "VeroClear-Piovarci2018") m.youngs_modulus *= vero_ratio;
@@ -74,8 +75,9 @@ inline mechanics::MaterialTable scaled_materials(const mechanics::MaterialTable&
   return scaled;
 }
 
-inline std::unique_ptr<LoopWorld> make_loop_world(const PredictionInputs& model_inputs, const GridAxes& axes,
-                                                  const WorldSpread& spread, std::uint64_t seed) {
+inline std::unique_ptr<LoopWorld> make_loop_world(const PredictionInputs& model_inputs,
+                                                  const GridAxes& axes, const WorldSpread& spread,
+                                                  std::uint64_t seed) {
   auto world = std::make_unique<LoopWorld>();
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
@@ -83,14 +85,16 @@ inline std::unique_ptr<LoopWorld> make_loop_world(const PredictionInputs& model_
   world->truth_model = model;
   for (const auto* material : {&axes.material_a, &axes.material_b}) {
     auto& curve = world->truth_model.material_log_gain.at(*material);
-    const auto delta = smooth_random_curve(model.knot_frequencies_hz, spread.curve_sd, spread.curve_correlation_hz, rng);
+    const auto delta = smooth_random_curve(model.knot_frequencies_hz, spread.curve_sd,
+                                           spread.curve_correlation_hz, rng);
     for (std::size_t k = 0; k < curve.size(); ++k) curve[k] += delta[k];
   }
-  world->mixing_bow = smooth_random_curve(model.knot_frequencies_hz, spread.curve_sd, spread.curve_correlation_hz, rng);
+  world->mixing_bow = smooth_random_curve(model.knot_frequencies_hz, spread.curve_sd,
+                                          spread.curve_correlation_hz, rng);
   world->vero_modulus_ratio = std::exp(spread.modulus_log_sd * normal(rng));
   world->dm85_modulus_ratio = std::exp(spread.modulus_log_sd * normal(rng));
-  world->truth_materials =
-      scaled_materials(model_inputs.setup.materials, world->vero_modulus_ratio, world->dm85_modulus_ratio);
+  world->truth_materials = scaled_materials(model_inputs.setup.materials, world->vero_modulus_ratio,
+                                            world->dm85_modulus_ratio);
   world->mu_offset_first = spread.mu_sd * normal(rng);
   world->mu_offset_second = spread.mu_sd * normal(rng);
   world->truth_setup = model_inputs.setup;
@@ -104,12 +108,14 @@ inline std::unique_ptr<LoopWorld> make_loop_world(const PredictionInputs& model_
 // and the mix's bow) with the measurement's noise: per cell, and per print a gain and a μ drawn
 // from the measurement's descriptor noise R (weighted-mean and μ variances of `noise`, in the
 // map's descriptor order: μ first, the log10 weighted mean second).
-inline io::Pairing measure_in_world(const LoopWorld& world, const GridAxes& axes, const DesignPoint& point,
-                                    const std::string& surface, const Eigen::MatrixXd& noise,
-                                    double cell_noise_db, std::mt19937_64& rng) {
+inline io::Pairing measure_in_world(const LoopWorld& world, const GridAxes& axes,
+                                    const DesignPoint& point, const std::string& surface,
+                                    const Eigen::MatrixXd& noise, double cell_noise_db,
+                                    std::mt19937_64& rng) {
   const double lambda = point.fraction_of(axes.material_b);
-  PredictedTool tool = predict_from_response(world.truth_setup, point, surface,
-                                             interpolate_response(world.truth_grid, lambda, point.tip_diameter_m));
+  PredictedTool tool =
+      predict_from_response(world.truth_setup, point, surface,
+                            interpolate_response(world.truth_grid, lambda, point.tip_diameter_m));
   std::normal_distribution<double> normal;
   const double bow = 4 * lambda * (1 - lambda);
   const double gain = std::log(10.0) * std::sqrt(noise(1, 1)) * normal(rng);
@@ -117,10 +123,12 @@ inline io::Pairing measure_in_world(const LoopWorld& world, const GridAxes& axes
   for (std::size_t s = 0; s < tool.spectrum.speeds_m_s.size(); ++s)
     for (std::size_t j = 0; j < tool.spectrum.frequencies_hz.size(); ++j) {
       const double f = tool.spectrum.frequencies_hz[j];
-      const double bowed = bow * forcing::hermite_value(world.truth_model.knot_frequencies_hz, world.mixing_bow, f);
+      const double bowed =
+          bow * forcing::hermite_value(world.truth_model.knot_frequencies_hz, world.mixing_bow, f);
       tool.spectrum.amplitude_m_s2[s][j] *= std::exp(bowed + gain + cell_sd * normal(rng));
     }
-  tool.vibration = measure::compute_vibration_descriptors(tool.spectrum, *world.truth_setup.threshold);
+  tool.vibration =
+      measure::compute_vibration_descriptors(tool.spectrum, *world.truth_setup.threshold);
   tool.mu += (1 - lambda) * world.mu_offset_first + lambda * world.mu_offset_second +
              std::sqrt(noise(0, 0)) * normal(rng);
   io::Pairing pairing = predicted_pairing(tool, "the catalog's");
