@@ -55,6 +55,16 @@ double level_spread(Panel& panel, const std::function<void()>& frame, double sec
 
 constexpr double kSweepSpread = 0.18, kConstantSpread = 0.15;
 
+// The device the panel opened at start. On a loaded CI machine JACK once refused the panel's
+// client there ("no device" in the status line, 1 run of many): it is opened again once, as a
+// person would from the devices view, and the test says so; a second refusal fails it.
+void ensure_device_open(Panel& panel, const PanelSetup& setup) {
+  if (panel.audio().device()) return;
+  ::testing::Test::RecordProperty("device_reopened", panel.error());
+  const std::string again = panel.audio().open(*setup.device);
+  ASSERT_TRUE(again.empty()) << "first: " << panel.error() << "; again: " << again;
+}
+
 StrokeChoice constant_250() {
   StrokeChoice c;
   c.kind = 0;
@@ -77,6 +87,7 @@ TEST(PanelStroke, TheDesignViewPlaysTheStrokeChosenAfterItStartedAndAfterARelaun
     panel.show(View::design);
     testing::draw_until_design_settled(panel, frame, std::chrono::steady_clock::now() + 900s);
     ASSERT_TRUE(panel.design_view().ready()) << panel.design_view().error() << " " << panel.error();
+    ensure_device_open(panel, setup);
     // Nothing plays until asked: a space or a grid arriving is not a request.
     EXPECT_FALSE(panel.audio().sounding().has_value()) << panel.status_line();
 
@@ -114,6 +125,7 @@ TEST(PanelStroke, TheDesignViewPlaysTheStrokeChosenAfterItStartedAndAfterARelaun
   };
   testing::draw_until_design_settled(again, frame, std::chrono::steady_clock::now() + 900s);
   ASSERT_TRUE(again.design_view().ready()) << again.design_view().error();
+  ensure_device_open(again, setup);
   again.design_view().set_design(0.5, 2.5);
   EXPECT_EQ(again.audio().stroke_description(), constant) << again.status_line();
   EXPECT_LT(level_spread(again, frame, 3.0), kConstantSpread);
