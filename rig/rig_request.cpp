@@ -19,7 +19,7 @@ namespace {
 // mean μ of the catalog's tools on that surface, or 0.3 when the surface has none.
 double friction_for(const model::io::Catalog& catalog, const std::string& tool,
                     const std::string& surface) {
-  if (tool.find("tip=") != std::string::npos) try {
+  if (model::design::names_design_point(tool)) try {
       return model::design::interpolated_friction(catalog, model::design::parse_design_point(tool),
                                                   surface)
           .mu;

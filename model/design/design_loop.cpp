@@ -156,9 +156,6 @@ Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& 
   const auto untried = std::find_if(ranked.begin(), ranked.end(),
                                     [&](std::size_t k) { return !proposal.printed[k]; });
   proposal.next = predictions.at(untried == ranked.end() ? ranked.front() : *untried);
-  for (std::size_t k = 1; k < predictions.size(); ++k)
-    if (predictions[k].candidate.distance < predictions[proposal.nearest].candidate.distance)
-      proposal.nearest = k;
   return proposal;
 }
 

@@ -79,14 +79,12 @@ MeasuredPlacement place_measured(const LoopContext& context, const io::Pairing& 
 // those designs alone: a lab that can print only some, or prints that exist already): every
 // candidate carries its corrected distance, and `score` the rule's key (the distance, or minus the
 // chance). The next print is its best that is none of `printed` (printed again, a design would
-// only measure the same: the loop is for what it has not tried); `nearest` the candidate with the
-// smallest predicted distance, whatever the rule.
+// only measure the same: the loop is for what it has not tried).
 struct Proposal {
   SearchResult search;
   LoopPrediction next;
   std::vector<double> chances;  // per evaluated candidate
   std::vector<bool> printed;    // per evaluated candidate: a design printed already
-  std::size_t nearest = 0;
 };
 Proposal propose_next_print(const LoopContext& context, const PrintDiscrepancy& discrepancy,
                             const Predict& predict, const RangeSearchOptions& range,

@@ -1,6 +1,9 @@
 #include "model/design/loop_folder.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include <stdexcept>
 
 #include "model/io/atomic_file.hpp"
 #include "model/io/finite_output.hpp"
@@ -29,6 +32,20 @@ Eigen::VectorXd vector_member(const nlohmann::json& object, const std::string& k
 }
 
 }  // namespace
+
+void check_loop_request(const LoopRequest& r) {
+  if (r.target.empty()) throw std::invalid_argument("a design loop needs a target (tool/surface)");
+  if (r.surface.empty())
+    throw std::invalid_argument("a design loop needs the surface its stylus is for");
+  if (r.space_file.empty())
+    throw std::invalid_argument("a design loop needs a space with a descriptor map to place its prints in");
+  if (r.max_rounds < 1 || r.max_rounds > kMostLoopRounds)
+    throw std::invalid_argument(
+        fmt::format("rounds: {}: expected 1 to {}", r.max_rounds, kMostLoopRounds));
+  if (r.first_material == r.second_material)
+    throw std::invalid_argument("the loop's mix needs two different materials, not " +
+                                r.first_material + " twice");
+}
 
 fs::path loop_request_file(const fs::path& folder) { return folder / "loop.json"; }
 fs::path round_folder(const fs::path& folder, int round) {

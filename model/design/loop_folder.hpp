@@ -58,6 +58,10 @@ std::filesystem::path round_session_folder(const std::filesystem::path& folder, 
 std::filesystem::path round_measurement_file(const std::filesystem::path& folder, int round);
 std::filesystem::path round_forcing_file(const std::filesystem::path& folder, int round);
 
+// Throws std::invalid_argument naming what a new loop lacks or has wrong (no target, surface or
+// space; rounds outside 1 to kMostLoopRounds; one material twice in the mix). Every face's check.
+void check_loop_request(const LoopRequest& request);
+
 // Throw std::runtime_error naming the file when it cannot be written.
 void write_loop_request(const std::filesystem::path& folder, const LoopRequest& request);
 void write_round(const std::filesystem::path& folder, const LoopRoundRecord& round);

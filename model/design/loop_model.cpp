@@ -82,10 +82,6 @@ void LoopModel::add_print(const DesignPoint& point, const io::Pairing& measured)
   rebuild();
 }
 
-LoopPrediction LoopModel::predict(const DesignPoint& point) const {
-  return predict_in_loop(context(), *discrepancy_, predict_uncorrected(point));
-}
-
 Proposal LoopModel::propose() const {
   const Predict predict = [this](const DesignPoint& p) { return predict_uncorrected(p); };
   std::vector<DesignPoint> printed;

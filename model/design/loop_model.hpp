@@ -58,7 +58,6 @@ class LoopModel {
   void add_print(const DesignPoint& point, const io::Pairing& measured);
 
   Proposal propose() const;
-  LoopPrediction predict(const DesignPoint& point) const;
   // The prediction of the model alone (the refit, without the prints' correction).
   PredictedTool predict_uncorrected(const DesignPoint& point) const;
   LoopStop stop(const Proposal* next) const;

@@ -26,18 +26,6 @@ LoopStop stop_named(const std::string& text) {
   return LoopStop::none;
 }
 
-void check_request(const LoopRequest& r) {
-  if (r.target.empty()) throw std::invalid_argument("a design loop needs a target (tool/surface)");
-  if (r.surface.empty())
-    throw std::invalid_argument("a design loop needs the surface its stylus is for");
-  if (r.max_rounds < 1 || r.max_rounds > kMostLoopRounds)
-    throw std::invalid_argument(
-        fmt::format("rounds: {}: expected 1 to {}", r.max_rounds, kMostLoopRounds));
-  if (r.first_material == r.second_material)
-    throw std::invalid_argument("the loop's mix needs two different materials, not " +
-                                r.first_material + " twice");
-}
-
 }  // namespace
 
 std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
@@ -55,7 +43,7 @@ std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
     if (fs::exists(folder) && !fs::is_empty(folder))
       throw std::invalid_argument(folder.string() +
                                   " is not empty: a new design loop needs a new or empty folder");
-    check_request(*request);
+    check_loop_request(*request);
     s->request_ = std::move(*request);
   } else {
     if (!exists)

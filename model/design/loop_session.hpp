@@ -40,9 +40,6 @@ class LoopSession {
   const LoopRequest& request() const { return request_; }
   const std::vector<LoopRoundRecord>& rounds() const { return rounds_; }
   double threshold() const { return loop_->setup().threshold; }
-  const space::SpaceFile& space() const { return space_; }
-  const space::Placement& target() const { return loop_->setup().target; }
-  const LoopModel& model() const { return *loop_; }
 
   // The last round, when its print has not been measured yet.
   std::optional<int> awaiting_measurement() const;

@@ -60,8 +60,6 @@ class PrintDiscrepancy {
   PrintDiscrepancy(DiscrepancyPrior prior, std::vector<PrintResidual> prints);
 
   DescriptorCorrection at(const DesignPoint& point) const;
-  const DiscrepancyPrior& prior() const { return prior_; }
-  std::size_t prints() const { return prints_.size(); }
   double model_error_scale() const { return scale_; }
 
  private:

@@ -52,6 +52,9 @@ struct ToolSoundOptions {
 // tool needs it: the stylus's modes once for all catalog tools (from the user cache where another
 // process solved them, stylus_modes.hpp), the forcing model read (or fitted) once for all design
 // points.
+// Whether a tool name is a design point ("DM85:0.5,vero:0.5,tip=2mm") rather than a catalog id.
+bool names_design_point(const std::string& tool);
+
 class ToolSounds {
  public:
   explicit ToolSounds(ToolSoundOptions options);  // reads the catalog; throws naming a bad one

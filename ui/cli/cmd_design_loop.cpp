@@ -54,10 +54,6 @@ struct LoopOptions {
 };
 
 design::LoopRequest loop_request(const LoopOptions& o) {
-  for (const auto& [name, value] : {std::pair<const char*, bool>{"--target", o.target.empty()},
-                                    {"--surface", o.surface.empty()},
-                                    {"--space", o.space_file.empty()}})
-    if (value) throw CLI::ValidationError(name, "is required for a new loop (or give --resume)");
   design::LoopRequest r;
   r.target = o.target;
   r.surface = o.surface;
@@ -76,6 +72,12 @@ design::LoopRequest loop_request(const LoopOptions& o) {
     throw CLI::ValidationError("--rule", e.what());
   }
   r.max_rounds = o.rounds;
+  // The library's check, as a usage error: a new loop's --target, --surface, --space.
+  try {
+    design::check_loop_request(r);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("design loop", std::string(e.what()) + " (or give --resume)");
+  }
   return r;
 }
 

@@ -65,12 +65,10 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
       throw std::invalid_argument(
           "resume: the loop keeps what its loop.json says; give no target, surface or space");
   } else {
-    if (!target || !surface || !space)
-      throw std::invalid_argument("a new loop needs target, surface and space (or resume=True)");
     design::LoopRequest r;
-    r.target = *target;
-    r.surface = *surface;
-    r.space_file = *space;
+    r.target = target.value_or("");
+    r.surface = surface.value_or("");
+    r.space_file = space.value_or(std::filesystem::path());
     r.catalog_file = catalog.value_or(std::filesystem::path());
     r.forcing = forcing.value_or("");
     r.printer = printer.value_or("");
@@ -78,6 +76,7 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
     r.second_material = design::catalog_material_name(mix.second);
     r.rule = design::parse_next_print_rule(rule);
     r.max_rounds = rounds;
+    design::check_loop_request(r);  // before the long call: what a new loop lacks, named
     request = r;
   }
   LoopResult out;

@@ -14,6 +14,7 @@
 #include "model/design/default_space.hpp"
 #include "model/design/loop_model.hpp"
 #include "model/design/print_discrepancy.hpp"
+#include "tests/model/design/fem/loop_world.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -109,21 +110,12 @@ TEST(DesignLoopOnThePapersRecordings, EndsWithTheGridsNearestPrintWithinHalfTheG
     std::printf("%-8s best print %.2f ± %.2f (threshold %.2f):", target_pairing.tool.c_str(), best,
                 tell_apart, threshold);
     for (const auto rule : rules) {
-      LoopSetup setup;
-      setup.inputs = inputs.get();
-      setup.catalog_exemplars = held.exemplars;
-      setup.grid = &grid;
-      setup.map = &map;
+      LoopSetup setup =
+          test::world_loop_setup(*inputs, held.exemplars, grid, map, surface, threshold, noise);
       setup.target = target;
-      setup.surface = surface;
-      setup.range.first_material = "vero";
-      setup.range.second_material = "DM85";
       setup.candidates = candidates;
       setup.rule = rule;
-      setup.threshold = threshold;
-      setup.measurement_noise = noise;
       setup.max_rounds = static_cast<int>(candidates.size());
-      setup.samples = 1000;
       LoopModel loop(setup);
       Proposal next = loop.propose();
       int found = 0;

@@ -89,9 +89,6 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
       {"corrected, optimum", NextPrintRule::predicted_optimum, true},
       {"corrected, likeliest", NextPrintRule::likeliest_within_threshold, true}};
   std::map<std::string, std::vector<LoopOutcome>> outcomes;
-  RangeSearchOptions range;
-  range.first_material = "vero";
-  range.second_material = "DM85";
 
   const int worlds = 4, targets_per_world = 10;
   for (int w = 0; w < worlds; ++w) {
@@ -108,20 +105,12 @@ TEST(DesignLoopWorld, ReachesMostTargetsTheOpenLoopPrintMissesWithinThreeRounds)
       const space::Placement target =
           space::place_from_descriptors(map, measured_descriptors(map, target_pairing));
       for (const auto& variant : variants) {
-        LoopSetup setup;
-        setup.inputs = inputs.get();
-        setup.catalog_exemplars = forcing_inputs.exemplars;
-        setup.grid = &grid;
-        setup.map = &map;
+        LoopSetup setup = test::world_loop_setup(*inputs, forcing_inputs.exemplars, grid, map,
+                                                 surface, threshold, noise);
         setup.target = target;
-        setup.surface = surface;
-        setup.range = range;
         setup.rule = variant.rule;
-        setup.threshold = threshold;
-        setup.measurement_noise = noise;
         setup.max_rounds = kWorldRounds;
         setup.correct_by_prints = variant.correct_by_prints;
-        setup.samples = 1000;
         LoopModel loop(setup);
         std::mt19937_64 rig(7000 + 100 * w + t);  // the same measurement noise for every variant
         LoopOutcome outcome;

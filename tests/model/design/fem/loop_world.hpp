@@ -8,11 +8,13 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "model/design/design_loop.hpp"
 #include "model/design/design_response_grid.hpp"
+#include "model/design/loop_model.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/forcing/forcing_inputs.hpp"
 #include "model/forcing/hermite_curve.hpp"
@@ -134,6 +136,27 @@ inline io::Pairing measure_in_world(const LoopWorld& world, const GridAxes& axes
   io::Pairing pairing = predicted_pairing(tool, "the catalog's");
   pairing.tool = "print " + to_string(point);
   return pairing;
+}
+
+// A loop over the vero–DM85 range on `surface` as the world's tests run it (1,000 draws per
+// chance); each test sets its target, rule, rounds and candidates.
+inline LoopSetup world_loop_setup(const PredictionInputs& inputs,
+                                  std::span<const forcing::ForcingExemplar> exemplars,
+                                  const DesignResponseGrid& grid, const space::DescriptorMap& map,
+                                  const std::string& surface, double threshold,
+                                  const Eigen::MatrixXd& noise) {
+  LoopSetup setup;
+  setup.inputs = &inputs;
+  setup.catalog_exemplars = exemplars;
+  setup.grid = &grid;
+  setup.map = &map;
+  setup.surface = surface;
+  setup.range.first_material = "vero";
+  setup.range.second_material = "DM85";
+  setup.threshold = threshold;
+  setup.measurement_noise = noise;
+  setup.samples = 1000;
+  return setup;
 }
 
 }  // namespace nibrig::model::design::test
