@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/io/paper_friction.hpp"
 #include "model/io/paper_vibration.hpp"
 #include "model/io/rig_session.hpp"
 #include "model/measure/step_segmentation.hpp"
@@ -120,14 +121,41 @@ Recording from_paper_recording(const std::filesystem::path& file) {
   return r;
 }
 
+// The friction run's forces on the frames, sample by sample at the frames' times; the tool rests
+// (no drag) once the run has ended.
+void play_friction_beside(Recording& r, const std::filesystem::path& file) {
+  const model::io::FrictionRecording friction = model::io::read_paper_friction(file);
+  RigDescription& d = r.description;
+  if (friction.name.surface != d.surface)
+    throw std::invalid_argument(file.string() + ": a friction recording on '" +
+                                friction.name.surface + "' beside a vibration recording on '" +
+                                d.surface + "'");
+  d.normal_load_N = friction.name.normal_load_N;
+  for (std::size_t k = 0; k < r.frames.size(); ++k) {
+    const auto j = static_cast<std::size_t>(
+        std::floor(static_cast<double>(k) * friction.sample_rate_hz / d.frame_rate_hz));
+    SensorFrame& f = r.frames[k];
+    f.normal_force_N = static_cast<float>(d.normal_load_N);
+    f.tangential_force_N = j < friction.tangential_force_N.size()
+                               ? static_cast<float>(friction.tangential_force_N[j])
+                               : 0.0f;
+  }
+  d.name += " with the forces of " + file.filename().string();
+}
+
 }  // namespace
 
-ReplayRig::ReplayRig(const std::filesystem::path& source, double speedup)
+ReplayRig::ReplayRig(const std::filesystem::path& source, double speedup,
+                     const std::filesystem::path& friction)
     : pacer_(speedup, 1.0) {
   if (!std::filesystem::exists(source))
     throw std::invalid_argument(source.string() + ": no such session or recording to replay");
-  Recording r = std::filesystem::is_directory(source) ? from_session(source)
-                                                      : from_paper_recording(source);
+  const bool session = std::filesystem::is_directory(source);
+  if (session && !friction.empty())
+    throw std::invalid_argument(friction.string() +
+                                ": a session replays its own forces, not a friction recording's");
+  Recording r = session ? from_session(source) : from_paper_recording(source);
+  if (!friction.empty()) play_friction_beside(r, friction);
   description_ = std::move(r.description);
   description_.kind = "replay";
   frames_ = std::move(r.frames);

@@ -2,7 +2,9 @@
 // turntable recordings with the speed steps found in its signal (model/measure/step_segmentation).
 // Everything downstream — capture, measurement, live comparison — cannot tell it from a live rig,
 // which is what makes a recorded afternoon at the turntable reusable, and what tests the chain
-// against the catalog: a paper recording replayed and measured gives the catalog's spectrum.
+// against the catalog: a paper recording replayed and measured gives the catalog's spectrum. The
+// paper recorded vibration and friction in separate runs; a vibration recording replayed with its
+// friction recording plays that run's forces beside it, so the session measures μ too.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +21,10 @@ class ReplayRig final : public Rig {
   // `source`: a session folder (finished or .partial) or a paper vibration recording
   // (arm_*.csv[.gz]). Throws model::io::FormatError naming the file for a bad recording and
   // std::invalid_argument for a session without speed or a recording whose steps are not found.
-  ReplayRig(const std::filesystem::path& source, double speedup);
+  // `friction`: a paper friction recording whose forces the frames carry from the start (at rest
+  // after it ends); only beside a paper vibration recording (a session has its own forces).
+  ReplayRig(const std::filesystem::path& source, double speedup,
+            const std::filesystem::path& friction = {});
 
   const RigDescription& description() const override { return description_; }
   // What the recording's motor was asked to do (its steps, or the session's stored profile; for a

@@ -78,7 +78,7 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
                                             request.tool, request.surface);
     }
     case RigKind::replay:
-      return std::make_unique<ReplayRig>(request.replay, request.speedup);
+      return std::make_unique<ReplayRig>(request.replay, request.speedup, request.replay_friction);
     case RigKind::usb: {
       UsbRigSettings settings;
       settings.controller.serial = request.usb_serial;

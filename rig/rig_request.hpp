@@ -49,6 +49,7 @@ struct RigRequest {
   // 1 = real time; k > 1 = k times faster; 0 = as fast as it computes (simulated and replay rigs).
   double speedup = 1.0;
   std::filesystem::path replay;  // a session folder, or a paper recording (replay rig)
+  std::filesystem::path replay_friction;  // a paper friction recording played beside `replay`
   std::string usb_serial;        // empty: the only controller on the bus
   std::string input_api;         // the accelerometer's audio back end (USB rig); empty: any
   std::string input_device;      // the accelerometer's audio input (USB rig)
