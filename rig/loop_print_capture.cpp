@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "model/design/design_search.hpp"
 #include "model/numeric/cancellation.hpp"
 
 namespace nibrig::rig {
@@ -20,7 +21,31 @@ fs::path kept_aside(const fs::path& folder, const std::string& why) {
   }
 }
 
+// The replay rig's recordings of the round's print.
+void replay_the_print(RigRequest& request, const std::vector<RecordedPrint>& prints,
+                      const model::design::DesignPoint& design) {
+  for (const auto& p : prints)
+    if (model::design::same_design(p.design, design)) {
+      request.replay = p.vibration;
+      request.replay_friction = p.friction;
+      return;
+    }
+  throw std::invalid_argument("the replay rig has no recording of the print " +
+                              model::design::label(design));
+}
+
 }  // namespace
+
+LoopCaptureOptions replay_recorded_prints(const fs::path& folder,
+                                          const model::design::LoopRequest& loop, double speedup) {
+  LoopCaptureOptions c;
+  c.rig.kind = RigKind::replay;
+  c.rig.speedup = speedup;
+  c.recorded_prints =
+      find_recorded_prints(folder, loop.surface, {loop.first_material, loop.second_material});
+  c.profile.clear();  // a replay runs what was recorded
+  return c;
+}
 
 LoopCapture measure_loop_round(model::design::LoopSession& session,
                                const LoopCaptureOptions& options) {
@@ -35,6 +60,8 @@ LoopCapture measure_loop_round(model::design::LoopSession& session,
     RigRequest request = options.rig;
     request.tool = model::design::to_string(session.rounds().back().design);
     request.surface = session.request().surface;
+    if (request.kind == RigKind::replay)
+      replay_the_print(request, options.recorded_prints, session.rounds().back().design);
     model::design::ToolSounds sounds(options.sounds);
     OpenedRig opened =
         open_rig_with_profile(request, sounds, options.profile, "steps", options.seconds);

@@ -13,12 +13,16 @@
 #include "model/design/loop_session.hpp"
 #include "model/design/tool_sound.hpp"
 #include "rig/capture.hpp"
+#include "rig/recorded_prints.hpp"
 #include "rig/rig_request.hpp"
 
 namespace nibrig::rig {
 
 struct LoopCaptureOptions {
   RigRequest rig;  // which rig and how; its tool and surface are set to the round's print
+  // The replay rig's prints: the round's print is its recordings replayed (rig.replay is set to
+  // them), so its loop proposes only these (LoopRequest::candidates).
+  std::vector<RecordedPrint> recorded_prints;
   // The simulated rig's print: a design point played with this forcing model (a lab's stored one
   // or a file, standing for the prints as made); empty: the loop's starting model.
   model::design::ToolSoundOptions sounds;
@@ -33,9 +37,16 @@ struct LoopCapture {
   std::optional<CaptureResult> capture;  // none: a session already captured was analysed
 };
 
-// Throws std::logic_error when no round awaits a measurement, what opening the rig and capturing
-// throw, and std::runtime_error when the capture ended before its profile did (the session is kept
-// and the round still awaits its measurement).
+// The options that measure each print by replaying its recordings found under `folder` for the
+// loop's surface and materials (find_recorded_prints; throws what it throws), `speedup` as a
+// replay's.
+LoopCaptureOptions replay_recorded_prints(const std::filesystem::path& folder,
+                                          const model::design::LoopRequest& loop, double speedup);
+
+// Throws std::logic_error when no round awaits a measurement, std::invalid_argument when the replay
+// rig has no recording of the round's print, what opening the rig and capturing throw, and
+// std::runtime_error when the capture ended before its profile did (the session is kept and the
+// round still awaits its measurement).
 LoopCapture measure_loop_round(model::design::LoopSession& session,
                                const LoopCaptureOptions& options);
 

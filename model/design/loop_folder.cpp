@@ -45,6 +45,15 @@ void check_loop_request(const LoopRequest& r) {
   if (r.first_material == r.second_material)
     throw std::invalid_argument("the loop's mix needs two different materials, not " +
                                 r.first_material + " twice");
+  for (const auto& c : r.candidates) {
+    validate(c);
+    for (const auto& share : c.mix)
+      if (share.fraction > 0 && share.material != r.first_material &&
+          share.material != r.second_material)
+        throw std::invalid_argument("candidate " + label(c) + ": " + share.material +
+                                    " is not in the loop's mix of " + r.first_material + " and " +
+                                    r.second_material);
+  }
 }
 
 fs::path loop_request_file(const fs::path& folder) { return folder / "loop.json"; }
@@ -68,17 +77,21 @@ fs::path round_forcing_file(const fs::path& folder, int round) {
 }
 
 void write_loop_request(const fs::path& folder, const LoopRequest& r) {
-  const nlohmann::json j{{"format", kLoopFormat},
-                         {"version", kLoopFileVersion},
-                         {"target", r.target},
-                         {"surface", r.surface},
-                         {"space", r.space_file.string()},
-                         {"catalog", r.catalog_file.string()},
-                         {"forcing", r.forcing},
-                         {"printer", r.printer},
-                         {"mix", {r.first_material, r.second_material}},
-                         {"rule", rule_name(r.rule)},
-                         {"max_rounds", r.max_rounds}};
+  nlohmann::json j{{"format", kLoopFormat},
+                   {"version", kLoopFileVersion},
+                   {"target", r.target},
+                   {"surface", r.surface},
+                   {"space", r.space_file.string()},
+                   {"catalog", r.catalog_file.string()},
+                   {"forcing", r.forcing},
+                   {"printer", r.printer},
+                   {"mix", {r.first_material, r.second_material}},
+                   {"rule", rule_name(r.rule)},
+                   {"max_rounds", r.max_rounds}};
+  if (!r.candidates.empty()) {
+    nlohmann::json& candidates = j["candidates"] = nlohmann::json::array();
+    for (const auto& c : r.candidates) candidates.push_back(to_string(c));
+  }
   fs::create_directories(folder);
   io::write_file_atomically(loop_request_file(folder), io::json_text(j, loop_request_file(folder)));
 }
@@ -105,6 +118,17 @@ LoopRequest read_loop_request(const fs::path& folder) {
   }
   r.max_rounds = static_cast<int>(fields::as_integer(fields::member(j, "max_rounds", file, ""),
                                                      file, "max_rounds", 1, kMostLoopRounds));
+  if (j.contains("candidates")) {
+    const auto& candidates = fields::as_array(j.at("candidates"), file, "candidates");
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const std::string where = fields::element_path("candidates", i);
+      try {
+        r.candidates.push_back(parse_design_point(fields::as_string(candidates[i], file, where)));
+      } catch (const std::invalid_argument& e) {
+        throw io::FormatError(file, fields::place(where), e.what());
+      }
+    }
+  }
   return r;
 }
 

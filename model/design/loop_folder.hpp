@@ -30,6 +30,10 @@ struct LoopRequest {
   std::string first_material = "vero", second_material = "DM85";  // the range's mix
   NextPrintRule rule = kDefaultNextPrintRule;
   int max_rounds = kDefaultLoopRounds;
+  // The only designs the loop may print (empty: any in the range), e.g. prints recorded already
+  // (rig/recorded_prints.hpp). The catalog's own measurements of them on the loop's surface are
+  // left out of its starting model, so that it learns them from its prints and not twice.
+  std::vector<DesignPoint> candidates;
 };
 
 struct LoopMeasuredRecord {
@@ -59,7 +63,8 @@ std::filesystem::path round_measurement_file(const std::filesystem::path& folder
 std::filesystem::path round_forcing_file(const std::filesystem::path& folder, int round);
 
 // Throws std::invalid_argument naming what a new loop lacks or has wrong (no target, surface or
-// space; rounds outside 1 to kMostLoopRounds; one material twice in the mix). Every face's check.
+// space; rounds outside 1 to kMostLoopRounds; one material twice in the mix; a candidate of
+// another material). Every face's check.
 void check_loop_request(const LoopRequest& request);
 
 // Throw std::runtime_error naming the file when it cannot be written.

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "model/catalog/catalog_builder.hpp"
 #include "model/design/design_grid_file.hpp"
+#include "model/design/design_search.hpp"
 #include "model/design/print_discrepancy.hpp"
 #include "model/design/printability.hpp"
 #include "model/design/stylus_export.hpp"
@@ -91,7 +93,21 @@ void LoopSession::load(const numeric::StepProgress& progress) {
       options, [&](const forcing::DesignResponse&, std::size_t done, std::size_t total) {
         if (designs) designs(done, total);
       });
-  inputs_ = load_prediction_inputs(options, r.forcing);
+  if (r.candidates.empty()) {
+    inputs_ = load_prediction_inputs(options, r.forcing);
+  } else {
+    // The candidates' own measurements on the surface leave the start: the loop learns them from
+    // its prints. The default model is fitted again without them; a given model is taken as it is.
+    std::erase_if(forcing_inputs_.exemplars, [&](const forcing::ForcingExemplar& e) {
+      if (e.surface != r.surface || !e.mix.empty()) return false;
+      const DesignPoint measured{{{e.material, 1.0}}, e.tip_diameter_m};
+      return std::any_of(r.candidates.begin(), r.candidates.end(),
+                         [&](const DesignPoint& c) { return same_design(c, measured); });
+    });
+    std::optional<forcing::ForcingModel> start;
+    if (r.forcing.empty()) start = forcing::fit_forcing_for_prediction(forcing_inputs_).model;
+    inputs_ = load_prediction_inputs(options, r.forcing, start);
+  }
   space::StimulusLocator locator(space_, r.space_file, inputs_->catalog_file);
   space::Placement target;
   try {
@@ -116,6 +132,7 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   setup.range.second_material = r.second_material;
   setup.range.min_tip_m = axes.tips_m.front();
   setup.range.max_tip_m = axes.tips_m.back();
+  setup.candidates = r.candidates;
   setup.rule = r.rule;
   setup.threshold =
       just_noticeable_distance(space_.model, static_cast<std::size_t>(space_.coordinates.rows()));

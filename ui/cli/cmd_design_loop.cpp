@@ -42,6 +42,7 @@ struct LoopOptions {
   bool resume = false;
   bool simulated = false;
   std::optional<std::string> usb;
+  std::filesystem::path replay_prints;
   std::filesystem::path simulated_forcing;
   unsigned seed = 1;
   double speedup = 0.0;
@@ -81,7 +82,14 @@ design::LoopRequest loop_request(const LoopOptions& o) {
   return r;
 }
 
-std::optional<rig::LoopCaptureOptions> capture_options(const LoopOptions& o) {
+std::optional<rig::LoopCaptureOptions> capture_options(const LoopOptions& o,
+                                                       const design::LoopRequest& loop) {
+  if (!o.replay_prints.empty()) {
+    auto c = rig::replay_recorded_prints(o.replay_prints, loop, o.speedup);
+    c.seconds = o.seconds;
+    c.cancel = &interrupt_requested();
+    return c;
+  }
   if (!o.simulated && !o.usb) return std::nullopt;
   rig::LoopCaptureOptions c;
   c.rig.kind = o.usb ? rig::RigKind::usb : rig::RigKind::simulated;
@@ -143,8 +151,14 @@ void print_rounds(const design::LoopSession& s) {
 
 void run_loop(const LoopOptions& o) {
   std::optional<design::LoopRequest> request;
-  if (!o.resume) request = loop_request(o);
-  auto capture = capture_options(o);
+  std::optional<rig::LoopCaptureOptions> capture;
+  if (!o.resume) {
+    request = loop_request(o);
+    capture = capture_options(o, *request);
+    // Replayed prints are the only ones the loop can measure: it proposes nothing else.
+    if (capture && !capture->recorded_prints.empty())
+      request->candidates = rig::designs_of(capture->recorded_prints);
+  }
   std::string step_shown;
   std::function<void(std::size_t, std::size_t)> bar;
   auto session = design::LoopSession::open(
@@ -153,6 +167,7 @@ void run_loop(const LoopOptions& o) {
         if (done > 0 && total > 0) bar(done, total);
       });
   const auto& r = session->request();
+  if (o.resume) capture = capture_options(o, r);
   std::printf(
       "target %s, stylus for %s over %s-%s x tips; threshold %.3f (the space's just-noticeable "
       "distance); rule: %s; at most %d rounds\n",
@@ -202,7 +217,9 @@ void add_design_loop_command(CLI::App* design_cmd, std::shared_ptr<const GlobalO
       "than\n"
       "the nearest print, or at --rounds. --rule likeliest (the default) prints the design "
       "likeliest\n"
-      "to land within that distance; optimum, the predicted optimum.");
+      "to land within that distance; optimum, the predicted optimum. --replay-prints FOLDER\n"
+      "stands the paper's recorded prints in for printing (e.g. ../shared/data/piovarci2018): the\n"
+      "loop proposes only those, and replays each one's vibration and friction recordings.");
   cmd->add_option("--target", o->target, "Target tool as tool/surface (e.g. cryon/office)");
   cmd->add_option("--surface", o->surface, "Surface the stylus is for (glass, protector, ...)");
   cmd->add_option("--space", o->space_file, "Fitted space with a descriptor map (space fit)");
@@ -227,18 +244,25 @@ void add_design_loop_command(CLI::App* design_cmd, std::shared_ptr<const GlobalO
              "--usb", [o](const std::string& serial) { o->usb = serial; },
              "Measure each print on the USB rig controller (by serial; alone: the only one)")
           ->expected(0, 1);
-  simulated->excludes(usb);
+  auto* replay = cmd->add_option("--replay-prints", o->replay_prints,
+                                 "Measure each print by replaying its recordings found in this "
+                                 "folder (the paper's: vibration and friction); the loop proposes "
+                                 "only the prints recorded");
+  simulated->excludes(usb)->excludes(replay);
+  usb->excludes(replay);
   cmd->add_option("--simulated-forcing", o->simulated_forcing,
                   "The forcing model the simulated rig's prints play (default: the loop's own)")
       ->needs(simulated);
   cmd->add_option("--seed", o->seed, "Seed of the simulated rig's noise")->check(any_seed());
   cmd->add_option("--speedup", o->speedup,
-                  "Simulated rig: 1 = real time, k = k times faster, 0 = as fast as it computes")
+                  "Simulated and replayed prints: 1 = real time, k = k times faster, 0 = as fast "
+                  "as it computes")
       ->capture_default_str()
       ->check(
           off_or_in_range(rig::Pacer::kMinSpeedup, rig::Pacer::kMaxSpeedup, "a speed-up factor"));
   cmd->add_option("--profile", o->profile, "The rig's speed profile (as rig capture)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->excludes(replay);
   cmd->add_option_function<double>(
          "--seconds", [o](const double& s) { o->seconds = s; },
          "Length of each capture (default: the profile's)")

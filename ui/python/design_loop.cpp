@@ -58,8 +58,13 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
                     const std::optional<std::string>& forcing,
                     const std::optional<std::string>& printer, bool simulated,
                     const std::optional<std::filesystem::path>& simulated_forcing, unsigned seed,
-                    const std::optional<double>& seconds, const py::object& progress) {
+                    const std::optional<double>& seconds,
+                    const std::optional<std::filesystem::path>& replay_prints,
+                    const py::object& progress) {
+  if (simulated && replay_prints)
+    throw std::invalid_argument("simulated, replay_prints: measure the prints one way, not both");
   std::optional<design::LoopRequest> request;
+  std::optional<rig::LoopCaptureOptions> capture;
   if (resume) {
     if (target || surface || space)
       throw std::invalid_argument(
@@ -77,6 +82,11 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
     r.rule = design::parse_next_print_rule(rule);
     r.max_rounds = rounds;
     design::check_loop_request(r);  // before the long call: what a new loop lacks, named
+    if (replay_prints) {
+      // Replayed prints are the only ones the loop can measure: it proposes nothing else.
+      capture = rig::replay_recorded_prints(*replay_prints, r, 0.0);
+      r.candidates = rig::designs_of(capture->recorded_prints);
+    }
     request = r;
   }
   LoopResult out;
@@ -85,7 +95,12 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
         std::atomic<bool> cancel{false};
         const std::stop_callback on_stop(stop, [&] { cancel.store(true); });
         auto session = design::LoopSession::open(folder, request, report);
-        std::optional<rig::LoopCaptureOptions> capture;
+        if (replay_prints && !capture)
+          capture = rig::replay_recorded_prints(*replay_prints, session->request(), 0.0);
+        if (capture) {
+          capture->seconds = seconds;
+          capture->cancel = &cancel;
+        }
         if (simulated) {
           capture.emplace();
           capture->rig.kind = rig::RigKind::simulated;
@@ -153,14 +168,18 @@ void add_design_loop(py::module_ m) {
         py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
         py::arg("printer") = py::none(), py::arg("simulated") = false,
         py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1,
-        py::arg("seconds") = py::none(), py::arg("progress") = py::none(),
+        py::arg("seconds") = py::none(), py::arg("replay_prints") = py::none(),
+        py::arg("progress") = py::none(),
         "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) "
         "on surface in "
         "space, or resume=True. Runs as far as it goes here: with simulated=True each print is "
         "measured on the "
         "simulated rig (its prints playing simulated_forcing, default the loop's model); without, "
         "it stops at a "
-        "round awaiting its print's measurement. Releases the GIL; Ctrl-C stops it between steps.");
+        "round awaiting its print's measurement. replay_prints (a folder of the paper's "
+        "recordings) stands the prints recorded there in for printing: the loop proposes only "
+        "those and replays each one's vibration and friction recordings. Releases the GIL; "
+        "Ctrl-C stops it between steps.");
 }
 
 }  // namespace nibrig::ui::python

@@ -7,11 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
+#include "model/design/design_search.hpp"
+#include "model/design/loop_folder.hpp"
 #include "model/design/print_discrepancy.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
+#include "model/io/format_error.hpp"
 #include "model/space/catalog_descriptors.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -155,5 +161,43 @@ TEST(LoopStop, SaysWhyWithinTheThresholdThenNoUntriedDesignWorthAPrintThenTheRou
   EXPECT_THROW(parse_next_print_rule("best"), std::invalid_argument);
 }
 
+// A loop's candidates are kept in loop.json and read back as the same designs; one of a material
+// outside the loop's mix is refused by name, and a file's malformed candidate names its place.
+TEST(LoopFolder, ARequestsCandidatesAreKeptAndOnesOutsideItsMixRefused) {
+  LoopRequest r;
+  r.target = "DM952/glass";
+  r.surface = "glass";
+  r.space_file = "space.json";
+  r.candidates = {loop_test_point(0, 1), loop_test_point(1, 4), loop_test_point(0.25, 2)};
+  check_loop_request(r);
+  const auto folder = nibrig::test::scratch_dir("loop_folder_candidates");
+  write_loop_request(folder, r);
+  const LoopRequest back = read_loop_request(folder);
+  ASSERT_EQ(back.candidates.size(), r.candidates.size());
+  for (std::size_t i = 0; i < r.candidates.size(); ++i)
+    EXPECT_TRUE(same_design(back.candidates[i], r.candidates[i])) << i;
+
+  LoopRequest other = r;
+  other.candidates.push_back(parse_design_point("DM95,tip=2mm"));
+  try {
+    check_loop_request(other);
+    ADD_FAILURE() << "a DM95 candidate in a vero-DM85 loop was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("DM95"), std::string::npos) << e.what();
+  }
+  // The second candidate's text cut short, as a hand edit might leave it.
+  std::ifstream in(loop_request_file(folder));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string second = "\"" + to_string(r.candidates[1]) + "\"";
+  ASSERT_NE(text.find(second), std::string::npos) << text;
+  text.replace(text.find(second), second.size(), "\"vero,tip=\"");
+  std::ofstream(loop_request_file(folder)) << text;
+  try {
+    read_loop_request(folder);
+    ADD_FAILURE() << "a malformed candidate was read";
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("candidates[1]"), std::string::npos) << e.what();
+  }
+}
 }  // namespace
 }  // namespace nibrig::model::design

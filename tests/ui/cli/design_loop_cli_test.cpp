@@ -11,9 +11,13 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "model/catalog/analysis.hpp"
+#include "model/design/design_point.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "model/io/catalog_file.hpp"
+#include "model/io/paper_friction.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/space_file.hpp"
 #include "tests/support/test_paths.hpp"
@@ -63,9 +67,9 @@ fs::path write_quieter_dm85(const fs::path& root) {
   return file;
 }
 
-// The distance a round reports, recomputed from what it kept: the measurement's μ and weighted
-// mean through the map's coefficients, to the target's place (DM952 on glass, from the catalog).
-double distance_by_hand(const fs::path& space_file, const fs::path& measurement) {
+// The space's map applied by hand: a pairing's μ and weighted mean through the map's
+// coefficients, and its distance to the target's place (DM952 on glass, from the catalog).
+double distance_of(const fs::path& space_file, const model::io::Pairing& measured) {
   const auto space = model::space::read_space_file(space_file);
   const auto& map = *space.descriptor_map;
   const auto place = [&](double mu, double weighted_mean) {
@@ -79,8 +83,12 @@ double distance_by_hand(const fs::path& space_file, const fs::path& measurement)
   for (const auto& p : catalog.pairings)
     if (p.tool == "DM952" && p.surface == "glass")
       target = place(p.friction->mu, p.vibration->weighted_mean);
-  const auto measured = model::io::read_catalog(measurement).pairings.at(0);
   return (place(measured.friction->mu, measured.vibration->weighted_mean) - target).norm();
+}
+
+// The distance a round reports, recomputed from the measurement it kept.
+double distance_by_hand(const fs::path& space_file, const fs::path& measurement) {
+  return distance_of(space_file, model::io::read_catalog(measurement).pairings.at(0));
 }
 
 // Each measured round's files, and its reported distance against the one recomputed by hand
@@ -180,6 +188,81 @@ TEST(DesignLoopCli, ALabMeasuresEachPrintItselfAndResumesKeepingAKilledCaptureAs
             0);
   EXPECT_TRUE(fs::exists(loop / "round-2" / "session-interrupted-1" / "session.json"));
   expect_measured_round(loop, space, 2);
+}
+
+// The paper's recorded prints stand in for printing: the loop proposes only the VeroClear and DM85
+// prints recorded on glass, starts from a model without their own measurements, and takes each
+// round's print in as its two recordings replayed on the rig.
+TEST(DesignLoopCli, ThePapersRecordedPrintsStandInForPrinting) {
+  const auto root = nibrig::test::scratch_dir("cli_design_loop_replay");
+  const auto space = write_glass_space(root);
+  const auto data = nibrig::test::shared_data() / "piovarci2018";
+  const auto loop = root / "loop";
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--target", "DM952/glass", "--surface", "glass",
+                           "--space", space.string(), "--rounds", "3", "--replay-prints",
+                           (root / "nothing-recorded").string(), "-o", loop.string()}),
+            1);  // not a folder of recordings
+  EXPECT_FALSE(fs::exists(loop));
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--target", "DM952/glass", "--surface", "glass",
+                           "--space", space.string(), "--rounds", "3", "--replay-prints",
+                           data.string(), "-o", loop.string(), "--speedup", "0"}),
+            0);
+  const auto request = test::read_json(loop / "loop.json");
+  std::vector<std::string> recorded;
+  for (const auto& c : request["candidates"]) recorded.push_back(c.get<std::string>());
+  EXPECT_THAT(recorded, ::testing::UnorderedElementsAre("vero:1,tip=1mm", "vero:1,tip=2mm",
+                                                        "vero:1,tip=4mm", "DM85:1,tip=1mm",
+                                                        "DM85:1,tip=2mm", "DM85:1,tip=4mm"));
+  int rounds = 0;
+  while (fs::exists(loop / ("round-" + std::to_string(rounds + 1)) / "round.json")) ++rounds;
+  ASSERT_GE(rounds, 1);
+  ASSERT_LE(rounds, 3);
+  const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
+  std::set<std::string> printed;
+  for (int r = 1; r <= rounds; ++r) {
+    expect_measured_round(loop, space, r);
+    const auto folder = loop / ("round-" + std::to_string(r));
+    const std::string design = test::read_json(folder / "round.json")["design"];
+    EXPECT_THAT(recorded, ::testing::Contains(design));
+    EXPECT_TRUE(printed.insert(design).second) << design << " printed twice";
+    // The print's recordings by their paper names: <material><tip mm> on glass.
+    const auto point = model::design::parse_design_point(design);
+    const std::string tool =
+        point.mix.front().material + std::to_string(std::lround(point.tip_diameter_m * 1e3));
+    const auto measured = model::io::read_catalog(folder / "measurement.json").pairings.at(0);
+    // μ: the friction run's, as the catalog analysis finds it in the paper's file. The replay
+    // holds the run's samples on the accelerometer's frame clock (the two ~1 kHz rates differ by
+    // up to 0.1 %), which moves μ by about 0.1 %: a fifth of the 95 % interval's half-width.
+    fs::path friction;
+    for (const auto& f : fs::directory_iterator(data / "friction/printed"))
+      if (f.path().filename().string().starts_with(tool + "_glass_")) friction = f.path();
+    ASSERT_FALSE(friction.empty()) << tool;
+    const auto run = model::catalog::analyze_friction(model::io::read_paper_friction(friction), {});
+    EXPECT_NEAR(measured.friction->mu, run.fit.mu, (run.fit.mu_ci_high - run.fit.mu_ci_low) / 10)
+        << design;
+    // Placed where the catalog's own analysis of the same recordings places it: the replay's
+    // session stores float32 samples and the bundled catalog 4 significant digits on a 2 Hz grid.
+    for (const auto& p : catalog.pairings)
+      if (p.tool == tool && p.surface == "glass")
+        EXPECT_NEAR(test::read_json(folder / "round.json")["measured"]["distance"].get<double>(),
+                    distance_of(space, p), 0.01)
+            << design;
+  }
+  // Resumed once it has stopped, it measures and proposes nothing more.
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--replay-prints", data.string(),
+                           "-o", loop.string()}),
+            0);
+  EXPECT_FALSE(fs::exists(loop / ("round-" + std::to_string(rounds + 1))));
+  // The loop started without the recorded prints' own measurements on glass, and took each
+  // round's print in.
+  const auto first = model::forcing::read_forcing_model(loop / "round-1" / "forcing.json");
+  const auto last = model::forcing::read_forcing_model(loop / ("round-" + std::to_string(rounds)) /
+                                                       "forcing.json");
+  EXPECT_EQ(last.exemplar_count(), first.exemplar_count() + static_cast<std::size_t>(rounds - 1));
+  for (const auto& e : last.exemplar_fits)
+    if (e.surface == "glass")
+      for (const char* held : {"vero1", "vero2", "vero4", "DM851", "DM852", "DM854"})
+        EXPECT_NE(e.tool, held);
 }
 
 TEST(DesignLoopCli, TheSearchWithoutALoopStillNeedsItsTarget) {

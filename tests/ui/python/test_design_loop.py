@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import nibrig
+from conftest import shared_data
 
 
 def test_a_loop_waits_for_its_print_then_resumed_on_the_simulated_rig_measures_it(tmp_path):
@@ -43,3 +44,31 @@ def test_a_resumed_loop_takes_no_new_target_and_a_new_one_needs_its_space(tmp_pa
         nibrig.design.loop(tmp_path / "loop", target="cryon/office", surface="glass")
     with pytest.raises(ValueError, match="holds no design loop"):
         nibrig.design.loop(tmp_path / "nothing", resume=True)
+
+
+def test_the_papers_recorded_prints_stand_in_for_printing(tmp_path):
+    space_file = tmp_path / "space.json"
+    nibrig.space.default(bootstrap=20).save(space_file)
+    data = shared_data() / "piovarci2018"
+    with pytest.raises(ValueError, match="one way"):
+        nibrig.design.loop(tmp_path / "both", target="wnylon/glass", surface="glass", space=space_file,
+                           simulated=True, replay_prints=data)
+    folder = tmp_path / "loop"
+    done = nibrig.design.loop(folder, target="wnylon/glass", surface="glass", space=space_file, rounds=2,
+                              replay_prints=data)
+    recorded = {f"{m}:1,tip={t}mm" for m in ("vero", "DM85") for t in (1, 2, 4)}
+    assert set(json.loads((folder / "loop.json").read_text())["candidates"]) == recorded
+    assert done.awaiting is None and done.stopped is not None
+    designs = [r["design"] for r in done.rounds]
+    assert 1 <= len(designs) <= 2 and len(set(designs)) == len(designs) and set(designs) <= recorded
+    for r in done.rounds:
+        # Each print's μ is its paper friction run's (nibrig.measure on the file), to a fifth of the
+        # run's 95 % half-width: the replay holds the force samples on the accelerometer's clock.
+        kept = json.loads((folder / f"round-{r['round']}" / "measurement.json").read_text())
+        mu = kept["pairings"][0]["friction"]["mu"]
+        material, tip = r["design"].split(":1,tip=")
+        (run_file,) = (data / "friction" / "printed").glob(f"{material}{tip[:-2]}_glass_*.csv.gz")
+        run = nibrig.measure.recording(run_file)
+        low, high = run.mu_interval
+        assert mu == pytest.approx(run.mu, abs=(high - low) / 10)
+        assert r["measured_distance"] is not None

@@ -276,6 +276,7 @@ def loop(
     simulated_forcing: Optional[_Path] = None,
     seed: int = 1,
     seconds: Optional[float] = None,
+    replay_prints: Optional[_Path] = None,
     progress: Optional[Callable[[str, int, int], object]] = None,
 ) -> DesignLoop:
     """The design loop of `nibrig design loop` in a folder, run as far as it goes here."""
