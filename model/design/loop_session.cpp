@@ -21,11 +21,57 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The tip the early check of a printer prints the mix's materials at, before the model says its
+// tips: the paper's reference tip, within every printer's smallest.
+constexpr double kReferenceTipForPrinterCheck = 0.002;
+
 LoopStop stop_named(const std::string& text) {
   for (const LoopStop s :
        {LoopStop::within_threshold, LoopStop::no_closer_design, LoopStop::round_limit})
     if (describe(s) == text) return s;
   return LoopStop::none;
+}
+
+// Each reason `printer` cannot make `point`, as its export would refuse it.
+std::vector<std::string> refusals(const io::PrinterProfile& printer,
+                                  const forcing::ForcingInputOptions& options,
+                                  const DesignPoint& point) {
+  StylusPrint print = stylus_print(options, point);
+  print.printer = printer;
+  return print_refusals(printer, print);
+}
+
+// The designs of the loop's range `printer` makes at `tips`: with a printer that cannot mix, each
+// of the mix's materials alone at each tip it prints; nullopt with one that mixes (the range's
+// ends are checked: a material it lacks leaves nothing of the line). Throws std::invalid_argument
+// naming the printer and why when it makes none.
+std::optional<std::vector<DesignPoint>> printable_range(const io::PrinterProfile& printer,
+                                                        const forcing::ForcingInputOptions& options,
+                                                        const LoopRequest& r,
+                                                        const std::vector<double>& tips) {
+  if (printer.mixes_materials) {
+    const std::string why =
+        unprintable_line(printer, DesignPoint{{{r.first_material, 1.0}}, tips.front()},
+                         DesignPoint{{{r.second_material, 1.0}}, tips.front()});
+    if (!why.empty()) throw std::invalid_argument("--printer " + printer.name + ": " + why);
+    return std::nullopt;
+  }
+  std::vector<DesignPoint> out;
+  std::string why;
+  for (const auto& material : {r.first_material, r.second_material})
+    for (const double tip : tips) {
+      const DesignPoint point{{{material, 1.0}}, tip};
+      const auto reasons = refusals(printer, options, point);
+      if (reasons.empty())
+        out.push_back(point);
+      else if (why.empty())
+        why = label(point) + ": " + reasons.front();
+    }
+  if (out.empty())
+    throw std::invalid_argument("--printer " + printer.name + " cannot mix " + r.first_material +
+                                " and " + r.second_material + ", nor print either alone (" + why +
+                                "): give --mix with a material it prints");
+  return out;
 }
 
 }  // namespace
@@ -88,6 +134,16 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   if (!r.printer.empty()) printer_ = io::find_printer_profile(r.printer);
   forcing::ForcingInputOptions options;
   options.catalog = r.catalog_file;
+  // What the printer cannot make is refused before anything is solved: the loop's own candidates,
+  // or (on a printer that cannot mix) a mix neither of whose materials it prints alone.
+  if (printer_) {
+    for (const auto& c : r.candidates)
+      if (const auto reasons = refusals(*printer_, options, c); !reasons.empty())
+        throw std::invalid_argument("--printer " + printer_->name + " cannot print the candidate " +
+                                    label(c) + ": " + reasons.front());
+    if (r.candidates.empty())
+      printable_range(*printer_, options, r, {kReferenceTipForPrinterCheck});
+  }
   const auto designs = numeric::step_progress(progress, "printed tools' responses", 0);
   forcing_inputs_ = forcing::load_forcing_inputs(
       options, [&](const forcing::DesignResponse&, std::size_t done, std::size_t total) {
@@ -119,6 +175,9 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   const GridAxes axes = even_axes(r.first_material, r.second_material, kDefaultFractionPoints,
                                   model.tip_log_gain.begin()->first,
                                   model.tip_log_gain.rbegin()->first, kDefaultTipPoints);
+  std::optional<std::vector<DesignPoint>> printable;
+  if (printer_ && r.candidates.empty())
+    printable = printable_range(*printer_, options, r, axes.tips_m);
   grid_ = cached_design_response_grid(*inputs_, axes, progress);
 
   LoopSetup setup;
@@ -132,7 +191,8 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   setup.range.second_material = r.second_material;
   setup.range.min_tip_m = axes.tips_m.front();
   setup.range.max_tip_m = axes.tips_m.back();
-  setup.candidates = r.candidates;
+  // A printer that cannot mix makes each material alone at the grid's tips: the loop prints those.
+  setup.candidates = printable ? *printable : r.candidates;
   setup.rule = r.rule;
   setup.threshold =
       just_noticeable_distance(space_.model, static_cast<std::size_t>(space_.coordinates.rows()));

@@ -20,6 +20,7 @@
 #include "model/io/paper_friction.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/space_file.hpp"
+#include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
@@ -263,6 +264,42 @@ TEST(DesignLoopCli, ThePapersRecordedPrintsStandInForPrinting) {
     if (e.surface == "glass")
       for (const char* held : {"vero1", "vero2", "vero4", "DM851", "DM852", "DM854"})
         EXPECT_NE(e.tool, held);
+}
+
+// A printer that cannot mix makes each material alone: the loop proposes only such prints, at
+// the design grid's tips (1 to 4 mm in 0.5 mm steps). One that prints neither of the mix's
+// materials is refused before anything is solved, naming it.
+TEST(DesignLoopCli, APrinterThatCannotMixIsGivenOneMaterialPrints) {
+  const auto root = nibrig::test::scratch_dir("cli_design_loop_printer");
+  const auto space = write_glass_space(root);
+  // The paper's PolyJet as one that prints one material at a time.
+  auto profile =
+      test::read_json(nibrig::test::assets_dir() / "printers" / "stratasys-objet260-connex.json");
+  profile["name"] = "polyjet-one-material";
+  profile["mixes_materials"] = false;
+  profile["materials_per_print"] = 1;
+  const auto printer = root / "polyjet-one-material.json";
+  std::ofstream(printer) << profile.dump(2);
+  const auto loop = root / "loop";
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--target", "DM952/glass", "--surface", "glass",
+                           "--space", space.string(), "--printer", printer.string(), "-o",
+                           loop.string()}),
+            0);
+  const auto round1 = test::read_json(loop / "round-1" / "round.json");
+  const auto point = model::design::parse_design_point(round1["design"].get<std::string>());
+  ASSERT_EQ(point.mix.size(), 1u) << round1["design"];
+  const double half_mm = point.tip_diameter_m / 0.0005;
+  EXPECT_NEAR(half_mm, std::round(half_mm), 1e-9) << round1["design"];
+  EXPECT_TRUE(fs::exists(loop / "round-1" / "print" / "stylus.3mf"));
+
+  const auto refused = nibrig::test::run_program(
+      {NIBRIG_CLI_BINARY, "design", "loop", "--target", "DM952/glass", "--surface", "glass",
+       "--space", space.string(), "--printer", "prusa-mk3s", "-o", (root / "fdm").string()},
+      root);
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_THAT(refused.output,
+              ::testing::HasSubstr("--printer prusa-mk3s cannot mix vero and DM85"));
+  EXPECT_FALSE(fs::exists(root / "fdm" / "round-1"));
 }
 
 TEST(DesignLoopCli, TheSearchWithoutALoopStillNeedsItsTarget) {
