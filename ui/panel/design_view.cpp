@@ -454,6 +454,7 @@ void DesignView::draw_constraint_controls() {
 }
 
 void DesignView::draw_controls() {
+  if (loop_ && loop_->refresh_if_changed()) place_loop();
   if (loop_) loop_->draw_table();
   draw_target_controls();
   section("Design");

@@ -15,12 +15,44 @@ const ImU32 kMeasuredColour = IM_COL32(120, 220, 140, 255);
 const ImU32 kPredictedColour = IM_COL32(255, 255, 255, 190);
 const ImU32 kNextColour = IM_COL32(255, 200, 60, 255);
 
+// The newest write among the records a reader takes: loop.json and every round.json, the next
+// round's included (it appears when the loop proposes it).
+std::filesystem::file_time_type newest_record(const std::filesystem::path& folder,
+                                              std::size_t rounds) {
+  std::error_code error;
+  auto newest = std::filesystem::last_write_time(design::loop_request_file(folder), error);
+  for (std::size_t n = 1; n <= rounds + 1; ++n) {
+    const auto t =
+        std::filesystem::last_write_time(design::round_file(folder, static_cast<int>(n)), error);
+    if (!error) newest = std::max(newest, t);
+  }
+  return newest;
+}
+
 }  // namespace
 
 LoopRounds::LoopRounds(const std::filesystem::path& folder)
     : folder_(folder),
       request_(design::read_loop_request(folder)),
-      rounds_(design::read_rounds(folder)) {}
+      rounds_(design::read_rounds(folder)),
+      stamp_(newest_record(folder, rounds_.size())),
+      looked_(std::chrono::steady_clock::now()) {}
+
+bool LoopRounds::refresh_if_changed() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - looked_ < kRefreshInterval) return false;
+  looked_ = now;
+  const auto stamp = newest_record(folder_, rounds_.size());
+  if (stamp == stamp_) return false;
+  try {
+    auto rounds = design::read_rounds(folder_);
+    rounds_ = std::move(rounds);
+  } catch (const std::exception&) {
+    return false;  // read again at the next look
+  }
+  stamp_ = stamp;
+  return true;
+}
 
 const design::LoopRoundRecord* LoopRounds::next_print() const {
   if (rounds_.empty() || rounds_.back().measured) return nullptr;

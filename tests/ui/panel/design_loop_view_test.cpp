@@ -1,7 +1,8 @@
 // A design loop's rounds in the panel's Design view, in a real hidden window on Xvfb: opened from
 // its folder (as `nibrig-panel --loop` and File > Open design loop do), every round's predicted and
-// measured place as the folder keeps them, the round awaiting its print shown as the next print; a
-// folder holding no loop is named in the error line and leaves the loop shown.
+// measured place as the folder keeps them, the round awaiting its print shown as the next print,
+// followed as the loop goes on elsewhere; a folder holding no loop is named in the error line and
+// leaves the loop shown.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -58,6 +59,18 @@ TEST(PanelDesignLoop, ALoopsRoundsAreShownInTheDesignViewWithItsNextPrint) {
   // As kept: JSON's shortest round-trip decimals give the doubles back.
   EXPECT_EQ(shown->rounds()[1].measured->position, Eigen::Vector2d(0.24 + 0.01, -1.18 - 0.02));
   EXPECT_EQ(shown->rounds()[2].predicted_position, Eigen::Vector2d(0.25, -1.19));
+
+  // The loop goes on elsewhere (the command, Python): round 3 measured, round 4 proposed. The
+  // view follows within a few of its looks.
+  design::write_round(loop, loop_view_round(3, 0.25, -1.19, true));
+  design::write_round(loop, loop_view_round(4, 0.26, -1.20, false));
+  ASSERT_TRUE(p.frames_until([&] { return p.panel.design_view().loop()->rounds().size() == 4; },
+                             std::chrono::seconds(5)));
+  const auto& followed = *p.panel.design_view().loop();
+  ASSERT_TRUE(followed.rounds()[2].measured.has_value());
+  EXPECT_EQ(followed.rounds()[2].measured->position, Eigen::Vector2d(0.25 + 0.01, -1.19 - 0.02));
+  ASSERT_NE(followed.next_print(), nullptr);
+  EXPECT_EQ(followed.next_print()->number, 4);
 
   p.panel.open_design_loop(dir / "not_a_loop");
   EXPECT_THAT(p.panel.error(), HasSubstr("loop.json"));
