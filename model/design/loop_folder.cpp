@@ -93,6 +93,8 @@ void write_loop_request(const fs::path& folder, const LoopRequest& r) {
     for (const auto& c : r.candidates) candidates.push_back(to_string(c));
   }
   fs::create_directories(folder);
+  // A resumed loop given a new round limit read the request it now rewrites, on purpose.
+  io::release_input(loop_request_file(folder));
   io::write_file_atomically(loop_request_file(folder), io::json_text(j, loop_request_file(folder)));
 }
 

@@ -79,6 +79,18 @@ std::optional<std::vector<DesignPoint>> printable_range(const io::PrinterProfile
 std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
                                                std::optional<LoopRequest> request,
                                                const numeric::StepProgress& progress) {
+  return open_folder(folder, std::move(request), std::nullopt, progress);
+}
+
+std::unique_ptr<LoopSession> LoopSession::resume_with_rounds(
+    const fs::path& folder, int max_rounds, const numeric::StepProgress& progress) {
+  return open_folder(folder, std::nullopt, max_rounds, progress);
+}
+
+std::unique_ptr<LoopSession> LoopSession::open_folder(const fs::path& folder,
+                                                      std::optional<LoopRequest> request,
+                                                      std::optional<int> max_rounds,
+                                                      const numeric::StepProgress& progress) {
   std::unique_ptr<LoopSession> s(new LoopSession);
   s->folder_ = folder;
   if (fs::exists(folder) && !fs::is_directory(folder))
@@ -99,9 +111,18 @@ std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
                                   " holds no design loop (no loop.json) to resume");
     s->request_ = read_loop_request(folder);
     s->rounds_ = read_rounds(folder);
+    if (max_rounds) {
+      const auto done = static_cast<int>(s->rounds_.size());
+      if (*max_rounds < done)
+        throw std::invalid_argument(
+            fmt::format("rounds: {}: the loop has made {} rounds already; expected {} to {}",
+                        *max_rounds, done, std::max(done, 1), kMostLoopRounds));
+      s->request_.max_rounds = *max_rounds;
+      check_loop_request(s->request_);
+    }
   }
   s->load(progress);
-  if (!exists) write_loop_request(folder, s->request_);
+  if (!exists || max_rounds) write_loop_request(folder, s->request_);
 
   // The measured rounds taken in again, in order; only the last may await its measurement.
   for (std::size_t k = 0; k < s->rounds_.size(); ++k) {
@@ -120,6 +141,13 @@ std::unique_ptr<LoopSession> LoopSession::open(const fs::path& folder,
     s->take_in(n, one.pairings.front(), !s->rounds_[k].measured.has_value());
   }
   if (!s->rounds_.empty()) s->stopped_ = stop_named(s->rounds_.back().stopped);
+  // Stopped at a limit now raised: it goes on, and its last record no longer says it stopped.
+  if (s->stopped_ == LoopStop::round_limit &&
+      static_cast<int>(s->rounds_.size()) < s->request_.max_rounds) {
+    s->stopped_ = LoopStop::none;
+    s->rounds_.back().stopped.clear();
+    write_round(folder, s->rounds_.back());
+  }
   return s;
 }
 

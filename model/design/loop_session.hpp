@@ -35,6 +35,12 @@ class LoopSession {
   static std::unique_ptr<LoopSession> open(const std::filesystem::path& folder,
                                            std::optional<LoopRequest> request,
                                            const numeric::StepProgress& progress = {});
+  // The loop the folder holds, resumed with its round limit set to `max_rounds` (loop.json says
+  // it from then on): a loop stopped at its old limit goes on. Throws as open does, and
+  // std::invalid_argument for a limit below the rounds made or above kMostLoopRounds.
+  static std::unique_ptr<LoopSession> resume_with_rounds(
+      const std::filesystem::path& folder, int max_rounds,
+      const numeric::StepProgress& progress = {});
 
   const std::filesystem::path& folder() const { return folder_; }
   const LoopRequest& request() const { return request_; }
@@ -64,6 +70,10 @@ class LoopSession {
 
  private:
   LoopSession() = default;
+  static std::unique_ptr<LoopSession> open_folder(const std::filesystem::path& folder,
+                                                  std::optional<LoopRequest> request,
+                                                  std::optional<int> max_rounds,
+                                                  const numeric::StepProgress& progress);
   void load(const numeric::StepProgress& progress);
   void take_in(int round, const io::Pairing& measured, bool write);
 

@@ -38,6 +38,7 @@ struct LoopOptions {
   std::string forcing, printer, mix = "vero,DM85",
                                 rule = design::rule_name(design::kDefaultNextPrintRule);
   int rounds = design::kDefaultLoopRounds;
+  bool rounds_given = false;  // on --resume: the loop's limit changed
   std::filesystem::path output;
   bool resume = false;
   bool simulated = false;
@@ -161,11 +162,14 @@ void run_loop(const LoopOptions& o) {
   }
   std::string step_shown;
   std::function<void(std::size_t, std::size_t)> bar;
-  auto session = design::LoopSession::open(
-      o.output, request, [&](const std::string& step, std::size_t done, std::size_t total) {
-        if (step != step_shown) step_shown = step, bar = progress_bar(step);
-        if (done > 0 && total > 0) bar(done, total);
-      });
+  const model::numeric::StepProgress shown = [&](const std::string& step, std::size_t done,
+                                                 std::size_t total) {
+    if (step != step_shown) step_shown = step, bar = progress_bar(step);
+    if (done > 0 && total > 0) bar(done, total);
+  };
+  auto session = o.resume && o.rounds_given
+                     ? design::LoopSession::resume_with_rounds(o.output, o.rounds, shown)
+                     : design::LoopSession::open(o.output, request, shown);
   const auto& r = session->request();
   if (o.resume) capture = capture_options(o, r);
   std::printf(
@@ -231,7 +235,9 @@ void add_design_loop_command(CLI::App* design_cmd, std::shared_ptr<const GlobalO
   cmd->add_option("--mix", o->mix, "The two materials of the designs")->capture_default_str();
   cmd->add_option("--rule", o->rule, "Which design next: likeliest or optimum")
       ->capture_default_str();
-  cmd->add_option("--rounds", o->rounds, "The most rounds")
+  cmd->add_option("--rounds", o->rounds,
+                  "The most rounds (with --resume: the loop's new limit; one stopped at its old "
+                  "limit goes on)")
       ->capture_default_str()
       ->check(whole_in_range(1, design::kMostLoopRounds, "a number of rounds"));
   cmd->add_option("--catalog", o->catalog, "Tool catalog JSON (default: the bundled one)");
@@ -283,10 +289,11 @@ void add_design_loop_command(CLI::App* design_cmd, std::shared_ptr<const GlobalO
     // A resumed loop is the one its loop.json describes: an option that would change it is refused.
     if (o->resume)
       for (const char* name : {"--target", "--surface", "--space", "--printer", "--mix", "--rule",
-                               "--rounds", "--catalog", "--forcing"})
+                               "--catalog", "--forcing"})
         if (cmd->count(name) > 0)
           throw CLI::ValidationError(
-              name, "the resumed loop keeps what its loop.json says; --resume takes none");
+              name, "the resumed loop keeps what its loop.json says; --resume takes only --rounds");
+    o->rounds_given = cmd->count("--rounds") > 0;
     run_loop(*o);
   });
 }

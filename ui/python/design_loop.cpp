@@ -52,7 +52,7 @@ py::dict round_dict(const design::LoopRoundRecord& r) {
 LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std::string>& target,
                     const std::optional<std::string>& surface,
                     const std::optional<std::filesystem::path>& space, bool resume,
-                    const std::string& rule, int rounds,
+                    const std::string& rule, const std::optional<int>& rounds,
                     const std::pair<std::string, std::string>& mix,
                     const std::optional<std::filesystem::path>& catalog,
                     const std::optional<std::string>& forcing,
@@ -68,7 +68,8 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
   if (resume) {
     if (target || surface || space)
       throw std::invalid_argument(
-          "resume: the loop keeps what its loop.json says; give no target, surface or space");
+          "resume: the loop keeps what its loop.json says; give no target, surface or space "
+          "(rounds alone may change)");
   } else {
     design::LoopRequest r;
     r.target = target.value_or("");
@@ -80,7 +81,7 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
     r.first_material = design::catalog_material_name(mix.first);
     r.second_material = design::catalog_material_name(mix.second);
     r.rule = design::parse_next_print_rule(rule);
-    r.max_rounds = rounds;
+    r.max_rounds = rounds.value_or(design::kDefaultLoopRounds);
     design::check_loop_request(r);  // before the long call: what a new loop lacks, named
     if (replay_prints) {
       // Replayed prints are the only ones the loop can measure: it proposes nothing else.
@@ -94,7 +95,9 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
       [&](std::stop_token stop, const Report& report) {
         std::atomic<bool> cancel{false};
         const std::stop_callback on_stop(stop, [&] { cancel.store(true); });
-        auto session = design::LoopSession::open(folder, request, report);
+        auto session = resume && rounds
+                           ? design::LoopSession::resume_with_rounds(folder, *rounds, report)
+                           : design::LoopSession::open(folder, request, report);
         if (replay_prints && !capture)
           capture = rig::replay_recorded_prints(*replay_prints, session->request(), 0.0);
         if (capture) {
@@ -160,26 +163,29 @@ void add_design_loop(py::module_ m) {
           "The round whose print awaits its measurement (capture it into "
           "folder/round-N/session, then loop(folder, resume=True)), or None");
 
-  m.def("loop", &run_loop, py::arg("folder"), py::kw_only(), py::arg("target") = py::none(),
-        py::arg("surface") = py::none(), py::arg("space") = py::none(), py::arg("resume") = false,
-        py::arg("rule") = design::rule_name(design::kDefaultNextPrintRule),
-        py::arg("rounds") = design::kDefaultLoopRounds,
-        py::arg("mix") = std::pair<std::string, std::string>{"vero", "DM85"},
-        py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
-        py::arg("printer") = py::none(), py::arg("simulated") = false,
-        py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1,
-        py::arg("seconds") = py::none(), py::arg("replay_prints") = py::none(),
-        py::arg("progress") = py::none(),
-        "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) "
-        "on surface in "
-        "space, or resume=True. Runs as far as it goes here: with simulated=True each print is "
-        "measured on the "
-        "simulated rig (its prints playing simulated_forcing, default the loop's model); without, "
-        "it stops at a "
-        "round awaiting its print's measurement. replay_prints (a folder of the paper's "
-        "recordings) stands the prints recorded there in for printing: the loop proposes only "
-        "those and replays each one's vibration and friction recordings. Releases the GIL; "
-        "Ctrl-C stops it between steps.");
+  m.def(
+      "loop", &run_loop, py::arg("folder"), py::kw_only(), py::arg("target") = py::none(),
+      py::arg("surface") = py::none(), py::arg("space") = py::none(), py::arg("resume") = false,
+      py::arg("rule") = design::rule_name(design::kDefaultNextPrintRule),
+      py::arg("rounds") = py::none(),
+      py::arg("mix") = std::pair<std::string, std::string>{"vero", "DM85"},
+      py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
+      py::arg("printer") = py::none(), py::arg("simulated") = false,
+      py::arg("simulated_forcing") = py::none(), py::arg("seed") = 1,
+      py::arg("seconds") = py::none(), py::arg("replay_prints") = py::none(),
+      py::arg("progress") = py::none(),
+      "The design loop of `nibrig design loop` in `folder`: a new one for target (tool/surface) "
+      "on surface in "
+      "space, or resume=True (rounds then sets a new limit: a loop stopped at its old one goes on; "
+      "a new loop takes the command line's default). Runs as far as it goes here: with "
+      "simulated=True each print is "
+      "measured on the "
+      "simulated rig (its prints playing simulated_forcing, default the loop's model); without, "
+      "it stops at a "
+      "round awaiting its print's measurement. replay_prints (a folder of the paper's "
+      "recordings) stands the prints recorded there in for printing: the loop proposes only "
+      "those and replays each one's vibration and friction recordings. Releases the GIL; "
+      "Ctrl-C stops it between steps.");
 }
 
 }  // namespace nibrig::ui::python

@@ -214,10 +214,26 @@ TEST(DesignLoopCli, ThePapersRecordedPrintsStandInForPrinting) {
   EXPECT_THAT(recorded, ::testing::UnorderedElementsAre("vero:1,tip=1mm", "vero:1,tip=2mm",
                                                         "vero:1,tip=4mm", "DM85:1,tip=1mm",
                                                         "DM85:1,tip=2mm", "DM85:1,tip=4mm"));
-  int rounds = 0;
-  while (fs::exists(loop / ("round-" + std::to_string(rounds + 1)) / "round.json")) ++rounds;
-  ASSERT_GE(rounds, 1);
-  ASSERT_LE(rounds, 3);
+  const auto count_rounds = [&] {
+    int n = 0;
+    while (fs::exists(loop / ("round-" + std::to_string(n + 1)) / "round.json")) ++n;
+    return n;
+  };
+  // DM952 is out of the recorded prints' reach: the loop spends its three rounds.
+  ASSERT_EQ(count_rounds(), 3);
+  EXPECT_EQ(test::read_json(loop / "round-3" / "round.json")["stopped"], "round limit");
+  // Resumed with a limit below the rounds made: refused. With a higher one it goes on, and the
+  // third round no longer says it stopped at the limit.
+  EXPECT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--replay-prints", data.string(),
+                           "--rounds", "2", "-o", loop.string()}),
+            1);
+  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--replay-prints", data.string(),
+                           "--rounds", "5", "-o", loop.string(), "--speedup", "0"}),
+            0);
+  EXPECT_EQ(test::read_json(loop / "loop.json")["max_rounds"], 5);
+  EXPECT_NE(test::read_json(loop / "round-3" / "round.json").value("stopped", ""), "round limit");
+  const int rounds = count_rounds();
+  ASSERT_LE(rounds, 5);
   const auto catalog = model::io::read_catalog(nibrig::test::assets_dir() / "default_catalog.json");
   std::set<std::string> printed;
   for (int r = 1; r <= rounds; ++r) {
@@ -249,11 +265,14 @@ TEST(DesignLoopCli, ThePapersRecordedPrintsStandInForPrinting) {
                     distance_of(space, p), 0.01)
             << design;
   }
-  // Resumed once it has stopped, it measures and proposes nothing more.
+  // Resumed once it has stopped short of its limit, it measures and proposes nothing more.
+  ASSERT_NE(test::read_json(loop / ("round-" + std::to_string(rounds)) / "round.json")
+                .value("stopped", ""),
+            "");
   ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--replay-prints", data.string(),
                            "-o", loop.string()}),
             0);
-  EXPECT_FALSE(fs::exists(loop / ("round-" + std::to_string(rounds + 1))));
+  EXPECT_EQ(count_rounds(), rounds);
   // The loop started without the recorded prints' own measurements on glass, and took each
   // round's print in.
   const auto first = model::forcing::read_forcing_model(loop / "round-1" / "forcing.json");

@@ -267,7 +267,7 @@ def loop(
     space: Optional[_Path] = None,
     resume: bool = False,
     rule: str = "likeliest",
-    rounds: int = 6,
+    rounds: Optional[int] = None,
     mix: Tuple[str, str] = ("vero", "DM85"),
     catalog: Optional[_Path] = None,
     forcing: Optional[str] = None,
