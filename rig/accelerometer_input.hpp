@@ -17,13 +17,16 @@
 
 namespace nibrig::rig {
 
+// What a rig's accelerometer reads at full scale unless calibrated: a ±5 g part on a line input.
+inline constexpr double kDefaultAccelerometerM_s2 = 5 * 9.81;
+
 struct AccelerometerSettings {
   std::string api;     // "jack", "alsa", "pulse"; empty: the first with the device
   std::string device;  // by name (exact, or a unique part); empty: the default
   unsigned channel = 1;  // 1-based input channel
   unsigned sample_rate = 48000;
   unsigned period_frames = 256;
-  double m_s2_per_full_scale = 49.05;
+  double m_s2_per_full_scale = kDefaultAccelerometerM_s2;
   std::string stream_name = "nibrig-rig-input";
   // The converter's latency, from the sample's instant to the audio graph; unset: what the back end
   // reports for the device's capture port. Set it from a measurement, or to 0 for a source patched

@@ -8,6 +8,7 @@
 #include "model/io/paper_vibration.hpp"
 #include "model/io/rig_session.hpp"
 #include "model/measure/step_segmentation.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::rig {
 namespace {
@@ -78,7 +79,7 @@ Recording from_paper_recording(const std::filesystem::path& file) {
   d.surface = recording.name.surface;
   d.frame_rate_hz = recording.sample_rate_hz;
   d.acceleration_rate_hz = recording.sample_rate_hz;
-  d.normal_load_N = 2.2;  // the paper's protocol (Sec. 3)
+  d.normal_load_N = rt::kReferenceNormalForce;  // the paper's protocol
   d.accelerometer_m_s2_per_unit = 1.0;
   d.acceleration_units = "m/s²";
   d.name = "replay of paper recording " + file.filename().string() + " (" + d.tool + " on " +

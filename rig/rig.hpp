@@ -15,6 +15,7 @@
 
 #include "rig/sensor_frame.hpp"
 #include "rig/speed_profile.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::rig {
 
@@ -25,7 +26,7 @@ struct RigDescription {
   double frame_rate_hz = 1000.0;
   double acceleration_rate_hz = 48000.0;
   double max_speed_m_s = 0.0;    // the fastest the motor follows
-  double normal_load_N = 2.2;    // the arm's load
+  double normal_load_N = rt::kReferenceNormalForce;  // the arm's load
   // Calibration written into every session: acceleration samples × this = m/s²; the force sensor's
   // counts per newton and the arm's lever factor (the frames already carry newtons).
   double accelerometer_m_s2_per_unit = 1.0;

@@ -10,8 +10,10 @@
 #include <string>
 
 #include "model/io/rig_session_json.hpp"
+#include "rig/accelerometer_input.hpp"
 #include "rig/rig.hpp"
 #include "rig/speed_profile.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::model::design {
 class ToolSounds;
@@ -44,7 +46,7 @@ struct RigRequest {
   // What is mounted: required for the simulated rig (it simulates it); for the others, what the
   // session will say (a replayed session knows its own).
   std::string tool, surface;
-  double load_N = 2.2;
+  double load_N = rt::kReferenceNormalForce;
   std::uint64_t seed = 1;  // the simulated rig's noise
   // 1 = real time; k > 1 = k times faster; 0 = as fast as it computes (simulated and replay rigs).
   double speedup = 1.0;
@@ -54,7 +56,7 @@ struct RigRequest {
   std::string input_api;         // the accelerometer's audio back end (USB rig); empty: any
   std::string input_device;      // the accelerometer's audio input (USB rig)
   unsigned input_channel = 1;    // 1-based
-  double accelerometer_m_s2_per_full_scale = 49.05;
+  double accelerometer_m_s2_per_full_scale = kDefaultAccelerometerM_s2;
 };
 
 // Opens the rig, after checking the load and accelerometer scale as above (named "load" and

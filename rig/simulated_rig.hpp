@@ -12,15 +12,17 @@
 #include <optional>
 
 #include "model/design/tool_sound.hpp"
+#include "rig/accelerometer_input.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::rig {
 
 struct SimulatedRigSettings {
   double frame_rate_hz = 1000.0;
   double acceleration_rate_hz = 48000.0;
-  double normal_load_N = 2.2;   // the paper's mean drawing force (Sec. 3)
+  double normal_load_N = rt::kReferenceNormalForce;  // the paper's mean drawing force
   double mu = 0.3;              // tangential / normal force while sliding
   double max_speed_m_s = 0.4;   // the motor follows 0..this
   double motor_time_constant_s = 0.05;  // the speed loop settles to 1 % in 0.23 s
@@ -35,7 +37,7 @@ struct SimulatedRigSettings {
   double tangential_full_scale_N = 5.0;
   // The acceleration is stored as an audio interface would hold it: full scale = this many m/s²
   // (a ±5 g accelerometer on a line input).
-  double accelerometer_m_s2_per_unit = 49.05;
+  double accelerometer_m_s2_per_unit = kDefaultAccelerometerM_s2;
   // 1 = real time (read() waits for the clock), k > 1 = k times faster, 0 = as fast as it computes.
   double speedup = 1.0;
   std::uint64_t seed = 1;

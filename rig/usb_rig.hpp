@@ -17,13 +17,15 @@
 #include "rig/clock_fit.hpp"
 #include "rig/rig.hpp"
 #include "rig/usb/usb_rig_controller.hpp"
+#include "rt/reference_load.hpp"
 
 namespace nibrig::rig {
 
 struct UsbRigSettings {
   usb::UsbRigController::Options controller;  // its serial: empty = the only one on the bus
   AccelerometerSettings accelerometer;
-  double normal_load_N = 2.2;  // the arm's load as mounted (the frames carry the measured force)
+  double normal_load_N =
+      rt::kReferenceNormalForce;  // the arm's load as mounted (the frames carry the measured force)
 };
 
 class UsbRig final : public Rig {

@@ -13,10 +13,12 @@
 
 #include "model/design/loop_session.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "rig/accelerometer_input.hpp"
 #include "rig/loop_print_capture.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/speed_profile.hpp"
+#include "rt/reference_load.hpp"
 #include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/forcing_options.hpp"
@@ -49,10 +51,10 @@ struct LoopOptions {
   double speedup = 0.0;
   std::string profile = "steps";
   std::optional<double> seconds;
-  double load = 2.2;
+  double load = rt::kReferenceNormalForce;
   std::string input_api, input;
   unsigned input_channel = 1;
-  double accelerometer = 49.05;
+  double accelerometer = rig::kDefaultAccelerometerM_s2;
 };
 
 design::LoopRequest loop_request(const LoopOptions& o) {

@@ -1,4 +1,5 @@
 // `nibrig measure <recording>`: one recording -> its descriptors as JSON, and PNG figures.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <fstream>
@@ -6,14 +7,15 @@
 #include <stdexcept>
 
 #include "model/catalog/catalog_builder.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "model/io/paper_recording.hpp"
 #include "model/io/rig_session.hpp"
-#include "model/io/bundled_assets.hpp"
+#include "rt/reference_load.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/measurement_figures.hpp"
-#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -151,8 +153,11 @@ void add_measure_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
       "Surface id, instead of the one in the file name (e.g. note)");
   cmd->add_option_function<double>(
          "--load", [&stated](const double& v) { stated.normal_load_N = v; },
-         "Friction files: normal load in N, instead of the file name's (the paper's: 2.2)")
-      ->check(in_range(model::io::kLightestFrictionLoadN, model::io::kHeaviestFrictionLoadN, "a normal load in N"));
+         fmt::format(
+             "Friction files: normal load in N, instead of the file name's (the paper's: {:g})",
+             rt::kReferenceNormalForce))
+      ->check(in_range(model::io::kLightestFrictionLoadN, model::io::kHeaviestFrictionLoadN,
+                       "a normal load in N"));
   cmd->add_option_function<double>(
          "--lever", [&stated](const double& v) { stated.lever_factor = v; },
          "Friction files: the arm's lever factor, instead of the file name's (13.3-14.1 in the "

@@ -12,6 +12,7 @@
 #include "model/io/bundled_assets.hpp"
 #include "model/io/comparison_file.hpp"
 #include "playback/audio_devices.hpp"
+#include "rig/accelerometer_input.hpp"
 #include "rig/actuator_player.hpp"
 #include "rig/capture.hpp"
 #include "rig/comparison_report.hpp"
@@ -21,6 +22,7 @@
 #include "rig/usb/bootloader_port.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
+#include "rt/reference_load.hpp"
 #include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
@@ -43,12 +45,12 @@ struct RigOptions {
   std::filesystem::path catalog, stylus, forcing_model;
   std::string profile;  // empty: the command's default
   std::optional<double> seconds;
-  double load = 2.2;
+  double load = rt::kReferenceNormalForce;
   unsigned seed = 1;
   double speedup = 1.0;
   std::string input_api, input;
   unsigned input_channel = 1;
-  double accelerometer = 49.05;
+  double accelerometer = rig::kDefaultAccelerometerM_s2;
   bool play = false;
   DeviceOptions device;
   std::string actuator;
@@ -81,7 +83,8 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
          "--seconds", [&o](const double& s) { o.seconds = s; },
          "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
       ->check(in_range(rig::kShortestCaptureSeconds, rig::kMaxProfileSeconds, "a length in seconds"));
-  cmd->add_option("--load", o.load, "The arm's normal load in N (default 2.2, the paper's)")
+  cmd->add_option("--load", o.load, "The arm's normal load in N (the paper's by default)")
+      ->capture_default_str()
       ->check(in_range(rig::kLightestLoadN, rig::kHeaviestLoadN, "a load in N"));
   cmd->add_option("--seed", o.seed, "Seed of the simulated rig's noise")->check(any_seed());
   cmd->add_option("--speedup", o.speedup,

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "rig/accelerometer_input.hpp"
 #include "ui/cli/device_options.hpp"
 
 namespace nibrig::ui::cli {
@@ -28,7 +29,7 @@ struct ExperimentRunOptions {
   std::optional<std::string> usb;  // rig mode with the USB controller ("" = the only one)
   std::string input_api, input;   // its accelerometer's audio input
   unsigned input_channel = 1;
-  double accelerometer = 49.05;
+  double accelerometer = rig::kDefaultAccelerometerM_s2;
   std::filesystem::path instructions, consent;
   std::filesystem::path catalog, design, forcing_model;
   DeviceOptions device;

@@ -40,8 +40,10 @@ void add_stroke_options(CLI::App* cmd, StrokeOptions& o) {
   sweep->excludes(trajectory);
   cmd->add_option_function<double>(
          "--force", [&o](const double& v) { o.force_n = v; },
-         "Constant normal force in N (default 2.2, the paper's)")
-      ->check(off_or_in_range(playback::kLightestStrokeN, playback::kHeaviestStrokeN, "a normal force in N"));
+         fmt::format("Constant normal force in N (default {:g}, the paper's)",
+                     rt::kReferenceNormalForce))
+      ->check(off_or_in_range(playback::kLightestStrokeN, playback::kHeaviestStrokeN,
+                              "a normal force in N"));
   cmd->add_option("--seed", o.seed, "Seed of the forcing noise (same seed, same samples)")
       ->check(any_seed());
 }

@@ -16,6 +16,7 @@
 
 #include "imgui.h"
 #include "model/io/paper_drawing.hpp"
+#include "rt/reference_load.hpp"
 #include "ui/panel/file_dialog.hpp"
 #include "ui/panel/pad_pen.hpp"
 #include "ui/panel/panel_audio.hpp"
@@ -57,7 +58,7 @@ class PadView {
   PanelAudio& audio_;
   ToolChoice tool_{"cryon", "office"};
   bool loaded_ = false;
-  float force_n_ = 2.2f;
+  float force_n_ = static_cast<float>(rt::kReferenceNormalForce);
   double mm_per_pixel_ = 25.4 / 96.0;
   bool drawing_ = false;
   ImVec2 last_{};

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "rt/reference_load.hpp"
 #include "rt/stroke_request.hpp"
 
 namespace nibrig::ui::panel {
@@ -11,7 +12,7 @@ namespace nibrig::ui::panel {
 struct StrokeChoice {
   int kind = 1;  // 0 constant speed, 1 the rig's sweep, 2 an artist's trajectory
   float speed_mm_s = 100.0f;
-  float force_n = 2.2f;
+  float force_n = static_cast<float>(rt::kReferenceNormalForce);
   std::string trajectory;
   rt::StrokeRequest request() const;
   bool operator==(const StrokeChoice&) const = default;

@@ -2,6 +2,7 @@
 // speed and force set while they play, A, B or C selected, as `nibrig audition` and the panel do
 // through a playback::LiveAudition. No call waits for the audio thread: a command the engine's
 // queue cannot take yet is held by the audition and handed over by a pump thread of this face.
+#include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -22,6 +23,7 @@
 #include "playback/audio_devices.hpp"
 #include "playback/live_audition.hpp"
 #include "playback/offline_render.hpp"
+#include "rt/reference_load.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/submodules.hpp"
@@ -35,7 +37,8 @@ using namespace std::chrono_literals;
 namespace {
 
 constexpr std::size_t kSlots = 3;  // A/B or the three of a triplet
-constexpr double kDefaultForceN = 2.2;  // the paper's recordings
+constexpr double kDefaultForceN = rt::kReferenceNormalForce;  // the paper's recordings
+constexpr double kDefaultSpeedM_s = 0.1;                      // a steady stroke, mid sweep
 
 char letter_of(std::size_t slot) { return static_cast<char>('A' + slot); }
 
@@ -130,7 +133,7 @@ class Player {
       stroke_ = stroke->description;
       audition_->attach(std::move(stroke->source));
     } else {
-      speed_m_s_ = speed.value_or(0.1);
+      speed_m_s_ = speed.value_or(kDefaultSpeedM_s);
       contact_locked();
     }
   }
@@ -296,50 +299,72 @@ py::list device_list(const std::optional<std::string>& api) {
 }  // namespace
 
 void add_audition_module(py::module_ m) {
-  py::class_<Player>(m, "Player",
-                     "One to three tools played live on an audio device: slots A, B, C, one heard at a time")
-      .def(py::init([](const std::optional<std::string>& api, const std::optional<std::string>& device,
-                       unsigned channel, unsigned rate, unsigned period, const std::string& name,
+  const std::string player_doc = fmt::format(
+      "Loads one to three tools (catalog names or design points) into A, B, C on a surface and "
+      "plays A: a live "
+      "contact at speed m/s (default {:g}) and force N (default {:g}, the paper's), or a drawing's "
+      "trajectory, "
+      "or the rig's sweep (sweep=True). Building a design's sound may fit the forcing model once: "
+      "progress (step, done, total); the GIL is released; Ctrl-C stops it.",
+      kDefaultSpeedM_s, kDefaultForceN);
+  py::class_<Player>(
+      m, "Player",
+      "One to three tools played live on an audio device: slots A, B, C, one heard at a time")
+      .def(py::init([](const std::optional<std::string>& api,
+                       const std::optional<std::string>& device, unsigned channel, unsigned rate,
+                       unsigned period, const std::string& name,
                        const std::optional<std::string>& actuator) {
              return std::make_unique<Player>(
                  PlayerOptions{api.value_or(""), device.value_or(""), channel, rate, period, name, actuator});
            }),
-           py::arg("api") = py::none(), py::arg("device") = py::none(), py::kw_only(), py::arg("channel") = 1u,
-           py::arg("rate") = 0u, py::arg("period") = 256u, py::arg("name") = "nibrig-python",
-           py::arg("actuator") = py::none(),
-           "Opens a device by API ('jack', 'alsa', 'pulse'; None: the first with an output) and name (exact, or "
-           "a unique part; None: the API's default), playing silence until play(). channel: 1-based output; "
-           "rate in Hz (0: the device's own; JACK: the server's); period in frames (JACK uses its server's); "
-           "name: the JACK client's; actuator: a calibration by name or file (`nibrig calibrate`), its inverse "
-           "filter then applied. Raises OSError naming what was asked when the device is not there.")
-      .def("play", &Player::play, py::arg("tools"), py::arg("surface"), py::kw_only(), py::arg("speed") = py::none(),
-           py::arg("force") = py::none(), py::arg("trajectory") = py::none(), py::arg("sweep") = false,
-           py::arg("seed") = 1u, py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
-           py::arg("forcing") = py::none(), py::arg("progress") = py::none(),
-           "Loads one to three tools (catalog names or design points) into A, B, C on a surface and plays A: a live "
-           "contact at speed m/s (default 0.1) and force N (default 2.2, the paper's), or a drawing's trajectory, "
-           "or the rig's sweep (sweep=True). Building a design's sound may fit the forcing model once: "
-           "progress (step, done, total); the GIL is released; Ctrl-C stops it.")
+           py::arg("api") = py::none(), py::arg("device") = py::none(), py::kw_only(),
+           py::arg("channel") = 1u, py::arg("rate") = 0u, py::arg("period") = 256u,
+           py::arg("name") = "nibrig-python", py::arg("actuator") = py::none(),
+           "Opens a device by API ('jack', 'alsa', 'pulse'; None: the first with an output) and "
+           "name (exact, or "
+           "a unique part; None: the API's default), playing silence until play(). channel: "
+           "1-based output; "
+           "rate in Hz (0: the device's own; JACK: the server's); period in frames (JACK uses its "
+           "server's); "
+           "name: the JACK client's; actuator: a calibration by name or file (`nibrig calibrate`), "
+           "its inverse "
+           "filter then applied. Raises OSError naming what was asked when the device is not "
+           "there.")
+      .def("play", &Player::play, py::arg("tools"), py::arg("surface"), py::kw_only(),
+           py::arg("speed") = py::none(), py::arg("force") = py::none(),
+           py::arg("trajectory") = py::none(), py::arg("sweep") = false, py::arg("seed") = 1u,
+           py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
+           py::arg("forcing") = py::none(), py::arg("progress") = py::none(), player_doc.c_str())
       .def_property("speed", &Player::speed, &Player::set_speed,
-                    "The live contact's speed, m/s (None while a trajectory or sweep moves the tools); setting it "
+                    "The live contact's speed, m/s (None while a trajectory or sweep moves the "
+                    "tools); setting it "
                     "replaces that stroke with a live contact, ramped over one block")
-      .def_property("force", &Player::force, &Player::set_force, "The live contact's normal force, N")
+      .def_property("force", &Player::force, &Player::set_force,
+                    "The live contact's normal force, N")
       .def_property_readonly("stroke", &Player::stroke, "What moves the tools, in words")
-      .def("select", &Player::select_letter, py::arg("slot"), "Crossfades to slot 'A', 'B' or 'C' (20 ms)")
+      .def("select", &Player::select_letter, py::arg("slot"),
+           "Crossfades to slot 'A', 'B' or 'C' (20 ms)")
       .def("select", &Player::select, py::arg("slot"), "Crossfades to slot 0, 1 or 2 (20 ms)")
       .def_property_readonly("selected", &Player::selected, "The slot heard: 'A', 'B' or 'C'")
-      .def_property_readonly("names", &Player::names, "The tools in A, B, C as the engine names them")
-      .def("stop", &Player::stop, "The tools fall silent (contact speed and force 0); the device stays open")
+      .def_property_readonly("names", &Player::names,
+                             "The tools in A, B, C as the engine names them")
+      .def("stop", &Player::stop,
+           "The tools fall silent (contact speed and force 0); the device stays open")
       .def("close", &Player::close, "Closes the device; the player cannot play again")
-      .def_property_readonly("pending", &Player::pending,
-                             "Commands held until the engine's queue takes them (handed over every 10 ms)")
-      .def_property_readonly("status", &Player::status, "'running', 'lost' (looked for again every 200 ms) or 'closed'")
-      .def_property_readonly("problem", &Player::problem, "Why the device was last lost; '' while nothing went wrong")
+      .def_property_readonly(
+          "pending", &Player::pending,
+          "Commands held until the engine's queue takes them (handed over every 10 ms)")
+      .def_property_readonly("status", &Player::status,
+                             "'running', 'lost' (looked for again every 200 ms) or 'closed'")
+      .def_property_readonly("problem", &Player::problem,
+                             "Why the device was last lost; '' while nothing went wrong")
       .def_property_readonly("stream", &Player::stream,
-                             "What was opened: api, device, rate_hz, period_frames, output_channels, latency_frames, actuator")
-      .def_property_readonly("stats", &Player::stats,
-                             "callbacks, frames, underflows, losses, reconnects, engine_overruns, peak_output (full "
-                             "scale 1), limited_samples, callback_median_s / _p99_s / _max_s")
+                             "What was opened: api, device, rate_hz, period_frames, "
+                             "output_channels, latency_frames, actuator")
+      .def_property_readonly(
+          "stats", &Player::stats,
+          "callbacks, frames, underflows, losses, reconnects, engine_overruns, peak_output (full "
+          "scale 1), limited_samples, callback_median_s / _p99_s / _max_s")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__", [](Player& p, const py::args&) { p.close(); });
 

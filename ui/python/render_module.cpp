@@ -1,6 +1,7 @@
 // nibrig.render: a tool (a catalog tool or a design point) on a surface, moved at a constant speed,
 // along the rig's sweep or an artist's drawing, rendered offline through the real-time engine —
 // the same render() the audio callback calls — into a numpy array, as `nibrig render` into a WAV.
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -12,6 +13,7 @@
 #include "model/numeric/cancellation.hpp"
 #include "playback/offline_render.hpp"
 #include "playback/prepared_engine.hpp"
+#include "rt/reference_load.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
@@ -86,15 +88,23 @@ void add_render_module(py::module_ m) {
       .def_readonly("stroke", &Rendering::stroke, "How it moved, in words")
       .def("__len__", [](const Rendering& r) { return r.samples.size(); });
 
-  m.def("tool", &render_tool, py::arg("tool"), py::arg("surface"), py::kw_only(), py::arg("speed") = py::none(),
-        py::arg("trajectory") = py::none(), py::arg("force") = py::none(), py::arg("seconds") = py::none(),
-        py::arg("rate_hz") = 48000.0, py::arg("period") = 64, py::arg("seed") = 1u, py::arg("catalog") = py::none(),
-        py::arg("stylus") = py::none(), py::arg("forcing") = py::none(), py::arg("progress") = py::none(),
-        "Renders a catalog tool ('cryon') or a design point ('DM85:0.5,vero:0.5,tip=2mm') on a surface as "
-        "`nibrig render` does: speed in m/s (constant), or trajectory (an artist's drawing file), else the "
-        "rig's sweep 17-250 mm/s; force in N (default 2.2, the paper's); seconds (default: two sweep "
-        "periods, the drawing's length or 5 s); blocks of `period` frames as a device would ask; the same "
-        "seed gives the same samples. Releases the GIL; Ctrl-C stops it.");
+  const std::string tool_doc = fmt::format(
+      "Renders a catalog tool ('cryon') or a design point ('DM85:0.5,vero:0.5,tip=2mm') on a "
+      "surface as "
+      "`nibrig render` does: speed in m/s (constant), or trajectory (an artist's drawing file), "
+      "else the "
+      "rig's sweep 17-250 mm/s; force in N (default {:g}, the paper's); seconds (default: two "
+      "sweep "
+      "periods, the drawing's length or 5 s); blocks of `period` frames as a device would ask; the "
+      "same "
+      "seed gives the same samples. Releases the GIL; Ctrl-C stops it.",
+      rt::kReferenceNormalForce);
+  m.def("tool", &render_tool, py::arg("tool"), py::arg("surface"), py::kw_only(),
+        py::arg("speed") = py::none(), py::arg("trajectory") = py::none(),
+        py::arg("force") = py::none(), py::arg("seconds") = py::none(),
+        py::arg("rate_hz") = 48000.0, py::arg("period") = 64, py::arg("seed") = 1u,
+        py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
+        py::arg("forcing") = py::none(), py::arg("progress") = py::none(), tool_doc.c_str());
 }
 
 }  // namespace nibrig::ui::python

@@ -22,16 +22,18 @@
 #include "model/io/format_error.hpp"
 #include "model/io/rig_session.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "rig/accelerometer_input.hpp"
 #include "rig/capture.hpp"
 #include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
+#include "rt/reference_load.hpp"
 #include "ui/python/errors.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/rig_types.hpp"
-#include "ui/python/tool_sound_options.hpp"
 #include "ui/python/submodules.hpp"
+#include "ui/python/tool_sound_options.hpp"
 
 namespace nibrig::ui::python {
 
@@ -176,26 +178,35 @@ void add_rig_module(py::module_ m) {
         return std::string("<nibrig.rig.Rig>");
       });
 
-  m.def("simulated", [](const std::string& tool, const std::string& surface, double load, std::uint64_t seed, double speedup,
-                        const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& stylus,
-                        const std::optional<std::filesystem::path>& forcing) {
-          if (tool.empty() || surface.empty()) throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
-          rig::check_load(load, "load");  // here, not first when a capture opens it
-          rig::Pacer::check_speedup(speedup, "speedup");
-          RigSpec r;
-          r.request.kind = rig::RigKind::simulated;
-          r.request.tool = tool, r.request.surface = surface;
-          r.request.load_N = load, r.request.seed = seed, r.request.speedup = speedup;
-          r.catalog = catalog.value_or(std::filesystem::path());
-          r.stylus = stylus.value_or(std::filesystem::path());
-          r.forcing = forcing.value_or(std::filesystem::path());
-          return r;
-        }, py::arg("tool"), py::arg("surface"), py::kw_only(), py::arg("load") = 2.2, py::arg("seed") = 1u,
-        py::arg("speedup") = 0.0, py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
-        py::arg("forcing") = py::none(),
-        "The simulated rig: the engine's simulation of a tool (catalog id or design point) on a surface, pressed "
-        "with `load` N; its noise fixed by `seed`; speedup 0 computes as fast as it can (1: real time). catalog, "
-        "stylus, forcing: what the simulation is made from (default: the bundled ones, the cached forcing model).");
+  m.def(
+      "simulated",
+      [](const std::string& tool, const std::string& surface, double load, std::uint64_t seed,
+         double speedup, const std::optional<std::filesystem::path>& catalog,
+         const std::optional<std::filesystem::path>& stylus,
+         const std::optional<std::filesystem::path>& forcing) {
+        if (tool.empty() || surface.empty())
+          throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
+        rig::check_load(load, "load");  // here, not first when a capture opens it
+        rig::Pacer::check_speedup(speedup, "speedup");
+        RigSpec r;
+        r.request.kind = rig::RigKind::simulated;
+        r.request.tool = tool, r.request.surface = surface;
+        r.request.load_N = load, r.request.seed = seed, r.request.speedup = speedup;
+        r.catalog = catalog.value_or(std::filesystem::path());
+        r.stylus = stylus.value_or(std::filesystem::path());
+        r.forcing = forcing.value_or(std::filesystem::path());
+        return r;
+      },
+      py::arg("tool"), py::arg("surface"), py::kw_only(),
+      py::arg("load") = rt::kReferenceNormalForce, py::arg("seed") = 1u, py::arg("speedup") = 0.0,
+      py::arg("catalog") = py::none(), py::arg("stylus") = py::none(),
+      py::arg("forcing") = py::none(),
+      "The simulated rig: the engine's simulation of a tool (catalog id or design point) on a "
+      "surface, pressed "
+      "with `load` N; its noise fixed by `seed`; speedup 0 computes as fast as it can (1: real "
+      "time). catalog, "
+      "stylus, forcing: what the simulation is made from (default: the bundled ones, the cached "
+      "forcing model).");
   m.def("replay", [](const std::filesystem::path& path, double speedup) {
           rig::Pacer::check_speedup(speedup, "speedup");
           RigSpec r;
@@ -206,29 +217,38 @@ void add_rig_module(py::module_ m) {
         }, py::arg("path"), py::kw_only(), py::arg("speedup") = 0.0,
         "A recorded session folder (or one of the paper's arm_*.csv recordings) replayed as if live, with the "
         "profile it recorded; speedup 0 as fast as it reads (1: real time)");
-  m.def("usb", [](const std::optional<std::string>& serial, const std::optional<std::string>& input_api,
-                  const std::optional<std::string>& input_device, unsigned input_channel, double accelerometer,
-                  const std::optional<std::string>& tool, const std::optional<std::string>& surface, double load) {
-          if (input_channel < 1) throw std::invalid_argument("input_channel is 0; expected 1 or more (1-based)");
-          rig::check_accelerometer_scale(accelerometer, "accelerometer");
-          rig::check_load(load, "load");
-          RigSpec r;
-          r.request.kind = rig::RigKind::usb;
-          r.request.usb_serial = serial.value_or("");
-          r.request.input_api = input_api.value_or("");
-          r.request.input_device = input_device.value_or("");
-          r.request.input_channel = input_channel;
-          r.request.accelerometer_m_s2_per_full_scale = accelerometer;
-          r.request.tool = tool.value_or(""), r.request.surface = surface.value_or("");
-          r.request.load_N = load;
-          return r;
-        }, py::kw_only(), py::arg("serial") = py::none(), py::arg("input_api") = py::none(),
-        py::arg("input_device") = py::none(), py::arg("input_channel") = 1u, py::arg("accelerometer") = 49.05,
-        py::arg("tool") = py::none(), py::arg("surface") = py::none(), py::arg("load") = 2.2,
-        "The USB rig controller (by serial; None: the only one on the bus) with the accelerometer on an audio input "
-        "(input_api: jack, alsa, pulse; input_device by name; input_channel 1-based; accelerometer: its m/s² at full "
-        "scale); tool and surface: what is mounted, which a session must say. Opened by capture or compare: a "
-        "missing controller or input is an OSError naming what was asked.");
+  m.def(
+      "usb",
+      [](const std::optional<std::string>& serial, const std::optional<std::string>& input_api,
+         const std::optional<std::string>& input_device, unsigned input_channel,
+         double accelerometer, const std::optional<std::string>& tool,
+         const std::optional<std::string>& surface, double load) {
+        if (input_channel < 1)
+          throw std::invalid_argument("input_channel is 0; expected 1 or more (1-based)");
+        rig::check_accelerometer_scale(accelerometer, "accelerometer");
+        rig::check_load(load, "load");
+        RigSpec r;
+        r.request.kind = rig::RigKind::usb;
+        r.request.usb_serial = serial.value_or("");
+        r.request.input_api = input_api.value_or("");
+        r.request.input_device = input_device.value_or("");
+        r.request.input_channel = input_channel;
+        r.request.accelerometer_m_s2_per_full_scale = accelerometer;
+        r.request.tool = tool.value_or(""), r.request.surface = surface.value_or("");
+        r.request.load_N = load;
+        return r;
+      },
+      py::kw_only(), py::arg("serial") = py::none(), py::arg("input_api") = py::none(),
+      py::arg("input_device") = py::none(), py::arg("input_channel") = 1u,
+      py::arg("accelerometer") = rig::kDefaultAccelerometerM_s2, py::arg("tool") = py::none(),
+      py::arg("surface") = py::none(), py::arg("load") = rt::kReferenceNormalForce,
+      "The USB rig controller (by serial; None: the only one on the bus) with the accelerometer on "
+      "an audio input "
+      "(input_api: jack, alsa, pulse; input_device by name; input_channel 1-based; accelerometer: "
+      "its m/s² at full "
+      "scale); tool and surface: what is mounted, which a session must say. Opened by capture or "
+      "compare: a "
+      "missing controller or input is an OSError naming what was asked.");
 
   m.def("capture", &capture, py::arg("rig"), py::arg("folder"), py::kw_only(), py::arg("profile") = py::none(),
         py::arg("seconds") = py::none(), py::arg("notes") = "", py::arg("progress") = py::none(),
