@@ -6,11 +6,13 @@
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "playback/alsa_quiet.hpp"
 #include "playback/device_error.hpp"
 #include "playback/device_probe.hpp"
+#include "playback/offline_render.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -188,6 +190,12 @@ DeviceChoice choose_device(std::string_view api, std::string_view device) {
 
 OutputSettings output_settings_for(std::string_view api, std::string_view device, unsigned rate,
                                    unsigned period_frames, unsigned output_channel, std::string stream_name) {
+  if (rate != 0) check_render_rate(rate, "rate");
+  check_render_block(period_frames, "period");
+  if (output_channel < 1 || output_channel > kMostOutputChannels)
+    throw std::invalid_argument("channel: " + std::to_string(output_channel) +
+                                ": expected an output channel, 1 to " +
+                                std::to_string(kMostOutputChannels));
   const DeviceChoice choice = choose_device(api, device);
   OutputSettings s;
   s.api = choice.api;

@@ -55,9 +55,15 @@ DeviceChoice choose_device(std::string_view api, std::string_view device);
 const DeviceInfo& find_device(const std::vector<DeviceInfo>& devices, std::string_view name,
                               std::string_view api);
 
+// The most output channels a device is taken to have: a channel beyond is a typo.
+inline constexpr unsigned kMostOutputChannels = 1024;
+
 // The settings to open a device asked for by API and name (chosen as choose_device does) at
 // `rate` Hz, or at the device's own rate when 0 (JACK: the server's; 48 kHz when it does not say).
-// Every face opens its devices through this. Throws DeviceError.
+// Every face opens its devices through this, so its ranges are checked here once: `rate` 0 or a
+// render's (kLowestRenderRateHz to kHighestRenderRateHz), `period_frames` a render block's,
+// `output_channel` 1 to kMostOutputChannels; std::invalid_argument named "rate", "period",
+// "channel" otherwise. Throws DeviceError when no device matches.
 OutputSettings output_settings_for(std::string_view api, std::string_view device, unsigned rate,
                                    unsigned period_frames, unsigned output_channel, std::string stream_name);
 

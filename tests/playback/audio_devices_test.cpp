@@ -101,5 +101,27 @@ TEST(AudioDevices, AnUnknownApiListsTheCompiledOnes) {
   EXPECT_THAT(message, HasSubstr("alsa"));
 }
 
+// Every face opens its device through output_settings_for, so its ranges are refused there, named
+// as a Python call names them, before any device is looked for (none exists under this API).
+TEST(AudioDevices, OutputSettingsRefuseARateAPeriodAndAChannelOutOfRangeByName) {
+  const auto refused = [](unsigned rate, unsigned period, unsigned channel) {
+    try {
+      output_settings_for("no-such-api", "", rate, period, channel, "nibrig-test");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    } catch (const DeviceError&) {
+      return std::string("device looked for");
+    }
+    return std::string("taken");
+  };
+  EXPECT_THAT(refused(100, 256, 1), ::testing::StartsWith("rate: 100"));
+  EXPECT_THAT(refused(0, 0, 1), ::testing::StartsWith("period: 0"));
+  EXPECT_THAT(refused(48000, 256, 0), ::testing::StartsWith("channel: 0"));
+  EXPECT_THAT(refused(48000, 256, kMostOutputChannels + 1),
+              ::testing::StartsWith("channel: " + std::to_string(kMostOutputChannels + 1)));
+  // In range, the device is looked for (0: the device's own rate).
+  EXPECT_EQ(refused(0, 256, 1), "device looked for");
+}
+
 }  // namespace
 }  // namespace nibrig::playback

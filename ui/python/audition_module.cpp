@@ -65,10 +65,6 @@ struct PlayerOptions {
 class Player {
  public:
   explicit Player(const PlayerOptions& o) {
-    if (o.channel < 1) throw std::invalid_argument("channel is 0; expected an output channel from 1");
-    // A rendered engine's ranges (0: the device's rate), as the command line's --rate and --period.
-    if (o.rate != 0) playback::check_render_rate(o.rate, "rate");
-    playback::check_render_block(o.period, "period");
     py::gil_scoped_release unlocked;
     const auto settings = playback::output_settings_for(o.api, o.device, o.rate, o.period, o.channel, o.name);
     rt::EngineSettings engine;
