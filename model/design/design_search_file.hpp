@@ -1,4 +1,4 @@
-// The design search's report (`nibrig design -o`, FORMATS.md "Prediction"): the optimum, the
+// The design search's report (`nibrig design -o`, FORMATS.md "Design search"): the optimum, the
 // runners-up and every candidate in the order evaluated, each with its design, distance to the
 // target, predicted descriptors and place in the space.
 #pragma once

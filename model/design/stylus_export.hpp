@@ -65,8 +65,8 @@ struct StylusFiles {
   std::filesystem::path slicer_config;      // <stem>.ini beside it for a PrusaSlicer printer, else empty
 };
 
-// The recipe, for people and scripts (FORMATS.md "Stylus recipe"): kind "stylus_recipe", design,
-// design_name, mesh_size_mm, regions [{name, material, printer_material, mix [{material,
+// The recipe, for people and scripts (FORMATS.md "Stylus for a printer"): kind "stylus_recipe",
+// design, design_name, mesh_size_mm, regions [{name, material, printer_material, mix [{material,
 // fraction}], triangles, volume_mm3}], substitutes [{design, cost, cost_sd, to_target and
 // to_target_sd (when searched for a target), outside_constraints (when it breaks one)}], files
 // {three_mf, stls, slicer_config}; each region's material_basis; with a printer, `printer` (its

@@ -1,5 +1,5 @@
 // A fitted forcing model on disk (forcing.json, format "nibrig-forcing" version 1): what
-// `nibrig forcing fit` writes and prediction reads. Layout in the README ("Formats").
+// `nibrig forcing fit` writes and prediction reads. Layout in FORMATS.md, "Forcing model".
 #pragma once
 
 #include <filesystem>

@@ -66,7 +66,7 @@ Design bar_design(const BarGeometry& bar, const std::string& material);
 // hundredth of the free length, so that a very thin bar does not mesh into millions of elements.
 double bar_mesh_size(const BarGeometry& bar);
 
-// Format "nibrig-design", version 1 (see README, "Formats"). Checks that every material named
+// Format "nibrig-design", version 1 (FORMATS.md, "Stylus design"). Checks that every material named
 // exists in `materials` and that directions are non-zero (they are normalised). Throws
 // io::FormatError naming the file and field.
 Design read_design(const std::filesystem::path& file, const MaterialTable& materials);

@@ -1,6 +1,6 @@
-// Accounts for every sequence number of the frame stream (PROTOCOL.md "frame stream"): which frames
-// to deliver, and how many were dropped, arrived late (reordered) or twice. Runs on whichever thread
-// handles libusb's events, so it neither allocates nor locks.
+// Accounts for every sequence number of the frame stream (PROTOCOL.md "The frame stream"): which
+// frames to deliver, and how many were dropped, arrived late (reordered) or twice. Runs on
+// whichever thread handles libusb's events, so it neither allocates nor locks.
 #pragma once
 
 #include <cstdint>

@@ -295,7 +295,8 @@ void add_mechanics_command(CLI::App& app, std::shared_ptr<const GlobalOptions> g
       app.add_subcommand("mechanics", "Stylus mechanics: modes, frequency response, ring-down fit");
   cmd->require_subcommand(1);
   cmd->footer(
-      "A design (design.json: see README, \"Formats\") is meshed with quadratic tetrahedra "
+      "A design (design.json: see model/io/FORMATS.md, \"Stylus design\") is meshed with quadratic "
+      "tetrahedra "
       "(Gmsh),\n"
       "its lowest modes are found (Spectra, shift-invert), damped with Rayleigh damping, and read "
       "at\n"

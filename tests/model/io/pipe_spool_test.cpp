@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
 #include "model/io/triplets.hpp"
 #include "tests/support/test_paths.hpp"

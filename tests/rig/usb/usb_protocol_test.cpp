@@ -133,7 +133,7 @@ TEST(UsbProtocol, ProfilePointsKeepMillisecondsAndMillimetresPerSecond) {
   EXPECT_DOUBLE_EQ(back[1].time_s, 2.0);
   EXPECT_NEAR(back[0].speed_m_s, 0.017, 1e-9);  // f32 of 17 mm/s is exact; m/s is /1000
   EXPECT_DOUBLE_EQ(back[2].speed_m_s, 0.25);
-  // Time is kept to the millisecond, rounded to the nearest (PROTOCOL.md "Points").
+  // Time is kept to the millisecond, rounded to the nearest (PROTOCOL.md "Profile").
   const std::vector<ProfilePoint> fine = {{1.2346, 0.0}};
   EXPECT_DOUBLE_EQ(decode_points(encode_points(fine))[0].time_s, 1.235);
   EXPECT_THROW(decode_points(std::vector<std::uint8_t>(7, 0)), UsbRigError);

@@ -206,7 +206,7 @@ TYPED_TEST(UsbRigControllerOn, UploadsAProfileInChunksAndReadsItBack) {
   ASSERT_EQ(back.size(), steps.points().size());
   ASSERT_EQ(held.size(), steps.points().size());
   for (std::size_t i = 0; i < back.size(); ++i) {
-    // Times travel in whole milliseconds, speeds as f32 mm/s (PROTOCOL.md "Points").
+    // Times travel in whole milliseconds, speeds as f32 mm/s (PROTOCOL.md "Profile").
     EXPECT_NEAR(back[i].time_s, steps.points()[i].time_s, 0.0005) << i;
     EXPECT_NEAR(back[i].speed_m_s, steps.points()[i].speed_m_s, 1e-7) << i;
     EXPECT_EQ(held[i].time_s, back[i].time_s) << i;
