@@ -6,18 +6,21 @@
 
 #include <cstdint>
 
+#include "rig/firmware/rig_protocol.h"
+
 namespace nibrig::rig {
 
-// Bits of SensorFrame::flags. The values are the wire format's (PROTOCOL.md) so a frame's flags are
-// copied, never translated.
+// Bits of SensorFrame::flags. The values are the wire format's (rig/firmware/rig_protocol.h) so a
+// frame's flags are copied, never translated.
 enum SensorFlag : std::uint16_t {
-  kNormalForceSaturated = 1u << 0,      // the normal channel is at its converter's end
-  kTangentialForceSaturated = 1u << 1,  // the tangential channel is at its converter's end
-  kEncoderFault = 1u << 2,              // the speed reading is not trustworthy (lost index, glitch)
-  kMotorFault = 1u << 3,                // stall, over-current, driver, supply, over-speed or slip
-  kWatchdogStopped = 1u << 4,           // the motor stopped because the host was silent too long
-  kProfileRunning = 1u << 5,            // a profile (or a speed target) is being followed
-  kForceFault = 1u << 6,                // a force channel stopped the motor (1.2): unusable while it turned
+  kNormalForceSaturated = RIG_NORMAL_SATURATED,  // the normal channel is at its converter's end
+  kTangentialForceSaturated = RIG_TANGENTIAL_SATURATED,  // the tangential channel, likewise
+  kEncoderFault = RIG_ENCODER_FAULT,  // the speed reading is not trustworthy (lost index, glitch)
+  kMotorFault = RIG_MOTOR_FAULT,      // stall, over-current, driver, supply, over-speed or slip
+  kWatchdogStopped = RIG_WATCHDOG_STOPPED,  // the motor stopped: the host was silent too long
+  kProfileRunning = RIG_PROFILE_RUNNING,    // a profile (or a speed target) is being followed
+  kForceFault =
+      RIG_FORCE_FAULT,  // a force channel stopped the motor (1.2): unusable while it turned
 };
 
 struct SensorFrame {

@@ -46,21 +46,21 @@ uint16_t frame_fifo_begin_packet(struct frame_fifo *q) {
   q->header_sent = 0;
   q->sent_frames = 0;
   q->sent_bytes = 0;
-  return (uint16_t)(PACKET_HEADER_BYTES + n * RIG_FRAME_BYTES);
+  return (uint16_t)(RIG_PACKET_HEADER_BYTES + n * RIG_FRAME_BYTES);
 }
 
 uint8_t frame_fifo_packet_span(struct frame_fifo *q, const uint8_t **bytes) {
   if (q->packet_frames == 0) return 0;
-  if (q->header_sent < PACKET_HEADER_BYTES) {
+  if (q->header_sent < RIG_PACKET_HEADER_BYTES) {
     *bytes = q->header + q->header_sent;
-    return (uint8_t)(PACKET_HEADER_BYTES - q->header_sent);
+    return (uint8_t)(RIG_PACKET_HEADER_BYTES - q->header_sent);
   }
   *bytes = q->frames[(uint8_t)(q->tail + q->sent_frames) % FRAME_FIFO_SIZE] + q->sent_bytes;
   return (uint8_t)(RIG_FRAME_BYTES - q->sent_bytes);
 }
 
 void frame_fifo_packet_advance(struct frame_fifo *q, uint8_t n) {
-  if (q->header_sent < PACKET_HEADER_BYTES) {
+  if (q->header_sent < RIG_PACKET_HEADER_BYTES) {
     q->header_sent = (uint8_t)(q->header_sent + n);
     return;
   }

@@ -14,8 +14,7 @@
 /* At most 8 frames a packet: 4 + 28·n is then never a multiple of 64 bytes, so a packet always ends
  * in a short USB packet and never needs a zero-length one. */
 #define PACKET_MAX_FRAMES 8u
-#define PACKET_MAX_BYTES (4u + PACKET_MAX_FRAMES * RIG_FRAME_BYTES)
-#define PACKET_HEADER_BYTES 4u
+#define PACKET_MAX_BYTES (RIG_PACKET_HEADER_BYTES + PACKET_MAX_FRAMES * RIG_FRAME_BYTES)
 
 struct frame_fifo {
   uint8_t frames[FRAME_FIFO_SIZE][RIG_FRAME_BYTES];
@@ -24,7 +23,7 @@ struct frame_fifo {
   volatile uint16_t dropped;
   /* The packet on its way: its frames from the tail on, and its next unsent byte. */
   uint8_t packet_frames; /* 0: none */
-  uint8_t header[PACKET_HEADER_BYTES];
+  uint8_t header[RIG_PACKET_HEADER_BYTES];
   uint8_t header_sent;   /* bytes of the header gone */
   uint8_t sent_frames;   /* of the packet's, all their bytes gone */
   uint8_t sent_bytes;    /* of the frame being sent */

@@ -109,7 +109,7 @@ static void start(struct rig *r, uint8_t mode) {
 
 static void identify(const struct rig *r, struct rig_reply *reply) {
   uint8_t *d = reply->data;
-  memset(d, 0, 52);
+  memset(d, 0, RIG_IDENTITY_BYTES);
   put_u16(d + 0, RIG_PROTOCOL_VERSION);
   put_u16(d + 2, RIG_MAX_POINTS);
   put_f32(d + 4, RIG_MAX_SPEED_MM_S);
@@ -121,7 +121,7 @@ static void identify(const struct rig *r, struct rig_reply *reply) {
   put_u16(d + 18, RIG_WATCHDOG_MS);
   memcpy(d + 20, r->persist.serial, RIG_SERIAL_BYTES);
   memcpy(d + 36, RIG_FIRMWARE_VERSION, sizeof RIG_FIRMWARE_VERSION - 1);
-  reply->len = 52;
+  reply->len = RIG_IDENTITY_BYTES;
 }
 
 static uint16_t current_flags(const struct rig *r) {
@@ -168,14 +168,14 @@ struct shape {
 
 static int shape_of(uint8_t request, struct shape *s) {
   switch (request) {
-    case RIG_IDENTIFY: *s = (struct shape){1, 52}; return 1;
-    case RIG_GET_STATUS: *s = (struct shape){1, 16}; return 1;
-    case RIG_GET_CALIBRATION: *s = (struct shape){1, 12}; return 1;
-    case RIG_GET_GEOMETRY: *s = (struct shape){1, 8}; return 1;
+    case RIG_IDENTIFY: *s = (struct shape){1, RIG_IDENTITY_BYTES}; return 1;
+    case RIG_GET_STATUS: *s = (struct shape){1, RIG_STATUS_BYTES_1_0}; return 1;
+    case RIG_GET_CALIBRATION: *s = (struct shape){1, RIG_CALIBRATION_BYTES}; return 1;
+    case RIG_GET_GEOMETRY: *s = (struct shape){1, RIG_GEOMETRY_BYTES}; return 1;
     case RIG_PROFILE_READ: *s = (struct shape){1, 0}; return 1; /* 8·n, checked below */
-    case RIG_SET_SPEED: *s = (struct shape){0, 4}; return 1;
-    case RIG_SET_CALIBRATION: *s = (struct shape){0, 12}; return 1;
-    case RIG_SET_GEOMETRY: *s = (struct shape){0, 8}; return 1;
+    case RIG_SET_SPEED: *s = (struct shape){0, RIG_SPEED_BYTES}; return 1;
+    case RIG_SET_CALIBRATION: *s = (struct shape){0, RIG_CALIBRATION_BYTES}; return 1;
+    case RIG_SET_GEOMETRY: *s = (struct shape){0, RIG_GEOMETRY_BYTES}; return 1;
     case RIG_SET_SERIAL: *s = (struct shape){0, RIG_SERIAL_BYTES}; return 1;
     case RIG_PROFILE_WRITE: *s = (struct shape){0, 0}; return 1; /* 8·n, checked below */
     case RIG_SET_STREAMING:
@@ -190,7 +190,10 @@ static int shape_of(uint8_t request, struct shape *s) {
   }
 }
 
-static int points_length_ok(uint16_t length) { return length >= 8 && length <= 64 && length % 8 == 0; }
+static int points_length_ok(uint16_t length) {
+  return length >= RIG_POINT_BYTES && length <= RIG_MAX_POINTS_PER_REQUEST * RIG_POINT_BYTES &&
+         length % RIG_POINT_BYTES == 0;
+}
 
 static void refuse(struct rig *r, uint8_t request, enum rig_refusal why, struct rig_reply *reply) {
   rig_refuse(r, request, why);
@@ -206,7 +209,7 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
   r->last_control_us = now_us; /* any request keeps the watchdog off */
 
   struct shape s;
-  if (!shape_of(request, &s) || type != (s.in ? 0xC0 : 0x40)) {
+  if (!shape_of(request, &s) || type != (s.in ? RIG_REQUEST_TYPE_IN : RIG_REQUEST_TYPE_OUT)) {
     refuse(r, request, RIG_REFUSE_UNKNOWN, reply);
     return;
   }
@@ -256,15 +259,15 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
       r->profile_held = 0;
       return;
     case RIG_PROFILE_WRITE: {
-      const uint16_t n = length / 8;
+      const uint16_t n = length / RIG_POINT_BYTES;
       if (r->profile_expected == 0 || index != r->profile_received) {
         refuse(r, request, RIG_REFUSE_ORDER, reply);
         return;
       }
       if (index + n > r->profile_expected) break;
       for (uint16_t i = 0; i < n; ++i) {
-        r->profile[index + i].t_ms = get_u32(data + 8 * i);
-        r->profile[index + i].mm_s = get_f32(data + 8 * i + 4);
+        r->profile[index + i].t_ms = get_u32(data + RIG_POINT_BYTES * i);
+        r->profile[index + i].mm_s = get_f32(data + RIG_POINT_BYTES * i + 4);
       }
       r->profile_received += n;
       return;
@@ -279,11 +282,11 @@ void rig_control(struct rig *r, const uint8_t setup[8], const uint8_t *data, uin
       r->profile_expected = 0;
       return;
     case RIG_PROFILE_READ: {
-      const uint16_t n = length / 8;
+      const uint16_t n = length / RIG_POINT_BYTES;
       if (index + n > r->profile_held) break;
       for (uint16_t i = 0; i < n; ++i) {
-        put_u32(reply->data + 8 * i, r->profile[index + i].t_ms);
-        put_f32(reply->data + 8 * i + 4, r->profile[index + i].mm_s);
+        put_u32(reply->data + RIG_POINT_BYTES * i, r->profile[index + i].t_ms);
+        put_f32(reply->data + RIG_POINT_BYTES * i + 4, r->profile[index + i].mm_s);
       }
       reply->len = (uint8_t)length;
       return;

@@ -1,5 +1,5 @@
-/* The rig controller's protocol state (rig/PROTOCOL.md): requests, mode, profile, calibration,
- * refusals, the watchdog and the frames' values. Plain C with no hardware in it, so that the same
+/* The rig controller's protocol state (rig/PROTOCOL.md; its numbers in rig_protocol.h): requests,
+ * mode, profile, calibration, refusals, the watchdog and the frames' values. Plain C with no hardware in it, so that the same
  * file runs on the ATmega32U4 and in the host's tests; the board supplies time, ADC means and the
  * encoder's speed, and persists what `rig_persist` holds. */
 #ifndef NIBRIG_RIG_DEVICE_H
@@ -7,11 +7,12 @@
 
 #include <stdint.h>
 
+#include "rig_protocol.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-#define RIG_PROTOCOL_VERSION 0x0102u
 #define RIG_FIRMWARE_VERSION "1.2.0"
 #define RIG_MAX_POINTS 64u
 #define RIG_MAX_SPEED_MM_S 300.0f
@@ -21,10 +22,6 @@ extern "C" {
 #define RIG_MAX_RATE_HZ 3000u
 #define RIG_WATCHDOG_MS 400u
 #define RIG_ADC_FULL_COUNTS 1023.0f
-#define RIG_SERIAL_BYTES 16u
-#define RIG_FRAME_BYTES 28u
-#define RIG_BOOTLOADER_KEY 0x4E42u
-#define RIG_STATUS_BYTES 20u
 /* SET_CALIBRATION's and SET_GEOMETRY's ranges (1.2) for this board's 10-bit converter and turntable.
  * A count at the tip (lever / counts per N) of at least 8.6 mN keeps twice the paper's 2.2 N load
  * within the ~511 counts either side of the zero; at most 0.11 N keeps a count within 5 % of that
@@ -40,60 +37,6 @@ extern "C" {
  * pulled up, or a bridge wired backwards. */
 #define RIG_FORCE_BAD_MS 100u
 #define RIG_NEGATIVE_NORMAL_N (-0.5f)
-
-enum rig_request {
-  RIG_IDENTIFY = 0x01,
-  RIG_GET_STATUS = 0x02,
-  RIG_SET_STREAMING = 0x03,
-  RIG_SET_SPEED = 0x10,
-  RIG_START_PROFILE = 0x11,
-  RIG_STOP = 0x12,
-  RIG_PROFILE_BEGIN = 0x20,
-  RIG_PROFILE_WRITE = 0x21,
-  RIG_PROFILE_END = 0x22,
-  RIG_PROFILE_READ = 0x23,
-  RIG_ZERO_FORCE = 0x30,
-  RIG_SET_FRAME_RATE = 0x31,
-  RIG_GET_CALIBRATION = 0x32,
-  RIG_SET_CALIBRATION = 0x33,
-  RIG_GET_GEOMETRY = 0x34,
-  RIG_SET_GEOMETRY = 0x35,
-  RIG_SET_SERIAL = 0x36,
-  RIG_ENTER_BOOTLOADER = 0x40
-};
-
-enum rig_refusal { RIG_REFUSE_NONE = 0, RIG_REFUSE_UNKNOWN, RIG_REFUSE_LENGTH, RIG_REFUSE_RANGE, RIG_REFUSE_ORDER };
-enum rig_mode { RIG_IDLE = 0, RIG_SPEED = 1, RIG_PROFILE = 2, RIG_PROFILE_DONE = 3 };
-enum rig_fault { RIG_FAULT_NONE = 0, RIG_FAULT_MOTOR = 1, RIG_FAULT_ENCODER = 2, RIG_FAULT_WATCHDOG = 3, RIG_FAULT_FORCE = 4 };
-/* Why the motor stopped (1.2): each cause belongs to one fault above (PROTOCOL.md "Fault causes"). */
-enum rig_fault_cause {
-  RIG_CAUSE_NONE = 0,
-  RIG_CAUSE_STALL = 1,
-  RIG_CAUSE_OVERCURRENT = 2,
-  RIG_CAUSE_DRIVER = 3,
-  RIG_CAUSE_SUPPLY = 4,
-  RIG_CAUSE_OVERSPEED = 5,
-  RIG_CAUSE_SLIP = 6,
-  RIG_CAUSE_ENCODER_SILENT = 7,
-  RIG_CAUSE_ENCODER_GLITCH = 8,
-  RIG_CAUSE_ENCODER_REVERSED = 9,
-  RIG_CAUSE_ENCODER_CHANNEL = 10,
-  RIG_CAUSE_HOST_SILENT = 11,
-  RIG_CAUSE_FORCE_SATURATED = 12,
-  RIG_CAUSE_FORCE_NEGATIVE = 13
-};
-/* What restarted the controller last (1.2), from the chip's reset flags. */
-enum rig_reset { RIG_RESET_POWER_ON = 0, RIG_RESET_EXTERNAL = 1, RIG_RESET_BROWN_OUT = 2, RIG_RESET_WATCHDOG = 3 };
-enum rig_health { RIG_HEALTH_FACTORY_DEFAULTS = 1u << 0 };
-enum rig_flag {
-  RIG_NORMAL_SATURATED = 1u << 0,
-  RIG_TANGENTIAL_SATURATED = 1u << 1,
-  RIG_ENCODER_FAULT = 1u << 2,
-  RIG_MOTOR_FAULT = 1u << 3,
-  RIG_WATCHDOG_STOPPED = 1u << 4,
-  RIG_PROFILE_RUNNING = 1u << 5,
-  RIG_FORCE_FAULT = 1u << 6
-};
 
 /* Packed as the AVR lays structs out anyway (it has no alignment), so that the host's tests read
  * the firmware's memory with these same definitions. */

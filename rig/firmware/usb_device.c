@@ -4,6 +4,7 @@
 #include <avr/pgmspace.h>
 #include "board.h"
 #include "frame_fifo.h"
+#include "rig_protocol.h"
 
 #define EP0_SIZE 64u
 #define STREAM_EP 1u
@@ -11,15 +12,16 @@
 static const uint8_t device_descriptor[18] PROGMEM = {
     18, 1, 0x00, 0x02,       /* USB 2.0 */
     0xFF, 0x00, 0x00,        /* vendor specific */
-    EP0_SIZE, 0x09, 0x12,    /* VID 0x1209 (pid.codes) */
-    0x0A, 0x00,              /* PID 0x000A */
+    EP0_SIZE,
+    RIG_USB_VENDOR_ID & 0xFFu, RIG_USB_VENDOR_ID >> 8,
+    RIG_USB_PRODUCT_ID & 0xFFu, RIG_USB_PRODUCT_ID >> 8,
     0x10, 0x01,              /* bcdDevice 1.10: the firmware's version */
     1, 2, 3, 1};             /* manufacturer, product, serial strings; one configuration */
 
 static const uint8_t configuration_descriptor[25] PROGMEM = {
     9, 2, 25, 0, 1, 1, 0, 0x80, 50,        /* one interface, bus powered, 100 mA */
     9, 4, 0, 0, 1, 0xFF, 0x00, 0x00, 0,    /* interface 0: one endpoint, vendor specific */
-    7, 5, 0x81, 0x02, 64, 0, 0};           /* bulk IN 0x81, 64 bytes (full speed) */
+    7, 5, RIG_STREAM_ENDPOINT, 0x02, 64, 0, 0}; /* bulk IN, 64 bytes (full speed) */
 
 static const char manufacturer[] PROGMEM = "nibrig";
 static const char product[] PROGMEM = "nibrig rig controller";

@@ -6,33 +6,7 @@
 #include <cstdio>
 #include <string_view>
 
-#include "rig/firmware/rig_device.h"
 #include "rig/usb/usb_rig_error.hpp"
-
-// The reference firmware's header (rig/firmware/rig_device.h) numbers the same protocol for the
-// chip: the host's names must mean its numbers, so that neither drifts from the other.
-static_assert(nibrig::rig::usb::kProtocolVersion == RIG_PROTOCOL_VERSION);
-static_assert(nibrig::rig::usb::kStatusBytes12 == RIG_STATUS_BYTES);
-static_assert(nibrig::rig::usb::kFrameBytes == RIG_FRAME_BYTES);
-static_assert(nibrig::rig::usb::kBootloaderKey == RIG_BOOTLOADER_KEY);
-static_assert(static_cast<int>(nibrig::rig::usb::Request::kGetStatus) == RIG_GET_STATUS &&
-              static_cast<int>(nibrig::rig::usb::Request::kSetSpeed) == RIG_SET_SPEED &&
-              static_cast<int>(nibrig::rig::usb::Request::kSetSerial) == RIG_SET_SERIAL &&
-              static_cast<int>(nibrig::rig::usb::Request::kEnterBootloader) == RIG_ENTER_BOOTLOADER);
-static_assert(static_cast<int>(nibrig::rig::usb::Fault::kForce) == RIG_FAULT_FORCE &&
-              static_cast<int>(nibrig::rig::usb::Fault::kWatchdog) == RIG_FAULT_WATCHDOG);
-static_assert(static_cast<int>(nibrig::rig::usb::FaultCause::kStall) == RIG_CAUSE_STALL &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kSupply) == RIG_CAUSE_SUPPLY &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kSlip) == RIG_CAUSE_SLIP &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kEncoderReversed) == RIG_CAUSE_ENCODER_REVERSED &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kEncoderChannel) == RIG_CAUSE_ENCODER_CHANNEL &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kHostSilent) == RIG_CAUSE_HOST_SILENT &&
-              static_cast<int>(nibrig::rig::usb::FaultCause::kForceNegative) == RIG_CAUSE_FORCE_NEGATIVE);
-static_assert(static_cast<int>(nibrig::rig::usb::ResetCause::kBrownOut) == RIG_RESET_BROWN_OUT &&
-              nibrig::rig::usb::kHealthFactoryDefaults == RIG_HEALTH_FACTORY_DEFAULTS);
-static_assert(static_cast<int>(nibrig::rig::kForceFault) == static_cast<int>(RIG_FORCE_FAULT) &&
-              static_cast<int>(nibrig::rig::kProfileRunning) == static_cast<int>(RIG_PROFILE_RUNNING) &&
-              static_cast<int>(nibrig::rig::kWatchdogStopped) == static_cast<int>(RIG_WATCHDOG_STOPPED));
 
 namespace nibrig::rig::usb {
 namespace {

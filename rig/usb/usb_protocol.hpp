@@ -1,6 +1,7 @@
 // The rig controller's wire format (rig/PROTOCOL.md) as plain bytes in and out: request numbers,
 // reply layouts and frame packets, with no libusb in sight, so that the driver and the tests'
-// emulated device share one definition and each layout is tested against hand-built bytes.
+// emulated device share one definition and each layout is tested against hand-built bytes. The
+// numbers are the firmware's own (rig/firmware/rig_protocol.h), named here for C++.
 #pragma once
 
 #include <array>
@@ -10,90 +11,110 @@
 #include <string>
 #include <vector>
 
+#include "rig/firmware/rig_protocol.h"
 #include "rig/sensor_frame.hpp"
 #include "rig/speed_profile.hpp"
 
 namespace nibrig::rig::usb {
 
-inline constexpr std::uint16_t kVendorId = 0x1209;   // pid.codes
-inline constexpr std::uint16_t kProductId = 0x000A;  // pid.codes' test range
+inline constexpr std::uint16_t kVendorId = RIG_USB_VENDOR_ID;
+inline constexpr std::uint16_t kProductId = RIG_USB_PRODUCT_ID;
 inline constexpr int kInterface = 0;
-inline constexpr std::uint8_t kStreamEndpoint = 0x81;
-inline constexpr std::uint8_t kRequestTypeIn = 0xC0;   // vendor, device, device to host
-inline constexpr std::uint8_t kRequestTypeOut = 0x40;  // vendor, device, host to device
-inline constexpr std::uint16_t kProtocolVersion = 0x0102;
-// The version that added GET/SET_GEOMETRY, SET_SERIAL and ENTER_BOOTLOADER.
-inline constexpr std::uint16_t kGeometryVersion = 0x0101;
-// The version whose status says why the motor stopped, what restarted the device, and its health.
-inline constexpr std::uint16_t kFaultCauseVersion = 0x0102;
-// ENTER_BOOTLOADER's wValue ("NB"): a stray request must not take the device off the bus.
-inline constexpr std::uint16_t kBootloaderKey = 0x4E42;
+inline constexpr std::uint8_t kStreamEndpoint = RIG_STREAM_ENDPOINT;
+inline constexpr std::uint8_t kRequestTypeIn = RIG_REQUEST_TYPE_IN;
+inline constexpr std::uint8_t kRequestTypeOut = RIG_REQUEST_TYPE_OUT;
+inline constexpr std::uint16_t kProtocolVersion = RIG_PROTOCOL_VERSION;
+inline constexpr std::uint16_t kGeometryVersion = RIG_GEOMETRY_VERSION;
+inline constexpr std::uint16_t kFaultCauseVersion = RIG_FAULT_CAUSE_VERSION;
+inline constexpr std::uint16_t kBootloaderKey = RIG_BOOTLOADER_KEY;
 
 enum class Request : std::uint8_t {
-  kIdentify = 0x01,
-  kGetStatus = 0x02,
-  kSetStreaming = 0x03,
-  kSetSpeed = 0x10,
-  kStartProfile = 0x11,
-  kStop = 0x12,
-  kProfileBegin = 0x20,
-  kProfileWrite = 0x21,
-  kProfileEnd = 0x22,
-  kProfileRead = 0x23,
-  kZeroForce = 0x30,
-  kSetFrameRate = 0x31,
-  kGetCalibration = 0x32,
-  kSetCalibration = 0x33,
-  kGetGeometry = 0x34,
-  kSetGeometry = 0x35,
-  kSetSerial = 0x36,
-  kEnterBootloader = 0x40,
+  kIdentify = RIG_IDENTIFY,
+  kGetStatus = RIG_GET_STATUS,
+  kSetStreaming = RIG_SET_STREAMING,
+  kSetSpeed = RIG_SET_SPEED,
+  kStartProfile = RIG_START_PROFILE,
+  kStop = RIG_STOP,
+  kProfileBegin = RIG_PROFILE_BEGIN,
+  kProfileWrite = RIG_PROFILE_WRITE,
+  kProfileEnd = RIG_PROFILE_END,
+  kProfileRead = RIG_PROFILE_READ,
+  kZeroForce = RIG_ZERO_FORCE,
+  kSetFrameRate = RIG_SET_FRAME_RATE,
+  kGetCalibration = RIG_GET_CALIBRATION,
+  kSetCalibration = RIG_SET_CALIBRATION,
+  kGetGeometry = RIG_GET_GEOMETRY,
+  kSetGeometry = RIG_SET_GEOMETRY,
+  kSetSerial = RIG_SET_SERIAL,
+  kEnterBootloader = RIG_ENTER_BOOTLOADER,
 };
 // "IDENTIFY (0x01)": how errors name a request.
 std::string request_name(std::uint8_t request);
 
 // PROTOCOL.md "Errors": why the device refused a request.
-enum class Refusal : std::uint8_t { kNone = 0, kUnknown = 1, kLength = 2, kRange = 3, kOrder = 4 };
+enum class Refusal : std::uint8_t {
+  kNone = RIG_REFUSE_NONE,
+  kUnknown = RIG_REFUSE_UNKNOWN,
+  kLength = RIG_REFUSE_LENGTH,
+  kRange = RIG_REFUSE_RANGE,
+  kOrder = RIG_REFUSE_ORDER
+};
 std::string refusal_text(std::uint8_t refusal);
 
-enum class Mode : std::uint8_t { kIdle = 0, kSpeed = 1, kProfile = 2, kProfileDone = 3 };
-enum class Fault : std::uint8_t { kNone = 0, kMotor = 1, kEncoder = 2, kWatchdog = 3, kForce = 4 };
+enum class Mode : std::uint8_t {
+  kIdle = RIG_IDLE,
+  kSpeed = RIG_SPEED,
+  kProfile = RIG_PROFILE,
+  kProfileDone = RIG_PROFILE_DONE
+};
+enum class Fault : std::uint8_t {
+  kNone = RIG_FAULT_NONE,
+  kMotor = RIG_FAULT_MOTOR,
+  kEncoder = RIG_FAULT_ENCODER,
+  kWatchdog = RIG_FAULT_WATCHDOG,
+  kForce = RIG_FAULT_FORCE
+};
 std::string fault_text(std::uint8_t fault);
 // PROTOCOL.md "Fault causes" (1.2): why the device stopped the motor.
 enum class FaultCause : std::uint8_t {
-  kNone = 0,
-  kStall = 1,
-  kOverCurrent = 2,
-  kDriver = 3,
-  kSupply = 4,
-  kOverSpeed = 5,
-  kSlip = 6,
-  kEncoderSilent = 7,
-  kEncoderGlitch = 8,
-  kEncoderReversed = 9,
-  kEncoderChannel = 10,
-  kHostSilent = 11,
-  kForceSaturated = 12,
-  kForceNegative = 13,
+  kNone = RIG_CAUSE_NONE,
+  kStall = RIG_CAUSE_STALL,
+  kOverCurrent = RIG_CAUSE_OVERCURRENT,
+  kDriver = RIG_CAUSE_DRIVER,
+  kSupply = RIG_CAUSE_SUPPLY,
+  kOverSpeed = RIG_CAUSE_OVERSPEED,
+  kSlip = RIG_CAUSE_SLIP,
+  kEncoderSilent = RIG_CAUSE_ENCODER_SILENT,
+  kEncoderGlitch = RIG_CAUSE_ENCODER_GLITCH,
+  kEncoderReversed = RIG_CAUSE_ENCODER_REVERSED,
+  kEncoderChannel = RIG_CAUSE_ENCODER_CHANNEL,
+  kHostSilent = RIG_CAUSE_HOST_SILENT,
+  kForceSaturated = RIG_CAUSE_FORCE_SATURATED,
+  kForceNegative = RIG_CAUSE_FORCE_NEGATIVE,
 };
 // "the encoder reads the disc turning backwards ...: swap ...": what happened and what to check,
 // for a person at the rig; a 1.1 device's fault alone when the cause is unknown.
 std::string fault_cause_text(std::uint8_t fault, std::uint8_t cause);
-enum class ResetCause : std::uint8_t { kPowerOn = 0, kExternal = 1, kBrownOut = 2, kWatchdog = 3 };
+enum class ResetCause : std::uint8_t {
+  kPowerOn = RIG_RESET_POWER_ON,
+  kExternal = RIG_RESET_EXTERNAL,
+  kBrownOut = RIG_RESET_BROWN_OUT,
+  kWatchdog = RIG_RESET_WATCHDOG
+};
 std::string reset_cause_text(std::uint8_t cause);
-inline constexpr std::uint8_t kHealthFactoryDefaults = 1u << 0;
+inline constexpr std::uint8_t kHealthFactoryDefaults = RIG_HEALTH_FACTORY_DEFAULTS;
 
-inline constexpr std::size_t kIdentityBytes = 52;
-inline constexpr std::size_t kStatusBytes = 16;     // 1.0 and 1.1; the least a reply holds
-inline constexpr std::size_t kStatusBytes12 = 20;   // 1.2: a host asks for this many
-inline constexpr std::size_t kCalibrationBytes = 12;
-inline constexpr std::size_t kGeometryBytes = 8;
-inline constexpr std::size_t kSerialBytes = 16;
-inline constexpr std::size_t kPointBytes = 8;
-inline constexpr std::size_t kMaxPointsPerRequest = 8;
-inline constexpr std::size_t kPacketHeaderBytes = 4;
-inline constexpr std::size_t kFrameBytes = 28;
-inline constexpr std::size_t kMaxFramesPerPacket = 18;
+inline constexpr std::size_t kIdentityBytes = RIG_IDENTITY_BYTES;
+inline constexpr std::size_t kStatusBytes = RIG_STATUS_BYTES_1_0;  // the least a reply holds
+inline constexpr std::size_t kStatusBytes12 = RIG_STATUS_BYTES;    // 1.2: a host asks for this many
+inline constexpr std::size_t kCalibrationBytes = RIG_CALIBRATION_BYTES;
+inline constexpr std::size_t kGeometryBytes = RIG_GEOMETRY_BYTES;
+inline constexpr std::size_t kSerialBytes = RIG_SERIAL_BYTES;
+inline constexpr std::size_t kPointBytes = RIG_POINT_BYTES;
+inline constexpr std::size_t kMaxPointsPerRequest = RIG_MAX_POINTS_PER_REQUEST;
+inline constexpr std::size_t kPacketHeaderBytes = RIG_PACKET_HEADER_BYTES;
+inline constexpr std::size_t kFrameBytes = RIG_FRAME_BYTES;
+inline constexpr std::size_t kMaxFramesPerPacket = RIG_MAX_FRAMES_PER_PACKET;
 inline constexpr std::size_t kMaxPacketBytes = 512;  // what the host reads each transfer with
 
 struct Identity {

@@ -95,8 +95,8 @@ TEST(FirmwareFramePackets, APacketOnItsWayKeepsItsFramesWhatComesAfter) {
   for (unsigned i = 0; i < 3; ++i) fifo_push_frame(q, 1000 * i, i);
   frame_fifo_begin_packet(&q);
   const std::uint8_t* bytes = nullptr;
-  ASSERT_EQ(frame_fifo_packet_span(&q, &bytes), PACKET_HEADER_BYTES);
-  frame_fifo_packet_advance(&q, PACKET_HEADER_BYTES);
+  ASSERT_EQ(frame_fifo_packet_span(&q, &bytes), RIG_PACKET_HEADER_BYTES);
+  frame_fifo_packet_advance(&q, RIG_PACKET_HEADER_BYTES);
   fifo_push_frame(q, 5000, 3);
   frame_fifo_clear(&q);
   EXPECT_EQ(frame_fifo_count(&q), 3u);  // the packet's three, not the one made after
@@ -292,10 +292,15 @@ TEST_F(FirmwareRequests, ValuesOutOfRangeAreRangeRefusals) {
     std::memcpy(b.data(), text, n);
     return b;
   };
-  expect_refused(out(Request::kSetSerial, 0, 0, serial("", 0)), 0x36, Refusal::kRange);           // empty
-  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB 1", 5)), 0x36, Refusal::kRange);      // a space
-  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB\x7F", 4)), 0x36, Refusal::kRange);    // DEL
-  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB\0X", 5)), 0x36, Refusal::kRange);     // text after NUL
+  const auto set_serial = static_cast<std::uint8_t>(Request::kSetSerial);
+  expect_refused(out(Request::kSetSerial, 0, 0, serial("", 0)), set_serial,
+                 Refusal::kRange);  // empty
+  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB 1", 5)), set_serial,
+                 Refusal::kRange);  // a space
+  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB\x7F", 4)), set_serial,
+                 Refusal::kRange);  // DEL
+  expect_refused(out(Request::kSetSerial, 0, 0, serial("NIB\0X", 5)), set_serial,
+                 Refusal::kRange);  // text after NUL
   // Nothing refused changed the device.
   const DeviceStatus s = status();
   EXPECT_EQ(s.mode, Mode::kIdle);

@@ -40,7 +40,7 @@ struct Design<EmulatedRig> {
 #ifdef NIBRIG_FIRMWARE_ELF
 template <>
 struct Design<testing::FirmwareRig> {
-  static constexpr std::uint16_t kProtocol = 0x0102;  // RIG_PROTOCOL_VERSION
+  static constexpr std::uint16_t kProtocol = kProtocolVersion;  // the firmware's own
   static constexpr const char* kRates = "1000 to 3000 Hz";
   static constexpr bool kBuffersSeconds = false;  // the ATmega32U4's RAM holds 16 frames
   static constexpr unsigned kWatchdogMs = 400;    // RIG_WATCHDOG_MS: stopped, braked, within 600 ms
