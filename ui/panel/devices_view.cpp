@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rig/usb/usb_protocol.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {
@@ -201,7 +202,8 @@ void DevicesView::draw_listing() {
   }
   section("USB rig controllers");
   if (!listing_->usb_problem.empty()) ImGui::TextWrapped("%s", listing_->usb_problem.c_str());
-  else if (listing_->controllers.empty()) ImGui::TextWrapped("none on the bus (VID 0x1209, PID 0x000A)");
+  else if (listing_->controllers.empty())
+    ImGui::TextWrapped("none on the bus (VID 0x%04X, PID 0x%04X)", rig::usb::kVendorId, rig::usb::kProductId);
   for (const auto& c : listing_->controllers) ImGui::BulletText("%s", rig::usb::describe(c).c_str());
   section("Pen tablets (the pad draws with the first)");
   if (listing_->tablets.empty()) {
