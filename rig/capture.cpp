@@ -126,7 +126,7 @@ CaptureResult capture_session(Rig& rig, const SpeedProfile& profile, const Captu
   };
   try {
     while (more) {
-      if (!cancelled && options.cancel != nullptr && options.cancel->load()) {
+      if (!cancelled && options.cancel.stop_requested()) {
         cancelled = true;
         rig.stop();
       }

@@ -4,10 +4,10 @@
 // folder still reads up to its last block; a finished capture is renamed to its folder.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <stop_token>
 #include <string>
 
 #include "model/io/rig_session.hpp"
@@ -31,8 +31,9 @@ struct CaptureOptions {
   // on this), and about once a second with the progress. Either may be empty.
   std::function<void(const RigData&)> on_data;
   std::function<void(const CaptureProgress&)> on_progress;
-  // Set (e.g. from a signal handler) to stop the motor and finish the session with what it holds.
-  const std::atomic<bool>* cancel = nullptr;
+  // Stopped (Ctrl-C, a window's stop, a Python KeyboardInterrupt): the motor stops and the session
+  // is finished with what it holds.
+  std::stop_token cancel;
   double record_every_s = 1.0;  // how often session.json's capture record is rewritten
 };
 

@@ -88,12 +88,12 @@ LoopCapture measure_loop_round(model::design::LoopSession& session,
 
 void drive_design_loop(model::design::LoopSession& session,
                        const std::optional<LoopCaptureOptions>& capture, const LoopStepDone& done,
-                       const std::atomic<bool>* cancel) {
+                       std::stop_token cancel) {
   const auto report = [&](LoopStep step, int round) {
     if (done) done(step, round);
   };
   for (;;) {
-    if (cancel != nullptr && cancel->load()) throw model::numeric::Cancelled("the design loop");
+    if (cancel.stop_requested()) throw model::numeric::Cancelled("the design loop");
     if (const auto waiting = session.awaiting_measurement()) {
       const fs::path captured = model::design::round_session_folder(session.folder(), *waiting);
       if (fs::exists(captured) && !capture) {

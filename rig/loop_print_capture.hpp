@@ -5,9 +5,9 @@
 // complete but not yet analysed is analysed, not captured.
 #pragma once
 
-#include <atomic>
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string>
 
 #include "model/design/loop_session.hpp"
@@ -28,7 +28,7 @@ struct LoopCaptureOptions {
   model::design::ToolSoundOptions sounds;
   std::string profile = "steps";
   std::optional<double> seconds;
-  const std::atomic<bool>* cancel = nullptr;
+  std::stop_token cancel;
   std::function<void(const CaptureProgress&)> on_progress;
 };
 
@@ -57,10 +57,10 @@ using LoopStepDone = std::function<void(LoopStep step, int round)>;
 // Runs the loop on as far as it goes here: a round awaiting its print is measured (its captured
 // session analysed, or with `capture` the print captured first), then the next is proposed, until
 // the loop stops (`stopped`, round 0) or a round awaits a print nobody here can measure (`waiting`:
-// no rig given and no session captured). Each step is reported when done. A set `cancel` (also
-// the capture's) ends it between steps with model::numeric::Cancelled. Throws what the steps throw.
+// no rig given and no session captured). Each step is reported when done. `cancel` (also the
+// capture's) ends it between steps with model::numeric::Cancelled. Throws what the steps throw.
 void drive_design_loop(model::design::LoopSession& session,
                        const std::optional<LoopCaptureOptions>& capture, const LoopStepDone& done,
-                       const std::atomic<bool>* cancel = nullptr);
+                       std::stop_token cancel = {});
 
 }  // namespace nibrig::rig

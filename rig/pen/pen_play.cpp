@@ -9,14 +9,14 @@
 namespace nibrig::rig::pen {
 
 PenPlayStats play_pen(playback::LiveAudition& audition, PenStylus& stylus, double seconds,
-                      const std::atomic<bool>* stop, PenPlayEvents events) {
+                      std::stop_token stop, PenPlayEvents events) {
   // A turn per millisecond: well inside a 133-200 Hz pen's report interval, and a wait of half a
   // millisecond on average added to each contact's way to the engine.
   constexpr auto kTurn = std::chrono::milliseconds(1);
   PenPlayStats stats;
   double total_post_s = 0.0;
   const double start = pen_clock_now_s();
-  while (!(stop && stop->load(std::memory_order_relaxed))) {
+  while (!stop.stop_requested()) {
     const double now = pen_clock_now_s();
     if (seconds > 0 && now - start >= seconds) break;
     stylus.tick();

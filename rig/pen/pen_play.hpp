@@ -4,9 +4,9 @@
 // runs; a test runs it without the face.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <stop_token>
 
 #include "playback/live_audition.hpp"
 #include "rig/pen/pen_stylus.hpp"
@@ -27,8 +27,8 @@ struct PenPlayStats {
 };
 
 // Runs on the calling thread (the audition's control thread) until `seconds` have passed (0: no
-// limit), `stop` is set, or the tablet is removed.
+// limit), `stop` is requested, or the tablet is removed.
 PenPlayStats play_pen(playback::LiveAudition& audition, PenStylus& stylus, double seconds,
-                      const std::atomic<bool>* stop = nullptr, PenPlayEvents events = {});
+                      std::stop_token stop = {}, PenPlayEvents events = {});
 
 }  // namespace nibrig::rig::pen

@@ -87,7 +87,7 @@ void play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen, c
     std::fflush(stdout);
   };
   events.removed = [] { std::printf("the tablet was unplugged; the stroke ended there\n"); };
-  const auto stats = rig::pen::play_pen(audition, pen, o.seconds, nullptr, events);
+  const auto stats = rig::pen::play_pen(audition, pen, o.seconds, {}, events);
   pen.on_sample({});
   if (recorder) {
     if (const auto summary = recorder->stop(); summary && summary->kept) say_wrote(summary->file);

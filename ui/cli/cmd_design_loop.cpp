@@ -90,7 +90,6 @@ std::optional<rig::LoopCaptureOptions> capture_options(const LoopOptions& o,
   if (!o.replay_prints.empty()) {
     auto c = rig::replay_recorded_prints(o.replay_prints, loop, o.speedup);
     c.seconds = o.seconds;
-    c.cancel = &interrupt_requested();
     return c;
   }
   if (!o.simulated && !o.usb) return std::nullopt;
@@ -109,7 +108,6 @@ std::optional<rig::LoopCaptureOptions> capture_options(const LoopOptions& o,
   c.sounds.progress = design_progress();
   c.profile = o.profile;
   c.seconds = o.seconds;
-  c.cancel = &interrupt_requested();
   return c;
 }
 
@@ -180,6 +178,7 @@ void run_loop(const LoopOptions& o) {
       r.target.c_str(), r.surface.c_str(), r.first_material.c_str(), r.second_material.c_str(),
       session->threshold(), design::rule_name(r.rule).c_str(), r.max_rounds);
   InterruptScope interrupts;
+  if (capture) capture->cancel = interrupts.token();
   try {
     rig::drive_design_loop(
         *session, capture,
@@ -200,7 +199,7 @@ void run_loop(const LoopOptions& o) {
           }
           std::fflush(stdout);
         },
-        &interrupt_requested());
+        interrupts.token());
   } catch (const model::numeric::Cancelled&) {
     throw Interrupted("the loop was stopped; resume it with --resume");
   }

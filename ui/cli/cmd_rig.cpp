@@ -205,18 +205,18 @@ void capture(const RigOptions& o) {
   options.folder = o.output;
   options.tool = o.tool;
   options.surface = o.surface;
-  options.cancel = &interrupt_requested();
   options.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s{}", p.seconds, p.duration_s, p.speed_m_s * 1e3,
                  p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
   };
   InterruptScope scope;
+  options.cancel = scope.token();
   const rig::CaptureResult result = rig::capture_session(rig, opened.profile, options);
   print_record(result, rig.description());
   if (player) report_following(*player);
   std::fflush(stdout);
   say_wrote(result.folder);
-  if (interrupt_requested().load())
+  if (scope.interrupted())
     throw Interrupted("the capture was stopped; what it recorded is kept in " +
                       result.folder.string());
 }
@@ -240,13 +240,13 @@ void compare(const RigOptions& o) {
   options.capture.folder = o.output / "session";
   options.capture.tool = o.tool;
   options.capture.surface = o.surface;
-  options.capture.cancel = &interrupt_requested();
   options.seed = o.seed;
   options.capture.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s", p.seconds, p.duration_s, p.speed_m_s * 1e3);
   };
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   InterruptScope scope;
+  options.capture.cancel = scope.token();
   const rig::ComparisonRun run = rig::run_comparison(rig, opened.profile, simulated, threshold, options);
   print_record(run.capture, rig.description());
   if (player) report_following(*player);
@@ -262,7 +262,7 @@ void compare(const RigOptions& o) {
   say_wrote(run.capture.folder);
   say_wrote(json);
   say_wrote(png);
-  if (interrupt_requested().load())
+  if (scope.interrupted())
     throw Interrupted("the capture was stopped; the comparison covers what it recorded");
 }
 

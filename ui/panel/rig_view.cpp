@@ -110,9 +110,10 @@ class RigActuatorSwitch {
 };
 
 rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& catalog,
-                              const std::filesystem::path& forcing, const std::filesystem::path& folder,
-                              const std::shared_ptr<RigFeed>& feed, const std::atomic<bool>* cancel,
-                              const RigActuatorTarget& target, const std::shared_ptr<std::atomic<bool>>& play_wanted,
+                              const std::filesystem::path& forcing,
+                              const std::filesystem::path& folder,
+                              const std::shared_ptr<RigFeed>& feed, const RigActuatorTarget& target,
+                              const std::shared_ptr<std::atomic<bool>>& play_wanted,
                               JobControl& control) {
   model::design::ToolSoundOptions sound_options;
   sound_options.catalog = catalog;
@@ -154,7 +155,7 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
   options.capture.folder = folder;
   options.capture.tool = c.tool;
   options.capture.surface = c.surface;
-  options.capture.cancel = cancel;
+  options.capture.cancel = control.stop_token();
   options.capture.on_progress = [feed, &control](const rig::CaptureProgress& p) {
     control.progress(p.duration_s > 0 ? p.seconds / p.duration_s : 0.0);
     std::lock_guard lock(feed->mutex);
@@ -193,15 +194,13 @@ RigView::RigView(std::filesystem::path catalog, std::filesystem::path forcing, s
     : catalog_(std::move(catalog)), forcing_(std::move(forcing)), sessions_(std::move(sessions)) {}
 
 RigView::~RigView() {
-  cancel_->store(true);
-  job_.reset();  // the capture stops at the cancel and finishes its session
+  job_.reset();  // the job is stopped: the capture finishes its session
 }
 
 void RigView::start() {
   if (running()) return;
   error_.clear();
   finished_.clear();
-  cancel_->store(false);
   feed_ = std::make_shared<RigFeed>();
   measured_.reset(), simulated_.reset(), difference_.reset();
   speed_mm_s_.clear(), force_n_.clear();
@@ -214,14 +213,16 @@ void RigView::start() {
   }
   play_wanted_->store(false);  // said again below, once the run exists
   job_ = std::make_unique<BackgroundJob<rig::ComparisonRun>>(
-      "rig", [c = choice_, catalog = catalog_, forcing = forcing_, folder, feed = feed_, cancel = cancel_, target,
+      "rig", [c = choice_, catalog = catalog_, forcing = forcing_, folder, feed = feed_, target,
               wanted = play_wanted_](JobControl& control) {
-        return run_on_rig(c, catalog, forcing, folder, feed, cancel.get(), target, wanted, control);
+        return run_on_rig(c, catalog, forcing, folder, feed, target, wanted, control);
       });
   follow_play_choice();
 }
 
-void RigView::stop() { cancel_->store(true); }
+void RigView::stop() {
+  if (job_) job_->cancel();
+}
 
 void RigView::follow_play_choice() {
   const bool turned_on = choice_.play_on_actuator && !play_wanted_->load();

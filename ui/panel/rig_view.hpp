@@ -108,7 +108,6 @@ class RigView {
   std::filesystem::path catalog_, forcing_, sessions_;
   RigChoice choice_;
   std::shared_ptr<RigFeed> feed_ = std::make_shared<RigFeed>();
-  std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
   std::shared_ptr<std::atomic<bool>> play_wanted_ = std::make_shared<std::atomic<bool>>(false);
   PanelAudio* audio_ = nullptr;
   std::unique_ptr<BackgroundJob<rig::ComparisonRun>> job_;

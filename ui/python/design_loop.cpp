@@ -93,8 +93,6 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
   LoopResult out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        std::atomic<bool> cancel{false};
-        const std::stop_callback on_stop(stop, [&] { cancel.store(true); });
         auto session = resume && rounds
                            ? design::LoopSession::resume_with_rounds(folder, *rounds, report)
                            : design::LoopSession::open(folder, request, report);
@@ -102,7 +100,7 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
           capture = rig::replay_recorded_prints(*replay_prints, session->request(), 0.0);
         if (capture) {
           capture->seconds = seconds;
-          capture->cancel = &cancel;
+          capture->cancel = stop;
         }
         if (simulated) {
           capture.emplace();
@@ -112,12 +110,12 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
           capture->sounds.catalog = catalog.value_or(std::filesystem::path());
           capture->sounds.forcing_model = simulated_forcing.value_or(std::filesystem::path());
           capture->seconds = seconds;
-          capture->cancel = &cancel;
+          capture->cancel = stop;
         }
         rig::drive_design_loop(
             *session, capture,
             [&](rig::LoopStep, int round) { report("rounds", static_cast<std::size_t>(round), 0); },
-            &cancel);
+            stop);
         out.folder = session->folder();
         out.threshold = session->threshold();
         out.rounds = session->rounds();

@@ -56,14 +56,11 @@ rig::OpenedRig open_with_profile(const RigSpec& spec, model::design::ToolSounds&
   });
 }
 
-// Ctrl-C reaches a capture through its cancel flag: the motor stops and the session is finished
-// with what it holds. Progress: milliseconds of acceleration recorded, of the profile's.
-struct CaptureBridge {
-  std::atomic<bool> cancel{false};
-  std::stop_callback<std::function<void()>> on_stop;
+// A capture's progress for Python: milliseconds of acceleration recorded, of the profile's. (Ctrl-C
+// reaches the capture as the long call's stop token: the motor stops and the session is finished
+// with what it holds.)
+struct CaptureProgressReport {
   std::uint64_t samples = 0;
-
-  explicit CaptureBridge(const std::stop_token& stop) : on_stop(stop, std::function<void()>([this] { cancel.store(true); })) {}
 
   std::function<void(const rig::RigData&)> counter(const rig::Rig& r, const rig::SpeedProfile& profile, const Report& report) {
     const double rate = r.description().acceleration_rate_hz;
@@ -84,13 +81,13 @@ Session capture(const RigSpec& spec, const std::filesystem::path& folder, const 
         model::design::ToolSounds sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
         rig::OpenedRig opened = open_with_profile(spec, sounds, profile, "steps", seconds);
         model::numeric::throw_if_cancelled(stop, "rig capture");  // stopped before it began: no folder
-        CaptureBridge bridge(stop);
+        CaptureProgressReport bridge;
         rig::CaptureOptions options;
         options.folder = folder;
         options.tool = spec.request.tool;
         options.surface = spec.request.surface;
         options.notes = notes;
-        options.cancel = &bridge.cancel;
+        options.cancel = stop;
         options.on_data = bridge.counter(*opened.rig, opened.profile, report);
         const auto result = system_refusals([&] { return rig::capture_session(*opened.rig, opened.profile, options); });
         out.session = model::io::read_rig_session(result.folder);
@@ -121,12 +118,12 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
         sounds.check(simulated_tool, on);
         const model::design::ToolSound simulated = sounds.sound(simulated_tool, on);
         model::numeric::throw_if_cancelled(stop, "rig comparison");  // stopped before it began: no folder
-        CaptureBridge bridge(stop);
+        CaptureProgressReport bridge;
         rig::ComparisonRunOptions options;
         options.capture.folder = folder;
         options.capture.tool = spec.request.tool;
         options.capture.surface = spec.request.surface;
-        options.capture.cancel = &bridge.cancel;
+        options.capture.cancel = stop;
         options.seed = seed;
         options.on_data = bridge.counter(*opened.rig, opened.profile, report);
         const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());

@@ -122,8 +122,8 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
     // engine now the pen loop's.
     std::vector<double> pen_starts;
     PenStylus stylus("intuos");
-    std::atomic<bool> stop{false};
-    std::thread loop([&] { play_pen(audition, stylus, 0.0, &stop); });
+    std::stop_source stop;
+    std::thread loop([&] { play_pen(audition, stylus, 0.0, stop.get_token()); });
     const double period = 1.0 / tablet.model().report_hz;
     for (int k = 0; k < kStrokesPerPath; ++k) {
       // Each report stamped when it is written, as the kernel stamps an event when it arrives.
@@ -144,7 +144,7 @@ TEST(PenStrokeToSound, ThePenPathIsTimedBesideTheMousePathOnJack) {
       tablet.proximity_out(pen_clock_now_s());
       sleep_until_s(up + kRestSeconds);
     }
-    stop = true;
+    stop.request_stop();
     loop.join();
     ASSERT_TRUE(ear.wait_full(30s)) << "recorded " << ear.recorded() << " frames";
 
