@@ -19,7 +19,7 @@ pkg_check_modules(ALSA REQUIRED IMPORTED_TARGET alsa)  # only to quiet alsa-lib'
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
 # Pen tablets: libinput reads them (through udev), libwacom names them and gives their size.
 pkg_check_modules(LIBINPUT REQUIRED IMPORTED_TARGET libinput libudev libwacom)
-# A design's stylus as a 3MF file (model/io/stylus_3mf): lib3mf 1.8's C interface.
+# A design's stylus as a 3MF file (model/mesh_io/stylus_3mf): lib3mf 1.8's C interface.
 pkg_check_modules(LIB3MF REQUIRED IMPORTED_TARGET lib3MF)
 if(NIBRIG_BUILD_TESTS)
   pkg_check_modules(UMOCKDEV REQUIRED IMPORTED_TARGET umockdev-1.0)

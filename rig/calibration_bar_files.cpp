@@ -12,10 +12,10 @@
 #include "model/io/atomic_file.hpp"
 #include "model/io/format_error.hpp"
 #include "model/io/json_fields.hpp"
-#include "model/io/stl_writer.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/beam_theory.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stl_writer.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "rig/printed_parts_drawing.hpp"
 #include "rig/printed_parts_files.hpp"
 
@@ -170,7 +170,7 @@ CalibrationBarWritten write_calibration_bar(const std::filesystem::path& folder,
   for (const auto& v : surface.vertices)
     for (std::size_t k = 0; k < 3; ++k)
       lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
-  model::io::ThreeMfPart three_mf;
+  model::mesh_io::ThreeMfPart three_mf;
   three_mf.name = "nibrig calibration bar " + bar.material;
   three_mf.placement_m = {printer.build_volume_m[0] / 2 - (lo[0] + hi[0]) / 2,
                           printer.build_volume_m[1] / 2 - (lo[1] + hi[1]) / 2, -lo[2]};
@@ -205,8 +205,8 @@ CalibrationBarWritten write_calibration_bar(const std::filesystem::path& folder,
 
   std::filesystem::create_directories(where);
   model::io::OutputSet set;  // all the bar's files or none of them
-  model::io::write_3mf(f.three_mf, three_mf);
-  model::io::write_binary_stl(f.stl, surface);
+  model::mesh_io::write_3mf(f.three_mf, three_mf);
+  model::mesh_io::write_binary_stl(f.stl, surface);
   if (!f.ini.empty())
     model::io::write_file_atomically(f.ini, model::design::prusa_slicer_ini(settings));
   model::io::write_file_atomically(f.drawing, part_drawing_svg(part));

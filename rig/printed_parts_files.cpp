@@ -7,9 +7,9 @@
 
 #include "model/design/stylus_export.hpp"
 #include "model/io/atomic_file.hpp"
-#include "model/io/stl_writer.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stl_writer.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "rig/printed_parts_drawing.hpp"
 
 namespace nibrig::rig {
@@ -150,7 +150,7 @@ RigPartsWritten write_rig_parts(const std::filesystem::path& folder, const RigPa
       if (box.hi[k] - box.lo[k] > kPartsBedM)
         throw std::runtime_error(files.three_mf.string() +
                                  ": the part is wider than the 200 mm bed");
-    model::io::ThreeMfPart three_mf;
+    model::mesh_io::ThreeMfPart three_mf;
     three_mf.name = "nibrig rig " + m.part.title;
     three_mf.placement_m = bed_placement(box);
     three_mf.metadata = {
@@ -159,8 +159,8 @@ RigPartsWritten write_rig_parts(const std::filesystem::path& folder, const RigPa
         {"Description", m.part.purpose + ". Print: " + settings_summary(m.part.settings) + " (" +
                             files.ini.filename().string() + ")"}};
     three_mf.regions.push_back({m.surface, m.part.settings.material, {230, 120, 40}});
-    model::io::write_3mf(files.three_mf, three_mf);
-    model::io::write_binary_stl(files.stl, m.surface);
+    model::mesh_io::write_3mf(files.three_mf, three_mf);
+    model::mesh_io::write_binary_stl(files.stl, m.surface);
     model::io::write_file_atomically(files.ini, prusa_slicer_ini(m.part));
     model::io::write_file_atomically(files.drawing, part_drawing_svg(m.part));
     written.parts.push_back(files);

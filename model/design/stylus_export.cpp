@@ -15,9 +15,9 @@
 #include "model/forcing/printed_tool_design.hpp"
 #include "model/io/atomic_file.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/io/stl_writer.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stl_writer.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 
 namespace nibrig::model::design {
 namespace {
@@ -223,7 +223,7 @@ StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const Styl
         lo[k] = std::min(lo[k], v[static_cast<std::size_t>(k)]);
         hi[k] = std::max(hi[k], v[static_cast<std::size_t>(k)]);
       }
-  io::ThreeMfPart part;
+  mesh_io::ThreeMfPart part;
   part.name = "nibrig stylus " + to_string(print.point);
   part.placement_m = {centre_x - 0.5 * (lo[0] + hi[0]), centre_y - 0.5 * (lo[1] + hi[1]), -lo[2]};
   part.metadata = {
@@ -239,9 +239,9 @@ StylusFiles write_stylus_files(const std::filesystem::path& three_mf, const Styl
   if (!settings.empty()) {
     part.attachments.emplace_back("Metadata/Slic3r_PE.config", prusa_slicer_3mf_config(settings));
   }
-  io::write_3mf(files.three_mf, part);
+  mesh_io::write_3mf(files.three_mf, part);
   for (std::size_t i = 0; i < print.regions.size(); ++i)
-    io::write_binary_stl(files.stls[i], oriented[i]);
+    mesh_io::write_binary_stl(files.stls[i], oriented[i]);
   if (!files.slicer_config.empty())
     io::write_file_atomically(files.slicer_config, prusa_slicer_ini(settings));
   io::write_file_atomically(files.recipe, stylus_recipe_json(print, files).dump(2) + "\n");

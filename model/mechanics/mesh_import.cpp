@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/gmsh_session.hpp"
 #include "model/mechanics/shape_builders.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 
 namespace nibrig::model::mechanics {
 namespace {
@@ -95,7 +95,8 @@ TetMesh import_checked_file(const std::filesystem::path& file, const MeshFileOpt
 // two regions is their interface, one surface shared by both volumes, so the tetrahedra meet
 // node to node across it. Coordinates are in the file's unit; a volume per region, its physical
 // group named after it.
-void volumes_from_region_surfaces(const std::filesystem::path& file, const std::vector<io::ThreeMfRegion>& regions) {
+void volumes_from_region_surfaces(const std::filesystem::path& file,
+                                  const std::vector<mesh_io::ThreeMfRegion>& regions) {
   std::map<std::array<double, 3>, std::size_t> node_of;
   std::vector<std::size_t> node_tags;
   std::vector<double> coords;
@@ -171,7 +172,7 @@ TetMesh import_mesh_file(const std::filesystem::path& file, const MeshFileOption
              msh = ext == ".msh";
   if (ext == ".3mf") {
     // A 3MF carries its own unit; its regions come back in metres.
-    const auto regions = io::read_3mf_regions(file);
+    const auto regions = mesh_io::read_3mf_regions(file);
     if (regions.empty()) throw file_error(file, "contains no mesh object");
     return guard_gmsh(file.string(), [&] {
       GmshSession session("imported");

@@ -11,9 +11,9 @@
 
 #include "model/design/mixed_design.hpp"
 #include "model/io/bundled_assets.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::design {

@@ -15,8 +15,8 @@
 
 #include "model/design/design_point.hpp"
 #include "model/io/catalog_file.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "model/space/catalog_descriptors.hpp"
 #include "model/space/descriptor_map.hpp"
 #include "model/space/space_file.hpp"
@@ -303,7 +303,7 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   const int export_code = run_cli(exported);
   const std::string export_text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(export_code, 0) << export_text;
-  const auto regions = model::io::read_3mf_regions(out / "printed" / "stylus.3mf");
+  const auto regions = model::mesh_io::read_3mf_regions(out / "printed" / "stylus.3mf");
   ASSERT_FALSE(regions.empty());
   for (const auto& region : regions)
     EXPECT_TRUE(std::filesystem::is_regular_file(out / "printed" / ("stylus-" + region.surface.name + ".stl")))

@@ -5,8 +5,8 @@
 #include <regex>
 #include <sstream>
 
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -47,7 +47,7 @@ TEST(ExportCli, AMixedDesignsFilesAreCleanForAdmeshAndSliceInPrusaSlicer) {
   const int code = test::run_cli({"export", "DM85:0.62,vero:0.38,tip=2.7mm", "-o", (out / "stylus.3mf").string()});
   const std::string said = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << said;
-  const auto regions = model::io::read_3mf_regions(out / "stylus.3mf");
+  const auto regions = model::mesh_io::read_3mf_regions(out / "stylus.3mf");
   ASSERT_EQ(regions.size(), 2u);
   // Without a surface the sheet holds the print alone (its content: tests/ui/figures).
   EXPECT_TRUE(nibrig::test::is_png(out / "stylus-sheet.png"));

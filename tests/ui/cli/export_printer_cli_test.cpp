@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 
 #include "model/io/printer_profile.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/region_surface.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -36,7 +36,8 @@ void printer_isolated_store() {
 
 double solid_volume_mm3(const std::filesystem::path& three_mf) {
   double v = 0.0;
-  for (const auto& region : model::io::read_3mf_regions(three_mf)) v += model::mechanics::enclosed_volume(region.surface) * 1e9;
+  for (const auto& region : model::mesh_io::read_3mf_regions(three_mf))
+    v += model::mechanics::enclosed_volume(region.surface) * 1e9;
   return v;
 }
 

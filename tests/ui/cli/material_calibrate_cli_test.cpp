@@ -16,10 +16,10 @@
 #include "model/io/acceleration_trace.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/printer_profile.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/mechanics/design_model.hpp"
 #include "model/mechanics/region_surface.hpp"
 #include "model/mechanics/ring_down.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -72,7 +72,7 @@ TEST(MaterialCalibrateCli, TheBarForTheFdmProfileSlicesAsTheSolidBar) {
   // 200 × 20 × 2 plus a half disc of R10 less a hole of R5: 8000 + 314.2 − 157.1 mm³.
   const double exact = 200 * 20 * 2 + 0.5 * std::numbers::pi * 100 * 2 - std::numbers::pi * 25 * 2;
   double solid = 0.0;
-  for (const auto& region : model::io::read_3mf_regions(bar / "calibration_bar.3mf"))
+  for (const auto& region : model::mesh_io::read_3mf_regions(bar / "calibration_bar.3mf"))
     solid += model::mechanics::enclosed_volume(region.surface) * 1e9;
   // 64 facets round a circle: the polygons lie inside their circles by 1 − sin(2π/64)/(2π/64),
   // 0.16 % of a circle's area, ~0.3 mm³ net here; 1 mm³ holds it.

@@ -15,9 +15,9 @@
 
 #include "model/design/design_constraints.hpp"
 #include "model/design/prediction_file.hpp"
-#include "model/io/stylus_3mf.hpp"
 #include "model/design/tool_sound.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 #include "playback/prepared_engine.hpp"
 #include "tests/ui/panel/design_cache.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
@@ -103,7 +103,7 @@ TEST(DesignView, DraggingTheMixSliderMovesThePredictedDesignThroughTheSpace) {
   const auto exported = view.stylus_export(dir / "stylus.3mf", panel.shown_space());
   ASSERT_TRUE(exported);
   exported();
-  EXPECT_FALSE(model::io::read_3mf_regions(dir / "stylus.3mf").empty());
+  EXPECT_FALSE(model::mesh_io::read_3mf_regions(dir / "stylus.3mf").empty());
   EXPECT_EQ(nibrig::test::decode_png(dir / "stylus-sheet.png").width, 2000);
   std::ifstream recipe(dir / "stylus.json");
   EXPECT_EQ(nlohmann::json::parse(recipe)["design"].get<std::string>(), model::design::to_string(shown));

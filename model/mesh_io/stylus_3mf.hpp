@@ -13,11 +13,11 @@
 
 #include "model/io/surface_mesh.hpp"
 
-namespace nibrig::model::io {
+namespace nibrig::model::mesh_io {
 
 struct ThreeMfRegion {
-  SurfaceMesh surface;  // metres; its name names the object
-  std::string material;  // the base material's name: what to load into the printer for it
+  io::SurfaceMesh surface;  // metres; its name names the object
+  std::string material;     // the base material's name: what to load into the printer for it
   std::array<std::uint8_t, 3> display_rgb{200, 200, 200};
 };
 
@@ -40,4 +40,4 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part);
 // its base material's name. For the tests and for re-importing an exported part.
 std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file);
 
-}  // namespace nibrig::model::io
+}  // namespace nibrig::model::mesh_io

@@ -1,4 +1,4 @@
-#include "model/io/stylus_3mf.hpp"
+#include "model/mesh_io/stylus_3mf.hpp"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 
@@ -7,7 +7,7 @@
 
 #include "model/io/atomic_file.hpp"
 
-namespace nibrig::model::io {
+namespace nibrig::model::mesh_io {
 namespace {
 
 using namespace NMR;
@@ -30,7 +30,8 @@ class Lib3mfCall {
     if (instance != nullptr) {
       DWORD code = 0;
       LPCSTR text = nullptr;
-      if (lib3mf_getlasterror(instance, &code, &text) == LIB3MF_OK && text != nullptr && *text != '\0')
+      if (lib3mf_getlasterror(instance, &code, &text) == LIB3MF_OK && text != nullptr &&
+          *text != '\0')
         message = text;
     }
     throw std::runtime_error(where_ + ": lib3mf could not " + what + " (" + message + ")");
@@ -52,21 +53,25 @@ MODELTRANSFORM translation_mm(const std::array<double, 3>& offset_m) {
 }  // namespace
 
 void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
-  if (part.regions.empty()) throw std::invalid_argument(file.string() + ": a 3MF part needs at least one region");
-  output_target(file);  // refused before the model is built: a folder, a device, an input
+  if (part.regions.empty())
+    throw std::invalid_argument(file.string() + ": a 3MF part needs at least one region");
+  io::output_target(file);  // refused before the model is built: a folder, a device, an input
   const Lib3mfCall call(file.string());
   PLib3MFModel* raw = nullptr;
   call(lib3mf_createmodel(&raw), nullptr, "create a model");
   const Owned model(raw);
   call(lib3mf_model_setunit(model.get(), MODELUNIT_MILLIMETER), model.get(), "set millimetres");
   for (const auto& [key, value] : part.metadata)
-    call(lib3mf_model_addmetadatautf8(model.get(), key.c_str(), value.c_str()), model.get(), "add metadata " + key);
+    call(lib3mf_model_addmetadatautf8(model.get(), key.c_str(), value.c_str()), model.get(),
+         "add metadata " + key);
 
   PLib3MFModelBaseMaterial* materials_raw = nullptr;
-  call(lib3mf_model_addbasematerialgroup(model.get(), &materials_raw), model.get(), "add the materials");
+  call(lib3mf_model_addbasematerialgroup(model.get(), &materials_raw), model.get(),
+       "add the materials");
   const Owned materials(materials_raw);
   DWORD materials_id = 0;
-  call(lib3mf_basematerial_getresourceid(materials.get(), &materials_id), materials.get(), "number the materials");
+  call(lib3mf_basematerial_getresourceid(materials.get(), &materials_id), materials.get(),
+       "number the materials");
 
   // A 3MF resource must come before what refers to it: the regions' objects, then the part.
   std::vector<Owned> meshes;
@@ -75,54 +80,65 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
     if (s.triangles.empty())
       throw std::invalid_argument(file.string() + ": region '" + s.name + "' has no triangles");
     DWORD material_index = 0;
-    call(lib3mf_basematerial_addmaterialutf8(materials.get(), region.material.c_str(), region.display_rgb[0],
-                                             region.display_rgb[1], region.display_rgb[2], &material_index),
+    call(lib3mf_basematerial_addmaterialutf8(materials.get(), region.material.c_str(),
+                                             region.display_rgb[0], region.display_rgb[1],
+                                             region.display_rgb[2], &material_index),
          materials.get(), "add material " + region.material);
     PLib3MFModelMeshObject* mesh_raw = nullptr;
     call(lib3mf_model_addmeshobject(model.get(), &mesh_raw), model.get(), "add region " + s.name);
     Owned mesh(mesh_raw);
-    call(lib3mf_object_setnameutf8(mesh.get(), s.name.c_str()), mesh.get(), "name region " + s.name);
+    call(lib3mf_object_setnameutf8(mesh.get(), s.name.c_str()), mesh.get(),
+         "name region " + s.name);
     std::vector<MODELMESHVERTEX> vertices(s.vertices.size());
     for (std::size_t i = 0; i < s.vertices.size(); ++i)
       for (int k = 0; k < 3; ++k)
-        vertices[i].m_fPosition[k] = static_cast<float>(1e3 * s.vertices[i][static_cast<std::size_t>(k)]);
+        vertices[i].m_fPosition[k] =
+            static_cast<float>(1e3 * s.vertices[i][static_cast<std::size_t>(k)]);
     std::vector<MODELMESHTRIANGLE> triangles(s.triangles.size());
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
-      for (int k = 0; k < 3; ++k) triangles[i].m_nIndices[k] = s.triangles[i][static_cast<std::size_t>(k)];
-    call(lib3mf_meshobject_setgeometry(mesh.get(), vertices.data(), static_cast<DWORD>(vertices.size()),
-                                       triangles.data(), static_cast<DWORD>(triangles.size())),
+      for (int k = 0; k < 3; ++k)
+        triangles[i].m_nIndices[k] = s.triangles[i][static_cast<std::size_t>(k)];
+    call(lib3mf_meshobject_setgeometry(mesh.get(), vertices.data(),
+                                       static_cast<DWORD>(vertices.size()), triangles.data(),
+                                       static_cast<DWORD>(triangles.size())),
          mesh.get(), "set region " + s.name + "'s triangles");
     PLib3MFDefaultPropertyHandler* property_raw = nullptr;
-    call(lib3mf_object_createdefaultpropertyhandler(mesh.get(), &property_raw), mesh.get(), "give region " + s.name + " a material");
+    call(lib3mf_object_createdefaultpropertyhandler(mesh.get(), &property_raw), mesh.get(),
+         "give region " + s.name + " a material");
     const Owned property(property_raw);
-    call(lib3mf_defaultpropertyhandler_setbasematerial(property.get(), materials_id, material_index), property.get(),
-         "give region " + s.name + " its material");
+    call(
+        lib3mf_defaultpropertyhandler_setbasematerial(property.get(), materials_id, material_index),
+        property.get(), "give region " + s.name + " its material");
     meshes.push_back(std::move(mesh));
   }
   PLib3MFModelComponentsObject* assembly_raw = nullptr;
   call(lib3mf_model_addcomponentsobject(model.get(), &assembly_raw), model.get(), "add the part");
   const Owned assembly(assembly_raw);
-  call(lib3mf_object_setnameutf8(assembly.get(), part.name.c_str()), assembly.get(), "name the part");
+  call(lib3mf_object_setnameutf8(assembly.get(), part.name.c_str()), assembly.get(),
+       "name the part");
   for (const auto& mesh : meshes) {
     PLib3MFModelComponent* component_raw = nullptr;
-    call(lib3mf_componentsobject_addcomponent(assembly.get(), mesh.get(), nullptr, &component_raw), assembly.get(),
-         "put a region in the part");
+    call(lib3mf_componentsobject_addcomponent(assembly.get(), mesh.get(), nullptr, &component_raw),
+         assembly.get(), "put a region in the part");
     const Owned component(component_raw);
   }
   MODELTRANSFORM placement = translation_mm(part.placement_m);
   PLib3MFModelBuildItem* item_raw = nullptr;
-  call(lib3mf_model_addbuilditem(model.get(), assembly.get(), &placement, &item_raw), model.get(), "place the part");
+  call(lib3mf_model_addbuilditem(model.get(), assembly.get(), &placement, &item_raw), model.get(),
+       "place the part");
   const Owned item(item_raw);
 
   for (const auto& [path, content] : part.attachments) {
     // The relationship type is ours: PrusaSlicer finds its config by the path alone.
     std::string uri = "/" + path, relationship = "http://schemas.nibrig.org/3mf/slicer-config";
     PLib3MFModelAttachment* attachment_raw = nullptr;
-    call(lib3mf_model_addattachmentutf8(model.get(), uri.data(), relationship.data(), &attachment_raw), model.get(),
-         "attach " + path);
+    call(lib3mf_model_addattachmentutf8(model.get(), uri.data(), relationship.data(),
+                                        &attachment_raw),
+         model.get(), "attach " + path);
     const Owned attachment(attachment_raw);
     std::string bytes = content;
-    call(lib3mf_attachment_readfrombuffer(attachment.get(), reinterpret_cast<BYTE*>(bytes.data()), bytes.size()),
+    call(lib3mf_attachment_readfrombuffer(attachment.get(), reinterpret_cast<BYTE*>(bytes.data()),
+                                          bytes.size()),
          attachment.get(), "fill " + path);
   }
 
@@ -134,9 +150,9 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
   ULONG64 size = 0;
   call(lib3mf_writer_getstreamsize(writer.get(), &size), writer.get(), "measure the file");
   std::string bytes(static_cast<std::size_t>(size), '\0');
-  call(lib3mf_writer_writetobuffer(writer.get(), reinterpret_cast<BYTE*>(bytes.data()), size), writer.get(),
-       "write the file");
-  write_file_atomically(file, bytes);
+  call(lib3mf_writer_writetobuffer(writer.get(), reinterpret_cast<BYTE*>(bytes.data()), size),
+       writer.get(), "write the file");
+  io::write_file_atomically(file, bytes);
 }
 
 std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file) {
@@ -168,32 +184,39 @@ std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file) {
     ThreeMfRegion region;
     char name[256] = {};
     ULONG name_length = 0;
-    call(lib3mf_object_getnameutf8(mesh.get(), name, sizeof name, &name_length), mesh.get(), "read a region's name");
+    call(lib3mf_object_getnameutf8(mesh.get(), name, sizeof name, &name_length), mesh.get(),
+         "read a region's name");
     region.surface.name = name;
     DWORD vertex_count = 0, triangle_count = 0;
     call(lib3mf_meshobject_getvertexcount(mesh.get(), &vertex_count), mesh.get(), "count vertices");
-    call(lib3mf_meshobject_gettrianglecount(mesh.get(), &triangle_count), mesh.get(), "count triangles");
+    call(lib3mf_meshobject_gettrianglecount(mesh.get(), &triangle_count), mesh.get(),
+         "count triangles");
     std::vector<MODELMESHVERTEX> vertices(vertex_count);
     std::vector<MODELMESHTRIANGLE> triangles(triangle_count);
-    call(lib3mf_meshobject_getvertices(mesh.get(), vertices.data(), vertex_count, nullptr), mesh.get(), "read vertices");
-    call(lib3mf_meshobject_gettriangleindices(mesh.get(), triangles.data(), triangle_count, nullptr), mesh.get(),
-         "read triangles");
+    call(lib3mf_meshobject_getvertices(mesh.get(), vertices.data(), vertex_count, nullptr),
+         mesh.get(), "read vertices");
+    call(
+        lib3mf_meshobject_gettriangleindices(mesh.get(), triangles.data(), triangle_count, nullptr),
+        mesh.get(), "read triangles");
     for (const auto& v : vertices)
-      region.surface.vertices.push_back({metres_per_unit * v.m_fPosition[0], metres_per_unit * v.m_fPosition[1],
+      region.surface.vertices.push_back({metres_per_unit * v.m_fPosition[0],
+                                         metres_per_unit * v.m_fPosition[1],
                                          metres_per_unit * v.m_fPosition[2]});
-    for (const auto& t : triangles) region.surface.triangles.push_back({t.m_nIndices[0], t.m_nIndices[1], t.m_nIndices[2]});
+    for (const auto& t : triangles)
+      region.surface.triangles.push_back({t.m_nIndices[0], t.m_nIndices[1], t.m_nIndices[2]});
     PLib3MFDefaultPropertyHandler* property_raw = nullptr;
     if (lib3mf_object_createdefaultpropertyhandler(mesh.get(), &property_raw) == LIB3MF_OK) {
       const Owned property(property_raw);
       DWORD group = 0, index = 0;
-      if (lib3mf_defaultpropertyhandler_getbasematerial(property.get(), &group, &index) == LIB3MF_OK) {
+      if (lib3mf_defaultpropertyhandler_getbasematerial(property.get(), &group, &index) ==
+          LIB3MF_OK) {
         PLib3MFModelBaseMaterial* materials_raw = nullptr;
         if (lib3mf_model_getbasematerialbyid(model.get(), group, &materials_raw) == LIB3MF_OK) {
           const Owned materials(materials_raw);
           char material[256] = {};
           ULONG material_length = 0;
-          if (lib3mf_basematerial_getnameutf8(materials.get(), index, material, sizeof material, &material_length) ==
-              LIB3MF_OK)
+          if (lib3mf_basematerial_getnameutf8(materials.get(), index, material, sizeof material,
+                                              &material_length) == LIB3MF_OK)
             region.material = material;
         }
       }
@@ -203,4 +226,4 @@ std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file) {
   return out;
 }
 
-}  // namespace nibrig::model::io
+}  // namespace nibrig::model::mesh_io
