@@ -6,7 +6,7 @@
 #   model    -> (nothing of ours)
 #   rt       -> model/numeric, model/io, model/modal (what a voice needs; never the FEM)
 #   playback -> rt and what rt uses
-#   rig      -> playback, rt, model (the rig plays its simulation through the playback session)
+#   rig      -> playback, rt, model (the rig plays its simulation through playback's prepared engine)
 #   ui       -> everything; ui/report -> nothing but itself (a leaf, checked in ui/CMakeLists.txt)
 
 # Fails the configure when a file below `folder` includes one of our headers outside the folders
