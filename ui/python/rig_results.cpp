@@ -63,7 +63,7 @@ py::object waterfall_db(const py::object& self, bool simulated) {
 }  // namespace
 
 void add_rig_results(py::module_ m) {
-  py::class_<Session>(m, "Session", "A rig session: the streams a capture recorded, and what it says about them")
+  py::class_<Session>(m, "RigSession", "A rig session: the streams a capture recorded, and what it says about them")
       .def_property_readonly("folder", [](const Session& s) { return s.session.folder; })
       .def_property_readonly("complete", [](const Session& s) { return s.session.complete; },
                              "False for a .partial folder a killed capture left")
@@ -131,7 +131,7 @@ void add_rig_results(py::module_ m) {
         return a;
       }, "Each sensor frame's instant from the profile's start, s: speed and force sample k at k / speed_rate_hz")
       .def("__repr__", [](const Session& s) {
-        return "<nibrig.rig.Session: " + s.session.info.tool + " on " + s.session.info.surface + ", " +
+        return "<nibrig.rig.RigSession: " + s.session.info.tool + " on " + s.session.info.surface + ", " +
                std::to_string(s.session.speed_m_s.size()) + " frames" + (s.session.complete ? "" : ", partial") + ">";
       });
 

@@ -1,4 +1,4 @@
-// The Python classes nibrig.rig.Session and Comparison as C++ types: what a capture and a
+// The Python classes nibrig.rig.RigSession and Comparison as C++ types: what a capture and a
 // comparison give, and what nibrig.rig.session reads.
 #pragma once
 
@@ -23,7 +23,7 @@ struct Comparison {
   Session session;
 };
 
-// Session, Comparison and session(), added to the submodule before the calls that give them.
+// RigSession, Comparison and session(), added to the submodule before the calls that give them.
 void add_rig_results(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

@@ -265,14 +265,10 @@ TEST(DesignLoopCli, ThePapersRecordedPrintsStandInForPrinting) {
                     distance_of(space, p), 0.01)
             << design;
   }
-  // Resumed once it has stopped short of its limit, it measures and proposes nothing more.
+  // It ends stopped short of its new limit, saying why.
   ASSERT_NE(test::read_json(loop / ("round-" + std::to_string(rounds)) / "round.json")
                 .value("stopped", ""),
             "");
-  ASSERT_EQ(test::run_cli({"-q", "design", "loop", "--resume", "--replay-prints", data.string(),
-                           "-o", loop.string()}),
-            0);
-  EXPECT_EQ(count_rounds(), rounds);
   // The loop started without the recorded prints' own measurements on glass, and took each
   // round's print in.
   const auto first = model::forcing::read_forcing_model(loop / "round-1" / "forcing.json");

@@ -3,7 +3,7 @@
 from ._core import rig as _rig
 
 Rig = _rig.Rig
-Session = _rig.Session
+RigSession = _rig.RigSession
 Comparison = _rig.Comparison
 simulated = _rig.simulated
 replay = _rig.replay
@@ -12,4 +12,4 @@ capture = _rig.capture
 compare = _rig.compare
 session = _rig.session
 
-__all__ = ["Rig", "Session", "Comparison", "simulated", "replay", "usb", "capture", "compare", "session"]
+__all__ = ["Rig", "RigSession", "Comparison", "simulated", "replay", "usb", "capture", "compare", "session"]

@@ -61,7 +61,7 @@ def usb(
 ) -> Rig:
     """The USB rig controller; accelerometer in m/s^2 at full scale. A missing one is an OSError when opened."""
 
-class Session:
+class RigSession:
     """A rig session: its streams (read-only views, float32) and what it says about them."""
 
     @property
@@ -120,7 +120,7 @@ class Session:
     def frame_times_s(self) -> npt.NDArray[np.float64]:
         """Speed and force sample k at k / speed_rate_hz, s."""
 
-def session(folder: _Path) -> Session:
+def session(folder: _Path) -> RigSession:
     """Reads a session folder, or a .partial one up to its last block."""
 
 class Comparison:
@@ -135,7 +135,7 @@ class Comparison:
     @property
     def simulated_modes(self) -> str: ...
     @property
-    def session(self) -> Session: ...
+    def session(self) -> RigSession: ...
     @property
     def bins(self) -> list[dict[str, float]]:
         """comparison.json's bins: speeds in m/s, lsd_db in dB, NaN where a bin has no rows."""
@@ -199,7 +199,7 @@ def capture(
     seconds: Optional[float] = None,
     notes: str = "",
     progress: _Progress = None,
-) -> Session:
+) -> RigSession:
     """Records a session into `folder` as `nibrig rig capture`; Ctrl-C finishes it with what it holds."""
 
 def compare(
