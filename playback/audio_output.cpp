@@ -121,7 +121,7 @@ struct AudioOutput::Impl {
     fresh->showWarnings(false);
     DeviceTable table;
     try {
-      table = probe_devices(*fresh);
+      table = probe_devices(*fresh, ProbePatience::opening);
     } catch (const RtAudioError& e) {
       throw DeviceError("cannot list " + api + " devices to find '" + device + "': " + e.what());
     }
@@ -179,9 +179,9 @@ struct AudioOutput::Impl {
         // openStream counts the devices again through a temporary JACK client, which a busy
         // server refuses now and then ("output device parameter value is invalid", seen in CI),
         // as in probing; a lasting fault fails the same way every time and is reported.
-        if (attempt == kProbeAttempts)
+        if (attempt == probe_attempts(ProbePatience::opening))
           throw DeviceError("cannot open " + asked() + ": " + e.what());
-        std::this_thread::sleep_for(kProbeRetryPause);
+        std::this_thread::sleep_for(probe_retry_pause(attempt));
       }
     }
     state.prepare(frames);

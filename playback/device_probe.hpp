@@ -23,14 +23,20 @@ struct DeviceTable {
   std::vector<ProbedDevice> devices;
 };
 
-// May throw RtAudioError (a server vanishing mid-probe). An empty table and a device that fails
-// to probe are retried a few times, 20 ms apart: RtAudio's JACK back end opens a temporary client
-// to count and another per device, and a busy server refuses one now and then.
-DeviceTable probe_devices(RtAudio& rt);
+// How long to wait for a busy server. A listing asks whether devices are there (no server is an
+// answer, given within 60 ms); opening a device a person named asks that it be opened, and a
+// loaded server that refuses its temporary clients for a few hundred milliseconds (seen in CI) is
+// waited for, up to 0.6 s.
+enum class ProbePatience { listing, opening };
 
-// The same patience for other calls that go through such temporary clients (openStream counts
-// the devices again): how many tries, and the pause between them.
-inline constexpr int kProbeAttempts = 3;
-inline constexpr std::chrono::milliseconds kProbeRetryPause{20};
+// May throw RtAudioError (a server vanishing mid-probe). An empty table and a device that fails
+// to probe are retried: RtAudio's JACK back end opens a temporary client to count and another per
+// device, and a busy server refuses one now and then.
+DeviceTable probe_devices(RtAudio& rt, ProbePatience patience = ProbePatience::listing);
+
+// The tries, and the pause before try k (k >= 1, doubling from 20 ms), for such temporary clients
+// (openStream counts the devices again).
+int probe_attempts(ProbePatience patience);
+std::chrono::milliseconds probe_retry_pause(int attempt);
 
 }  // namespace nibrig::playback
