@@ -81,14 +81,14 @@ Session capture(const RigSpec& spec, const std::filesystem::path& folder, const 
         model::design::ToolSounds sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
         rig::OpenedRig opened = open_with_profile(spec, sounds, profile, "steps", seconds);
         model::numeric::throw_if_cancelled(stop, "rig capture");  // stopped before it began: no folder
-        CaptureProgressReport bridge;
+        CaptureProgressReport recorded;
         rig::CaptureOptions options;
         options.folder = folder;
         options.tool = spec.request.tool;
         options.surface = spec.request.surface;
         options.notes = notes;
         options.cancel = stop;
-        options.on_data = bridge.counter(*opened.rig, opened.profile, report);
+        options.on_data = recorded.counter(*opened.rig, opened.profile, report);
         const auto result = system_refusals([&] { return rig::capture_session(*opened.rig, opened.profile, options); });
         out.session = model::io::read_rig_session(result.folder);
       },
@@ -118,14 +118,14 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
         sounds.check(simulated_tool, on);
         const model::design::ToolSound simulated = sounds.sound(simulated_tool, on);
         model::numeric::throw_if_cancelled(stop, "rig comparison");  // stopped before it began: no folder
-        CaptureProgressReport bridge;
+        CaptureProgressReport recorded;
         rig::ComparisonRunOptions options;
         options.capture.folder = folder;
         options.capture.tool = spec.request.tool;
         options.capture.surface = spec.request.surface;
         options.capture.cancel = stop;
         options.seed = seed;
-        options.on_data = bridge.counter(*opened.rig, opened.profile, report);
+        options.on_data = recorded.counter(*opened.rig, opened.profile, report);
         const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
         out.run = system_refusals([&] { return rig::run_comparison(*opened.rig, opened.profile, simulated, threshold, options); });
         const std::string measured_tool = spec.request.tool.empty() ? d.tool : spec.request.tool;
