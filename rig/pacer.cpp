@@ -10,8 +10,9 @@ namespace nibrig::rig {
 void Pacer::check_speedup(double speedup, const char* who) {
   if (speedup == 0.0 || (speedup >= kMinSpeedup && speedup <= kMaxSpeedup)) return;
   std::ostringstream message;
-  message << who << ": speed-up " << speedup << ": expected 0 (as fast as it computes) or "
-          << kMinSpeedup << " to " << kMaxSpeedup << " (1: real time)";
+  if (who != nullptr) message << who << ": ";
+  message << "speed-up " << speedup << ": expected 0 (as fast as it computes) or " << kMinSpeedup
+          << " to " << kMaxSpeedup << " (1: real time)";
   throw std::invalid_argument(message.str());
 }
 

@@ -14,7 +14,8 @@ class Pacer {
   // time is as slow as anyone watches a rig, and below that a capture would not end in a day.
   static constexpr double kMinSpeedup = 0.01;
   static constexpr double kMaxSpeedup = 1e6;
-  // Throws std::invalid_argument "<who>: speed-up X: expected 0 or 0.01 to 1e+06 ...".
+  // Throws std::invalid_argument "<who>: speed-up X: expected 0 or 0.01 to 1e+06 ..." (who null:
+  // without it).
   static void check_speedup(double speedup, const char* who);
 
   // `frame_rate_hz` > 0; throws for a speed-up check_speedup refuses.

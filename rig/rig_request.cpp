@@ -6,6 +6,7 @@
 
 #include "model/design/predicted_tool.hpp"
 #include "model/design/tool_sound.hpp"
+#include "rig/pacer.hpp"
 #include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
 #include "rig/usb_rig.hpp"
@@ -40,11 +41,84 @@ void check_rig_range(double value, double low, double high, const std::string& w
                      const char* what) {
   if (std::isfinite(value) && value >= low && value <= high) return;
   std::ostringstream message;
-  message << who << ": " << value << " " << unit << ": expected " << what << ", " << low << " to " << high;
+  if (!who.empty()) message << who << ": ";
+  message << value << " " << unit << ": expected " << what << ", " << low << " to " << high;
   throw std::invalid_argument(message.str());
 }
 
+using RigField = RigRequestRefused::Field;
+
+// A range check of rig_request's own, as the refusal of `field`.
+template <typename Check>
+void refuse_unless(RigField field, Check&& check) {
+  try {
+    check();
+  } catch (const RigRequestRefused&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw RigRequestRefused(field, e.what());
+  }
+}
+
 }  // namespace
+
+RigRequestRefused::RigRequestRefused(Field field, const std::string& what)
+    : std::invalid_argument(what), field_(field) {}
+
+const char* field_name(RigRequestRefused::Field field) {
+  switch (field) {
+    case RigField::rig:
+      return "rig";
+    case RigField::tool:
+      return "tool";
+    case RigField::surface:
+      return "surface";
+    case RigField::load:
+      return "load";
+    case RigField::speedup:
+      return "speedup";
+    case RigField::accelerometer:
+      return "accelerometer";
+    case RigField::input_channel:
+      return "input_channel";
+    case RigField::replay:
+      return "replay";
+    case RigField::profile:
+      return "profile";
+    case RigField::seconds:
+      return "seconds";
+    case RigField::simulate:
+      return "simulate";
+  }
+  return "?";
+}
+
+void check_rig_request(const RigRequest& r) {
+  // A replayed session says its own load and scale; the request's are what the others run with.
+  if (r.kind != RigKind::replay) refuse_unless(RigField::load, [&] { check_load(r.load_N, {}); });
+  if (r.kind != RigKind::usb)
+    refuse_unless(RigField::speedup, [&] { Pacer::check_speedup(r.speedup, nullptr); });
+  switch (r.kind) {
+    case RigKind::simulated:
+      if (r.tool.empty())
+        throw RigRequestRefused(RigField::tool, "the simulated rig needs a tool to simulate");
+      if (r.surface.empty())
+        throw RigRequestRefused(RigField::surface, "the simulated rig needs a surface to simulate");
+      break;
+    case RigKind::replay:
+      if (r.replay.empty())
+        throw RigRequestRefused(RigField::replay,
+                                "expected a session folder or a paper recording to replay");
+      break;
+    case RigKind::usb:
+      refuse_unless(RigField::accelerometer,
+                    [&] { check_accelerometer_scale(r.accelerometer_m_s2_per_full_scale, {}); });
+      if (r.input_channel < 1)
+        throw RigRequestRefused(RigField::input_channel,
+                                "0: expected a channel 1 or more (1-based)");
+      break;
+  }
+}
 
 void check_capture_seconds(double seconds, const std::string& who) {
   check_rig_range(seconds, kShortestCaptureSeconds, kMaxProfileSeconds, who, "s", "a capture's length in seconds");
@@ -60,15 +134,10 @@ void check_accelerometer_scale(double m_s2_per_full_scale, const std::string& wh
 }
 
 std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSounds& sounds) {
-  // A replayed session says its own load and scale; the request's are what the others run with.
-  if (request.kind != RigKind::replay) check_load(request.load_N, "load");
-  if (request.kind == RigKind::usb)
-    check_accelerometer_scale(request.accelerometer_m_s2_per_full_scale, "accelerometer");
+  check_rig_request(request);
   switch (request.kind) {
     case RigKind::simulated: {
-      if (request.tool.empty() || request.surface.empty())
-        throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
-      sounds.check(request.tool, request.surface);
+      refuse_unless(RigField::tool, [&] { sounds.check(request.tool, request.surface); });
       SimulatedRigSettings settings;
       settings.normal_load_N = request.load_N;
       settings.seed = request.seed;
@@ -95,33 +164,41 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
 }
 
 SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds) {
-  if (seconds) check_capture_seconds(*seconds, "seconds");
+  if (seconds) refuse_unless(RigField::seconds, [&] { check_capture_seconds(*seconds, {}); });
   if (name_or_file == "steps") return paper_steps(seconds.value_or(42.0));
   if (name_or_file == "sweep") return study_sweep_profile(seconds.value_or(6.0));
   const std::filesystem::path file(name_or_file);
   if (!std::filesystem::exists(file))
-    throw std::invalid_argument("--profile " + name_or_file +
-                                ": expected steps, sweep or a CSV file (time_s,speed_mm_s); no such file");
+    throw RigRequestRefused(
+        RigField::profile,
+        name_or_file + ": expected steps, sweep or a CSV file (time_s,speed_mm_s); no such file");
   const SpeedProfile profile = read_speed_profile(file);
   return seconds ? fit_to_duration(profile, *seconds) : profile;
+}
+
+std::optional<SpeedProfile> profile_to_run(const RigRequest& request, const std::string& profile,
+                                           const std::string& default_profile,
+                                           std::optional<double> seconds) {
+  if (request.kind != RigKind::replay)
+    return profile_named(profile.empty() ? default_profile : profile, seconds);
+  if (!profile.empty())
+    throw RigRequestRefused(
+        RigField::profile,
+        profile + ": a replayed rig runs the profile that was recorded (give seconds to cut it)");
+  if (seconds) refuse_unless(RigField::seconds, [&] { check_capture_seconds(*seconds, {}); });
+  return std::nullopt;
 }
 
 OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSounds& sounds,
                                 const std::string& profile, const std::string& default_profile,
                                 std::optional<double> seconds) {
-  std::optional<SpeedProfile> asked;
-  if (request.kind == RigKind::replay) {
-    if (!profile.empty())
-      throw std::invalid_argument("profile '" + profile +
-                                  "': a replayed rig runs the profile that was recorded (give seconds to cut it)");
-    if (seconds) check_capture_seconds(*seconds, "seconds");
-  } else {
-    asked = profile_named(profile.empty() ? default_profile : profile, seconds);
-  }
+  std::optional<SpeedProfile> asked = profile_to_run(request, profile, default_profile, seconds);
   std::unique_ptr<Rig> rig = open_rig(request, sounds);
   if (asked) return {std::move(rig), std::move(*asked)};
   const SpeedProfile* own = rig->own_profile();
-  if (own == nullptr) throw std::invalid_argument(request.replay.string() + ": the session has no speed profile to run");
+  if (own == nullptr)
+    throw RigRequestRefused(RigField::profile,
+                            request.replay.string() + ": the session has no speed profile to run");
   SpeedProfile run = seconds ? fit_to_duration(*own, *seconds) : *own;
   return {std::move(rig), std::move(run)};
 }
@@ -130,7 +207,8 @@ SimulatedChoice simulated_choice(const RigDescription& rig, const std::string& a
                                  const std::string& asked_surface) {
   SimulatedChoice c{asked_tool.empty() ? rig.tool : asked_tool, asked_surface.empty() ? rig.surface : asked_surface};
   if (c.tool.empty() || c.surface.empty())
-    throw std::invalid_argument(
+    throw RigRequestRefused(
+        RigField::simulate,
         "say which tool to simulate and on which surface: this rig does not know what is mounted");
   return c;
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "model/io/rig_session_json.hpp"
@@ -36,7 +37,8 @@ inline constexpr double kLeastAccelerometerM_s2 = model::io::session_json::kLeas
 inline constexpr double kMostAccelerometerM_s2 = model::io::session_json::kMostAccelerometerM_s2PerUnit;
 
 // Throw std::invalid_argument "<who>: <value>: expected ..." for a value outside those ranges (or
-// not finite); `who` is the option or argument that set it ("--load", "load").
+// not finite); `who` is the option or argument that set it ("--load", "load"), or empty for the
+// value alone (a refusal whose face names it).
 void check_capture_seconds(double seconds, const std::string& who);
 void check_load(double load_N, const std::string& who);
 void check_accelerometer_scale(double m_s2_per_full_scale, const std::string& who);
@@ -59,23 +61,61 @@ struct RigRequest {
   double accelerometer_m_s2_per_full_scale = kDefaultAccelerometerM_s2;
 };
 
-// Opens the rig, after checking the load and accelerometer scale as above (named "load" and
-// "accelerometer"). `sounds` makes the simulated tool (a catalog pairing or a design point) and gives
-// the catalog's μ for it; it is used only by the simulated rig. Throws std::invalid_argument for a
-// request that cannot be met (naming what: an unknown tool, a missing session) and
-// std::runtime_error when a device is missing (naming what was found instead).
+// Why a rig job (a capture, a comparison) cannot start: which part of the request is at fault (a
+// face names its own option or argument for it) and, in what(), the value and what was expected,
+// without the field's name.
+class RigRequestRefused : public std::invalid_argument {
+ public:
+  enum class Field {
+    rig,            // no rig named
+    tool,           // the simulated rig's tool: missing, or unknown to the catalog
+    surface,        // the simulated rig's surface: missing, or unknown to the catalog
+    load,           // outside kLightestLoadN..kHeaviestLoadN
+    speedup,        // neither 0 nor within the pacer's range
+    accelerometer,  // the USB rig's scale, outside its range
+    input_channel,  // the USB rig's input channel: 0
+    replay,         // a replay of nothing
+    profile,        // an unknown profile, or one a replayed rig cannot run
+    seconds,        // a length outside kShortestCaptureSeconds..kMaxProfileSeconds
+    simulate,       // what to simulate: unknown, or unsaid on a rig that does not know its tool
+  };
+  RigRequestRefused(Field field, const std::string& what);
+  Field field() const noexcept { return field_; }
+
+ private:
+  Field field_;
+};
+
+// "rig", "tool", "surface", "load", "speedup", "accelerometer", "input_channel", "replay",
+// "profile", "seconds", "simulate": the Python arguments' names.
+const char* field_name(RigRequestRefused::Field field);
+
+// Everything about the request that can be refused without opening a device or reading a file:
+// what its kind needs and the ranges above. Throws RigRequestRefused.
+void check_rig_request(const RigRequest& request);
+
+// Opens the rig, after check_rig_request. `sounds` makes the simulated tool (a catalog pairing or a
+// design point) and gives the catalog's μ for it; it is used only by the simulated rig. Throws
+// std::invalid_argument for a request that cannot be met (RigRequestRefused; what a session's
+// reader throws for a broken one) and std::runtime_error when a device is missing (naming what was
+// found instead).
 std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSounds& sounds);
 
 // "steps" (the paper's protocol: 3 sweeps of six 2 s steps over 17-250 mm/s, 42 s), "sweep" (the
 // user study's 3 s sweep, two periods) or a CSV file (rig/speed_profile.hpp); `seconds` cuts or
-// repeats it (checked as check_capture_seconds does, named "seconds"). Throws std::invalid_argument /
-// FormatError naming the profile.
+// repeats it (checked as check_capture_seconds does). Throws RigRequestRefused (profile, seconds);
+// FormatError naming a broken file.
 SpeedProfile profile_named(const std::string& name_or_file, std::optional<double> seconds);
 
-// A rig opened with the profile it is to run, as every face opens one: a replayed rig runs what was
-// recorded (cut or repeated to `seconds`), and refuses another profile; the others run `profile`
-// (empty: `default_profile`), checked before the rig is opened. Throws what open_rig and
-// profile_named throw.
+// The profile a rig is to run, checked before it opens: `profile` (empty: `default_profile`) cut or
+// repeated to `seconds`; nullopt for a replayed rig, which runs what it recorded and refuses
+// another. Throws RigRequestRefused (profile, seconds) and what profile_named throws.
+std::optional<SpeedProfile> profile_to_run(const RigRequest& request, const std::string& profile,
+                                           const std::string& default_profile,
+                                           std::optional<double> seconds);
+
+// A rig opened with the profile it is to run, as every face opens one (profile_to_run's, or a
+// replay's own cut to `seconds`). Throws what open_rig and profile_to_run throw.
 struct OpenedRig {
   std::unique_ptr<Rig> rig;
   SpeedProfile profile;

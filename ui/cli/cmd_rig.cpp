@@ -9,7 +9,6 @@
 #include <string>
 
 #include "model/design/tool_sound.hpp"
-#include "model/io/bundled_assets.hpp"
 #include "model/io/comparison_file.hpp"
 #include "playback/audio_devices.hpp"
 #include "rig/accelerometer_input.hpp"
@@ -17,12 +16,12 @@
 #include "rig/capture.hpp"
 #include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
+#include "rig/comparison_start.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
 #include "rig/usb/bootloader_port.hpp"
 #include "rig/usb/usb_device_list.hpp"
 #include "rig/usb/usb_protocol.hpp"
-#include "rt/reference_load.hpp"
 #include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
@@ -39,18 +38,11 @@ namespace {
 struct RigOptions {
   bool simulated = false;
   std::optional<std::string> usb;  // given: the USB rig ("" = the only controller)
-  std::filesystem::path replay;
-  std::string tool, surface;
+  rig::RigRequest request;         // the options bound to it; its kind set from the three above
   std::string design;  // what to simulate instead of the mounted tool: a design point or a tool id
   std::filesystem::path catalog, stylus, forcing_model;
   std::string profile;  // empty: the command's default
   std::optional<double> seconds;
-  double load = rt::kReferenceNormalForce;
-  unsigned seed = 1;
-  double speedup = 1.0;
-  std::string input_api, input;
-  unsigned input_channel = 1;
-  double accelerometer = rig::kDefaultAccelerometerM_s2;
   bool play = false;
   DeviceOptions device;
   std::string actuator;
@@ -64,13 +56,13 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
                      "--usb", [&o](const std::string& serial) { o.usb = serial; },
                      "The USB rig controller (by serial; alone: the only one)")
                   ->expected(0, 1);
-  auto* replay = cmd->add_option("--replay", o.replay,
+  auto* replay = cmd->add_option("--replay", o.request.replay,
                                  "Replay a recorded session (or a paper recording) as if live");
   simulated->excludes(usb)->excludes(replay);
   usb->excludes(replay);
-  cmd->add_option("--tool", o.tool,
+  cmd->add_option("--tool", o.request.tool,
                   "The tool mounted (catalog id or design point); the simulated rig simulates it");
-  cmd->add_option("--surface", o.surface, "The surface on the turntable (e.g. office)");
+  cmd->add_option("--surface", o.request.surface, "The surface on the turntable (e.g. office)");
   cmd->add_option("--catalog", o.catalog, "Catalog JSON (default: the bundled one)");
   cmd->add_option("--stylus", o.stylus,
                   "Stylus design JSON whose modes shape catalog tools (default: the bundled 2 mm one)");
@@ -83,22 +75,27 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
          "--seconds", [&o](const double& s) { o.seconds = s; },
          "Length: cuts or repeats the profile (default: steps 42 s, sweep 6 s, a file its own)")
       ->check(in_range(rig::kShortestCaptureSeconds, rig::kMaxProfileSeconds, "a length in seconds"));
-  cmd->add_option("--load", o.load, "The arm's normal load in N (the paper's by default)")
+  cmd->add_option("--load", o.request.load_N, "The arm's normal load in N (the paper's by default)")
       ->capture_default_str()
       ->check(in_range(rig::kLightestLoadN, rig::kHeaviestLoadN, "a load in N"));
-  cmd->add_option("--seed", o.seed, "Seed of the simulated rig's noise")->check(any_seed());
-  cmd->add_option("--speedup", o.speedup,
+  cmd->add_option("--seed", o.request.seed, "Seed of the simulated rig's noise")->check(any_seed());
+  cmd->add_option("--speedup", o.request.speedup,
                   "Simulated and replayed rigs: 1 = real time, k = k times faster, 0 = as fast as "
                   "it computes")
-      ->check(off_or_in_range(rig::Pacer::kMinSpeedup, rig::Pacer::kMaxSpeedup,
-                              "a speed-up factor"));
-  cmd->add_option("--input", o.input, "USB rig: the audio input the accelerometer is on (by name)");
-  cmd->add_option("--input-api", o.input_api, "USB rig: the audio back end of --input (jack, alsa, pulse)");
-  cmd->add_option("--input-channel", o.input_channel, "USB rig: the accelerometer's input channel (1-based)")
+      ->check(
+          off_or_in_range(rig::Pacer::kMinSpeedup, rig::Pacer::kMaxSpeedup, "a speed-up factor"));
+  cmd->add_option("--input", o.request.input_device,
+                  "USB rig: the audio input the accelerometer is on (by name)");
+  cmd->add_option("--input-api", o.request.input_api,
+                  "USB rig: the audio back end of --input (jack, alsa, pulse)");
+  cmd->add_option("--input-channel", o.request.input_channel,
+                  "USB rig: the accelerometer's input channel (1-based)")
       ->check(whole_in_range(1, 64, "a channel number"));
-  cmd->add_option("--accelerometer", o.accelerometer,
-                  "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")
-      ->check(in_range(rig::kLeastAccelerometerM_s2, rig::kMostAccelerometerM_s2, "m/s² per full scale"));
+  cmd->add_option(
+         "--accelerometer", o.request.accelerometer_m_s2_per_full_scale,
+         "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")
+      ->check(in_range(rig::kLeastAccelerometerM_s2, rig::kMostAccelerometerM_s2,
+                       "m/s² per full scale"));
   auto* play = cmd->add_flag("--play", o.play,
                              "Play the simulated tool on the actuator, following the turntable");
   add_device_options(cmd, o.device);
@@ -107,40 +104,67 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
       ->needs(play);
 }
 
+// The request the options were bound to, of the rig they name.
 rig::RigRequest rig_request(const RigOptions& o) {
-  rig::RigRequest r;
+  rig::RigRequest r = o.request;
   if (o.usb) {
     r.kind = rig::RigKind::usb;
     r.usb_serial = *o.usb;
-  } else if (!o.replay.empty()) {
+  } else if (!o.request.replay.empty()) {
     r.kind = rig::RigKind::replay;
-    r.replay = o.replay;
   } else if (o.simulated) {
     r.kind = rig::RigKind::simulated;
-    if (o.tool.empty() || o.surface.empty())
-      throw CLI::ValidationError("--simulated", "the simulated rig needs --tool and --surface");
   } else {
     throw CLI::ValidationError("rig", "say which rig: --simulated, --usb [SERIAL] or --replay SESSION");
   }
-  r.tool = o.tool;
-  r.surface = o.surface;
-  r.load_N = o.load;
-  r.seed = o.seed;
-  r.speedup = o.speedup;
-  r.input_api = o.input_api;
-  r.input_device = o.input;
-  r.input_channel = o.input_channel;
-  r.accelerometer_m_s2_per_full_scale = o.accelerometer;
   return r;
 }
 
-rig::OpenedRig open_rig(const RigOptions& o, model::design::ToolSounds& sounds,
-                        const std::string& default_profile) {
-  return rig::open_rig_with_profile(rig_request(o), sounds, o.profile, default_profile, o.seconds);
+// A refused rig request as the option at fault.
+[[noreturn]] void throw_as_option(const rig::RigRequestRefused& e) {
+  using Field = rig::RigRequestRefused::Field;
+  const char* option = "rig";
+  switch (e.field()) {
+    case Field::rig:
+      break;
+    case Field::tool:
+      option = "--tool";
+      break;
+    case Field::surface:
+      option = "--surface";
+      break;
+    case Field::load:
+      option = "--load";
+      break;
+    case Field::speedup:
+      option = "--speedup";
+      break;
+    case Field::accelerometer:
+      option = "--accelerometer";
+      break;
+    case Field::input_channel:
+      option = "--input-channel";
+      break;
+    case Field::replay:
+      option = "--replay";
+      break;
+    case Field::profile:
+      option = "--profile";
+      break;
+    case Field::seconds:
+      option = "--seconds";
+      break;
+    case Field::simulate:
+      option = "--design";
+      break;
+  }
+  throw CLI::ValidationError(option, e.what());
 }
 
 // What the simulation is asked to play: --design when given, else --tool (else the mounted tool).
-const std::string& simulated_asked(const RigOptions& o) { return o.design.empty() ? o.tool : o.design; }
+const std::string& simulated_asked(const RigOptions& o) {
+  return o.design.empty() ? o.request.tool : o.design;
+}
 
 // --play: the simulated tool on the actuator, following the turntable (rig/actuator_player.hpp),
 // saying what it plays on before the run and how closely it followed after it.
@@ -149,7 +173,7 @@ std::unique_ptr<rig::ActuatorPlayer> play_on_actuator(const RigOptions& o, const
   rig::ActuatorPlayerSettings settings;
   settings.device = output_settings(o.device, "nibrig-rig-play");
   settings.actuator = o.actuator;
-  settings.seed = o.seed;
+  settings.seed = o.request.seed;
   auto player = std::make_unique<rig::ActuatorPlayer>(rig, sound, settings);
   if (const auto& calibration = player->actuator())
     std::printf("actuator '%s': inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
@@ -190,21 +214,28 @@ model::design::ToolSoundOptions sound_options(const RigOptions& o) {
 
 void capture(const RigOptions& o) {
   model::design::ToolSounds sounds(sound_options(o));
-  rig::OpenedRig opened = open_rig(o, sounds, "steps");
+  rig::OpenedRig opened = [&] {
+    try {
+      return rig::open_rig_with_profile(rig_request(o), sounds, o.profile, "steps", o.seconds);
+    } catch (const rig::RigRequestRefused& e) {
+      throw_as_option(e);
+    }
+  }();
   rig::Rig& rig = *opened.rig;
   std::printf("%s\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
               opened.profile.description().c_str(), opened.profile.duration_s());
   std::fflush(stdout);
   std::unique_ptr<rig::ActuatorPlayer> player;
   if (o.play) {
-    const auto simulated = rig::simulated_choice(rig.description(), simulated_asked(o), o.surface);
+    const auto simulated =
+        rig::simulated_choice(rig.description(), simulated_asked(o), o.request.surface);
     sounds.check(simulated.tool, simulated.surface);
     player = play_on_actuator(o, sounds.sound(simulated.tool, simulated.surface), rig);
   }
   rig::CaptureOptions options;
   options.folder = o.output;
-  options.tool = o.tool;
-  options.surface = o.surface;
+  options.tool = o.request.tool;
+  options.surface = o.request.surface;
   options.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s{}", p.seconds, p.duration_s, p.speed_m_s * 1e3,
                  p.dropped_frames > 0 ? fmt::format(", {} frames dropped", p.dropped_frames) : "");
@@ -222,43 +253,48 @@ void capture(const RigOptions& o) {
 }
 
 void compare(const RigOptions& o) {
-  model::design::ToolSounds sounds(sound_options(o));
-  rig::OpenedRig opened = open_rig(o, sounds, "sweep");
-  rig::Rig& rig = *opened.rig;
-  const auto [tool, surface] = rig::simulated_choice(rig.description(), simulated_asked(o), o.surface);
-  sounds.check(tool, surface);
-  const model::design::ToolSound simulated = sounds.sound(tool, surface);
-  std::printf("%s\nsimulated: %s (modes of %s)\nprofile: %s, %.1f s\n", rig.description().name.c_str(),
-              simulated.name.c_str(), simulated.modes.c_str(), opened.profile.description().c_str(),
-              opened.profile.duration_s());
+  rig::ComparisonRequest request;
+  request.rig = rig_request(o);
+  request.profile = o.profile;
+  request.seconds = o.seconds;
+  request.simulate = o.design;
+  request.sounds = sound_options(o);
+  request.session = o.output / "session";
+  request.seed = o.request.seed;
+  std::optional<rig::ComparisonStart> start;
+  try {
+    start.emplace(std::move(request));
+    start->open();
+  } catch (const rig::RigRequestRefused& e) {
+    throw_as_option(e);
+  }
+  rig::Rig& rig = start->rig();
+  const model::design::ToolSound& simulated = start->simulated();
+  std::printf("%s\nsimulated: %s (modes of %s)\nprofile: %s, %.1f s\n",
+              rig.description().name.c_str(), simulated.name.c_str(), simulated.modes.c_str(),
+              start->profile().description().c_str(), start->profile().duration_s());
   std::fflush(stdout);
   std::unique_ptr<rig::ActuatorPlayer> player;
   if (o.play) player = play_on_actuator(o, simulated, rig);
 
   ensure_folder(o.output);
-  rig::ComparisonRunOptions options;
-  options.capture.folder = o.output / "session";
-  options.capture.tool = o.tool;
-  options.capture.surface = o.surface;
-  options.seed = o.seed;
-  options.capture.on_progress = [](const rig::CaptureProgress& p) {
+  InterruptScope scope;
+  rig::ComparisonHooks hooks;
+  hooks.cancel = scope.token();
+  hooks.on_progress = [](const rig::CaptureProgress& p) {
     spdlog::info("{:.0f} of {:.0f} s, {:.0f} mm/s", p.seconds, p.duration_s, p.speed_m_s * 1e3);
   };
-  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-  InterruptScope scope;
-  options.capture.cancel = scope.token();
-  const rig::ComparisonRun run = rig::run_comparison(rig, opened.profile, simulated, threshold, options);
+  const rig::ComparisonRun run = start->run(hooks);
   print_record(run.capture, rig.description());
   if (player) report_following(*player);
   print_comparison_table(run.table);
   std::fflush(stdout);
 
-  const std::string measured_tool = o.tool.empty() ? rig.description().tool : o.tool;
-  auto report = rig::comparison_report(measured_tool, surface, run.table, run.settings);
   const auto json = o.output / "comparison.json";
-  model::io::write_comparison_file(report, json);
+  model::io::write_comparison_file(start->report(run), json);
   const auto png = o.output / "comparison.png";
-  write_comparison_figure(run, measured_tool + " on " + surface + " against " + simulated.name, png);
+  write_comparison_figure(
+      run, start->measured_tool() + " on " + start->surface() + " against " + simulated.name, png);
   say_wrote(run.capture.folder);
   say_wrote(json);
   say_wrote(png);

@@ -4,11 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "model/design/tool_sound.hpp"
-#include "model/io/bundled_assets.hpp"
-#include "model/measure/threshold_curve.hpp"
 #include "rig/actuator_player.hpp"
+#include "rig/comparison_start.hpp"
 #include "ui/panel/plot_frame.hpp"
 #include "ui/panel/widgets.hpp"
 
@@ -109,30 +111,64 @@ class RigActuatorSwitch {
   bool lost_ = false;
 };
 
+// The view's field a refused request names, as its controls are labelled.
+const char* rig_form_field(rig::RigRequestRefused::Field field) {
+  using Field = rig::RigRequestRefused::Field;
+  switch (field) {
+    case Field::rig:
+      return "rig";
+    case Field::tool:
+      return "tool";
+    case Field::surface:
+      return "surface";
+    case Field::load:
+      return "load";
+    case Field::speedup:
+      return "speed-up";
+    case Field::accelerometer:
+      return "accelerometer";
+    case Field::input_channel:
+      return "input channel";
+    case Field::replay:
+      return "session";
+    case Field::profile:
+      return "profile";
+    case Field::seconds:
+      return "seconds";
+    case Field::simulate:
+      return "simulate";
+  }
+  return "rig";
+}
+
 rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& catalog,
                               const std::filesystem::path& forcing,
                               const std::filesystem::path& folder,
                               const std::shared_ptr<RigFeed>& feed, const RigActuatorTarget& target,
                               const std::shared_ptr<std::atomic<bool>>& play_wanted,
                               JobControl& control) {
-  model::design::ToolSoundOptions sound_options;
-  sound_options.catalog = catalog;
-  sound_options.forcing_model = forcing;
-  model::design::ToolSounds sounds(sound_options);
-  const rig::RigRequest request = rig_request_of(c);
-  const std::optional<double> seconds = c.seconds > 0 ? std::optional<double>(c.seconds) : std::nullopt;
-  control.message("opening the rig");
+  rig::ComparisonRequest request;
+  request.rig = rig_request_of(c);
   // A replay runs what it recorded: the profile chosen in the view is for the other rigs.
-  auto opened = rig::open_rig_with_profile(request, sounds, request.kind == rig::RigKind::replay ? "" : c.profile,
-                                           "sweep", seconds);
-  const auto [simulated_tool, surface] =
-      rig::simulated_choice(opened.rig->description(), c.simulated_tool.empty() ? c.tool : c.simulated_tool, c.surface);
-  control.message("making the simulated " + simulated_tool + " on " + surface);
-  const model::design::ToolSound sound = sounds.sound(simulated_tool, surface);
-  const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
+  if (request.rig.kind != rig::RigKind::replay) request.profile = c.profile;
+  if (c.seconds > 0) request.seconds = c.seconds;
+  request.simulate = c.simulated_tool;
+  request.sounds.catalog = catalog;
+  request.sounds.forcing_model = forcing;
+  request.session = folder;
+  std::optional<rig::ComparisonStart> started;
+  try {
+    started.emplace(std::move(request));
+    control.message("opening the rig and making its simulation");
+    started->open();
+  } catch (const rig::RigRequestRefused& e) {
+    throw std::invalid_argument(std::string(rig_form_field(e.field())) + ": " + e.what());
+  }
+  rig::ComparisonStart& start = *started;
+  const model::design::ToolSound& sound = start.simulated();
   {
     std::lock_guard lock(feed->mutex);
-    feed->rig_name = opened.rig->description().name;
+    feed->rig_name = start.rig().description().name;
     feed->simulated_name = sound.name;
   }
   // Made whether or not it plays yet, since it must listen to the rig from its start; a calibration
@@ -144,25 +180,22 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
     settings.device = *target.device;
     settings.actuator = target.actuator;
     try {
-      player = std::make_unique<rig::ActuatorPlayer>(*opened.rig, sound, settings);
+      player = std::make_unique<rig::ActuatorPlayer>(start.rig(), sound, settings);
     } catch (const std::exception& e) {
       why_not = e.what();
     }
   }
   RigActuatorSwitch actuator(std::move(player), std::move(why_not), play_wanted, feed);
   actuator.apply();
-  rig::ComparisonRunOptions options;
-  options.capture.folder = folder;
-  options.capture.tool = c.tool;
-  options.capture.surface = c.surface;
-  options.capture.cancel = control.stop_token();
-  options.capture.on_progress = [feed, &control](const rig::CaptureProgress& p) {
+  rig::ComparisonHooks hooks;
+  hooks.cancel = control.stop_token();
+  hooks.on_progress = [feed, &control](const rig::CaptureProgress& p) {
     control.progress(p.duration_s > 0 ? p.seconds / p.duration_s : 0.0);
     std::lock_guard lock(feed->mutex);
     feed->progress = p;
   };
   std::size_t decimate = 0;
-  options.on_data = [feed, decimate, &actuator](const rig::RigData& data) mutable {
+  hooks.on_data = [feed, decimate, &actuator](const rig::RigData& data) mutable {
     actuator.apply();
     std::lock_guard lock(feed->mutex);
     for (const auto& f : data.frames)
@@ -170,22 +203,24 @@ rig::ComparisonRun run_on_rig(const RigChoice& c, const std::filesystem::path& c
         feed->speed_mm_s.push_back(f.speed_m_s * 1e3f);
         feed->force_n.push_back(f.normal_force_N);
       }
-    while (feed->speed_mm_s.size() > kTraceFrames) feed->speed_mm_s.pop_front(), feed->force_n.pop_front();
+    while (feed->speed_mm_s.size() > kTraceFrames)
+      feed->speed_mm_s.pop_front(), feed->force_n.pop_front();
   };
   rig::WaterfallRows rows;
   std::uint64_t seen_version = 0;
-  options.on_update = [feed, rows, seen_version](rig::LiveComparison& live) mutable {
+  hooks.on_update = [feed, rows, seen_version](rig::LiveComparison& live) mutable {
     live.take_new_rows(rows);
     std::optional<rig::ComparisonTable> table;
-    if (live.table_version() != seen_version) seen_version = live.table_version(), table = live.table();
+    if (live.table_version() != seen_version)
+      seen_version = live.table_version(), table = live.table();
     std::lock_guard lock(feed->mutex);
     if (feed->frequencies_hz.empty()) feed->frequencies_hz = live.frequencies_hz();
     feed->measured_db.insert(feed->measured_db.end(), rows.measured_db.begin(), rows.measured_db.end());
     feed->simulated_db.insert(feed->simulated_db.end(), rows.simulated_db.begin(), rows.simulated_db.end());
     if (table) feed->table = std::move(table);
   };
-  control.message("running " + opened.profile.description());
-  return rig::run_comparison(*opened.rig, opened.profile, sound, threshold, options);
+  control.message("running " + start.profile().description());
+  return start.run(hooks);
 }
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <atomic>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -16,7 +15,6 @@
 
 #include "model/design/tool_sound.hpp"
 #include "model/io/atomic_file.hpp"
-#include "model/io/bundled_assets.hpp"
 #include "model/io/comparison_file.hpp"
 #include "model/io/finite_output.hpp"
 #include "model/io/format_error.hpp"
@@ -24,9 +22,8 @@
 #include "model/numeric/cancellation.hpp"
 #include "rig/accelerometer_input.hpp"
 #include "rig/capture.hpp"
-#include "rig/comparison_report.hpp"
 #include "rig/comparison_run.hpp"
-#include "rig/pacer.hpp"
+#include "rig/comparison_start.hpp"
 #include "rig/rig_request.hpp"
 #include "rt/reference_load.hpp"
 #include "ui/python/errors.hpp"
@@ -48,12 +45,27 @@ struct RigSpec {
   std::filesystem::path catalog, stylus, forcing;
 };
 
-rig::OpenedRig open_with_profile(const RigSpec& spec, model::design::ToolSounds& sounds,
-                                 const std::optional<std::filesystem::path>& profile, const std::string& default_profile,
-                                 const std::optional<double>& seconds) {
-  return system_refusals([&] {
-    return rig::open_rig_with_profile(spec.request, sounds, profile ? profile->string() : "", default_profile, seconds);
-  });
+// A refused request as a ValueError naming the argument at fault.
+[[noreturn]] void throw_as_argument(const rig::RigRequestRefused& e) {
+  using Field = rig::RigRequestRefused::Field;
+  const char* argument = rig::field_name(e.field());
+  if (e.field() == Field::replay) argument = "path";
+  if (e.field() == Field::simulate) argument = "tool";  // compare's: what to simulate
+  throw std::invalid_argument(std::string(argument) + ": " + e.what());
+}
+
+template <typename Call>
+auto rig_refusals(Call&& call) {
+  try {
+    return system_refusals(std::forward<Call>(call));
+  } catch (const rig::RigRequestRefused& e) {
+    throw_as_argument(e);
+  }
+}
+
+RigSpec checked(RigSpec spec) {
+  rig_refusals([&] { rig::check_rig_request(spec.request); });
+  return spec;
 }
 
 // A capture's progress for Python: milliseconds of acceleration recorded, of the profile's. (Ctrl-C
@@ -79,7 +91,10 @@ Session capture(const RigSpec& spec, const std::filesystem::path& folder, const 
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
         model::design::ToolSounds sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
-        rig::OpenedRig opened = open_with_profile(spec, sounds, profile, "steps", seconds);
+        rig::OpenedRig opened = rig_refusals([&] {
+          return rig::open_rig_with_profile(spec.request, sounds, profile ? profile->string() : "",
+                                            "steps", seconds);
+        });
         model::numeric::throw_if_cancelled(stop, "rig capture");  // stopped before it began: no folder
         CaptureProgressReport recorded;
         rig::CaptureOptions options;
@@ -104,33 +119,34 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
   Comparison out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        model::design::ToolSounds rig_sounds(tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report));
-        rig::OpenedRig opened = open_with_profile(spec, rig_sounds, profile, "sweep", seconds);
-        const rig::RigDescription& d = opened.rig->description();
-        const auto [simulated_tool, on] =
-            rig::simulated_choice(d, tool.value_or(spec.request.tool), surface.value_or(spec.request.surface));
-        // The rig's own inputs unless others are given (the simulated rig's tool sounds as it simulates).
-        std::optional<model::design::ToolSounds> own;
+        rig::ComparisonRequest request;
+        request.rig = spec.request;
+        request.profile = profile ? profile->string() : "";
+        request.seconds = seconds;
+        request.simulate = tool.value_or("");
+        request.simulate_surface = surface.value_or("");
+        request.sounds = tool_sound_options(spec.catalog, spec.stylus, spec.forcing, stop, report);
+        // The rig's own inputs unless others are given (the simulated rig's tool sounds as it
+        // simulates).
         if (catalog || stylus || forcing)
-          own.emplace(tool_sound_options(catalog.value_or(spec.catalog), stylus.value_or(spec.stylus),
-                                    forcing.value_or(spec.forcing), stop, report));
-        model::design::ToolSounds& sounds = own ? *own : rig_sounds;
-        sounds.check(simulated_tool, on);
-        const model::design::ToolSound simulated = sounds.sound(simulated_tool, on);
+          request.simulation_sounds =
+              tool_sound_options(catalog.value_or(spec.catalog), stylus.value_or(spec.stylus),
+                                 forcing.value_or(spec.forcing), stop, report);
+        request.session = folder;
+        request.seed = seed;
+        std::optional<rig::ComparisonStart> start;
+        rig_refusals([&] {
+          start.emplace(std::move(request));
+          start->open();
+        });
         model::numeric::throw_if_cancelled(stop, "rig comparison");  // stopped before it began: no folder
         CaptureProgressReport recorded;
-        rig::ComparisonRunOptions options;
-        options.capture.folder = folder;
-        options.capture.tool = spec.request.tool;
-        options.capture.surface = spec.request.surface;
-        options.capture.cancel = stop;
-        options.seed = seed;
-        options.on_data = recorded.counter(*opened.rig, opened.profile, report);
-        const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-        out.run = system_refusals([&] { return rig::run_comparison(*opened.rig, opened.profile, simulated, threshold, options); });
-        const std::string measured_tool = spec.request.tool.empty() ? d.tool : spec.request.tool;
-        out.report = rig::comparison_report(measured_tool, on, out.run.table, out.run.settings);
-        out.simulated_modes = simulated.modes;
+        rig::ComparisonHooks hooks;
+        hooks.cancel = stop;
+        hooks.on_data = recorded.counter(start->rig(), start->profile(), report);
+        out.run = system_refusals([&] { return start->run(hooks); });
+        out.report = start->report(out.run);
+        out.simulated_modes = start->simulated().modes;
         out.session.session = model::io::read_rig_session(out.run.capture.folder);
       },
       progress);
@@ -181,10 +197,6 @@ void add_rig_module(py::module_ m) {
          double speedup, const std::optional<std::filesystem::path>& catalog,
          const std::optional<std::filesystem::path>& stylus,
          const std::optional<std::filesystem::path>& forcing) {
-        if (tool.empty() || surface.empty())
-          throw std::invalid_argument("the simulated rig needs a tool and a surface to simulate");
-        rig::check_load(load, "load");  // here, not first when a capture opens it
-        rig::Pacer::check_speedup(speedup, "speedup");
         RigSpec r;
         r.request.kind = rig::RigKind::simulated;
         r.request.tool = tool, r.request.surface = surface;
@@ -192,7 +204,7 @@ void add_rig_module(py::module_ m) {
         r.catalog = catalog.value_or(std::filesystem::path());
         r.stylus = stylus.value_or(std::filesystem::path());
         r.forcing = forcing.value_or(std::filesystem::path());
-        return r;
+        return checked(r);  // here, not first when a capture opens it
       },
       py::arg("tool"), py::arg("surface"), py::kw_only(),
       py::arg("load") = rt::kReferenceNormalForce, py::arg("seed") = 1u, py::arg("speedup") = 0.0,
@@ -204,26 +216,25 @@ void add_rig_module(py::module_ m) {
       "time). catalog, "
       "stylus, forcing: what the simulation is made from (default: the bundled ones, the cached "
       "forcing model).");
-  m.def("replay", [](const std::filesystem::path& path, double speedup) {
-          rig::Pacer::check_speedup(speedup, "speedup");
-          RigSpec r;
-          r.request.kind = rig::RigKind::replay;
-          r.request.replay = path;
-          r.request.speedup = speedup;
-          return r;
-        }, py::arg("path"), py::kw_only(), py::arg("speedup") = 0.0,
-        "A recorded session folder (or one of the paper's arm_*.csv recordings) replayed as if live, with the "
-        "profile it recorded; speedup 0 as fast as it reads (1: real time)");
+  m.def(
+      "replay",
+      [](const std::filesystem::path& path, double speedup) {
+        RigSpec r;
+        r.request.kind = rig::RigKind::replay;
+        r.request.replay = path;
+        r.request.speedup = speedup;
+        return checked(r);
+      },
+      py::arg("path"), py::kw_only(), py::arg("speedup") = 0.0,
+      "A recorded session folder (or one of the paper's arm_*.csv recordings) replayed as if live, "
+      "with the "
+      "profile it recorded; speedup 0 as fast as it reads (1: real time)");
   m.def(
       "usb",
       [](const std::optional<std::string>& serial, const std::optional<std::string>& input_api,
          const std::optional<std::string>& input_device, unsigned input_channel,
          double accelerometer, const std::optional<std::string>& tool,
          const std::optional<std::string>& surface, double load) {
-        if (input_channel < 1)
-          throw std::invalid_argument("input_channel is 0; expected 1 or more (1-based)");
-        rig::check_accelerometer_scale(accelerometer, "accelerometer");
-        rig::check_load(load, "load");
         RigSpec r;
         r.request.kind = rig::RigKind::usb;
         r.request.usb_serial = serial.value_or("");
@@ -233,7 +244,7 @@ void add_rig_module(py::module_ m) {
         r.request.accelerometer_m_s2_per_full_scale = accelerometer;
         r.request.tool = tool.value_or(""), r.request.surface = surface.value_or("");
         r.request.load_N = load;
-        return r;
+        return checked(r);
       },
       py::kw_only(), py::arg("serial") = py::none(), py::arg("input_api") = py::none(),
       py::arg("input_device") = py::none(), py::arg("input_channel") = 1u,

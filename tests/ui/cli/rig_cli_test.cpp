@@ -126,20 +126,26 @@ TEST(RigCli, BadRequestsGetOneClearLine) {
     std::string says;
   };
   const std::vector<Case> cases = {
-      {{"rig", "capture", "--tool", "vero2", "--surface", "office", "-o", out}, 2,
+      {{"rig", "capture", "--tool", "vero2", "--surface", "office", "-o", out},
+       2,
        "say which rig: --simulated, --usb [SERIAL] or --replay SESSION"},
-      {{"rig", "capture", "--simulated", "--tool", "vero2", "-o", out}, 2,
-       "the simulated rig needs --tool and --surface"},
+      {{"rig", "capture", "--simulated", "--tool", "vero2", "-o", out},
+       2,
+       "--surface: the simulated rig needs a surface to simulate"},
       {{"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--profile",
         "zigzag", "-o", out},
-       1, "--profile zigzag: expected steps, sweep or a CSV file"},
+       2,
+       "--profile: zigzag: expected steps, sweep or a CSV file"},
       {{"rig", "capture", "--simulated", "--tool", "vero2", "--surface", "office", "--seconds",
         "-3", "-o", out},
-       2, "--seconds"},
-      {{"rig", "capture", "--simulated", "--tool", "nope", "--surface", "office", "-o", out}, 1,
-       "no vibration spectrum of tool 'nope'"},
+       2,
+       "--seconds"},
+      {{"rig", "capture", "--simulated", "--tool", "nope", "--surface", "office", "-o", out},
+       2,
+       "--tool: the bundled catalog has no vibration spectrum of tool 'nope'"},
       // No controller on this machine's bus: the line says what was looked for and what was found.
-      {{"rig", "capture", "--usb", "--tool", "cryon", "--surface", "office", "-o", out}, 1,
+      {{"rig", "capture", "--usb", "--tool", "cryon", "--surface", "office", "-o", out},
+       1,
        "no nibrig rig controller (USB 1209:000a) on the bus"},
   };
   for (const auto& c : cases) {

@@ -68,7 +68,7 @@ def test_a_replay_gives_the_same_streams(captured, tmp_path):
     for name in STREAMS:
         np.testing.assert_array_equal(getattr(replayed, name), getattr(s, name))
     np.testing.assert_array_equal(replayed.profile_time_s, s.profile_time_s)
-    with pytest.raises(ValueError, match="recorded"):
+    with pytest.raises(ValueError, match="^profile: steps: .*recorded"):
         nibrig.rig.capture(rig, tmp_path / "other", profile="steps")
 
 
@@ -114,12 +114,19 @@ def test_refusals_name_what_was_asked(captured, tmp_path):
     rig = nibrig.rig.simulated("vero2", "office")
     with pytest.raises(OSError, match=str(folder)):
         nibrig.rig.capture(rig, folder, profile="sweep", seconds=0.5)
-    with pytest.raises(ValueError, match="zigzag"):
+    # Each refusal begins with the argument at fault (the library's field, rig/rig_request.hpp).
+    with pytest.raises(ValueError, match="^profile: zigzag"):
         nibrig.rig.capture(rig, tmp_path / "s", profile="zigzag")
-    with pytest.raises(ValueError, match="nope"):
+    with pytest.raises(ValueError, match="^tool: .*'nope'"):
         nibrig.rig.capture(nibrig.rig.simulated("nope", "office"), tmp_path / "s", seconds=0.5)
-    with pytest.raises(ValueError, match="speed-up"):
+    with pytest.raises(ValueError, match="^tool: .*'nope'"):
+        nibrig.rig.compare(rig, "nope", tmp_path / "s", seconds=0.5)
+    with pytest.raises(ValueError, match="^speedup: speed-up -1"):
         nibrig.rig.simulated("vero2", "office", speedup=-1)
+    with pytest.raises(ValueError, match="^input_channel: 0"):
+        nibrig.rig.usb(input_channel=0)
+    with pytest.raises(ValueError, match="^seconds: "):
+        nibrig.rig.compare(rig, "vero2", tmp_path / "s", seconds=1e-320)
     with pytest.raises(FileNotFoundError):
         nibrig.rig.session(tmp_path / "nothing")
     assert not os.path.exists(tmp_path / "s") and not os.path.exists(tmp_path / "s.partial")
