@@ -12,6 +12,13 @@ constexpr std::size_t kClockWindows = 20;
 
 }  // namespace
 
+playback::OutputSettings accelerometer_stream() {
+  playback::OutputSettings s;
+  s.input_channel = 1;
+  s.stream_name = "nibrig-rig-input";
+  return s;
+}
+
 AccelerometerInput::AccelerometerInput(const AccelerometerSettings& settings)
     : settings_(settings), clock_(kClockWindow_s, kClockWindows) {
   if (!(settings.m_s2_per_full_scale > 0.0) || !std::isfinite(settings.m_s2_per_full_scale))
@@ -19,15 +26,9 @@ AccelerometerInput::AccelerometerInput(const AccelerometerSettings& settings)
   if (settings.device_latency_s &&
       (!(*settings.device_latency_s >= 0.0) || !std::isfinite(*settings.device_latency_s)))
     throw std::invalid_argument("the accelerometer's converter latency must be >= 0 s");
-  playback::OutputSettings out;
-  out.api = settings.api;
-  out.device = settings.device;
-  out.sample_rate = settings.sample_rate;
-  out.period_frames = settings.period_frames;
-  out.input_channel = settings.channel;
-  out.stream_name = settings.stream_name;
-  out.connect_ports = settings.connect_ports;
-  stream_ = std::make_unique<playback::AudioOutput>(silence_, out);
+  if (!settings.stream.input_channel)
+    throw std::invalid_argument("the accelerometer's stream has no input channel to capture");
+  stream_ = std::make_unique<playback::AudioOutput>(silence_, settings.stream);
   const playback::StreamInfo info = stream_->stream_info();
   rate_ = info.sample_rate;
   // The callback sees input one period after its last sample was taken, and the back end reports
@@ -84,7 +85,8 @@ double AccelerometerInput::host_time_of(double index) const {
 
 std::string AccelerometerInput::device_name() const {
   const auto info = stream_->stream_info();
-  return info.api + " " + info.device + ", input " + std::to_string(settings_.channel);
+  return info.api + " " + info.device + ", input " +
+         std::to_string(*settings_.stream.input_channel);
 }
 
 }  // namespace nibrig::rig

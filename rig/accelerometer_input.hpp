@@ -20,25 +20,26 @@ namespace nibrig::rig {
 // What a rig's accelerometer reads at full scale unless calibrated: a ±5 g part on a line input.
 inline constexpr double kDefaultAccelerometerM_s2 = 5 * 9.81;
 
+// The stream an accelerometer is captured on unless told otherwise: input channel 1 of the
+// default device, under its own JACK client name.
+playback::OutputSettings accelerometer_stream();
+
 struct AccelerometerSettings {
-  std::string api;     // "jack", "alsa", "pulse"; empty: the first with the device
-  std::string device;  // by name (exact, or a unique part); empty: the default
-  unsigned channel = 1;  // 1-based input channel
-  unsigned sample_rate = 48000;
-  unsigned period_frames = 256;
+  // The audio stream it is read on: api, device (by name), rate, period, JACK client name; its
+  // input_channel is the accelerometer's (1-based).
+  playback::OutputSettings stream = accelerometer_stream();
   double m_s2_per_full_scale = kDefaultAccelerometerM_s2;
-  std::string stream_name = "nibrig-rig-input";
   // The converter's latency, from the sample's instant to the audio graph; unset: what the back end
   // reports for the device's capture port. Set it from a measurement, or to 0 for a source patched
   // straight into the stream's port (a JACK client, as in the tests), which no converter delays.
   std::optional<double> device_latency_s;
-  bool connect_ports = true;  // JACK: connect to the device's ports
 };
 
 class AccelerometerInput {
  public:
   // Opens and starts the stream. Throws playback::DeviceError naming what was asked and what
-  // exists, std::invalid_argument for a scale that is not positive.
+  // exists, std::invalid_argument for a scale that is not positive or a stream with no input
+  // channel.
   explicit AccelerometerInput(const AccelerometerSettings& settings);
   ~AccelerometerInput();
 

@@ -151,9 +151,9 @@ std::unique_ptr<Rig> open_rig(const RigRequest& request, model::design::ToolSoun
     case RigKind::usb: {
       UsbRigSettings settings;
       settings.controller.serial = request.usb_serial;
-      settings.accelerometer.api = request.input_api;
-      settings.accelerometer.device = request.input_device;
-      settings.accelerometer.channel = request.input_channel;
+      settings.accelerometer.stream.api = request.input_api;
+      settings.accelerometer.stream.device = request.input_device;
+      settings.accelerometer.stream.input_channel = request.input_channel;
       settings.accelerometer.m_s2_per_full_scale = request.accelerometer_m_s2_per_full_scale;
       settings.normal_load_N = request.load_N;
       auto rig = std::make_unique<UsbRig>(settings);

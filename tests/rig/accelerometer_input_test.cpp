@@ -17,10 +17,10 @@ namespace {
 
 AccelerometerSettings jack_input(const std::string& stream) {
   AccelerometerSettings s;
-  s.api = "jack";
-  s.stream_name = stream;
-  s.connect_ports = false;  // the test patches the feeder in itself
-  s.period_frames = 64;
+  s.stream.api = "jack";
+  s.stream.stream_name = stream;
+  s.stream.connect_ports = false;  // the test patches the feeder in itself
+  s.stream.period_frames = 64;
   // The feeder plays straight into the stream's port: no converter delays it (the back end's
   // latency is system:capture's).
   s.device_latency_s = 0.0;
@@ -95,7 +95,7 @@ TEST(AccelerometerInput, CapturesWhatJackPlaysAndTimesItOnTheHostClock) {
 TEST(AccelerometerInput, AMissingDeviceIsNamedWithWhatExists) {
   nibrig::testing::JackServer server;
   AccelerometerSettings s = jack_input("accel-missing");
-  s.device = "Scarlett";
+  s.stream.device = "Scarlett";
   try {
     AccelerometerInput input(s);
     FAIL() << "a device that is not there was opened";

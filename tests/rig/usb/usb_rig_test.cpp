@@ -51,10 +51,10 @@ TYPED_TEST_SUITE(UsbRigOn, Devices, DeviceName);
 // patches a feeder client into (no converter delays it: its latency is 0, not system:capture's).
 UsbRigSettings fed_by_jack(const std::string& stream) {
   UsbRigSettings settings;
-  settings.accelerometer.api = "jack";
-  settings.accelerometer.stream_name = stream;
-  settings.accelerometer.connect_ports = false;
-  settings.accelerometer.period_frames = 64;
+  settings.accelerometer.stream.api = "jack";
+  settings.accelerometer.stream.stream_name = stream;
+  settings.accelerometer.stream.connect_ports = false;
+  settings.accelerometer.stream.period_frames = 64;
   settings.accelerometer.device_latency_s = 0.0;
   return settings;
 }
