@@ -214,7 +214,7 @@ case "$job" in
   python)
     # The package folder the build assembled (ui/CMakeLists.txt) goes to the user's site-packages,
     # which Python searches without a package index, pip or a virtual environment.
-    targets=nibrig_python configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF \
+    targets=nibrig_python_package configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF \
       -DNIBRIG_LEAK_CHECK=OFF "$with_panel" -DNIBRIG_BUILD_PYTHON=ON
     site=$(/usr/bin/python3 -m site --user-site)
     mkdir -p "$site"

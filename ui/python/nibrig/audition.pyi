@@ -1,5 +1,3 @@
-"""Tools played live on an audio device (as `nibrig audition`): speed and force set as they play."""
-
 import os
 from types import TracebackType
 from typing import Any, Callable, Dict, List, Optional, Sequence, Type, Union, overload
@@ -17,8 +15,7 @@ class Player:
         period: int = 256,
         name: str = "nibrig-python",
         actuator: Optional[str] = None,
-    ) -> None:
-        """Opens a device by API ('jack', 'alsa', 'pulse') and name; rate in Hz (0: the device's)."""
+    ) -> None: ...
     def play(
         self,
         tools: Sequence[str],
@@ -33,47 +30,37 @@ class Player:
         stylus: Optional[_Path] = None,
         forcing: Optional[_Path] = None,
         progress: Optional[Callable[[str, int, int], object]] = None,
-    ) -> None:
-        """One to three tools into A, B, C; plays A. speed in m/s (default 0.1), force in N (default 2.2)."""
+    ) -> None: ...
     @property
-    def speed(self) -> Optional[float]:
-        """The live contact's speed, m/s."""
+    def speed(self) -> Optional[float]: ...
     @speed.setter
     def speed(self, value: float) -> None: ...
     @property
-    def force(self) -> float:
-        """The live contact's normal force, N."""
+    def force(self) -> float: ...
     @force.setter
     def force(self, value: float) -> None: ...
     @property
     def stroke(self) -> str: ...
     @overload
-    def select(self, slot: str) -> None:
-        """'A', 'B' or 'C'."""
+    def select(self, slot: str) -> None: ...
     @overload
-    def select(self, slot: int) -> None:
-        """0, 1 or 2."""
+    def select(self, slot: int) -> None: ...
     @property
     def selected(self) -> str: ...
     @property
     def names(self) -> List[str]: ...
-    def stop(self) -> None:
-        """Silence: contact speed and force 0; the device stays open."""
+    def stop(self) -> None: ...
     def close(self) -> None: ...
     @property
-    def pending(self) -> int:
-        """Commands held until the engine's queue takes them."""
+    def pending(self) -> int: ...
     @property
-    def status(self) -> str:
-        """'running', 'lost' or 'closed'."""
+    def status(self) -> str: ...
     @property
     def problem(self) -> str: ...
     @property
-    def stream(self) -> Dict[str, Any]:
-        """api, device, rate_hz, period_frames, output_channels, latency_frames, actuator."""
+    def stream(self) -> Dict[str, Any]: ...
     @property
-    def stats(self) -> Dict[str, Any]:
-        """callbacks, frames, underflows, losses, reconnects, engine_overruns, peak_output, ..."""
+    def stats(self) -> Dict[str, Any]: ...
     def __enter__(self) -> "Player": ...
     def __exit__(
         self,
@@ -82,5 +69,4 @@ class Player:
         tb: Optional[TracebackType],
     ) -> None: ...
 
-def devices(api: Optional[str] = None) -> List[Dict[str, Any]]:
-    """Every audio API compiled in with its devices: api, name, available, unavailable_reason, devices."""
+def devices(api: Optional[str] = None) -> List[Dict[str, Any]]: ...

@@ -1,5 +1,3 @@
-"""Predicted designs (Sec. 5.3), their place in a space, the design searches (Sec. 6.2, 7), and the loop from a print back to its target."""
-
 import os
 import pathlib
 from typing import Any, Callable, Mapping, Optional, Sequence, Tuple, Union
@@ -28,8 +26,7 @@ class Prediction:
     @property
     def speeds_m_s(self) -> list[float]: ...
     @property
-    def amplitude(self) -> npt.NDArray[np.float64]:
-        """speeds x frequencies, m/s^2."""
+    def amplitude(self) -> npt.NDArray[np.float64]: ...
     @property
     def weighted_mean(self) -> float: ...
     def place(self, space: Space) -> Placement: ...
@@ -45,21 +42,17 @@ class Modes:
     @property
     def design(self) -> str: ...
     @property
-    def frequencies_hz(self) -> list[float]:
-        """Undamped, Hz, ascending."""
+    def frequencies_hz(self) -> list[float]: ...
     @property
     def damping_ratios(self) -> npt.NDArray[np.float64]: ...
     @property
-    def tip(self) -> npt.NDArray[np.float64]:
-        """Mode shapes at the tip, kg^-1/2."""
+    def tip(self) -> npt.NDArray[np.float64]: ...
     @property
-    def sensor(self) -> npt.NDArray[np.float64]:
-        """Mode shapes at the sensor, kg^-1/2."""
+    def sensor(self) -> npt.NDArray[np.float64]: ...
     @property
     def response_frequencies_hz(self) -> npt.NDArray[np.float64]: ...
     @property
-    def response(self) -> npt.NDArray[np.float64]:
-        """|H(f)| from tip force to sensor acceleration, (m/s^2)/N."""
+    def response(self) -> npt.NDArray[np.float64]: ...
 
 class Forcing:
     @property
@@ -76,12 +69,10 @@ class Forcing:
     def materials(self) -> list[str]: ...
     @property
     def reference(self) -> tuple[float, str]: ...
-    def surface_forcing(self, surface: str) -> npt.NDArray[np.float64]:
-        """F_S, speeds x frequencies, N."""
+    def surface_forcing(self, surface: str) -> npt.NDArray[np.float64]: ...
     def tip_gain_db(self, tip_mm: float) -> list[float]: ...
     def material_gain_db(self, material: str) -> list[float]: ...
-    def predict(self, response: Sequence[float], surface: str, tip_mm: float, material: str) -> npt.NDArray[np.float64]:
-        """Speeds x frequencies, m/s^2."""
+    def predict(self, response: Sequence[float], surface: str, tip_mm: float, material: str) -> npt.NDArray[np.float64]: ...
     @property
     def residual_rms_db(self) -> float: ...
     @property
@@ -90,12 +81,10 @@ class Forcing:
     def notes(self) -> list[str]: ...
 
 class Designer:
-    def modes(self, design: str) -> Modes:
-        """A design point's modes and frequency response (its FEM solve)."""
+    def modes(self, design: str) -> Modes: ...
     @property
     def forcing(self) -> Forcing: ...
-    def predict(self, design: str, surface: str) -> Prediction:
-        """A design point such as 'DM85:0.5,vero:0.5,tip=2mm' on a surface."""
+    def predict(self, design: str, surface: str) -> Prediction: ...
     def search(
         self,
         space: Space,
@@ -123,8 +112,7 @@ def designer(
     modes: int = 0,
     mesh_size: float = 0.0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Designer:
-    """Reads what predicting needs; mesh_size in m, 0: the template's."""
+) -> Designer: ...
 
 class Calibration:
     @property
@@ -132,8 +120,7 @@ class Calibration:
     @property
     def knot_frequencies_hz(self) -> list[float]: ...
     @property
-    def gain_db(self) -> list[float]:
-        """A material's 20 log10 m(f) at the knots (empty for a surface)."""
+    def gain_db(self) -> list[float]: ...
     @property
     def gain_se_db(self) -> list[float]: ...
     @property
@@ -151,8 +138,7 @@ class Calibration:
     @property
     def predicted(self) -> list[dict[str, Any]]: ...
     def save(self, path: _Path) -> None: ...
-    def keep(self, name: str, *, replace: bool = False) -> pathlib.Path:
-        """Keeps the model by name in the lab's store; designer(forcing=name) finds it."""
+    def keep(self, name: str, *, replace: bool = False) -> pathlib.Path: ...
 
 def calibrate_material(
     material: str,
@@ -163,8 +149,7 @@ def calibrate_material(
     modes: int = 0,
     mesh_size: float = 0.0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Calibration:
-    """A new material's curve from its prints in the catalog, against a forcing model (a name or file)."""
+) -> Calibration: ...
 
 def calibrate_surface(
     surface: str,
@@ -175,11 +160,9 @@ def calibrate_surface(
     modes: int = 0,
     mesh_size: float = 0.0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Calibration:
-    """A new surface's forcing from the tools measured on it in the catalog, against a forcing model."""
+) -> Calibration: ...
 
 class CalibrationBar:
-    """The ring-down bar written for a material on a printer."""
     @property
     def material(self) -> str: ...
     @property
@@ -202,7 +185,6 @@ class CalibrationBar:
     def record(self) -> pathlib.Path: ...
 
 class RingDownCalibration:
-    """A material fitted to its bar's ring-down and saved among the lab's."""
     @property
     def name(self) -> str: ...
     @property
@@ -231,8 +213,7 @@ def calibration_bar(
     folder: _Path,
     length_mm: Optional[float] = None,
     materials: Optional[_Path] = None,
-) -> CalibrationBar:
-    """Writes the ring-down bar of the paper's Sec. 5.1 in a material for a printer."""
+) -> CalibrationBar: ...
 
 def calibrate_ring_down(
     trace: _Path,
@@ -242,8 +223,7 @@ def calibrate_ring_down(
     calibrated: bool = False,
     replace: bool = False,
     materials: Optional[_Path] = None,
-) -> RingDownCalibration:
-    """Fits the bar's ring-down for Young's modulus and Rayleigh damping and saves the material by name."""
+) -> RingDownCalibration: ...
 
 class DesignLoop:
     @property
@@ -278,5 +258,4 @@ def loop(
     seconds: Optional[float] = None,
     replay_prints: Optional[_Path] = None,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> DesignLoop:
-    """The design loop of `nibrig design loop` in a folder, run as far as it goes here."""
+) -> DesignLoop: ...

@@ -1,5 +1,3 @@
-"""Recordings to friction, velocity-binned spectra and perceptual descriptors (Sec. 3, 4.4); catalogs."""
-
 import os
 from typing import Callable, Optional, Tuple, Union
 
@@ -9,8 +7,6 @@ import numpy.typing as npt
 _Path = Union[str, os.PathLike[str]]
 
 class Measurement:
-    """One recording's physical descriptors; the parts its kind has (others raise ValueError)."""
-
     @property
     def kind(self) -> str: ...
     @property
@@ -20,11 +16,9 @@ class Measurement:
     @property
     def warnings(self) -> list[str]: ...
     @property
-    def mu(self) -> float:
-        """Coulomb coefficient (dimensionless)."""
+    def mu(self) -> float: ...
     @property
-    def mu_interval(self) -> Tuple[float, float]:
-        """mu's 95 % confidence interval."""
+    def mu_interval(self) -> Tuple[float, float]: ...
     @property
     def normal_load_N(self) -> float: ...
     @property
@@ -32,18 +26,14 @@ class Measurement:
     @property
     def speeds_m_s(self) -> npt.NDArray[np.float64]: ...
     @property
-    def amplitude(self) -> npt.NDArray[np.float64]:
-        """speeds x frequencies, m/s^2."""
+    def amplitude(self) -> npt.NDArray[np.float64]: ...
     @property
-    def weighted_mean(self) -> float:
-        """Mean of the threshold-weighted spectrum (dimensionless)."""
+    def weighted_mean(self) -> float: ...
     @property
-    def weighted_power(self) -> float:
-        """Hz."""
+    def weighted_power(self) -> float: ...
     @property
     def band_energies(self) -> dict[int, list[float]]: ...
-    def to_json(self) -> str:
-        """What `nibrig measure` writes."""
+    def to_json(self) -> str: ...
 
 class Catalog:
     @property
@@ -64,8 +54,7 @@ def recording(
     load: Optional[float] = None,
     lever: Optional[float] = None,
     threshold: Optional[_Path] = None,
-) -> Measurement:
-    """Measures one recording as `nibrig measure` does (load in N)."""
+) -> Measurement: ...
 
 def catalog(
     folder: _Path,
@@ -73,8 +62,7 @@ def catalog(
     threshold: Optional[_Path] = None,
     threads: int = 0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Catalog:
-    """Every recording under a folder measured into one catalog; Ctrl-C stops it."""
+) -> Catalog: ...
 
 def load_catalog(path: _Path) -> Catalog: ...
 def bundled_catalog() -> str: ...

@@ -1,5 +1,3 @@
-"""Tools rendered offline through the real-time engine into numpy arrays (as `nibrig render`)."""
-
 import os
 from typing import Callable, Optional, Union
 
@@ -10,8 +8,7 @@ _Path = Union[str, os.PathLike[str]]
 
 class Rendering:
     @property
-    def samples(self) -> npt.NDArray[np.float32]:
-        """Mono, full scale +-1; a view."""
+    def samples(self) -> npt.NDArray[np.float32]: ...
     @property
     def rate_hz(self) -> float: ...
     @property
@@ -35,5 +32,4 @@ def tool(
     stylus: Optional[_Path] = None,
     forcing: Optional[_Path] = None,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Rendering:
-    """Renders a tool on a surface: speed in m/s, force in N, seconds of output."""
+) -> Rendering: ...

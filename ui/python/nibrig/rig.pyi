@@ -1,5 +1,3 @@
-"""The turntable rig (simulated, replayed or USB): captures into sessions, live comparisons with the simulation, sessions as arrays."""
-
 import os
 import pathlib
 from typing import Callable, Optional, Tuple, Union
@@ -11,11 +9,8 @@ _Path = Union[str, os.PathLike[str]]
 _Progress = Optional[Callable[[str, int, int], object]]
 
 class Rig:
-    """A rig as asked for; each capture or comparison opens it afresh."""
-
     @property
-    def kind(self) -> str:
-        """'simulated', 'replay' or 'usb'."""
+    def kind(self) -> str: ...
     @property
     def tool(self) -> Optional[str]: ...
     @property
@@ -25,8 +20,7 @@ class Rig:
     @property
     def seed(self) -> int: ...
     @property
-    def speedup(self) -> float:
-        """1 = real time, k = k times faster, 0 = as fast as it computes."""
+    def speedup(self) -> float: ...
     @property
     def path(self) -> Optional[pathlib.Path]: ...
     @property
@@ -42,11 +36,9 @@ def simulated(
     catalog: Optional[_Path] = None,
     stylus: Optional[_Path] = None,
     forcing: Optional[_Path] = None,
-) -> Rig:
-    """The simulated rig: a tool (catalog id or design point) on a surface, pressed with `load` N."""
+) -> Rig: ...
 
-def replay(path: _Path, *, speedup: float = 0.0) -> Rig:
-    """A session folder (or a paper arm_*.csv recording) replayed as if live."""
+def replay(path: _Path, *, speedup: float = 0.0) -> Rig: ...
 
 def usb(
     *,
@@ -58,17 +50,13 @@ def usb(
     tool: Optional[str] = None,
     surface: Optional[str] = None,
     load: float = 2.2,
-) -> Rig:
-    """The USB rig controller; accelerometer in m/s^2 at full scale. A missing one is an OSError when opened."""
+) -> Rig: ...
 
 class RigSession:
-    """A rig session: its streams (read-only views, float32) and what it says about them."""
-
     @property
     def folder(self) -> pathlib.Path: ...
     @property
-    def complete(self) -> bool:
-        """False for a .partial folder a killed capture left."""
+    def complete(self) -> bool: ...
     @property
     def warnings(self) -> list[str]: ...
     @property
@@ -102,14 +90,11 @@ class RigSession:
     @property
     def created_utc(self) -> str: ...
     @property
-    def capture(self) -> Optional[dict[str, Union[str, int, float]]]:
-        """rig, seconds, frames, dropped_frames, saturated_frames, fault_frames, alignment_error_ms, ended_because."""
+    def capture(self) -> Optional[dict[str, Union[str, int, float]]]: ...
     @property
-    def acceleration(self) -> npt.NDArray[np.float32]:
-        """As recorded, in units['acceleration'] (a view)."""
+    def acceleration(self) -> npt.NDArray[np.float32]: ...
     @property
-    def acceleration_m_s2(self) -> npt.NDArray[np.float64]:
-        """m/s^2 (a copy)."""
+    def acceleration_m_s2(self) -> npt.NDArray[np.float64]: ...
     @property
     def speed_m_s(self) -> npt.NDArray[np.float32]: ...
     @property
@@ -117,15 +102,11 @@ class RigSession:
     @property
     def tangential_force_N(self) -> npt.NDArray[np.float32]: ...
     @property
-    def frame_times_s(self) -> npt.NDArray[np.float64]:
-        """Speed and force sample k at k / speed_rate_hz, s."""
+    def frame_times_s(self) -> npt.NDArray[np.float64]: ...
 
-def session(folder: _Path) -> RigSession:
-    """Reads a session folder, or a .partial one up to its last block."""
+def session(folder: _Path) -> RigSession: ...
 
 class Comparison:
-    """A capture compared per speed bin with the simulation driven by its measured speed."""
-
     @property
     def tool(self) -> str: ...
     @property
@@ -137,8 +118,7 @@ class Comparison:
     @property
     def session(self) -> RigSession: ...
     @property
-    def bins(self) -> list[dict[str, float]]:
-        """comparison.json's bins: speeds in m/s, lsd_db in dB, NaN where a bin has no rows."""
+    def bins(self) -> list[dict[str, float]]: ...
     @property
     def min_speed_m_s(self) -> npt.NDArray[np.float64]: ...
     @property
@@ -146,8 +126,7 @@ class Comparison:
     @property
     def mean_speed_m_s(self) -> npt.NDArray[np.float64]: ...
     @property
-    def rows(self) -> npt.NDArray[np.uint64]:
-        """Spectrogram rows in each bin."""
+    def rows(self) -> npt.NDArray[np.uint64]: ...
     @property
     def lsd_db(self) -> npt.NDArray[np.float64]: ...
     @property
@@ -175,8 +154,7 @@ class Comparison:
     @property
     def frequencies_hz(self) -> npt.NDArray[np.float64]: ...
     @property
-    def measured_mean(self) -> npt.NDArray[np.float64]:
-        """bins x frequencies, m/s^2."""
+    def measured_mean(self) -> npt.NDArray[np.float64]: ...
     @property
     def simulated_mean(self) -> npt.NDArray[np.float64]: ...
     @property
@@ -184,12 +162,10 @@ class Comparison:
     @property
     def waterfall_speeds_m_s(self) -> npt.NDArray[np.float64]: ...
     @property
-    def measured_db(self) -> npt.NDArray[np.float32]:
-        """rows x frequencies, dB re 1 m/s^2 (a view)."""
+    def measured_db(self) -> npt.NDArray[np.float32]: ...
     @property
     def simulated_db(self) -> npt.NDArray[np.float32]: ...
-    def save(self, path: _Path) -> None:
-        """Writes comparison.json atomically."""
+    def save(self, path: _Path) -> None: ...
 
 def capture(
     rig: Rig,
@@ -199,8 +175,7 @@ def capture(
     seconds: Optional[float] = None,
     notes: str = "",
     progress: _Progress = None,
-) -> RigSession:
-    """Records a session into `folder` as `nibrig rig capture`; Ctrl-C finishes it with what it holds."""
+) -> RigSession: ...
 
 def compare(
     rig: Rig,
@@ -215,5 +190,4 @@ def compare(
     stylus: Optional[_Path] = None,
     forcing: Optional[_Path] = None,
     progress: _Progress = None,
-) -> Comparison:
-    """Captures into `folder` while simulating `tool`, compared per speed bin as `nibrig rig compare`."""
+) -> Comparison: ...

@@ -1,5 +1,3 @@
-"""Perceptual spaces (Sec. 4 of the paper): fit from triplet judgments, predict, place tools."""
-
 import os
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -9,8 +7,6 @@ import numpy.typing as npt
 _Path = Union[str, os.PathLike[str]]
 
 class Judgments:
-    """Triplet judgments read once, for several fits."""
-
     @property
     def stimuli(self) -> list[str]: ...
     @property
@@ -23,44 +19,33 @@ class Judgments:
 def read_judgments(path: _Path) -> Judgments: ...
 
 class Placement:
-    """A tool placed from its descriptors: a Gaussian position in the space."""
-
     @property
-    def mean(self) -> npt.NDArray[np.float64]:
-        """Its position, one value per axis, in the space's units (a read-only view)."""
+    def mean(self) -> npt.NDArray[np.float64]: ...
     @property
-    def covariance(self) -> npt.NDArray[np.float64]:
-        """The position's covariance, axes x axes, in squared units (a read-only view)."""
-    def ellipses(self, levels: Sequence[float] = ...) -> list[Tuple[float, float, float]]:
-        """(semi_axis_1, semi_axis_2, angle in radians from axis 1) of the region in axes 1-2 per level."""
+    def covariance(self) -> npt.NDArray[np.float64]: ...
+    def ellipses(self, levels: Sequence[float] = ...) -> list[Tuple[float, float, float]]: ...
 
 class Space:
-    """A perceptual space fitted from triplet judgments."""
-
     @property
     def stimuli(self) -> list[str]: ...
     @property
     def dims(self) -> int: ...
     @property
-    def coordinates(self) -> npt.NDArray[np.float64]:
-        """dims x stimuli positions in the space's units (a read-only view)."""
+    def coordinates(self) -> npt.NDArray[np.float64]: ...
     @property
-    def model(self) -> str:
-        """'probit', 'logistic' or 'student-t', with '+lapse' and '+noise'."""
+    def model(self) -> str: ...
     @property
     def model_description(self) -> str: ...
     @property
     def model_reason(self) -> str: ...
     @property
-    def scale(self) -> float:
-        """s in P = link(s * (d_b - d_a))."""
+    def scale(self) -> float: ...
     @property
     def lapse(self) -> float: ...
     @property
     def lam(self) -> float: ...
     @property
-    def negative_log_likelihood(self) -> float:
-        """Of the judgments fitted, in nats."""
+    def negative_log_likelihood(self) -> float: ...
     @property
     def responses(self) -> int: ...
     @property
@@ -69,18 +54,14 @@ class Space:
     def has_descriptor_map(self) -> bool: ...
     @property
     def warnings(self) -> list[str]: ...
-    def predict(self, triplets: Sequence[Tuple[str, str, str]]) -> npt.NDArray[np.float64]:
-        """P(first candidate judged closer to the reference) for each (reference, first, second)."""
+    def predict(self, triplets: Sequence[Tuple[str, str, str]]) -> npt.NDArray[np.float64]: ...
     def place(
         self,
         descriptors: Union[Mapping[str, float], Sequence[float]],
         error: Optional[npt.ArrayLike] = None,
-    ) -> Placement:
-        """Places a tool from its descriptors through the space's descriptor map."""
-    def save(self, path: _Path) -> None:
-        """Writes the space file atomically."""
-    def evaluate(self, judgments: Union[_Path, Judgments], catalog: Optional[_Path] = None) -> Evaluation:
-        """Its predictions of judged triplets scored against their answers (`nibrig space evaluate`)."""
+    ) -> Placement: ...
+    def save(self, path: _Path) -> None: ...
+    def evaluate(self, judgments: Union[_Path, Judgments], catalog: Optional[_Path] = None) -> Evaluation: ...
 
 class Evaluation:
     @property
@@ -90,8 +71,7 @@ class Evaluation:
     @property
     def placed_from_descriptors(self) -> int: ...
     @property
-    def majority_agreement(self) -> float:
-        """Share of untied triplets whose majority answer is predicted."""
+    def majority_agreement(self) -> float: ...
     @property
     def majority_trials(self) -> float: ...
     @property
@@ -101,11 +81,9 @@ class Evaluation:
     @property
     def individual_agreement(self) -> float: ...
     @property
-    def mean_absolute_error(self) -> float:
-        """Mean |p_predicted - p_observed| over triplets."""
+    def mean_absolute_error(self) -> float: ...
     @property
-    def log_loss(self) -> float:
-        """Nats per response."""
+    def log_loss(self) -> float: ...
     @property
     def pearson(self) -> Optional[Dict[str, float]]: ...
     @property
@@ -117,8 +95,7 @@ class Validation:
     @property
     def responses(self) -> int: ...
     @property
-    def points(self) -> List[Dict[str, Any]]:
-        """dims, lambda, model, mean_error, sd_error, majority_agreement, individual_agreement, log_loss."""
+    def points(self) -> List[Dict[str, Any]]: ...
     @property
     def rank_correlation_with_names(self) -> Optional[Dict[str, float]]: ...
 
@@ -134,8 +111,7 @@ def validate(
     descriptors: Optional[_Path] = None,
     threads: int = 0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Validation:
-    """k-fold cross-validation per dims x lambda x model (`nibrig space validate`); Ctrl-C stops it."""
+) -> Validation: ...
 
 def fit(
     judgments: Union[_Path, Judgments],
@@ -149,11 +125,8 @@ def fit(
     bootstrap: int = 0,
     threads: int = 0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Space:
-    """Fits a space to triplet judgments as `nibrig space fit` does; Ctrl-C stops it."""
+) -> Space: ...
 
-def load(path: _Path) -> Space:
-    """Reads a space file (`nibrig space fit -o`)."""
+def load(path: _Path) -> Space: ...
 
-def default(*, bootstrap: int = 200, progress: Optional[Callable[[str, int, int], object]] = None) -> Space:
-    """The demo's and the panel's space: a SIMULATED observer's, with a descriptor map; cached."""
+def default(*, bootstrap: int = 200, progress: Optional[Callable[[str, int, int], object]] = None) -> Space: ...

@@ -1,5 +1,3 @@
-"""Triplet studies with people (Sec. 4.2, 6.1): a study folder's answers and its report."""
-
 import os
 import pathlib
 from typing import Any, Callable, Optional, Union
@@ -12,8 +10,6 @@ from .space import Space
 _Path = Union[str, os.PathLike[str]]
 
 class Answers:
-    """A study's answers: every participant's log, practice included (copies)."""
-
     @property
     def folder(self) -> pathlib.Path: ...
     @property
@@ -29,8 +25,7 @@ class Answers:
     @property
     def participants(self) -> list[dict[str, Any]]: ...
     @property
-    def records(self) -> list[dict[str, Any]]:
-        """participant, trial, practice, stage, reference, left, right, chosen, chosen_stimulus, response_s (s), plays, answered_utc."""
+    def records(self) -> list[dict[str, Any]]: ...
     @property
     def participant(self) -> list[str]: ...
     @property
@@ -40,8 +35,7 @@ class Answers:
     @property
     def stage(self) -> npt.NDArray[np.int64]: ...
     @property
-    def reference(self) -> npt.NDArray[np.int64]:
-        """Indices into stimuli."""
+    def reference(self) -> npt.NDArray[np.int64]: ...
     @property
     def left(self) -> npt.NDArray[np.int64]: ...
     @property
@@ -49,15 +43,12 @@ class Answers:
     @property
     def chose_left(self) -> npt.NDArray[np.bool_]: ...
     @property
-    def response_s(self) -> npt.NDArray[np.float64]:
-        """s from each trial's start to its answer."""
+    def response_s(self) -> npt.NDArray[np.float64]: ...
     def __len__(self) -> int: ...
 
 def answers(folder: _Path) -> Answers: ...
 
 class Report:
-    """A study's report, as `nibrig experiment report` gives and writes it."""
-
     @property
     def folder(self) -> pathlib.Path: ...
     @property
@@ -81,8 +72,7 @@ class Report:
     @property
     def mean_region_sd(self) -> Optional[float]: ...
     @property
-    def participants(self) -> list[dict[str, Any]]:
-        """id, respondent, answers, practice, median_response_s, agreement_with_space, agreement_with_others."""
+    def participants(self) -> list[dict[str, Any]]: ...
     @property
     def validation(self) -> Optional[dict[str, Any]]: ...
     @property
@@ -100,5 +90,4 @@ def report(
     seed: int = 1,
     threads: int = 0,
     progress: Optional[Callable[[str, int, int], object]] = None,
-) -> Report:
-    """Reports a study as `nibrig experiment report` does, writing into `output` (default <folder>/report)."""
+) -> Report: ...
