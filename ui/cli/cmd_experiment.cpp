@@ -1,7 +1,7 @@
 // `nibrig experiment run` and `nibrig experiment report`: triplet studies (the paper's Sec. 4.2
 // and 6.1) with a person at the terminal or a simulated participant, on the actuator or the
 // turntable. The study, its order, log, resume and report are model/study; starting a session (the
-// checks, the folder, the sounds, the presenter) is rig/study_start; this file holds options and
+// checks, the folder, the sounds, the presenter) is rig/study/study_start; this file holds options and
 // presentation.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -25,8 +25,8 @@
 #include "playback/live_audition.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/study_rehearsal.hpp"
-#include "rig/study_start.hpp"
+#include "rig/study/study_rehearsal.hpp"
+#include "rig/study/study_start.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/experiment_commands.hpp"
 #include "ui/cli/experiment_terminal.hpp"

@@ -1,7 +1,7 @@
 // The work of `nibrig experiment run|report` (registered in cmd_experiment.cpp): a triplet study
 // with a person at the terminal or a simulated participant, on the actuator or the turntable, and
-// its report. The study itself is model/study; its start and presenters are rig/study_start and
-// rig/*_presenter.
+// its report. The study itself is model/study; its start and presenters are rig/study/study_start and
+// rig/study/*_presenter.
 #pragma once
 
 #include <filesystem>

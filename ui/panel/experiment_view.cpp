@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "imgui.h"
-#include "rig/study_rehearsal.hpp"
+#include "rig/study/study_rehearsal.hpp"
 #include "ui/panel/widgets.hpp"
 
 namespace nibrig::ui::panel {

@@ -9,7 +9,7 @@
 // each one asked for is mounted (the window tells the operator, who confirms) and swept on a worker
 // thread while the window shows that the turntable runs; the UI thread never waits for it.
 // A rehearsal (the form names a space) runs the same session with a simulated participant answering
-// from that space (rig/study_rehearsal), paced as a person would be or faster, nothing played on the
+// from that space (rig/study/study_rehearsal), paced as a person would be or faster, nothing played on the
 // actuator: the experimenter watches every screen and gets the files a person would leave.
 #pragma once
 
@@ -26,7 +26,7 @@
 #include "model/study/simulated_participant.hpp"
 #include "model/study/study_session.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/study_start.hpp"
+#include "rig/study/study_start.hpp"
 #include "ui/panel/background_job.hpp"
 #include "ui/panel/panel_audio.hpp"
 #include "ui/panel/study_plan_preview.hpp"

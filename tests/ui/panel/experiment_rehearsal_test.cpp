@@ -12,7 +12,7 @@
 #include "model/study/response_log.hpp"
 #include "model/study/simulated_participant.hpp"
 #include "model/study/study_results.hpp"
-#include "rig/study_rehearsal.hpp"
+#include "rig/study/study_rehearsal.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/panel/headless_imgui.hpp"
 #include "tests/ui/panel/test_space.hpp"

@@ -1,4 +1,4 @@
-#include "rig/study_rehearsal.hpp"
+#include "rig/study/study_rehearsal.hpp"
 
 #include <fmt/format.h>
 

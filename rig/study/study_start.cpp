@@ -1,9 +1,9 @@
-#include "rig/study_start.hpp"
+#include "rig/study/study_start.hpp"
 
 #include <utility>
 
 #include "model/io/bundled_assets.hpp"
-#include "rig/actuator_presenter.hpp"
+#include "rig/study/actuator_presenter.hpp"
 
 namespace nibrig::rig {
 namespace {

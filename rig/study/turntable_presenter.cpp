@@ -1,4 +1,4 @@
-#include "rig/turntable_presenter.hpp"
+#include "rig/study/turntable_presenter.hpp"
 
 #include <stdexcept>
 

@@ -18,7 +18,7 @@
 #include "model/study/study_session.hpp"
 #include "playback/live_audition.hpp"
 #include "rig/rig_request.hpp"
-#include "rig/turntable_presenter.hpp"
+#include "rig/study/turntable_presenter.hpp"
 
 namespace nibrig::rig {
 

@@ -2,7 +2,7 @@
 // when it changes, and every stimulus asked for runs the study's sweep on the rig (here the
 // simulated rig, simulating the stimulus). A rig that ends a sweep early (unplugged) stops the
 // session with every earlier answer kept.
-#include "rig/turntable_presenter.hpp"
+#include "rig/study/turntable_presenter.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "rig/actuator_presenter.hpp"
+#include "rig/study/actuator_presenter.hpp"
 
 #include <stdexcept>
 

@@ -3,7 +3,7 @@
 // presented, the simulated rig with its operator, the actuator's audition on a real JACK server); a second
 // participant joins the folder with its texts as the experimenter edited them; a changed study is
 // refused.
-#include "rig/study_start.hpp"
+#include "rig/study/study_start.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 #include "model/space/simulated_observer.hpp"
 #include "model/study/study_results.hpp"
-#include "rig/actuator_presenter.hpp"
+#include "rig/study/actuator_presenter.hpp"
 #include "tests/model/study/study_test_support.hpp"
 #include "tests/playback/jack_stream_settings.hpp"
 #include "tests/rig/bundled_sound.hpp"

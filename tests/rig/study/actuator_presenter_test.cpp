@@ -2,7 +2,7 @@
 // reference, A and B in an order of their own, and an independent JACK client hears exactly that
 // order; the study's log records it too. The three stimuli are one tool at three levels 12 dB
 // apart, so that a window's level says which one sounds.
-#include "rig/actuator_presenter.hpp"
+#include "rig/study/actuator_presenter.hpp"
 
 #include <gtest/gtest.h>
 

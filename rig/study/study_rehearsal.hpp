@@ -12,7 +12,7 @@
 
 #include "model/space/simulated_observer.hpp"
 #include "model/study/simulated_participant.hpp"
-#include "rig/study_start.hpp"
+#include "rig/study/study_start.hpp"
 
 namespace nibrig::rig {
 
