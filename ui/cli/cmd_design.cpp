@@ -2,33 +2,31 @@
 // surface (Sec. 6.2, Fig. 17) — along the line between two designs, or over the whole mix × tip
 // range — with the optimum, its distance, the runners-up and the path drawn in the space.
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
-#include <chrono>
-#include <iostream>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <optional>
 
 #include "model/design/design_constraints.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_file.hpp"
+#include "model/design/design_search_request.hpp"
 #include "model/design/printability.hpp"
 #include "model/design/stylus_export.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
 #include "model/space/space_file.hpp"
-#include "model/io/bundled_assets.hpp"
 #include "model/space/space_inputs.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
-#include "ui/cli/elapsed.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 #include "ui/cli/stylus_report.hpp"
 #include "ui/figures/stylus_sheet.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -80,22 +78,103 @@ std::map<std::string, double> parse_costs(const std::string& text) {
   return out;
 }
 
-design::DesignConstraints constraints_of(const DesignOptions& o) {
-  design::DesignConstraints c;
-  if (o.min_tip_mm) c.min_tip_m = *o.min_tip_mm * 1e-3;
-  if (o.max_tip_mm) c.max_tip_m = *o.max_tip_mm * 1e-3;
-  c.materials = o.allow;
-  c.cost = parse_costs(o.cost);
-  c.max_cost = o.max_cost;
-  // The library's checks, named as the options, before the forcing model is loaded.
-  design::check_constraints(c, {"--min-tip-mm", "--max-tip-mm", "--cost", "--max-cost"});
-  return c;
-}
-
 std::string joined(const std::vector<std::string>& names) {
   std::string out;
   for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
   return out;
+}
+
+// The request's fields as this command's options.
+std::string design_option(design::DesignSearchField field) {
+  using Field = design::DesignSearchField;
+  switch (field) {
+    case Field::targets:
+      return "--target";
+    case Field::surface:
+      return "--surface";
+    case Field::space:
+      return "--space";
+    case Field::aim:
+      return "--aim";
+    case Field::between:
+      return "--between";
+    case Field::mix:
+      return "--mix";
+    case Field::min_tip:
+      return "--min-tip-mm";
+    case Field::max_tip:
+      return "--max-tip-mm";
+    case Field::allow:
+      return "--allow";
+    case Field::cost:
+      return "--cost";
+    case Field::max_cost:
+      return "--max-cost";
+    case Field::printer:
+      return "--printer";
+  }
+  return design::field_name(field);
+}
+
+// The options as the library's request; the space file is read and the targets placed when the
+// request asks for them, after the options' own checks.
+struct DesignRequestOptions {
+  const DesignOptions& o;
+  std::filesystem::path catalog_path;
+  std::optional<space::SpaceFile> space_file;
+  std::optional<space::StimulusLocator> locator;
+
+  design::DesignSearchTargets targets() {
+    space_file = space::read_space_file(o.space_file);
+    if (!o.export_folder.empty()) design::check_stylus_outputs(o.export_folder / "stylus.3mf");
+    design::DesignSearchTargets out{space_file->descriptor_map, {}, o.targets};
+    if (!out.descriptor_map)
+      return out;  // refused as --space: placing a catalog tool needs the map
+    locator.emplace(*space_file, o.space_file, catalog_path);
+    for (const auto& name : o.targets) out.placements.push_back(locate(name));
+    return out;
+  }
+
+  // An unknown --target is a usage error that names the option and the choices, as other
+  // options' refusals do; the locator's own reason (which file lacks it) is kept in the message.
+  space::Placement locate(const std::string& name) {
+    try {
+      return locator->locate(name, o.space_file);
+    } catch (const std::exception& e) {  // FormatError from the catalog, invalid_argument here
+      throw CLI::ValidationError("--target", "'" + name + "' cannot be placed: " + e.what() +
+                                                 "; choices: a stimulus judged in the space (" +
+                                                 joined(space_file->stimuli) +
+                                                 ") or a tool/surface pairing of " +
+                                                 catalog_path.string());
+    }
+  }
+};
+
+design::DesignSearchRequest design_request(
+    const DesignOptions& o, DesignRequestOptions& placing,
+    const std::optional<model::io::PrinterProfile>& printer) {
+  design::DesignSearchRequest r;
+  r.targets = [&placing] { return placing.targets(); };
+  r.surface = o.surface;
+  r.aim = design::parse_group_aim(o.aim, design_option);
+  if (o.min_tip_mm) r.constraints.min_tip_m = *o.min_tip_mm * 1e-3;
+  if (o.max_tip_mm) r.constraints.max_tip_m = *o.max_tip_mm * 1e-3;
+  r.constraints.materials = o.allow;
+  r.constraints.cost = parse_costs(o.cost);
+  r.constraints.max_cost = o.max_cost;
+  if (!o.between.empty()) {
+    if (o.between.size() != 2)
+      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
+    r.between.emplace(design::parse_design_point(o.between[0]),
+                      design::parse_design_point(o.between[1]));
+  }
+  const auto comma = o.mix.find(',');
+  if (comma == std::string::npos)
+    throw CLI::ValidationError("--mix", "takes two materials, e.g. vero,DM85");
+  r.first_material = o.mix.substr(0, comma);
+  r.second_material = o.mix.substr(comma + 1);
+  r.printer = printer;
+  return r;
 }
 
 void run_design(const DesignOptions& o) {
@@ -103,105 +182,55 @@ void run_design(const DesignOptions& o) {
   if (!o.printer.empty() && o.export_folder.empty())
     throw CLI::ValidationError("--printer", "is the printer of --export: give --export too");
   const auto printer = printer_option(o.printer);
-  // The options' own checks first, before any file is read: a bad --cost is named as such, not
-  // after a space file's error or a forcing model's fit.
-  const auto constraints = constraints_of(o);
-  std::optional<design::DesignPoint> a, b;
-  if (!o.between.empty()) {
-    if (o.between.size() != 2)
-      throw CLI::ValidationError("--between", "takes two designs, e.g. vero,tip=1mm DM85,tip=4mm");
-    a = design::parse_design_point(o.between[0]);
-    b = design::parse_design_point(o.between[1]);
-    // A line no allowed design lies on is refused now, naming the constraint (and an allowed
-    // material the line does not hold, as "--allow steel"), not after the forcing model is loaded.
-    design::feasible_segment(*a, *b, constraints);
-    if (printer)  // its export would be refused: say so before the search
-      if (const std::string why = design::unprintable_line(*printer, *a, *b); !why.empty())
-        throw CLI::ValidationError("--printer", why);
-  }
-  const auto catalog_path =
-      o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog;
-  const space::SpaceFile space_file = space::read_space_file(o.space_file);
-  if (!o.export_folder.empty()) design::check_stylus_outputs(o.export_folder / "stylus.3mf");
-  if (!space_file.descriptor_map)
-    throw std::invalid_argument(o.space_file.string() +
-                                " has no descriptor map (fit it with --descriptors): designs are "
-                                "placed from their predicted descriptors");
-  model::space::StimulusLocator locator(space_file, o.space_file, catalog_path);
-  // An unknown --target is a usage error that names the option and the choices, as other options'
-  // refusals do; the locator's own reason (which file lacks it) is kept in the message.
-  const auto locate = [&](const std::string& name) {
+  DesignRequestOptions placing{
+      o, o.inputs.catalog.empty() ? model::io::default_catalog() : o.inputs.catalog, {}, {}};
+  // Everything refusable is refused here, named as the options, before the forcing model is loaded.
+  const design::DesignSearch search = [&] {
     try {
-      return locator.locate(name, o.space_file);
-    } catch (const std::exception& e) {  // FormatError from the catalog, invalid_argument here
-      throw CLI::ValidationError(
-          "--target", "'" + name + "' cannot be placed: " + e.what() +
-                          "; choices: a stimulus judged in the space (" + joined(space_file.stimuli) +
-                          ") or a tool/surface pairing of " + catalog_path.string());
+      return design::DesignSearch(design_request(o, placing, printer), design_option);
+    } catch (const design::DesignSearchRefused& e) {
+      throw CLI::ValidationError(e.what());
     }
-  };
-  std::vector<space::Placement> targets;
-  for (const auto& name : o.targets) targets.push_back(locate(name));
-  const bool group = targets.size() > 1;
-  if (o.aim != "largest" && o.aim != "mean")
-    throw CLI::ValidationError("--aim", "'" + o.aim + "' is not largest or mean");
-  const auto aim = o.aim == "mean" ? space::GroupAim::mean : space::GroupAim::largest;
+  }();
+  const auto& space_file = *placing.space_file;
+  auto& locator = *placing.locator;
+  const auto& targets = search.targets().placements;
+  const auto& constraints = search.request().constraints;
+  const auto aim = search.request().aim;
+  const bool group = search.group();
   const std::string target_words =
       group ? fmt::format("{} ({} of {} targets)", joined(o.targets), o.aim == "mean" ? "mean distance" : "largest distance",
                           o.targets.size())
             : o.targets.front();
 
-  design::RangeSearchOptions range;
-  range.constraints = constraints;
-  if (const auto comma = o.mix.find(','); comma != std::string::npos) {
-    range.first_material = o.mix.substr(0, comma);
-    range.second_material = o.mix.substr(comma + 1);
-  } else {
-    throw CLI::ValidationError("--mix", "takes two materials, e.g. vero,DM85");
-  }
-
   if (o.forcing_model.empty() && warnings_shown())  // seconds of silence otherwise, as in predict
     std::cerr << "no --forcing given: the catalog's default forcing model (fitted once, then kept in the user cache)\n";
-  const auto inputs = load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
-  const auto& model = inputs->model;
-  range.min_tip_m = model.tip_log_gain.begin()->first;
-  range.max_tip_m = model.tip_log_gain.rbegin()->first;
+  const auto inputs =
+      load_prediction_inputs(o.inputs, o.forcing_model, std::nullopt, design_progress());
 
-  std::size_t evaluations = 0;
-  const design::Evaluate distance =
-      group ? design::distance_to_targets(inputs->setup, o.surface, *space_file.descriptor_map, targets, aim)
-            : design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, targets.front());
-  const design::Evaluate counted = [&](const design::DesignPoint& p) {
-    auto c = distance(p);
-    spdlog::debug("{}: distance {:.3f}", design::to_string(p), c.distance);
-    ++evaluations;
-    return c;
-  };
-  const auto start = std::chrono::steady_clock::now();
-  design::LineSearchOptions line;
-  line.constraints = constraints;
-  const auto last_of_scan = static_cast<std::size_t>(line.scan_points - 1);
   std::optional<Progress> bar;  // made with the first candidate, when the search's total is known
   const design::SearchProgress progress = [&](const design::Candidate& c, std::size_t,
                                               std::size_t total) {
     if (!bar) bar.emplace("predicting designs", total);
     bar->advance(design::to_string(c.point));
   };
-  const design::SearchResult result = a ? design::line_search(*a, *b, counted, line, progress)
-                                        : design::range_search(counted, range, progress);
+  const auto searched = [&] {
+    try {
+      return search.run(*inputs, {}, progress);
+    } catch (const design::DesignSearchRefused& e) {  // a surface the forcing model lacks
+      throw CLI::ValidationError(e.what());
+    }
+  }();
   bar.reset();  // ends the bar's line before the results, also when it stopped short of its total
-  const double seconds = seconds_since(start);
+  const auto& result = searched.result;
 
-  const std::string how =
-      a ? fmt::format("along the line {} -> {}", o.between[0], o.between[1])
-        : fmt::format("over {} to {} x tips {:g}-{:g} mm", range.first_material,
-                      range.second_material, range.min_tip_m * 1e3, range.max_tip_m * 1e3);
   std::string placed_words;
   for (const auto& name : o.targets)
     placed_words += fmt::format("{}{} ({})", placed_words.empty() ? "" : ", ", name,
                                 locator.placed(name) ? "placed from its descriptors" : "judged");
-  std::cout << fmt::format("{} {}; designs on {} {}: {} predicted in {:.1f} s\n", group ? "targets" : "target",
-                           placed_words, o.surface, how, evaluations, seconds);
+  std::cout << fmt::format("{} {}; designs on {} {}: {} predicted in {:.1f} s\n",
+                           group ? "targets" : "target", placed_words, o.surface, searched.how,
+                           searched.evaluations, searched.seconds);
   if (constraints.any()) std::cout << "within " << design::describe(constraints) << "\n";
   const auto& best = result.best();
   std::cout << fmt::format("optimum {}: {}distance {:.3f} ± {:.3f}, mu {:.3f}, weighted mean vibration {:.4g}{}\n",
@@ -220,37 +249,43 @@ void run_design(const DesignOptions& o) {
                              design::label(c.point), c.distance, c.distance_sd);
   }
   // The scan's ends: the two designs, or the ends of the segment the constraints allow of the line.
-  const bool scanned = a && result.evaluated.size() > last_of_scan;
-  if (scanned) {
-    const auto& first = result.evaluated.front();
-    const auto& last = result.evaluated[last_of_scan];
+  if (!searched.line_ends.empty()) {
+    const auto& first = result.evaluated[searched.line_ends.front()];
+    const auto& last = result.evaluated[searched.line_ends.back()];
     std::cout << fmt::format("  {}: {} {:.3f}, {} {:.3f}\n",
                              constraints.any() ? "the ends of the line allowed" : "the two designs themselves",
                              design::label(first.point), first.distance, design::label(last.point), last.distance);
   }
 
   ensure_folder(o.output.parent_path());
-  design::DesignSearchDescription description{target_words, o.surface, how, seconds,
-                                               static_cast<std::size_t>(o.runners_up), o.space_file.string(),
-                                               {}, {}, constraints};
+  design::DesignSearchDescription description{target_words,
+                                              o.surface,
+                                              searched.how,
+                                              searched.seconds,
+                                              static_cast<std::size_t>(o.runners_up),
+                                              o.space_file.string(),
+                                              {},
+                                              {},
+                                              constraints};
   if (group) description.targets = o.targets, description.aim = o.aim;
   design::write_design_search(o.output, result, description);
   say_wrote(o.output);
   if (!o.plot.empty()) {
     ensure_folder(o.plot.parent_path());
-    std::vector<std::size_t> ends;
-    if (scanned) ends = {0, last_of_scan};
     std::vector<figures::PlacedTool> placed_targets;
     for (std::size_t t = 0; t < targets.size(); ++t)
       if (locator.placed(o.targets[t])) placed_targets.push_back({o.targets[t], targets[t], "target", true});
-    write_search_plot(space_file, target_words, placed_targets, result, ends, o.surface, o.plot);
+    write_search_plot(space_file, target_words, placed_targets, result, searched.line_ends,
+                      o.surface, o.plot);
     say_wrote(o.plot);
   }
   if (!o.export_folder.empty()) {
     auto print = design::stylus_print(inputs->setup, best.point);
     // A printer that cannot mix prints one material: each alone at the optimum's tip, placed.
     print.substitutes = design::single_material_substitutes(
-        best.point, design::distance_to_target(inputs->setup, o.surface, *space_file.descriptor_map, best.placement),
+        best.point,
+        design::distance_to_target(inputs->setup, o.surface, search.descriptor_map(),
+                                   best.placement),
         targets, aim);
     for (auto& s : print.substitutes) {
       s.outside_constraints = design::broken_constraint(s.point, constraints);

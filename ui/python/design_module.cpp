@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "model/design/design_search.hpp"
+#include "model/design/design_search_request.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/numeric/cancellation.hpp"
 #include "ui/python/design_types.hpp"
@@ -83,17 +84,9 @@ model::space::Placement target_of(const Space& s, const py::handle& target, std:
   return target.cast<const Placement&>().placement;
 }
 
-design::DesignConstraints constraints_of(const std::optional<double>& min_tip_mm, const std::optional<double>& max_tip_mm,
-                                         const std::vector<std::string>& allow, const std::map<std::string, double>& cost,
-                                         const std::optional<double>& max_cost) {
-  design::DesignConstraints c;
-  if (min_tip_mm) c.min_tip_m = *min_tip_mm * 1e-3;
-  if (max_tip_mm) c.max_tip_m = *max_tip_mm * 1e-3;
-  c.materials = allow;
-  c.cost = cost;
-  c.max_cost = max_cost;
-  design::check_constraints(c);  // the library's ranges, named as these arguments, before any work
-  return c;
+// The request's fields as this call's arguments.
+std::string search_argument(design::DesignSearchField field) {
+  return field == design::DesignSearchField::mix ? "mix_a, mix_b" : design::field_name(field);
 }
 
 Search search_designs(const Designer& d, const Space& s, const py::object& targets, const std::string& surface,
@@ -102,48 +95,41 @@ Search search_designs(const Designer& d, const Space& s, const py::object& targe
               const std::vector<std::string>& allow, const std::map<std::string, double>& cost,
               const std::optional<double>& max_cost, const std::string& mix_a, const std::string& mix_b,
               const py::object& progress) {
-  if (!s.file.descriptor_map) throw std::invalid_argument("the space has no descriptor map: designs are placed from their descriptors");
-  if (aim != "largest" && aim != "mean") throw std::invalid_argument("aim is '" + aim + "'; expected largest or mean");
+  design::DesignSearchRequest request;
+  request.targets = [&] {
+    design::DesignSearchTargets out{s.file.descriptor_map, {}, {}};
+    const py::list listed =
+        py::isinstance<py::str>(targets) || !py::isinstance<py::sequence>(targets)
+            ? py::list(py::make_tuple(targets))
+            : py::list(targets);
+    for (const auto& t : listed) {
+      std::string name;
+      out.placements.push_back(target_of(s, t, name));
+      out.names.push_back(name);
+    }
+    return out;
+  };
+  request.surface = surface;
+  request.aim = design::parse_group_aim(aim, search_argument);
+  if (min_tip_mm) request.constraints.min_tip_m = *min_tip_mm * 1e-3;
+  if (max_tip_mm) request.constraints.max_tip_m = *max_tip_mm * 1e-3;
+  request.constraints.materials = allow;
+  request.constraints.cost = cost;
+  request.constraints.max_cost = max_cost;
+  if (between)
+    request.between.emplace(design::parse_design_point(between->first),
+                            design::parse_design_point(between->second));
+  request.first_material = mix_a, request.second_material = mix_b;
+  // Refused as a ValueError naming the argument, before any prediction.
+  const design::DesignSearch search(std::move(request), search_argument);
   Search out;
-  std::vector<model::space::Placement> placements;
-  const py::list listed = py::isinstance<py::str>(targets) || !py::isinstance<py::sequence>(targets)
-                              ? py::list(py::make_tuple(targets))
-                              : py::list(targets);
-  for (const auto& t : listed) {
-    std::string name;
-    placements.push_back(target_of(s, t, name));
-    out.targets.push_back(name);
-  }
-  if (placements.empty()) throw std::invalid_argument("no targets");
-  const auto constraints = constraints_of(min_tip_mm, max_tip_mm, allow, cost, max_cost);
-  const auto& map = *s.file.descriptor_map;
+  out.targets = search.targets().names;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        const auto evaluate =
-            placements.size() == 1
-                ? design::distance_to_target(d.inputs->setup, surface, map, placements.front())
-                : design::distance_to_targets(d.inputs->setup, surface, map, placements,
-                                              aim == "mean" ? model::space::GroupAim::mean : model::space::GroupAim::largest);
-        const design::Evaluate stoppable = [&](const design::DesignPoint& p) {
-          model::numeric::throw_if_cancelled(stop, "design search");
-          return evaluate(p);
-        };
         const design::SearchProgress counted = [&](const design::Candidate&, std::size_t done, std::size_t total) {
           report("predicting designs", done, total);
         };
-        if (between) {
-          design::LineSearchOptions line;
-          line.constraints = constraints;
-          out.result = design::line_search(design::parse_design_point(between->first),
-                                           design::parse_design_point(between->second), stoppable, line, counted);
-        } else {
-          design::RangeSearchOptions range;
-          range.first_material = mix_a, range.second_material = mix_b;
-          range.min_tip_m = d.inputs->model.tip_log_gain.begin()->first;
-          range.max_tip_m = d.inputs->model.tip_log_gain.rbegin()->first;
-          range.constraints = constraints;
-          out.result = design::range_search(stoppable, range, counted);
-        }
+        out.result = search.run(*d.inputs, stop, counted).result;
       },
       progress);
   return out;

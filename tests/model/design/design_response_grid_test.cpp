@@ -15,6 +15,7 @@
 #include "model/io/format_error.hpp"
 #include "model/numeric/cancellation.hpp"
 #include "tests/model/design/hand_made_forcing_model.hpp"
+#include "tests/model/design/synthetic_design_grid.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace nibrig::model::design {
@@ -22,37 +23,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Bilinear in (λ, tip in mm): interpolation inside a cell reproduces these exactly.
-double bilinear(double a, double b, double c, double d, double fraction, double tip_m) {
-  const double t = tip_m * 1e3;
-  return a + b * fraction + c * t + d * fraction * t;
-}
-
-DesignResponseGrid synthetic_grid() {
-  DesignResponseGrid grid;
-  grid.axes = {"vero", "DM85", {0.0, 0.5, 1.0}, {0.001, 0.002, 0.004}};
-  grid.frequencies_hz = hand_made_model().frequencies_hz;
-  grid.mesh_size_m = 0.003;
-  grid.modes = 3;
-  for (double fraction : grid.axes.fractions)
-    for (double tip : grid.axes.tips_m) {
-      SimulatedResponse node;
-      node.design_name = "node " + to_string(grid_point(grid.axes, fraction, tip));
-      for (std::size_t j = 0; j < grid.frequencies_hz.size(); ++j)
-        node.response_magnitude.push_back(
-            std::exp(bilinear(0.1 * j, -0.3, 0.2, 0.05 * j, fraction, tip)));
-      for (int k = 0; k < grid.modes; ++k) {
-        node.modal.omega.push_back(std::exp(bilinear(5.0 + k, -0.1, 0.02, 0.01, fraction, tip)));
-        node.modal.zeta.push_back(bilinear(0.01, 0.02, 0.001, 0.0, fraction, tip));
-        node.modal.input.push_back(1.0);
-        // Mode 1's gain changes sign across λ: a jump between nodes, counted.
-        node.modal.output.push_back(k == 1 ? bilinear(-0.5, 1.5, 0.0, 0.0, fraction, tip)
-                                           : bilinear(1.0 + k, 0.5, 0.1, 0.0, fraction, tip));
-      }
-      grid.nodes.push_back(node);
-    }
-  return grid;
-}
+using grid_testing::bilinear;
+using grid_testing::hand_made_inputs;
+using grid_testing::synthetic_grid;
 
 TEST(DesignResponseGrid, InterpolationIsExactForResponsesBilinearInMixAndTip) {
   const DesignResponseGrid grid = synthetic_grid();
@@ -159,15 +132,6 @@ TEST(DesignGridFile, ATruncatedOrInconsistentFileIsRefusedNamingTheFile) {
     EXPECT_THAT(e.what(), HasSubstr("short.json"));
     EXPECT_THAT(e.what(), HasSubstr("node 4"));
   }
-}
-
-// The prediction inputs a cache key is made from, with a hand-made model: no FEM, no fit.
-std::unique_ptr<PredictionInputs> hand_made_inputs() {
-  forcing::ForcingInputOptions options;
-  options.catalog = nibrig::test::assets_dir() / "default_catalog.json";
-  options.mesh_size = 0.004;
-  options.modes = 8;
-  return load_prediction_inputs(options, "", hand_made_model());
 }
 
 TEST(DesignGridCache, EveryInputTheGridDependsOnMovesTheKey) {

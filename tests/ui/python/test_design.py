@@ -65,6 +65,14 @@ def test_bad_designs_and_searches_are_value_errors(designer):
         designer.search(space, space.stimuli[0], "protector", max_cost=2.0)
 
 
+def test_a_smallest_tip_above_the_largest_is_refused_naming_it(designer):
+    # The command line's --min-tip-mm above --max-tip-mm, refused by the same library request,
+    # before any prediction.
+    space = nibrig.space.default(bootstrap=20)
+    with pytest.raises(ValueError, match=r"^min_tip_mm: 3 mm is above max_tip_mm, 2 mm"):
+        designer.search(space, space.stimuli[0], "protector", min_tip_mm=3.0, max_tip_mm=2.0)
+
+
 def test_a_designs_modes_give_its_response_in_closed_form(designer):
     modes = designer.modes("DM85:0.5,vero:0.5,tip=2mm")
     f = np.array(modes.frequencies_hz)
