@@ -45,7 +45,7 @@ struct Reader {
   }
 };
 
-json sweep_json(const SweepSettings& s) {
+json sweep_json(const SineSweepSettings& s) {
   return {{"sample_rate_hz", s.sample_rate_hz},
           {"start_hz", s.start_hz},
           {"end_hz", s.end_hz},
@@ -56,9 +56,9 @@ json sweep_json(const SweepSettings& s) {
           {"repetitions", s.repetitions}};
 }
 
-SweepSettings read_sweep(const Reader& r, const json& root) {
+SineSweepSettings read_sweep(const Reader& r, const json& root) {
   const json& j = r.member(root, "sweep", "");
-  SweepSettings s;
+  SineSweepSettings s;
   s.sample_rate_hz = r.number(j, "sample_rate_hz", "sweep");
   s.start_hz = r.number(j, "start_hz", "sweep");
   s.end_hz = r.number(j, "end_hz", "sweep");

@@ -8,14 +8,14 @@
 
 #include "playback/inverse_filter.hpp"
 #include "playback/measured_response.hpp"
-#include "playback/sweep.hpp"
+#include "playback/sine_sweep.hpp"
 
 namespace nibrig::playback {
 
 struct ActuatorCalibration {
   std::string name;
   std::string created;  // ISO 8601, e.g. "2025-01-31T14:05:00Z"; kept as given
-  SweepSettings sweep;
+  SineSweepSettings sweep;
   double delay_s = 0.0;
   // m/s² at the accelerometer per unit output, its delay taken out (phase relative to the onset).
   FrequencyResponse response;

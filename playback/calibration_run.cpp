@@ -53,10 +53,10 @@ ActuatorCalibration run_calibration(const CalibrationRunSettings& settings) {
     throw std::invalid_argument("calibration needs the accelerometer's input channel");
   if (!(settings.accelerometer_m_s2_per_unit > 0))
     throw std::invalid_argument("the accelerometer's scale must be positive");
-  SweepSettings sweep = settings.sweep;
+  SineSweepSettings sweep = settings.sweep;
   sweep.sample_rate_hz = settings.device.sample_rate;
   validate(sweep);
-  const std::vector<double> signal = exponential_sweep(sweep);
+  const std::vector<double> signal = exponential_sine_sweep(sweep);
   const auto lead = static_cast<std::size_t>(
       std::lround(sweep.sample_rate_hz * std::chrono::duration<double>(settings.lead_in).count()));
   std::vector<double> played(lead, 0.0);

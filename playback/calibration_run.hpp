@@ -17,7 +17,7 @@ struct CalibrationRunSettings {
   // The accelerometer input's scale: m/s² per unit of input level (from its datasheet and the
   // interface's input gain).
   double accelerometer_m_s2_per_unit = 1.0;
-  SweepSettings sweep;  // its sample rate is replaced by the device's
+  SineSweepSettings sweep;       // its sample rate is replaced by the device's
   InverseFilterSettings design;  // rate and taps are set from the engine's internal rate
   // Silence before the sweep: the stream settles (and a JACK graph can be wired) first.
   std::chrono::milliseconds lead_in{500};

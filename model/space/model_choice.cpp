@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "model/space/dimension_sweep.hpp"
+#include "model/space/dimension_scan.hpp"
 
 namespace nibrig::model::space {
 
@@ -12,22 +12,22 @@ ModelChoice choose_model(const SpaceProblem& problem, const ModelChoiceOptions& 
                          const numeric::Progress& progress) {
   if (options.candidates.empty())
     throw std::invalid_argument("a choice of model needs at least one candidate");
-  SweepOptions sweep;
-  sweep.dims = {problem.dims};
-  sweep.lambdas = {problem.lambda};
-  sweep.models = {kPaperModel};
+  DimensionScanOptions scan;
+  scan.dims = {problem.dims};
+  scan.lambdas = {problem.lambda};
+  scan.models = {kPaperModel};
   for (const ModelFamily& f : options.candidates)
-    if (std::find(sweep.models.begin(), sweep.models.end(), f) == sweep.models.end())
-      sweep.models.push_back(f);
-  sweep.cross_validation = options.cross_validation;
+    if (std::find(scan.models.begin(), scan.models.end(), f) == scan.models.end())
+      scan.models.push_back(f);
+  scan.cross_validation = options.cross_validation;
   const Eigen::MatrixXd descriptors = problem.descriptors;
-  const std::vector<SweepPoint> points = sweep_dimensions(
-      problem, [&descriptors](std::size_t) { return descriptors; }, sweep, progress);
+  const std::vector<DimensionScanPoint> points = scan_dimensions(
+      problem, [&descriptors](std::size_t) { return descriptors; }, scan, progress);
 
   ModelChoice choice;
   std::size_t best = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const SweepPoint& p = points[i];
+    const DimensionScanPoint& p = points[i];
     choice.scores.push_back({family_name(p.model), p.log_loss, p.majority_agreement,
                              p.individual_agreement, p.mean_error});
     // Strictly lower: on a tie the earlier candidate (the paper's first) stays.

@@ -92,24 +92,24 @@ SimulatedStudy run_simulated_study(const io::Catalog& catalog,
   return study;
 }
 
-std::vector<SweepPoint> sweep_simulated_study(const SimulatedStudy& study,
-                                              const io::Catalog& catalog,
-                                              const std::filesystem::path& catalog_file,
-                                              const SimulatedStudyOptions& o) {
-  SweepOptions sweep;
-  sweep.dims = {1, 2, 3};
-  sweep.lambdas = {0.0, o.lambda};
-  sweep.cross_validation.fit.starts = 4;
-  sweep.cross_validation.fit.threads = o.threads;
-  sweep.cross_validation.fit.stop = o.stop;
-  const std::size_t folds = sweep.dims.size() * sweep.lambdas.size() *
-                            static_cast<std::size_t>(sweep.cross_validation.folds);
-  return sweep_dimensions(
+std::vector<DimensionScanPoint> scan_simulated_study(const SimulatedStudy& study,
+                                                     const io::Catalog& catalog,
+                                                     const std::filesystem::path& catalog_file,
+                                                     const SimulatedStudyOptions& o) {
+  DimensionScanOptions scan;
+  scan.dims = {1, 2, 3};
+  scan.lambdas = {0.0, o.lambda};
+  scan.cross_validation.fit.starts = 4;
+  scan.cross_validation.fit.threads = o.threads;
+  scan.cross_validation.fit.stop = o.stop;
+  const std::size_t folds = scan.dims.size() * scan.lambdas.size() *
+                            static_cast<std::size_t>(scan.cross_validation.folds);
+  return scan_dimensions(
       study.problem,
       [&](std::size_t d) {
         return descriptors_for_stimuli(catalog, catalog_file, o.stimuli, d).values;
       },
-      sweep, numeric::step_progress(o.progress, "cross-validation folds", folds));
+      scan, numeric::step_progress(o.progress, "cross-validation folds", folds));
 }
 
 }  // namespace nibrig::model::space

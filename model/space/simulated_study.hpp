@@ -16,7 +16,7 @@
 #include "model/numeric/progress_counter.hpp"
 #include "model/space/bootstrap.hpp"
 #include "model/space/catalog_descriptors.hpp"
-#include "model/space/dimension_sweep.hpp"
+#include "model/space/dimension_scan.hpp"
 #include "model/space/fit.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/trial_plan.hpp"
@@ -82,9 +82,9 @@ SimulatedStudy run_simulated_study(const io::Catalog& catalog,
 // study's λ (4 starts per fold), the axes tied to the paper's descriptors of each dimensionality.
 // A separate call: the space does not depend on it and it takes as long as the study. Reports the
 // step "cross-validation folds" and honours the stop token of `options`.
-std::vector<SweepPoint> sweep_simulated_study(const SimulatedStudy& study,
-                                              const io::Catalog& catalog,
-                                              const std::filesystem::path& catalog_file,
-                                              const SimulatedStudyOptions& options = {});
+std::vector<DimensionScanPoint> scan_simulated_study(const SimulatedStudy& study,
+                                                     const io::Catalog& catalog,
+                                                     const std::filesystem::path& catalog_file,
+                                                     const SimulatedStudyOptions& options = {});
 
 }  // namespace nibrig::model::space

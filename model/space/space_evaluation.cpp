@@ -41,12 +41,14 @@ SpaceEvaluation evaluate_space(const SpaceFile& space, const std::filesystem::pa
   return out;
 }
 
-Validation validate_space_file(const std::filesystem::path& judgments, const std::filesystem::path& descriptors,
-                               const SweepOptions& sweep, const numeric::Progress& progress) {
-  if (sweep.dims.empty() || sweep.lambdas.empty() || sweep.models.empty())
+Validation validate_space_file(const std::filesystem::path& judgments,
+                               const std::filesystem::path& descriptors,
+                               const DimensionScanOptions& scan,
+                               const numeric::Progress& progress) {
+  if (scan.dims.empty() || scan.lambdas.empty() || scan.models.empty())
     throw std::invalid_argument("a validation needs at least one number of dimensions, weight and model");
-  const double max_lambda = *std::max_element(sweep.lambdas.begin(), sweep.lambdas.end());
-  const std::size_t max_dims = *std::max_element(sweep.dims.begin(), sweep.dims.end());
+  const double max_lambda = *std::max_element(scan.lambdas.begin(), scan.lambdas.end());
+  const std::size_t max_dims = *std::max_element(scan.dims.begin(), scan.dims.end());
   if (max_lambda > 0 && descriptors.empty())
     throw std::invalid_argument("weights (lambdas) above 0 need a catalog of descriptors");
   const SpaceInputs in = read_space_inputs(judgments, {}, max_dims, 0.0);
@@ -60,12 +62,12 @@ Validation validate_space_file(const std::filesystem::path& judgments, const std
   Validation out;
   out.triplets = in.problem.triplets.size();
   out.responses = io::response_count(in.judgments);
-  out.points = sweep_dimensions(in.problem, descriptor_table, sweep, progress);
+  out.points = scan_dimensions(in.problem, descriptor_table, scan, progress);
   const auto numbers = numbers_in_names(in.judgments.stimuli);
-  if (numbers && std::find(sweep.dims.begin(), sweep.dims.end(), 1u) != sweep.dims.end()) {
+  if (numbers && std::find(scan.dims.begin(), scan.dims.end(), 1u) != scan.dims.end()) {
     SpaceProblem one = in.problem;
     one.dims = 1;
-    const Eigen::MatrixXd q = fit_space(one, sweep.cross_validation.fit).coordinates;
+    const Eigen::MatrixXd q = fit_space(one, scan.cross_validation.fit).coordinates;
     out.rank_correlation_with_names = spearman({q.data(), q.data() + q.size()}, *numbers);
   }
   return out;

@@ -10,7 +10,7 @@
 
 #include "model/io/triplets.hpp"
 #include "model/numeric/progress_counter.hpp"
-#include "model/space/dimension_sweep.hpp"
+#include "model/space/dimension_scan.hpp"
 #include "model/space/prediction_scores.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/statistics.hpp"
@@ -30,16 +30,18 @@ SpaceEvaluation evaluate_space(const SpaceFile& space, const std::filesystem::pa
 
 struct Validation {
   std::size_t triplets = 0, responses = 0;
-  std::vector<SweepPoint> points;  // one per dims × lambda × model, in that order
+  std::vector<DimensionScanPoint> points;  // one per dims × lambda × model, in that order
   // When every stimulus name ends in a number (Salmon's items are positions on a 1-D continuum) and
   // 1 dimension was asked: the rank correlation of a 1-D fit of all judgments with those numbers.
   std::optional<Correlation> rank_correlation_with_names;
 };
 
-// `sweep` says the dimensions, weights, models, folds, starts, seed and threads; `descriptors` is
+// `scan` says the dimensions, weights, models, folds, starts, seed and threads; `descriptors` is
 // the catalog the axes are tied to, needed for a weight above 0 (std::invalid_argument otherwise).
-// The fits honour sweep.cross_validation.fit.stop.
-Validation validate_space_file(const std::filesystem::path& judgments, const std::filesystem::path& descriptors,
-                               const SweepOptions& sweep, const numeric::Progress& progress = {});
+// The fits honour scan.cross_validation.fit.stop.
+Validation validate_space_file(const std::filesystem::path& judgments,
+                               const std::filesystem::path& descriptors,
+                               const DimensionScanOptions& scan,
+                               const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

@@ -10,10 +10,10 @@
 #include <unsupported/Eigen/Polynomials>
 #include <vector>
 
-#include "playback/inverse_filter.hpp"
-#include "playback/sweep.hpp"
-#include "tests/playback/calibration_chain.hpp"
 #include "model/measure/order_statistics.hpp"
+#include "playback/inverse_filter.hpp"
+#include "playback/sine_sweep.hpp"
+#include "tests/playback/calibration_chain.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -192,8 +192,8 @@ TEST(CalibrationInverseFilter, FlattensTheChainAsMeasuredBySweep) {
   // End to end: the sweep's estimate at 48 kHz (noise −60 dB, mild distortion, 173 samples of
   // delay) designs the 4 kHz filter; the closed form judges it.
   const testing::ChainModel chain;
-  SweepSettings sweep;
-  const std::vector<double> played = exponential_sweep(sweep);
+  SineSweepSettings sweep;
+  const std::vector<double> played = exponential_sine_sweep(sweep);
   const std::vector<double> recorded =
       testing::simulate(chain, played, sweep.sample_rate_hz, 173, 0.02 / 0.09, 1e-4, 11);
   const ResponseEstimate estimate = estimate_response(sweep, played, recorded);

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "playback/sweep.hpp"
-#include "tests/playback/calibration_chain.hpp"
 #include "model/measure/order_statistics.hpp"
+#include "playback/sine_sweep.hpp"
+#include "tests/playback/calibration_chain.hpp"
 
 namespace nibrig::playback {
 namespace {
@@ -26,11 +26,11 @@ using model::measure::median;
 double wrap(double phase) { return std::remainder(phase, 2.0 * std::numbers::pi); }
 
 TEST(CalibrationSweep, RisesExponentiallyBetweenItsFadesAndEndsInSilence) {
-  SweepSettings s;
+  SineSweepSettings s;
   s.duration_s = 2.0;
   s.silence_s = 0.5;
   s.repetitions = 2;
-  const std::vector<double> x = exponential_sweep(s);
+  const std::vector<double> x = exponential_sine_sweep(s);
   ASSERT_EQ(x.size(), 2u * 120000u);
   const double L = s.duration_s / std::log(s.end_hz / s.start_hz);
   // The phase is 2π·f1·L·(e^(t/L) − 1): at every upward zero crossing (found by linear
@@ -63,15 +63,15 @@ TEST(CalibrationSweep, RisesExponentiallyBetweenItsFadesAndEndsInSilence) {
 }
 
 TEST(CalibrationSweep, RejectsSettingsItCannotPlay) {
-  SweepSettings s;
+  SineSweepSettings s;
   s.end_hz = 24000.0;
-  EXPECT_THROW(exponential_sweep(s), std::invalid_argument);
+  EXPECT_THROW(exponential_sine_sweep(s), std::invalid_argument);
   s = {};
   s.level = 1.5;
-  EXPECT_THROW(exponential_sweep(s), std::invalid_argument);
+  EXPECT_THROW(exponential_sine_sweep(s), std::invalid_argument);
   s = {};
   s.fade_s = 3.0;
-  EXPECT_THROW(exponential_sweep(s), std::invalid_argument);
+  EXPECT_THROW(exponential_sine_sweep(s), std::invalid_argument);
 }
 
 struct MeasuredSweep {
@@ -80,8 +80,8 @@ struct MeasuredSweep {
 };
 
 MeasuredSweep measure(double noise_db, double cubic_level, std::size_t delay) {
-  SweepSettings s;  // 10 Hz - 20 kHz over 4 s, 1 s silence, 2 repetitions, level 0.3
-  const std::vector<double> played = exponential_sweep(s);
+  SineSweepSettings s;  // 10 Hz - 20 kHz over 4 s, 1 s silence, 2 repetitions, level 0.3
+  const std::vector<double> played = exponential_sine_sweep(s);
   testing::ChainModel chain;
   const std::vector<double> clean = testing::simulate(chain, played, s.sample_rate_hz, 0, 0, 0, 1);
   const double noise_rms = rms(clean) * std::pow(10.0, noise_db / 20.0);
@@ -127,9 +127,9 @@ TEST(CalibrationSweep, RecoversAResonantChainWithDelayNoiseAndDistortion) {
 
 TEST(CalibrationSweep, FindsALoopbacksDelayAndAFlatResponse) {
   // An electrical loopback: a pure delay of a few 64-sample periods (10 ms), unit gain.
-  SweepSettings s;
+  SineSweepSettings s;
   s.repetitions = 1;
-  const std::vector<double> played = exponential_sweep(s);
+  const std::vector<double> played = exponential_sine_sweep(s);
   std::vector<double> recorded(played.size(), 0.0);
   const std::size_t delay = 480;
   std::copy(played.begin(), played.end() - delay, recorded.begin() + delay);
@@ -163,9 +163,9 @@ TEST(CalibrationSweep, ItsSnrFallsWithTheNoise) {
 }
 
 TEST(CalibrationSweep, RejectsMismatchedBuffers) {
-  SweepSettings s;
+  SineSweepSettings s;
   s.repetitions = 1;
-  const std::vector<double> played = exponential_sweep(s);
+  const std::vector<double> played = exponential_sine_sweep(s);
   std::vector<double> short_recording(played.size() - 1, 0.0);
   EXPECT_THROW(estimate_response(s, played, short_recording), std::invalid_argument);
   EXPECT_THROW(estimate_response(s, std::vector<double>(10, 0.0), played), std::invalid_argument);

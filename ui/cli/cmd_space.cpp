@@ -101,7 +101,7 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
       ->check(whole_in_range(1, model::space::kMostFitStarts, "a number of starts"));
   v->add_option("--seed", o->seed, "Seed of folds and starts (default 1)")->check(any_seed());
   v->add_option("-o,--output", o->output, "Write the results as JSON")->check(file_to_write());
-  v->add_option("--plots", o->plots, "Folder for the sweep plot (dimension_sweep.png)");
+  v->add_option("--plots", o->plots, "Folder for the scan plot (dimension_scan.png)");
   v->callback([o, global] {
     configure_logging(global->verbosity);
     run_space_validate(*o, worker_threads(*global));

@@ -23,27 +23,27 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   // An option missing is a usage error, found before the judgments are read.
   if (max_lambda > 0 && o.descriptors.empty())
     throw CLI::ValidationError("--lambdas", "above 0 need --descriptors catalog.json");
-  space::SweepOptions sweep;
-  sweep.dims = o.dims;
-  sweep.lambdas = o.lambdas;
-  sweep.models.clear();
+  space::DimensionScanOptions scan;
+  scan.dims = o.dims;
+  scan.lambdas = o.lambdas;
+  scan.models.clear();
   for (const auto& name : o.models) {
     if (name == "all") {
-      sweep.models = space::every_family();
+      scan.models = space::every_family();
       break;
     }
-    sweep.models.push_back(space::parse_family(name));
+    scan.models.push_back(space::parse_family(name));
   }
-  sweep.cross_validation.folds = o.folds;
-  sweep.cross_validation.seed = o.seed;
-  sweep.cross_validation.fit.starts = o.starts;
-  sweep.cross_validation.fit.seed = o.seed;
-  sweep.cross_validation.fit.threads = threads;
+  scan.cross_validation.folds = o.folds;
+  scan.cross_validation.seed = o.seed;
+  scan.cross_validation.fit.starts = o.starts;
+  scan.cross_validation.fit.seed = o.seed;
+  scan.cross_validation.fit.threads = threads;
   spdlog::info("{}: {}-fold cross-validation of {} spaces", o.judgments.string(), o.folds,
-               o.dims.size() * o.lambdas.size() * sweep.models.size());
+               o.dims.size() * o.lambdas.size() * scan.models.size());
   const space::Validation validation =
-      space::validate_space_file(o.judgments, o.descriptors, sweep, progress_bar("fitting folds"));
-  const std::vector<space::SweepPoint>& points = validation.points;
+      space::validate_space_file(o.judgments, o.descriptors, scan, progress_bar("fitting folds"));
+  const std::vector<space::DimensionScanPoint>& points = validation.points;
 
   nlohmann::json json = {{"judgments", o.judgments.string()},
                          {"folds", o.folds},
@@ -87,9 +87,9 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   }
   if (!o.plots.empty()) {
     ensure_folder(o.plots);
-    write_sweep_plot(points, "Cross-validated error of " + o.judgments.filename().string(),
-                     o.plots / "dimension_sweep.png");
-    say_wrote(o.plots / "dimension_sweep.png");
+    write_dimension_scan_plot(points, "Cross-validated error of " + o.judgments.filename().string(),
+                              o.plots / "dimension_scan.png");
+    say_wrote(o.plots / "dimension_scan.png");
   }
 }
 

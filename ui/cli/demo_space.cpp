@@ -43,8 +43,9 @@ DemoSection run_space_demo(const model::io::Catalog& catalog,
   model::io::write_triplet_csv(dir / "judgments.csv", study.judgments);
   space::write_space_file(dir / "space.json", file);
 
-  const auto points = space::sweep_simulated_study(study, catalog, catalog_file, options);
-  write_sweep_plot(points, "SIMULATED observer: cross-validated error", dir / "dimension_sweep.png");
+  const auto points = space::scan_simulated_study(study, catalog, catalog_file, options);
+  write_dimension_scan_plot(points, "SIMULATED observer: cross-validated error",
+                            dir / "dimension_scan.png");
 
   // Every other catalog pairing placed from its descriptors (Fig. 15).
   std::vector<PlacedTool> placed;
@@ -56,7 +57,7 @@ DemoSection run_space_demo(const model::io::Catalog& catalog,
                    dir / "placed_tools.png");
 
   const space::RecoveryError recovery = space::recovery_error(study.fit.coordinates, study.truth);
-  const space::SweepPoint* best = &points.front();
+  const space::DimensionScanPoint* best = &points.front();
   for (const auto& p : points)
     if (p.mean_error < best->mean_error) best = &p;
   DemoSection section;
@@ -85,13 +86,15 @@ DemoSection run_space_demo(const model::io::Catalog& catalog,
       "perceptual space (SIMULATED observer: no human judgments of drawing tools are bundled)\n"
       "  an observer whose perception is the catalog's descriptors judged the paper's two-stage\n"
       "  experiment on {} tool/surface pairs: {} + {} trials, {} stage-1 ties\n"
-      "  2-D fit (lambda {}): -log likelihood {:.1f}; recovery of the simulated truth: probability\n"
+      "  2-D fit (lambda {}): -log likelihood {:.1f}; recovery of the simulated truth: "
+      "probability\n"
       "  error {:.1f} %, coordinate error {:.1f} % of its spread\n"
-      "  5-fold cross-validation, best: {}-D lambda {} with {:.1f} % held-out error, {:.1f} % majority "
+      "  5-fold cross-validation, best: {}-D lambda {} with {:.1f} % held-out error, {:.1f} % "
+      "majority "
       "agreement\n"
       "  {} bootstrap refits; descriptor map R^2 {:.2f} / {:.2f}; {} further tools placed\n"
       "  report: {}/ (space.json, judgments.csv, stage*_trials.csv, space.png, placed_tools.png,\n"
-      "  dimension_sweep.png)\n",
+      "  dimension_scan.png)\n",
       file.stimuli.size(), study.stage_one.trials.size(), study.stage_two.trials.size(), study.ties,
       options.lambda, study.fit.negative_log_likelihood, 100 * recovery.probabilities,
       100 * recovery.coordinates, best->dims, best->lambda, 100 * best->mean_error,

@@ -17,8 +17,8 @@ void write_space_plot(const space::SpaceFile& s, const std::vector<PlacedTool>& 
   report::write_scatter_plot(figures::space_scatter(s, placed, title), png);
 }
 
-void write_sweep_plot(const std::vector<space::SweepPoint>& points, const std::string& title,
-                      const std::filesystem::path& png) {
+void write_dimension_scan_plot(const std::vector<space::DimensionScanPoint>& points,
+                               const std::string& title, const std::filesystem::path& png) {
   std::map<double, int> lambdas;
   for (const auto& p : points) lambdas[p.lambda] = 0;
   report::LinePlot plot;
@@ -26,7 +26,7 @@ void write_sweep_plot(const std::vector<space::SweepPoint>& points, const std::s
   plot.y_label = "held-out error |#gDp| (%)";
   std::set<std::string> models;
   for (const auto& p : points) models.insert(space::family_name(p.model));
-  const auto add = [](report::LineSeries& line, double x, const space::SweepPoint& p) {
+  const auto add = [](report::LineSeries& line, double x, const space::DimensionScanPoint& p) {
     line.x.push_back(x);
     line.y.push_back(100 * p.mean_error);
     line.y_low.push_back(100 * (p.mean_error - p.sd_error));

@@ -47,28 +47,29 @@ space::Validation validate(const py::object& judgments, const std::vector<std::s
     if (!(l >= 0 && l <= space::kMaxLambda))
       throw std::invalid_argument("lambdas holds " + std::to_string(l) + "; expected weights from 0 to " +
                                   std::to_string(space::kMaxLambda));
-  space::SweepOptions sweep;
-  sweep.dims = dims;
-  sweep.lambdas = lambdas;
-  sweep.models.clear();
+  space::DimensionScanOptions scan;
+  scan.dims = dims;
+  scan.lambdas = lambdas;
+  scan.models.clear();
   for (const auto& name : models) {
     if (name == "all") {
-      sweep.models = space::every_family();
+      scan.models = space::every_family();
       break;
     }
-    sweep.models.push_back(space::parse_family(name));
+    scan.models.push_back(space::parse_family(name));
   }
-  sweep.cross_validation.folds = folds;
-  sweep.cross_validation.seed = seed;
-  sweep.cross_validation.fit.starts = starts;
-  sweep.cross_validation.fit.seed = seed;
-  sweep.cross_validation.fit.threads = threads;
+  scan.cross_validation.folds = folds;
+  scan.cross_validation.seed = seed;
+  scan.cross_validation.fit.starts = starts;
+  scan.cross_validation.fit.seed = seed;
+  scan.cross_validation.fit.threads = threads;
   space::Validation out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
-        sweep.cross_validation.fit.stop = stop;
-        out = space::validate_space_file(file, descriptors.value_or(std::filesystem::path()), sweep,
-                                         [&](std::size_t done, std::size_t total) { report("fitting folds", done, total); });
+        scan.cross_validation.fit.stop = stop;
+        out = space::validate_space_file(
+            file, descriptors.value_or(std::filesystem::path()), scan,
+            [&](std::size_t done, std::size_t total) { report("fitting folds", done, total); });
       },
       progress);
   return out;

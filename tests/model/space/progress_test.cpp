@@ -1,5 +1,6 @@
-// Progress callbacks of the long space jobs (fit starts, bootstrap refits, folds of a sweep): one
-// call per unit, done counts 1..total, and the same results whether anyone watches or not.
+// Progress callbacks of the long space jobs (fit starts, bootstrap refits, folds of a dimension
+// scan): one call per unit, done counts 1..total, and the same results whether anyone watches or
+// not.
 #include <gtest/gtest.h>
 
 #include <mutex>
@@ -9,7 +10,7 @@
 #include <vector>
 
 #include "model/space/bootstrap.hpp"
-#include "model/space/dimension_sweep.hpp"
+#include "model/space/dimension_scan.hpp"
 #include "model/space/fit.hpp"
 #include "tests/model/space/study_fixture.hpp"
 
@@ -89,20 +90,20 @@ TEST(SpaceProgress, BootstrapReportsEachRefitOnce) {
     EXPECT_EQ(watched.aligned[k], unwatched.aligned[k]);
 }
 
-TEST(SpaceProgress, SweepCountsFoldFitsAcrossAllItsPoints) {
+TEST(SpaceProgress, DimensionScanCountsFoldFitsAcrossAllItsPoints) {
   const SpaceProblem study = small_study();
-  SweepOptions options;
+  DimensionScanOptions options;
   options.dims = {1, 2};
   options.cross_validation.folds = 3;
   options.cross_validation.fit.starts = 2;
   options.cross_validation.fit.threads = 2;
   Recorder recorder;
-  const std::vector<SweepPoint> watched =
-      sweep_dimensions(study, nullptr, options, recorder.callback());
+  const std::vector<DimensionScanPoint> watched =
+      scan_dimensions(study, nullptr, options, recorder.callback());
   // 2 dimensions × 1 λ × 3 folds; folds run one after another, so the counts come in order.
   recorder.expect_each_unit_once(6);
   for (std::size_t k = 0; k < recorder.calls.size(); ++k) EXPECT_EQ(recorder.calls[k].first, k + 1);
-  const std::vector<SweepPoint> unwatched = sweep_dimensions(study, nullptr, options);
+  const std::vector<DimensionScanPoint> unwatched = scan_dimensions(study, nullptr, options);
   ASSERT_EQ(watched.size(), unwatched.size());
   for (std::size_t k = 0; k < watched.size(); ++k) {
     EXPECT_EQ(watched[k].mean_error, unwatched[k].mean_error);

@@ -171,7 +171,7 @@ TEST(Demo, ASimulatedObserversSpaceThenTheForcingModelAndADesignSearchInIt) {
   for (const auto& r2 : s["descriptor_map_r_squared"]) EXPECT_GT(r2.get<double>(), 0.5);
   EXPECT_TRUE(is_png(out / "space" / "space.png"));
   EXPECT_TRUE(is_png(out / "space" / "placed_tools.png"));
-  EXPECT_TRUE(is_png(out / "space" / "dimension_sweep.png"));
+  EXPECT_TRUE(is_png(out / "space" / "dimension_scan.png"));
 
   const auto& f = summary["forcing"];
   EXPECT_EQ(f["leave_one_out"]["paper_tools"], 23);  // of the paper's 27: the rest lack a design

@@ -122,7 +122,7 @@ TEST(SpaceCliDescriptors, FitPlaceEvaluateAndPredictNewTools) {
   EXPECT_EQ(header, "stimulus,judged,axis1,axis1_sd,axis2,axis2_sd");
 }
 
-TEST(SpaceCliDescriptors, ValidateSweepsDimensionsAndLambdas) {
+TEST(SpaceCliDescriptors, ValidateScansDimensionsAndLambdas) {
   const auto dir = nibrig::test::scratch_dir("cli_space_validate");
   const Study s = descriptor_study(dir);
   ::testing::internal::CaptureStdout();
@@ -134,7 +134,7 @@ TEST(SpaceCliDescriptors, ValidateSweepsDimensionsAndLambdas) {
   const std::string out = ::testing::internal::GetCapturedStdout();
   const auto v = nibrig::test::read_json(dir / "report" / "validation.json");
   ASSERT_EQ(v["points"].size(), 4u) << out;
-  EXPECT_TRUE(nibrig::test::is_png(dir / "report" / "dimension_sweep.png"));
+  EXPECT_TRUE(nibrig::test::is_png(dir / "report" / "dimension_scan.png"));
   // A 2-D truth: the 2-D spaces predict held-out triplets better than the 1-D ones.
   EXPECT_LT(v["points"][2]["mean_error"].get<double>(), v["points"][0]["mean_error"].get<double>());
 }

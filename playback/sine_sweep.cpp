@@ -1,4 +1,4 @@
-#include "playback/sweep.hpp"
+#include "playback/sine_sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ void require_sweep(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("sweep: " + message);
 }
 
-double sweep_rate_constant(const SweepSettings& s) {
+double sweep_rate_constant(const SineSweepSettings& s) {
   return s.duration_s / std::log(s.end_hz / s.start_hz);
 }
 
@@ -64,33 +64,35 @@ std::complex<double> dtft(const std::vector<double>& g, std::size_t pre, double 
 
 }  // namespace
 
-void validate(const SweepSettings& s) {
-  require_sweep(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be positive");
+void validate(const SineSweepSettings& s) {
+  require_sweep(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0,
+                "sample rate must be positive");
   require_sweep(std::isfinite(s.start_hz) && s.start_hz > 0, "start frequency must be positive");
-  require_sweep(std::isfinite(s.end_hz) && s.end_hz > s.start_hz && s.end_hz < 0.5 * s.sample_rate_hz,
-          "end frequency must lie above the start and below Nyquist (" +
-              std::to_string(0.5 * s.sample_rate_hz) + " Hz)");
+  require_sweep(
+      std::isfinite(s.end_hz) && s.end_hz > s.start_hz && s.end_hz < 0.5 * s.sample_rate_hz,
+      "end frequency must lie above the start and below Nyquist (" +
+          std::to_string(0.5 * s.sample_rate_hz) + " Hz)");
   require_sweep(std::isfinite(s.duration_s) && s.duration_s * s.sample_rate_hz >= 16,
-          "duration must be at least 16 samples");
+                "duration must be at least 16 samples");
   require_sweep(std::isfinite(s.level) && s.level > 0 && s.level <= 1, "level must lie in (0, 1]");
   require_sweep(std::isfinite(s.fade_s) && s.fade_s >= 0 && 2 * s.fade_s <= s.duration_s,
-          "fades must be non-negative and together no longer than the sweep");
+                "fades must be non-negative and together no longer than the sweep");
   require_sweep(std::isfinite(s.silence_s) && s.silence_s > 0,
-          "silence after the sweep must be positive");
+                "silence after the sweep must be positive");
   require_sweep(s.repetitions >= 1 && s.repetitions <= 100, "repetitions must be 1 to 100");
 }
 
-std::size_t sweep_samples(const SweepSettings& s) {
+std::size_t sine_sweep_samples(const SineSweepSettings& s) {
   return to_samples(s.duration_s, s.sample_rate_hz);
 }
 
-std::size_t period_samples(const SweepSettings& s) {
-  return sweep_samples(s) + to_samples(s.silence_s, s.sample_rate_hz);
+std::size_t period_samples(const SineSweepSettings& s) {
+  return sine_sweep_samples(s) + to_samples(s.silence_s, s.sample_rate_hz);
 }
 
-std::vector<double> exponential_sweep(const SweepSettings& s) {
+std::vector<double> exponential_sine_sweep(const SineSweepSettings& s) {
   validate(s);
-  const std::size_t n_sweep = sweep_samples(s);
+  const std::size_t n_sweep = sine_sweep_samples(s);
   const std::size_t n_period = period_samples(s);
   const std::size_t n_fade = to_samples(s.fade_s, s.sample_rate_hz);
   const double L = sweep_rate_constant(s);
@@ -111,20 +113,21 @@ std::vector<double> exponential_sweep(const SweepSettings& s) {
   return signal;
 }
 
-ResponseEstimate estimate_response(const SweepSettings& s, std::span<const double> played,
+ResponseEstimate estimate_response(const SineSweepSettings& s, std::span<const double> played,
                                    std::span<const double> recorded, const EstimationSettings& e) {
   validate(s);
   require_sweep(e.pre_onset_s > 0 && e.impulse_length_s > 0 && e.onset_threshold > 0 &&
-              e.onset_threshold < 1 && e.points_per_octave > 0 && e.regularisation >= 0,
-          "estimation settings must be positive (onset threshold below 1)");
+                    e.onset_threshold < 1 && e.points_per_octave > 0 && e.regularisation >= 0,
+                "estimation settings must be positive (onset threshold below 1)");
   const double fs = s.sample_rate_hz;
   const std::size_t period = period_samples(s);
   const std::size_t repetitions = static_cast<std::size_t>(s.repetitions);
   const std::size_t n = period * repetitions;
   require_sweep(played.size() == n, "played signal has " + std::to_string(played.size()) +
-                                  " samples, the settings give " + std::to_string(n));
+                                        " samples, the settings give " + std::to_string(n));
   require_sweep(recorded.size() >= n, "recording has " + std::to_string(recorded.size()) +
-                                    " samples, fewer than the " + std::to_string(n) + " played");
+                                          " samples, fewer than the " + std::to_string(n) +
+                                          " played");
 
   const double L = sweep_rate_constant(s);
   ResponseEstimate out;
@@ -132,11 +135,12 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   out.harmonic3_lead_s = L * std::log(3.0);
   const std::size_t pre = std::max<std::size_t>(1, to_samples(e.pre_onset_s, fs));
   const std::size_t length = to_samples(e.impulse_length_s, fs);
-  const std::size_t silence = period - sweep_samples(s);
-  require_sweep(e.pre_onset_s + e.impulse_length_s < out.harmonic2_lead_s,
-          "the 2nd harmonic's product lies " + std::to_string(out.harmonic2_lead_s) +
-              " s before the response, less than the impulse length and pre-onset part: make the "
-              "sweep longer or its range narrower");
+  const std::size_t silence = period - sine_sweep_samples(s);
+  require_sweep(
+      e.pre_onset_s + e.impulse_length_s < out.harmonic2_lead_s,
+      "the 2nd harmonic's product lies " + std::to_string(out.harmonic2_lead_s) +
+          " s before the response, less than the impulse length and pre-onset part: make the "
+          "sweep longer or its range narrower");
   require_sweep(length + pre < silence, "impulse length must be shorter than the silence");
 
   // Circular deconvolution by one sweep period: the recording of R back-to-back periods becomes R
@@ -177,9 +181,10 @@ ResponseEstimate estimate_response(const SweepSettings& s, std::span<const doubl
   out.peak_lag_samples = peak;
   out.delay_samples = onset;
   out.delay_s = static_cast<double>(onset) / fs;
-  require_sweep(onset + length < silence,
-          "delay of " + std::to_string(out.delay_s) +
-              " s leaves too little of the silence for the impulse response: lengthen the silence");
+  require_sweep(
+      onset + length < silence,
+      "delay of " + std::to_string(out.delay_s) +
+          " s leaves too little of the silence for the impulse response: lengthen the silence");
 
   const std::vector<double> window = impulse_window(pre, length);
   std::vector<std::vector<double>> copies(repetitions, std::vector<double>(window.size()));

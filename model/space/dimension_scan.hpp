@@ -11,29 +11,29 @@
 
 namespace nibrig::model::space {
 
-struct SweepOptions {
+struct DimensionScanOptions {
   std::vector<std::size_t> dims{1, 2, 3, 4};
   std::vector<double> lambdas{0.0};
   std::vector<ModelFamily> models{kPaperModel};
   CrossValidationOptions cross_validation;  // the same folds for every point
 };
 
-struct SweepPoint {
+struct DimensionScanPoint {
   std::size_t dims = 0;
   double lambda = 0.0;
   ModelFamily model;
   double mean_error = 0.0, sd_error = 0.0;  // of the held-out mean |Δp| across folds
   double majority_agreement = 0.0;          // pooled over the folds
   double individual_agreement = 0.0;
-  double log_loss = 0.0;                    // pooled, nats per held-out response
+  double log_loss = 0.0;  // pooled, nats per held-out response
 };
 
 // `descriptors(D)` gives the stimuli × D table that the axes of a D-dimensional space are tied to;
 // it is only called for λ > 0. Throws std::invalid_argument for an empty list, or λ > 0 without a
 // descriptor source; otherwise what cross_validate throws. `progress` counts fold fits over the
-// whole sweep (done 1..dims × lambdas × models × folds), the unit of work that takes seconds.
-std::vector<SweepPoint> sweep_dimensions(
+// whole scan (done 1..dims × lambdas × models × folds), the unit of work that takes seconds.
+std::vector<DimensionScanPoint> scan_dimensions(
     const SpaceProblem& base, const std::function<Eigen::MatrixXd(std::size_t)>& descriptors,
-    const SweepOptions& options = {}, const numeric::Progress& progress = {});
+    const DimensionScanOptions& options = {}, const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

@@ -11,7 +11,7 @@
 
 namespace nibrig::playback {
 
-struct SweepSettings {
+struct SineSweepSettings {
   double sample_rate_hz = 48000.0;
   // Well beyond the 20-500 Hz band on both sides: the edges of the sweep are faded and unreliable,
   // and a sweep reaching far above the band makes the impulse response sharp enough to place the
@@ -29,16 +29,17 @@ struct SweepSettings {
 
 // Throws std::invalid_argument naming the setting at fault (end at or above Nyquist, fades longer
 // than half the sweep, level outside (0, 1], ...).
-void validate(const SweepSettings& settings);
+void validate(const SineSweepSettings& settings);
 
-std::size_t sweep_samples(const SweepSettings& settings);   // one sweep, without its silence
-std::size_t period_samples(const SweepSettings& settings);  // one sweep and its silence
+std::size_t sine_sweep_samples(
+    const SineSweepSettings& settings);                         // one sweep, without its silence
+std::size_t period_samples(const SineSweepSettings& settings);  // one sweep and its silence
 
 // The whole signal to play: `repetitions` × (sweep, silence), peak `level`. The sweep is
 // x(t) = sin(2π f1 L (e^(t/L) − 1)), L = T / ln(f2/f1), so its instantaneous frequency rises from
 // f1 to f2 exponentially and every harmonic k of the chain's distortion arrives a fixed time
 // L·ln(k) earlier than the linear response after deconvolution.
-std::vector<double> exponential_sweep(const SweepSettings& settings);
+std::vector<double> exponential_sine_sweep(const SineSweepSettings& settings);
 
 struct EstimationSettings {
   double pre_onset_s = 0.005;  // kept before the onset: the band-limited response's leading edge
@@ -71,12 +72,12 @@ struct ResponseEstimate {
   std::vector<double> impulse_response;
 };
 
-// played: what exponential_sweep(settings) returned (as scaled and played); recorded: the
+// played: what exponential_sine_sweep(settings) returned (as scaled and played); recorded: the
 // accelerometer, same rate, starting at the same instant as played, at least as long (extra samples
 // are ignored). Throws std::invalid_argument on sizes, settings, or a delay that leaves too little
 // of the silence for the impulse response.
-ResponseEstimate estimate_response(const SweepSettings& settings, std::span<const double> played,
-                                   std::span<const double> recorded,
+ResponseEstimate estimate_response(const SineSweepSettings& settings,
+                                   std::span<const double> played, std::span<const double> recorded,
                                    const EstimationSettings& estimation = {});
 
 }  // namespace nibrig::playback

@@ -1,16 +1,16 @@
-#include "model/space/dimension_sweep.hpp"
+#include "model/space/dimension_scan.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
 namespace nibrig::model::space {
 
-std::vector<SweepPoint> sweep_dimensions(
+std::vector<DimensionScanPoint> scan_dimensions(
     const SpaceProblem& base, const std::function<Eigen::MatrixXd(std::size_t)>& descriptors,
-    const SweepOptions& options, const numeric::Progress& progress) {
+    const DimensionScanOptions& options, const numeric::Progress& progress) {
   if (options.dims.empty() || options.lambdas.empty() || options.models.empty())
-    throw std::invalid_argument("the sweep needs at least one dimension, one λ and one model");
-  std::vector<SweepPoint> points;
+    throw std::invalid_argument("the scan needs at least one dimension, one λ and one model");
+  std::vector<DimensionScanPoint> points;
   const std::size_t folds = static_cast<std::size_t>(std::max(0, options.cross_validation.folds));
   const std::size_t total =
       options.dims.size() * options.lambdas.size() * options.models.size() * folds;
@@ -36,7 +36,7 @@ std::vector<SweepPoint> sweep_dimensions(
           fold_progress = [&](std::size_t done, std::size_t) { progress(before + done, total); };
         const CrossValidationResult cv =
             cross_validate(problem, options.cross_validation, fold_progress);
-        SweepPoint p;
+        DimensionScanPoint p;
         p.dims = dims;
         p.lambda = lambda;
         p.model = model;
