@@ -2,6 +2,11 @@
 # Each flag says in a line why it is there; the stories behind the workarounds are in git history.
 
 # Batches of 24 sources: the shared third-party headers are instantiated and optimised once per batch.
+# What it buys, measured on 2 cores, cold (no ccache), clang 14, the demo's `nibrig` in Release with
+# the precompiled headers on in both: 169 s in batches against 368 s one file at a time, 3.3 minutes
+# on that target alone, of which CI builds two trees and their tests; the precompiled headers alone
+# do not make that up. Its cost: file-local names unique per batch, and a missing include hidden
+# until -DNIBRIG_UNITY_BUILD=OFF.
 if(NIBRIG_UNITY_BUILD)
   set(CMAKE_UNITY_BUILD ON)
   set(CMAKE_UNITY_BUILD_BATCH_SIZE 24)

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "model/io/format_error.hpp"
+#include "model/io/text_lines.hpp"
 
 namespace nibrig::model::space {
 namespace {

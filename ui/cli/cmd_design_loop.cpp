@@ -26,6 +26,7 @@
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
+#include "ui/cli/stylus_report.hpp"
 #include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
