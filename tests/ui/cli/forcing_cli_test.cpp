@@ -2,10 +2,14 @@
 // `nibrig` in a child process (cli_harness.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "model/design/hold_out_file.hpp"
 #include "model/forcing/forcing_file.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
@@ -26,6 +30,46 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
 // Both commands run with a coarser mesh and fewer modes than the template's (cli_harness.hpp).
 using nibrig::test::with_coarse;
 
+// A hold-out CSV's rows over all speeds, averaged per column: the held-out tools predicted, the
+// mean error of the interpolation, of each no-interpolation baseline and of each measured
+// neighbour (over the tools that have one).
+struct HoldoutMeans {
+  std::size_t tools = 0;
+  double interpolated_db = 0.0;
+  std::array<double, 2> baseline_db{}, measured_db{};
+};
+
+HoldoutMeans holdout_means(const std::filesystem::path& csv) {
+  const auto table = model::design::read_hold_out_csv(csv);
+  HoldoutMeans m;
+  std::array<std::size_t, 2> measured{};
+  for (const auto& row : table.rows) {
+    if (row.speed_mm_s || !row.interpolated_rms_db) continue;
+    ++m.tools;
+    m.interpolated_db += *row.interpolated_rms_db;
+    for (std::size_t k = 0; k < 2; ++k) {
+      m.baseline_db[k] += row.baseline_rms_db[k].value();
+      if (row.measured_rms_db[k]) m.measured_db[k] += *row.measured_rms_db[k], ++measured[k];
+    }
+  }
+  m.interpolated_db /= static_cast<double>(m.tools);
+  for (std::size_t k = 0; k < 2; ++k) {
+    m.baseline_db[k] /= static_cast<double>(m.tools);
+    m.measured_db[k] /= static_cast<double>(measured[k]);
+  }
+  return m;
+}
+
+// Fig. 14 on this test's coarse FEM, from the CSV's numbers: the interpolation is as good as the
+// better of the two no-interpolation curves (within 0.1 dB; the two curves differ by 0.03 to 0.2 dB
+// here, far below a measurement's 2 dB), and closer to the held-out measurement than either
+// measured neighbour is (by 0.15 dB at least; 0.3 to 0.8 dB on the bundled catalog).
+void expect_the_interpolation_holds(const HoldoutMeans& m) {
+  EXPECT_LT(m.interpolated_db, std::min(m.baseline_db[0], m.baseline_db[1]) + 0.1);
+  EXPECT_LT(m.interpolated_db, m.measured_db[0] - 0.15);
+  EXPECT_LT(m.interpolated_db, m.measured_db[1] - 0.15);
+}
+
 TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
   const auto out = nibrig::test::scratch_dir("cli_forcing_fit");
   ::testing::internal::CaptureStdout();
@@ -39,38 +83,40 @@ TEST(ForcingCli, FitWritesAModelThatReadsBackAndTheCurvePlots) {
   EXPECT_EQ(model.surface_forcing.size(), 6u);
   EXPECT_EQ(model.tip_log_gain.size(), 3u);
   EXPECT_EQ(model.material_log_gain.size(), 4u);
-  EXPECT_GT(model.residual_rms_db, 0.0);
   ASSERT_FALSE(model.notes.empty());
   EXPECT_NE(model.notes.front().find("default_catalog.json"), std::string::npos);
   EXPECT_NE(model.notes[1].find("32 modes, 4.00 mm"), std::string::npos) << model.notes[1];
   EXPECT_TRUE(is_png(out / "plots" / "tip_curves.png"));
   EXPECT_TRUE(is_png(out / "plots" / "material_curves.png"));
-  EXPECT_NE(text.find("23 of the paper's 27 tools"), std::string::npos) << text;
-  EXPECT_NE(text.find("missing from the catalog: DM952 on office"), std::string::npos) << text;
-  EXPECT_NE(text.find("residual RMS"), std::string::npos) << text;
-  EXPECT_NE(text.find("SE: delete-one-tool jackknife over 12 printed tools"), std::string::npos)
-      << text;
+  // The pairings of the paper's 27 tools the bundled catalog lacks are named in the model.
+  EXPECT_NE(model.notes[2].find("DM952 on office"), std::string::npos) << model.notes[2];
+  // Eq. 10 fits 54 exemplars with one curve per tip, material and surface: what remains is about a
+  // measurement's own spread (1.2 to 2.9 dB per exemplar here); above 3 dB the fit would have
+  // failed, and below 1 dB it would fit the recordings' noise.
+  EXPECT_GT(model.residual_rms_db, 1.0);
+  EXPECT_LT(model.residual_rms_db, 3.0);
   // Every exemplar can be held out (each shares its surface, tip and material with others), so
-  // each has a descriptor error, weighted by the bundled threshold.
+  // each has a descriptor error, weighted by the bundled threshold: held out, a tool's weighted
+  // mean vibration is predicted to 10 % on average (0.041 in log10 here); 25 % leaves room for the
+  // mesh and the fit's seeds without letting a broken hold-out (a factor of 2 or more) pass.
   EXPECT_EQ(model.held_out_descriptor_errors.size(), 54u);
   EXPECT_NE(model.descriptor_error_threshold.find("Israr"), std::string::npos)
       << model.descriptor_error_threshold;
-  EXPECT_NE(text.find("predicted descriptors, each of 54 exemplars held out: weighted mean "
-                      "vibration off by "),
-            std::string::npos)
-      << text;
+  double mean_abs = 0.0;
+  for (const auto& e : model.held_out_descriptor_errors)
+    mean_abs += std::abs(e.log10_weighted_mean);
+  mean_abs /= static_cast<double>(model.held_out_descriptor_errors.size());
+  EXPECT_LT(mean_abs, std::log10(1.25));
+  EXPECT_GT(mean_abs, 0.0);
 }
 
-TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
+TEST(ForcingCli, LeaveOneOutPredictsEveryPaperToolTheCatalogHas) {
   const auto out = nibrig::test::scratch_dir("cli_forcing_loo");
   ::testing::internal::CaptureStdout();
   const int code = run_cli({"forcing", "loo", "-o", (out / "loo.csv").string(), "--modes", "32",
                             "--mesh-size", "0.004"});
   const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
-  EXPECT_NE(text.find("23 predicted, 0 not predictable"), std::string::npos) << text;
-  EXPECT_NE(text.find("worst: "), std::string::npos) << text;
-  EXPECT_NE(text.find("vero2       office"), std::string::npos) << text;
   const auto csv = lines_of(out / "loo.csv");
   ASSERT_EQ(csv.size(), 24u);  // header and the 23 paper tools present
   EXPECT_EQ(csv[0].rfind("tool,surface,predictable,rms_db,baseline_rms_db,rms_db_17_mm_s", 0), 0u)
@@ -87,7 +133,7 @@ TEST(ForcingCli, LeaveOneOutPrintsTheTableAndNamesTheWorst) {
   }
 }
 
-TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed) {
+TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsCloserThanTheirMeasuredNeighbours) {
   const auto out = nibrig::test::scratch_dir("cli_forcing_holdout");
   ::testing::internal::CaptureStdout();
   const int code =
@@ -97,16 +143,9 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
   ASSERT_EQ(code, 0) << text;
   // The 15 measured 2 mm tools (vero2 and DM852 on five surfaces, DM952 on two, teflon2 on
   // three), each beside both baselines, per speed and overall.
-  EXPECT_NE(text.find("held out the 2 mm tools (15)"), std::string::npos) << text;
-  EXPECT_NE(text.find("t interpolated between 1 mm and 4 mm"), std::string::npos) << text;
-  EXPECT_NE(text.find("by speed, mean RMS dB over the 15 predicted"), std::string::npos) << text;
-  EXPECT_NE(text.find("interpolation beats both no-interpolation baselines (Fig. 14) on "),
-            std::string::npos)
-      << text;
-  // And how large the tip effect is against its error (delete-one-tool jackknife: the 12 prints).
-  EXPECT_NE(text.find("jackknife over 12 tools"), std::string::npos) << text;
-  EXPECT_NE(text.find("4 mm − 1 mm (the tip effect)"), std::string::npos) << text;
-  EXPECT_NE(text.find("2 mm − the line 1 mm–4 mm"), std::string::npos) << text;
+  const HoldoutMeans means = holdout_means(out / "holdout.csv");
+  EXPECT_EQ(means.tools, 15u);
+  expect_the_interpolation_holds(means);
   const auto csv = lines_of(out / "holdout.csv");
   ASSERT_EQ(csv.size(), 1u + 15u * 7u);  // header; six speeds and "all" per tool
   EXPECT_EQ(csv[0].rfind("tool,surface,speed_mm_s,interpolated_rms_db,tip_1mm_curve_rms_db,"
@@ -129,7 +168,7 @@ TEST(ForcingCli, HoldoutPredictsTheTwoMillimetreToolsAgainstTheBaselinesPerSpeed
   EXPECT_TRUE(is_png(out / "plots" / "DM952_glass.png"));
 }
 
-TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
+TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixCloserThanItsMeasuredNeighbours) {
   const auto out = nibrig::test::scratch_dir("cli_forcing_holdout_material");
   ::testing::internal::CaptureStdout();
   const int code = run_cli(with_coarse(
@@ -138,14 +177,9 @@ TEST(ForcingCli, HoldoutOfAMaterialPredictsItAsAMixAndSaysWhereItsCurveLies) {
   ASSERT_EQ(code, 0) << text;
   // The 14 measured DM95 tools (1 and 4 mm on six surfaces, 2 mm on two), each as the mix of
   // VeroClear and DM85 with DM95's modulus, beside both materials' curves and measured tools.
-  EXPECT_NE(text.find("held out the DM95 tools (14)"), std::string::npos) << text;
-  EXPECT_NE(text.find("the mix with DM95's Young's modulus"), std::string::npos) << text;
-  EXPECT_NE(text.find("measured vero  measured DM85"), std::string::npos) << text;
-  EXPECT_NE(text.find("interpolation beats both no-interpolation baselines (Fig. 14) on "),
-            std::string::npos)
-      << text;
-  EXPECT_NE(text.find("DM85 − vero (the material effect)"), std::string::npos) << text;
-  EXPECT_NE(text.find("its curve lies at a fraction "), std::string::npos) << text;
+  const HoldoutMeans means = holdout_means(out / "holdout.csv");
+  EXPECT_EQ(means.tools, 14u);
+  expect_the_interpolation_holds(means);
   const auto csv = lines_of(out / "holdout.csv");
   ASSERT_EQ(csv.size(), 1u + 14u * 7u);
   EXPECT_EQ(csv[0].rfind("tool,surface,speed_mm_s,interpolated_rms_db,vero_curve_rms_db,"
