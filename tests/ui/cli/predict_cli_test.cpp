@@ -113,10 +113,20 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
     EXPECT_TRUE(mix.contains(key)) << key;
   EXPECT_EQ(mix["amplitude_m_s2"].size(), mix["speeds_mm_s"].size());
   EXPECT_GT(mix["descriptors"]["weighted_mean"].get<double>(), 0.0);
-  // The descriptors with their cross-validated error: a mix at an interpolated tip has both.
-  EXPECT_NE(text.find(", weighted mean vibration "), std::string::npos) << text;
-  EXPECT_NE(text.find(" %; "), std::string::npos) << text;
-  EXPECT_EQ(mix["descriptor_error_covariance"]["names"].size(), 16u);
+  // The descriptors with their cross-validated error: a mix at an interpolated tip has both. The
+  // held-out exemplars put the weighted mean's error at 0.05 in log10 (13 %) here, μ's at 0.009:
+  // each above zero (a prediction is never exact), and the bounds, three and ten times those, fail
+  // a hold-out that broke (an error the size of the descriptors themselves).
+  const auto& covariance = mix["descriptor_error_covariance"];
+  ASSERT_EQ(covariance["names"].size(), 16u);
+  EXPECT_EQ(covariance["names"][0], "friction_mu");
+  EXPECT_EQ(covariance["names"][1], "log10_weighted_mean_vibration");
+  const double mu_sd = std::sqrt(covariance["matrix"][0][0].get<double>());
+  const double vibration_sd = std::sqrt(covariance["matrix"][1][1].get<double>());
+  EXPECT_GT(mu_sd, 0.0);
+  EXPECT_LT(mu_sd, 0.09);
+  EXPECT_GT(vibration_sd, 0.0);
+  EXPECT_LT(vibration_sd, 0.15);
   // A quarter DM85 (μ ≈ 0.5-0.8 on office) raises μ above VeroClear's (≈ 0.2-0.3).
   EXPECT_GT(mix["mu"].get<double>(), 0.2);
   EXPECT_LT(mix["mu"].get<double>(), 0.6);
@@ -136,7 +146,6 @@ TEST(PredictCli, AMixADesignFileAndBadDesignsAgainstOneFittedModel) {
     beats = beats && comparison["rms_db"].get<double>() < b["rms_db"].get<double>();
   }
   EXPECT_EQ(comparison["beats_every_baseline"].get<bool>(), beats);
-  EXPECT_NE(text.find("no-interpolation baseline"), std::string::npos) << text;
 
   // The prediction's own output as the "measurement": zero error, every baseline beaten; with one
   // speed moved by 5 mm/s the grids differ and only the plot compares.
