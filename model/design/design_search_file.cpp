@@ -42,6 +42,7 @@ nlohmann::json design_search_json(const SearchResult& result,
   j["search"] = description.search;
   j["seconds"] = description.seconds;
   if (!description.space.empty()) j["space"] = description.space;
+  j["placed"] = description.placed;
   if (!description.targets.empty()) j["targets"] = description.targets;
   if (!description.aim.empty()) j["aim"] = description.aim;
   const auto& cost = description.constraints.cost;

@@ -23,6 +23,9 @@ struct DesignSearchDescription {
   std::vector<std::string> targets;
   std::string aim;
   DesignConstraints constraints;
+  // The targets placed from their descriptors (a catalog pairing the space never judged); the
+  // others are the space's own stimuli.
+  std::vector<std::string> placed;
 };
 
 // One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates, and
@@ -30,10 +33,10 @@ struct DesignSearchDescription {
 // costs given, its cost.
 nlohmann::json candidate_json(const Candidate& candidate, const std::map<std::string, double>& cost = {});
 
-// kind "design_search": target, surface, search, seconds, space (when named), targets and aim (a
-// group), constraints {min_tip_mm, max_tip_mm, materials, cost, max_cost} (when any), optimum,
-// runners_up (distinct designs, SearchResult::runners_up), path (every candidate in the order
-// evaluated).
+// kind "design_search": target, surface, search, seconds, space (when named), placed, targets and
+// aim (a group), constraints {min_tip_mm, max_tip_mm, materials, cost, max_cost} (when any),
+// optimum, runners_up (distinct designs, SearchResult::runners_up), path (every candidate in the
+// order evaluated).
 nlohmann::json design_search_json(const SearchResult& result,
                                   const DesignSearchDescription& description);
 

@@ -266,8 +266,11 @@ void run_design(const DesignOptions& o) {
                                               o.space_file.string(),
                                               {},
                                               {},
-                                              constraints};
+                                              constraints,
+                                              {}};
   if (group) description.targets = o.targets, description.aim = o.aim;
+  for (const auto& name : o.targets)
+    if (locator.placed(name)) description.placed.push_back(name);
   design::write_design_search(o.output, result, description);
   say_wrote(o.output);
   if (!o.plot.empty()) {

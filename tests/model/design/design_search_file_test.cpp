@@ -35,9 +35,16 @@ SearchResult design_search_file_result() {
 
 TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
   const SearchResult result = design_search_file_result();
-  const DesignSearchDescription description{"cryon/office", "glass",
-                                            "along the line vero,tip=1mm -> DM85,tip=4mm", 1.25, 3,
-                                            "space.json", {}, {}, {}};
+  const DesignSearchDescription description{"cryon/office",
+                                            "glass",
+                                            "along the line vero,tip=1mm -> DM85,tip=4mm",
+                                            1.25,
+                                            3,
+                                            "space.json",
+                                            {},
+                                            {},
+                                            {},
+                                            {"cryon/office"}};
   const auto file = nibrig::test::scratch_dir("design_search_file") / "design_search.json";
   write_design_search(file, result, description);
   std::ifstream in(file);
@@ -47,6 +54,7 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
   EXPECT_EQ(j.at("target"), "cryon/office");
   EXPECT_EQ(j.at("surface"), "glass");
   EXPECT_EQ(j.at("space"), "space.json");
+  EXPECT_EQ(j.at("placed"), nlohmann::json::array({"cryon/office"}));
   EXPECT_EQ(j.at("seconds").get<double>(), 1.25);
 
   const auto check = [](const nlohmann::json& c, const Candidate& expected) {
@@ -100,7 +108,8 @@ TEST(DesignSearchFile, RefusesANonFiniteDistanceNamingTheField) {
   result.evaluated.back().distance_sd = std::nan("");
   const auto file = nibrig::test::scratch_dir("design_search_file_nan") / "broken.json";
   try {
-    write_design_search(file, result, {"cryon/office", "glass", "a line", 1.0, 4, "", {}, {}, {}});
+    write_design_search(file, result,
+                        {"cryon/office", "glass", "a line", 1.0, 4, "", {}, {}, {}, {}});
     FAIL() << "wrote a NaN";
   } catch (const io::UnwritableOutput& e) {
     EXPECT_NE(std::string(e.what()).find("distance_sd"), std::string::npos) << e.what();
