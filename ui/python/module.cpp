@@ -1,6 +1,6 @@
 // nibrig's Python face (`import nibrig`): the compiled part, nibrig._core, one submodule per area.
 // The package around it (ui/python/nibrig/) re-exports the submodules and carries their type
-// hints (.pyi files, whose docstrings the build copies from here: ui/python/stub_docstrings.py).
+// hints (.pyi files, whose docstrings the build copies from here: ui/python/pyi_docstrings.py).
 #include <pybind11/pybind11.h>
 
 #include "ui/python/errors.hpp"

@@ -36,7 +36,7 @@ def _documented(owner, prefix):
             yield from _documented(obj, prefix + name + ".")
 
 
-def _stub_docstrings(path):
+def _pyi_docstrings(path):
     out = {}
 
     def walk(nodes, prefix):
@@ -54,12 +54,12 @@ def _stub_docstrings(path):
 
 def test_the_stubs_carry_the_bindings_docstrings():
     """Written once in the bindings, copied into the installed stubs by the build, so that an editor's
-    hover says what help() says (ui/python/stub_docstrings.py)."""
+    hover says what help() says (ui/python/pyi_docstrings.py)."""
     package = pathlib.Path(nibrig.__file__).parent
     checked = 0
     for module in (nibrig.audition, nibrig.design, nibrig.measure, nibrig.render, nibrig.rig, nibrig.space,
                    nibrig.study):
-        stubs = _stub_docstrings(package / (module.__name__.split(".")[-1] + ".pyi"))
+        stubs = _pyi_docstrings(package / (module.__name__.split(".")[-1] + ".pyi"))
         for name, doc in _documented(module, ""):
             if name.split(".")[0] not in module.__all__:
                 continue
@@ -74,4 +74,4 @@ def test_the_source_stubs_hold_no_docstrings():
     for stub in source.glob("*.pyi"):
         tree = ast.parse(stub.read_text())
         assert ast.get_docstring(tree) is None, stub
-        assert _stub_docstrings(stub) == {}, stub
+        assert _pyi_docstrings(stub) == {}, stub

@@ -4,7 +4,7 @@ The hand-written stubs (ui/python/nibrig/*.pyi) carry the types only; every docs
 once, in the bindings (or a submodule's .py), and copied here into the stubs the build installs, so
 that an editor shows what help() shows. Run by the build after the module is linked:
 
-    python3 stub_docstrings.py SOURCE_STUBS_DIR PACKAGE_DIR
+    python3 pyi_docstrings.py SOURCE_STUBS_DIR PACKAGE_DIR
 
 with PACKAGE_DIR's parent on the import path. Refuses a stub that already holds a docstring.
 """
