@@ -55,7 +55,7 @@ DeviceChoice choose_device(std::string_view api, std::string_view device);
 const DeviceInfo& find_device(const std::vector<DeviceInfo>& devices, std::string_view name,
                               std::string_view api);
 
-// The most output channels a device is taken to have: a channel beyond is a typo.
+// The most channels a device is taken to have, out or in: a channel beyond is a typo.
 inline constexpr unsigned kMostOutputChannels = 1024;
 
 // The settings to open a device asked for by API and name (chosen as choose_device does) at

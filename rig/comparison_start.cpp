@@ -15,8 +15,8 @@ constexpr const char* kDefaultComparisonProfile =
 
 ComparisonStart::ComparisonStart(ComparisonRequest request) : request_(std::move(request)) {
   check_rig_request(request_.rig);
-  profile_to_run(request_.rig, request_.profile, kDefaultComparisonProfile,
-                 request_.seconds);  // read again by open()
+  asked_profile_ =
+      profile_to_run(request_.rig, request_.profile, kDefaultComparisonProfile, request_.seconds);
 }
 
 ComparisonStart::ComparisonStart(ComparisonStart&&) noexcept = default;
@@ -25,8 +25,7 @@ ComparisonStart::~ComparisonStart() = default;
 
 void ComparisonStart::open() {
   rig_sounds_ = std::make_unique<model::design::ToolSounds>(request_.sounds);
-  OpenedRig opened = open_rig_with_profile(request_.rig, *rig_sounds_, request_.profile,
-                                           kDefaultComparisonProfile, request_.seconds);
+  OpenedRig opened = open_rig_running(request_.rig, *rig_sounds_, asked_profile_, request_.seconds);
   const RigDescription& described = opened.rig->description();
   const SimulatedChoice choice = simulated_choice(
       described, request_.simulate.empty() ? request_.rig.tool : request_.simulate,

@@ -77,6 +77,7 @@ class ComparisonStart {
 
  private:
   ComparisonRequest request_;
+  std::optional<SpeedProfile> asked_profile_;  // as checked; nullopt: a replay runs its own
   std::unique_ptr<model::design::ToolSounds> rig_sounds_, simulation_sounds_;
   std::unique_ptr<Rig> rig_;
   std::optional<SpeedProfile> profile_;

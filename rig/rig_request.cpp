@@ -6,6 +6,7 @@
 
 #include "model/design/predicted_tool.hpp"
 #include "model/design/tool_sound.hpp"
+#include "playback/audio_devices.hpp"
 #include "rig/pacer.hpp"
 #include "rig/replay_rig.hpp"
 #include "rig/simulated_rig.hpp"
@@ -113,9 +114,10 @@ void check_rig_request(const RigRequest& r) {
     case RigKind::usb:
       refuse_unless(RigField::accelerometer,
                     [&] { check_accelerometer_scale(r.accelerometer_m_s2_per_full_scale, {}); });
-      if (r.input_channel < 1)
+      if (r.input_channel < 1 || r.input_channel > playback::kMostOutputChannels)
         throw RigRequestRefused(RigField::input_channel,
-                                "0: expected a channel 1 or more (1-based)");
+                                std::to_string(r.input_channel) + ": expected a channel, 1 to " +
+                                    std::to_string(playback::kMostOutputChannels) + " (1-based)");
       break;
   }
 }
@@ -192,7 +194,12 @@ std::optional<SpeedProfile> profile_to_run(const RigRequest& request, const std:
 OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSounds& sounds,
                                 const std::string& profile, const std::string& default_profile,
                                 std::optional<double> seconds) {
-  std::optional<SpeedProfile> asked = profile_to_run(request, profile, default_profile, seconds);
+  return open_rig_running(request, sounds,
+                          profile_to_run(request, profile, default_profile, seconds), seconds);
+}
+
+OpenedRig open_rig_running(const RigRequest& request, model::design::ToolSounds& sounds,
+                           std::optional<SpeedProfile> asked, std::optional<double> seconds) {
   std::unique_ptr<Rig> rig = open_rig(request, sounds);
   if (asked) return {std::move(rig), std::move(*asked)};
   const SpeedProfile* own = rig->own_profile();

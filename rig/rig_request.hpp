@@ -73,7 +73,7 @@ class RigRequestRefused : public std::invalid_argument {
     load,           // outside kLightestLoadN..kHeaviestLoadN
     speedup,        // neither 0 nor within the pacer's range
     accelerometer,  // the USB rig's scale, outside its range
-    input_channel,  // the USB rig's input channel: 0
+    input_channel,  // the USB rig's input channel: 0, or beyond playback::kMostOutputChannels
     replay,         // a replay of nothing
     profile,        // an unknown profile, or one a replayed rig cannot run
     seconds,        // a length outside kShortestCaptureSeconds..kMaxProfileSeconds
@@ -123,6 +123,10 @@ struct OpenedRig {
 OpenedRig open_rig_with_profile(const RigRequest& request, model::design::ToolSounds& sounds,
                                 const std::string& profile, const std::string& default_profile,
                                 std::optional<double> seconds);
+// The same with the profile already checked (profile_to_run's `asked`), for a face that checked it
+// before opening anything.
+OpenedRig open_rig_running(const RigRequest& request, model::design::ToolSounds& sounds,
+                           std::optional<SpeedProfile> asked, std::optional<double> seconds);
 
 // What a comparison simulates beside the rig: `asked` (a tool id or design point), else what the
 // rig says is mounted, on `surface`, else the mounted one. Throws std::invalid_argument when the

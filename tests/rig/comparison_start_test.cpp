@@ -65,6 +65,8 @@ TEST(ComparisonStart, EachRefusalNamesTheFieldAtFault) {
 
   r = ok, r.rig.kind = RigKind::usb, r.rig.input_channel = 0;
   EXPECT_EQ(refused_field(r), Field::input_channel);
+  r.rig.input_channel = 4096;  // a typo: no interface has that many inputs
+  EXPECT_EQ(refused_field(r), Field::input_channel);
   r = ok, r.rig.kind = RigKind::usb, r.rig.accelerometer_m_s2_per_full_scale = 0.0;
   EXPECT_EQ(refused_field(r), Field::accelerometer);
 

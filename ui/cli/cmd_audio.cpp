@@ -225,8 +225,9 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
       "calibrate", "Measure an actuator with a sweep and its accelerometer; store its inverse filter");
   cal->add_option("--name", c->name, "The actuator's name")->required();
   add_device_options(cal, c->device);
-  cal->add_option("--input-channel", c->input_channel, "Input channel of the accelerometer (1-based)")
-      ->check(whole_in_range(1, 1024, "a channel number"));
+  cal->add_option("--input-channel", c->input_channel,
+                  "Input channel of the accelerometer (1-based)")
+      ->check(whole_in_range(1, playback::kMostOutputChannels, "a channel number"));
   cal->add_option("--accelerometer", c->accelerometer,
                   "m/s² per unit of input level (accelerometer sensitivity and input gain)")
       ->check(in_range(1e-6, 1e6, "a sensitivity in m/s² per unit of input"));

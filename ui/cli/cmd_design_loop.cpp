@@ -13,6 +13,7 @@
 
 #include "model/design/loop_session.hpp"
 #include "model/numeric/cancellation.hpp"
+#include "playback/audio_devices.hpp"
 #include "rig/accelerometer_input.hpp"
 #include "rig/loop_print_capture.hpp"
 #include "rig/pacer.hpp"
@@ -281,7 +282,7 @@ void add_design_loop_command(CLI::App* design_cmd, std::shared_ptr<const GlobalO
   cmd->add_option("--input", o->input, "USB rig: the accelerometer's audio input (by name)");
   cmd->add_option("--input-api", o->input_api, "USB rig: the audio back end of --input");
   cmd->add_option("--input-channel", o->input_channel, "USB rig: the accelerometer's input channel")
-      ->check(whole_in_range(1, 64, "a channel number"));
+      ->check(whole_in_range(1, playback::kMostOutputChannels, "a channel number"));
   cmd->add_option("--accelerometer", o->accelerometer,
                   "USB rig: the accelerometer's m/s² at full scale")
       ->check(in_range(rig::kLeastAccelerometerM_s2, rig::kMostAccelerometerM_s2,

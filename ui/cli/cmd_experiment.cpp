@@ -22,6 +22,7 @@
 #include "model/study/stimulus_list.hpp"
 #include "model/study/study_session.hpp"
 #include "playback/actuator_store.hpp"
+#include "playback/audio_devices.hpp"
 #include "playback/live_audition.hpp"
 #include "rig/pacer.hpp"
 #include "rig/rig_request.hpp"
@@ -32,9 +33,9 @@
 #include "ui/cli/experiment_terminal.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -313,7 +314,7 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
   run->add_option("--input", o->input, "USB rig: the accelerometer's audio input (by name)");
   run->add_option("--input-api", o->input_api, "USB rig: the audio back end of --input");
   run->add_option("--input-channel", o->input_channel, "USB rig: the accelerometer's input channel")
-      ->check(whole_in_range(1, 64, "a channel number"));
+      ->check(whole_in_range(1, playback::kMostOutputChannels, "a channel number"));
   run->add_option("--accelerometer", o->accelerometer, "USB rig: the accelerometer's m/s² at full scale")
       ->check(in_range(0.01, 1e6, "m/s² per full scale"));
   run->add_option("--instructions", o->instructions, "Instructions text for a new study (default: bundled)")

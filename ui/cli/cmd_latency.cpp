@@ -104,7 +104,7 @@ void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
                   "Device to record from, by name or a unique part (default: the output device)");
   cmd->add_option("--input-channel", o->input_channel,
                   "Input channel the impulses come back on (1-based)")
-      ->check(whole_in_range(1, 1024, "a channel number"));
+      ->check(whole_in_range(1, playback::kMostOutputChannels, "a channel number"));
   cmd->add_option("--impulses", o->impulses, "Impulses played per period")
       ->check(whole_in_range(1, 100000, "a number of impulses"));
   cmd->add_option("--interval", o->interval_ms,

@@ -90,7 +90,7 @@ void add_rig_source_options(CLI::App* cmd, RigOptions& o) {
                   "USB rig: the audio back end of --input (jack, alsa, pulse)");
   cmd->add_option("--input-channel", o.request.input_channel,
                   "USB rig: the accelerometer's input channel (1-based)")
-      ->check(whole_in_range(1, 64, "a channel number"));
+      ->check(whole_in_range(1, playback::kMostOutputChannels, "a channel number"));
   cmd->add_option(
          "--accelerometer", o.request.accelerometer_m_s2_per_full_scale,
          "USB rig: the accelerometer's m/s² at full scale (as `calibrate --accelerometer`)")

@@ -448,7 +448,8 @@ rig::RigRequest rig_request_of(const RigChoice& c) {
   request.usb_serial = c.usb_serial;
   request.input_api = c.input_api;
   request.input_device = c.input_device;
-  request.input_channel = static_cast<unsigned>(std::max(1, c.input_channel));
+  // Not clamped: 0 or less is refused by the rig's check, naming the field.
+  request.input_channel = static_cast<unsigned>(std::max(0, c.input_channel));
   return request;
 }
 
