@@ -7,21 +7,24 @@
 #include <cstdio>
 
 #include "model/design/tool_sound.hpp"
-#include "playback/audio_devices.hpp"
 #include "playback/actuator_store.hpp"
 #include "playback/alternation.hpp"
+#include "playback/audio_devices.hpp"
 #include "playback/audio_output.hpp"
 #include "playback/calibration_run.hpp"
 #include "playback/live_audition.hpp"
+#include "rig/pen/pen_clock.hpp"
 #include "rig/pen/pen_input.hpp"
 #include "rig/pen/pen_play.hpp"
 #include "rig/pen/stroke_recorder.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/device_json.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
-#include "ui/options/number_checks.hpp"
 #include "ui/cli/output.hpp"
+#include "ui/cli/stream_json.hpp"
 #include "ui/cli/stroke_options.hpp"
+#include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
 namespace {
@@ -35,6 +38,7 @@ struct AuditionOptions {
   std::string actuator;
   std::string pen, pen_name;           // a tablet's pen drives the engine instead of the stroke
   std::filesystem::path record_folder;  // with --pen: each recording's file goes there
+  std::filesystem::path json;           // the numbers printed, for a script
 };
 
 struct CalibrateOptions {
@@ -45,8 +49,9 @@ struct CalibrateOptions {
   std::filesystem::path output;
 };
 
-void devices() {
-  for (const auto& api : playback::list_devices()) std::printf("%s\n", playback::describe_devices(api).c_str());
+void devices(const std::filesystem::path& json) {
+  const auto apis = playback::list_devices();
+  for (const auto& api : apis) std::printf("%s\n", playback::describe_devices(api).c_str());
   std::string why;
   const auto tablets = rig::pen::list_tablets(&why);
   std::printf("pen tablets (choose with --pen NAME):%s\n", tablets.empty() ? (" none" + (why.empty() ? "" : " (" + why + ")")).c_str() : "");
@@ -55,11 +60,18 @@ void devices() {
                 t.model.empty() ? "" : (" (" + t.model + ")").c_str(), t.devnode.c_str(), t.width_mm, t.height_mm,
                 t.has_pressure ? "pressure" : "no pressure", t.has_tilt ? "tilt" : "no tilt");
   }
+  if (json.empty()) return;
+  nlohmann::json out = tablets_json(tablets, why);
+  out["audio"] = audio_devices_json(apis);
+  std::fflush(stdout);
+  write_json_file(json, out);
+  say_wrote(json);
 }
 
 // The engine follows the pen until --seconds pass or the tablet goes; each stroke on its own line,
 // and with --record each stroke of the session in one drawing file.
-void play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen, const AuditionOptions& o) {
+nlohmann::json play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen,
+                             const AuditionOptions& o) {
   const auto& t = pen.tablet();
   const auto& curve = pen.curve();
   std::printf("pen: \"%s\" (%.1f x %.1f mm); force from %s\n", t.name.c_str(), t.width_mm, t.height_mm,
@@ -76,8 +88,16 @@ void play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen, c
     pen.on_sample([r = recorder.get()](const rig::pen::PenSample& s, double force_n) { r->add(s, force_n); });
     std::printf("recording to %s\n", recorder->start().string().c_str());
   }
+  nlohmann::json strokes = nlohmann::json::array();
+  const double started_s = rig::pen::pen_clock_now_s();
   rig::pen::PenPlayEvents events;
-  events.stroke = [](const rig::pen::PenStrokeNote& note) {
+  events.stroke = [&strokes, started_s](const rig::pen::PenStrokeNote& note) {
+    strokes.push_back(
+        {{"stroke", note.stroke},
+         {"event", note.began ? "began" : "ended"},
+         {"why", note.began ? nlohmann::json(nullptr)
+                            : nlohmann::json(rig::pen::pen_stroke_end_name(note.why))},
+         {"at_s", note.time_s - started_s}});
     if (note.began) {
       std::printf("stroke %llu began\n", static_cast<unsigned long long>(note.stroke));
     } else {
@@ -86,17 +106,37 @@ void play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen, c
     }
     std::fflush(stdout);
   };
-  events.removed = [] { std::printf("the tablet was unplugged; the stroke ended there\n"); };
+  bool removed = false;
+  events.removed = [&removed] {
+    removed = true;
+    std::printf("the tablet was unplugged; the stroke ended there\n");
+  };
   const auto stats = rig::pen::play_pen(audition, pen, o.seconds, {}, events);
   pen.on_sample({});
+  nlohmann::json recording = nullptr;
   if (recorder) {
-    if (const auto summary = recorder->stop(); summary && summary->kept) say_wrote(summary->file);
+    if (const auto summary = recorder->stop(); summary && summary->kept) {
+      say_wrote(summary->file);
+      recording = summary->file.string();
+    }
   }
   const auto status = pen.status();
   std::printf("pen: %llu strokes, %llu contacts; report interval %.2f ms, speed lag %.2f ms; "
               "report to engine %.2f ms mean, %.2f ms worst\n",
               static_cast<unsigned long long>(stats.strokes), static_cast<unsigned long long>(stats.contacts),
               1e3 * status.report_interval_s, 1e3 * status.lag_s, 1e3 * stats.mean_post_s, 1e3 * stats.max_post_s);
+  return {{"tablet", t.name},
+          {"pressure_curve",
+           curve.is_default ? nlohmann::json(nullptr) : nlohmann::json(curve.file.string())},
+          {"stroke_events", strokes},
+          {"strokes", stats.strokes},
+          {"contacts", stats.contacts},
+          {"report_interval_s", status.report_interval_s},
+          {"speed_lag_s", status.lag_s},
+          {"report_to_engine_mean_s", stats.mean_post_s},
+          {"report_to_engine_max_s", stats.max_post_s},
+          {"tablet_removed", removed || stats.tablet_removed},
+          {"recording", recording}};
 }
 
 void audition(const AuditionOptions& o) {
@@ -126,12 +166,19 @@ void audition(const AuditionOptions& o) {
     pen = std::make_unique<rig::pen::PenStylus>(o.pen, o.pen_name);
   }
   const std::vector<std::string>& names = audition.names();
+  nlohmann::json result{{"tools", tools}, {"surface", o.stroke.surface}, {"modes", modes}};
+  result["actuator"] = nullptr;
   if (!o.actuator.empty()) {
     const auto calibration = playback::read_actuator_file(playback::find_actuator(o.actuator));
     const auto filter = audition.use_actuator(calibration, calibration.name);
     std::printf("actuator '%s' (calibrated %s): inverse filter flat to %.2f dB over %.0f-%.0f Hz\n",
                 calibration.name.c_str(), calibration.created.c_str(), filter.max_deviation_db,
                 calibration.design.band_low_hz, calibration.design.band_high_hz);
+    result["actuator"] = {{"name", calibration.name},
+                          {"created", calibration.created},
+                          {"max_deviation_db", filter.max_deviation_db},
+                          {"band_low_hz", calibration.design.band_low_hz},
+                          {"band_high_hz", calibration.design.band_high_hz}};
   }
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
 
@@ -141,29 +188,45 @@ void audition(const AuditionOptions& o) {
               names[0].c_str(), modes.c_str(), info.api.c_str(), info.device.c_str(),
               device.output_channel, info.sample_rate, info.period_frames,
               stroke.description.c_str());
+  result["stream"] = stream_json(info);
+  result["output_channel"] = device.output_channel;
+  result["stroke"] = stroke.description;
+  result["pen"] = nullptr;
+  result["switches"] = nlohmann::json::array();
+  result["device_lost_at_s"] = nlohmann::json::array();
   if (pen) {
-    play_with_pen(audition, *pen, o);
-    return;
+    result["pen"] = play_with_pen(audition, *pen, o);
+  } else {
+    playback::AlternationEvents events;
+    events.switched = [&names, &tools, &result](double t, std::size_t slot) {
+      std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
+      result["switches"].push_back({{"at_s", t}, {"tool", tools[slot]}});
+    };
+    events.device_lost = [&result](double t, const std::string& problem) {
+      std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, problem.c_str());
+      result["device_lost_at_s"].push_back(t);
+    };
+    playback::play_in_turn(audition, {seconds, o.switch_every}, events);
+    const auto e = audition.engine_stats();
+    const auto d = *audition.output_stats();
+    std::printf(
+        "played %.1f s: %llu callbacks; engine overruns %llu; callback median <= %.1f us, 99th "
+        "percentile <= %.1f us, max %.1f us; peak %.3f of full scale, %llu samples limited; "
+        "device underflows %llu, losses %llu, reconnects %llu\n",
+        seconds, static_cast<unsigned long long>(e.callbacks),
+        static_cast<unsigned long long>(e.overruns), 1e6 * e.callback_time_quantile(0.5),
+        1e6 * e.callback_time_quantile(0.99), 1e6 * e.max_callback_s, e.peak_output,
+        static_cast<unsigned long long>(e.limited_samples),
+        static_cast<unsigned long long>(d.output_underflows),
+        static_cast<unsigned long long>(d.losses), static_cast<unsigned long long>(d.reconnects));
+    result["seconds"] = seconds;
   }
-  playback::AlternationEvents events;
-  events.switched = [&names](double t, std::size_t slot) {
-    std::printf("%6.2f s: now %s\n", t, names[slot].c_str());
-  };
-  events.device_lost = [](double t, const std::string& problem) {
-    std::printf("%6.2f s: device lost (%s); waiting for it to return\n", t, problem.c_str());
-  };
-  playback::play_in_turn(audition, {seconds, o.switch_every}, events);
-  const auto e = audition.engine_stats();
-  const auto d = *audition.output_stats();
-  std::printf("played %.1f s: %llu callbacks; engine overruns %llu; callback median <= %.1f us, 99th "
-              "percentile <= %.1f us, max %.1f us; peak %.3f of full scale, %llu samples limited; "
-              "device underflows %llu, losses %llu, reconnects %llu\n",
-              seconds, static_cast<unsigned long long>(e.callbacks),
-              static_cast<unsigned long long>(e.overruns), 1e6 * e.callback_time_quantile(0.5),
-              1e6 * e.callback_time_quantile(0.99), 1e6 * e.max_callback_s, e.peak_output,
-              static_cast<unsigned long long>(e.limited_samples),
-              static_cast<unsigned long long>(d.output_underflows),
-              static_cast<unsigned long long>(d.losses), static_cast<unsigned long long>(d.reconnects));
+  if (o.json.empty()) return;
+  result["engine"] = engine_stats_json(audition.engine_stats());
+  result["device"] = output_stats_json(*audition.output_stats());
+  std::fflush(stdout);
+  write_json_file(o.json, result);
+  say_wrote(o.json);
 }
 
 void calibrate(const CalibrateOptions& o) {
@@ -188,9 +251,13 @@ void calibrate(const CalibrateOptions& o) {
 
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto* list = app.add_subcommand("devices", "List audio APIs and devices, and pen tablets (choose them by name)");
-  list->callback([global] {
+  auto devices_json = std::make_shared<std::filesystem::path>();
+  list->add_option("--json", *devices_json,
+                   "Also write the list as JSON to this file, for a script")
+      ->check(file_to_write());
+  list->callback([global, devices_json] {
     configure_logging(global->verbosity);
-    devices();
+    devices(*devices_json);
   });
 
   auto a = std::make_shared<AuditionOptions>();
@@ -214,6 +281,10 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   play->add_option("--record", a->record_folder,
                    "With --pen: record the strokes into this folder, in the paper's drawing format "
                    "(replay with `render --trajectory`)");
+  play->add_option("--json", a->json,
+                   "Also write what was played and measured (switches, engine and device counters, "
+                   "the pen's strokes) as JSON to this file, for a script")
+      ->check(file_to_write());
   play->callback([a, global] {
     configure_logging(global->verbosity);
     for (const auto& note : outside_measured_range(a->stroke)) spdlog::warn("{}", note);

@@ -10,6 +10,8 @@
 #include "ui/cli/commands.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/output.hpp"
+#include "ui/cli/stream_json.hpp"
 #include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
@@ -24,6 +26,7 @@ struct LatencyOptions {
   double interval_ms = 250.0;
   double level = 0.25;
   double threshold = 0.5;
+  std::filesystem::path json;
 };
 
 void print_latency_table(const std::vector<playback::RoundTripResult>& results) {
@@ -82,6 +85,14 @@ void latency(const LatencyOptions& o) {
         spdlog::info("latency: period {} measured ({} of {})", r.stream.period_frames, done, total);
       });
   print_latency_table(results);
+  if (o.json.empty()) return;
+  std::fflush(stdout);
+  write_json_file(o.json, {{"impulses", o.impulses},
+                           {"interval_ms", o.interval_ms},
+                           {"level", o.level},
+                           {"threshold", o.threshold},
+                           {"periods", round_trips_json(results)}});
+  say_wrote(o.json);
 }
 
 }  // namespace
@@ -115,6 +126,8 @@ void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--threshold", o->threshold,
                   "Normalised correlation with the played pulse an impulse needs to count as found")
       ->check(in_range(0.01, 1.0, "a correlation in (0, 1]"));
+  cmd->add_option("--json", o->json, "Also write the table as JSON to this file, for a script")
+      ->check(file_to_write());
   cmd->footer(
       "Each impulse is a 255-sample maximum-length sequence; it is found where its normalised\n"
       "cross-correlation with the input peaks after it was played. One whose peak stays under\n"

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -26,7 +28,6 @@ TEST(AudioCli, RenderWritesTheToolOverTheSweepToAWav) {
                             "--seconds", "1", "-o", (out / "cryon.wav").string()});
   const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
-  EXPECT_NE(text.find("cryon on office"), std::string::npos) << text;
   SF_INFO info{};
   SNDFILE* f = sf_open((out / "cryon.wav").c_str(), SFM_READ, &info);
   ASSERT_NE(f, nullptr);
@@ -75,21 +76,57 @@ TEST(AudioCli, RenderNamesWhatTheCatalogHasWhenAPairingIsMissing) {
   EXPECT_NE(text.find("office"), std::string::npos) << text;
 }
 
+// The switches of an audition as its --json lists them: the tool heard from each.
+std::vector<std::string> switched_to(const nlohmann::json& audition) {
+  std::vector<std::string> tools;
+  for (const auto& s : audition.at("switches")) tools.push_back(s.at("tool").get<std::string>());
+  return tools;
+}
+
 TEST(AudioCli, DevicesAndAuditionUseTheJackServerByName) {
   nibrig::testing::JackServer server;
-  ::testing::internal::CaptureStdout();
-  ASSERT_EQ(run_cli({"devices"}), 0);
-  const std::string list = ::testing::internal::GetCapturedStdout();
-  EXPECT_NE(list.find("'system': 2 out, 2 in"), std::string::npos) << list;
+  const auto out = nibrig::test::scratch_dir("cli_devices");
+  ASSERT_EQ(run_cli({"devices", "--json", (out / "devices.json").string()}), 0);
+  const auto devices = test::read_json(out / "devices.json");
+  const nlohmann::json* jack = nullptr;
+  for (const auto& api : devices.at("audio"))
+    if (api.at("api") == "jack") jack = &api;
+  ASSERT_NE(jack, nullptr) << devices.dump(1);
+  EXPECT_TRUE(jack->at("available").get<bool>());
+  // The test server's dummy driver: 2 playback and 2 capture ports, at its 48 kHz.
+  const nlohmann::json* found = nullptr;
+  for (const auto& d : jack->at("devices"))
+    if (d.at("name") == "system") found = &d;
+  ASSERT_NE(found, nullptr) << devices.dump(1);
+  const auto& system = *found;
+  EXPECT_EQ(system.at("output_channels"), 2);
+  EXPECT_EQ(system.at("input_channels"), 2);
+  EXPECT_EQ(system.at("sample_rates_hz"), nlohmann::json::array({48000}));
 
+  const auto json = out / "audition.json";
   ::testing::internal::CaptureStdout();
   const int code = run_cli({"audition", "--tool", "cryon", "--surface", "office", "--also", "stab",
-                            "--switch-every", "0.4", "--speed", "120", "--api", "jack",
-                            "--device", "sys", "--seconds", "1"});
+                            "--switch-every", "0.4", "--speed", "120", "--api", "jack", "--device",
+                            "sys", "--seconds", "1", "--json", json.string()});
   const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
-  EXPECT_NE(text.find("now stab on office"), std::string::npos) << text;
-  EXPECT_NE(text.find("engine overruns"), std::string::npos) << text;
+  const auto audition = test::read_json(json);
+  EXPECT_EQ(audition.at("tools"), nlohmann::json::array({"cryon", "stab"}));
+  EXPECT_EQ(audition.at("stream").at("device"), "system");
+  EXPECT_EQ(audition.at("stream").at("sample_rate_hz"), 48000);
+  // Switches at 0.4 and 0.8 s of a 1 s run; the loop looks every 50 ms, so a loaded machine may
+  // see the second late but never before its time.
+  const auto tools = switched_to(audition);
+  ASSERT_GE(tools.size(), 1u) << audition.dump(1);
+  EXPECT_EQ(tools[0], "stab");
+  EXPECT_GE(audition["switches"][0].at("at_s").get<double>(), 0.4);
+  // The engine ran: callbacks of the server's periods, about a second of frames. The dummy driver
+  // keeps wall time; half a second either way allows a loaded machine's late start and end.
+  const auto& engine = audition.at("engine");
+  EXPECT_GT(engine.at("callbacks").get<double>(), 0);
+  EXPECT_NEAR(engine.at("frames").get<double>() / 48000.0, 1.0, 0.5) << engine.dump();
+  EXPECT_EQ(engine.at("non_finite_samples"), 0);
+  EXPECT_EQ(audition.at("device").at("losses"), 0);
 }
 
 // What audition plays reaches the device: an independent JACK client records its port while it
@@ -98,9 +135,11 @@ TEST(AudioCli, AuditionIsHeardOnTheJackPortWhileItSwitchesTools) {
   nibrig::testing::JackServer server;
   playback::testing::JackRecorder ear("audition-ear", 1, 48000);  // 1 s
   ::testing::internal::CaptureStdout();
-  const pid_t pid = test::start_cli({"audition", "--tool", "cryon", "--surface", "office", "--also",
-                                     "stab", "--switch-every", "0.5", "--speed", "120", "--api",
-                                     "jack", "--device", "sys", "--seconds", "3"});
+  const auto json = nibrig::test::scratch_dir("cli_audition_heard") / "audition.json";
+  const pid_t pid =
+      test::start_cli({"audition", "--tool", "cryon", "--surface", "office", "--also", "stab",
+                       "--switch-every", "0.5", "--speed", "120", "--api", "jack", "--device",
+                       "sys", "--seconds", "3", "--json", json.string()});
   // The port appears once the stream is open, after the stylus's modes are solved or read.
   bool connected = false;
   for (int i = 0; i < 3000 && !connected; ++i) {
@@ -112,8 +151,10 @@ TEST(AudioCli, AuditionIsHeardOnTheJackPortWhileItSwitchesTools) {
   const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
   ASSERT_TRUE(connected) << "the audition's JACK port never appeared";
-  EXPECT_NE(text.find("now stab on office"), std::string::npos) << text;
-  EXPECT_NE(text.find("now cryon on office"), std::string::npos) << text;  // and back
+  // Every 0.5 s of 3 s: to stab, back to cryon, and so on (a late loop may miss the last).
+  const auto tools = switched_to(test::read_json(json));
+  ASSERT_GE(tools.size(), 2u) << text;
+  for (std::size_t i = 0; i < tools.size(); ++i) EXPECT_EQ(tools[i], i % 2 == 0 ? "stab" : "cryon");
   float peak = 0.0f;
   for (std::size_t i = 0; i < ear.recorded(); ++i) peak = std::max(peak, std::abs(ear.samples(0)[i]));
   EXPECT_GT(ear.recorded(), 24000u);  // at least half a second of the run was heard

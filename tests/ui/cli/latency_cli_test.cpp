@@ -3,11 +3,10 @@
 // ports a cycle later, so the command connects to it like to a sound card with a cable looped.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <sstream>
 #include <string>
 
 #include "tests/support/jack_server.hpp"
+#include "tests/support/test_paths.hpp"
 #include "tests/ui/cli/cli_harness.hpp"
 
 namespace nibrig::ui::cli {
@@ -15,53 +14,39 @@ namespace {
 
 using test::run_cli;
 
-struct LatencyRow {
-  unsigned period = 0, found = 0, played = 0;
-  double mean_ms = -1, sd_ms = -1, worst_ms = -1, mean_samples = -1;
-};
-
-// The table's row for one stream, or a row of -1 when there is none.
-LatencyRow latency_row(const std::string& text) {
-  std::istringstream lines(text);
-  std::string line;
-  LatencyRow row;
-  while (std::getline(lines, line)) {
-    char api[16], out[64], in[64];
-    unsigned rate = 0;
-    if (std::sscanf(line.c_str(), "%15s %63s %63s %u %u %u/%u %lf %lf %lf %lf", api, out, in, &rate,
-                    &row.period, &row.found, &row.played, &row.mean_ms, &row.sd_ms, &row.worst_ms,
-                    &row.mean_samples) == 11 &&
-        std::string(api) == "jack")
-      return row;
-  }
-  return LatencyRow{};
-}
-
 TEST(LatencyCliJack, MeasuresTheLoopbackDriversCycleAndRtAudiosPeriod) {
   nibrig::testing::JackServer server({48000, 128, 2});
+  const auto json = nibrig::test::scratch_dir("cli_latency") / "latency.json";
   ::testing::internal::CaptureStdout();
   const int code = run_cli({"latency", "--api", "jack", "--device", "loopback", "--impulses", "10",
-                            "--interval", "100", "--period", "128"});
+                            "--interval", "100", "--period", "128", "--json", json.string()});
   const std::string text = ::testing::internal::GetCapturedStdout();
   ASSERT_EQ(code, 0) << text;
-  const LatencyRow row = latency_row(text);
-  EXPECT_EQ(row.period, 128u) << text;
-  EXPECT_EQ(row.played, 10u) << text;
+  const auto result = test::read_json(json);
+  ASSERT_EQ(result.at("periods").size(), 1u) << result.dump(1);
+  const auto& row = result["periods"][0];
+  EXPECT_EQ(row.at("stream").at("api"), "jack");
+  EXPECT_EQ(row.at("stream").at("period_frames"), 128);
+  EXPECT_EQ(row.at("played"), 10);
+  ASSERT_TRUE(row.at("mean_samples").is_number()) << row.dump();
+  const double mean = row["mean_samples"].get<double>();
+  const double worst_ms = row.at("worst_ms").get<double>();
   // One cycle in the loopback driver and one period in RtAudio's JACK back end: 256 frames, 5.333
   // ms (round_trip_run_test). An xrun may hand a block a cycle late or spoil it, so with xruns
   // reported one impulse of the ten may be missing or a period later: the mean within 12.8 frames,
   // the worst within one period.
-  if (text.find("xrun") == std::string::npos) {
-    EXPECT_EQ(row.found, 10u) << text;
-    EXPECT_NEAR(row.mean_samples, 256.0, 0.05) << text;
-    EXPECT_NEAR(row.worst_ms, 256.0 / 48.0, 0.001) << text;
+  if (row.at("xruns") == 0) {
+    EXPECT_EQ(row.at("found"), 10) << row.dump();
+    EXPECT_NEAR(mean, 256.0, 0.05) << row.dump();
+    EXPECT_NEAR(worst_ms, 256.0 / 48.0, 0.001) << row.dump();
   } else {
-    EXPECT_GE(row.found, 9u) << text;
-    EXPECT_GE(row.mean_samples, 256.0) << text;
-    EXPECT_LE(row.mean_samples, 256.0 + 12.8) << text;
-    EXPECT_LE(row.worst_ms, 384.0 / 48.0 + 0.001) << text;
+    EXPECT_GE(row.at("found").get<int>(), 9) << row.dump();
+    EXPECT_GE(mean, 256.0) << row.dump();
+    EXPECT_LE(mean, 256.0 + 12.8) << row.dump();
+    EXPECT_LE(worst_ms, 384.0 / 48.0 + 0.001) << row.dump();
   }
-  EXPECT_NEAR(row.mean_ms, row.mean_samples / 48.0, 0.001) << text;
+  // The same round trip in both units at the stream's 48 kHz; 1e-9 ms allows the arithmetic.
+  EXPECT_NEAR(row.at("mean_ms").get<double>(), mean / 48.0, 1e-9) << row.dump();
 }
 
 TEST(LatencyCliJack, AnUnknownInputDeviceIsNamedWithTheDevicesThereAre) {
