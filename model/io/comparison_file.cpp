@@ -61,28 +61,34 @@ void write_comparison_file(const ComparisonFile& c, const std::filesystem::path&
          {"simulated_weighted_mean", number_or_null(b.simulated_weighted_mean)},
          {"weighted_mean_log10_difference", number_or_null(b.weighted_mean_log10_difference)}});
   }
-  const json j = {{"format", kComparisonFormat},
-                  {"version", kComparisonVersion},
-                  {"tool", c.tool},
-                  {"surface", c.surface},
-                  {"spectrogram",
-                   {{"sample_rate_hz", c.sample_rate_hz},
-                    {"segment_length", c.segment_length},
-                    {"hop", c.hop},
-                    {"window", c.window}}},
-                  {"band_hz", {c.band_min_hz, c.band_max_hz}},
-                  {"speed_bins", bins},
-                  {"overall",
-                   {{"bins_with_rows", c.bins_with_rows},
-                    {"rows", c.rows},
-                    {"rows_outside_speed_range", c.rows_outside_speed_range},
-                    {"mean_lsd_db", number_or_null(c.mean_lsd_db)},
-                    {"mean_weighted_mean_log10_difference",
-                     number_or_null(c.mean_weighted_mean_log10_difference)}}},
-                  {"capture",
-                   {{"rows_analysed", c.rows_analysed},
-                    {"rows_without_speed", c.rows_without_speed},
-                    {"blocks_dropped", c.blocks_dropped}}}};
+  json j = {{"format", kComparisonFormat},
+            {"version", kComparisonVersion},
+            {"tool", c.tool},
+            {"surface", c.surface},
+            {"spectrogram",
+             {{"sample_rate_hz", c.sample_rate_hz},
+              {"segment_length", c.segment_length},
+              {"hop", c.hop},
+              {"window", c.window}}},
+            {"band_hz", {c.band_min_hz, c.band_max_hz}},
+            {"speed_bins", bins},
+            {"overall",
+             {{"bins_with_rows", c.bins_with_rows},
+              {"rows", c.rows},
+              {"rows_outside_speed_range", c.rows_outside_speed_range},
+              {"mean_lsd_db", number_or_null(c.mean_lsd_db)},
+              {"mean_weighted_mean_log10_difference",
+               number_or_null(c.mean_weighted_mean_log10_difference)}}},
+            {"capture",
+             {{"rows_analysed", c.rows_analysed},
+              {"rows_without_speed", c.rows_without_speed},
+              {"blocks_dropped", c.blocks_dropped}}}};
+  j["actuator"] = nullptr;
+  if (c.actuator)
+    j["actuator"] = {{"contacts", c.actuator->contacts},
+                     {"follow_mean_ms", c.actuator->follow_mean_s * 1e3},
+                     {"follow_max_ms", c.actuator->follow_max_s * 1e3},
+                     {"period_ms", c.actuator->period_s * 1e3}};
   write_file_atomically(file, json_text(j, file));
 }
 
@@ -145,6 +151,17 @@ ComparisonFile read_comparison_file(const std::filesystem::path& file) {
   c.rows_analysed = r.count(capture, "rows_analysed", "capture");
   c.rows_without_speed = r.count(capture, "rows_without_speed", "capture");
   c.blocks_dropped = r.count(capture, "blocks_dropped", "capture");
+
+  // Files written before the actuator was recorded have no such member.
+  if (const auto a = root.find("actuator"); a != root.end() && !a->is_null()) {
+    jf::as_object(*a, file, "actuator");
+    ComparisonActuator actuator;
+    actuator.contacts = r.count(*a, "contacts", "actuator");
+    actuator.follow_mean_s = r.number(*a, "follow_mean_ms", "actuator") / 1e3;
+    actuator.follow_max_s = r.number(*a, "follow_max_ms", "actuator") / 1e3;
+    actuator.period_s = r.number(*a, "period_ms", "actuator") / 1e3;
+    c.actuator = actuator;
+  }
   return c;
 }
 

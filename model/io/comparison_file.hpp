@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,13 @@ struct ComparisonBin {
   double weighted_mean_log10_difference = 0.0;  // log10(simulated / measured)
 };
 
+// How the actuator followed the turntable while it played the simulation (`--play`).
+struct ComparisonActuator {
+  std::uint64_t contacts = 0;                      // contact frames its blocks applied
+  double follow_mean_s = 0.0, follow_max_s = 0.0;  // from a frame's arrival to the engine
+  double period_s = 0.0;                           // the actuator stream's period, for scale
+};
+
 struct ComparisonFile {
   std::string tool, surface;
   // The spectrograms the comparison was made of.
@@ -37,6 +45,7 @@ struct ComparisonFile {
   double mean_lsd_db = 0.0, mean_weighted_mean_log10_difference = 0.0;
   // What the capture lost: rows without any speed sample, blocks the analysis never saw.
   std::uint64_t rows_analysed = 0, rows_without_speed = 0, blocks_dropped = 0;
+  std::optional<ComparisonActuator> actuator;  // none when nothing played the simulation
 };
 
 // Whole or not at all (write_file_atomically); std::runtime_error naming the file when it cannot.

@@ -24,6 +24,7 @@
 #include "rig/usb/usb_protocol.hpp"
 #include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/device_json.hpp"
 #include "ui/cli/device_options.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/interrupt_scope.hpp"
@@ -187,13 +188,17 @@ std::unique_ptr<rig::ActuatorPlayer> play_on_actuator(const RigOptions& o, const
   return player;
 }
 
-void report_following(const rig::ActuatorPlayer& player) {
+model::io::ComparisonActuator report_following(const rig::ActuatorPlayer& player) {
   const rig::FollowLatency l = player.latency();
   const auto info = *player.stream_info();
-  std::printf("actuator followed %llu contacts: from frame to engine mean %.2f ms, max %.2f ms "
-              "(one period is %.2f ms)\n",
-              static_cast<unsigned long long>(l.contacts), l.mean_s * 1e3, l.max_s * 1e3,
-              1e3 * info.period_frames / info.sample_rate);
+  const model::io::ComparisonActuator following{
+      l.contacts, l.mean_s, l.max_s, static_cast<double>(info.period_frames) / info.sample_rate};
+  std::printf(
+      "actuator followed %llu contacts: from frame to engine mean %.2f ms, max %.2f ms "
+      "(one period is %.2f ms)\n",
+      static_cast<unsigned long long>(l.contacts), l.mean_s * 1e3, l.max_s * 1e3,
+      1e3 * following.period_s);
+  return following;
 }
 
 void print_record(const rig::CaptureResult& result, const rig::RigDescription& d) {
@@ -286,12 +291,13 @@ void compare(const RigOptions& o) {
   };
   const rig::ComparisonRun run = start->run(hooks);
   print_record(run.capture, rig.description());
-  if (player) report_following(*player);
+  model::io::ComparisonFile report = start->report(run);
+  if (player) report.actuator = report_following(*player);
   print_comparison_table(run.table);
   std::fflush(stdout);
 
   const auto json = o.output / "comparison.json";
-  model::io::write_comparison_file(start->report(run), json);
+  model::io::write_comparison_file(report, json);
   const auto png = o.output / "comparison.png";
   write_comparison_figure(
       run, start->measured_tool() + " on " + start->surface() + " against " + simulated.name, png);
@@ -302,19 +308,26 @@ void compare(const RigOptions& o) {
     throw Interrupted("the capture was stopped; the comparison covers what it recorded");
 }
 
-void list_rig_controllers() {
+void list_rig_controllers(const std::filesystem::path& json) {
   const auto controllers = rig::usb::list_rig_controllers();
   std::printf("rig controllers (USB %04x:%04x):%s\n", rig::usb::kVendorId, rig::usb::kProductId,
               controllers.empty() ? " none found" : "");
   for (const auto& c : controllers) std::printf("  %s\n", rig::usb::describe(c).c_str());
   // A board whose reset was just pressed waits in its bootloader for `rig flash --port`.
-  if (const auto waiting = rig::usb::bootloader_ports(); !waiting.empty()) {
+  const auto waiting = rig::usb::bootloader_ports();
+  if (!waiting.empty()) {
     std::printf("bootloaders waiting for an upload (`nibrig rig flash --port PORT`):\n");
     for (const auto& p : waiting) std::printf("  %s\n", rig::usb::describe(p).c_str());
   }
   std::printf("audio inputs (an accelerometer on an input channel):\n");
-  for (const auto& api : playback::list_devices())
-    std::printf("%s\n", playback::describe_devices(api).c_str());
+  const auto apis = playback::list_devices();
+  for (const auto& api : apis) std::printf("%s\n", playback::describe_devices(api).c_str());
+  if (json.empty()) return;
+  std::fflush(stdout);
+  write_json_file(json, {{"controllers", rig_controllers_json(controllers)},
+                         {"bootloaders", serial_ports_json(waiting)},
+                         {"audio", audio_devices_json(apis)}});
+  say_wrote(json);
 }
 
 }  // namespace
@@ -326,9 +339,12 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
   rig_cmd->require_subcommand(1);
 
   auto* list = rig_cmd->add_subcommand("devices", "USB rig controllers and audio inputs, by name");
-  list->callback([global] {
+  auto list_json = std::make_shared<std::filesystem::path>();
+  list->add_option("--json", *list_json, "Also write the list as JSON to this file, for a script")
+      ->check(file_to_write());
+  list->callback([global, list_json] {
     configure_logging(global->verbosity);
-    list_rig_controllers();
+    list_rig_controllers(*list_json);
   });
 
   auto capture_options = std::make_shared<RigOptions>();

@@ -76,6 +76,32 @@ TEST(ComparisonFile, RoundTripsWithSpeedsInMillimetresPerSecondAndNullForMissing
   EXPECT_EQ(back.blocks_dropped, 2u);
 }
 
+TEST(ComparisonFile, TheActuatorsFollowingRoundTripsAndIsNullWithoutOne) {
+  const auto dir = nibrig::test::scratch_dir("comparison_file_actuator");
+  write_comparison_file(sample(), dir / "none.json");
+  std::ifstream none_in(dir / "none.json");
+  EXPECT_TRUE(nlohmann::json::parse(none_in).at("actuator").is_null());
+  EXPECT_FALSE(read_comparison_file(dir / "none.json").actuator.has_value());
+
+  ComparisonFile played = sample();
+  played.actuator = ComparisonActuator{1500, 0.0031, 0.0112, 256.0 / 48000.0};
+  write_comparison_file(played, dir / "played.json");
+  const auto back = read_comparison_file(dir / "played.json").actuator;
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->contacts, 1500u);
+  // Through ms and back: within a few ulp.
+  EXPECT_NEAR(back->follow_mean_s, 0.0031, 1e-15);
+  EXPECT_NEAR(back->follow_max_s, 0.0112, 1e-15);
+  EXPECT_NEAR(back->period_s, 256.0 / 48000.0, 1e-15);
+
+  // A file written before the member existed reads as one without an actuator.
+  std::ifstream in(dir / "played.json");
+  auto old = nlohmann::json::parse(in);
+  old.erase("actuator");
+  nibrig::test::write_text(dir / "old.json", old.dump());
+  EXPECT_FALSE(read_comparison_file(dir / "old.json").actuator.has_value());
+}
+
 TEST(ComparisonFile, RefusesOtherFormatsAndBrokenFieldsNamingThem) {
   const auto dir = nibrig::test::scratch_dir("comparison_file_bad");
   const auto file = dir / "comparison.json";
@@ -102,6 +128,9 @@ TEST(ComparisonFile, RefusesOtherFormatsAndBrokenFieldsNamingThem) {
   j = good;
   j["spectrogram"]["window"] = "kaiser";
   refuse(j, {"spectrogram.window", "kaiser"});
+  j = good;
+  j["actuator"] = {{"contacts", 3}, {"follow_mean_ms", "fast"}};
+  refuse(j, {"bad.json", "actuator.follow_mean_ms"});
   j = good;
   j["overall"].erase("mean_lsd_db");
   refuse(j, {"overall.mean_lsd_db"});
