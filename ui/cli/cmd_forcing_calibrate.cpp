@@ -24,6 +24,7 @@
 #include "model/measure/threshold_curve.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/elapsed.hpp"
+#include "ui/cli/forcing_calibration_json.hpp"
 #include "ui/cli/forcing_options.hpp"
 #include "ui/cli/knot_table.hpp"
 #include "ui/cli/logging.hpp"
@@ -36,11 +37,13 @@ namespace {
 
 namespace forcing = model::forcing;
 
-// What both verbs write: a file (-o) and a stored name (--save, --replace to write over one).
+// What both verbs write: a file (-o), a stored name (--save, --replace to write over one) and the
+// numbers printed (--json).
 struct CalibrationOutput {
   std::filesystem::path output;
   std::string save;
   bool replace = false;
+  std::filesystem::path json;
 };
 
 struct MaterialCalibrateOptions {
@@ -68,6 +71,9 @@ void add_calibration_output_options(CLI::App* cmd, CalibrationOutput& o) {
                   "(" +
                       forcing::forcing_store_folder().string() + ")");
   cmd->add_flag("--replace", o.replace, "With --save: write over a model stored under that name");
+  cmd->add_option("--json", o.json,
+                  "Also write the numbers printed, as JSON, to this file (for scripts)")
+      ->check(file_to_write());
 }
 
 void write_calibration_outputs(const forcing::ForcingModel& model, const CalibrationOutput& o) {
@@ -80,6 +86,12 @@ void write_calibration_outputs(const forcing::ForcingModel& model, const Calibra
     say_wrote(forcing::save_forcing_model(o.save, model, o.replace));
     std::cout << fmt::format("stored as '{}': `--forcing {}` predicts with it\n", o.save, o.save);
   }
+}
+
+void write_calibration_numbers(const nlohmann::json& numbers, const CalibrationOutput& o) {
+  if (o.json.empty()) return;
+  write_json_file(o.json, numbers);
+  say_wrote(o.json);
 }
 
 // The measurement's repeatability from the catalog's prints recorded twice, when it has any.
@@ -136,13 +148,14 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
   const auto threshold = model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
   const forcing::MaterialCalibrationCheck check = forcing::check_material_calibration(
       inputs.exemplars, o.material, calibration_metres(o.tips_mm), {}, &threshold);
+  const double seconds = seconds_since(start);
   const auto& c = check.calibration;
   std::string tips;
   for (double d : o.tips_mm) tips += (tips.empty() ? "" : ", ") + fmt::format("{:g} mm", d);
   std::cout << fmt::format(
       "{} taken as new: the model fitted without it, its curve calibrated from its {} prints ({} "
       "exemplars), its other prints predicted; {:.2f} s\n",
-      o.material, tips, c.exemplars, seconds_since(start));
+      o.material, tips, c.exemplars, seconds);
   std::cout << repeatability_line(repeatability);
   std::cout << fmt::format("{:<12}{:<11}{:>11}{:>14}{:>10}{:>17}{:>9}\n", "tool", "surface",
                            "calibrated", "uncalibrated", "full fit", "full fit w/o it", "SE (dB)");
@@ -172,22 +185,25 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
             << knot_table_rows(o.material + " (fit of everything)", check.full_fit_log_gain, {},
                                kCalibrationLabelWidth)
             << calibration_uncertainty_note(c);
+  std::optional<forcing::MaterialStudy> study;
   if (check.predicted > 0) {
     // What each surface the calibration prints are measured on buys.
-    const forcing::MaterialStudy study = forcing::study_material_calibration(
-        inputs.exemplars, o.material, calibration_metres(o.tips_mm));
+    study = forcing::study_material_calibration(inputs.exemplars, o.material,
+                                                calibration_metres(o.tips_mm));
     std::cout << fmt::format(
         "the same prints measured on fewer surfaces (of the {} with every tip; mean over the sets "
         "of surfaces; more surfaces shrink the exemplars' part, only more prints the prints'):\n"
         "{:>9}{:>11}{:>16}{:>18}{:>15}\n",
-        study.surfaces.size(), "surfaces", "exemplars", "SE of m (dB)", "exemplars' part",
+        study->surfaces.size(), "surfaces", "exemplars", "SE of m (dB)", "exemplars' part",
         "predicted");
-    for (const auto& step : study.steps)
+    for (const auto& step : study->steps)
       std::cout << fmt::format("{:>9}{:>11}{:>16.2f}{:>18.2f}{:>15.2f}\n", step.surfaces,
                                step.exemplars, step.se_rms_db, step.within_se_rms_db,
                                step.prediction_rms_db);
   }
   write_calibration_outputs(c.model, o.out);
+  write_calibration_numbers(
+      material_check_json(check, study ? &*study : nullptr, mixes, seconds, repeatability), o.out);
 }
 
 // A lab's calibration against a model it has: the prints of the material at the tips asked for.
@@ -204,11 +220,15 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
   for (const auto& p : c.print_fits)
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (in sample)\n", p.tool, p.surface,
                              p.rms_db);
-  for (const auto& p : forcing::unused_print_errors(c.model, inputs.exemplars, o.material, prints))
+  const auto predicted =
+      forcing::unused_print_errors(c.model, inputs.exemplars, o.material, prints);
+  for (const auto& p : predicted)
     std::cout << fmt::format("  {:<12}{:<11}{:>8.2f} dB (predicted){}\n", p.tool, p.surface,
                              p.rms_db, versus_repeatability(p.rms_db, repeatability));
   std::cout << calibrated_curve_rows(c) << calibration_uncertainty_note(c);
   write_calibration_outputs(c.model, o.out);
+  write_calibration_numbers(material_calibration_json(c, tips, file, predicted, repeatability),
+                            o.out);
 }
 
 // The catalog's prints; against a model, on its grid (a lab's recordings have their own).
@@ -243,10 +263,11 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
   const auto start = std::chrono::steady_clock::now();
   const forcing::SurfaceStudy study =
       forcing::study_surface_calibration(inputs.exemplars, o.surface, o.subsets);
+  const double seconds = seconds_since(start);
   std::cout << fmt::format(
       "{} taken as new: the model fitted without it, its forcing calibrated from k of its {} "
       "tools, the others predicted; {:.2f} s\n",
-      o.surface, study.tools.size(), seconds_since(start));
+      o.surface, study.tools.size(), seconds);
   std::cout << repeatability_line(repeatability);
   std::cout << fmt::format("{:>6}{:>9}{:>16}{:>14}{:>16}\n", "tools", "subsets", "SE of F (dB)",
                            "predicted", "worst subset");
@@ -258,10 +279,12 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
       "the same tools under the model fitted on everything: {:.2f} dB, and without each tool "
       "{:.2f} dB\n",
       study.mean_full_fit_db, study.mean_full_loo_db);
-  std::optional<std::size_t> fewest;
+  SurfaceStudyFindings findings;
+  auto& fewest = findings.fewest_tools_se_within;
   if (repeatability) {
     fewest = study.fewest_tools_se_within(repeatability->rms_db);
-    const auto predicted = study.fewest_tools_within(repeatability->rms_db);
+    findings.fewest_tools_predicted_within = study.fewest_tools_within(repeatability->rms_db);
+    const auto& predicted = findings.fewest_tools_predicted_within;
     std::cout << (fewest ? fmt::format("the calibration's SE is within the repeatability from {} "
                                        "tools",
                                        *fewest)
@@ -275,6 +298,7 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
   }
   const std::size_t k = fewest.value_or(2);
   if (k <= study.steps.size()) {
+    findings.table_tools = k;
     const auto& step = study.steps[k - 1];
     std::cout << fmt::format(
         "each tool predicted from {} others (mean over the subsets leaving it "
@@ -286,17 +310,19 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
                                step.tool_rms_db[i], study.full_fit_rms_db[i],
                                study.full_loo_rms_db[i]);
   }
+  std::optional<forcing::SurfaceCalibration> written;
   if (!o.out.output.empty() || !o.out.save.empty()) {
     // What is written: the surface calibrated from the tools asked for (all, by default) against
     // the model fitted without it.
     const auto threshold =
         model::measure::ThresholdCurve::load(model::io::default_threshold_curve());
-    const auto c =
-        forcing::calibrate_held_out_surface(inputs.exemplars, o.surface, o.tools, &threshold);
+    written = forcing::calibrate_held_out_surface(inputs.exemplars, o.surface, o.tools, &threshold);
     std::cout << fmt::format("written: {} calibrated from {} tools, SE of F {:.2f} dB RMS\n",
-                             o.surface, c.tools.size(), c.rms_se_db);
-    write_calibration_outputs(c.model, o.out);
+                             o.surface, written->tools.size(), written->rms_se_db);
+    write_calibration_outputs(written->model, o.out);
+    findings.written = &*written;
   }
+  write_calibration_numbers(surface_study_json(study, findings, seconds, repeatability), o.out);
 }
 
 void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesystem::path& file,
@@ -314,6 +340,7 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesy
   for (const auto& t : c.tool_fits)
     std::cout << fmt::format("  {:<12}{:>8.2f} dB (in sample)\n", t.tool, t.rms_db);
   write_calibration_outputs(c.model, o.out);
+  write_calibration_numbers(surface_calibration_json(c, file, repeatability), o.out);
 }
 
 void run_calibrate_surface(const SurfaceCalibrateOptions& o) {
