@@ -2,6 +2,7 @@
 // surface (Sec. 6.2, Fig. 17) — along the line between two designs, or over the whole mix × tip
 // range — with the optimum, its distance, the runners-up and the path drawn in the space.
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <iostream>
@@ -16,11 +17,14 @@
 #include "model/design/stylus_export.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/catalog_file.hpp"
+#include "model/numeric/cancellation.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/space_inputs.hpp"
+#include "ui/cli/app.hpp"
 #include "ui/cli/commands.hpp"
 #include "ui/cli/design_reports.hpp"
 #include "ui/cli/forcing_options.hpp"
+#include "ui/cli/interrupt_scope.hpp"
 #include "ui/cli/logging.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
@@ -211,14 +215,21 @@ void run_design(const DesignOptions& o) {
   std::optional<Progress> bar;  // made with the first candidate, when the search's total is known
   const design::SearchProgress progress = [&](const design::Candidate& c, std::size_t,
                                               std::size_t total) {
-    if (!bar) bar.emplace("predicting designs", total);
+    if (!bar) {
+      spdlog::info("design search: {} designs to predict", total);
+      bar.emplace("predicting designs", total);
+    }
     bar->advance(design::to_string(c.point));
   };
+  InterruptScope interrupt;
   const auto searched = [&] {
     try {
-      return search.run(*inputs, {}, progress);
+      return search.run(*inputs, interrupt.token(), progress);
     } catch (const design::DesignSearchRefused& e) {  // a surface the forcing model lacks
       throw CLI::ValidationError(e.what());
+    } catch (const model::numeric::Cancelled&) {
+      bar.reset();
+      throw Interrupted("the design search was stopped; nothing was written");
     }
   }();
   bar.reset();  // ends the bar's line before the results, also when it stopped short of its total

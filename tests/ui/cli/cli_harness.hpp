@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -24,9 +25,11 @@ namespace nibrig::test {
 // Starts `nibrig args...` without waiting: its process id, for a test that signals it, then
 // wait_cli(pid). With `input`, its standard input is read from that file (a person's keys,
 // scripted); otherwise it inherits the test's. With `output`, its standard output goes to that
-// file (for a test that waits for a prompt); otherwise to the test's.
+// file (for a test that waits for a prompt); otherwise to the test's. `errors` does the same for
+// its standard error (for a test that waits for a log line).
 inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::path& input = {},
-                       const std::filesystem::path& output = {}) {
+                       const std::filesystem::path& output = {},
+                       const std::filesystem::path& errors = {}) {
   args.insert(args.begin(), NIBRIG_CLI_BINARY);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -38,6 +41,9 @@ inline pid_t start_cli(std::vector<std::string> args, const std::filesystem::pat
   posix_spawn_file_actions_init(&actions);
   if (!input.empty()) posix_spawn_file_actions_addopen(&actions, 0, input.c_str(), O_RDONLY, 0);
   if (!output.empty()) posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (!errors.empty())
+    posix_spawn_file_actions_addopen(&actions, 2, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
   pid_t pid = 0;
   const int e = posix_spawn(&pid, NIBRIG_CLI_BINARY, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -58,6 +64,12 @@ inline int wait_cli(pid_t pid) {
 
 // The exit code of `nibrig args...`; 128 + the signal when it was killed by one.
 inline int run_cli(std::vector<std::string> args) { return wait_cli(start_cli(std::move(args))); }
+
+// A file's whole text; empty when it cannot be read (yet).
+inline std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {
   std::ifstream in(path);

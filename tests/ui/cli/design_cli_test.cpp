@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "model/design/design_point.hpp"
 #include "model/io/catalog_file.hpp"
@@ -431,6 +434,36 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
     EXPECT_NE(refused_text.find(offered), std::string::npos) << offered << "\n" << refused_text;
   }
   EXPECT_FALSE(std::filesystem::exists(out / "no_mix" / "stylus.3mf"));
+}
+
+// Ctrl-C while a design search predicts its candidates: it stops at the next candidate, says so,
+// and writes neither the search file nor the export.
+TEST(DesignCli, CtrlCDuringTheSearchStopsItAndWritesNothing) {
+  const auto folder = nibrig::test::scratch_dir("cli_design_stopped");
+  const auto space_file = write_test_space(folder);
+  const auto said = folder / "said.txt";
+  const auto out = folder / "out";
+  std::filesystem::create_directories(out);
+  // -v logs the search's size when its first candidate is predicted: the search has begun.
+  const pid_t pid = nibrig::test::start_cli(
+      nibrig::test::with_coarse({"-v", "design", "--target", "cryon/office", "--surface", "office",
+                                 "--space", space_file.string(), "--between", "vero:1,tip=1mm",
+                                 "DM85:1,tip=4mm", "-o", (out / "search.json").string()}),
+      {}, {}, said);
+  bool searching = false;
+  for (int i = 0; i < 2400 && !searching; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    searching = nibrig::test::file_text(said).find("designs to predict") != std::string::npos;
+  }
+  ::kill(pid, SIGINT);
+  const int code = nibrig::test::wait_cli(pid);
+  const std::string errors = nibrig::test::file_text(said);
+  ASSERT_TRUE(searching) << "the search never began: " << errors;
+  // Stopped by the library at a candidate (exit 130 from the command), not killed by the signal.
+  EXPECT_EQ(code, 130) << errors;
+  EXPECT_NE(errors.find("nibrig: interrupted: the design search was stopped"), std::string::npos)
+      << errors;
+  EXPECT_TRUE(std::filesystem::is_empty(out));
 }
 
 }  // namespace
