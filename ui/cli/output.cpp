@@ -69,6 +69,24 @@ void refuse_outputs_that_are_inputs(CLI::App& command) {
     for (const std::string& value : option->results())
       (is_output ? outputs : inputs).emplace_back(option, value);
   }
+  // Two outputs on one file: the second would replace the first. A stream (-o /dev/stdout) takes
+  // both in turn, so only a regular file or a name not yet made counts.
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+      const auto& [first_option, first] = outputs[i];
+      const auto& [second_option, second] = outputs[j];
+      std::error_code status_error, first_error, second_error;
+      const auto status = std::filesystem::status(first, status_error);
+      if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) continue;
+      const auto first_path = std::filesystem::weakly_canonical(first, first_error);
+      const auto second_path = std::filesystem::weakly_canonical(second, second_error);
+      if (!first_error && !second_error && first_path == second_path)
+        throw CLI::ValidationError(second_option->get_name(),
+                                   second + ": is also " + first_option->get_name() +
+                                       " of this command; one would replace the other: choose "
+                                       "another file");
+    }
+  }
   for (const auto& [output_option, output] : outputs) {
     for (const auto& [input_option, input] : inputs) {
       std::error_code error;

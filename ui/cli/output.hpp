@@ -28,7 +28,8 @@ CLI::Validator file_to_write();
 
 // Refuses (CLI::ValidationError naming the option) an output option of `command` checked by
 // file_to_write() that names the same file as any other option's value or positional argument:
-// `space embed s.json cat.json -o cat.json` would replace the catalog it reads.
+// `space embed s.json cat.json -o cat.json` would replace the catalog it reads; and one of two
+// such outputs naming the same file (`-o m.json --json m.json`).
 void refuse_outputs_that_are_inputs(CLI::App& command);
 
 // "arm_vero_1_office.csv.gz" -> "arm_vero_1_office"; a session folder -> its name.

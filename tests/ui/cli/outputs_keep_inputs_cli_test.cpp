@@ -120,6 +120,25 @@ TEST(OutputsKeepInputsCli, AForcingFitOntoItsCatalogIsRefusedBeforeFitting) {
   EXPECT_LT(seconds, 5.0);
 }
 
+// `-o` and `--json` on one file: the numbers would replace the model. Refused while parsing, an
+// earlier file of that name kept.
+TEST(OutputsKeepInputsCli, TwoOutputsOnOneFileAreRefusedBeforeTheWork) {
+  const fs::path folder = nibrig::test::scratch_dir("cli_outputs_twice");
+  std::ofstream(folder / "m.json") << "a person's file";
+  const CliRun run =
+      quietly({"forcing", "calibrate-surface", "--surface", "paperlike", "-o",
+               (folder / "m.json").string(), "--json", (folder / "." / "m.json").string()});
+  EXPECT_EQ(run.code, 2) << run.errors;
+  EXPECT_NE(run.errors.find("--json"), std::string::npos) << run.errors;
+  EXPECT_NE(run.errors.find("--output"), std::string::npos) << run.errors;
+  EXPECT_EQ(bytes_of(folder / "m.json"), "a person's file");
+  // Two names not yet made are the same file too.
+  const CliRun fresh = quietly({"latency", "--json", (folder / "new.json").string(), "--json",
+                                (folder / "new.json").string()});
+  EXPECT_EQ(fresh.code, 2) << fresh.errors;
+  EXPECT_EQ(names_in(folder), std::vector<std::string>{"m.json"});
+}
+
 TEST(OutputsKeepInputsCli, ACatalogBuildOntoARecordingItScansIsRefusedBeforeTheAnalysis) {
   const fs::path data = nibrig::test::shared_data() / "piovarci2018" / "vibration" / "arm2";
   const fs::path folder = nibrig::test::scratch_dir("cli_outputs_catalog") / "c7";
