@@ -102,8 +102,11 @@ class DuplicateKeys {
 }  // namespace
 
 nlohmann::json parse_file(const std::filesystem::path& file) {
-  const std::string text =
-      read_bounded_file(file, kMaxJsonBytes, "a JSON file", "the bundled catalog is 1.3 MB");
+  return parse_text(
+      read_bounded_file(file, kMaxJsonBytes, "a JSON file", "the bundled catalog is 1.3 MB"), file);
+}
+
+nlohmann::json parse_text(const std::string& text, const std::filesystem::path& file) {
   if (std::all_of(text.begin(), text.end(),
                   [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) {
     throw FormatError(file, "", "empty file: expected a JSON object");

@@ -17,6 +17,8 @@ inline constexpr std::size_t kMaxJsonBytes = std::size_t{256} << 20;
 // catalog's spectra are the deepest, 6), and a file nested 100,000 deep took gigabytes to parse.
 inline constexpr std::size_t kMaxJsonDepth = 64;
 nlohmann::json parse_file(const std::filesystem::path& file);
+// The same checks on text already in memory (a pickled object's state); `file` names it in errors.
+nlohmann::json parse_text(const std::string& text, const std::filesystem::path& file);
 
 // "parent.key" and "parent[i]"; an empty parent gives "key".
 std::string member_path(const std::string& parent, const std::string& key);

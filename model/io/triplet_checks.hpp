@@ -23,7 +23,8 @@ std::optional<std::string> triplet_problem(const Triplet& triplet,
 
 // The readers with the response requirement made explicit (triplets.hpp has the public forms).
 TripletSet read_triplet_csv(const std::filesystem::path& file, Responses responses);
-TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses);
+TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses,
+                             const LagunasNames& names);
 
 class CsvHeader;
 // A header with the columns of a study session's responses.csv.

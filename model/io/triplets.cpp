@@ -151,8 +151,9 @@ void write_triplet_csv(const std::filesystem::path& file, const TripletSet& set)
 
 namespace {
 
-TripletSet read_any_triplets(const std::filesystem::path& file, Responses responses) {
-  if (file.extension() == ".json") return read_lagunas_json(file, responses);
+TripletSet read_any_triplets(const std::filesystem::path& file, Responses responses,
+                             const LagunasNames& names) {
+  if (file.extension() == ".json") return read_lagunas_json(file, responses, names);
   std::string first;
   {
     TextLineReader lines(file);
@@ -163,7 +164,8 @@ TripletSet read_any_triplets(const std::filesystem::path& file, Responses respon
     }
   }
   const std::size_t start = first.find_first_not_of(" \t\xEF\xBB\xBF");
-  if (start != std::string::npos && first[start] == '{') return read_lagunas_json(file, responses);
+  if (start != std::string::npos && first[start] == '{')
+    return read_lagunas_json(file, responses, names);
   const CsvHeader header(first, file, 1, kTripletHeader);
   if (header.find("Center") && header.find("Answer")) return read_salmon_csv(file);
   if (is_response_log_header(header)) return read_response_log_triplets(file);
@@ -179,12 +181,12 @@ TripletSet read_any_triplets(const std::filesystem::path& file, Responses respon
 
 }  // namespace
 
-TripletSet read_triplets(const std::filesystem::path& file) {
-  return read_any_triplets(file, Responses::required);
+TripletSet read_triplets(const std::filesystem::path& file, const LagunasNames& names) {
+  return read_any_triplets(file, Responses::required, names);
 }
 
-TripletSet read_triplet_queries(const std::filesystem::path& file) {
-  return read_any_triplets(file, Responses::optional);
+TripletSet read_triplet_queries(const std::filesystem::path& file, const LagunasNames& names) {
+  return read_any_triplets(file, Responses::optional, names);
 }
 
 }  // namespace nibrig::model::io

@@ -36,10 +36,18 @@ TripletSet read_triplet_csv(const std::filesystem::path& file);
 // `file` and the triplet) for an invalid set or a name the format cannot hold (',', line breaks).
 void write_triplet_csv(const std::filesystem::path& file, const TripletSet& set);
 
+// What Lagunas' numbered stimuli are called: `names` (id k is names[k]) when given; else, with
+// `beside_file`, material_names_sorted.txt beside the JSON when present (line k names id k-1; the
+// command line's convention); else the ids as text "0", "1", ... The Python module passes its
+// `names` argument and never looks beside the file.
+struct LagunasNames {
+  std::vector<std::string> names;
+  bool beside_file = true;
+};
+
 // Lagunas et al. 2019: answers[i] = [reference, candidate1, candidate2] (ids 0-99), agreement[i] =
-// [times candidate1 chosen, times candidate2 chosen]. Names come from material_names_sorted.txt
-// beside the file when present (line k names id k-1), else the ids as text "0", "1", ...
-TripletSet read_lagunas_json(const std::filesystem::path& file);
+// [times candidate1 chosen, times candidate2 chosen], the ids named as `names` says.
+TripletSet read_lagunas_json(const std::filesystem::path& file, const LagunasNames& names = {});
 
 // Salmon responses.csv: one row per response; reference = Center, a = Left, b = Right, the counts
 // say which one was the Answer, observer = Participant.ID. Stimuli are the item names, sorted.
@@ -52,11 +60,11 @@ TripletSet read_response_log_triplets(const std::filesystem::path& file);
 // Any of the above, told apart by content: a JSON object is Lagunas', a CSV header with Center and
 // Answer is Salmon's, one with reference,left,right,chosen a study's log, one with reference,a,b
 // ours.
-TripletSet read_triplets(const std::filesystem::path& file);
+TripletSet read_triplets(const std::filesystem::path& file, const LagunasNames& names = {});
 
 // The same formats read as triplets to predict (`nibrig space predict`): counts are not used, so a
 // triplet with no response (both counts 0) is accepted and our CSV may leave out count_a and
 // count_b (read as 0); everything else is checked as above.
-TripletSet read_triplet_queries(const std::filesystem::path& file);
+TripletSet read_triplet_queries(const std::filesystem::path& file, const LagunasNames& names = {});
 
 }  // namespace nibrig::model::io

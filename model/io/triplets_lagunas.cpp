@@ -45,11 +45,12 @@ std::vector<std::string> read_names(const std::filesystem::path& file) {
 
 }  // namespace
 
-TripletSet read_lagunas_json(const std::filesystem::path& file) {
-  return read_lagunas_json(file, Responses::required);
+TripletSet read_lagunas_json(const std::filesystem::path& file, const LagunasNames& names) {
+  return read_lagunas_json(file, Responses::required, names);
 }
 
-TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses) {
+TripletSet read_lagunas_json(const std::filesystem::path& file, Responses responses,
+                             const LagunasNames& given) {
   using namespace json_fields;
   const nlohmann::json json = parse_file(file);
   const nlohmann::json& answers = as_array(member(json, "answers", file, ""), file, "answers");
@@ -65,12 +66,24 @@ TripletSet read_lagunas_json(const std::filesystem::path& file, Responses respon
   set.source = file;
   const std::filesystem::path names_file = file.parent_path() / kNamesFile;
   std::error_code ec;
-  const bool named = std::filesystem::is_regular_file(names_file, ec);
-  if (named) set.stimuli = read_names(names_file);
+  const bool beside =
+      given.names.empty() && given.beside_file && std::filesystem::is_regular_file(names_file, ec);
+  const bool named = beside || !given.names.empty();
+  if (beside) set.stimuli = read_names(names_file);
+  if (!given.names.empty()) {
+    std::unordered_set<std::string> seen;
+    for (const auto& name : given.names)
+      if (!seen.insert(name).second)
+        throw std::invalid_argument("names: " + in_quotes(name) +
+                                    " is given twice; expected one name per stimulus id");
+    set.stimuli = given.names;
+  }
   const long long max_id =
       named ? static_cast<long long>(set.stimuli.size()) - 1 : kMaxIdWithoutNames;
   const std::string id_range_reason =
-      named ? " (" + std::to_string(set.stimuli.size()) + " names in " + kNamesFile + ")" : "";
+      beside  ? " (" + std::to_string(set.stimuli.size()) + " names in " + kNamesFile + ")"
+      : named ? " (" + std::to_string(set.stimuli.size()) + " names given)"
+              : "";
 
   long long largest = -1;
   set.triplets.reserve(answers.size());

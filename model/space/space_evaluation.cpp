@@ -45,13 +45,18 @@ Validation validate_space_file(const std::filesystem::path& judgments,
                                const std::filesystem::path& descriptors,
                                const DimensionScanOptions& scan,
                                const numeric::Progress& progress) {
+  return validate_space(io::read_triplets(judgments), descriptors, scan, progress);
+}
+
+Validation validate_space(io::TripletSet judgments, const std::filesystem::path& descriptors,
+                          const DimensionScanOptions& scan, const numeric::Progress& progress) {
   if (scan.dims.empty() || scan.lambdas.empty() || scan.models.empty())
     throw std::invalid_argument("a validation needs at least one number of dimensions, weight and model");
   const double max_lambda = *std::max_element(scan.lambdas.begin(), scan.lambdas.end());
   const std::size_t max_dims = *std::max_element(scan.dims.begin(), scan.dims.end());
   if (max_lambda > 0 && descriptors.empty())
     throw std::invalid_argument("weights (lambdas) above 0 need a catalog of descriptors");
-  const SpaceInputs in = read_space_inputs(judgments, {}, max_dims, 0.0);
+  const SpaceInputs in = space_inputs(std::move(judgments), {}, max_dims, 0.0);
   std::optional<io::Catalog> catalog;
   if (!descriptors.empty()) catalog = io::read_catalog(descriptors);
   std::function<Eigen::MatrixXd(std::size_t)> descriptor_table;

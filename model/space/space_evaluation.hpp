@@ -43,5 +43,8 @@ Validation validate_space_file(const std::filesystem::path& judgments,
                                const std::filesystem::path& descriptors,
                                const DimensionScanOptions& scan,
                                const numeric::Progress& progress = {});
+// The same on judgments already read (or made from arrays).
+Validation validate_space(io::TripletSet judgments, const std::filesystem::path& descriptors,
+                          const DimensionScanOptions& scan, const numeric::Progress& progress = {});
 
 }  // namespace nibrig::model::space

@@ -165,7 +165,7 @@ DescriptorMap read_map(const nlohmann::json& j, const std::filesystem::path& fil
 
 }  // namespace
 
-void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
+std::string space_file_text(const SpaceFile& s, const std::filesystem::path& file) {
   nlohmann::json coordinates = nlohmann::json::array();
   for (Eigen::Index i = 0; i < s.coordinates.cols(); ++i) {
     std::vector<double> point(s.coordinates.col(i).data(),
@@ -208,11 +208,27 @@ void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
                         {"levels", s.region_levels},
                         {"regions", regions}};
   }
-  io::write_file_atomically(file, io::json_text(out, file));
+  return io::json_text(out, file);
 }
 
+void write_space_file(const std::filesystem::path& file, const SpaceFile& s) {
+  io::write_file_atomically(file, space_file_text(s, file));
+}
+
+namespace {
+SpaceFile space_from_json(const nlohmann::json& root, const std::filesystem::path& file);
+}  // namespace
+
 SpaceFile read_space_file(const std::filesystem::path& file) {
-  const nlohmann::json root = jf::parse_file(file);
+  return space_from_json(jf::parse_file(file), file);
+}
+
+SpaceFile parse_space_file(const std::string& text, const std::filesystem::path& file) {
+  return space_from_json(jf::parse_text(text, file), file);
+}
+
+namespace {
+SpaceFile space_from_json(const nlohmann::json& root, const std::filesystem::path& file) {
   jf::as_object(root, file, "");
   jf::check_format_and_version(root, file, "nibrig-space", 1);
   SpaceFile s;
@@ -301,5 +317,7 @@ SpaceFile read_space_file(const std::filesystem::path& file) {
   }
   return s;
 }
+
+}  // namespace
 
 }  // namespace nibrig::model::space

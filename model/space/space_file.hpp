@@ -53,4 +53,10 @@ void write_space_file(const std::filesystem::path& file, const SpaceFile& space)
 // the stimuli, non-finite numbers).
 SpaceFile read_space_file(const std::filesystem::path& file);
 
+// The file's text and its reading from text, for a space kept in memory (a pickled one): the same
+// checks, `file` naming the text in errors. Doubles keep every digit, so a space read back predicts
+// exactly what it did.
+std::string space_file_text(const SpaceFile& space, const std::filesystem::path& file);
+SpaceFile parse_space_file(const std::string& text, const std::filesystem::path& file);
+
 }  // namespace nibrig::model::space

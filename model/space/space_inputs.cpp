@@ -18,8 +18,8 @@ SpaceInputs space_inputs(io::TripletSet judgments, const std::filesystem::path& 
                          std::size_t dims, double lambda) {
   if (lambda > 0 && catalog.empty())
     throw std::invalid_argument(
-        "lambda > 0 ties the axes to physical descriptors: give them with a catalog "
-        "(--descriptors catalog.json)");
+        "lambda > 0 ties the axes to physical descriptors: give them with a catalog of "
+        "the judged tools' descriptors");
   if (lambda < 0) throw std::invalid_argument("lambda must not be negative");
   SpaceInputs in;
   in.judgments = std::move(judgments);
@@ -48,9 +48,11 @@ StimulusLocator::StimulusLocator(const SpaceFile& space, const std::filesystem::
   }
   if (!catalog_file.empty()) {
     if (!space.descriptor_map)
-      throw std::invalid_argument(space_file.string() +
-                                  " has no descriptor map (fit it with --descriptors) to place "
-                                  "tools from " + catalog_file.string());
+      throw std::invalid_argument(
+          space_file.string() +
+          " has no descriptor map (fit it with a catalog's descriptors) to place "
+          "tools from " +
+          catalog_file.string());
     catalog_ = io::read_catalog(catalog_file);
   }
 }
@@ -60,10 +62,10 @@ const Placement& StimulusLocator::locate(const std::string& stimulus,
   const auto it = known_.find(stimulus);
   if (it != known_.end()) return it->second;
   if (!catalog_)
-    throw std::invalid_argument(query_file.string() + ": stimulus '" + stimulus + "' is not in " +
-                                space_file_.string() +
-                                " (a tool named \"tool/surface\" can be placed from its "
-                                "descriptors with --catalog catalog.json)");
+    throw std::invalid_argument(
+        query_file.string() + ": stimulus '" + stimulus + "' is not in " + space_file_.string() +
+        " (a tool named \"tool/surface\" is placed from its descriptors when a catalog is "
+        "given)");
   const auto& map = *space_.descriptor_map;
   const DescriptorTable row = descriptors_for_stimuli(
       *catalog_, catalog_file_, {stimulus}, map.descriptor_names.size());

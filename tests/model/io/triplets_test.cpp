@@ -299,6 +299,24 @@ TEST(LagunasMalformed, ErrorsNameTheJsonPath) {
   nibrig::test::write_text(dir / "material_names_sorted.txt", "gold\ngold\n");
   expect_message_names(format_error_of([&] { read_lagunas_json(dir / "answers.json"); }),
                        {"material_names_sorted.txt", "line 2", "expected unique names"});
+
+  // Names given override the file beside; without looking beside, the ids stay numbers.
+  nibrig::test::write_text(dir / "material_names_sorted.txt", "gold\nsilver\nwood\n");
+  EXPECT_EQ(read_lagunas_json(dir / "answers.json", {{"a", "b", "c"}, true}).stimuli,
+            (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(read_triplets(dir / "answers.json", {{}, false}).stimuli,
+            (std::vector<std::string>{"0", "1", "2"}));
+  expect_message_names(format_error_of([&] {
+                         read_lagunas_json(dir / "answers.json", {{"a", "b"}, false});
+                       }),
+                       {"field 'answers[0][2]'", "stimulus id 2 out of range (2 names given)"});
+  try {
+    read_lagunas_json(dir / "answers.json", {{"a", "b", "a"}, false});
+    ADD_FAILURE() << "a name given twice was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("names: 'a' is given twice"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SalmonMalformed, AnswerMustBeACandidate) {

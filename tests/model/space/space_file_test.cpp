@@ -49,6 +49,22 @@ TEST(SpaceFile, DescriptorsMapAndRegionsSurviveARoundTrip) {
   EXPECT_EQ(r.bootstrap_resamples, 100);
 }
 
+// A space kept as text (a pickled one) comes back bit for bit: every double printed to round trip.
+TEST(SpaceFile, ItsTextReadsBackExactlyAndBrokenTextIsNamed) {
+  const SpaceFile s = example();
+  const SpaceFile r = parse_space_file(space_file_text(s, "pickled space"), "pickled space");
+  EXPECT_EQ(r.coordinates, s.coordinates);
+  EXPECT_EQ(r.model.scale, s.model.scale);
+  EXPECT_EQ(r.descriptor_map->coefficients, s.descriptor_map->coefficients);
+  EXPECT_EQ(r.regions[2].covariance, s.regions[2].covariance);
+  try {
+    parse_space_file("{\"format\": \"nibrig-catalog\"}", "pickled space");
+    ADD_FAILURE() << "another format was read as a space";
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("pickled space"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SpaceFile, TheJudgmentModelItsChoiceAndAnOlderFileWithoutOneRead) {
   const auto dir = nibrig::test::scratch_dir("space_file_model");
   SpaceFile s = example();
