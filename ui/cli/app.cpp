@@ -66,7 +66,7 @@ int run(int argc, char** argv) {
       "Measures tools on surfaces into catalogs; auditions a simulated tool on an actuator; runs\n"
       "the live comparison on the turntable rig; fits the perceptual space, predicts printed\n"
       "styli and searches for a design; runs triplet studies with people."};
-  app.set_version_flag("--version", "nibrig 0.1.0");
+  app.set_version_flag("--version", std::string("nibrig ") + NIBRIG_VERSION);
   app.require_subcommand(1);
   app.parse_complete_callback([global] { configure_logging(global->verbosity); });
 

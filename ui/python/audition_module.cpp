@@ -26,6 +26,7 @@
 #include "rt/reference_load.hpp"
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/submodules.hpp"
 #include "ui/python/tool_sound_options.hpp"
 
@@ -65,7 +66,7 @@ struct PlayerOptions {
 class Player {
  public:
   explicit Player(const PlayerOptions& o) {
-    py::gil_scoped_release unlocked;
+    ReleasedGil unlocked;
     const auto settings = playback::output_settings_for(o.api, o.device, o.rate, o.period, o.channel, o.name);
     rt::EngineSettings engine;
     engine.sample_rate_hz = settings.sample_rate;
@@ -202,7 +203,7 @@ class Player {
     }
     if (!closing) return;
     pump_.request_stop();
-    py::gil_scoped_release unlocked;
+    ReleasedGil unlocked;
     if (pump_.joinable()) pump_.join();
     closing->close();
   }
@@ -267,7 +268,7 @@ class Player {
 py::list device_list(const std::optional<std::string>& api) {
   std::vector<playback::ApiDevices> apis;
   {
-    py::gil_scoped_release unlocked;
+    ReleasedGil unlocked;
     if (api) {
       apis.push_back(playback::list_devices(*api));
     } else {

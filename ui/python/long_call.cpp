@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "model/io/job_files.hpp"
+#include "ui/python/python_log.hpp"
 
 namespace nibrig::ui::python {
 
@@ -33,6 +34,8 @@ struct Shared {
 
 void run_long_call(const std::function<void(std::stop_token, const Report&)>& work, const py::object& progress) {
   const model::io::JobFiles job;  // one call is one job: what it writes replaces nothing it read
+  follow_python_log_level();
+  drain_python_log();
   Shared shared;
   std::stop_source stop;
   const Report report = [&shared](const std::string& step, std::size_t done, std::size_t total) {
@@ -69,6 +72,7 @@ void run_long_call(const std::function<void(std::stop_token, const Report&)>& wo
       continue;  // the work is stopping: nothing more is passed on
     }
     try {
+      drain_python_log();
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (latest && !progress.is_none()) progress(latest->step, latest->done, latest->total);
     } catch (py::error_already_set& e) {
@@ -82,6 +86,7 @@ void run_long_call(const std::function<void(std::stop_token, const Report&)>& wo
     py::gil_scoped_release unlocked;
     worker.join();
   }
+  drain_python_log();
   if (interrupted) throw std::move(*interrupted);
   if (shared.failure) std::rethrow_exception(shared.failure);
 }

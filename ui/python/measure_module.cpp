@@ -19,6 +19,7 @@
 #include "model/numeric/cancellation.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/submodules.hpp"
 
 namespace nibrig::ui::python {
@@ -45,7 +46,7 @@ model::measure::ThresholdCurve threshold_of(const std::optional<std::filesystem:
 Measurement measure_recording(const std::filesystem::path& recording, const std::optional<std::string>& tool,
                               const std::optional<std::string>& surface, const std::optional<double>& load,
                               const std::optional<double>& lever, const std::optional<std::filesystem::path>& threshold_file) {
-  py::gil_scoped_release unlocked;
+  ReleasedGil unlocked;
   std::error_code ec;
   if (!std::filesystem::exists(recording, ec))  // FileNotFoundError, as a reader's own refusal would be
     throw model::io::FormatError(recording, "", "no such file or folder");
@@ -162,44 +163,55 @@ void add_measure_module(py::module_ m) {
         "or a rig session folder. A file named otherwise takes tool, surface and, for friction, load (N) and "
         "lever. threshold: the detection-threshold curve weighting the spectrum (default: the bundled one).");
 
-  py::class_<Catalog>(m, "Catalog", "Tools and surfaces with their friction and vibration descriptors")
-      .def_property_readonly("tools", [](const Catalog& c) {
-        std::vector<std::string> ids;
-        for (const auto& t : c.catalog.tools) ids.push_back(t.id);
-        return ids;
-      })
-      .def_property_readonly("surfaces", [](const Catalog& c) {
-        std::vector<std::string> ids;
-        for (const auto& s : c.catalog.surfaces) ids.push_back(s.id);
-        return ids;
-      })
-      .def_property_readonly("pairings",
+  py::class_<Catalog>(m, "Catalog",
+                      "Tools and surfaces with their friction and vibration descriptors")
+      .def_property_readonly("tools",
                              [](const Catalog& c) {
-                               py::list out;
-                               for (const auto& p : c.catalog.pairings) {
-                                 py::dict d;
-                                 d["tool"] = p.tool, d["surface"] = p.surface;
-                                 d["mu"] = p.friction ? py::cast(p.friction->mu) : py::none();
-                                 d["weighted_mean"] = p.vibration ? py::cast(p.vibration->weighted_mean) : py::none();
-                                 out.append(d);
-                               }
-                               return out;
-                             },
-                             "Each tool/surface pair with its μ and weighted mean vibration (None where not measured)")
-      .def_readonly("skipped", &Catalog::skipped, "Files of the folder that are not recordings, with why")
-      .def("save", [](const Catalog& c, const std::filesystem::path& file) {
-             py::gil_scoped_release unlocked;
-             model::io::write_catalog(file, c.catalog);
-           }, py::arg("path"), "Writes the catalog JSON (`nibrig catalog -o`), atomically");
+                               std::vector<std::string> ids;
+                               for (const auto& t : c.catalog.tools) ids.push_back(t.id);
+                               return ids;
+                             })
+      .def_property_readonly("surfaces",
+                             [](const Catalog& c) {
+                               std::vector<std::string> ids;
+                               for (const auto& s : c.catalog.surfaces) ids.push_back(s.id);
+                               return ids;
+                             })
+      .def_property_readonly(
+          "pairings",
+          [](const Catalog& c) {
+            py::list out;
+            for (const auto& p : c.catalog.pairings) {
+              py::dict d;
+              d["tool"] = p.tool, d["surface"] = p.surface;
+              d["mu"] = p.friction ? py::cast(p.friction->mu) : py::none();
+              d["weighted_mean"] = p.vibration ? py::cast(p.vibration->weighted_mean) : py::none();
+              out.append(d);
+            }
+            return out;
+          },
+          "Each tool/surface pair with its μ and weighted mean vibration (None where not measured)")
+      .def_readonly("skipped", &Catalog::skipped,
+                    "Files of the folder that are not recordings, with why")
+      .def(
+          "save",
+          [](const Catalog& c, const std::filesystem::path& file) {
+            ReleasedGil unlocked;
+            model::io::write_catalog(file, c.catalog);
+          },
+          py::arg("path"), "Writes the catalog JSON (`nibrig catalog -o`), atomically");
 
   m.def("catalog", &build, py::arg("folder"), py::kw_only(), py::arg("threshold") = py::none(),
         py::arg("threads") = 0u, py::arg("progress") = py::none(),
         "Every recording under a folder measured into one catalog, as `nibrig catalog` does; progress: "
         "(step, done, total) per file. Releases the GIL; Ctrl-C stops it.");
-  m.def("load_catalog", [](const std::filesystem::path& file) {
-          py::gil_scoped_release unlocked;
-          return Catalog{model::io::read_catalog(file), {}};
-        }, py::arg("path"), "Reads a catalog JSON (the bundled one: nibrig.measure.bundled_catalog())");
+  m.def(
+      "load_catalog",
+      [](const std::filesystem::path& file) {
+        ReleasedGil unlocked;
+        return Catalog{model::io::read_catalog(file), {}};
+      },
+      py::arg("path"), "Reads a catalog JSON (the bundled one: nibrig.measure.bundled_catalog())");
   m.def("bundled_catalog", [] { return model::io::default_catalog(); },
         "The path of the catalog bundled with nibrig (derived from the paper's recordings)");
 }

@@ -4,11 +4,14 @@
 #include <pybind11/pybind11.h>
 
 #include "ui/python/errors.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/submodules.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "nibrig's library calls: the compiled part of the nibrig package";
   nibrig::ui::python::register_error_translation();
+  nibrig::ui::python::install_python_log();
+  m.attr("__version__") = NIBRIG_VERSION;
   nibrig::ui::python::add_space_module(m.def_submodule("space", "Perceptual spaces: fit, predict, place"));
   nibrig::ui::python::add_measure_module(
       m.def_submodule("measure", "Recordings to friction, spectra and descriptors; catalogs"));

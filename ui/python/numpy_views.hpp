@@ -24,6 +24,18 @@ inline pybind11::array_t<double> matrix_view(const Eigen::MatrixXd& m, const pyb
   return a;
 }
 
+// cols × rows: each column a row of the array, the transpose lent without a copy (a column-major
+// matrix's columns are contiguous, so the view is C-ordered).
+inline pybind11::array_t<double> columns_as_rows_view(const Eigen::MatrixXd& m,
+                                                      const pybind11::handle& owner) {
+  pybind11::array_t<double> a({m.cols(), m.rows()},
+                              {static_cast<pybind11::ssize_t>(sizeof(double) * m.rows()),
+                               static_cast<pybind11::ssize_t>(sizeof(double))},
+                              m.data(), owner);
+  pybind11::detail::array_proxy(a.ptr())->flags &= ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
 // n contiguous values (an Eigen vector's, a std::vector's).
 template <typename T>
 pybind11::array_t<T> array_view(const T* data, std::size_t n, const pybind11::handle& owner) {

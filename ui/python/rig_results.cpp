@@ -10,6 +10,7 @@
 
 #include "ui/python/errors.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/rig_types.hpp"
 
 namespace nibrig::ui::python {
@@ -135,88 +136,146 @@ void add_rig_results(py::module_ m) {
                std::to_string(s.session.speed_m_s.size()) + " frames" + (s.session.complete ? "" : ", partial") + ">";
       });
 
-  m.def("session", [](const std::filesystem::path& folder) {
-          py::gil_scoped_release unlocked;
-          return Session{model::io::read_rig_session(folder)};
-        }, py::arg("folder"),
-        "Reads a session folder (`nibrig rig capture -o`), or the .partial folder a killed capture left up to its "
-        "last block");
+  m.def(
+      "session",
+      [](const std::filesystem::path& folder) {
+        ReleasedGil unlocked;
+        return Session{model::io::read_rig_session(folder)};
+      },
+      py::arg("folder"),
+      "Reads a session folder (`nibrig rig capture -o`), or the .partial folder a killed capture "
+      "left up to its "
+      "last block");
 
   py::class_<Comparison>(m, "Comparison",
-                         "A capture compared speed by speed with the simulation driven by its measured speed: per speed "
+                         "A capture compared speed by speed with the simulation driven by its "
+                         "measured speed: per speed "
                          "bin the distance of the mean spectra and of the weighted-mean descriptor")
-      .def_property_readonly("tool", [](const Comparison& c) { return c.report.tool; }, "The tool measured")
+      .def_property_readonly(
+          "tool", [](const Comparison& c) { return c.report.tool; }, "The tool measured")
       .def_property_readonly("surface", [](const Comparison& c) { return c.report.surface; })
-      .def_property_readonly("simulated", [](const Comparison& c) { return c.run.simulated; },
-                             "The simulated tool's name, as the engine gives it")
-      .def_property_readonly("simulated_modes", [](const Comparison& c) { return c.simulated_modes; },
-                             "Whose modes shape the simulated tool")
-      .def_property_readonly("session", [](const Comparison& c) -> const Session& { return c.session; },
-                             "The captured session, read back")
-      .def_property_readonly("bins", [](const Comparison& c) {
-        py::list out;
-        for (const auto& b : c.report.bins) {
-          py::dict d;
-          d["min_speed_m_s"] = b.min_speed_m_s, d["max_speed_m_s"] = b.max_speed_m_s;
-          d["mean_speed_m_s"] = b.mean_speed_m_s, d["rows"] = b.rows, d["lsd_db"] = b.lsd_db;
-          d["measured_weighted_mean"] = b.measured_weighted_mean, d["simulated_weighted_mean"] = b.simulated_weighted_mean;
-          d["weighted_mean_log10_difference"] = b.weighted_mean_log10_difference;
-          out.append(d);
-        }
-        return out;
-      }, "The table, a dict per speed bin as comparison.json has it (NaN where a bin has no rows)")
-      .def_property_readonly("min_speed_m_s", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::min_speed_m_s); },
-                             "Each speed bin's lower edge, m/s")
-      .def_property_readonly("max_speed_m_s", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::max_speed_m_s); })
-      .def_property_readonly("mean_speed_m_s", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::mean_speed_m_s); },
-                             "The mean measured speed of each bin's rows, m/s (NaN when empty)")
-      .def_property_readonly("rows", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::rows); },
-                             "Spectrogram rows in each bin")
-      .def_property_readonly("lsd_db", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::lsd_db); },
-                             "RMS over the band of 20·log10(simulated / measured) of each bin's mean spectra, dB")
+      .def_property_readonly(
+          "simulated", [](const Comparison& c) { return c.run.simulated; },
+          "The simulated tool's name, as the engine gives it")
+      .def_property_readonly(
+          "simulated_modes", [](const Comparison& c) { return c.simulated_modes; },
+          "Whose modes shape the simulated tool")
+      .def_property_readonly(
+          "session", [](const Comparison& c) -> const Session& { return c.session; },
+          "The captured session, read back")
+      .def_property_readonly(
+          "bins",
+          [](const Comparison& c) {
+            py::list out;
+            for (const auto& b : c.report.bins) {
+              py::dict d;
+              d["min_speed_m_s"] = b.min_speed_m_s, d["max_speed_m_s"] = b.max_speed_m_s;
+              d["mean_speed_m_s"] = b.mean_speed_m_s, d["rows"] = b.rows, d["lsd_db"] = b.lsd_db;
+              d["measured_weighted_mean"] = b.measured_weighted_mean,
+              d["simulated_weighted_mean"] = b.simulated_weighted_mean;
+              d["weighted_mean_log10_difference"] = b.weighted_mean_log10_difference;
+              out.append(d);
+            }
+            return out;
+          },
+          "The table, a dict per speed bin as comparison.json has it (NaN where a bin has no rows)")
+      .def_property_readonly(
+          "min_speed_m_s",
+          [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::min_speed_m_s); },
+          "Each speed bin's lower edge, m/s")
+      .def_property_readonly(
+          "max_speed_m_s",
+          [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::max_speed_m_s); })
+      .def_property_readonly(
+          "mean_speed_m_s",
+          [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::mean_speed_m_s); },
+          "The mean measured speed of each bin's rows, m/s (NaN when empty)")
+      .def_property_readonly(
+          "rows", [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::rows); },
+          "Spectrogram rows in each bin")
+      .def_property_readonly(
+          "lsd_db",
+          [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::lsd_db); },
+          "RMS over the band of 20·log10(simulated / measured) of each bin's mean spectra, dB")
       .def_property_readonly("measured_weighted_mean",
-                             [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::measured_weighted_mean); })
+                             [](const Comparison& c) {
+                               return per_bin(c, &model::io::ComparisonBin::measured_weighted_mean);
+                             })
       .def_property_readonly("simulated_weighted_mean",
-                             [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::simulated_weighted_mean); })
-      .def_property_readonly("weighted_mean_log10_difference",
-                             [](const Comparison& c) { return per_bin(c, &model::io::ComparisonBin::weighted_mean_log10_difference); },
-                             "log10(simulated / measured) of each bin's weighted mean: the space's descriptor's difference")
-      .def_property_readonly("mean_lsd_db", [](const Comparison& c) { return c.report.mean_lsd_db; },
-                             "Over the bins with rows, each once, dB")
-      .def_property_readonly("mean_weighted_mean_log10_difference",
-                             [](const Comparison& c) { return c.report.mean_weighted_mean_log10_difference; })
-      .def_property_readonly("bins_with_rows", [](const Comparison& c) { return c.report.bins_with_rows; })
-      .def_property_readonly("rows_analysed", [](const Comparison& c) { return c.report.rows_analysed; })
-      .def_property_readonly("rows_outside_speed_range", [](const Comparison& c) { return c.report.rows_outside_speed_range; })
-      .def_property_readonly("rows_without_speed", [](const Comparison& c) { return c.report.rows_without_speed; })
-      .def_property_readonly("blocks_dropped", [](const Comparison& c) { return c.report.blocks_dropped; },
-                             "Audio the analysis never saw (its queue was full)")
-      .def_property_readonly("band_hz", [](const Comparison& c) { return std::pair(c.report.band_min_hz, c.report.band_max_hz); },
-                             "The frequencies the distances use: low <= f < high, Hz")
-      .def_property_readonly("frequencies_hz", [](const py::object& self) {
-        const auto& v = self.cast<const Comparison&>().run.table.frequencies_hz;
-        return array_view(v.data(), v.size(), self);
-      }, "The spectrograms' frequencies, Hz (a view)")
-      .def_property_readonly("measured_mean", [](const Comparison& c) { return mean_spectra(c, false); },
-                             "Each bin's mean measured spectrum, bins × frequencies, m/s² peak (a copy)")
-      .def_property_readonly("simulated_mean", [](const Comparison& c) { return mean_spectra(c, true); },
-                             "Each bin's mean simulated spectrum, bins × frequencies, m/s² peak (a copy)")
-      .def_property_readonly("waterfall_times_s", [](const py::object& self) {
-        const auto& v = self.cast<const Comparison&>().run.rows.times_s;
-        return array_view(v.data(), v.size(), self);
-      }, "Each spectrogram row's centre, s (a view)")
-      .def_property_readonly("waterfall_speeds_m_s", [](const py::object& self) {
-        const auto& v = self.cast<const Comparison&>().run.rows.speeds_m_s;
-        return array_view(v.data(), v.size(), self);
-      }, "Each row's mean measured speed, m/s (a view)")
-      .def_property_readonly("measured_db", [](const py::object& self) { return waterfall_db(self, false); },
-                             "The measured spectrogram, rows × frequencies, dB re 1 m/s² peak (a read-only view)")
-      .def_property_readonly("simulated_db", [](const py::object& self) { return waterfall_db(self, true); },
-                             "The simulated spectrogram, rows × frequencies, dB re 1 m/s² peak (a read-only view)")
-      .def("save", [](const Comparison& c, const std::filesystem::path& file) {
-             py::gil_scoped_release unlocked;
-             system_refusals([&] { model::io::write_comparison_file(c.report, file); });
-           }, py::arg("path"), "Writes comparison.json (FORMATS.md 'Live comparison'), as `nibrig rig compare --report`, atomically")
+                             [](const Comparison& c) {
+                               return per_bin(c,
+                                              &model::io::ComparisonBin::simulated_weighted_mean);
+                             })
+      .def_property_readonly(
+          "weighted_mean_log10_difference",
+          [](const Comparison& c) {
+            return per_bin(c, &model::io::ComparisonBin::weighted_mean_log10_difference);
+          },
+          "log10(simulated / measured) of each bin's weighted mean: the space's descriptor's "
+          "difference")
+      .def_property_readonly(
+          "mean_lsd_db", [](const Comparison& c) { return c.report.mean_lsd_db; },
+          "Over the bins with rows, each once, dB")
+      .def_property_readonly(
+          "mean_weighted_mean_log10_difference",
+          [](const Comparison& c) { return c.report.mean_weighted_mean_log10_difference; })
+      .def_property_readonly("bins_with_rows",
+                             [](const Comparison& c) { return c.report.bins_with_rows; })
+      .def_property_readonly("rows_analysed",
+                             [](const Comparison& c) { return c.report.rows_analysed; })
+      .def_property_readonly("rows_outside_speed_range",
+                             [](const Comparison& c) { return c.report.rows_outside_speed_range; })
+      .def_property_readonly("rows_without_speed",
+                             [](const Comparison& c) { return c.report.rows_without_speed; })
+      .def_property_readonly(
+          "blocks_dropped", [](const Comparison& c) { return c.report.blocks_dropped; },
+          "Audio the analysis never saw (its queue was full)")
+      .def_property_readonly(
+          "band_hz",
+          [](const Comparison& c) { return std::pair(c.report.band_min_hz, c.report.band_max_hz); },
+          "The frequencies the distances use: low <= f < high, Hz")
+      .def_property_readonly(
+          "frequencies_hz",
+          [](const py::object& self) {
+            const auto& v = self.cast<const Comparison&>().run.table.frequencies_hz;
+            return array_view(v.data(), v.size(), self);
+          },
+          "The spectrograms' frequencies, Hz (a view)")
+      .def_property_readonly(
+          "measured_mean", [](const Comparison& c) { return mean_spectra(c, false); },
+          "Each bin's mean measured spectrum, bins × frequencies, m/s² peak (a copy)")
+      .def_property_readonly(
+          "simulated_mean", [](const Comparison& c) { return mean_spectra(c, true); },
+          "Each bin's mean simulated spectrum, bins × frequencies, m/s² peak (a copy)")
+      .def_property_readonly(
+          "waterfall_times_s",
+          [](const py::object& self) {
+            const auto& v = self.cast<const Comparison&>().run.rows.times_s;
+            return array_view(v.data(), v.size(), self);
+          },
+          "Each spectrogram row's centre, s (a view)")
+      .def_property_readonly(
+          "waterfall_speeds_m_s",
+          [](const py::object& self) {
+            const auto& v = self.cast<const Comparison&>().run.rows.speeds_m_s;
+            return array_view(v.data(), v.size(), self);
+          },
+          "Each row's mean measured speed, m/s (a view)")
+      .def_property_readonly(
+          "measured_db", [](const py::object& self) { return waterfall_db(self, false); },
+          "The measured spectrogram, rows × frequencies, dB re 1 m/s² peak (a read-only view)")
+      .def_property_readonly(
+          "simulated_db", [](const py::object& self) { return waterfall_db(self, true); },
+          "The simulated spectrogram, rows × frequencies, dB re 1 m/s² peak (a read-only view)")
+      .def(
+          "save",
+          [](const Comparison& c, const std::filesystem::path& file) {
+            ReleasedGil unlocked;
+            system_refusals([&] { model::io::write_comparison_file(c.report, file); });
+          },
+          py::arg("path"),
+          "Writes comparison.json (FORMATS.md 'Live comparison'), as `nibrig rig compare "
+          "--report`, atomically")
       .def("__repr__", [](const Comparison& c) {
         return "<nibrig.rig.Comparison: " + c.report.tool + " on " + c.report.surface + " against " + c.run.simulated + ", " +
                std::to_string(c.report.bins_with_rows) + " speed bins>";

@@ -17,6 +17,7 @@
 #include "model/space/space_inputs.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
 
@@ -27,40 +28,53 @@ namespace space = model::space;
 
 namespace {
 
-Space fit(const py::object& judgments_or_path, std::size_t dims, const std::optional<std::filesystem::path>& descriptors,
-          double lambda, const std::string& model, int starts, unsigned seed, int bootstrap, unsigned threads,
-          const py::object& progress) {
-  const bool read = py::isinstance<Judgments>(judgments_or_path);
-  // A path or Judgments: anything else named, not pybind11's "Unable to cast".
-  if (!read && !py::isinstance<py::str>(judgments_or_path) &&
-      !py::isinstance(judgments_or_path, py::module_::import("os").attr("PathLike")))
-    throw py::type_error("judgments: expected a file path or Judgments from read_judgments, found " +
-                         std::string(py::str(judgments_or_path.get_type().attr("__name__"))));
-  const std::filesystem::path judgments =
-      read ? judgments_or_path.cast<const Judgments&>().file : judgments_or_path.cast<std::filesystem::path>();
+// A judgment model's family by its name, the argument named when there is none such.
+space::ModelFamily family_argument(const std::string& name, const char* argument) {
+  try {
+    return space::parse_family(name);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(argument) + ": " + e.what());
+  }
+}
+
+Space fit(const py::object& judgments_given, std::size_t dims,
+          const std::optional<std::filesystem::path>& descriptors, double lambda,
+          const std::string& model, const std::vector<std::string>& models, int folds, int starts,
+          unsigned seed, int bootstrap, unsigned threads, const py::object& progress) {
   if (dims < 1) throw std::invalid_argument("dims is " + std::to_string(dims) + "; expected at least 1");
-  if (starts < 1 || starts > space::kMostFitStarts)  // the library's bound, before the judgments are read
+  if (starts < 1 || starts > space::kMostFitStarts)  // the library's bound, before any work
     throw std::invalid_argument("starts: " + std::to_string(starts) + ": expected a number of starts, 1 to " +
                                 std::to_string(space::kMostFitStarts));
   if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 or more");
+  if (folds < 2)
+    throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
   const std::filesystem::path catalog = descriptors.value_or(std::filesystem::path());
   space::SpaceFitSettings settings;
   settings.starts = starts;
   settings.seed = seed;
   settings.threads = threads;
   settings.bootstrap = bootstrap;
+  settings.folds = folds;
   settings.choose_model = model == "auto";
-  if (!settings.choose_model) settings.model = space::parse_family(model);
+  if (!settings.choose_model) settings.model = family_argument(model, "model");
+  if (!models.empty()) {
+    if (!settings.choose_model)
+      throw std::invalid_argument("models: the candidates of model='auto'; model is '" + model +
+                                  "'");
+    settings.candidates.clear();
+    for (const auto& name : models) settings.candidates.push_back(family_argument(name, "models"));
+  }
+  std::filesystem::path label;
+  model::io::TripletSet judged = judgments_argument(judgments_given, "judgments", label);
   Space out;
   {
-    py::gil_scoped_release unlocked;  // reading a large judgments file takes a moment too
-    const auto in = read ? space::space_inputs(judgments_or_path.cast<const Judgments&>().set, catalog, dims, lambda)
-                         : space::read_space_inputs(judgments, catalog, dims, lambda);
+    ReleasedGil unlocked;  // the descriptors' catalog takes a moment to read
+    const auto in = space::space_inputs(std::move(judged), catalog, dims, lambda);
     py::gil_scoped_acquire locked;
     run_long_call(
         [&](std::stop_token stop, const Report& report) {
           settings.stop = stop;
-          auto fitted = space::fit_space_file(in, judgments, catalog, settings, report);
+          auto fitted = space::fit_space_file(in, label, catalog, settings, report);
           out.file = std::move(fitted.file);
           out.warnings = std::move(fitted.warnings);
         },
@@ -73,18 +87,59 @@ Space fit(const py::object& judgments_or_path, std::size_t dims, const std::opti
   return out;
 }
 
-py::array_t<double> predict_triplets(const Space& s, const std::vector<std::tuple<std::string, std::string, std::string>>& triplets) {
-  py::array_t<double> p(static_cast<py::ssize_t>(triplets.size()));
-  auto out = p.mutable_unchecked<1>();
-  for (std::size_t k = 0; k < triplets.size(); ++k) {
-    const auto& [reference, a, b] = triplets[k];
-    out(static_cast<py::ssize_t>(k)) =
-        space::probability_first(s.file.model, s.file.coordinates, s.index_of(reference), s.index_of(a), s.index_of(b));
+// A triplet's three stimuli, each a name or an index into the space's stimuli.
+std::size_t stimulus_of(const Space& s, const py::handle& given, std::size_t row) {
+  if (py::isinstance<py::str>(given)) return s.index_of(given.cast<std::string>());
+  const long long i = given.cast<long long>();
+  if (i < 0 || i >= static_cast<long long>(s.file.stimuli.size()))
+    throw std::invalid_argument("triplets[" + std::to_string(row) + "]: " + std::to_string(i) +
+                                " is not a stimulus index of this space (0 to " +
+                                std::to_string(s.file.stimuli.size() - 1) + ")");
+  return static_cast<std::size_t>(i);
+}
+
+py::array_t<double> predict_triplets(const Space& s, const py::object& triplets) {
+  const py::sequence rows = py::isinstance<py::array>(triplets)
+                                ? py::sequence(triplets.attr("tolist")())
+                                : triplets.cast<py::sequence>();
+  std::vector<std::array<std::size_t, 3>> which;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const py::sequence row = rows[k].cast<py::sequence>();
+    if (row.size() != 3)
+      throw std::invalid_argument("triplets[" + std::to_string(k) +
+                                  "]: expected (reference, first, second), found " +
+                                  std::to_string(row.size()) + " values");
+    const std::array<std::size_t, 3> t{stimulus_of(s, row[0], k), stimulus_of(s, row[1], k),
+                                       stimulus_of(s, row[2], k)};
+    if (t[0] == t[1] || t[0] == t[2] || t[1] == t[2])
+      throw std::invalid_argument(
+          "triplets[" + std::to_string(k) +
+          "]: expected three different stimuli (a reference is not a candidate)");
+    which.push_back(t);
   }
+  py::array_t<double> p(static_cast<py::ssize_t>(which.size()));
+  auto out = p.mutable_unchecked<1>();
+  for (std::size_t k = 0; k < which.size(); ++k)
+    out(static_cast<py::ssize_t>(k)) = space::probability_first(
+        s.file.model, s.file.coordinates, which[k][0], which[k][1], which[k][2]);
   return p;
 }
 
-Placement place(const Space& s, const py::object& descriptors, const std::optional<Eigen::MatrixXd>& error) {
+// A square matrix from anything numpy reads as one (any order, a nested list), named on refusal.
+Eigen::MatrixXd square_matrix(const py::object& given, const char* argument, Eigen::Index size) {
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+  if (!a || a.ndim() != 2 || a.shape(0) != size || a.shape(1) != size)
+    throw std::invalid_argument(std::string(argument) + ": expected a " + std::to_string(size) +
+                                " x " + std::to_string(size) +
+                                " matrix of numbers (one row and column per descriptor)");
+  Eigen::MatrixXd m(size, size);
+  const auto v = a.unchecked<2>();
+  for (Eigen::Index r = 0; r < size; ++r)
+    for (Eigen::Index c = 0; c < size; ++c) m(r, c) = v(r, c);
+  return m;
+}
+
+Placement place(const Space& s, const py::object& descriptors, const py::object& error) {
   if (!s.file.descriptor_map)
     throw std::invalid_argument("this space has no descriptor map (fit it with descriptors=a catalog)");
   const auto& names = s.file.descriptor_map->descriptor_names;
@@ -102,8 +157,9 @@ Placement place(const Space& s, const py::object& descriptors, const std::option
                                   std::to_string(names.size()) + " (" + names.front() + ", ...)");
     for (std::size_t i = 0; i < v.size(); ++i) x(static_cast<Eigen::Index>(i)) = v[i];
   }
-  return {error ? space::place_from_descriptors(*s.file.descriptor_map, x, *error)
-                : space::place_from_descriptors(*s.file.descriptor_map, x)};
+  if (error.is_none()) return {space::place_from_descriptors(*s.file.descriptor_map, x)};
+  return {space::place_from_descriptors(*s.file.descriptor_map, x,
+                                        square_matrix(error, "error", x.size()))};
 }
 
 // Semi-axes and angle of the region in the plane of axes 1 and 2 at each level.
@@ -117,6 +173,21 @@ std::vector<std::tuple<double, double, double>> ellipses(const Placement& p, con
   }
   return out;
 }
+
+py::list model_scores(const Space& s) {
+  py::list out;
+  for (const auto& score : s.file.model_scores) {
+    py::dict d;
+    d["family"] = score.family, d["log_loss"] = score.log_loss;
+    d["majority_agreement"] = score.majority_agreement,
+    d["individual_agreement"] = score.individual_agreement;
+    d["mean_error"] = score.mean_error;
+    out.append(d);
+  }
+  return out;
+}
+
+constexpr const char* kPickledSpace = "a pickled nibrig.space.Space";
 
 }  // namespace
 
@@ -133,66 +204,123 @@ void add_space_module(py::module_ m) {
            "The region in the plane of axes 1 and 2 at each level: (semi_axis_1, semi_axis_2, angle in radians "
            "from axis 1) per level");
 
-  py::class_<Judgments>(m, "Judgments", "Triplet judgments read once, for several fits")
-      .def_property_readonly("stimuli", [](const Judgments& j) { return j.set.stimuli; })
-      .def_property_readonly("triplets", [](const Judgments& j) { return j.set.triplets.size(); })
-      .def_property_readonly("responses", [](const Judgments& j) { return model::io::response_count(j.set); })
-      .def_readonly("file", &Judgments::file);
-  m.def("read_judgments", [](const std::filesystem::path& file) {
-          py::gil_scoped_release unlocked;
-          return Judgments{model::io::read_triplets(file), file};
-        }, py::arg("path"), "Reads triplet judgments (the paper's, Lagunas', Salmon's formats) once, for several fits");
+  add_space_judgments(m);
 
   py::class_<Space>(m, "Space", "A perceptual space fitted from triplet judgments (Sec. 4)")
-      .def_property_readonly("stimuli", [](const Space& s) { return s.file.stimuli; }, "The judged stimuli, in order")
-      .def_property_readonly("dims", [](const Space& s) { return static_cast<std::size_t>(s.file.coordinates.rows()); },
-                             "Its number of axes")
       .def_property_readonly(
-          "coordinates", [](const py::object& self) { return matrix_view(self.cast<const Space&>().file.coordinates, self); },
-          "Each stimulus's position: an array of dims × stimuli, in the space's units (one unit of difference in "
-          "distance is 75 % preference under the paper's model); a view, not a copy")
-      .def_property_readonly("model", [](const Space& s) { return space::family_name(s.file.model.family); },
-                             "The judgment model's family: 'probit' (the paper's), 'logistic', 'student-t', with "
-                             "'+lapse' and '+noise'")
-      .def_property_readonly("model_description", [](const Space& s) { return space::describe_model(s.file.model); })
-      .def_property_readonly("model_reason", [](const Space& s) { return s.file.model_reason; },
-                             "Why this model: given, or the cross-validation that chose it")
-      .def_property_readonly("scale", [](const Space& s) { return s.file.model.scale; },
-                             "The model's scale s: P = link(s · (d_b − d_a)) for distances in the space's units")
-      .def_property_readonly("lapse", [](const Space& s) { return s.file.model.lapse; },
-                             "The share of answers given at random (0 without a lapse)")
-      .def_property_readonly("lam", [](const Space& s) { return s.file.lambda; },
-                             "λ, the weight that tied the axes to the descriptors (0: none)")
-      .def_property_readonly("negative_log_likelihood", [](const Space& s) { return s.file.negative_log_likelihood; },
-                             "Of the judgments fitted, in nats")
-      .def_property_readonly("responses", [](const Space& s) { return s.file.responses; })
-      .def_property_readonly("descriptor_names", [](const Space& s) { return s.file.descriptor_names; })
-      .def_property_readonly("has_descriptor_map", [](const Space& s) { return s.file.descriptor_map.has_value(); })
-      .def_property_readonly("warnings", [](const Space& s) { return s.warnings; })
+          "stimuli", [](const Space& s) { return s.file.stimuli; }, "The judged stimuli, in order")
+      .def_property_readonly(
+          "dims",
+          [](const Space& s) { return static_cast<std::size_t>(s.file.coordinates.rows()); },
+          "Its number of axes")
+      .def_property_readonly(
+          "coordinates",
+          [](const py::object& self) {
+            return columns_as_rows_view(self.cast<const Space&>().file.coordinates, self);
+          },
+          "Each stimulus's position: an array of stimuli × dims (a row per stimulus, as "
+          "scikit-learn lays out "
+          "samples), in the space's units (one unit of difference in distance is 75 % preference "
+          "under the "
+          "paper's model); a read-only view, not a copy")
+      .def_property_readonly(
+          "model", [](const Space& s) { return space::family_name(s.file.model.family); },
+          "The judgment model's family: 'probit' (the paper's), 'logistic', 'student-t', with "
+          "'+lapse' and '+noise'")
+      .def_property_readonly("model_description",
+                             [](const Space& s) { return space::describe_model(s.file.model); })
+      .def_property_readonly(
+          "model_reason", [](const Space& s) { return s.file.model_reason; },
+          "Why this model: given, or the cross-validation that chose it")
+      .def_property_readonly(
+          "scale", [](const Space& s) { return s.file.model.scale; },
+          "The model's scale s: P = link(s · (d_b − d_a)) for distances in the space's units")
+      .def_property_readonly(
+          "lapse", [](const Space& s) { return s.file.model.lapse; },
+          "The share of answers given at random (0 without a lapse)")
+      .def_property_readonly(
+          "lam", [](const Space& s) { return s.file.lambda; },
+          "λ, the weight that tied the axes to the descriptors (0: none)")
+      .def_property_readonly(
+          "negative_log_likelihood", [](const Space& s) { return s.file.negative_log_likelihood; },
+          "Of the judgments fitted, in nats")
+      .def_property_readonly(
+          "responses", [](const Space& s) { return s.file.responses; },
+          "The answers fitted (the sum of the judgments' counts)")
+      .def_property_readonly(
+          "triplets", [](const Space& s) { return s.file.triplets; }, "The triplets fitted")
+      .def_property_readonly(
+          "judgments", [](const Space& s) { return s.file.judgments; },
+          "What was fitted: the judgments' file, or 'judgments given as arrays'")
+      .def_property_readonly(
+          "model_scores", &model_scores,
+          "With model='auto': one dict per candidate, as the cross-validation scored it "
+          "(family, log_loss in nats per held-out answer, majority_agreement, "
+          "individual_agreement, mean_error); empty when the model was given")
+      .def_property_readonly(
+          "descriptor_names", [](const Space& s) { return s.file.descriptor_names; },
+          "The catalog descriptors the axes were tied to and the map reads, in order")
+      .def_property_readonly(
+          "has_descriptor_map", [](const Space& s) { return s.file.descriptor_map.has_value(); },
+          "Whether tools can be placed from their descriptors (place)")
+      .def_property_readonly(
+          "warnings", [](const Space& s) { return s.warnings; },
+          "What the fit warned of (also given to Python's warnings when it ran): e.g. too "
+          "few stimuli for a descriptor map")
       .def("predict", &predict_triplets, py::arg("triplets"),
-           "P(the first candidate is judged closer to the reference) for each (reference, first, second) of "
-           "stimulus names, under the space's judgment model")
+           "P(the first candidate is judged closer to the reference) for each (reference, first, "
+           "second): "
+           "stimulus names, or indices into stimuli (an (n, 3) integer array), under the space's "
+           "judgment model")
       .def("place", &place, py::arg("descriptors"), py::arg("error") = py::none(),
-           "Places a tool from its descriptors (a dict by name, or values in descriptor_names' order) through the "
-           "space's descriptor map; `error`, the descriptors' own covariance (a predicted design's), widens the region")
-      .def("save", [](const Space& s, const std::filesystem::path& file) {
-             py::gil_scoped_release unlocked;
-             space::write_space_file(file, s.file);
-           }, py::arg("path"), "Writes the space file (FORMATS.md 'Perceptual space'), atomically")
+           "Places a tool from its descriptors (a dict by name, or values in descriptor_names' "
+           "order) through the "
+           "space's descriptor map; `error`, the descriptors' own covariance (a predicted "
+           "design's), widens the region")
+      .def(
+          "save",
+          [](const Space& s, const std::filesystem::path& file) {
+            ReleasedGil unlocked;
+            space::write_space_file(file, s.file);
+          },
+          py::arg("path"), "Writes the space file (FORMATS.md 'Perceptual space'), atomically")
+      .def(py::pickle(
+          [](const Space& s) {
+            return py::make_tuple(space::space_file_text(s.file, kPickledSpace), s.warnings);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 2) throw std::invalid_argument("Space: not a pickled Space");
+            return Space{space::parse_space_file(state[0].cast<std::string>(), kPickledSpace),
+                         state[1].cast<std::vector<std::string>>()};
+          }))
       .def("__repr__", [](const Space& s) {
         return "<nibrig.space.Space: " + std::to_string(s.file.coordinates.rows()) + "-D, " +
                std::to_string(s.file.stimuli.size()) + " stimuli, " + space::family_name(s.file.model.family) + ">";
       });
 
-  m.def("fit", &fit, py::arg("judgments"), py::arg("dims") = 2, py::kw_only(), py::arg("descriptors") = py::none(),
-        py::arg("lam") = 0.0, py::arg("model") = "probit", py::arg("starts") = 16, py::arg("seed") = 1u,
-        py::arg("bootstrap") = 0, py::arg("threads") = 0u, py::arg("progress") = py::none(),
-        "Fits a space to triplet judgments (a file in any format nibrig reads: the paper's, Lagunas', "
-        "Salmon's; or Judgments from read_judgments) as "
-        "`nibrig space fit` does. descriptors: a catalog whose descriptors tie the axes (with lam > 0) and "
-        "give the descriptor map; model: a family name or 'auto' (chosen by cross-validation); bootstrap: "
-        "resamples for confidence regions; progress: called with (step, done, total). Releases the GIL; "
-        "Ctrl-C stops it (KeyboardInterrupt).");
+  py::list families;
+  for (const auto& f : space::every_family()) families.append(space::family_name(f));
+  m.attr("MODELS") = py::tuple(families);
+
+  m.def(
+      "fit", &fit, py::arg("judgments"), py::arg("dims") = 2, py::kw_only(),
+      py::arg("descriptors") = py::none(), py::arg("lam") = 0.0, py::arg("model") = "probit",
+      py::arg("models") = std::vector<std::string>{}, py::arg("folds") = 5, py::arg("starts") = 16,
+      py::arg("seed") = 1u, py::arg("bootstrap") = 0, py::arg("threads") = 0u,
+      py::arg("progress") = py::none(),
+      "Fits a space to triplet judgments (Judgments, from arrays or read_judgments; or a file in "
+      "any "
+      "format nibrig reads) as `nibrig space fit` does. descriptors: a catalog whose descriptors "
+      "tie the "
+      "axes (with lam > 0) and give the descriptor map; model: one of MODELS, or 'auto' to choose "
+      "among "
+      "`models` (default: all of MODELS) by `folds`-fold cross-validation (the table: "
+      "Space.model_scores); "
+      "starts: random starts of the fit, the best kept; seed: seeds the starts, the folds and the "
+      "bootstrap, so one seed gives one space; bootstrap: resamples for confidence regions; "
+      "threads: "
+      "worker threads, 0 for one per core (the space does not depend on it); progress: called with "
+      "(step, done, total). Releases the GIL; Ctrl-C stops it (KeyboardInterrupt).");
   m.def("default", [](int bootstrap, const py::object& progress) {
           if (bootstrap < 2) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected at least 2 resamples");
           Space out;
@@ -210,10 +338,13 @@ void add_space_module(py::module_ m) {
         "The space the demo and the panel open on: a SIMULATED observer's judgments of the bundled catalog's "
         "tools (no human judgments ship with nibrig), with a descriptor map; computed once (seconds) and kept "
         "in the user cache");
-  m.def("load", [](const std::filesystem::path& file) {
-          py::gil_scoped_release unlocked;
-          return Space{space::read_space_file(file), {}};
-        }, py::arg("path"), "Reads a space file (`nibrig space fit -o`)");
+  m.def(
+      "load",
+      [](const std::filesystem::path& file) {
+        ReleasedGil unlocked;
+        return Space{space::read_space_file(file), {}};
+      },
+      py::arg("path"), "Reads a space file (`nibrig space fit -o`)");
   add_space_scores(m);
 }
 

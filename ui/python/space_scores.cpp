@@ -10,6 +10,7 @@
 #include "model/space/objective.hpp"
 #include "model/space/space_evaluation.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 
 namespace nibrig::ui::python {
@@ -20,25 +21,18 @@ namespace space = model::space;
 namespace {
 
 space::SpaceEvaluation evaluate(const Space& s, const py::object& judgments, const std::optional<std::filesystem::path>& catalog) {
-  if (py::isinstance<Judgments>(judgments)) {
-    const auto& j = judgments.cast<const Judgments&>();
-    py::gil_scoped_release unlocked;
-    return space::evaluate_space(s.file, "the space", j.set, j.file, catalog.value_or(std::filesystem::path()));
-  }
-  const auto file = judgments.cast<std::filesystem::path>();
-  py::gil_scoped_release unlocked;
-  return space::evaluate_space(s.file, "the space", model::io::read_triplets(file), file,
+  std::filesystem::path label;
+  const model::io::TripletSet judged = judgments_argument(judgments, "judgments", label);
+  ReleasedGil unlocked;
+  return space::evaluate_space(s.file, "the space", judged, label,
                                catalog.value_or(std::filesystem::path()));
 }
 
 space::Validation validate(const py::object& judgments, const std::vector<std::size_t>& dims,
-                           const std::vector<double>& lambdas, const std::vector<std::string>& models,
-                           std::size_t folds, int starts, unsigned seed,
-                           const std::optional<std::filesystem::path>& descriptors, unsigned threads,
-                           const py::object& progress) {
-  const std::filesystem::path file = py::isinstance<Judgments>(judgments)
-                                         ? judgments.cast<const Judgments&>().file
-                                         : judgments.cast<std::filesystem::path>();
+                           const std::vector<double>& lambdas,
+                           const std::vector<std::string>& models, std::size_t folds, int starts,
+                           unsigned seed, const std::optional<std::filesystem::path>& descriptors,
+                           unsigned threads, const py::object& progress) {
   if (folds < 2) throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
   if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
   for (const auto d : dims)
@@ -47,6 +41,8 @@ space::Validation validate(const py::object& judgments, const std::vector<std::s
     if (!(l >= 0 && l <= space::kMaxLambda))
       throw std::invalid_argument("lambdas holds " + std::to_string(l) + "; expected weights from 0 to " +
                                   std::to_string(space::kMaxLambda));
+  std::filesystem::path label;
+  model::io::TripletSet judged = judgments_argument(judgments, "judgments", label);
   space::DimensionScanOptions scan;
   scan.dims = dims;
   scan.lambdas = lambdas;
@@ -56,7 +52,11 @@ space::Validation validate(const py::object& judgments, const std::vector<std::s
       scan.models = space::every_family();
       break;
     }
-    scan.models.push_back(space::parse_family(name));
+    try {
+      scan.models.push_back(space::parse_family(name));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("models: ") + e.what());
+    }
   }
   scan.cross_validation.folds = folds;
   scan.cross_validation.seed = seed;
@@ -67,8 +67,8 @@ space::Validation validate(const py::object& judgments, const std::vector<std::s
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
         scan.cross_validation.fit.stop = stop;
-        out = space::validate_space_file(
-            file, descriptors.value_or(std::filesystem::path()), scan,
+        out = space::validate_space(
+            std::move(judged), descriptors.value_or(std::filesystem::path()), scan,
             [&](std::size_t done, std::size_t total) { report("fitting folds", done, total); });
       },
       progress);
@@ -132,11 +132,14 @@ void add_space_scores(py::module_ m) {
                              "fit's coordinate with those numbers, {'r', 'p_value', 'n'}; else None");
 
   py::object space_class = m.attr("Space");
-  space_class.attr("evaluate") = py::cpp_function(
-      &evaluate, py::name("evaluate"), py::is_method(space_class), py::sibling(py::getattr(space_class, "evaluate", py::none())),
-      py::arg("judgments"), py::arg("catalog") = py::none(),
-      "Scores the space's predictions of judged triplets (a file or Judgments) against their answers, as "
-      "`nibrig space evaluate`; stimuli it was not fitted to are placed from `catalog`'s descriptors");
+  space_class.attr("evaluate") =
+      py::cpp_function(&evaluate, py::name("evaluate"), py::is_method(space_class),
+                       py::sibling(py::getattr(space_class, "evaluate", py::none())),
+                       py::arg("judgments"), py::arg("catalog") = py::none(),
+                       "Scores the space's predictions of judged triplets (Judgments, or a file) "
+                       "against their answers, as "
+                       "`nibrig space evaluate`; stimuli it was not fitted to are placed from "
+                       "`catalog`'s descriptors");
 
   m.def("validate", &validate, py::arg("judgments"), py::arg("dims") = std::vector<std::size_t>{1, 2, 3}, py::kw_only(),
         py::arg("lambdas") = std::vector<double>{0.0}, py::arg("models") = std::vector<std::string>{"probit"},

@@ -32,13 +32,24 @@ struct Placement {
   model::space::Placement placement;
 };
 
-// Judgments read once, for several fits.
+// Judgments read once, for several fits, or made from arrays (`file` empty).
 struct Judgments {
   model::io::TripletSet set;
   std::filesystem::path file;
 };
 
-// Space.evaluate and nibrig.space.validate, added to the submodule once Space is registered.
+// What names judgments made from arrays where a file would be named (a fitted space's provenance,
+// an error about a stimulus).
+inline constexpr const char* kArraysLabel = "judgments given as arrays";
+
+// The judgments a call takes: Judgments, or a path read here (Lagunas' ids as numbers: Python
+// reads no file beside it). Anything else is refused naming `argument`. `label`: the file, or
+// kArraysLabel.
+model::io::TripletSet judgments_argument(const pybind11::object& given, const char* argument,
+                                         std::filesystem::path& label);
+
+// Judgments and read_judgments; Space.evaluate and nibrig.space.validate, added once Space is.
+void add_space_judgments(pybind11::module_ m);
 void add_space_scores(pybind11::module_ m);
 
 }  // namespace nibrig::ui::python

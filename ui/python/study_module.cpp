@@ -10,6 +10,7 @@
 #include "model/study/study_report.hpp"
 #include "model/study/study_results.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
 
@@ -155,12 +156,16 @@ void add_study_module(py::module_ m) {
         return n;
       });
 
-  m.def("answers", [](const std::filesystem::path& folder) {
-          py::gil_scoped_release unlocked;
-          return Answers{study::read_study(folder)};
-        }, py::arg("folder"),
-        "Reads a study folder (`nibrig experiment run -o`): its stimuli and every participant's answers, practice "
-        "included; arrays and records are copies (each answer is a record in the library)");
+  m.def(
+      "answers",
+      [](const std::filesystem::path& folder) {
+        ReleasedGil unlocked;
+        return Answers{study::read_study(folder)};
+      },
+      py::arg("folder"),
+      "Reads a study folder (`nibrig experiment run -o`): its stimuli and every participant's "
+      "answers, practice "
+      "included; arrays and records are copies (each answer is a record in the library)");
 
   py::class_<StudyReport>(m, "Report", "A study's report, as `nibrig experiment report` gives and writes it")
       .def_readonly("folder", &StudyReport::folder, "Where judgments.csv, space.json and report.json were written")

@@ -32,7 +32,7 @@ def test_a_designer_and_a_search_are_held_to_the_command_lines_ranges():
 
 
 def test_a_fit_takes_a_path_or_judgments_and_a_bounded_number_of_starts(tmp_path):
-    with pytest.raises(TypeError, match=r"^judgments: expected a file path"):
+    with pytest.raises(TypeError, match=r"^judgments: expected Judgments \(from arrays or read_judgments\) or a file path, found int"):
         nibrig.space.fit(42)
     with pytest.raises(ValueError, match=r"^starts: 1000000000"):
         nibrig.space.fit(tmp_path / "none.csv", starts=10**9)

@@ -24,7 +24,7 @@ def test_a_fit_predicts_the_judgments_with_the_paper_model(salmon):
         named = {name for row in rows for name in row.split(",")[2:5]}
     assert sorted(space.stimuli) == sorted(named)
     assert space.model == "probit"
-    assert space.coordinates.shape == (1, len(named))
+    assert space.coordinates.shape == (len(named), 1)  # a row per stimulus, as scikit-learn's samples
     triplets = [("i0464", "i0532", "i0546"), ("i0246", "i0386", "i0462"), ("i0532", "i0464", "i0546")]
     p = space.predict(triplets)
     assert p.shape == (3,)
@@ -32,8 +32,8 @@ def test_a_fit_predicts_the_judgments_with_the_paper_model(salmon):
     index = {name: i for i, name in enumerate(space.stimuli)}
     q = space.coordinates
     for k, (r, a, b) in enumerate(triplets):
-        d_a = np.linalg.norm(q[:, index[a]] - q[:, index[r]])
-        d_b = np.linalg.norm(q[:, index[b]] - q[:, index[r]])
+        d_a = np.linalg.norm(q[index[a]] - q[index[r]])
+        d_b = np.linalg.norm(q[index[b]] - q[index[r]])
         expected = 0.5 * (1 + math.erf(space.scale * (d_b - d_a) / math.sqrt(2)))
         # The library's Φ is accurate to ~1e-15; erf's to ~1e-16: well inside 1e-12.
         assert p[k] == pytest.approx(expected, abs=1e-12)

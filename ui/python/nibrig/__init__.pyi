@@ -5,3 +5,5 @@ from . import render as render
 from . import rig as rig
 from . import space as space
 from . import study as study
+
+__version__: str

@@ -7,16 +7,31 @@ import numpy.typing as npt
 _Path = Union[str, os.PathLike[str]]
 
 class Judgments:
+    def __init__(
+        self,
+        triplets: npt.ArrayLike,
+        stimuli: Optional[Sequence[str]] = None,
+        *,
+        answers: Optional[npt.ArrayLike] = None,
+        counts: Optional[npt.ArrayLike] = None,
+    ) -> None: ...
     @property
     def stimuli(self) -> list[str]: ...
     @property
-    def triplets(self) -> int: ...
+    def triplets(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def counts(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def observers(self) -> list[str]: ...
     @property
     def responses(self) -> int: ...
     @property
-    def file(self) -> str: ...
+    def file(self) -> Optional[str]: ...
+    def __len__(self) -> int: ...
 
-def read_judgments(path: _Path) -> Judgments: ...
+def read_judgments(path: _Path, *, names: Optional[Sequence[str]] = None) -> Judgments: ...
+
+MODELS: Tuple[str, ...]
 
 class Placement:
     @property
@@ -49,12 +64,20 @@ class Space:
     @property
     def responses(self) -> int: ...
     @property
+    def triplets(self) -> int: ...
+    @property
+    def judgments(self) -> str: ...
+    @property
+    def model_scores(self) -> List[Dict[str, Any]]: ...
+    @property
     def descriptor_names(self) -> list[str]: ...
     @property
     def has_descriptor_map(self) -> bool: ...
     @property
     def warnings(self) -> list[str]: ...
-    def predict(self, triplets: Sequence[Tuple[str, str, str]]) -> npt.NDArray[np.float64]: ...
+    def predict(
+        self, triplets: Union[Sequence[Tuple[Union[str, int], Union[str, int], Union[str, int]]], npt.ArrayLike]
+    ) -> npt.NDArray[np.float64]: ...
     def place(
         self,
         descriptors: Union[Mapping[str, float], Sequence[float]],
@@ -120,6 +143,8 @@ def fit(
     descriptors: Optional[_Path] = None,
     lam: float = 0.0,
     model: str = "probit",
+    models: Sequence[str] = (),
+    folds: int = 5,
     starts: int = 16,
     seed: int = 1,
     bootstrap: int = 0,
@@ -130,3 +155,33 @@ def fit(
 def load(path: _Path) -> Space: ...
 
 def default(*, bootstrap: int = 200, progress: Optional[Callable[[str, int, int], object]] = None) -> Space: ...
+
+class SpaceEstimator:
+    space_: Space
+    embedding_: npt.NDArray[np.float64]
+    classes_: npt.NDArray[np.int64]
+    n_features_in_: int
+    dims: int
+    model: str
+    lam: float
+    starts: int
+    seed: int
+    n_stimuli: Optional[int]
+    threads: int
+    def __init__(
+        self,
+        dims: int = 2,
+        *,
+        model: str = "probit",
+        lam: float = 0.0,
+        starts: int = 16,
+        seed: int = 1,
+        n_stimuli: Optional[int] = None,
+        threads: int = 0,
+    ) -> None: ...
+    def get_params(self, deep: bool = True) -> Dict[str, Any]: ...
+    def set_params(self, **params: Any) -> "SpaceEstimator": ...
+    def fit(self, X: npt.ArrayLike, y: Optional[npt.ArrayLike] = None) -> "SpaceEstimator": ...
+    def predict_proba(self, X: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def predict(self, X: npt.ArrayLike) -> npt.NDArray[np.int64]: ...
+    def score(self, X: npt.ArrayLike, y: npt.ArrayLike) -> float: ...
