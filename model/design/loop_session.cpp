@@ -53,7 +53,7 @@ std::optional<std::vector<DesignPoint>> printable_range(const io::PrinterProfile
     const std::string why =
         unprintable_line(printer, DesignPoint{{{r.first_material, 1.0}}, tips.front()},
                          DesignPoint{{{r.second_material, 1.0}}, tips.front()});
-    if (!why.empty()) throw std::invalid_argument("--printer " + printer.name + ": " + why);
+    if (!why.empty()) throw std::invalid_argument("printer " + printer.name + ": " + why);
     return std::nullopt;
   }
   std::vector<DesignPoint> out;
@@ -68,9 +68,9 @@ std::optional<std::vector<DesignPoint>> printable_range(const io::PrinterProfile
         why = label(point) + ": " + reasons.front();
     }
   if (out.empty())
-    throw std::invalid_argument("--printer " + printer.name + " cannot mix " + r.first_material +
+    throw std::invalid_argument("printer " + printer.name + " cannot mix " + r.first_material +
                                 " and " + r.second_material + ", nor print either alone (" + why +
-                                "): give --mix with a material it prints");
+                                "): give a mix with a material it prints");
   return out;
 }
 
@@ -167,7 +167,7 @@ void LoopSession::load(const numeric::StepProgress& progress) {
   if (printer_) {
     for (const auto& c : r.candidates)
       if (const auto reasons = refusals(*printer_, options, c); !reasons.empty())
-        throw std::invalid_argument("--printer " + printer_->name + " cannot print the candidate " +
+        throw std::invalid_argument("printer " + printer_->name + " cannot print the candidate " +
                                     label(c) + ": " + reasons.front());
     if (r.candidates.empty())
       printable_range(*printer_, options, r, {kReferenceTipForPrinterCheck});

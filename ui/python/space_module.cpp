@@ -192,17 +192,46 @@ constexpr const char* kPickledSpace = "a pickled nibrig.space.Space";
 }  // namespace
 
 void add_space_module(py::module_ m) {
-  py::class_<Placement>(m, "Placement", "A tool placed from its descriptors: a Gaussian position in the space")
+  py::class_<Placement>(m, "Placement",
+                        "A tool placed from its descriptors: a Gaussian position in the space")
       .def_property_readonly(
-          "mean", [](const py::object& self) { return vector_view(self.cast<const Placement&>().placement.mean, self); },
+          "mean",
+          [](const py::object& self) {
+            return vector_view(self.cast<const Placement&>().placement.mean, self);
+          },
           "Its position (one value per axis, in the space's units); a view, not a copy")
       .def_property_readonly(
           "covariance",
-          [](const py::object& self) { return matrix_view(self.cast<const Placement&>().placement.covariance, self); },
-          "The position's covariance (axes × axes, squared units): the map's scatter and its uncertainty")
+          [](const py::object& self) {
+            return matrix_view(self.cast<const Placement&>().placement.covariance, self);
+          },
+          "The position's covariance (axes × axes, squared units): the map's scatter and its "
+          "uncertainty")
       .def("ellipses", &ellipses, py::arg("levels") = std::vector<double>{0.68, 0.95},
-           "The region in the plane of axes 1 and 2 at each level: (semi_axis_1, semi_axis_2, angle in radians "
-           "from axis 1) per level");
+           "The region in the plane of axes 1 and 2 at each level: (semi_axis_1, semi_axis_2, "
+           "angle in radians "
+           "from axis 1) per level")
+      .def(py::pickle(
+          [](const Placement& p) {
+            return py::make_tuple(
+                std::vector<double>(p.placement.mean.data(),
+                                    p.placement.mean.data() + p.placement.mean.size()),
+                std::vector<double>(p.placement.covariance.data(),
+                                    p.placement.covariance.data() + p.placement.covariance.size()));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 2)
+              throw std::invalid_argument("Placement: not a pickled Placement");
+            const auto mean = state[0].cast<std::vector<double>>();
+            const auto covariance = state[1].cast<std::vector<double>>();
+            const auto n = static_cast<Eigen::Index>(mean.size());
+            if (covariance.size() != mean.size() * mean.size())
+              throw std::invalid_argument("Placement: not a pickled Placement");
+            Placement p;
+            p.placement.mean = Eigen::Map<const Eigen::VectorXd>(mean.data(), n);
+            p.placement.covariance = Eigen::Map<const Eigen::MatrixXd>(covariance.data(), n, n);
+            return p;
+          }));
 
   add_space_judgments(m);
 
@@ -227,8 +256,9 @@ void add_space_module(py::module_ m) {
           "model", [](const Space& s) { return space::family_name(s.file.model.family); },
           "The judgment model's family: 'probit' (the paper's), 'logistic', 'student-t', with "
           "'+lapse' and '+noise'")
-      .def_property_readonly("model_description",
-                             [](const Space& s) { return space::describe_model(s.file.model); })
+      .def_property_readonly(
+          "model_description", [](const Space& s) { return space::describe_model(s.file.model); },
+          "The judgment model with its fitted parts, in words (scale, lapse, noise)")
       .def_property_readonly(
           "model_reason", [](const Space& s) { return s.file.model_reason; },
           "Why this model: given, or the cross-validation that chose it")

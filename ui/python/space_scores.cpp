@@ -141,13 +141,19 @@ void add_space_scores(py::module_ m) {
                        "`nibrig space evaluate`; stimuli it was not fitted to are placed from "
                        "`catalog`'s descriptors");
 
-  m.def("validate", &validate, py::arg("judgments"), py::arg("dims") = std::vector<std::size_t>{1, 2, 3}, py::kw_only(),
-        py::arg("lambdas") = std::vector<double>{0.0}, py::arg("models") = std::vector<std::string>{"probit"},
-        py::arg("folds") = 5u, py::arg("starts") = 8, py::arg("seed") = 1u, py::arg("descriptors") = py::none(),
+  m.def("validate", &validate, py::arg("judgments"),
+        py::arg("dims") = std::vector<std::size_t>{1, 2, 3}, py::kw_only(),
+        py::arg("lambdas") = std::vector<double>{0.0},
+        py::arg("models") = std::vector<std::string>{"probit"}, py::arg("folds") = 5u,
+        py::arg("starts") = 8, py::arg("seed") = 1u, py::arg("descriptors") = py::none(),
         py::arg("threads") = 0u, py::arg("progress") = py::none(),
-        "k-fold cross-validation of a space per number of dimensions, weight λ (lambdas above 0 need descriptors, "
-        "a catalog) and judgment model ('all' for every family), as `nibrig space validate`; progress counts "
-        "fold fits. Releases the GIL; Ctrl-C stops it.");
+        "k-fold cross-validation of a space per number of dimensions, weight λ (lambdas above 0 "
+        "need descriptors, "
+        "a catalog) and judgment model (of MODELS, or 'all' for every one), as `nibrig space "
+        "validate`. seed: "
+        "seeds the folds and the starts, so one seed gives one table; threads: worker threads, 0 "
+        "for one per "
+        "core; progress counts fold fits. Releases the GIL; Ctrl-C stops it.");
 }
 
 }  // namespace nibrig::ui::python

@@ -312,8 +312,7 @@ TEST(DesignLoopCli, APrinterThatCannotMixIsGivenOneMaterialPrints) {
        "--space", space.string(), "--printer", "prusa-mk3s", "-o", (root / "fdm").string()},
       root);
   EXPECT_EQ(refused.exit_code, 1) << refused.output;
-  EXPECT_THAT(refused.output,
-              ::testing::HasSubstr("--printer prusa-mk3s cannot mix vero and DM85"));
+  EXPECT_THAT(refused.output, ::testing::HasSubstr("printer prusa-mk3s cannot mix vero and DM85"));
   EXPECT_FALSE(fs::exists(root / "fdm" / "round-1"));
 }
 

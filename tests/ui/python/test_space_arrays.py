@@ -183,6 +183,9 @@ def test_place_takes_the_error_as_any_array():
     assert np.trace(added) > 0
     with pytest.raises(ValueError, match=f"error: expected a {n} x {n} matrix"):
         space.place(x, error=np.eye(n + 1))
+    again = pickle.loads(pickle.dumps(placements[0]))
+    np.testing.assert_array_equal(again.mean, placements[0].mean)
+    np.testing.assert_array_equal(again.covariance, placements[0].covariance)
 
 
 def test_lagunas_ids_are_named_only_as_asked():
