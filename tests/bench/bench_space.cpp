@@ -10,6 +10,8 @@
 #include "model/io/triplets.hpp"
 #include "model/space/bootstrap.hpp"
 #include "model/space/fit.hpp"
+#include "model/space/space_fit_file.hpp"
+#include "model/space/space_inputs.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace {
@@ -65,6 +67,21 @@ void BM_FitLagunas3D(benchmark::State& state) {
     state.counters["objective"] = fit.objective;
   }
   state.counters["triplets"] = static_cast<double>(p.triplets.size());
+}
+
+// The same fit as every face makes it (`nibrig space fit`, the panel, nibrig.space.fit): the fit
+// with its diagnosis and the space file's statistics, the judgments read before the loop. What
+// tests/bench/python_space_fit.py sets the Python call beside.
+void BM_FitSpaceFileLagunas3D(benchmark::State& state) {
+  const auto file = nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json";
+  const space::SpaceInputs in = space::read_space_inputs(file, {}, 3, 0.0);
+  space::SpaceFitSettings settings;
+  settings.starts = 8;
+  for (auto _ : state) {
+    const auto fitted = space::fit_space_file(in, file, {}, settings);
+    benchmark::DoNotOptimize(fitted.file.objective);
+    state.counters["objective"] = fitted.file.negative_log_likelihood;
+  }
 }
 
 // One start on one thread for each judgment model, beside tests/bench/numpy_space_fit.py (numpy and
@@ -131,6 +148,7 @@ void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
 BENCHMARK(BM_FitPaperSizedStudy2D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Bootstrap1000PaperSized2D)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FitLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FitSpaceFileLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SpaceObjectiveLagunas3D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpaceStartLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
