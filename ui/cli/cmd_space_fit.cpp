@@ -46,6 +46,11 @@ void report_model(const space::SpaceFile& file) {
 }  // namespace
 
 void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
+  // The library refuses it too, in words no face's; here, before the judgments are read, naming
+  // the options (as space validate does).
+  if (o.lambda > 0 && o.descriptors.empty())
+    throw CLI::ValidationError(
+        "--lambda", "above 0 needs --descriptors catalog.json: the axes are tied to them");
   const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, o.descriptors, o.dims, o.lambda);
   spdlog::info("{}: {} stimuli, {} triplets, {} responses; {}-D fit from {} starts, lambda {}",
                o.judgments.string(), in.judgments.stimuli.size(), in.judgments.triplets.size(),
