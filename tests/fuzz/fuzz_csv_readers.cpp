@@ -66,9 +66,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   expect_only_format_errors(unnamed, [&](const fs::path& f) { return io::read_paper_vibration(f, stated); });
   expect_only_format_errors(unnamed, [&](const fs::path& f) { return io::read_paper_friction(f, stated); });
   expect_only_format_errors(drawing, io::read_paper_drawing);
-  expect_only_format_errors(triplets, io::read_triplets);
+  expect_only_format_errors(triplets, [](const fs::path& f) { return io::read_triplets(f); });
   expect_only_format_errors(triplets, io::read_triplet_csv);
   expect_only_format_errors(triplets, io::read_salmon_csv);
-  expect_only_format_errors(lagunas, io::read_lagunas_json);
+  expect_only_format_errors(lagunas, [](const fs::path& f) { return io::read_lagunas_json(f); });
+  // Names given by a script instead of read beside the file: an id past them is a format error.
+  expect_only_format_errors(lagunas, [](const fs::path& f) {
+    return io::read_lagunas_json(f, {{"a", "b", "c"}, false});
+  });
   return 0;
 }
