@@ -1,6 +1,7 @@
 // nibrig.space: fit a perceptual space from triplet judgments (the one call `nibrig space fit` and
 // the panel make: model/space/space_fit_file.hpp), read and write it, predict judgments and place
 // tools from their descriptors with their regions.
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -48,6 +49,14 @@ Space fit(const py::object& judgments_given, std::size_t dims,
   if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 or more");
   if (folds < 2)
     throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
+  // The library refuses these too, in words no face's; here in the arguments' names.
+  if (!(lambda >= 0 && lambda <= space::kMaxLambda))
+    throw std::invalid_argument("lam is " + fmt::format("{:g}", lambda) +
+                                "; expected a weight from 0 to " +
+                                fmt::format("{:g}", space::kMaxLambda));
+  if (lambda > 0 && !descriptors)
+    throw std::invalid_argument(
+        "lam above 0 ties the axes to descriptors: give descriptors=a catalog");
   const std::filesystem::path catalog = descriptors.value_or(std::filesystem::path());
   space::SpaceFitSettings settings;
   settings.starts = starts;

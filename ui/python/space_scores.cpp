@@ -82,32 +82,126 @@ py::object correlation(const std::optional<space::Correlation>& c) {
   return d;
 }
 
+py::tuple agreement_state(const space::AgreementTest& a) {
+  return py::make_tuple(a.agreements, a.trials, a.fraction, a.z, a.p_value);
+}
+
+space::AgreementTest agreement_of(const py::handle& state) {
+  const auto t = state.cast<std::tuple<double, double, double, double, double>>();
+  return {std::get<0>(t), std::get<1>(t), std::get<2>(t), std::get<3>(t), std::get<4>(t)};
+}
+
+py::object correlation_state(const std::optional<space::Correlation>& c) {
+  return c ? py::object(py::make_tuple(c->r, c->p_value, c->n)) : py::none();
+}
+
+std::optional<space::Correlation> correlation_of(const py::handle& state) {
+  if (state.is_none()) return std::nullopt;
+  const auto t = state.cast<std::tuple<double, double, std::size_t>>();
+  return space::Correlation{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
+}
+
+// A result held between calls (returned from a joblib worker, say) pickles as its numbers.
+py::tuple evaluation_state(const space::SpaceEvaluation& e) {
+  const auto& s = e.scores;
+  return py::make_tuple(s.triplets, s.responses, agreement_state(s.majority),
+                        agreement_state(s.individual), s.mean_absolute_error, s.log_loss,
+                        correlation_state(s.probability_correlation), s.no_correlation_because,
+                        e.placed_from_descriptors);
+}
+
+space::SpaceEvaluation evaluation_of(const py::tuple& state) {
+  if (state.size() != 9) throw std::invalid_argument("Evaluation: not a pickled Evaluation");
+  space::SpaceEvaluation e;
+  e.scores.triplets = state[0].cast<std::size_t>();
+  e.scores.responses = state[1].cast<std::size_t>();
+  e.scores.majority = agreement_of(state[2]);
+  e.scores.individual = agreement_of(state[3]);
+  e.scores.mean_absolute_error = state[4].cast<double>();
+  e.scores.log_loss = state[5].cast<double>();
+  e.scores.probability_correlation = correlation_of(state[6]);
+  e.scores.no_correlation_because = state[7].cast<std::string>();
+  e.placed_from_descriptors = state[8].cast<std::size_t>();
+  return e;
+}
+
+py::tuple validation_state(const space::Validation& v) {
+  py::list points;
+  for (const auto& p : v.points)
+    points.append(py::make_tuple(p.dims, p.lambda, space::family_name(p.model), p.mean_error,
+                                 p.sd_error, p.majority_agreement, p.individual_agreement,
+                                 p.log_loss));
+  return py::make_tuple(v.triplets, v.responses, points,
+                        correlation_state(v.rank_correlation_with_names));
+}
+
+space::Validation validation_of(const py::tuple& state) {
+  if (state.size() != 4) throw std::invalid_argument("Validation: not a pickled Validation");
+  space::Validation v;
+  v.triplets = state[0].cast<std::size_t>();
+  v.responses = state[1].cast<std::size_t>();
+  for (const auto& item : state[2].cast<py::list>()) {
+    const auto t = item.cast<
+        std::tuple<std::size_t, double, std::string, double, double, double, double, double>>();
+    v.points.push_back({std::get<0>(t), std::get<1>(t), space::parse_family(std::get<2>(t)),
+                        std::get<3>(t), std::get<4>(t), std::get<5>(t), std::get<6>(t),
+                        std::get<7>(t)});
+  }
+  v.rank_correlation_with_names = correlation_of(state[3]);
+  return v;
+}
+
 }  // namespace
 
 void add_space_scores(py::module_ m) {
-  py::class_<space::SpaceEvaluation>(m, "Evaluation", "A space's predictions of judged triplets scored against their answers")
-      .def_property_readonly("triplets", [](const space::SpaceEvaluation& e) { return e.scores.triplets; })
-      .def_property_readonly("responses", [](const space::SpaceEvaluation& e) { return e.scores.responses; })
-      .def_readonly("placed_from_descriptors", &space::SpaceEvaluation::placed_from_descriptors,
-                    "Judged stimuli the space was not fitted to, placed from the catalog's descriptors")
-      .def_property_readonly("majority_agreement", [](const space::SpaceEvaluation& e) { return e.scores.majority.fraction; },
-                             "Share of untied triplets whose majority answer is predicted (0.5 counts half)")
-      .def_property_readonly("majority_trials", [](const space::SpaceEvaluation& e) { return e.scores.majority.trials; })
-      .def_property_readonly("majority_z", [](const space::SpaceEvaluation& e) { return e.scores.majority.z; },
-                             "The agreement's z against chance (normal approximation of Binomial(n, 1/2))")
-      .def_property_readonly("majority_p_value", [](const space::SpaceEvaluation& e) { return e.scores.majority.p_value; },
-                             "One-sided: P(Z >= z)")
-      .def_property_readonly("individual_agreement", [](const space::SpaceEvaluation& e) { return e.scores.individual.fraction; },
-                             "Share of every individual answer predicted")
-      .def_property_readonly("mean_absolute_error", [](const space::SpaceEvaluation& e) { return e.scores.mean_absolute_error; },
-                             "Mean over triplets of |p_predicted - p_observed| (the paper's 'error')")
-      .def_property_readonly("log_loss", [](const space::SpaceEvaluation& e) { return e.scores.log_loss; },
-                             "Mean -log P(the answer given) per response, nats")
-      .def_property_readonly("pearson", [](const space::SpaceEvaluation& e) { return correlation(e.scores.probability_correlation); },
-                             "Predicted vs observed probability: {'r', 'p_value', 'n'}, or None (see no_correlation_because)")
-      .def_property_readonly("no_correlation_because", [](const space::SpaceEvaluation& e) { return e.scores.no_correlation_because; });
+  py::class_<space::SpaceEvaluation>(
+      m, "Evaluation", "A space's predictions of judged triplets scored against their answers")
+      .def_property_readonly("triplets",
+                             [](const space::SpaceEvaluation& e) { return e.scores.triplets; })
+      .def_property_readonly("responses",
+                             [](const space::SpaceEvaluation& e) { return e.scores.responses; })
+      .def_readonly(
+          "placed_from_descriptors", &space::SpaceEvaluation::placed_from_descriptors,
+          "Judged stimuli the space was not fitted to, placed from the catalog's descriptors")
+      .def_property_readonly(
+          "majority_agreement",
+          [](const space::SpaceEvaluation& e) { return e.scores.majority.fraction; },
+          "Share of untied triplets whose majority answer is predicted (0.5 counts half)")
+      .def_property_readonly(
+          "majority_trials",
+          [](const space::SpaceEvaluation& e) { return e.scores.majority.trials; })
+      .def_property_readonly(
+          "majority_z", [](const space::SpaceEvaluation& e) { return e.scores.majority.z; },
+          "The agreement's z against chance (normal approximation of Binomial(n, 1/2))")
+      .def_property_readonly(
+          "majority_p_value",
+          [](const space::SpaceEvaluation& e) { return e.scores.majority.p_value; },
+          "One-sided: P(Z >= z)")
+      .def_property_readonly(
+          "individual_agreement",
+          [](const space::SpaceEvaluation& e) { return e.scores.individual.fraction; },
+          "Share of every individual answer predicted")
+      .def_property_readonly(
+          "mean_absolute_error",
+          [](const space::SpaceEvaluation& e) { return e.scores.mean_absolute_error; },
+          "Mean over triplets of |p_predicted - p_observed| (the paper's 'error')")
+      .def_property_readonly(
+          "log_loss", [](const space::SpaceEvaluation& e) { return e.scores.log_loss; },
+          "Mean -log P(the answer given) per response, nats")
+      .def_property_readonly(
+          "pearson",
+          [](const space::SpaceEvaluation& e) {
+            return correlation(e.scores.probability_correlation);
+          },
+          "Predicted vs observed probability: {'r', 'p_value', 'n'}, or None (see "
+          "no_correlation_because)")
+      .def_property_readonly(
+          "no_correlation_because",
+          [](const space::SpaceEvaluation& e) { return e.scores.no_correlation_because; })
+      .def(py::pickle(&evaluation_state, &evaluation_of));
 
-  py::class_<space::Validation>(m, "Validation", "Cross-validated spaces of several dimensions, weights and models")
+  py::class_<space::Validation>(m, "Validation",
+                                "Cross-validated spaces of several dimensions, weights and models")
       .def_readonly("triplets", &space::Validation::triplets)
       .def_readonly("responses", &space::Validation::responses)
       .def_property_readonly(
@@ -124,12 +218,16 @@ void add_space_scores(py::module_ m) {
             }
             return out;
           },
-          "One dict per dims x lambda x model: mean_error and sd_error (of the held-out mean |p_predicted - "
-          "p_observed| over folds), majority_agreement, individual_agreement, log_loss (nats per response)")
-      .def_property_readonly("rank_correlation_with_names",
-                             [](const space::Validation& v) { return correlation(v.rank_correlation_with_names); },
-                             "When every stimulus name ends in a number and dims holds 1: Spearman's rho of a 1-D "
-                             "fit's coordinate with those numbers, {'r', 'p_value', 'n'}; else None");
+          "One dict per dims x lambda x model: mean_error and sd_error (of the held-out mean "
+          "|p_predicted - "
+          "p_observed| over folds), majority_agreement, individual_agreement, log_loss (nats per "
+          "response)")
+      .def_property_readonly(
+          "rank_correlation_with_names",
+          [](const space::Validation& v) { return correlation(v.rank_correlation_with_names); },
+          "When every stimulus name ends in a number and dims holds 1: Spearman's rho of a 1-D "
+          "fit's coordinate with those numbers, {'r', 'p_value', 'n'}; else None")
+      .def(py::pickle(&validation_state, &validation_of));
 
   py::object space_class = m.attr("Space");
   space_class.attr("evaluate") =

@@ -84,6 +84,11 @@ def test_bad_arrays_are_refused_naming_the_argument():
         nibrig.space.Judgments(np.array([[0, 1, 2]]), counts=np.array([[1, -1]]))
     with pytest.raises(TypeError, match="judgments: expected Judgments"):
         nibrig.space.fit(X)
+    judgments = nibrig.space.Judgments(X, answers=y)
+    with pytest.raises(ValueError, match="^lam above 0 ties the axes to descriptors: give descriptors="):
+        nibrig.space.fit(judgments, lam=0.5)
+    with pytest.raises(ValueError, match="^lam is -1; expected a weight from 0 to 10000"):
+        nibrig.space.fit(judgments, lam=-1.0)
 
 
 def test_predict_takes_indices_as_names_and_refuses_a_reference_among_the_candidates():
@@ -98,7 +103,7 @@ def test_predict_takes_indices_as_names_and_refuses_a_reference_among_the_candid
         space.predict(np.array([[0, 1, 10]]))
 
 
-def test_a_pickled_space_and_judgments_predict_and_fit_as_the_originals():
+def test_a_pickled_space_judgments_and_scores_are_the_originals():
     X, y, _ = simulated_answers(300)
     judgments = nibrig.space.Judgments(X, answers=y)
     space = nibrig.space.fit(judgments, dims=2, starts=2, bootstrap=4)
@@ -106,6 +111,16 @@ def test_a_pickled_space_and_judgments_predict_and_fit_as_the_originals():
         # The space's text keeps every double: the same predictions, bit for bit.
         np.testing.assert_array_equal(copied.predict(X), space.predict(X))
         assert copied.stimuli == space.stimuli and copied.warnings == space.warnings
+    scores = space.evaluate(judgments)
+    scores_again = pickle.loads(pickle.dumps(scores))
+    for name in ("triplets", "responses", "majority_agreement", "majority_z", "majority_p_value",
+                 "individual_agreement", "mean_absolute_error", "log_loss", "pearson", "no_correlation_because"):
+        assert getattr(scores_again, name) == getattr(scores, name), name
+    validation = nibrig.space.validate(judgments, dims=[1, 2], folds=3, starts=1)
+    validation_again = pickle.loads(pickle.dumps(validation))
+    assert validation_again.points == validation.points
+    assert (validation_again.triplets, validation_again.responses) == (validation.triplets, validation.responses)
+    assert validation_again.rank_correlation_with_names == validation.rank_correlation_with_names
     again = pickle.loads(pickle.dumps(judgments))
     np.testing.assert_array_equal(again.triplets, judgments.triplets)
     np.testing.assert_array_equal(again.counts, judgments.counts)
