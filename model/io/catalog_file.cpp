@@ -322,10 +322,19 @@ Catalog read_catalog(const std::filesystem::path& file) {
   return catalog_from(parse_file(file), file);
 }
 
-void write_catalog(const std::filesystem::path& file, const Catalog& catalog, JsonLayout layout) {
+std::string catalog_text(const Catalog& catalog, const std::filesystem::path& file,
+                         JsonLayout layout) {
   const nlohmann::json json = catalog_json(catalog);
   catalog_from(json, file);  // the same checks as reading, so a written catalog always reads back
-  write_file_atomically(file, json_text(json, file, layout == JsonLayout::indented ? 2 : -1));
+  return json_text(json, file, layout == JsonLayout::indented ? 2 : -1);
+}
+
+Catalog parse_catalog(const std::string& text, const std::filesystem::path& file) {
+  return catalog_from(json_fields::parse_text(text, file), file);
+}
+
+void write_catalog(const std::filesystem::path& file, const Catalog& catalog, JsonLayout layout) {
+  write_file_atomically(file, catalog_text(catalog, file, layout));
 }
 
 }  // namespace nibrig::model::io

@@ -80,6 +80,11 @@ Catalog read_catalog(const std::filesystem::path& file);
 enum class JsonLayout { indented, compact };
 void write_catalog(const std::filesystem::path& file, const Catalog& catalog,
                    JsonLayout layout = JsonLayout::indented);
+// The file's text and its reading from text, for a catalog kept in memory (a pickled one): the same
+// checks, `file` naming the text in errors.
+std::string catalog_text(const Catalog& catalog, const std::filesystem::path& file,
+                         JsonLayout layout = JsonLayout::compact);
+Catalog parse_catalog(const std::string& text, const std::filesystem::path& file);
 
 // The spectrum as {"frequencies_hz": [...], "speeds_mm_s": [...], "amplitude_m_s2": [[...] per
 // speed]}.

@@ -99,6 +99,8 @@ struct Catalog {
   std::vector<std::string> skipped;
 };
 
+constexpr const char* kPickledCatalog = "a pickled nibrig.measure.Catalog";
+
 Catalog build(const std::filesystem::path& folder, const std::optional<std::filesystem::path>& threshold_file,
               unsigned threads, const py::object& progress) {
   Catalog out;
@@ -199,7 +201,16 @@ void add_measure_module(py::module_ m) {
             ReleasedGil unlocked;
             model::io::write_catalog(file, c.catalog);
           },
-          py::arg("path"), "Writes the catalog JSON (`nibrig catalog -o`), atomically");
+          py::arg("path"), "Writes the catalog JSON (`nibrig catalog -o`), atomically")
+      .def(py::pickle(
+          [](const Catalog& c) {
+            return py::make_tuple(model::io::catalog_text(c.catalog, kPickledCatalog), c.skipped);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 2) throw std::invalid_argument("Catalog: not a pickled Catalog");
+            return Catalog{model::io::parse_catalog(state[0].cast<std::string>(), kPickledCatalog),
+                           state[1].cast<std::vector<std::string>>()};
+          }));
 
   m.def("catalog", &build, py::arg("folder"), py::kw_only(), py::arg("threshold") = py::none(),
         py::arg("threads") = 0u, py::arg("progress") = py::none(),

@@ -4,6 +4,7 @@ hold, a catalog of two recordings holds each one's numbers, and errors are Pytho
 
 import json
 import os
+import pickle
 
 import numpy as np
 import pytest
@@ -64,6 +65,28 @@ def test_a_catalog_of_two_recordings_holds_each_ones_numbers(tmp_path):
     assert nibrig.measure.load_catalog(tmp_path / "catalog.json").pairings == built.pairings
     bundled = nibrig.measure.load_catalog(nibrig.measure.bundled_catalog())
     assert "cryon" in bundled.tools and "office" in bundled.surfaces
+
+
+def test_a_catalog_pickles_as_the_file_it_would_write(tmp_path):
+    bundled = nibrig.measure.load_catalog(nibrig.measure.bundled_catalog())
+    again = pickle.loads(pickle.dumps(bundled))
+    assert (again.tools, again.surfaces, again.pairings) == (bundled.tools, bundled.surfaces, bundled.pairings)
+    # Every number kept: the file holds speeds in mm/s and the catalog m/s, so a value through both
+    # units may move by an ulp (2.2e-16 relative), never more.
+    bundled.save(tmp_path / "original.json")
+    again.save(tmp_path / "copy.json")
+
+    def numbers(node):
+        if isinstance(node, dict):
+            return [x for key in sorted(node) for x in numbers(node[key])]
+        if isinstance(node, list):
+            return [x for item in node for x in numbers(item)]
+        return [node] if isinstance(node, (int, float)) and not isinstance(node, bool) else []
+
+    original = numbers(json.loads((tmp_path / "original.json").read_text()))
+    copied = numbers(json.loads((tmp_path / "copy.json").read_text()))
+    assert len(copied) == len(original) > 1000
+    np.testing.assert_allclose(copied, original, rtol=4.5e-16, atol=0)
 
 
 def test_bad_input_and_missing_files_are_python_errors(tmp_path):
