@@ -63,9 +63,7 @@ void devices(const std::filesystem::path& json) {
   if (json.empty()) return;
   nlohmann::json out = tablets_json(tablets, why);
   out["audio"] = audio_devices_json(apis);
-  std::fflush(stdout);
-  write_json_file(json, out);
-  say_wrote(json);
+  write_json_numbers(json, out);
 }
 
 // The engine follows the pen until --seconds pass or the tablet goes; each stroke on its own line,
@@ -224,9 +222,7 @@ void audition(const AuditionOptions& o) {
   if (o.json.empty()) return;
   result["engine"] = engine_stats_json(audition.engine_stats());
   result["device"] = output_stats_json(*audition.output_stats());
-  std::fflush(stdout);
-  write_json_file(o.json, result);
-  say_wrote(o.json);
+  write_json_numbers(o.json, result);
 }
 
 void calibrate(const CalibrateOptions& o) {
@@ -252,9 +248,7 @@ void calibrate(const CalibrateOptions& o) {
 void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> global) {
   auto* list = app.add_subcommand("devices", "List audio APIs and devices, and pen tablets (choose them by name)");
   auto devices_json = std::make_shared<std::filesystem::path>();
-  list->add_option("--json", *devices_json,
-                   "Also write the list as JSON to this file, for a script")
-      ->check(file_to_write());
+  add_json_option(list, *devices_json, "the list");
   list->callback([global, devices_json] {
     configure_logging(global->verbosity);
     devices(*devices_json);
@@ -281,10 +275,9 @@ void add_audio_commands(CLI::App& app, std::shared_ptr<const GlobalOptions> glob
   play->add_option("--record", a->record_folder,
                    "With --pen: record the strokes into this folder, in the paper's drawing format "
                    "(replay with `render --trajectory`)");
-  play->add_option("--json", a->json,
-                   "Also write what was played and measured (switches, engine and device counters, "
-                   "the pen's strokes) as JSON to this file, for a script")
-      ->check(file_to_write());
+  add_json_option(play, a->json,
+                  "what was played and measured (switches, engine and device counters, the pen's "
+                  "strokes)");
   play->callback([a, global] {
     configure_logging(global->verbosity);
     for (const auto& note : outside_measured_range(a->stroke)) spdlog::warn("{}", note);

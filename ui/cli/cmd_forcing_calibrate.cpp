@@ -71,9 +71,7 @@ void add_calibration_output_options(CLI::App* cmd, CalibrationOutput& o) {
                   "(" +
                       forcing::forcing_store_folder().string() + ")");
   cmd->add_flag("--replace", o.replace, "With --save: write over a model stored under that name");
-  cmd->add_option("--json", o.json,
-                  "Also write the numbers printed, as JSON, to this file (for scripts)")
-      ->check(file_to_write());
+  add_json_option(cmd, o.json, "the numbers printed");
 }
 
 void write_calibration_outputs(const forcing::ForcingModel& model, const CalibrationOutput& o) {
@@ -86,12 +84,6 @@ void write_calibration_outputs(const forcing::ForcingModel& model, const Calibra
     say_wrote(forcing::save_forcing_model(o.save, model, o.replace));
     std::cout << fmt::format("stored as '{}': `--forcing {}` predicts with it\n", o.save, o.save);
   }
-}
-
-void write_calibration_numbers(const nlohmann::json& numbers, const CalibrationOutput& o) {
-  if (o.json.empty()) return;
-  write_json_file(o.json, numbers);
-  say_wrote(o.json);
 }
 
 // The measurement's repeatability from the catalog's prints recorded twice, when it has any.
@@ -202,8 +194,8 @@ void run_material_check(const MaterialCalibrateOptions& o, const ForcingInputs& 
                                step.prediction_rms_db);
   }
   write_calibration_outputs(c.model, o.out);
-  write_calibration_numbers(
-      material_check_json(check, study ? &*study : nullptr, mixes, seconds, repeatability), o.out);
+  write_json_numbers(o.out.json, material_check_json(check, study ? &*study : nullptr, mixes,
+                                                     seconds, repeatability));
 }
 
 // A lab's calibration against a model it has: the prints of the material at the tips asked for.
@@ -227,8 +219,8 @@ void run_material_calibration(const MaterialCalibrateOptions& o, const std::file
                              p.rms_db, versus_repeatability(p.rms_db, repeatability));
   std::cout << calibrated_curve_rows(c) << calibration_uncertainty_note(c);
   write_calibration_outputs(c.model, o.out);
-  write_calibration_numbers(material_calibration_json(c, tips, file, predicted, repeatability),
-                            o.out);
+  write_json_numbers(o.out.json,
+                     material_calibration_json(c, tips, file, predicted, repeatability));
 }
 
 // The catalog's prints; against a model, on its grid (a lab's recordings have their own).
@@ -322,7 +314,7 @@ void run_surface_study(const SurfaceCalibrateOptions& o, const ForcingInputs& in
     write_calibration_outputs(written->model, o.out);
     findings.written = &*written;
   }
-  write_calibration_numbers(surface_study_json(study, findings, seconds, repeatability), o.out);
+  write_json_numbers(o.out.json, surface_study_json(study, findings, seconds, repeatability));
 }
 
 void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesystem::path& file,
@@ -340,7 +332,7 @@ void run_surface_calibration(const SurfaceCalibrateOptions& o, const std::filesy
   for (const auto& t : c.tool_fits)
     std::cout << fmt::format("  {:<12}{:>8.2f} dB (in sample)\n", t.tool, t.rms_db);
   write_calibration_outputs(c.model, o.out);
-  write_calibration_numbers(surface_calibration_json(c, file, repeatability), o.out);
+  write_json_numbers(o.out.json, surface_calibration_json(c, file, repeatability));
 }
 
 void run_calibrate_surface(const SurfaceCalibrateOptions& o) {

@@ -85,14 +85,11 @@ void latency(const LatencyOptions& o) {
         spdlog::info("latency: period {} measured ({} of {})", r.stream.period_frames, done, total);
       });
   print_latency_table(results);
-  if (o.json.empty()) return;
-  std::fflush(stdout);
-  write_json_file(o.json, {{"impulses", o.impulses},
-                           {"interval_ms", o.interval_ms},
-                           {"level", o.level},
-                           {"threshold", o.threshold},
-                           {"periods", round_trips_json(results)}});
-  say_wrote(o.json);
+  write_json_numbers(o.json, {{"impulses", o.impulses},
+                              {"interval_ms", o.interval_ms},
+                              {"level", o.level},
+                              {"threshold", o.threshold},
+                              {"periods", round_trips_json(results)}});
 }
 
 }  // namespace
@@ -126,8 +123,7 @@ void add_latency_command(CLI::App& app, std::shared_ptr<const GlobalOptions> glo
   cmd->add_option("--threshold", o->threshold,
                   "Normalised correlation with the played pulse an impulse needs to count as found")
       ->check(in_range(0.01, 1.0, "a correlation in (0, 1]"));
-  cmd->add_option("--json", o->json, "Also write the table as JSON to this file, for a script")
-      ->check(file_to_write());
+  add_json_option(cmd, o->json, "the table");
   cmd->footer(
       "Each impulse is a 255-sample maximum-length sequence; it is found where its normalised\n"
       "cross-correlation with the input peaks after it was played. One whose peak stays under\n"

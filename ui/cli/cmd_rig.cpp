@@ -322,12 +322,9 @@ void list_rig_controllers(const std::filesystem::path& json) {
   std::printf("audio inputs (an accelerometer on an input channel):\n");
   const auto apis = playback::list_devices();
   for (const auto& api : apis) std::printf("%s\n", playback::describe_devices(api).c_str());
-  if (json.empty()) return;
-  std::fflush(stdout);
-  write_json_file(json, {{"controllers", rig_controllers_json(controllers)},
-                         {"bootloaders", serial_ports_json(waiting)},
-                         {"audio", audio_devices_json(apis)}});
-  say_wrote(json);
+  write_json_numbers(json, {{"controllers", rig_controllers_json(controllers)},
+                            {"bootloaders", serial_ports_json(waiting)},
+                            {"audio", audio_devices_json(apis)}});
 }
 
 }  // namespace
@@ -340,8 +337,7 @@ void add_rig_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global)
 
   auto* list = rig_cmd->add_subcommand("devices", "USB rig controllers and audio inputs, by name");
   auto list_json = std::make_shared<std::filesystem::path>();
-  list->add_option("--json", *list_json, "Also write the list as JSON to this file, for a script")
-      ->check(file_to_write());
+  add_json_option(list, *list_json, "the list");
   list->callback([global, list_json] {
     configure_logging(global->verbosity);
     list_rig_controllers(*list_json);

@@ -28,6 +28,20 @@ void write_json_file(const std::filesystem::path& path, const nlohmann::json& js
   write_text_file(path, model::io::json_text(json, path));
 }
 
+CLI::Option* add_json_option(CLI::App* command, std::filesystem::path& file,
+                             const std::string& holds) {
+  return command
+      ->add_option("--json", file, "Also write " + holds + " as JSON to this file, for a script")
+      ->check(file_to_write());
+}
+
+void write_json_numbers(const std::filesystem::path& file, const nlohmann::json& numbers) {
+  if (file.empty()) return;
+  std::fflush(stdout);
+  write_json_file(file, numbers);
+  say_wrote(file);
+}
+
 void say_wrote(const std::filesystem::path& path) {
   // Written into a stream (-o /dev/stdout): the confirmation stays out of what was written.
   bool stream = false;

@@ -16,6 +16,14 @@ void ensure_folder(const std::filesystem::path& folder);
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json);
 
+// `--json FILE` on a command whose results are otherwise only printed: its numbers for a script
+// (README "Output files"); `holds` says what the file holds. Checked as file_to_write().
+CLI::Option* add_json_option(CLI::App* command, std::filesystem::path& file,
+                             const std::string& holds);
+// Writes `numbers` to the --json file when one was given (after what was printed so far, so that
+// a stream receives them in order) and confirms it with say_wrote.
+void write_json_numbers(const std::filesystem::path& file, const nlohmann::json& numbers);
+
 // The one confirmation every command prints after writing a file: "wrote <path>", so a script or
 // a reader finds what was written the same way whichever command wrote it. On stdout, or on
 // stderr when the file was a stream (-o /dev/stdout), to stay out of what was written.
