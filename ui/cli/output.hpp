@@ -17,7 +17,7 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& json);
 
 // `--json FILE` on a command whose results are otherwise only printed: its numbers for a script
-// (README "Output files"); `holds` says what the file holds. Checked as file_to_write().
+// (ui/cli/README.md, "Output files"); `holds` says what the file holds. Checked as file_to_write().
 CLI::Option* add_json_option(CLI::App* command, std::filesystem::path& file,
                              const std::string& holds);
 // Writes `numbers` to the --json file when one was given (after what was printed so far, so that
