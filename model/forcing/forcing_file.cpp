@@ -112,9 +112,12 @@ bool all_zero(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0; });
 }
 
+// The model a forcing file's JSON holds, checked field by field.
+ForcingModel model_of_json(const json& root, const std::filesystem::path& file);
+
 }  // namespace
 
-void write_forcing_model(const std::filesystem::path& file, const ForcingModel& model) {
+std::string forcing_model_text(const ForcingModel& model, const std::filesystem::path& file) {
   json out;
   out["format"] = kFormat;
   out["version"] = 1;
@@ -152,11 +155,24 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
   if (!model.held_out_descriptor_errors.empty())
     out["held_out_descriptor_errors"] = descriptor_errors_json(model);
   out["notes"] = model.notes;
-  io::write_file_atomically(file, io::json_text(out, file, 1));
+  return io::json_text(out, file, 1);
+}
+
+void write_forcing_model(const std::filesystem::path& file, const ForcingModel& model) {
+  io::write_file_atomically(file, forcing_model_text(model, file));
 }
 
 ForcingModel read_forcing_model(const std::filesystem::path& file) {
-  const json root = jf::parse_file(file);
+  return model_of_json(jf::parse_file(file), file);
+}
+
+ForcingModel parse_forcing_model(const std::string& text, const std::filesystem::path& file) {
+  return model_of_json(jf::parse_text(text, file), file);
+}
+
+namespace {
+
+ForcingModel model_of_json(const json& root, const std::filesystem::path& file) {
   jf::as_object(root, file, "");
   jf::check_format_and_version(root, file, kFormat, 1);
   ForcingModel model;
@@ -274,5 +290,7 @@ ForcingModel read_forcing_model(const std::filesystem::path& file) {
   }
   return model;
 }
+
+}  // namespace
 
 }  // namespace nibrig::model::forcing

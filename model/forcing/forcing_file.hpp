@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "model/forcing/forcing_model.hpp"
 
@@ -33,5 +34,11 @@ void write_forcing_model(const std::filesystem::path& file, const ForcingModel& 
 // with a non-zero one (the gauge), negative or non-finite numbers where they cannot be, a
 // descriptor error without every band count from 2 to 5 or with the wrong number of bands.
 ForcingModel read_forcing_model(const std::filesystem::path& file);
+
+// The file's text and its reading from text, for a model kept in memory (a pickled designer's):
+// the same checks, `file` naming the text in errors. Doubles keep every digit; the diameters and
+// speeds, written in mm, come back to within a unit in the last place.
+std::string forcing_model_text(const ForcingModel& model, const std::filesystem::path& file);
+ForcingModel parse_forcing_model(const std::string& text, const std::filesystem::path& file);
 
 }  // namespace nibrig::model::forcing

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "model/forcing/forcing_fit.hpp"
@@ -64,6 +65,31 @@ TEST(ForcingFile, RoundTripKeepsEveryNumber) {
     EXPECT_EQ(b.surface, a.surface);
     EXPECT_EQ(b.log10_weighted_mean, a.log10_weighted_mean);
     EXPECT_EQ(b.log10_band_energies, a.log10_band_energies);
+  }
+}
+
+TEST(ForcingFile, TheTextIsTheFileAndReadsBackAsTheFileDoes) {
+  const auto dir = nibrig::test::scratch_dir("forcing_file_text");
+  const ForcingModel model = fitted_model();
+  write_forcing_model(dir / "forcing.json", model);
+  const std::string text = forcing_model_text(model, "kept in memory");
+  std::ifstream in(dir / "forcing.json");
+  EXPECT_EQ(text, std::string(std::istreambuf_iterator<char>(in), {}));
+  // Read from the text, the model is the one read from the file, to the last bit.
+  const ForcingModel from_text = parse_forcing_model(text, "kept in memory");
+  const ForcingModel from_file = read_forcing_model(dir / "forcing.json");
+  EXPECT_EQ(from_text.reference_tip_diameter_m, from_file.reference_tip_diameter_m);
+  EXPECT_EQ(from_text.speeds_m_s, from_file.speeds_m_s);
+  EXPECT_EQ(from_text.surface_forcing, from_file.surface_forcing);
+  EXPECT_EQ(from_text.material_log_gain, from_file.material_log_gain);
+  EXPECT_EQ(forcing_model_text(from_text, "again"), forcing_model_text(from_file, "again"));
+  // A damaged text is refused naming what it is in place of a file.
+  try {
+    parse_forcing_model("{\"format\": \"nibrig-forcing\", \"version\": 1}", "a pickled designer");
+    FAIL() << "a text without knots was read";
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("a pickled designer"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("knot_frequencies_hz"), std::string::npos) << e.what();
   }
 }
 
