@@ -151,25 +151,43 @@ py::dict candidate_dict(const design::Candidate& c, const std::vector<std::strin
 }  // namespace
 
 void add_design_module(py::module_ m) {
-  py::class_<Prediction>(m, "Prediction", "A design predicted on a surface, as `nibrig predict` gives it")
-      .def_property_readonly("design", [](const Prediction& p) { return design::to_string(p.tool.point); })
+  py::class_<Prediction>(m, "Prediction",
+                         "A design predicted on a surface, as `nibrig predict` gives it")
+      .def_property_readonly("design",
+                             [](const Prediction& p) { return design::to_string(p.tool.point); })
       .def_property_readonly("surface", [](const Prediction& p) { return p.tool.surface; })
-      .def_property_readonly("mu", [](const Prediction& p) { return p.tool.mu; }, "Predicted Coulomb friction")
-      .def_property_readonly("first_mode_hz", [](const Prediction& p) { return p.tool.first_mode_hz; })
-      .def_property_readonly("mode_frequencies_hz", [](const Prediction& p) {
-        std::vector<double> f;
-        for (double w : p.tool.modal.omega) f.push_back(w / (2 * std::numbers::pi));
-        return f;
-      }, "The design's modes, undamped, Hz")
-      .def_property_readonly("frequencies_hz", [](const Prediction& p) { return p.tool.spectrum.frequencies_hz; })
-      .def_property_readonly("speeds_m_s", [](const Prediction& p) { return p.tool.spectrum.speeds_m_s; })
-      .def_property_readonly("amplitude", [](const Prediction& p) { return spectrum_array(p.tool.spectrum); },
-                             "Predicted velocity-binned spectrum, speeds x frequencies, m/s²")
-      .def_property_readonly("weighted_mean", [](const Prediction& p) { return p.tool.vibration.weighted_mean; })
-      .def("place", [](const Prediction& p, const Space& s) {
-             if (!s.file.descriptor_map) throw std::invalid_argument("the space has no descriptor map");
-             return Placement{design::place_predicted(*s.file.descriptor_map, p.tool)};
-           }, py::arg("space"), "Where it lies in a space with a descriptor map, its descriptors' error included");
+      .def_property_readonly(
+          "mu", [](const Prediction& p) { return p.tool.mu; }, "Predicted Coulomb friction")
+      .def_property_readonly("first_mode_hz",
+                             [](const Prediction& p) { return p.tool.first_mode_hz; })
+      .def_property_readonly(
+          "mode_frequencies_hz",
+          [](const Prediction& p) {
+            std::vector<double> f;
+            for (double w : p.tool.modal.omega) f.push_back(w / (2 * std::numbers::pi));
+            return f;
+          },
+          "The design's modes, undamped, Hz")
+      .def_property_readonly("frequencies_hz",
+                             [](const Prediction& p) { return p.tool.spectrum.frequencies_hz; })
+      .def_property_readonly("speeds_m_s",
+                             [](const Prediction& p) { return p.tool.spectrum.speeds_m_s; })
+      .def_property_readonly(
+          "amplitude", [](const Prediction& p) { return spectrum_array(p.tool.spectrum); },
+          "Predicted velocity-binned spectrum, speeds x frequencies, m/s²")
+      .def_property_readonly("weighted_mean",
+                             [](const Prediction& p) { return p.tool.vibration.weighted_mean; })
+      .def(
+          "place",
+          [](const Prediction& p, const Space& s) {
+            if (!s.file.descriptor_map)
+              throw std::invalid_argument("the space has no descriptor map");
+            return Placement{design::place_predicted(*s.file.descriptor_map, p.tool)};
+          },
+          py::arg("space"),
+          "Where it lies in a space with a descriptor map, its descriptors' error included")
+      .def(py::pickle([](const Prediction& p) { return predicted_tool_state(p.tool); },
+                      [](const py::tuple& state) { return Prediction{predicted_tool_of(state)}; }));
 
   py::class_<Search>(m, "Search", "A design search: every candidate, the optimum and its runners-up")
       .def_property_readonly("optimum", [](const Search& s) { return candidate_dict(s.result.best(), s.targets); })
@@ -186,17 +204,22 @@ void add_design_module(py::module_ m) {
 
   py::class_<Designer>(m, "Designer", "What predicting designs needs, read once")
       .def("predict", &predict_design, py::arg("design"), py::arg("surface"),
-           "Predicts a design point ('DM85:0.5,vero:0.5,tip=2mm') on a surface: solves its FEM, then its spectrum and μ")
-      .def("search", &search_designs, py::arg("space"), py::arg("targets"), py::arg("surface"), py::kw_only(),
-           py::arg("between") = py::none(), py::arg("aim") = "largest", py::arg("min_tip_mm") = py::none(),
-           py::arg("max_tip_mm") = py::none(), py::arg("allow") = std::vector<std::string>{},
+           "Predicts a design point ('DM85:0.5,vero:0.5,tip=2mm') on a surface: solves its FEM, "
+           "then its spectrum and μ")
+      .def("search", &search_designs, py::arg("space"), py::arg("targets"), py::arg("surface"),
+           py::kw_only(), py::arg("between") = py::none(), py::arg("aim") = "largest",
+           py::arg("min_tip_mm") = py::none(), py::arg("max_tip_mm") = py::none(),
+           py::arg("allow") = std::vector<std::string>{},
            py::arg("cost") = std::map<std::string, double>{}, py::arg("max_cost") = py::none(),
-           py::arg("mix_a") = "vero", py::arg("mix_b") = "DM85",
-           py::arg("progress") = py::none(),
-           "The design nearest the target (a stimulus name or a Placement) or a group of them (their largest or "
-           "mean distance), along `between` (two design points) or over the two-material mix x fitted tips; "
-           "tips in mm, `allow` the materials a printer may load, `cost` a proxy per material limited by "
-           "`max_cost`. Releases the GIL; Ctrl-C stops it.");
+           py::arg("mix_a") = "vero", py::arg("mix_b") = "DM85", py::arg("progress") = py::none(),
+           "The design nearest the target (a stimulus name or a Placement) or a group of them "
+           "(their largest or "
+           "mean distance), along `between` (two design points) or over the two-material mix x "
+           "fitted tips; "
+           "tips in mm, `allow` the materials a printer may load, `cost` a proxy per material "
+           "limited by "
+           "`max_cost`. Releases the GIL; Ctrl-C stops it.")
+      .def(py::pickle(&designer_state, &designer_of));
 
   m.def("designer", &make_designer, py::kw_only(), py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),
         py::arg("template") = py::none(), py::arg("materials") = py::none(), py::arg("modes") = 0,

@@ -29,15 +29,71 @@ namespace catalog = model::catalog;
 
 namespace {
 
-// What one recording measured; the parts its kind has.
+// What one recording measured, as Python shows it (not the traces the analyses keep for plots);
+// the parts its kind has.
+struct MeasuredFriction {
+  double mu = 0.0, mu_low = 0.0, mu_high = 0.0, normal_load_N = 0.0;
+};
+struct MeasuredVibration {
+  model::io::VelocitySpectrum spectrum;
+  model::measure::VibrationDescriptors descriptors;
+};
 struct Measurement {
   std::string kind;  // "friction", "vibration" or "session"
   std::string tool, surface;
-  std::optional<catalog::FrictionAnalysis> friction;
-  std::optional<catalog::VibrationAnalysis> vibration;
+  std::optional<MeasuredFriction> friction;
+  std::optional<MeasuredVibration> vibration;
   std::vector<std::string> warnings;
   std::string json;  // what `nibrig measure` writes
+
+  void keep(const catalog::FrictionAnalysis& f) {
+    friction = MeasuredFriction{f.fit.mu, f.fit.mu_ci_low, f.fit.mu_ci_high, f.normal_load_N};
+  }
+  void keep(const catalog::VibrationAnalysis& v) {
+    vibration = MeasuredVibration{v.spectrum, v.descriptors};
+  }
 };
+
+constexpr const char* kNotAMeasurement = "Measurement: not a pickled Measurement";
+
+// A measurement pickles as its numbers (a joblib worker's result over many recordings).
+py::tuple measurement_state(const Measurement& m) {
+  py::object friction = py::none(), vibration = py::none();
+  if (m.friction)
+    friction = py::make_tuple(m.friction->mu, m.friction->mu_low, m.friction->mu_high,
+                              m.friction->normal_load_N);
+  if (m.vibration) {
+    const auto& v = *m.vibration;
+    vibration = py::make_tuple(v.spectrum.frequencies_hz, v.spectrum.speeds_m_s,
+                               v.spectrum.amplitude_m_s2, v.descriptors.weighted_mean,
+                               v.descriptors.weighted_power, v.descriptors.band_energies);
+  }
+  return py::make_tuple(m.kind, m.tool, m.surface, friction, vibration, m.warnings, m.json);
+}
+
+Measurement measurement_of(const py::tuple& state) {
+  if (state.size() != 7) throw std::invalid_argument(kNotAMeasurement);
+  Measurement m;
+  m.kind = state[0].cast<std::string>(), m.tool = state[1].cast<std::string>(),
+  m.surface = state[2].cast<std::string>();
+  if (!state[3].is_none()) {
+    const auto f = state[3].cast<py::tuple>();
+    if (f.size() != 4) throw std::invalid_argument(kNotAMeasurement);
+    m.friction = MeasuredFriction{f[0].cast<double>(), f[1].cast<double>(), f[2].cast<double>(),
+                                  f[3].cast<double>()};
+  }
+  if (!state[4].is_none()) {
+    const auto v = state[4].cast<py::tuple>();
+    if (v.size() != 6) throw std::invalid_argument(kNotAMeasurement);
+    m.vibration =
+        MeasuredVibration{{v[0].cast<std::vector<double>>(), v[1].cast<std::vector<double>>(),
+                           v[2].cast<std::vector<std::vector<double>>>()},
+                          {v[3].cast<double>(), v[4].cast<double>(),
+                           v[5].cast<std::map<int, std::vector<double>>>()}};
+  }
+  m.warnings = state[5].cast<std::vector<std::string>>(), m.json = state[6].cast<std::string>();
+  return m;
+}
 
 model::measure::ThresholdCurve threshold_of(const std::optional<std::filesystem::path>& file) {
   return model::measure::ThresholdCurve::load(file.value_or(model::io::default_threshold_curve()));
@@ -55,19 +111,25 @@ Measurement measure_recording(const std::filesystem::path& recording, const std:
   const model::io::StatedRecording stated{tool, surface, load, lever};
   Measurement m;
   switch (catalog::classify_recording_by_content(recording)) {
-    case catalog::RecordingKind::paper_friction:
+    case catalog::RecordingKind::paper_friction: {
       m.kind = "friction";
-      m.friction = catalog::analyze_friction(model::io::read_paper_friction(recording, stated), options);
-      m.tool = m.friction->tool, m.surface = m.friction->surface;
-      m.json = catalog::to_json(*m.friction).dump(2);
+      const auto friction =
+          catalog::analyze_friction(model::io::read_paper_friction(recording, stated), options);
+      m.tool = friction.tool, m.surface = friction.surface;
+      m.keep(friction);
+      m.json = catalog::to_json(friction).dump(2);
       break;
-    case catalog::RecordingKind::paper_vibration:
+    }
+    case catalog::RecordingKind::paper_vibration: {
       m.kind = "vibration";
-      m.vibration = catalog::analyze_vibration(model::io::read_paper_vibration(recording, stated), threshold, options);
-      m.tool = m.vibration->tool, m.surface = m.vibration->surface;
-      m.warnings = m.vibration->warnings;
-      m.json = catalog::to_json(*m.vibration, threshold).dump(2);
+      const auto vibration = catalog::analyze_vibration(
+          model::io::read_paper_vibration(recording, stated), threshold, options);
+      m.tool = vibration.tool, m.surface = vibration.surface;
+      m.warnings = vibration.warnings;
+      m.keep(vibration);
+      m.json = catalog::to_json(vibration, threshold).dump(2);
       break;
+    }
     case catalog::RecordingKind::session: {
       if (tool || surface || load || lever)
         throw std::invalid_argument(recording.string() +
@@ -76,7 +138,9 @@ Measurement measure_recording(const std::filesystem::path& recording, const std:
       const auto a = catalog::analyze_session(model::io::read_rig_session(recording), threshold, options);
       m.kind = "session";
       m.tool = a.info.tool, m.surface = a.info.surface;
-      m.friction = a.friction, m.vibration = a.vibration, m.warnings = a.warnings;
+      if (a.friction) m.keep(*a.friction);
+      if (a.vibration) m.keep(*a.vibration);
+      m.warnings = a.warnings;
       m.json = catalog::to_json(a, threshold).dump(2);
       break;
     }
@@ -84,12 +148,12 @@ Measurement measure_recording(const std::filesystem::path& recording, const std:
   return m;
 }
 
-const catalog::VibrationAnalysis& vibration_of(const Measurement& m) {
+const MeasuredVibration& vibration_of(const Measurement& m) {
   if (!m.vibration) throw std::invalid_argument("this " + m.kind + " recording has no vibration spectrum");
   return *m.vibration;
 }
 
-const catalog::FrictionAnalysis& friction_of(const Measurement& m) {
+const MeasuredFriction& friction_of(const Measurement& m) {
   if (!m.friction) throw std::invalid_argument("this " + m.kind + " recording has no friction");
   return *m.friction;
 }
@@ -131,31 +195,53 @@ void add_measure_module(py::module_ m) {
       .def_readonly("tool", &Measurement::tool)
       .def_readonly("surface", &Measurement::surface)
       .def_readonly("warnings", &Measurement::warnings)
-      .def_property_readonly("mu", [](const Measurement& m) { return friction_of(m).fit.mu; },
-                             "The Coulomb coefficient: mean tangential over normal force while sliding")
-      .def_property_readonly("mu_interval",
-                             [](const Measurement& m) {
-                               return std::pair(friction_of(m).fit.mu_ci_low, friction_of(m).fit.mu_ci_high);
-                             },
-                             "μ's 95 % confidence interval (its samples' autocorrelation accounted for)")
-      .def_property_readonly("normal_load_N", [](const Measurement& m) { return friction_of(m).normal_load_N; })
       .def_property_readonly(
-          "frequencies_hz", [](const py::object& self) { const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.frequencies_hz; return array_view(v.data(), v.size(), self); },
+          "mu", [](const Measurement& m) { return friction_of(m).mu; },
+          "The Coulomb coefficient: mean tangential over normal force while sliding")
+      .def_property_readonly(
+          "mu_interval",
+          [](const Measurement& m) {
+            return std::pair(friction_of(m).mu_low, friction_of(m).mu_high);
+          },
+          "μ's 95 % confidence interval (its samples' autocorrelation accounted for)")
+      .def_property_readonly("normal_load_N",
+                             [](const Measurement& m) { return friction_of(m).normal_load_N; })
+      .def_property_readonly(
+          "frequencies_hz",
+          [](const py::object& self) {
+            const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.frequencies_hz;
+            return array_view(v.data(), v.size(), self);
+          },
           "The spectrum's frequencies, Hz (a view)")
       .def_property_readonly(
-          "speeds_m_s", [](const py::object& self) { const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.speeds_m_s; return array_view(v.data(), v.size(), self); },
+          "speeds_m_s",
+          [](const py::object& self) {
+            const auto& v = vibration_of(self.cast<const Measurement&>()).spectrum.speeds_m_s;
+            return array_view(v.data(), v.size(), self);
+          },
           "The speeds the spectrum is binned at, m/s (a view)")
       .def_property_readonly(
           "amplitude",
           [](const Measurement& m) { return spectrum_array(vibration_of(m).spectrum); },
-          "The velocity-binned spectrum, speeds x frequencies, m/s² (a copy: rows are separate vectors)")
-      .def_property_readonly("weighted_mean", [](const Measurement& m) { return vibration_of(m).descriptors.weighted_mean; },
-                             "Mean of the threshold-weighted spectrum: the descriptor of the paper's 2-D space (dimensionless)")
-      .def_property_readonly("weighted_power", [](const Measurement& m) { return vibration_of(m).descriptors.weighted_power; },
-                             "Mean over speeds of the weighted spectrum's power, Hz")
-      .def_property_readonly("band_energies", [](const Measurement& m) { return vibration_of(m).descriptors.band_energies; },
-                             "k -> the weighted power in k equal bands (they add up to weighted_power)")
-      .def("to_json", [](const Measurement& m) { return m.json; }, "What `nibrig measure` writes for it");
+          "The velocity-binned spectrum, speeds x frequencies, m/s² (a copy: rows are separate "
+          "vectors)")
+      .def_property_readonly(
+          "weighted_mean",
+          [](const Measurement& m) { return vibration_of(m).descriptors.weighted_mean; },
+          "Mean of the threshold-weighted spectrum: the descriptor of the paper's 2-D space "
+          "(dimensionless)")
+      .def_property_readonly(
+          "weighted_power",
+          [](const Measurement& m) { return vibration_of(m).descriptors.weighted_power; },
+          "Mean over speeds of the weighted spectrum's power, Hz")
+      .def_property_readonly(
+          "band_energies",
+          [](const Measurement& m) { return vibration_of(m).descriptors.band_energies; },
+          "k -> the weighted power in k equal bands (they add up to weighted_power)")
+      .def(
+          "to_json", [](const Measurement& m) { return m.json; },
+          "What `nibrig measure` writes for it")
+      .def(py::pickle(&measurement_state, &measurement_of));
 
   m.def("recording", &measure_recording, py::arg("path"), py::kw_only(), py::arg("tool") = py::none(),
         py::arg("surface") = py::none(), py::arg("load") = py::none(), py::arg("lever") = py::none(),

@@ -17,6 +17,7 @@
 #include "rt/stroke_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/submodules.hpp"
 #include "ui/python/tool_sound_options.hpp"
 
@@ -82,11 +83,21 @@ void add_render_module(py::module_ m) {
             const auto& r = self.cast<const Rendering&>();
             return array_view(r.samples.data(), r.samples.size(), self);
           },
-          "Mono samples, full scale ±1 (the engine's output level per m/s² of sensor acceleration); a read-only view")
+          "Mono samples, full scale ±1 (the engine's output level per m/s² of sensor "
+          "acceleration); a read-only view")
       .def_readonly("rate_hz", &Rendering::rate_hz)
       .def_readonly("tool", &Rendering::tool, "What played, as the engine names it")
       .def_readonly("stroke", &Rendering::stroke, "How it moved, in words")
-      .def("__len__", [](const Rendering& r) { return r.samples.size(); });
+      .def("__len__", [](const Rendering& r) { return r.samples.size(); })
+      .def(py::pickle(
+          [](const Rendering& r) {
+            return py::make_tuple(float_bytes(r.samples), r.rate_hz, r.tool, r.stroke);
+          },
+          [](const py::tuple& state) {
+            require_state(state, 4, "Rendering");
+            return Rendering{floats_of(state[0], "Rendering"), state[1].cast<double>(),
+                             state[2].cast<std::string>(), state[3].cast<std::string>()};
+          }));
 
   const std::string tool_doc = fmt::format(
       "Renders a catalog tool ('cryon') or a design point ('DM85:0.5,vero:0.5,tip=2mm') on a "

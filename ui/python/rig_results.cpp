@@ -8,8 +8,11 @@
 
 #include <cmath>
 
+#include "model/io/json_fields.hpp"
+#include "model/io/rig_session_json.hpp"
 #include "ui/python/errors.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/rig_types.hpp"
 
@@ -61,76 +64,149 @@ py::object waterfall_db(const py::object& self, bool simulated) {
   return array_view(v.data(), v.size(), self).attr("reshape")(rows.rows(), rows.bins);
 }
 
+constexpr const char* kPickledSession = "a pickled nibrig.rig.RigSession";
+
+// A session pickles as what its folder holds, read: session.json's text and the streams' samples.
+py::tuple session_state(const Session& s) {
+  const auto& r = s.session;
+  return py::make_tuple(model::io::session_json::to_json(r.info, nullptr).dump(),
+                        float_bytes(r.acceleration), float_bytes(r.speed_m_s),
+                        float_bytes(r.normal_force_N), float_bytes(r.tangential_force_N),
+                        r.complete, r.folder, r.warnings);
+}
+
+Session session_of(const py::tuple& state) {
+  require_state(state, 8, "RigSession");
+  Session s;
+  auto& r = s.session;
+  r.info = model::io::session_json::from_json(
+               model::io::json_fields::parse_text(state[0].cast<std::string>(), kPickledSession),
+               kPickledSession)
+               .info;
+  r.acceleration = floats_of(state[1], "RigSession"),
+  r.speed_m_s = floats_of(state[2], "RigSession");
+  r.normal_force_N = floats_of(state[3], "RigSession"),
+  r.tangential_force_N = floats_of(state[4], "RigSession");
+  r.complete = state[5].cast<bool>();
+  r.folder = state[6].cast<std::filesystem::path>();
+  r.warnings = state[7].cast<std::vector<std::string>>();
+  return s;
+}
+
 }  // namespace
 
 void add_rig_results(py::module_ m) {
-  py::class_<Session>(m, "RigSession", "A rig session: the streams a capture recorded, and what it says about them")
+  py::class_<Session>(m, "RigSession",
+                      "A rig session: the streams a capture recorded, and what it says about them")
       .def_property_readonly("folder", [](const Session& s) { return s.session.folder; })
-      .def_property_readonly("complete", [](const Session& s) { return s.session.complete; },
-                             "False for a .partial folder a killed capture left")
+      .def_property_readonly(
+          "complete", [](const Session& s) { return s.session.complete; },
+          "False for a .partial folder a killed capture left")
       .def_property_readonly("warnings", [](const Session& s) { return s.session.warnings; })
       .def_property_readonly("tool", [](const Session& s) { return s.session.info.tool; })
       .def_property_readonly("surface", [](const Session& s) { return s.session.info.surface; })
-      .def_property_readonly("normal_load_N", [](const Session& s) { return s.session.info.normal_load_N; })
-      .def_property_readonly("acceleration_rate_hz", [](const Session& s) { return s.session.info.acceleration_rate_hz; })
-      .def_property_readonly("speed_rate_hz", [](const Session& s) { return s.session.info.speed_rate_hz; })
-      .def_property_readonly("force_rate_hz", [](const Session& s) { return s.session.info.force_rate_hz; })
-      .def_property_readonly("units", [](const Session& s) { return s.session.info.units; },
-                             "What each stream's numbers mean, e.g. acceleration: 'm/s²' or 'audio full scale'")
-      .def_property_readonly("accelerometer_m_s2_per_unit",
-                             [](const Session& s) { return s.session.info.calibration.accelerometer_m_s2_per_unit; },
-                             "acceleration × this = m/s²")
-      .def_property_readonly("force_counts_per_N", [](const Session& s) { return s.session.info.calibration.force_counts_per_N; })
-      .def_property_readonly("lever_factor", [](const Session& s) { return s.session.info.calibration.lever_factor; })
-      .def_property_readonly("speed_profile", [](const Session& s) { return s.session.info.speed_profile; },
-                             "What the motor was asked to do, in words")
-      .def_property_readonly("profile_time_s", [](const py::object& self) {
-        const auto& v = of(self).info.profile_time_s;
-        return array_view(v.data(), v.size(), self);
-      }, "The profile's breakpoints: times, s (a view; empty when unknown)")
-      .def_property_readonly("profile_speed_m_s", [](const py::object& self) {
-        const auto& v = of(self).info.profile_speed_m_s;
-        return array_view(v.data(), v.size(), self);
-      }, "The profile's breakpoints: speeds, m/s (a view)")
+      .def_property_readonly("normal_load_N",
+                             [](const Session& s) { return s.session.info.normal_load_N; })
+      .def_property_readonly("acceleration_rate_hz",
+                             [](const Session& s) { return s.session.info.acceleration_rate_hz; })
+      .def_property_readonly("speed_rate_hz",
+                             [](const Session& s) { return s.session.info.speed_rate_hz; })
+      .def_property_readonly("force_rate_hz",
+                             [](const Session& s) { return s.session.info.force_rate_hz; })
+      .def_property_readonly(
+          "units", [](const Session& s) { return s.session.info.units; },
+          "What each stream's numbers mean, e.g. acceleration: 'm/s²' or 'audio full scale'")
+      .def_property_readonly(
+          "accelerometer_m_s2_per_unit",
+          [](const Session& s) { return s.session.info.calibration.accelerometer_m_s2_per_unit; },
+          "acceleration × this = m/s²")
+      .def_property_readonly(
+          "force_counts_per_N",
+          [](const Session& s) { return s.session.info.calibration.force_counts_per_N; })
+      .def_property_readonly(
+          "lever_factor", [](const Session& s) { return s.session.info.calibration.lever_factor; })
+      .def_property_readonly(
+          "speed_profile", [](const Session& s) { return s.session.info.speed_profile; },
+          "What the motor was asked to do, in words")
+      .def_property_readonly(
+          "profile_time_s",
+          [](const py::object& self) {
+            const auto& v = of(self).info.profile_time_s;
+            return array_view(v.data(), v.size(), self);
+          },
+          "The profile's breakpoints: times, s (a view; empty when unknown)")
+      .def_property_readonly(
+          "profile_speed_m_s",
+          [](const py::object& self) {
+            const auto& v = of(self).info.profile_speed_m_s;
+            return array_view(v.data(), v.size(), self);
+          },
+          "The profile's breakpoints: speeds, m/s (a view)")
       .def_property_readonly("notes", [](const Session& s) { return s.session.info.notes; })
-      .def_property_readonly("created_utc", [](const Session& s) { return s.session.info.created_utc; })
-      .def_property_readonly("capture", [](const Session& s) { return capture_record(s.session.info); },
-                             "How the capture went: rig, seconds, frames, dropped_frames, saturated_frames, fault_frames, "
-                             "alignment_error_ms, ended_because; None for a session not from a capture")
-      .def_property_readonly("acceleration", [](const py::object& self) {
-        const auto& v = of(self).acceleration;
-        return array_view(v.data(), v.size(), self);
-      }, "The acceleration as recorded, in units['acceleration'], at acceleration_rate_hz (a read-only view)")
-      .def_property_readonly("acceleration_m_s2", [](const Session& s) {
-        const auto& v = s.session.acceleration;
-        py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
-        auto out = a.mutable_unchecked<1>();
-        const double k = s.session.info.calibration.accelerometer_m_s2_per_unit;
-        for (std::size_t i = 0; i < v.size(); ++i) out(static_cast<py::ssize_t>(i)) = v[i] * k;
-        return a;
-      }, "The acceleration in m/s² (a copy, scaled by accelerometer_m_s2_per_unit)")
-      .def_property_readonly("speed_m_s", [](const py::object& self) {
-        const auto& v = of(self).speed_m_s;
-        return array_view(v.data(), v.size(), self);
-      }, "The turntable's speed under the tip, m/s, at speed_rate_hz (a read-only view)")
-      .def_property_readonly("normal_force_N", [](const py::object& self) {
-        const auto& v = of(self).normal_force_N;
-        return array_view(v.data(), v.size(), self);
-      }, "N, at force_rate_hz (a read-only view)")
-      .def_property_readonly("tangential_force_N", [](const py::object& self) {
-        const auto& v = of(self).tangential_force_N;
-        return array_view(v.data(), v.size(), self);
-      }, "N, at force_rate_hz (a read-only view)")
-      .def_property_readonly("frame_times_s", [](const Session& s) {
-        const auto& i = s.session.info;
-        if (i.speed_rate_hz != i.force_rate_hz)
-          throw std::invalid_argument("this session's speed (" + std::to_string(i.speed_rate_hz) + " Hz) and forces (" +
-                                      std::to_string(i.force_rate_hz) + " Hz) are not one frame stream");
-        py::array_t<double> a(static_cast<py::ssize_t>(s.session.speed_m_s.size()));
-        auto out = a.mutable_unchecked<1>();
-        for (py::ssize_t k = 0; k < a.size(); ++k) out(k) = static_cast<double>(k) / i.speed_rate_hz;
-        return a;
-      }, "Each sensor frame's instant from the profile's start, s: speed and force sample k at k / speed_rate_hz")
+      .def_property_readonly("created_utc",
+                             [](const Session& s) { return s.session.info.created_utc; })
+      .def_property_readonly(
+          "capture", [](const Session& s) { return capture_record(s.session.info); },
+          "How the capture went: rig, seconds, frames, dropped_frames, saturated_frames, "
+          "fault_frames, "
+          "alignment_error_ms, ended_because; None for a session not from a capture")
+      .def_property_readonly(
+          "acceleration",
+          [](const py::object& self) {
+            const auto& v = of(self).acceleration;
+            return array_view(v.data(), v.size(), self);
+          },
+          "The acceleration as recorded, in units['acceleration'], at acceleration_rate_hz (a "
+          "read-only view)")
+      .def_property_readonly(
+          "acceleration_m_s2",
+          [](const Session& s) {
+            const auto& v = s.session.acceleration;
+            py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+            auto out = a.mutable_unchecked<1>();
+            const double k = s.session.info.calibration.accelerometer_m_s2_per_unit;
+            for (std::size_t i = 0; i < v.size(); ++i) out(static_cast<py::ssize_t>(i)) = v[i] * k;
+            return a;
+          },
+          "The acceleration in m/s² (a copy, scaled by accelerometer_m_s2_per_unit)")
+      .def_property_readonly(
+          "speed_m_s",
+          [](const py::object& self) {
+            const auto& v = of(self).speed_m_s;
+            return array_view(v.data(), v.size(), self);
+          },
+          "The turntable's speed under the tip, m/s, at speed_rate_hz (a read-only view)")
+      .def_property_readonly(
+          "normal_force_N",
+          [](const py::object& self) {
+            const auto& v = of(self).normal_force_N;
+            return array_view(v.data(), v.size(), self);
+          },
+          "N, at force_rate_hz (a read-only view)")
+      .def_property_readonly(
+          "tangential_force_N",
+          [](const py::object& self) {
+            const auto& v = of(self).tangential_force_N;
+            return array_view(v.data(), v.size(), self);
+          },
+          "N, at force_rate_hz (a read-only view)")
+      .def_property_readonly(
+          "frame_times_s",
+          [](const Session& s) {
+            const auto& i = s.session.info;
+            if (i.speed_rate_hz != i.force_rate_hz)
+              throw std::invalid_argument(
+                  "this session's speed (" + std::to_string(i.speed_rate_hz) + " Hz) and forces (" +
+                  std::to_string(i.force_rate_hz) + " Hz) are not one frame stream");
+            py::array_t<double> a(static_cast<py::ssize_t>(s.session.speed_m_s.size()));
+            auto out = a.mutable_unchecked<1>();
+            for (py::ssize_t k = 0; k < a.size(); ++k)
+              out(k) = static_cast<double>(k) / i.speed_rate_hz;
+            return a;
+          },
+          "Each sensor frame's instant from the profile's start, s: speed and force sample k at k "
+          "/ speed_rate_hz")
+      .def(py::pickle(&session_state, &session_of))
       .def("__repr__", [](const Session& s) {
         return "<nibrig.rig.RigSession: " + s.session.info.tool + " on " + s.session.info.surface + ", " +
                std::to_string(s.session.speed_m_s.size()) + " frames" + (s.session.complete ? "" : ", partial") + ">";

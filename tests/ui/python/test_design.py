@@ -3,13 +3,19 @@ prediction is what `nibrig predict` writes, it is placed in the demo's space, an
 a tool of that space keeps to its constraints, its optimum no farther than the line's ends."""
 
 import json
+import multiprocessing
+import pickle
+import re
+import shutil
 import subprocess
+from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
 import pytest
 
 import nibrig
 from command_line import nibrig_command
+from conftest import REPOSITORY
 
 COARSE = dict(modes=32, mesh_size=0.004)
 
@@ -31,6 +37,36 @@ def test_a_prediction_is_what_the_command_line_predicts(designer, tmp_path):
     written = json.loads((tmp_path / "p.json").read_text())
     assert written["mu"] == p.mu
     np.testing.assert_array_equal(np.array(written["amplitude_m_s2"]), p.amplitude)
+
+
+def test_a_designer_and_its_predictions_go_to_another_process_and_back(designer):
+    point = "DM85:0.5,vero:0.5,tip=2mm"
+    here = designer.predict(point, "glass")
+    # A prediction pickles as its numbers: each comes back bit for bit, its descriptors' error too
+    # (the placement uses it).
+    copy = pickle.loads(pickle.dumps(here))
+    assert (copy.design, copy.surface, copy.mu, copy.first_mode_hz, copy.weighted_mean) == (
+        here.design, here.surface, here.mu, here.first_mode_hz, here.weighted_mean)
+    assert copy.mode_frequencies_hz == here.mode_frequencies_hz
+    np.testing.assert_array_equal(copy.amplitude, here.amplitude)
+    space = nibrig.space.default(bootstrap=20)
+    np.testing.assert_array_equal(copy.place(space).covariance, here.place(space).covariance)
+    # A fresh interpreter unpickles the designer (its forcing model travels as the file's text, its
+    # diameters and speeds through mm) and predicts what this one does, to rounding.
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        there = pool.submit(designer.predict, point, "glass").result()
+    assert there.mu == pytest.approx(here.mu, rel=1e-12)
+    np.testing.assert_allclose(there.amplitude, here.amplitude, rtol=1e-12)
+
+
+def test_a_designer_whose_file_changed_since_it_was_pickled_is_refused(tmp_path):
+    materials = tmp_path / "materials.json"
+    shutil.copyfile(REPOSITORY / "assets" / "materials.json", materials)
+    state = pickle.dumps(nibrig.design.designer(materials=materials, **COARSE))  # same bytes: the cached model
+    pickle.loads(state)
+    materials.write_text(materials.read_text() + "\n")
+    with pytest.raises(ValueError, match=re.escape(str(materials)) + " changed since this Designer was pickled"):
+        pickle.loads(state)
 
 
 def test_a_search_keeps_to_its_constraints_and_beats_the_ends(designer):

@@ -112,3 +112,21 @@ def test_a_progress_that_raises_stops_a_catalog_with_its_exception(tmp_path):
     with pytest.raises(TypeError):
         nibrig.measure.catalog(folder, threads=2, progress=5)
     assert nibrig.measure.catalog(folder, threads=2).pairings  # the module works on after both
+
+
+def test_measurements_pickle_with_every_number_they_show():
+    # Bit for bit: a measurement pickles as its numbers, so a joblib worker's results are the ones
+    # measured there.
+    friction, vibration = (nibrig.measure.recording(recording(n)) for n in (FRICTION, VIBRATION))
+    f, v = (pickle.loads(pickle.dumps(m)) for m in (friction, vibration))
+    assert (f.kind, f.tool, f.surface, f.mu, f.mu_interval, f.normal_load_N, f.warnings, f.to_json()) == (
+        friction.kind, friction.tool, friction.surface, friction.mu, friction.mu_interval, friction.normal_load_N,
+        friction.warnings, friction.to_json())
+    for name in ("frequencies_hz", "speeds_m_s", "amplitude"):
+        np.testing.assert_array_equal(getattr(v, name), getattr(vibration, name))
+    assert (v.weighted_mean, v.weighted_power, v.band_energies, v.to_json()) == (
+        vibration.weighted_mean, vibration.weighted_power, vibration.band_energies, vibration.to_json())
+    with pytest.raises(ValueError, match="no friction"):
+        v.mu
+    with pytest.raises(ValueError, match="not a pickled Measurement"):
+        nibrig.measure.Measurement.__new__(nibrig.measure.Measurement).__setstate__(("friction",))

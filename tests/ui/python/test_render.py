@@ -1,6 +1,7 @@
 """nibrig.render: the samples are those `nibrig render` writes for the same tool, stroke and seed
 (the engine itself is checked in the C++ suites), a seed fixes them, and bad input is refused."""
 
+import pickle
 import struct
 import subprocess
 
@@ -43,6 +44,13 @@ def test_a_seed_fixes_the_samples_and_another_changes_them():
     c = nibrig.render.tool("stab", "note", speed=0.05, seconds=0.2, seed=4).samples
     np.testing.assert_array_equal(a, b)
     assert not np.array_equal(a, c)
+
+
+def test_a_rendering_pickles_with_its_samples_bit_for_bit():
+    r = nibrig.render.tool("stab", "note", speed=0.05, seconds=0.2, seed=3)
+    again = pickle.loads(pickle.dumps(r))
+    np.testing.assert_array_equal(again.samples, r.samples)
+    assert (len(again), again.rate_hz, again.tool, again.stroke) == (len(r), r.rate_hz, r.tool, r.stroke)
 
 
 def test_bad_input_is_refused():

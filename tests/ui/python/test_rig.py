@@ -5,6 +5,7 @@ rig itself is checked in the C++ suites, the USB controller there on simavr)."""
 
 import json
 import os
+import pickle
 import signal
 import subprocess
 import threading
@@ -56,6 +57,16 @@ def test_a_simulated_capture_is_what_the_command_line_writes(captured, tmp_path)
     for name in STREAMS:
         np.testing.assert_array_equal(getattr(cli, name), getattr(s, name))
     np.testing.assert_array_equal(cli.profile_speed_m_s, s.profile_speed_m_s)
+
+
+def test_a_session_pickles_with_its_streams_and_record_bit_for_bit(captured):
+    folder, s, _ = captured
+    again = pickle.loads(pickle.dumps(s))
+    for name in STREAMS + ("profile_speed_m_s", "frame_times_s", "acceleration_m_s2"):
+        np.testing.assert_array_equal(getattr(again, name), getattr(s, name))
+    assert (again.folder, again.complete, again.warnings, again.tool, again.surface, again.notes, again.capture,
+            again.accelerometer_m_s2_per_unit) == (s.folder, s.complete, s.warnings, s.tool, s.surface, s.notes,
+                                                   s.capture, s.accelerometer_m_s2_per_unit)
 
 
 def test_a_replay_gives_the_same_streams(captured, tmp_path):
