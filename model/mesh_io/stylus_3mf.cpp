@@ -2,8 +2,10 @@
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 
+#include <clocale>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "model/io/atomic_file.hpp"
 
@@ -11,6 +13,24 @@ namespace nibrig::model::mesh_io {
 namespace {
 
 using namespace NMR;
+
+// lib3mf sets the process's locale to "C" (LC_ALL) around its numbers and does not put it back: a
+// Python session that exported a stylus then read and wrote its own files as ASCII. A call into it
+// keeps the locale in force before and restores it when it ends.
+class KeptLocale {
+ public:
+  KeptLocale() {
+    if (const char* now = std::setlocale(LC_ALL, nullptr)) saved_ = now;
+  }
+  ~KeptLocale() {
+    if (!saved_.empty()) std::setlocale(LC_ALL, saved_.c_str());
+  }
+  KeptLocale(const KeptLocale&) = delete;
+  KeptLocale& operator=(const KeptLocale&) = delete;
+
+ private:
+  std::string saved_;
+};
 
 // Every lib3mf instance is released when its owner goes.
 struct Release {
@@ -56,6 +76,7 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
   if (part.regions.empty())
     throw std::invalid_argument(file.string() + ": a 3MF part needs at least one region");
   io::output_target(file);  // refused before the model is built: a folder, a device, an input
+  const KeptLocale locale;
   const Lib3mfCall call(file.string());
   PLib3MFModel* raw = nullptr;
   call(lib3mf_createmodel(&raw), nullptr, "create a model");
@@ -156,6 +177,7 @@ void write_3mf(const std::filesystem::path& file, const ThreeMfPart& part) {
 }
 
 std::vector<ThreeMfRegion> read_3mf_regions(const std::filesystem::path& file) {
+  const KeptLocale locale;
   const Lib3mfCall call(file.string());
   PLib3MFModel* raw = nullptr;
   call(lib3mf_createmodel(&raw), nullptr, "create a model");

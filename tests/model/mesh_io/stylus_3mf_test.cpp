@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <clocale>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -104,6 +105,23 @@ TEST(Stylus3mf, AnAttachmentIsStoredUnderItsPathInThePackage) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output, config);
   ASSERT_EQ(read_3mf_regions(dir / "cube.3mf").size(), 1u);
+}
+
+// lib3mf's writer sets the process's locale to "C" and leaves it: a Python session that had
+// exported a stylus then wrote its own files as ASCII. The locale in force before comes back.
+TEST(Stylus3mf, WritingLeavesTheProcesssLocaleAsItWas) {
+  const std::string before = std::setlocale(LC_ALL, nullptr);
+  ASSERT_NE(std::setlocale(LC_CTYPE, "C.UTF-8"), nullptr) << "Debian always has C.UTF-8";
+  const std::string in_force = std::setlocale(LC_ALL, nullptr);
+  const auto dir = nibrig::test::scratch_dir("stylus_3mf_locale");
+  ThreeMfPart part;
+  part.name = "cube";
+  part.regions.push_back({box("body", {0, 0, 0}, {1e-3, 1e-3, 1e-3}), "PLA", {200, 200, 200}});
+  write_3mf(dir / "cube.3mf", part);
+  EXPECT_EQ(std::string(std::setlocale(LC_ALL, nullptr)), in_force);
+  ASSERT_EQ(read_3mf_regions(dir / "cube.3mf").size(), 1u);
+  EXPECT_EQ(std::string(std::setlocale(LC_ALL, nullptr)), in_force);
+  std::setlocale(LC_ALL, before.c_str());
 }
 
 }  // namespace
