@@ -42,7 +42,7 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--descriptors", o->descriptors, "Catalog with the stimuli's descriptors")
       ->check(CLI::ExistingFile);
   fit->add_option("--dims", o->dims, "Dimensions (default 2)")
-      ->check(whole_in_range(1, 10, "a number of dimensions"));
+      ->check(whole_in_range(1, model::space::kMostSpaceDims, "a number of dimensions"));
   fit->add_option("--lambda", o->lambda, "Weight of the descriptor correlation (default 0)")
       ->check(in_range(0, model::space::kMaxLambda, "a weight"));
   fit->add_option("--starts", o->starts, "Random starts (default 16)")
@@ -50,7 +50,7 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
   fit->add_option("--seed", o->seed, "Seed of the first start (default 1)")->check(any_seed());
   fit->add_option("--bootstrap", o->bootstrap,
                   "Resamples for 68/95 % confidence regions (paper: 1000; default 0 = none)")
-      ->check(whole_in_range(0, 100000, "a number of resamples"));
+      ->check(whole_in_range(0, model::space::kMostBootstrapResamples, "a number of resamples"));
   fit->add_option("--model", o->model,
                   "Judgment model: probit (the paper's, default), logistic or student-t, each optionally with "
                   "+lapse and then +noise; or auto: the one that predicts held-out judgments best")
@@ -59,16 +59,13 @@ void add_fit(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& global) 
       ->delimiter(',')
       ->check(judgment_model_name(false));
   fit->add_option("--folds", o->folds, "Folds of --model auto's cross-validation (default 5)")
-      ->check(whole_in_range(2, 100, "a number of folds"));
+      ->check(whole_in_range(2, model::space::kMostFolds, "a number of folds"));
   fit->add_option("--plot", o->plot, "PNG of the space (first two axes)")
       ->check(file_to_write());
   fit->add_option("-o,--output", o->output, "Output space file (default space.json)")
       ->check(file_to_write());
   fit->callback([o, global] {
     configure_logging(global->verbosity);
-    if (o->bootstrap == 1) throw CLI::ValidationError("--bootstrap", "needs at least 2 resamples");
-    if (!o->models.empty() && o->model != "auto")
-      throw CLI::ValidationError("--models", "lists the candidates of --model auto");
     run_space_fit(*o, worker_threads(*global));
   });
 }
@@ -86,10 +83,10 @@ void add_validate(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& glo
   v->add_option("--descriptors", o->descriptors, "Catalog (needed for lambdas above 0)")
       ->check(CLI::ExistingFile);
   v->add_option("--folds", o->folds, "Folds (default 5)")
-      ->check(whole_in_range(2, 100, "a number of folds"));
+      ->check(whole_in_range(2, model::space::kMostFolds, "a number of folds"));
   v->add_option("--dims", o->dims, "Dimensions to try (default 1,2,3)")
       ->delimiter(',')
-      ->check(whole_in_range(1, 10, "a number of dimensions"));
+      ->check(whole_in_range(1, model::space::kMostSpaceDims, "a number of dimensions"));
   v->add_option("--lambdas", o->lambdas, "Lambdas to try (default 0)")
       ->delimiter(',')
       ->check(in_range(0, model::space::kMaxLambda, "a weight"));
@@ -182,7 +179,7 @@ void add_design(CLI::App& cmd, const std::shared_ptr<const GlobalOptions>& globa
       "adaptive design (expected information gain) against two-stage at equal numbers of trials.");
   synth->add_option("--dims", s->dims, "Dimensions (default 1,2,3,4,5)")
       ->delimiter(',')
-      ->check(whole_in_range(1, 10, "a number of dimensions"));
+      ->check(whole_in_range(1, model::space::kMostSpaceDims, "a number of dimensions"));
   synth->add_option("--trials", s->trials, "Random truths per dimension (default 100)")
       ->check(whole_in_range(1, 100000, "a number of trials"));
   synth->add_option("--stimuli", s->stimuli, "Stimuli (default 15)")

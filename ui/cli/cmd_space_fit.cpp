@@ -8,12 +8,13 @@
 
 #include "model/space/space_file.hpp"
 #include "model/space/space_fit_file.hpp"
+#include "model/space/space_fit_request.hpp"
+#include "model/space/space_inputs.hpp"
 #include "model/space/statistics.hpp"
 #include "ui/cli/output.hpp"
 #include "ui/cli/progress.hpp"
 #include "ui/cli/space_commands.hpp"
 #include "ui/cli/space_figures.hpp"
-#include "model/space/space_inputs.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -45,28 +46,56 @@ void report_model(const space::SpaceFile& file) {
 
 }  // namespace
 
+std::string space_fit_option(space::SpaceFitField field) {
+  using Field = space::SpaceFitField;
+  switch (field) {
+    case Field::dims:
+      return "--dims";
+    case Field::lambda:
+      return "--lambda";
+    case Field::descriptors:
+      return "--descriptors";
+    case Field::starts:
+      return "--starts";
+    case Field::bootstrap:
+      return "--bootstrap";
+    case Field::folds:
+      return "--folds";
+    case Field::models:
+      return "--models";
+  }
+  return space::field_name(field);
+}
+
 void run_space_fit(const SpaceFitOptions& o, unsigned threads) {
-  // The library refuses it too, in words no face's; here, before the judgments are read, naming
-  // the options (as space validate does).
-  if (o.lambda > 0 && o.descriptors.empty())
-    throw CLI::ValidationError(
-        "--lambda", "above 0 needs --descriptors catalog.json: the axes are tied to them");
-  const model::space::SpaceInputs in = model::space::read_space_inputs(o.judgments, o.descriptors, o.dims, o.lambda);
-  spdlog::info("{}: {} stimuli, {} triplets, {} responses; {}-D fit from {} starts, lambda {}",
-               o.judgments.string(), in.judgments.stimuli.size(), in.judgments.triplets.size(),
-               model::io::response_count(in.judgments), o.dims, o.starts, o.lambda);
-  space::SpaceFitSettings settings;
+  space::SpaceFitRequest request;
+  request.dims = o.dims;
+  request.lambda = o.lambda;
+  request.descriptors = o.descriptors;
+  auto& settings = request.settings;
   settings.starts = o.starts;
   settings.seed = o.seed;
   settings.threads = threads;
   settings.bootstrap = o.bootstrap;
   settings.choose_model = o.model == "auto";
   if (!settings.choose_model) settings.model = space::parse_family(o.model);
+  request.candidates_listed = !o.models.empty();
   if (!o.models.empty()) {
     settings.candidates.clear();
     for (const auto& name : o.models) settings.candidates.push_back(space::parse_family(name));
   }
   settings.folds = o.folds;
+  // The library's bounds, named as the options, before the judgments are read.
+  try {
+    space::check_space_fit(request, space_fit_option);
+  } catch (const space::SpaceFitRefused& e) {
+    throw CLI::ValidationError(e.what());
+  }
+  const model::space::SpaceInputs in =
+      model::space::read_space_inputs(o.judgments, o.descriptors, o.dims, o.lambda);
+  spdlog::info("{}: {} stimuli, {} triplets, {} responses; {}-D fit from {} starts, lambda {}",
+               o.judgments.string(), in.judgments.stimuli.size(), in.judgments.triplets.size(),
+               model::io::response_count(in.judgments), o.dims, o.starts, o.lambda);
   // One bar a step: the starts, then the bootstrap's refits.
   std::string step_shown;
   std::function<void(std::size_t, std::size_t)> bar;

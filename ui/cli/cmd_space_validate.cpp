@@ -19,10 +19,6 @@ namespace nibrig::ui::cli {
 namespace space = model::space;
 
 void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
-  const double max_lambda = *std::max_element(o.lambdas.begin(), o.lambdas.end());
-  // An option missing is a usage error, found before the judgments are read.
-  if (max_lambda > 0 && o.descriptors.empty())
-    throw CLI::ValidationError("--lambdas", "above 0 need --descriptors catalog.json");
   space::DimensionScanOptions scan;
   scan.dims = o.dims;
   scan.lambdas = o.lambdas;
@@ -39,6 +35,15 @@ void run_space_validate(const SpaceValidateOptions& o, unsigned threads) {
   scan.cross_validation.fit.starts = o.starts;
   scan.cross_validation.fit.seed = o.seed;
   scan.cross_validation.fit.threads = threads;
+  // The library's bounds, named as the options, before the judgments are read.
+  try {
+    space::check_dimension_scan(scan, o.descriptors, [](space::SpaceFitField field) {
+      return field == space::SpaceFitField::lambda ? std::string("--lambdas")
+                                                   : space_fit_option(field);
+    });
+  } catch (const space::SpaceFitRefused& e) {
+    throw CLI::ValidationError(e.what());
+  }
   spdlog::info("{}: {}-fold cross-validation of {} spaces", o.judgments.string(), o.folds,
                o.dims.size() * o.lambdas.size() * scan.models.size());
   const space::Validation validation =

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
+
+#include "model/space/space_fit_request.hpp"
 
 namespace nibrig::ui::cli {
 
@@ -18,6 +21,8 @@ struct SpaceFitOptions {
   int folds = 5;                    // of --model auto
 };
 void run_space_fit(const SpaceFitOptions& options, unsigned threads);
+// A space fit's fields as `space fit`'s options, for the library's refusals.
+std::string space_fit_option(model::space::SpaceFitField field);
 
 struct SpaceValidateOptions {
   std::filesystem::path judgments, descriptors, output, plots;

@@ -1,7 +1,6 @@
 // nibrig.space: fit a perceptual space from triplet judgments (the one call `nibrig space fit` and
 // the panel make: model/space/space_fit_file.hpp), read and write it, predict judgments and place
 // tools from their descriptors with their regions.
-#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -15,6 +14,7 @@
 #include "model/space/judgment_model.hpp"
 #include "model/space/space_file.hpp"
 #include "model/space/space_fit_file.hpp"
+#include "model/space/space_fit_request.hpp"
 #include "model/space/space_inputs.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
@@ -42,23 +42,11 @@ Space fit(const py::object& judgments_given, std::size_t dims,
           const std::optional<std::filesystem::path>& descriptors, double lambda,
           const std::string& model, const std::vector<std::string>& models, int folds, int starts,
           unsigned seed, int bootstrap, unsigned threads, const py::object& progress) {
-  if (dims < 1) throw std::invalid_argument("dims is " + std::to_string(dims) + "; expected at least 1");
-  if (starts < 1 || starts > space::kMostFitStarts)  // the library's bound, before any work
-    throw std::invalid_argument("starts: " + std::to_string(starts) + ": expected a number of starts, 1 to " +
-                                std::to_string(space::kMostFitStarts));
-  if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 or more");
-  if (folds < 2)
-    throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
-  // The library refuses these too, in words no face's; here in the arguments' names.
-  if (!(lambda >= 0 && lambda <= space::kMaxLambda))
-    throw std::invalid_argument("lam is " + fmt::format("{:g}", lambda) +
-                                "; expected a weight from 0 to " +
-                                fmt::format("{:g}", space::kMaxLambda));
-  if (lambda > 0 && !descriptors)
-    throw std::invalid_argument(
-        "lam above 0 ties the axes to descriptors: give descriptors=a catalog");
-  const std::filesystem::path catalog = descriptors.value_or(std::filesystem::path());
-  space::SpaceFitSettings settings;
+  space::SpaceFitRequest request;
+  request.dims = dims;
+  request.lambda = lambda;
+  request.descriptors = descriptors.value_or(std::filesystem::path());
+  auto& settings = request.settings;
   settings.starts = starts;
   settings.seed = seed;
   settings.threads = threads;
@@ -66,13 +54,14 @@ Space fit(const py::object& judgments_given, std::size_t dims,
   settings.folds = folds;
   settings.choose_model = model == "auto";
   if (!settings.choose_model) settings.model = family_argument(model, "model");
+  request.candidates_listed = !models.empty();
   if (!models.empty()) {
-    if (!settings.choose_model)
-      throw std::invalid_argument("models: the candidates of model='auto'; model is '" + model +
-                                  "'");
     settings.candidates.clear();
     for (const auto& name : models) settings.candidates.push_back(family_argument(name, "models"));
   }
+  space::check_space_fit(
+      request);  // the library's bounds, in these arguments' names, before any work
+  const std::filesystem::path& catalog = request.descriptors;
   std::filesystem::path label;
   model::io::TripletSet judged = judgments_argument(judgments_given, "judgments", label);
   Space out;

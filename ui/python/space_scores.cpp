@@ -7,8 +7,8 @@
 
 #include "model/numeric/cancellation.hpp"
 #include "model/space/judgment_model.hpp"
-#include "model/space/objective.hpp"
 #include "model/space/space_evaluation.hpp"
+#include "model/space/space_fit_request.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
@@ -30,19 +30,9 @@ space::SpaceEvaluation evaluate(const Space& s, const py::object& judgments, con
 
 space::Validation validate(const py::object& judgments, const std::vector<std::size_t>& dims,
                            const std::vector<double>& lambdas,
-                           const std::vector<std::string>& models, std::size_t folds, int starts,
+                           const std::vector<std::string>& models, int folds, int starts,
                            unsigned seed, const std::optional<std::filesystem::path>& descriptors,
                            unsigned threads, const py::object& progress) {
-  if (folds < 2) throw std::invalid_argument("folds is " + std::to_string(folds) + "; expected at least 2");
-  if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
-  for (const auto d : dims)
-    if (d < 1) throw std::invalid_argument("dims holds 0; expected numbers of dimensions from 1");
-  for (const auto l : lambdas)
-    if (!(l >= 0 && l <= space::kMaxLambda))
-      throw std::invalid_argument("lambdas holds " + std::to_string(l) + "; expected weights from 0 to " +
-                                  std::to_string(space::kMaxLambda));
-  std::filesystem::path label;
-  model::io::TripletSet judged = judgments_argument(judgments, "judgments", label);
   space::DimensionScanOptions scan;
   scan.dims = dims;
   scan.lambdas = lambdas;
@@ -63,12 +53,19 @@ space::Validation validate(const py::object& judgments, const std::vector<std::s
   scan.cross_validation.fit.starts = starts;
   scan.cross_validation.fit.seed = seed;
   scan.cross_validation.fit.threads = threads;
+  const std::filesystem::path catalog = descriptors.value_or(std::filesystem::path());
+  // The library's bounds, in these arguments' names, before the judgments are read.
+  space::check_dimension_scan(scan, catalog, [](space::SpaceFitField field) -> std::string {
+    return field == space::SpaceFitField::lambda ? "lambdas" : space::field_name(field);
+  });
+  std::filesystem::path label;
+  model::io::TripletSet judged = judgments_argument(judgments, "judgments", label);
   space::Validation out;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
         scan.cross_validation.fit.stop = stop;
         out = space::validate_space(
-            std::move(judged), descriptors.value_or(std::filesystem::path()), scan,
+            std::move(judged), catalog, scan,
             [&](std::size_t done, std::size_t total) { report("fitting folds", done, total); });
       },
       progress);

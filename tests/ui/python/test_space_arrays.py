@@ -85,10 +85,17 @@ def test_bad_arrays_are_refused_naming_the_argument():
     with pytest.raises(TypeError, match="judgments: expected Judgments"):
         nibrig.space.fit(X)
     judgments = nibrig.space.Judgments(X, answers=y)
-    with pytest.raises(ValueError, match="^lam above 0 ties the axes to descriptors: give descriptors="):
+    # The library's bounds, in the arguments' names.
+    with pytest.raises(ValueError, match="^descriptors: none, with lam above 0: it ties the axes to the descriptors"):
         nibrig.space.fit(judgments, lam=0.5)
-    with pytest.raises(ValueError, match="^lam is -1; expected a weight from 0 to 10000"):
+    with pytest.raises(ValueError, match="^lam: -1: expected a weight from 0 to 10000"):
         nibrig.space.fit(judgments, lam=-1.0)
+    with pytest.raises(ValueError, match="^bootstrap: 1: expected a number of resamples"):
+        nibrig.space.fit(judgments, bootstrap=1)
+    with pytest.raises(ValueError, match="^lambdas: 10000.5: expected a weight from 0 to 10000"):
+        nibrig.space.validate(judgments, lambdas=[0.0, 0.5 + 1e4])
+    with pytest.raises(ValueError, match="^folds: 1: expected a number of folds, 2 to 100"):
+        nibrig.space.validate(judgments, folds=1)
 
 
 def test_predict_takes_indices_as_names_and_refuses_a_reference_among_the_candidates():
@@ -172,7 +179,7 @@ def test_the_models_auto_candidates_and_folds_and_its_table_as_data():
     assert space.model == chosen
     assert "3-fold" in space.model_reason
     assert nibrig.space.fit(judgments, dims=2, starts=2).model_scores == []
-    with pytest.raises(ValueError, match="models: the candidates of model='auto'"):
+    with pytest.raises(ValueError, match=r"^models: the candidates of a model chosen by cross-validation \(auto\)"):
         nibrig.space.fit(judgments, models=["probit"])
     with pytest.raises(ValueError, match="^model: "):
         nibrig.space.fit(judgments, model="wobbly")
