@@ -1,6 +1,7 @@
 // nibrig.design.loop: the design loop from a print back to its target (`nibrig design loop`) as
 // one call: it opens or resumes the loop in its folder and runs it as far as it goes here
 // (rig::drive_design_loop), returning every round's prediction and measurement.
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -13,6 +14,7 @@
 #include "model/design/loop_session.hpp"
 #include "rig/loop_print_capture.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 
 namespace py = pybind11;
 
@@ -127,6 +129,55 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
   return out;
 }
 
+// A loop pickles as its rounds' numbers (its folder stays where it is, named).
+py::tuple loop_state(const LoopResult& l) {
+  std::vector<py::tuple> rounds;
+  for (const auto& r : l.rounds) {
+    std::vector<std::pair<std::string, double>> mix;
+    for (const auto& share : r.design.mix) mix.emplace_back(share.material, share.fraction);
+    py::object measured = py::none();
+    if (r.measured)
+      measured = py::make_tuple(r.measured->distance, r.measured->distance_sd, r.measured->position,
+                                r.measured->descriptors);
+    rounds.push_back(py::make_tuple(r.number, mix, r.design.tip_diameter_m, r.predicted_distance,
+                                    r.predicted_distance_sd, r.chance_within, r.predicted_position,
+                                    measured, r.stopped));
+  }
+  return py::make_tuple(l.folder, l.threshold, rounds, l.stopped, l.awaiting);
+}
+
+LoopResult loop_of(const py::tuple& state) {
+  require_state(state, 5, "DesignLoop");
+  LoopResult l;
+  l.folder = state[0].cast<std::filesystem::path>();
+  l.threshold = state[1].cast<double>();
+  for (const auto& item : state[2].cast<py::list>()) {
+    const auto t = item.cast<py::tuple>();
+    require_state(t, 9, "DesignLoop");
+    design::LoopRoundRecord r;
+    r.number = t[0].cast<int>();
+    for (const auto& [material, fraction] :
+         t[1].cast<std::vector<std::pair<std::string, double>>>())
+      r.design.mix.push_back({material, fraction});
+    r.design.tip_diameter_m = t[2].cast<double>();
+    r.predicted_distance = t[3].cast<double>(), r.predicted_distance_sd = t[4].cast<double>();
+    r.chance_within = t[5].cast<double>();
+    r.predicted_position = t[6].cast<Eigen::VectorXd>();
+    if (!t[7].is_none()) {
+      const auto m = t[7].cast<py::tuple>();
+      require_state(m, 4, "DesignLoop");
+      r.measured =
+          design::LoopMeasuredRecord{m[0].cast<double>(), m[1].cast<double>(),
+                                     m[2].cast<Eigen::VectorXd>(), m[3].cast<Eigen::VectorXd>()};
+    }
+    r.stopped = t[8].cast<std::string>();
+    l.rounds.push_back(std::move(r));
+  }
+  l.stopped = state[3].cast<std::optional<std::string>>();
+  l.awaiting = state[4].cast<std::optional<int>>();
+  return l;
+}
+
 }  // namespace
 
 void add_design_loop(py::module_ m) {
@@ -159,7 +210,8 @@ void add_design_loop(py::module_ m) {
       .def_property_readonly(
           "awaiting", [](const LoopResult& l) { return l.awaiting; },
           "The round whose print awaits its measurement (capture it into "
-          "folder/round-N/session, then loop(folder, resume=True)), or None");
+          "folder/round-N/session, then loop(folder, resume=True)), or None")
+      .def(py::pickle(&loop_state, &loop_of));
 
   m.def(
       "loop", &run_loop, py::arg("folder"), py::kw_only(), py::arg("target") = py::none(),

@@ -7,6 +7,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <optional>
+#include <tuple>
 
 #include "model/forcing/calibration_prints.hpp"
 #include "model/forcing/forcing_file.hpp"
@@ -17,6 +18,7 @@
 #include "model/numeric/cancellation.hpp"
 #include "ui/python/design_types.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 
 namespace nibrig::ui::python {
 
@@ -111,6 +113,42 @@ Calibration calibrate_surface(const std::string& surface, const std::filesystem:
           0.0,     c.residual_rms_db, c.tool_fits, {}};
 }
 
+constexpr const char* kPickledCalibration = "a pickled nibrig.design.Calibration";
+
+// A calibration pickles as its numbers, its model as the forcing file's text.
+py::tuple calibration_state(const Calibration& c) {
+  const auto fits = [](const std::vector<forcing::ExemplarFit>& all) {
+    std::vector<py::tuple> out;
+    for (const auto& f : all) out.push_back(py::make_tuple(f.tool, f.surface, f.rms_db));
+    return out;
+  };
+  return py::make_tuple(forcing::forcing_model_text(c.model, kPickledCalibration), c.name,
+                        c.gain_db, c.gain_se_db, c.rms_se_db, c.prints, c.exemplars,
+                        c.degrees_of_freedom, c.residual_rms_db, fits(c.fits), fits(c.predicted));
+}
+
+Calibration calibration_of(const py::tuple& state) {
+  require_state(state, 11, "Calibration");
+  const auto fits = [](const py::handle& all) {
+    std::vector<forcing::ExemplarFit> out;
+    for (const auto& [tool, surface, rms_db] :
+         all.cast<std::vector<std::tuple<std::string, std::string, double>>>())
+      out.push_back({tool, surface, rms_db});
+    return out;
+  };
+  return {forcing::parse_forcing_model(state[0].cast<std::string>(), kPickledCalibration),
+          state[1].cast<std::string>(),
+          state[2].cast<std::vector<double>>(),
+          state[3].cast<std::vector<double>>(),
+          state[4].cast<double>(),
+          state[5].cast<std::size_t>(),
+          state[6].cast<std::size_t>(),
+          state[7].cast<double>(),
+          state[8].cast<double>(),
+          fits(state[9]),
+          fits(state[10])};
+}
+
 }  // namespace
 
 void add_forcing_calibration(py::module_ m) {
@@ -167,7 +205,8 @@ void add_forcing_calibration(py::module_ m) {
           },
           py::arg("name"), py::kw_only(), py::arg("replace") = false,
           "Keeps the calibrated model by name in the lab's store (designer(forcing=name) finds "
-          "it); returns its file");
+          "it); returns its file")
+      .def(py::pickle(&calibration_state, &calibration_of));
   m.def("calibrate_material", &calibrate_material, py::arg("material"), py::kw_only(),
         py::arg("forcing"), py::arg("tips_mm") = py::none(), py::arg("catalog") = py::none(),
         py::arg("modes") = 0, py::arg("mesh_size") = 0.0, py::arg("progress") = py::none(),

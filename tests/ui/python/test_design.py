@@ -122,6 +122,10 @@ def test_a_designs_modes_give_its_response_in_closed_form(designer):
     # The same sum in another order: round-off, relative 1e-9 with margin.
     np.testing.assert_allclose(modes.response, np.abs(h), rtol=1e-9)
     assert not modes.response.flags.writeable
+    again = pickle.loads(pickle.dumps(modes))  # as its numbers, bit for bit
+    assert (again.design, again.frequencies_hz) == (modes.design, modes.frequencies_hz)
+    for name in ("damping_ratios", "tip", "sensor", "response", "response_frequencies_hz"):
+        np.testing.assert_array_equal(getattr(again, name), getattr(modes, name))
 
 
 def test_the_forcing_model_predicts_what_a_prediction_predicts(designer):
@@ -141,6 +145,11 @@ def test_the_forcing_model_predicts_what_a_prediction_predicts(designer):
     assert forcing.residual_rms_db > 0 and len(forcing.exemplar_fits) > 0
     with pytest.raises(ValueError, match="moon"):
         forcing.surface_forcing("moon")
+    # Pickled as the forcing file's text: the same model, its tips and speeds through mm to an ulp.
+    again = pickle.loads(pickle.dumps(forcing))
+    assert (again.surfaces, again.materials, again.notes) == (forcing.surfaces, forcing.materials, forcing.notes)
+    np.testing.assert_allclose(again.tips_mm, forcing.tips_mm, rtol=1e-15)
+    np.testing.assert_allclose(again.predict(modes.response, "glass", 2.0, "DM85"), predicted.amplitude, rtol=1e-12)
 
 
 def test_a_material_calibrated_in_python_is_what_the_command_line_calibrates(tmp_path, monkeypatch):
@@ -169,6 +178,9 @@ def test_a_material_calibrated_in_python_is_what_the_command_line_calibrates(tmp
     # The 2 mm prints, not calibrated on, are predicted; every print calibrated on is fitted.
     assert {p["tool"] for p in c.predicted} == {"DM952"}
     assert {p["tool"] for p in c.fits} == {"DM951", "DM954"}
+    again = pickle.loads(pickle.dumps(c))
+    assert (again.name, again.gain_db, again.gain_se_db, again.prints, again.exemplars, again.fits, again.predicted) == (
+        c.name, c.gain_db, c.gain_se_db, c.prints, c.exemplars, c.fits, c.predicted)
 
     kept = c.keep("lab-DM95")
     assert kept == tmp_path / "store" / "lab-DM95.json"

@@ -3,6 +3,8 @@
 every number it returns is the one the loop's folder keeps."""
 
 import json
+import locale
+import pickle
 
 import numpy as np
 import pytest
@@ -15,7 +17,10 @@ def test_a_loop_waits_for_its_print_then_resumed_on_the_simulated_rig_measures_i
     space_file = tmp_path / "space.json"
     nibrig.space.default(bootstrap=20).save(space_file)
     folder = tmp_path / "loop"
+    encoding = locale.getpreferredencoding(False)
     started = nibrig.design.loop(folder, target="wnylon/glass", surface="glass", space=space_file, rounds=2)
+    # Exporting the print left the process's locale as it was (lib3mf sets "C"): files still UTF-8.
+    assert locale.getpreferredencoding(False) == encoding
     assert started.awaiting == 1 and started.stopped is None
     assert len(started.rounds) == 1 and started.rounds[0]["measured_distance"] is None
     assert (folder / "round-1" / "print" / "stylus.3mf").exists()
@@ -35,6 +40,18 @@ def test_a_loop_waits_for_its_print_then_resumed_on_the_simulated_rig_measures_i
         assert kept["predicted"]["distance"] == pytest.approx(r["predicted_distance"], rel=1e-15)
         assert kept["measured"]["distance"] == pytest.approx(r["measured_distance"], rel=1e-15)
         np.testing.assert_allclose(kept["measured"]["position"], r["measured_position"], rtol=1e-15)
+    # Pickled as its rounds' numbers, bit for bit, the waiting and the finished loop alike.
+    for loop in (started, resumed):
+        again = pickle.loads(pickle.dumps(loop))
+        assert (again.folder, again.threshold, again.stopped, again.awaiting) == (
+            loop.folder, loop.threshold, loop.stopped, loop.awaiting)
+        for a, b in zip(again.rounds, loop.rounds, strict=True):
+            assert a.keys() == b.keys()
+            for key in a:
+                if isinstance(a[key], np.ndarray):
+                    np.testing.assert_array_equal(a[key], b[key])
+                else:
+                    assert a[key] == b[key]
 
 
 def test_a_resumed_loop_takes_no_new_target_and_a_new_one_needs_its_space(tmp_path):
