@@ -133,13 +133,11 @@ LoopResult run_loop(const std::filesystem::path& folder, const std::optional<std
 py::tuple loop_state(const LoopResult& l) {
   std::vector<py::tuple> rounds;
   for (const auto& r : l.rounds) {
-    std::vector<std::pair<std::string, double>> mix;
-    for (const auto& share : r.design.mix) mix.emplace_back(share.material, share.fraction);
     py::object measured = py::none();
     if (r.measured)
       measured = py::make_tuple(r.measured->distance, r.measured->distance_sd, r.measured->position,
                                 r.measured->descriptors);
-    rounds.push_back(py::make_tuple(r.number, mix, r.design.tip_diameter_m, r.predicted_distance,
+    rounds.push_back(py::make_tuple(r.number, design_point_state(r.design), r.predicted_distance,
                                     r.predicted_distance_sd, r.chance_within, r.predicted_position,
                                     measured, r.stopped));
   }
@@ -153,24 +151,22 @@ LoopResult loop_of(const py::tuple& state) {
   l.threshold = state[1].cast<double>();
   for (const auto& item : state[2].cast<py::list>()) {
     const auto t = item.cast<py::tuple>();
-    require_state(t, 9, "DesignLoop");
+    require_state(t, 8, "DesignLoop");
     design::LoopRoundRecord r;
     r.number = t[0].cast<int>();
-    for (const auto& [material, fraction] :
-         t[1].cast<std::vector<std::pair<std::string, double>>>())
-      r.design.mix.push_back({material, fraction});
-    r.design.tip_diameter_m = t[2].cast<double>();
-    r.predicted_distance = t[3].cast<double>(), r.predicted_distance_sd = t[4].cast<double>();
-    r.chance_within = t[5].cast<double>();
-    r.predicted_position = t[6].cast<Eigen::VectorXd>();
-    if (!t[7].is_none()) {
-      const auto m = t[7].cast<py::tuple>();
+    r.design = design_point_of(t[1], "DesignLoop");
+    r.predicted_distance = t[2].cast<double>();
+    r.predicted_distance_sd = t[3].cast<double>();
+    r.chance_within = t[4].cast<double>();
+    r.predicted_position = t[5].cast<Eigen::VectorXd>();
+    if (!t[6].is_none()) {
+      const auto m = t[6].cast<py::tuple>();
       require_state(m, 4, "DesignLoop");
       r.measured =
           design::LoopMeasuredRecord{m[0].cast<double>(), m[1].cast<double>(),
                                      m[2].cast<Eigen::VectorXd>(), m[3].cast<Eigen::VectorXd>()};
     }
-    r.stopped = t[8].cast<std::string>();
+    r.stopped = t[7].cast<std::string>();
     l.rounds.push_back(std::move(r));
   }
   l.stopped = state[3].cast<std::optional<std::string>>();

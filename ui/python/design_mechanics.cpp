@@ -57,19 +57,18 @@ constexpr const char* kPickledForcing = "a pickled nibrig.design.Forcing";
 // Both pickle as their numbers, the forcing model as its file's text.
 py::tuple modes_state(const Modes& x) {
   const auto& r = x.response;
-  return py::make_tuple(r.design_name, r.modal.omega, r.modal.zeta, r.modal.input, r.modal.output,
-                        r.response_magnitude, *x.frequencies_hz);
+  return py::make_tuple(r.design_name, modal_state(r.modal), r.response_magnitude,
+                        *x.frequencies_hz);
 }
 
 Modes modes_from(const py::tuple& state) {
-  require_state(state, 7, "Modes");
+  require_state(state, 4, "Modes");
   Modes x;
   x.response.design_name = state[0].cast<std::string>();
-  x.response.modal = {state[1].cast<std::vector<double>>(), state[2].cast<std::vector<double>>(),
-                      state[3].cast<std::vector<double>>(), state[4].cast<std::vector<double>>()};
-  x.response.response_magnitude = state[5].cast<std::vector<double>>();
+  x.response.modal = modal_of(state[1], "Modes");
+  x.response.response_magnitude = state[2].cast<std::vector<double>>();
   x.frequencies_hz =
-      std::make_shared<const std::vector<double>>(state[6].cast<std::vector<double>>());
+      std::make_shared<const std::vector<double>>(state[3].cast<std::vector<double>>());
   return x;
 }
 

@@ -30,47 +30,33 @@ std::string file_text(const std::filesystem::path& file) {
 }  // namespace
 
 py::tuple predicted_tool_state(const design::PredictedTool& t) {
-  std::vector<py::tuple> mix;
-  for (const auto& share : t.point.mix)
-    mix.push_back(py::make_tuple(share.material, share.fraction));
   return py::make_tuple(
-      mix, t.point.tip_diameter_m, t.surface, t.design_name, t.first_mode_hz,
-      py::make_tuple(t.modal.omega, t.modal.zeta, t.modal.input, t.modal.output),
-      t.response_magnitude,
-      py::make_tuple(t.spectrum.frequencies_hz, t.spectrum.speeds_m_s, t.spectrum.amplitude_m_s2),
-      t.mu,
-      py::make_tuple(t.vibration.weighted_mean, t.vibration.weighted_power,
-                     t.vibration.band_energies),
+      design_point_state(t.point), t.surface, t.design_name, t.first_mode_hz, modal_state(t.modal),
+      t.response_magnitude, spectrum_state(t.spectrum), t.mu, descriptors_state(t.vibration),
       py::make_tuple(t.descriptor_errors.names, t.descriptor_errors.covariance,
                      t.descriptor_errors.vibration_samples, t.descriptor_errors.friction_samples),
       t.material_basis);
 }
 
 design::PredictedTool predicted_tool_of(const py::tuple& state) {
-  require_state(state, 12, "Prediction");
+  const std::string type = "Prediction";
+  require_state(state, 11, type);
   design::PredictedTool t;
-  for (const auto& share : state[0].cast<std::vector<std::pair<std::string, double>>>())
-    t.point.mix.push_back({share.first, share.second});
-  t.point.tip_diameter_m = state[1].cast<double>();
-  t.surface = state[2].cast<std::string>();
-  t.design_name = state[3].cast<std::string>();
-  t.first_mode_hz = state[4].cast<double>();
-  const auto modal = state[5].cast<py::tuple>();
-  t.modal = {modal[0].cast<std::vector<double>>(), modal[1].cast<std::vector<double>>(),
-             modal[2].cast<std::vector<double>>(), modal[3].cast<std::vector<double>>()};
-  t.response_magnitude = state[6].cast<std::vector<double>>();
-  const auto spectrum = state[7].cast<py::tuple>();
-  t.spectrum = {spectrum[0].cast<std::vector<double>>(), spectrum[1].cast<std::vector<double>>(),
-                spectrum[2].cast<std::vector<std::vector<double>>>()};
-  t.mu = state[8].cast<double>();
-  const auto vibration = state[9].cast<py::tuple>();
-  t.vibration = {vibration[0].cast<double>(), vibration[1].cast<double>(),
-                 vibration[2].cast<std::map<int, std::vector<double>>>()};
-  const auto errors = state[10].cast<py::tuple>();
+  t.point = design_point_of(state[0], type);
+  t.surface = state[1].cast<std::string>();
+  t.design_name = state[2].cast<std::string>();
+  t.first_mode_hz = state[3].cast<double>();
+  t.modal = modal_of(state[4], type);
+  t.response_magnitude = state[5].cast<std::vector<double>>();
+  t.spectrum = spectrum_of(state[6], type);
+  t.mu = state[7].cast<double>();
+  t.vibration = descriptors_of(state[8], type);
+  const auto errors = state[9].cast<py::tuple>();
+  require_state(errors, 4, type);
   t.descriptor_errors = {errors[0].cast<std::vector<std::string>>(),
                          errors[1].cast<Eigen::MatrixXd>(), errors[2].cast<std::size_t>(),
                          errors[3].cast<std::size_t>()};
-  t.material_basis = state[11].cast<std::string>();
+  t.material_basis = state[10].cast<std::string>();
   return t;
 }
 

@@ -19,6 +19,7 @@
 #include "model/numeric/cancellation.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/submodules.hpp"
 
@@ -54,44 +55,38 @@ struct Measurement {
   }
 };
 
-constexpr const char* kNotAMeasurement = "Measurement: not a pickled Measurement";
-
 // A measurement pickles as its numbers (a joblib worker's result over many recordings).
 py::tuple measurement_state(const Measurement& m) {
   py::object friction = py::none(), vibration = py::none();
   if (m.friction)
     friction = py::make_tuple(m.friction->mu, m.friction->mu_low, m.friction->mu_high,
                               m.friction->normal_load_N);
-  if (m.vibration) {
-    const auto& v = *m.vibration;
-    vibration = py::make_tuple(v.spectrum.frequencies_hz, v.spectrum.speeds_m_s,
-                               v.spectrum.amplitude_m_s2, v.descriptors.weighted_mean,
-                               v.descriptors.weighted_power, v.descriptors.band_energies);
-  }
+  if (m.vibration)
+    vibration = py::make_tuple(spectrum_state(m.vibration->spectrum),
+                               descriptors_state(m.vibration->descriptors));
   return py::make_tuple(m.kind, m.tool, m.surface, friction, vibration, m.warnings, m.json);
 }
 
 Measurement measurement_of(const py::tuple& state) {
-  if (state.size() != 7) throw std::invalid_argument(kNotAMeasurement);
+  const std::string type = "Measurement";
+  require_state(state, 7, type);
   Measurement m;
-  m.kind = state[0].cast<std::string>(), m.tool = state[1].cast<std::string>(),
+  m.kind = state[0].cast<std::string>();
+  m.tool = state[1].cast<std::string>();
   m.surface = state[2].cast<std::string>();
   if (!state[3].is_none()) {
     const auto f = state[3].cast<py::tuple>();
-    if (f.size() != 4) throw std::invalid_argument(kNotAMeasurement);
+    require_state(f, 4, type);
     m.friction = MeasuredFriction{f[0].cast<double>(), f[1].cast<double>(), f[2].cast<double>(),
                                   f[3].cast<double>()};
   }
   if (!state[4].is_none()) {
     const auto v = state[4].cast<py::tuple>();
-    if (v.size() != 6) throw std::invalid_argument(kNotAMeasurement);
-    m.vibration =
-        MeasuredVibration{{v[0].cast<std::vector<double>>(), v[1].cast<std::vector<double>>(),
-                           v[2].cast<std::vector<std::vector<double>>>()},
-                          {v[3].cast<double>(), v[4].cast<double>(),
-                           v[5].cast<std::map<int, std::vector<double>>>()}};
+    require_state(v, 2, type);
+    m.vibration = MeasuredVibration{spectrum_of(v[0], type), descriptors_of(v[1], type)};
   }
-  m.warnings = state[5].cast<std::vector<std::string>>(), m.json = state[6].cast<std::string>();
+  m.warnings = state[5].cast<std::vector<std::string>>();
+  m.json = state[6].cast<std::string>();
   return m;
 }
 
@@ -293,7 +288,7 @@ void add_measure_module(py::module_ m) {
             return py::make_tuple(model::io::catalog_text(c.catalog, kPickledCatalog), c.skipped);
           },
           [](const py::tuple& state) {
-            if (state.size() != 2) throw std::invalid_argument("Catalog: not a pickled Catalog");
+            require_state(state, 2, "Catalog");
             return Catalog{model::io::parse_catalog(state[0].cast<std::string>(), kPickledCatalog),
                            state[1].cast<std::vector<std::string>>()};
           }));

@@ -1,32 +1,36 @@
-// What the classes that pickle share: their state's size checked, and float samples as bytes (a
-// minute of audio at 48 kHz is 11 MB as bytes, several times that as a list of Python floats).
+// What the classes that pickle share: their state's size checked, float samples as bytes (a minute
+// of audio at 48 kHz is 11 MB as bytes, several times that as a list of Python floats), and the
+// states of the records several of them hold.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
-#include <cstring>
-#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "model/design/design_point.hpp"
+#include "model/io/velocity_spectrum.hpp"
+#include "model/measure/descriptors.hpp"
+#include "model/modal/modal_model.hpp"
 
 namespace nibrig::ui::python {
 
 // Throws ValueError "<type>: not a pickled <type>" unless the state has `size` items.
-inline void require_state(const pybind11::tuple& state, std::size_t size, const std::string& type) {
-  if (state.size() != size) throw std::invalid_argument(type + ": not a pickled " + type);
-}
+void require_state(const pybind11::tuple& state, std::size_t size, const std::string& type);
 
-inline pybind11::bytes float_bytes(const std::vector<float>& samples) {
-  return {reinterpret_cast<const char*>(samples.data()), samples.size() * sizeof(float)};
-}
+pybind11::bytes float_bytes(const std::vector<float>& samples);
+std::vector<float> floats_of(const pybind11::handle& bytes, const std::string& type);
 
-inline std::vector<float> floats_of(const pybind11::handle& bytes, const std::string& type) {
-  const auto text = bytes.cast<std::string>();
-  if (text.size() % sizeof(float) != 0)
-    throw std::invalid_argument(type + ": not a pickled " + type);
-  std::vector<float> out(text.size() / sizeof(float));
-  std::memcpy(out.data(), text.data(), text.size());
-  return out;
-}
+// Each record as a tuple of its numbers and back, bit for bit; `type` names the class whose state
+// holds it in a refusal.
+pybind11::tuple design_point_state(const model::design::DesignPoint& point);
+model::design::DesignPoint design_point_of(const pybind11::handle& state, const std::string& type);
+pybind11::tuple modal_state(const model::modal::ModalModel& modal);
+model::modal::ModalModel modal_of(const pybind11::handle& state, const std::string& type);
+pybind11::tuple spectrum_state(const model::io::VelocitySpectrum& spectrum);
+model::io::VelocitySpectrum spectrum_of(const pybind11::handle& state, const std::string& type);
+pybind11::tuple descriptors_state(const model::measure::VibrationDescriptors& descriptors);
+model::measure::VibrationDescriptors descriptors_of(const pybind11::handle& state,
+                                                    const std::string& type);
 
 }  // namespace nibrig::ui::python

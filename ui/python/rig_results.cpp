@@ -83,9 +83,9 @@ Session session_of(const py::tuple& state) {
                model::io::json_fields::parse_text(state[0].cast<std::string>(), kPickledSession),
                kPickledSession)
                .info;
-  r.acceleration = floats_of(state[1], "RigSession"),
+  r.acceleration = floats_of(state[1], "RigSession");
   r.speed_m_s = floats_of(state[2], "RigSession");
-  r.normal_force_N = floats_of(state[3], "RigSession"),
+  r.normal_force_N = floats_of(state[3], "RigSession");
   r.tangential_force_N = floats_of(state[4], "RigSession");
   r.complete = state[5].cast<bool>();
   r.folder = state[6].cast<std::filesystem::path>();

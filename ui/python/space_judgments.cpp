@@ -9,6 +9,7 @@
 
 #include "model/io/triplet_checks.hpp"
 #include "model/io/triplets.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 
@@ -206,8 +207,7 @@ void add_space_judgments(py::module_ m) {
                                   observers(j), j.file.string());
           },
           [](const py::tuple& state) {
-            if (state.size() != 5)
-              throw std::invalid_argument("Judgments: not a pickled Judgments");
+            require_state(state, 5, "Judgments");
             Judgments j = judgments_from_arrays(state[0], state[1].cast<std::vector<std::string>>(),
                                                 py::none(), state[2]);
             const auto who = state[3].cast<std::vector<std::string>>();

@@ -18,6 +18,7 @@
 #include "model/space/space_inputs.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
@@ -218,8 +219,7 @@ void add_space_module(py::module_ m) {
                                     p.placement.covariance.data() + p.placement.covariance.size()));
           },
           [](const py::tuple& state) {
-            if (state.size() != 2)
-              throw std::invalid_argument("Placement: not a pickled Placement");
+            require_state(state, 2, "Placement");
             const auto mean = state[0].cast<std::vector<double>>();
             const auto covariance = state[1].cast<std::vector<double>>();
             const auto n = static_cast<Eigen::Index>(mean.size());
@@ -317,7 +317,7 @@ void add_space_module(py::module_ m) {
             return py::make_tuple(space::space_file_text(s.file, kPickledSpace), s.warnings);
           },
           [](const py::tuple& state) {
-            if (state.size() != 2) throw std::invalid_argument("Space: not a pickled Space");
+            require_state(state, 2, "Space");
             return Space{space::parse_space_file(state[0].cast<std::string>(), kPickledSpace),
                          state[1].cast<std::vector<std::string>>()};
           }))

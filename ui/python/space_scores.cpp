@@ -10,6 +10,7 @@
 #include "model/space/space_evaluation.hpp"
 #include "model/space/space_fit_request.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 
@@ -108,7 +109,7 @@ py::tuple evaluation_state(const space::SpaceEvaluation& e) {
 }
 
 space::SpaceEvaluation evaluation_of(const py::tuple& state) {
-  if (state.size() != 9) throw std::invalid_argument("Evaluation: not a pickled Evaluation");
+  require_state(state, 9, "Evaluation");
   space::SpaceEvaluation e;
   e.scores.triplets = state[0].cast<std::size_t>();
   e.scores.responses = state[1].cast<std::size_t>();
@@ -133,7 +134,7 @@ py::tuple validation_state(const space::Validation& v) {
 }
 
 space::Validation validation_of(const py::tuple& state) {
-  if (state.size() != 4) throw std::invalid_argument("Validation: not a pickled Validation");
+  require_state(state, 4, "Validation");
   space::Validation v;
   v.triplets = state[0].cast<std::size_t>();
   v.responses = state[1].cast<std::size_t>();
