@@ -2,6 +2,7 @@
 // work is rig/usb's (calibrate_controller, flash_firmware); this file holds the options, the
 // prompts at the terminal and the printing.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,7 +12,9 @@
 #include "rig/usb/controller_calibration.hpp"
 #include "rig/usb/firmware_flash.hpp"
 #include "ui/cli/commands.hpp"
+#include "ui/cli/device_json.hpp"
 #include "ui/cli/logging.hpp"
+#include "ui/cli/output.hpp"
 #include "ui/options/number_checks.hpp"
 
 namespace nibrig::ui::cli {
@@ -25,12 +28,14 @@ struct RigCalibrateOptions {
   std::optional<std::string> new_serial;
   bool yes = false;
   double seconds = 1.0;
+  std::filesystem::path json;
 };
 
 struct RigFlashOptions {
   std::string serial;
   std::string port;
   std::string hex;
+  std::filesystem::path json;
 };
 
 void print_rig_calibration(const char* label, const rig::usb::ForceCalibration& c) {
@@ -42,6 +47,39 @@ void print_rig_force_reading(const char* channel, const std::optional<rig::usb::
   if (!r) return;
   std::printf("%s channel: read %.4f N (spread %.4f N, %zu frames) with %.4f N on it\n", channel, r->mean_N,
               r->std_dev_N, r->frames, known_N);
+}
+
+nlohmann::json force_calibration_json(const rig::usb::ForceCalibration& c) {
+  return {{"normal_counts_per_N", c.normal_counts_per_N},
+          {"tangential_counts_per_N", c.tangential_counts_per_N},
+          {"lever_factor", c.lever_factor}};
+}
+
+nlohmann::json force_reading_json(const std::optional<rig::usb::ForceReading>& r,
+                                  const std::optional<double>& known_N) {
+  if (!r) return nullptr;
+  return {{"known_N", *known_N},
+          {"read_N", r->mean_N},
+          {"spread_N", r->std_dev_N},
+          {"frames", r->frames}};
+}
+
+// What `rig calibrate` prints, as numbers (ui/cli/README.md, "Output files").
+nlohmann::json rig_calibration_json(const rig::usb::ControllerCalibrationResult& result,
+                                    const rig::usb::ControllerCalibrationSteps& steps) {
+  nlohmann::json geometry = nullptr;
+  if (result.geometry)
+    geometry = {{"counts_per_revolution", result.geometry->counts_per_revolution},
+                {"track_radius_mm", result.geometry->track_radius_m * 1000.0}};
+  return {{"controller",
+           {{"serial", result.identity.serial},
+            {"protocol_version", rig::usb::version_text(result.identity.protocol_version)},
+            {"firmware", result.identity.firmware}}},
+          {"normal", force_reading_json(result.normal, steps.normal_weight_N)},
+          {"tangential", force_reading_json(result.tangential, steps.tangential_weight_N)},
+          {"before", force_calibration_json(result.before)},
+          {"after", force_calibration_json(result.after)},
+          {"geometry", geometry}};
 }
 
 void calibrate_rig_controller(const RigCalibrateOptions& o) {
@@ -100,6 +138,7 @@ void calibrate_rig_controller(const RigCalibrateOptions& o) {
     std::printf("geometry on the device: %.6g encoder counts per revolution, track radius %.3f mm\n",
                 result.geometry->counts_per_revolution, result.geometry->track_radius_m * 1000.0);
   }
+  write_json_numbers(o.json, rig_calibration_json(result, steps));
 }
 
 void flash_rig_controller(const RigFlashOptions& o) {
@@ -113,6 +152,9 @@ void flash_rig_controller(const RigFlashOptions& o) {
   });
   std::printf("flashed %s; the rig controller is back: %s\n", result.hex.string().c_str(),
               rig::usb::describe(result.controller).c_str());
+  write_json_numbers(o.json, {{"hex", result.hex.string()},
+                              {"port", serial_ports_json({result.port}).front()},
+                              {"controller", rig_controllers_json({result.controller}).front()}});
 }
 
 }  // namespace
@@ -143,6 +185,7 @@ void add_rig_setup_commands(CLI::App* rig_cmd, std::shared_ptr<const GlobalOptio
   cal->add_flag("--yes", c->yes, "Do not wait for Enter at each step: the arm is already as the step asks (scripts)");
   cal->add_option("--seconds", c->seconds, "Frames averaged for each weight, in seconds (default 1)")
       ->check(in_range(0.05, 60.0, "a length in seconds"));
+  add_json_option(cal, c->json, "what the device holds and the readings");
   cal->callback([c, global] {
     configure_logging(global->verbosity);
     calibrate_rig_controller(*c);
@@ -159,6 +202,7 @@ void add_rig_setup_commands(CLI::App* rig_cmd, std::shared_ptr<const GlobalOptio
                  "without it the controller is asked into its bootloader");
   fl->add_option("--hex", f->hex,
                  "The firmware (default: $NIBRIG_FIRMWARE_HEX, else this build's rig/firmware/nibrig-rig.hex)");
+  add_json_option(fl, f->json, "the controller as it came back");
   fl->callback([f, global] {
     configure_logging(global->verbosity);
     flash_rig_controller(*f);

@@ -28,22 +28,35 @@ TEST(RigSetupCommands, CalibrateWritesTheDeviceAndReadsBackItsNewSerial) {
   device.place_on_arm(0.0, 0.0);
   ASSERT_EQ(nibrig::test::run_cli({"rig", "calibrate", "--zero", "--yes"}), 0);
   device.place_on_arm(2.0, 0.0);
-  ::testing::internal::CaptureStdout();
-  const int code = nibrig::test::run_cli(
-      {"rig", "calibrate", "--normal-weight", "2N", "--yes", "--radius", "70", "--serial", "LAB-3"});
-  const std::string out = ::testing::internal::GetCapturedStdout();
-  ASSERT_EQ(code, 0) << out;
-  // 2 N through the device's first 1000 counts/N where the bridge gives 1150: 2.3 N.
-  EXPECT_NE(out.find("normal channel: read 2.3000 N"), std::string::npos) << out;
-  EXPECT_NE(out.find("now on the device: normal 1150 counts/N"), std::string::npos) << out;
-  EXPECT_NE(out.find("track radius 70.000 mm"), std::string::npos) << out;
+  const auto json = nibrig::test::scratch_dir("rig_calibrate_cli") / "calibration.json";
+  const int code =
+      nibrig::test::run_cli({"rig", "calibrate", "--normal-weight", "2N", "--yes", "--radius", "70",
+                             "--serial", "LAB-3", "--json", json.string()});
+  ASSERT_EQ(code, 0);
+  const auto said = nibrig::test::read_json(json);
+  // 2 N through the device's first 1000 counts/N where the bridge gives 1150: 2.3 N, averaged over
+  // a second of frames whose noise is far below the relative tolerance.
+  EXPECT_NEAR(said["normal"]["known_N"].get<double>(), 2.0, 1e-12) << said;
+  EXPECT_NEAR(said["normal"]["read_N"].get<double>(), 2.3, 2.3 * kCliRelative) << said;
+  EXPECT_GT(said["normal"]["frames"].get<int>(), 0) << said;
+  EXPECT_TRUE(said["tangential"].is_null()) << said;
+  EXPECT_NEAR(said["before"]["normal_counts_per_N"].get<double>(), 1000.0, 1e-9) << said;
+  EXPECT_NEAR(said["after"]["normal_counts_per_N"].get<double>(), kCliTrueNormalCountsPerN,
+              kCliTrueNormalCountsPerN * kCliRelative)
+      << said;
+  // What the command reports is what the device holds.
+  EXPECT_DOUBLE_EQ(said["after"]["normal_counts_per_N"].get<double>(),
+                   device.calibration().normal_counts_per_N);
   EXPECT_NEAR(device.calibration().normal_counts_per_N, kCliTrueNormalCountsPerN,
               kCliTrueNormalCountsPerN * kCliRelative);
+  EXPECT_NEAR(said["geometry"]["track_radius_mm"].get<double>(), 70.0, 1e-6) << said;
   EXPECT_NEAR(device.geometry().track_radius_m, 0.070, 1e-9);
   // The identity read back after the rename. (`rig devices` prints the same through describe(),
   // tested in usb_rig_version_1_1_test.cpp; run here, its audio probe opens more device nodes than
   // umockdev's preload tracks, and it aborts.)
-  EXPECT_NE(out.find("rig controller LAB-3 (protocol 1.2, firmware emulated-1.2)"), std::string::npos) << out;
+  EXPECT_EQ(said["controller"]["serial"], "LAB-3") << said;
+  EXPECT_EQ(said["controller"]["protocol_version"], "1.2") << said;
+  EXPECT_EQ(said["controller"]["firmware"], "emulated-1.2") << said;
 }
 
 TEST(RigSetupCommands, FlashAfterAResetWritesTheHexAndFindsTheControllerBack) {
@@ -54,13 +67,20 @@ TEST(RigSetupCommands, FlashAfterAResetWritesTheHexAndFindsTheControllerBack) {
   EmulatedRig device(testbed.get(), EmulatedRigConfig{"NIB-0C12", 2});
   testing::add_usb_serial_port(testbed.get(), "1-6", "ttyACM1", 0x2341, 0x0037);  // a Micro, reset pressed
   testing::Avr109Bootloader bootloader(umockdev_testbed_get_dev_fd(testbed.get(), "/dev/ttyACM1"));
-  ::testing::internal::CaptureStdout();
-  const int code = nibrig::test::run_cli({"rig", "flash", "--port", "/dev/ttyACM1", "--hex", hex.string()});
-  const std::string out = ::testing::internal::GetCapturedStdout();
-  ASSERT_EQ(code, 0) << out;
-  EXPECT_NE(out.find("through /dev/ttyACM1 (2341:0037 Arduino Micro) with avrdude"), std::string::npos) << out;
-  EXPECT_NE(out.find("the rig controller is back: NIB-0C12 (bus 1, address 2, protocol 1.2"), std::string::npos)
-      << out;
+  const auto json = hex.parent_path() / "flashed.json";
+  const int code = nibrig::test::run_cli(
+      {"rig", "flash", "--port", "/dev/ttyACM1", "--hex", hex.string(), "--json", json.string()});
+  ASSERT_EQ(code, 0);
+  const auto said = nibrig::test::read_json(json);
+  EXPECT_EQ(said["hex"], hex.string()) << said;
+  EXPECT_EQ(said["port"]["device"], "/dev/ttyACM1") << said;
+  EXPECT_EQ(said["port"]["usb_id"], "2341:0037") << said;
+  EXPECT_EQ(said["port"]["board"], "Arduino Micro") << said;
+  EXPECT_EQ(said["controller"]["serial"], "NIB-0C12") << said;
+  EXPECT_EQ(said["controller"]["bus"], 1) << said;
+  EXPECT_EQ(said["controller"]["address"], 2) << said;
+  EXPECT_EQ(said["controller"]["protocol_version"], "1.2") << said;
+  EXPECT_TRUE(said["controller"]["problem"].is_null()) << said;
   EXPECT_TRUE(bootloader.exited());
   const auto flash = bootloader.flash();
   for (std::size_t a = 0; a < image.size(); ++a) ASSERT_EQ(flash[a], image[a]) << "at " << a;
