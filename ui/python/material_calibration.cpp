@@ -8,6 +8,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "model/io/bundled_assets.hpp"
 #include "model/io/printer_profile.hpp"
@@ -16,6 +18,7 @@
 #include "rig/calibration_bar_fit.hpp"
 #include "ui/python/design_types.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 
 namespace py = pybind11;
 
@@ -25,10 +28,21 @@ namespace {
 
 namespace mech = model::mechanics;
 
+// What the Python classes show of a written bar and of a ring-down fit, kept as numbers and names
+// so that they pickle (a fit's meshes and linearisation stay in the call that made them).
 struct WrittenBar {
-  rig::CalibrationBarWritten written;
-  rig::CalibrationBar bar;
-  std::string printer;
+  std::string material, printer;
+  double length_m = 0.0, volume_m3 = 0.0;
+  rig::CalibrationBarFiles files;
+};
+
+struct FittedBar {
+  std::string name;
+  double youngs_modulus_Pa = 0.0, youngs_modulus_sd_Pa = 0.0;
+  double rayleigh_stiffness_s = 0.0, rayleigh_stiffness_sd_s = 0.0;
+  double first_mode_hz = 0.0, first_mode_damping_ratio = 0.0, relative_residual = 0.0;
+  std::vector<double> fitted;
+  std::filesystem::path saved;
 };
 
 WrittenBar calibration_bar(const std::string& material, const std::string& printer,
@@ -38,21 +52,20 @@ WrittenBar calibration_bar(const std::string& material, const std::string& print
   const model::io::PrinterProfile profile = model::io::find_printer_profile(printer);
   const mech::MaterialTable table =
       mech::read_material_table(materials.value_or(model::io::default_materials()));
-  WrittenBar out;
-  out.bar = rig::calibration_bar_of(
+  const rig::CalibrationBar bar = rig::calibration_bar_of(
       material, table, length_mm ? std::optional<double>(*length_mm * 1e-3) : std::nullopt);
-  out.printer = profile.name;
+  rig::CalibrationBarWritten written;
   run_long_call(
       [&](std::stop_token, const Report&) {
-        out.written = rig::write_calibration_bar(folder, out.bar, profile, table);
+        written = rig::write_calibration_bar(folder, bar, profile, table);
       },
       py::none());
-  return out;
+  return {bar.material, profile.name, bar.geometry.length, written.volume_m3, written.files};
 }
 
-rig::SavedBarCalibration calibrate_ring_down(
-    const std::filesystem::path& trace, const std::filesystem::path& bar, const std::string& name,
-    bool calibrated, bool replace, const std::optional<std::filesystem::path>& materials) {
+FittedBar calibrate_ring_down(const std::filesystem::path& trace, const std::filesystem::path& bar,
+                              const std::string& name, bool calibrated, bool replace,
+                              const std::optional<std::filesystem::path>& materials) {
   rig::SavedBarCalibration saved;
   run_long_call(
       [&](std::stop_token, const Report&) {
@@ -60,7 +73,58 @@ rig::SavedBarCalibration calibrate_ring_down(
             bar, trace, name, materials.value_or(std::filesystem::path()), calibrated, replace);
       },
       py::none());
-  return saved;
+  const auto& fit = saved.result.fit;
+  const auto& sd = saved.result.uncertainty;
+  return {saved.result.material.name,
+          fit.youngs_modulus,
+          sd.youngs_modulus_sd,
+          fit.rayleigh_stiffness,
+          sd.rayleigh_stiffness_sd,
+          fit.first_mode_hz,
+          fit.first_mode_damping_ratio,
+          fit.relative_residual,
+          fit.fitted,
+          saved.saved};
+}
+
+py::tuple bar_state(const WrittenBar& b) {
+  const auto& f = b.files;
+  return py::make_tuple(
+      b.material, b.printer, b.length_m, b.volume_m3,
+      py::make_tuple(f.three_mf, f.stl, f.ini, f.drawing, f.instructions, f.record));
+}
+
+WrittenBar bar_of(const py::tuple& state) {
+  require_state(state, 5, "CalibrationBar");
+  const auto files = state[4].cast<py::tuple>();
+  require_state(files, 6, "CalibrationBar");
+  const auto file = [&](std::size_t i) { return files[i].cast<std::filesystem::path>(); };
+  return {state[0].cast<std::string>(),
+          state[1].cast<std::string>(),
+          state[2].cast<double>(),
+          state[3].cast<double>(),
+          {file(0), file(1), file(2), file(3), file(4), file(5)}};
+}
+
+py::tuple fitted_bar_state(const FittedBar& f) {
+  return py::make_tuple(f.name, f.youngs_modulus_Pa, f.youngs_modulus_sd_Pa, f.rayleigh_stiffness_s,
+                        f.rayleigh_stiffness_sd_s, f.first_mode_hz, f.first_mode_damping_ratio,
+                        f.relative_residual, f.fitted, f.saved);
+}
+
+FittedBar fitted_bar_of(const py::tuple& state) {
+  require_state(state, 10, "RingDownCalibration");
+  const auto number = [&](std::size_t i) { return state[i].cast<double>(); };
+  return {state[0].cast<std::string>(),
+          number(1),
+          number(2),
+          number(3),
+          number(4),
+          number(5),
+          number(6),
+          number(7),
+          state[8].cast<std::vector<double>>(),
+          state[9].cast<std::filesystem::path>()};
 }
 
 std::optional<std::filesystem::path> optional_file(const std::filesystem::path& file) {
@@ -73,68 +137,49 @@ std::optional<std::filesystem::path> optional_file(const std::filesystem::path& 
 void add_material_calibration(py::module_ m) {
   py::class_<WrittenBar>(m, "CalibrationBar",
                          "The ring-down bar written for a material on a printer")
-      .def_property_readonly("material", [](const WrittenBar& b) { return b.bar.material; })
+      .def_property_readonly("material", [](const WrittenBar& b) { return b.material; })
       .def_property_readonly("printer", [](const WrittenBar& b) { return b.printer; })
-      .def_property_readonly("length_mm",
-                             [](const WrittenBar& b) { return b.bar.geometry.length * 1e3; })
+      .def_property_readonly("length_mm", [](const WrittenBar& b) { return b.length_m * 1e3; })
       .def_property_readonly(
-          "volume_mm3", [](const WrittenBar& b) { return b.written.volume_m3 * 1e9; },
+          "volume_mm3", [](const WrittenBar& b) { return b.volume_m3 * 1e9; },
           "Of the meshed solid")
-      .def_property_readonly("three_mf",
-                             [](const WrittenBar& b) { return b.written.files.three_mf; })
-      .def_property_readonly("stl", [](const WrittenBar& b) { return b.written.files.stl; })
+      .def_property_readonly("three_mf", [](const WrittenBar& b) { return b.files.three_mf; })
+      .def_property_readonly("stl", [](const WrittenBar& b) { return b.files.stl; })
       .def_property_readonly(
-          "ini", [](const WrittenBar& b) { return optional_file(b.written.files.ini); },
+          "ini", [](const WrittenBar& b) { return optional_file(b.files.ini); },
           "PrusaSlicer's settings beside the 3MF (None for a printer PrusaSlicer does not slice)")
-      .def_property_readonly("drawing", [](const WrittenBar& b) { return b.written.files.drawing; })
+      .def_property_readonly("drawing", [](const WrittenBar& b) { return b.files.drawing; })
       .def_property_readonly(
-          "instructions", [](const WrittenBar& b) { return b.written.files.instructions; },
+          "instructions", [](const WrittenBar& b) { return b.files.instructions; },
           "How to print, clamp, place the accelerometer, pluck and record (Markdown)")
       .def_property_readonly(
-          "record", [](const WrittenBar& b) { return b.written.files.record; },
-          "calibration_bar.json, which calibrate_ring_down reads back");
+          "record", [](const WrittenBar& b) { return b.files.record; },
+          "calibration_bar.json, which calibrate_ring_down reads back")
+      .def(py::pickle(&bar_state, &bar_of));
 
-  py::class_<rig::SavedBarCalibration>(
-      m, "RingDownCalibration",
-      "A material fitted to its bar's ring-down and saved among the lab's")
-      .def_property_readonly(
-          "name", [](const rig::SavedBarCalibration& s) { return s.result.material.name; })
-      .def_property_readonly(
-          "youngs_modulus_Pa",
-          [](const rig::SavedBarCalibration& s) { return s.result.fit.youngs_modulus; })
-      .def_property_readonly(
-          "youngs_modulus_sd_Pa",
-          [](const rig::SavedBarCalibration& s) { return s.result.uncertainty.youngs_modulus_sd; },
-          "One standard deviation")
-      .def_property_readonly(
-          "rayleigh_stiffness_s",
-          [](const rig::SavedBarCalibration& s) { return s.result.fit.rayleigh_stiffness; })
-      .def_property_readonly(
-          "rayleigh_stiffness_sd_s",
-          [](const rig::SavedBarCalibration& s) {
-            return s.result.uncertainty.rayleigh_stiffness_sd;
-          },
-          "One standard deviation")
-      .def_property_readonly(
-          "first_mode_hz",
-          [](const rig::SavedBarCalibration& s) { return s.result.fit.first_mode_hz; })
-      .def_property_readonly(
-          "first_mode_damping_ratio",
-          [](const rig::SavedBarCalibration& s) { return s.result.fit.first_mode_damping_ratio; })
-      .def_property_readonly(
-          "relative_residual",
-          [](const rig::SavedBarCalibration& s) { return s.result.fit.relative_residual; },
-          "‖measured − fitted‖ / ‖measured‖ over the trace")
+  py::class_<FittedBar>(m, "RingDownCalibration",
+                        "A material fitted to its bar's ring-down and saved among the lab's")
+      .def_readonly("name", &FittedBar::name)
+      .def_readonly("youngs_modulus_Pa", &FittedBar::youngs_modulus_Pa)
+      .def_readonly("youngs_modulus_sd_Pa", &FittedBar::youngs_modulus_sd_Pa,
+                    "One standard deviation")
+      .def_readonly("rayleigh_stiffness_s", &FittedBar::rayleigh_stiffness_s)
+      .def_readonly("rayleigh_stiffness_sd_s", &FittedBar::rayleigh_stiffness_sd_s,
+                    "One standard deviation")
+      .def_readonly("first_mode_hz", &FittedBar::first_mode_hz)
+      .def_readonly("first_mode_damping_ratio", &FittedBar::first_mode_damping_ratio)
+      .def_readonly("relative_residual", &FittedBar::relative_residual,
+                    "‖measured − fitted‖ / ‖measured‖ over the trace")
       .def_property_readonly(
           "fitted",
-          [](const rig::SavedBarCalibration& s) {
-            return py::array_t<double>(static_cast<py::ssize_t>(s.result.fit.fitted.size()),
-                                       s.result.fit.fitted.data());
+          [](const FittedBar& f) {
+            return py::array_t<double>(static_cast<py::ssize_t>(f.fitted.size()), f.fitted.data());
           },
           "The fitted trace, sample for sample with the recording")
-      .def_property_readonly(
-          "saved", [](const rig::SavedBarCalibration& s) { return s.saved; },
-          "The lab's file of the material: every call that takes a material by name finds it");
+      .def_readonly("saved", &FittedBar::saved,
+                    "The lab's file of the material: every call that takes a material by name "
+                    "finds it")
+      .def(py::pickle(&fitted_bar_state, &fitted_bar_of));
 
   m.def("calibration_bar", &calibration_bar, py::arg("material"), py::kw_only(), py::arg("printer"),
         py::arg("folder"), py::arg("length_mm") = py::none(), py::arg("materials") = py::none(),

@@ -3,6 +3,7 @@ fitted and saved among the lab's materials, as the command line does it."""
 
 import json
 import math
+import pickle
 import subprocess
 
 import numpy as np
@@ -50,6 +51,19 @@ def test_a_bar_and_its_ring_down_make_a_lab_material_as_the_command_line_does(tm
     saved = json.loads(fit.saved.read_text())
     assert saved["materials"][0]["youngs_modulus"] == fit.youngs_modulus_Pa
     assert saved["calibration"]["printed_as"] == "PLA"
+
+    # Both pickle as what they show, bit for bit: a worker's bar and fit are the ones made here.
+    bar_again, fit_again = pickle.loads(pickle.dumps(bar)), pickle.loads(pickle.dumps(fit))
+    for name in ("material", "printer", "length_mm", "volume_mm3", "three_mf", "stl", "ini",
+                 "drawing", "instructions", "record"):
+        assert getattr(bar_again, name) == getattr(bar, name), name
+    for name in ("name", "youngs_modulus_Pa", "youngs_modulus_sd_Pa", "rayleigh_stiffness_s",
+                 "rayleigh_stiffness_sd_s", "first_mode_hz", "first_mode_damping_ratio",
+                 "relative_residual", "saved"):
+        assert getattr(fit_again, name) == getattr(fit, name), name
+    assert np.array_equal(fit_again.fitted, fit.fitted)
+    with pytest.raises(ValueError, match="not a pickled RingDownCalibration"):
+        nibrig.design.RingDownCalibration.__new__(nibrig.design.RingDownCalibration).__setstate__(("py-pla",))
 
     # The command line fits the same trace on the same bar to the same numbers.
     subprocess.run([nibrig_command(), "-q", "material", "calibrate", "ringdown", str(trace), "--bar",
