@@ -144,10 +144,11 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
         rig::ComparisonHooks hooks;
         hooks.cancel = stop;
         hooks.on_data = recorded.counter(start->rig(), start->profile(), report);
-        out.run = system_refusals([&] { return start->run(hooks); });
-        out.report = start->report(out.run);
-        out.simulated_modes = start->simulated().modes;
-        out.session.session = model::io::read_rig_session(out.run.capture.folder);
+        auto run = system_refusals([&] { return start->run(hooks); });
+        const auto folder = run.capture.folder;
+        auto written = start->report(run);
+        out = comparison_of(std::move(run), std::move(written), start->simulated().modes);
+        out.session.session = model::io::read_rig_session(folder);
       },
       progress);
   return out;

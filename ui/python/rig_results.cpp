@@ -7,6 +7,11 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "model/io/json_fields.hpp"
 #include "model/io/rig_session_json.hpp"
@@ -45,12 +50,12 @@ py::array_t<T> per_bin(const Comparison& c, T model::io::ComparisonBin::*field) 
 
 // Each bin's mean spectrum of one stream, bins × frequencies, m/s² (a copy).
 py::array_t<double> mean_spectra(const Comparison& c, bool simulated) {
-  const auto& bins = c.run.table.bins;
-  const std::size_t n = c.run.table.frequencies_hz.size();
+  const auto& bins = simulated ? c.simulated_mean : c.measured_mean;
+  const std::size_t n = c.frequencies_hz.size();
   py::array_t<double> a({bins.size(), n});
   auto out = a.mutable_unchecked<2>();
   for (std::size_t b = 0; b < bins.size(); ++b) {
-    const auto& row = simulated ? bins[b].simulated_mean : bins[b].measured_mean;
+    const auto& row = bins[b];
     for (std::size_t f = 0; f < n; ++f)
       out(static_cast<py::ssize_t>(b), static_cast<py::ssize_t>(f)) = f < row.size() ? row[f] : std::nan("");
   }
@@ -59,7 +64,7 @@ py::array_t<double> mean_spectra(const Comparison& c, bool simulated) {
 
 // The waterfall's rows × frequency bins in dB, a read-only view of the run's rows.
 py::object waterfall_db(const py::object& self, bool simulated) {
-  const auto& rows = self.cast<const Comparison&>().run.rows;
+  const auto& rows = self.cast<const Comparison&>().rows;
   const auto& v = simulated ? rows.simulated_db : rows.measured_db;
   return array_view(v.data(), v.size(), self).attr("reshape")(rows.rows(), rows.bins);
 }
@@ -93,7 +98,126 @@ Session session_of(const py::tuple& state) {
   return s;
 }
 
+constexpr const char* kComparison = "Comparison";
+
+py::tuple comparison_bin_state(const model::io::ComparisonBin& b) {
+  return py::make_tuple(b.min_speed_m_s, b.max_speed_m_s, b.mean_speed_m_s, b.rows, b.lsd_db,
+                        b.measured_weighted_mean, b.simulated_weighted_mean,
+                        b.weighted_mean_log10_difference);
+}
+
+model::io::ComparisonBin comparison_bin_of(const py::handle& state) {
+  const auto t = state.cast<py::tuple>();
+  require_state(t, 8, kComparison);
+  const auto number = [&](std::size_t i) { return t[i].cast<double>(); };
+  return {number(0), number(1), number(2), t[3].cast<std::uint64_t>(),
+          number(4), number(5), number(6), number(7)};
+}
+
+// comparison.json's record as its numbers, bit for bit (the file stores speeds in mm/s).
+py::tuple report_state(const model::io::ComparisonFile& c) {
+  py::list bins;
+  for (const auto& b : c.bins) bins.append(comparison_bin_state(b));
+  py::object actuator = py::none();
+  if (c.actuator)
+    actuator = py::make_tuple(c.actuator->contacts, c.actuator->follow_mean_s,
+                              c.actuator->follow_max_s, c.actuator->period_s);
+  return py::make_tuple(py::make_tuple(c.tool, c.surface, c.sample_rate_hz, c.segment_length, c.hop,
+                                       c.window, c.band_min_hz, c.band_max_hz),
+                        bins,
+                        py::make_tuple(c.bins_with_rows, c.rows, c.rows_outside_speed_range,
+                                       c.mean_lsd_db, c.mean_weighted_mean_log10_difference,
+                                       c.rows_analysed, c.rows_without_speed, c.blocks_dropped),
+                        actuator);
+}
+
+model::io::ComparisonFile report_of(const py::handle& state) {
+  const auto t = state.cast<py::tuple>();
+  require_state(t, 4, kComparison);
+  const auto head = t[0].cast<py::tuple>();
+  const auto overall = t[2].cast<py::tuple>();
+  require_state(head, 8, kComparison);
+  require_state(overall, 8, kComparison);
+  model::io::ComparisonFile c;
+  c.tool = head[0].cast<std::string>(), c.surface = head[1].cast<std::string>();
+  c.sample_rate_hz = head[2].cast<double>();
+  c.segment_length = head[3].cast<std::uint64_t>(), c.hop = head[4].cast<std::uint64_t>();
+  c.window = head[5].cast<std::string>();
+  c.band_min_hz = head[6].cast<double>(), c.band_max_hz = head[7].cast<double>();
+  for (const auto& b : t[1].cast<py::list>()) c.bins.push_back(comparison_bin_of(b));
+  c.bins_with_rows = overall[0].cast<std::uint64_t>(), c.rows = overall[1].cast<std::uint64_t>();
+  c.rows_outside_speed_range = overall[2].cast<std::uint64_t>();
+  c.mean_lsd_db = overall[3].cast<double>();
+  c.mean_weighted_mean_log10_difference = overall[4].cast<double>();
+  c.rows_analysed = overall[5].cast<std::uint64_t>();
+  c.rows_without_speed = overall[6].cast<std::uint64_t>();
+  c.blocks_dropped = overall[7].cast<std::uint64_t>();
+  if (!t[3].is_none()) {
+    const auto a = t[3].cast<py::tuple>();
+    require_state(a, 4, kComparison);
+    c.actuator = model::io::ComparisonActuator{a[0].cast<std::uint64_t>(), a[1].cast<double>(),
+                                               a[2].cast<double>(), a[3].cast<double>()};
+  }
+  return c;
+}
+
+py::tuple rows_state(const rig::WaterfallRows& r) {
+  return py::make_tuple(r.first_row, r.bins, float_bytes(r.measured_db),
+                        float_bytes(r.simulated_db), r.times_s, r.speeds_m_s, r.rows_lost);
+}
+
+rig::WaterfallRows rows_of(const py::handle& state) {
+  const auto t = state.cast<py::tuple>();
+  require_state(t, 7, kComparison);
+  rig::WaterfallRows r;
+  r.first_row = t[0].cast<std::uint64_t>();
+  r.bins = t[1].cast<std::size_t>();
+  r.measured_db = floats_of(t[2], kComparison);
+  r.simulated_db = floats_of(t[3], kComparison);
+  r.times_s = t[4].cast<std::vector<double>>();
+  r.speeds_m_s = t[5].cast<std::vector<double>>();
+  r.rows_lost = t[6].cast<std::uint64_t>();
+  if (r.measured_db.size() != r.rows() * r.bins || r.simulated_db.size() != r.measured_db.size())
+    throw std::invalid_argument(std::string(kComparison) + ": not a pickled " + kComparison);
+  return r;
+}
+
+py::tuple comparison_state(const Comparison& c) {
+  return py::make_tuple(report_state(c.report), c.simulated, c.simulated_modes, c.frequencies_hz,
+                        c.measured_mean, c.simulated_mean, rows_state(c.rows),
+                        session_state(c.session));
+}
+
+Comparison comparison_from(const py::tuple& state) {
+  require_state(state, 8, kComparison);
+  Comparison c;
+  c.report = report_of(state[0]);
+  c.simulated = state[1].cast<std::string>();
+  c.simulated_modes = state[2].cast<std::string>();
+  c.frequencies_hz = state[3].cast<std::vector<double>>();
+  c.measured_mean = state[4].cast<std::vector<std::vector<double>>>();
+  c.simulated_mean = state[5].cast<std::vector<std::vector<double>>>();
+  c.rows = rows_of(state[6]);
+  c.session = session_of(state[7].cast<py::tuple>());
+  return c;
+}
+
 }  // namespace
+
+Comparison comparison_of(rig::ComparisonRun run, model::io::ComparisonFile report,
+                         std::string simulated_modes) {
+  Comparison c;
+  c.report = std::move(report);
+  c.simulated = std::move(run.simulated);
+  c.simulated_modes = std::move(simulated_modes);
+  c.frequencies_hz = std::move(run.table.frequencies_hz);
+  for (auto& b : run.table.bins) {
+    c.measured_mean.push_back(std::move(b.measured_mean));
+    c.simulated_mean.push_back(std::move(b.simulated_mean));
+  }
+  c.rows = std::move(run.rows);
+  return c;
+}
 
 void add_rig_results(py::module_ m) {
   py::class_<Session>(m, "RigSession",
@@ -231,7 +355,7 @@ void add_rig_results(py::module_ m) {
           "tool", [](const Comparison& c) { return c.report.tool; }, "The tool measured")
       .def_property_readonly("surface", [](const Comparison& c) { return c.report.surface; })
       .def_property_readonly(
-          "simulated", [](const Comparison& c) { return c.run.simulated; },
+          "simulated", [](const Comparison& c) { return c.simulated; },
           "The simulated tool's name, as the engine gives it")
       .def_property_readonly(
           "simulated_modes", [](const Comparison& c) { return c.simulated_modes; },
@@ -313,7 +437,7 @@ void add_rig_results(py::module_ m) {
       .def_property_readonly(
           "frequencies_hz",
           [](const py::object& self) {
-            const auto& v = self.cast<const Comparison&>().run.table.frequencies_hz;
+            const auto& v = self.cast<const Comparison&>().frequencies_hz;
             return array_view(v.data(), v.size(), self);
           },
           "The spectrograms' frequencies, Hz (a view)")
@@ -326,14 +450,14 @@ void add_rig_results(py::module_ m) {
       .def_property_readonly(
           "waterfall_times_s",
           [](const py::object& self) {
-            const auto& v = self.cast<const Comparison&>().run.rows.times_s;
+            const auto& v = self.cast<const Comparison&>().rows.times_s;
             return array_view(v.data(), v.size(), self);
           },
           "Each spectrogram row's centre, s (a view)")
       .def_property_readonly(
           "waterfall_speeds_m_s",
           [](const py::object& self) {
-            const auto& v = self.cast<const Comparison&>().run.rows.speeds_m_s;
+            const auto& v = self.cast<const Comparison&>().rows.speeds_m_s;
             return array_view(v.data(), v.size(), self);
           },
           "Each row's mean measured speed, m/s (a view)")
@@ -352,9 +476,11 @@ void add_rig_results(py::module_ m) {
           py::arg("path"),
           "Writes comparison.json (FORMATS.md 'Live comparison'), as `nibrig rig compare "
           "--report`, atomically")
+      .def(py::pickle(&comparison_state, &comparison_from))
       .def("__repr__", [](const Comparison& c) {
-        return "<nibrig.rig.Comparison: " + c.report.tool + " on " + c.report.surface + " against " + c.run.simulated + ", " +
-               std::to_string(c.report.bins_with_rows) + " speed bins>";
+        return "<nibrig.rig.Comparison: " + c.report.tool + " on " + c.report.surface +
+               " against " + c.simulated + ", " + std::to_string(c.report.bins_with_rows) +
+               " speed bins>";
       });
 }
 

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <string>
+#include <vector>
 
 #include "model/io/comparison_file.hpp"
 #include "model/io/rig_session.hpp"
@@ -16,12 +17,21 @@ struct Session {
   model::io::RigSession session;
 };
 
+// What Python shows of a comparison run, kept as numbers so that it pickles (the capture's and the
+// analysis' own records stay in the call that made them).
 struct Comparison {
-  rig::ComparisonRun run;
   model::io::ComparisonFile report;  // what `nibrig rig compare` writes as comparison.json
+  std::string simulated;             // the simulated tool's name, as the engine gives it
   std::string simulated_modes;
+  std::vector<double> frequencies_hz;
+  std::vector<std::vector<double>> measured_mean, simulated_mean;  // per speed bin, m/s² peak
+  rig::WaterfallRows rows;
   Session session;
 };
+
+// What a finished run leaves for Python.
+Comparison comparison_of(rig::ComparisonRun run, model::io::ComparisonFile report,
+                         std::string simulated_modes);
 
 // RigSession, Comparison and session(), added to the submodule before the calls that give them.
 void add_rig_results(pybind11::module_ m);

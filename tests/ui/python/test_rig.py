@@ -119,6 +119,22 @@ def test_a_comparison_has_a_row_per_speed_and_the_command_lines_numbers(tmp_path
     assert written["overall"]["mean_lsd_db"] == pytest.approx(c.mean_lsd_db, rel=1e-12)
     assert written["capture"]["rows_analysed"] == c.rows_analysed
 
+    # It pickles as every number it shows, bit for bit (NaN where a bin has no rows, as here).
+    again = pickle.loads(pickle.dumps(c))
+    for name in ("min_speed_m_s", "max_speed_m_s", "mean_speed_m_s", "rows", "lsd_db", "measured_weighted_mean",
+                 "simulated_weighted_mean", "weighted_mean_log10_difference", "frequencies_hz", "measured_mean",
+                 "simulated_mean", "waterfall_times_s", "waterfall_speeds_m_s", "measured_db", "simulated_db"):
+        np.testing.assert_array_equal(getattr(again, name), getattr(c, name), err_msg=name)
+    for name in ("tool", "surface", "simulated", "simulated_modes", "bins_with_rows", "rows_analysed",
+                 "rows_outside_speed_range", "rows_without_speed", "blocks_dropped", "band_hz", "mean_lsd_db",
+                 "mean_weighted_mean_log10_difference"):
+        assert getattr(again, name) == getattr(c, name), name
+    np.testing.assert_array_equal(again.session.acceleration, c.session.acceleration)
+    again.save(tmp_path / "again.json")
+    assert json.loads((tmp_path / "again.json").read_text()) == written
+    with pytest.raises(ValueError, match="not a pickled Comparison"):
+        nibrig.rig.Comparison.__new__(nibrig.rig.Comparison).__setstate__(("vero2",))
+
 
 def test_refusals_name_what_was_asked(captured, tmp_path):
     folder, _, _ = captured
