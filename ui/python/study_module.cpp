@@ -7,9 +7,16 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "model/study/study_report.hpp"
 #include "model/study/study_results.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/python_log.hpp"
 #include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
@@ -25,9 +32,17 @@ struct Answers {
   study::StudyData study;
 };
 
+// What Python shows of a report, made once when it is reported: the participants' and the
+// validation's records are Python dicts already, so the whole report pickles as its values.
 struct StudyReport {
-  study::StudyReport report;
   std::filesystem::path folder;  // where it was written
+  std::string mode, plan, selection;
+  std::vector<std::string> stimuli;
+  std::size_t triplets = 0, responses = 0;
+  py::object space;  // a nibrig.space.Space, or None
+  bool with_descriptors = false;
+  py::object mean_region_sd, participants, validation;
+  std::vector<std::string> warnings;
 };
 
 std::vector<std::string> names_of(const study::StudyDefinition& d) {
@@ -58,14 +73,68 @@ py::dict agreement(const model::space::AgreementTest& t) {
   return d;
 }
 
+py::object validation_record(const study::StudyReport& r, const std::vector<std::string>& names) {
+  if (!r.validation) return py::none();
+  const auto& v = *r.validation;
+  py::dict d;
+  d["space"] = r.validation_space;
+  py::list triplets;
+  for (std::size_t i = 0; i < r.validation_triplets.size(); ++i) {
+    const auto& t = r.validation_triplets[i];
+    py::dict one;
+    one["reference"] = names[t.reference], one["a"] = names[t.a], one["b"] = names[t.b];
+    one["count_a"] = t.count_a, one["count_b"] = t.count_b,
+    one["predicted_p_a"] = r.validation_predicted[i];
+    triplets.append(one);
+  }
+  d["triplets"] = triplets;
+  d["majority_agreement"] = agreement(v.majority);
+  d["individual_agreement"] = agreement(v.individual);
+  d["mean_absolute_error"] = v.mean_absolute_error;
+  d["pearson"] = v.probability_correlation
+                     ? py::object(py::dict(py::arg("r") = v.probability_correlation->r,
+                                           py::arg("p_value") = v.probability_correlation->p_value))
+                     : py::none();
+  d["pearson_missing_because"] = v.no_correlation_because;
+  return d;
+}
+
+StudyReport shown_report(const study::StudyReport& r, const std::filesystem::path& folder) {
+  StudyReport out;
+  out.folder = folder;
+  out.mode = study::mode_name(r.study.definition.mode);
+  out.plan = study::plan_name(r.study.definition.plan);
+  out.selection = r.selection == study::JudgmentSelection::paper ? "paper" : "every answer";
+  out.stimuli = names_of(r.study.definition);
+  out.triplets = r.judgments.triplets.size();
+  out.responses = model::io::response_count(r.judgments);
+  out.space = r.fitted ? py::cast(Space{r.fitted->file, r.fitted->warnings}) : py::none();
+  out.with_descriptors = r.with_descriptors;
+  out.mean_region_sd = r.fitted ? py::cast(r.fitted->mean_region_sd) : py::none();
+  py::list participants;
+  for (const auto& p : r.participants) {
+    py::dict d;
+    d["id"] = p.id, d["respondent"] = p.respondent, d["answers"] = p.answers,
+    d["practice"] = p.practice;
+    d["median_response_s"] = p.median_response_s;
+    d["agreement_with_space"] = agreement(p.with_space);
+    d["agreement_with_others"] = p.with_others ? py::object(agreement(*p.with_others)) : py::none();
+    participants.append(d);
+  }
+  out.participants = participants;
+  out.validation = validation_record(r, out.stimuli);
+  out.warnings = r.warnings;
+  return out;
+}
+
 StudyReport report_study(const std::filesystem::path& folder, const std::optional<std::filesystem::path>& output,
                          bool all_judgments, const std::optional<std::filesystem::path>& space,
                          const std::optional<std::filesystem::path>& catalog, int bootstrap, int starts, unsigned seed,
                          unsigned threads, const py::object& progress) {
   if (bootstrap < 0) throw std::invalid_argument("bootstrap is " + std::to_string(bootstrap) + "; expected 0 (no regions) or more");
   if (starts < 1) throw std::invalid_argument("starts is " + std::to_string(starts) + "; expected at least 1");
-  StudyReport out;
-  out.folder = output.value_or(folder / "report");
+  const std::filesystem::path written = output.value_or(folder / "report");
+  study::StudyReport reported;
   run_long_call(
       [&](std::stop_token stop, const Report& report) {
         study::StudyReportSettings settings;
@@ -78,14 +147,126 @@ StudyReport report_study(const std::filesystem::path& folder, const std::optiona
         settings.validation_space = space.value_or(std::filesystem::path());
         settings.progress = report;
         settings.stop = stop;
-        out.report = study::report_study(folder, out.folder, settings);
+        reported = study::report_study(folder, written, settings);
       },
       progress);
-  if (!out.report.warnings.empty()) {
+  if (!reported.warnings.empty()) {
     const auto warn = py::module_::import("warnings").attr("warn");
-    for (const auto& w : out.report.warnings) warn(w);
+    for (const auto& w : reported.warnings) warn(w);
   }
-  return out;
+  return shown_report(reported, written);
+}
+
+constexpr const char* kAnswers = "Answers";
+
+// A study's answers as their values, bit for bit: its definition, each participant's record and
+// every logged answer.
+py::tuple answers_state(const Answers& a) {
+  const auto& d = a.study.definition;
+  py::list stimuli, listed, participants;
+  for (const auto& s : d.stimuli) stimuli.append(py::make_tuple(s.name, s.tool, s.surface));
+  for (const auto& t : d.listed_trials)
+    listed.append(py::make_tuple(t.reference, t.left, t.right, t.stage));
+  for (const auto& p : a.study.participants) {
+    py::list responses;
+    for (const auto& r : p.responses)
+      responses.append(py::make_tuple(r.trial, r.practice, r.planned.reference, r.planned.left,
+                                      r.planned.right, r.planned.stage, static_cast<int>(r.chosen),
+                                      r.response_s, r.plays, r.answered_utc));
+    participants.append(py::make_tuple(p.record.id, p.record.seed, p.record.respondent,
+                                       p.record.created_utc, responses));
+  }
+  return py::make_tuple(a.study.folder,
+                        py::make_tuple(stimuli, static_cast<int>(d.mode), static_cast<int>(d.plan),
+                                       listed, d.trials, d.practice, d.break_every, d.dims),
+                        participants, a.study.warnings);
+}
+
+template <typename Enum>
+Enum answers_enum_of(const py::handle& value, Enum last) {
+  const int v = value.cast<int>();
+  if (v < 0 || v > static_cast<int>(last))
+    throw std::invalid_argument(std::string(kAnswers) + ": not a pickled " + kAnswers);
+  return static_cast<Enum>(v);
+}
+
+Answers answers_of(const py::tuple& state) {
+  require_state(state, 4, kAnswers);
+  Answers a;
+  a.study.folder = state[0].cast<std::filesystem::path>();
+  const auto d = state[1].cast<py::tuple>();
+  require_state(d, 8, kAnswers);
+  auto& definition = a.study.definition;
+  for (const auto& s : d[0].cast<py::list>()) {
+    const auto t = s.cast<py::tuple>();
+    require_state(t, 3, kAnswers);
+    definition.stimuli.push_back(
+        {t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<std::string>()});
+  }
+  definition.mode = answers_enum_of(d[1], study::StudyMode::validation);
+  definition.plan = answers_enum_of(d[2], study::PlanKind::file);
+  for (const auto& l : d[3].cast<py::list>()) {
+    const auto t = l.cast<py::tuple>();
+    require_state(t, 4, kAnswers);
+    definition.listed_trials.push_back({t[0].cast<std::size_t>(), t[1].cast<std::size_t>(),
+                                        t[2].cast<std::size_t>(), t[3].cast<int>()});
+  }
+  definition.trials = d[4].cast<std::size_t>();
+  definition.practice = d[5].cast<std::size_t>();
+  definition.break_every = d[6].cast<std::size_t>();
+  definition.dims = d[7].cast<std::size_t>();
+  for (const auto& p : state[2].cast<py::list>()) {
+    const auto t = p.cast<py::tuple>();
+    require_state(t, 5, kAnswers);
+    study::ParticipantData participant;
+    participant.record = {t[0].cast<std::string>(), t[1].cast<std::uint64_t>(),
+                          t[2].cast<std::string>(), t[3].cast<std::string>()};
+    for (const auto& r : t[4].cast<py::list>()) {
+      const auto v = r.cast<py::tuple>();
+      require_state(v, 10, kAnswers);
+      study::LoggedResponse response;
+      response.trial = v[0].cast<std::size_t>();
+      response.practice = v[1].cast<bool>();
+      response.planned = {v[2].cast<std::size_t>(), v[3].cast<std::size_t>(),
+                          v[4].cast<std::size_t>(), v[5].cast<int>()};
+      response.chosen = answers_enum_of(v[6], model::space::Choice::right);
+      response.response_s = v[7].cast<double>();
+      response.plays = v[8].cast<std::string>();
+      response.answered_utc = v[9].cast<std::string>();
+      // The arrays index the stimuli with these: an index beyond them is no pickled study.
+      const auto n = definition.stimuli.size();
+      if (response.planned.reference >= n || response.planned.left >= n ||
+          response.planned.right >= n)
+        throw std::invalid_argument(std::string(kAnswers) + ": not a pickled " + kAnswers);
+      participant.responses.push_back(std::move(response));
+    }
+    a.study.participants.push_back(std::move(participant));
+  }
+  a.study.warnings = state[3].cast<std::vector<std::string>>();
+  return a;
+}
+
+constexpr const char* kStudyReport = "Report";
+
+py::tuple study_report_state(const StudyReport& r) {
+  return py::make_tuple(r.folder, r.mode, r.plan, r.selection, r.stimuli, r.triplets, r.responses,
+                        r.space, r.with_descriptors, r.mean_region_sd, r.participants, r.validation,
+                        r.warnings);
+}
+
+StudyReport study_report_of(const py::tuple& state) {
+  require_state(state, 13, kStudyReport);
+  StudyReport r;
+  r.folder = state[0].cast<std::filesystem::path>();
+  r.mode = state[1].cast<std::string>(), r.plan = state[2].cast<std::string>();
+  r.selection = state[3].cast<std::string>();
+  r.stimuli = state[4].cast<std::vector<std::string>>();
+  r.triplets = state[5].cast<std::size_t>(), r.responses = state[6].cast<std::size_t>();
+  r.space = state[7];
+  r.with_descriptors = state[8].cast<bool>();
+  r.mean_region_sd = state[9], r.participants = state[10], r.validation = state[11];
+  r.warnings = state[12].cast<std::vector<std::string>>();
+  return r;
 }
 
 }  // namespace
@@ -93,63 +274,119 @@ StudyReport report_study(const std::filesystem::path& folder, const std::optiona
 void add_study_module(py::module_ m) {
   py::class_<Answers>(m, "Answers", "A study's answers: every participant's log, practice included")
       .def_property_readonly("folder", [](const Answers& a) { return a.study.folder; })
-      .def_property_readonly("stimuli", [](const Answers& a) { return names_of(a.study.definition); },
-                             "The study's stimuli by name; reference, left and right index them")
-      .def_property_readonly("mode", [](const Answers& a) { return study::mode_name(a.study.definition.mode); },
-                             "'actuator', 'rig' or 'validation'")
-      .def_property_readonly("plan", [](const Answers& a) { return study::plan_name(a.study.definition.plan); },
-                             "'two-stage', 'adaptive' or 'file'")
-      .def_property_readonly("dims", [](const Answers& a) { return a.study.definition.dims; }, "Of the report's fit")
-      .def_property_readonly("warnings", [](const Answers& a) { return a.study.warnings; },
-                             "Cut-off lines dropped, participants left out, and why")
-      .def_property_readonly("participants", [](const Answers& a) {
-        py::list out;
-        for (const auto& p : a.study.participants) {
-          py::dict d;
-          d["id"] = p.record.id, d["seed"] = p.record.seed, d["respondent"] = p.record.respondent;
-          d["created_utc"] = p.record.created_utc, d["answers"] = p.responses.size();
-          d["main_answers"] = study::has_main_answers(p);
-          out.append(d);
-        }
-        return out;
-      }, "Each participant (by ID): id, seed of their order, respondent (a person or the simulated observer), "
-         "created_utc, answers (practice included), main_answers (whether any main trial is answered)")
-      .def_property_readonly("records", [](const Answers& a) {
-        const auto names = names_of(a.study.definition);
-        py::list out;
-        for (const auto& p : a.study.participants)
-          for (const auto& r : p.responses) {
-            py::dict d;
-            d["participant"] = p.record.id, d["trial"] = r.trial, d["practice"] = r.practice, d["stage"] = r.planned.stage;
-            d["reference"] = names[r.planned.reference], d["left"] = names[r.planned.left], d["right"] = names[r.planned.right];
-            d["chosen"] = choice_name(r.chosen);
-            d["chosen_stimulus"] = r.chosen == model::space::Choice::left ? names[r.planned.left] : names[r.planned.right];
-            d["response_s"] = r.response_s, d["plays"] = r.plays, d["answered_utc"] = r.answered_utc;
-            out.append(d);
-          }
-        return out;
-      }, "Every answer as a dict: participant, trial (1-based, practice included), practice, stage, reference, left, "
-         "right (stimulus names), chosen ('left' or 'right'), chosen_stimulus, response_s (s from the trial's start), "
-         "plays (what was asked to play, R/A/B), answered_utc")
-      .def_property_readonly("participant", [](const Answers& a) {
-        std::vector<std::string> v;
-        for (const auto& p : a.study.participants) v.insert(v.end(), p.responses.size(), p.record.id);
-        return v;
-      }, "Each answer's participant (the arrays' order)")
-      .def_property_readonly("trial", [](const Answers& a) { return per_answer<std::int64_t>(a, [](const auto& r) { return r.trial; }); },
-                             "Each answer's trial number, 1-based, practice included")
-      .def_property_readonly("practice", [](const Answers& a) { return per_answer<bool>(a, [](const auto& r) { return r.practice; }); })
-      .def_property_readonly("stage", [](const Answers& a) { return per_answer<std::int64_t>(a, [](const auto& r) { return r.planned.stage; }); })
-      .def_property_readonly("reference", [](const Answers& a) {
-        return per_answer<std::int64_t>(a, [](const auto& r) { return r.planned.reference; });
-      }, "Index into stimuli")
-      .def_property_readonly("left", [](const Answers& a) { return per_answer<std::int64_t>(a, [](const auto& r) { return r.planned.left; }); })
-      .def_property_readonly("right", [](const Answers& a) { return per_answer<std::int64_t>(a, [](const auto& r) { return r.planned.right; }); })
-      .def_property_readonly("chose_left", [](const Answers& a) {
-        return per_answer<bool>(a, [](const auto& r) { return r.chosen == model::space::Choice::left; });
-      }, "True where the left candidate was judged closer to the reference")
-      .def_property_readonly("response_s", [](const Answers& a) { return per_answer<double>(a, [](const auto& r) { return r.response_s; }); },
-                             "From each trial's start to its answer, s")
+      .def_property_readonly(
+          "stimuli", [](const Answers& a) { return names_of(a.study.definition); },
+          "The study's stimuli by name; reference, left and right index them")
+      .def_property_readonly(
+          "mode", [](const Answers& a) { return study::mode_name(a.study.definition.mode); },
+          "'actuator', 'rig' or 'validation'")
+      .def_property_readonly(
+          "plan", [](const Answers& a) { return study::plan_name(a.study.definition.plan); },
+          "'two-stage', 'adaptive' or 'file'")
+      .def_property_readonly(
+          "dims", [](const Answers& a) { return a.study.definition.dims; }, "Of the report's fit")
+      .def_property_readonly(
+          "warnings", [](const Answers& a) { return a.study.warnings; },
+          "Cut-off lines dropped, participants left out, and why")
+      .def_property_readonly(
+          "participants",
+          [](const Answers& a) {
+            py::list out;
+            for (const auto& p : a.study.participants) {
+              py::dict d;
+              d["id"] = p.record.id, d["seed"] = p.record.seed,
+              d["respondent"] = p.record.respondent;
+              d["created_utc"] = p.record.created_utc, d["answers"] = p.responses.size();
+              d["main_answers"] = study::has_main_answers(p);
+              out.append(d);
+            }
+            return out;
+          },
+          "Each participant (by ID): id, seed of their order, respondent (a person or the "
+          "simulated observer), "
+          "created_utc, answers (practice included), main_answers (whether any main trial is "
+          "answered)")
+      .def_property_readonly(
+          "records",
+          [](const Answers& a) {
+            const auto names = names_of(a.study.definition);
+            py::list out;
+            for (const auto& p : a.study.participants)
+              for (const auto& r : p.responses) {
+                py::dict d;
+                d["participant"] = p.record.id, d["trial"] = r.trial, d["practice"] = r.practice,
+                d["stage"] = r.planned.stage;
+                d["reference"] = names[r.planned.reference], d["left"] = names[r.planned.left],
+                d["right"] = names[r.planned.right];
+                d["chosen"] = choice_name(r.chosen);
+                d["chosen_stimulus"] = r.chosen == model::space::Choice::left
+                                           ? names[r.planned.left]
+                                           : names[r.planned.right];
+                d["response_s"] = r.response_s, d["plays"] = r.plays,
+                d["answered_utc"] = r.answered_utc;
+                out.append(d);
+              }
+            return out;
+          },
+          "Every answer as a dict: participant, trial (1-based, practice included), practice, "
+          "stage, reference, left, "
+          "right (stimulus names), chosen ('left' or 'right'), chosen_stimulus, response_s (s from "
+          "the trial's start), "
+          "plays (what was asked to play, R/A/B), answered_utc")
+      .def_property_readonly(
+          "participant",
+          [](const Answers& a) {
+            std::vector<std::string> v;
+            for (const auto& p : a.study.participants)
+              v.insert(v.end(), p.responses.size(), p.record.id);
+            return v;
+          },
+          "Each answer's participant (the arrays' order)")
+      .def_property_readonly(
+          "trial",
+          [](const Answers& a) {
+            return per_answer<std::int64_t>(a, [](const auto& r) { return r.trial; });
+          },
+          "Each answer's trial number, 1-based, practice included")
+      .def_property_readonly("practice",
+                             [](const Answers& a) {
+                               return per_answer<bool>(a, [](const auto& r) { return r.practice; });
+                             })
+      .def_property_readonly("stage",
+                             [](const Answers& a) {
+                               return per_answer<std::int64_t>(
+                                   a, [](const auto& r) { return r.planned.stage; });
+                             })
+      .def_property_readonly(
+          "reference",
+          [](const Answers& a) {
+            return per_answer<std::int64_t>(a, [](const auto& r) { return r.planned.reference; });
+          },
+          "Index into stimuli")
+      .def_property_readonly("left",
+                             [](const Answers& a) {
+                               return per_answer<std::int64_t>(
+                                   a, [](const auto& r) { return r.planned.left; });
+                             })
+      .def_property_readonly("right",
+                             [](const Answers& a) {
+                               return per_answer<std::int64_t>(
+                                   a, [](const auto& r) { return r.planned.right; });
+                             })
+      .def_property_readonly(
+          "chose_left",
+          [](const Answers& a) {
+            return per_answer<bool>(
+                a, [](const auto& r) { return r.chosen == model::space::Choice::left; });
+          },
+          "True where the left candidate was judged closer to the reference")
+      .def_property_readonly(
+          "response_s",
+          [](const Answers& a) {
+            return per_answer<double>(a, [](const auto& r) { return r.response_s; });
+          },
+          "From each trial's start to its answer, s")
+      .def(py::pickle(&answers_state, &answers_of))
       .def("__len__", [](const Answers& a) {
         std::size_t n = 0;
         for (const auto& p : a.study.participants) n += p.responses.size();
@@ -167,69 +404,50 @@ void add_study_module(py::module_ m) {
       "answers, practice "
       "included; arrays and records are copies (each answer is a record in the library)");
 
-  py::class_<StudyReport>(m, "Report", "A study's report, as `nibrig experiment report` gives and writes it")
-      .def_readonly("folder", &StudyReport::folder, "Where judgments.csv, space.json and report.json were written")
-      .def_property_readonly("mode", [](const StudyReport& r) { return study::mode_name(r.report.study.definition.mode); })
-      .def_property_readonly("plan", [](const StudyReport& r) { return study::plan_name(r.report.study.definition.plan); })
-      .def_property_readonly("stimuli", [](const StudyReport& r) { return names_of(r.report.study.definition); })
-      .def_property_readonly("selection", [](const StudyReport& r) {
-        return r.report.selection == study::JudgmentSelection::paper ? "paper" : "every answer";
-      }, "'paper' (stage 2 and the stage-1 triplets that were not ties) or 'every answer'")
-      .def_property_readonly("triplets", [](const StudyReport& r) { return r.report.judgments.triplets.size(); },
-                             "Triplets judged (each participant's counted apart)")
-      .def_property_readonly("responses", [](const StudyReport& r) { return model::io::response_count(r.report.judgments); })
-      .def_property_readonly("judgments_file", [](const StudyReport& r) { return r.folder / study::kReportJudgments; },
-                             "The merged judgments, the CSV nibrig.space.fit and read_judgments take")
-      .def_property_readonly("space", [](const StudyReport& r) -> py::object {
-        if (!r.report.fitted) return py::none();
-        return py::cast(Space{r.report.fitted->file, r.report.fitted->warnings});
-      }, "The fitted space (a nibrig.space.Space; a copy), tied to the catalog's descriptors when every stimulus is a "
-         "catalog pairing; None for a validation study")
-      .def_property_readonly("with_descriptors", [](const StudyReport& r) { return r.report.with_descriptors; })
-      .def_property_readonly("mean_region_sd", [](const StudyReport& r) -> py::object {
-        return r.report.fitted ? py::cast(r.report.fitted->mean_region_sd) : py::none();
-      }, "Mean per-axis sd of a stimulus over the bootstrap refits, in the space's units (0 without them)")
-      .def_property_readonly("participants", [](const StudyReport& r) {
-        py::list out;
-        for (const auto& p : r.report.participants) {
-          py::dict d;
-          d["id"] = p.id, d["respondent"] = p.respondent, d["answers"] = p.answers, d["practice"] = p.practice;
-          d["median_response_s"] = p.median_response_s;
-          d["agreement_with_space"] = agreement(p.with_space);
-          d["agreement_with_others"] = p.with_others ? py::object(agreement(*p.with_others)) : py::none();
-          out.append(d);
-        }
-        return out;
-      }, "Each participant with main answers: id, respondent, answers, practice, median_response_s (s), "
-         "agreement_with_space and agreement_with_others (None: nobody else judged their triplets), each a dict of "
-         "agreements, trials, fraction, z and one-sided p_value against chance")
-      .def_property_readonly("validation", [](const StudyReport& r) -> py::object {
-        if (!r.report.validation) return py::none();
-        const auto& v = *r.report.validation;
-        const auto names = names_of(r.report.study.definition);
-        py::dict d;
-        d["space"] = r.report.validation_space;
-        py::list triplets;
-        for (std::size_t i = 0; i < r.report.validation_triplets.size(); ++i) {
-          const auto& t = r.report.validation_triplets[i];
-          py::dict one;
-          one["reference"] = names[t.reference], one["a"] = names[t.a], one["b"] = names[t.b];
-          one["count_a"] = t.count_a, one["count_b"] = t.count_b, one["predicted_p_a"] = r.report.validation_predicted[i];
-          triplets.append(one);
-        }
-        d["triplets"] = triplets;
-        d["majority_agreement"] = agreement(v.majority);
-        d["individual_agreement"] = agreement(v.individual);
-        d["mean_absolute_error"] = v.mean_absolute_error;
-        d["pearson"] = v.probability_correlation
-                           ? py::object(py::dict(py::arg("r") = v.probability_correlation->r,
-                                                 py::arg("p_value") = v.probability_correlation->p_value))
-                           : py::none();
-        d["pearson_missing_because"] = v.no_correlation_because;
-        return d;
-      }, "A validation study's statistics (Sec. 6.1) against the given space, as report.json's 'validation'; None "
-         "otherwise")
-      .def_property_readonly("warnings", [](const StudyReport& r) { return r.report.warnings; });
+  py::class_<StudyReport>(m, "Report",
+                          "A study's report, as `nibrig experiment report` gives and writes it")
+      .def_readonly("folder", &StudyReport::folder,
+                    "Where judgments.csv, space.json and report.json were written")
+      .def_readonly("mode", &StudyReport::mode)
+      .def_readonly("plan", &StudyReport::plan)
+      .def_readonly("stimuli", &StudyReport::stimuli)
+      .def_readonly(
+          "selection", &StudyReport::selection,
+          "'paper' (stage 2 and the stage-1 triplets that were not ties) or 'every answer'")
+      .def_readonly("triplets", &StudyReport::triplets,
+                    "Triplets judged (each participant's counted apart)")
+      .def_readonly("responses", &StudyReport::responses)
+      .def_property_readonly(
+          "judgments_file", [](const StudyReport& r) { return r.folder / study::kReportJudgments; },
+          "The merged judgments, the CSV nibrig.space.fit and read_judgments take")
+      .def_property_readonly(
+          "space",
+          [](const StudyReport& r) { return py::module_::import("copy").attr("copy")(r.space); },
+          "The fitted space (a nibrig.space.Space; a copy), tied to the catalog's descriptors when "
+          "every stimulus is a catalog pairing; None for a validation study")
+      .def_readonly("with_descriptors", &StudyReport::with_descriptors)
+      .def_readonly("mean_region_sd", &StudyReport::mean_region_sd,
+                    "Mean per-axis sd of a stimulus over the bootstrap refits, in the space's "
+                    "units (0 without them)")
+      .def_property_readonly(
+          "participants",
+          [](const StudyReport& r) {
+            return py::module_::import("copy").attr("deepcopy")(r.participants);
+          },
+          "Each participant with main answers: id, respondent, answers, practice, "
+          "median_response_s "
+          "(s), agreement_with_space and agreement_with_others (None: nobody else judged their "
+          "triplets), each a dict of agreements, trials, fraction, z and one-sided p_value against "
+          "chance")
+      .def_property_readonly(
+          "validation",
+          [](const StudyReport& r) {
+            return py::module_::import("copy").attr("deepcopy")(r.validation);
+          },
+          "A validation study's statistics (Sec. 6.1) against the given space, as report.json's "
+          "'validation'; None otherwise")
+      .def_readonly("warnings", &StudyReport::warnings)
+      .def(py::pickle(&study_report_state, &study_report_of));
 
   m.def("report", &report_study, py::arg("folder"), py::kw_only(), py::arg("output") = py::none(),
         py::arg("all_judgments") = false, py::arg("space") = py::none(), py::arg("catalog") = py::none(),

@@ -5,6 +5,7 @@ settings (the statistics themselves are checked in the C++ suites)."""
 
 import csv
 import json
+import pickle
 import subprocess
 
 import numpy as np
@@ -60,6 +61,19 @@ def test_the_answers_are_the_participants_logged_lines(study):
         assert a.response_s[k] == float(row["response_s"])
     assert a.practice.sum() == 3 * len(PARTICIPANTS)  # the default practice, per participant
 
+    # The answers pickle as their values, bit for bit: a worker holds the study read here.
+    again = pickle.loads(pickle.dumps(a))
+    assert (again.folder, again.stimuli, again.mode, again.plan, again.dims, again.warnings, again.participants,
+            again.records, again.participant) == (a.folder, a.stimuli, a.mode, a.plan, a.dims, a.warnings,
+                                                  a.participants, a.records, a.participant)
+    for name in ("trial", "practice", "stage", "reference", "left", "right", "chose_left", "response_s"):
+        np.testing.assert_array_equal(getattr(again, name), getattr(a, name), err_msg=name)
+    state = a.__getstate__()
+    broken = (state[0], state[1], [state[2][0][:4] + ([state[2][0][4][0][:2] + (99,) + state[2][0][4][0][3:]],)],
+              state[3])
+    with pytest.raises(ValueError, match="not a pickled Answers"):  # an answer naming a 100th stimulus of 6
+        nibrig.study.Answers.__new__(nibrig.study.Answers).__setstate__(broken)
+
 
 def test_the_report_is_what_the_command_line_reports(study, tmp_path):
     seen = []
@@ -88,6 +102,16 @@ def test_the_report_is_what_the_command_line_reports(study, tmp_path):
     # bootstrap's end.
     assert seen[-1] == ("bootstrap refits", REPORT["bootstrap"], REPORT["bootstrap"])
     assert all(0 <= done <= total for _, done, total in seen)
+
+    # The report pickles as what it shows; its space as the Space pickles, predicting the same.
+    again = pickle.loads(pickle.dumps(r))
+    for name in ("folder", "mode", "plan", "stimuli", "selection", "triplets", "responses", "judgments_file",
+                 "with_descriptors", "mean_region_sd", "participants", "validation", "warnings"):
+        assert getattr(again, name) == getattr(r, name), name
+    np.testing.assert_array_equal(again.space.coordinates, space.coordinates)
+    # What it shows are copies: changing one leaves the report as it was.
+    r.participants[0]["id"] = "changed"
+    assert r.participants[0]["id"] == PARTICIPANTS[0]
 
 
 def test_the_reports_counts_follow_from_the_answers(study, tmp_path):
@@ -156,6 +180,8 @@ def test_a_validation_study_is_scored_against_its_space_as_the_command_line_scor
         for key in ("agreements", "trials", "fraction", "z"):
             assert v[which][key] == pytest.approx(cli[which][key], rel=1e-12)
     assert v["mean_absolute_error"] == pytest.approx(cli["mean_absolute_error"], rel=1e-12)
+    again = pickle.loads(pickle.dumps(r))
+    assert again.validation == v and again.space is None
     with pytest.raises(ValueError, match="space"):
         nibrig.study.report(folder, output=tmp_path / "unscored")  # a validation study needs its space
     # The space named as one of the report's own files: the call is one job, and its input is kept.
