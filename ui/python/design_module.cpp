@@ -9,6 +9,11 @@
 
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_request.hpp"
@@ -17,6 +22,7 @@
 #include "ui/python/design_types.hpp"
 #include "ui/python/long_call.hpp"
 #include "ui/python/numpy_views.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/space_types.hpp"
 #include "ui/python/submodules.hpp"
 
@@ -148,6 +154,41 @@ py::dict candidate_dict(const design::Candidate& c, const std::vector<std::strin
   return d;
 }
 
+// A search as its candidates' values, bit for bit; each placement pickles as a Placement does.
+py::tuple search_state(const Search& s) {
+  py::list candidates;
+  for (const auto& c : s.result.evaluated)
+    candidates.append(py::make_tuple(design_point_state(c.point), py::cast(Placement{c.placement}),
+                                     c.mu, c.weighted_mean, c.distance, c.distance_sd,
+                                     c.target_distances, c.target_distance_sds, c.score));
+  return py::make_tuple(candidates, s.result.ranked, s.targets);
+}
+
+Search search_of(const py::tuple& state) {
+  require_state(state, 3, "Search");
+  Search s;
+  for (const auto& item : state[0].cast<py::list>()) {
+    const auto t = item.cast<py::tuple>();
+    require_state(t, 9, "Search");
+    design::Candidate c;
+    c.point = design_point_of(t[0], "Search");
+    c.placement = t[1].cast<const Placement&>().placement;
+    c.mu = t[2].cast<double>(), c.weighted_mean = t[3].cast<double>();
+    c.distance = t[4].cast<double>(), c.distance_sd = t[5].cast<double>();
+    c.target_distances = t[6].cast<std::vector<double>>();
+    c.target_distance_sds = t[7].cast<std::vector<double>>();
+    c.score = t[8].cast<std::optional<double>>();
+    s.result.evaluated.push_back(std::move(c));
+  }
+  s.result.ranked = state[1].cast<std::vector<std::size_t>>();
+  s.targets = state[2].cast<std::vector<std::string>>();
+  // best() and runners_up() index the candidates with these.
+  for (const auto k : s.result.ranked)
+    if (k >= s.result.evaluated.size()) throw std::invalid_argument("Search: not a pickled Search");
+  if (s.result.ranked.empty()) throw std::invalid_argument("Search: not a pickled Search");
+  return s;
+}
+
 }  // namespace
 
 void add_design_module(py::module_ m) {
@@ -189,18 +230,28 @@ void add_design_module(py::module_ m) {
       .def(py::pickle([](const Prediction& p) { return predicted_tool_state(p.tool); },
                       [](const py::tuple& state) { return Prediction{predicted_tool_of(state)}; }));
 
-  py::class_<Search>(m, "Search", "A design search: every candidate, the optimum and its runners-up")
-      .def_property_readonly("optimum", [](const Search& s) { return candidate_dict(s.result.best(), s.targets); })
-      .def_property_readonly("path", [](const Search& s) {
-        py::list out;
-        for (const auto& c : s.result.evaluated) out.append(candidate_dict(c, s.targets));
-        return out;
-      }, "Every candidate in the order evaluated")
-      .def("runners_up", [](const Search& s, std::size_t count) {
-        py::list out;
-        for (auto k : s.result.runners_up(count)) out.append(candidate_dict(s.result.evaluated[k], s.targets));
-        return out;
-      }, py::arg("count") = 4, "Up to `count` distinct designs after the optimum, nearest first");
+  py::class_<Search>(m, "Search",
+                     "A design search: every candidate, the optimum and its runners-up")
+      .def_property_readonly(
+          "optimum", [](const Search& s) { return candidate_dict(s.result.best(), s.targets); })
+      .def_property_readonly(
+          "path",
+          [](const Search& s) {
+            py::list out;
+            for (const auto& c : s.result.evaluated) out.append(candidate_dict(c, s.targets));
+            return out;
+          },
+          "Every candidate in the order evaluated")
+      .def(
+          "runners_up",
+          [](const Search& s, std::size_t count) {
+            py::list out;
+            for (auto k : s.result.runners_up(count))
+              out.append(candidate_dict(s.result.evaluated[k], s.targets));
+            return out;
+          },
+          py::arg("count") = 4, "Up to `count` distinct designs after the optimum, nearest first")
+      .def(py::pickle(&search_state, &search_of));
 
   py::class_<Designer>(m, "Designer", "What predicting designs needs, read once")
       .def("predict", &predict_design, py::arg("design"), py::arg("surface"),

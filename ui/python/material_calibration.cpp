@@ -91,14 +91,15 @@ py::tuple bar_state(const WrittenBar& b) {
   const auto& f = b.files;
   return py::make_tuple(
       b.material, b.printer, b.length_m, b.volume_m3,
-      py::make_tuple(f.three_mf, f.stl, f.ini, f.drawing, f.instructions, f.record));
+      py::make_tuple(path_state(f.three_mf), path_state(f.stl), path_state(f.ini),
+                     path_state(f.drawing), path_state(f.instructions), path_state(f.record)));
 }
 
 WrittenBar bar_of(const py::tuple& state) {
   require_state(state, 5, "CalibrationBar");
   const auto files = state[4].cast<py::tuple>();
   require_state(files, 6, "CalibrationBar");
-  const auto file = [&](std::size_t i) { return files[i].cast<std::filesystem::path>(); };
+  const auto file = [&](std::size_t i) { return path_of(files[i]); };
   return {state[0].cast<std::string>(),
           state[1].cast<std::string>(),
           state[2].cast<double>(),

@@ -15,6 +15,10 @@ void require_state(const py::tuple& state, std::size_t size, const std::string& 
   if (state.size() != size) throw std::invalid_argument(type + ": not a pickled " + type);
 }
 
+std::string path_state(const std::filesystem::path& path) { return path.string(); }
+
+std::filesystem::path path_of(const py::handle& state) { return state.cast<std::string>(); }
+
 py::bytes float_bytes(const std::vector<float>& samples) {
   return {reinterpret_cast<const char*>(samples.data()), samples.size() * sizeof(float)};
 }

@@ -5,6 +5,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ namespace nibrig::ui::python {
 
 // Throws ValueError "<type>: not a pickled <type>" unless the state has `size` items.
 void require_state(const pybind11::tuple& state, std::size_t size, const std::string& type);
+
+// A path as text and back: an empty path (none given) would come back from Python's Path as ".".
+std::string path_state(const std::filesystem::path& path);
+std::filesystem::path path_of(const pybind11::handle& state);
 
 pybind11::bytes float_bytes(const std::vector<float>& samples);
 std::vector<float> floats_of(const pybind11::handle& bytes, const std::string& type);

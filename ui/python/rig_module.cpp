@@ -8,6 +8,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -28,6 +29,7 @@
 #include "rt/reference_load.hpp"
 #include "ui/python/errors.hpp"
 #include "ui/python/long_call.hpp"
+#include "ui/python/pickle_state.hpp"
 #include "ui/python/rig_types.hpp"
 #include "ui/python/submodules.hpp"
 #include "ui/python/tool_sound_options.hpp"
@@ -156,36 +158,88 @@ Comparison compare(const RigSpec& spec, const std::optional<std::string>& tool, 
 
 std::optional<std::string> or_none(const std::string& s) { return s.empty() ? std::nullopt : std::optional(s); }
 
+// A rig as asked for, as its request and files; opening it checks them again, as for a new one.
+py::tuple rig_spec_state(const RigSpec& r) {
+  const auto& q = r.request;
+  return py::make_tuple(
+      static_cast<int>(q.kind), q.tool, q.surface, q.load_N, q.seed, q.speedup,
+      path_state(q.replay), path_state(q.replay_friction), q.usb_serial, q.input_api,
+      q.input_device, q.input_channel, q.accelerometer_m_s2_per_full_scale,
+      py::make_tuple(path_state(r.catalog), path_state(r.stylus), path_state(r.forcing)));
+}
+
+RigSpec rig_spec_of(const py::tuple& state) {
+  require_state(state, 14, "Rig");
+  const int kind = state[0].cast<int>();
+  if (kind < static_cast<int>(rig::RigKind::simulated) ||
+      kind > static_cast<int>(rig::RigKind::replay))
+    throw std::invalid_argument("Rig: not a pickled Rig");
+  RigSpec r;
+  auto& q = r.request;
+  q.kind = static_cast<rig::RigKind>(kind);
+  q.tool = state[1].cast<std::string>(), q.surface = state[2].cast<std::string>();
+  q.load_N = state[3].cast<double>(), q.seed = state[4].cast<std::uint64_t>();
+  q.speedup = state[5].cast<double>();
+  q.replay = path_of(state[6]);
+  q.replay_friction = path_of(state[7]);
+  q.usb_serial = state[8].cast<std::string>();
+  q.input_api = state[9].cast<std::string>(), q.input_device = state[10].cast<std::string>();
+  q.input_channel = state[11].cast<unsigned>();
+  q.accelerometer_m_s2_per_full_scale = state[12].cast<double>();
+  const auto files = state[13].cast<py::tuple>();
+  require_state(files, 3, "Rig");
+  r.catalog = path_of(files[0]);
+  r.stylus = path_of(files[1]);
+  r.forcing = path_of(files[2]);
+  return r;
+}
+
 }  // namespace
 
 void add_rig_module(py::module_ m) {
   add_rig_results(m);
 
   py::class_<RigSpec>(m, "Rig", "A rig as asked for; each capture or comparison opens it afresh")
-      .def_property_readonly("kind", [](const RigSpec& r) {
-        switch (r.request.kind) {
-          case rig::RigKind::simulated: return "simulated";
-          case rig::RigKind::replay: return "replay";
-          case rig::RigKind::usb: return "usb";
-        }
-        return "";
-      }, "'simulated', 'replay' or 'usb'")
-      .def_property_readonly("tool", [](const RigSpec& r) { return or_none(r.request.tool); },
-                             "What is mounted (None: what the rig knows, a replayed session's own)")
+      .def_property_readonly(
+          "kind",
+          [](const RigSpec& r) {
+            switch (r.request.kind) {
+              case rig::RigKind::simulated:
+                return "simulated";
+              case rig::RigKind::replay:
+                return "replay";
+              case rig::RigKind::usb:
+                return "usb";
+            }
+            return "";
+          },
+          "'simulated', 'replay' or 'usb'")
+      .def_property_readonly(
+          "tool", [](const RigSpec& r) { return or_none(r.request.tool); },
+          "What is mounted (None: what the rig knows, a replayed session's own)")
       .def_property_readonly("surface", [](const RigSpec& r) { return or_none(r.request.surface); })
-      .def_property_readonly("load_N", [](const RigSpec& r) { return r.request.load_N; }, "The arm's normal load, N")
-      .def_property_readonly("seed", [](const RigSpec& r) { return r.request.seed; }, "The simulated rig's noise")
-      .def_property_readonly("speedup", [](const RigSpec& r) { return r.request.speedup; },
-                             "1 = real time, k = k times faster, 0 = as fast as it computes (simulated, replay)")
-      .def_property_readonly("path", [](const RigSpec& r) {
-        return r.request.kind == rig::RigKind::replay ? py::cast(r.request.replay) : py::none();
-      }, "The replayed session or recording")
-      .def_property_readonly("serial", [](const RigSpec& r) { return or_none(r.request.usb_serial); })
+      .def_property_readonly(
+          "load_N", [](const RigSpec& r) { return r.request.load_N; }, "The arm's normal load, N")
+      .def_property_readonly(
+          "seed", [](const RigSpec& r) { return r.request.seed; }, "The simulated rig's noise")
+      .def_property_readonly(
+          "speedup", [](const RigSpec& r) { return r.request.speedup; },
+          "1 = real time, k = k times faster, 0 = as fast as it computes (simulated, replay)")
+      .def_property_readonly(
+          "path",
+          [](const RigSpec& r) {
+            return r.request.kind == rig::RigKind::replay ? py::cast(r.request.replay) : py::none();
+          },
+          "The replayed session or recording")
+      .def_property_readonly("serial",
+                             [](const RigSpec& r) { return or_none(r.request.usb_serial); })
+      .def(py::pickle(&rig_spec_state, &rig_spec_of))
       .def("__repr__", [](const RigSpec& r) {
         switch (r.request.kind) {
           case rig::RigKind::simulated:
             return "<nibrig.rig.Rig: simulated, " + r.request.tool + " on " + r.request.surface + ">";
-          case rig::RigKind::replay: return "<nibrig.rig.Rig: replay of " + r.request.replay.string() + ">";
+          case rig::RigKind::replay:
+            return "<nibrig.rig.Rig: replay of " + r.request.replay.string() + ">";
           case rig::RigKind::usb:
             return "<nibrig.rig.Rig: USB controller " + (r.request.usb_serial.empty() ? "(the only one)" : r.request.usb_serial) + ">";
         }

@@ -89,6 +89,12 @@ def test_a_search_keeps_to_its_constraints_and_beats_the_ends(designer):
     placed = designer.predict(best["design"], "protector").place(space)
     np.testing.assert_allclose(placed.mean, best["coordinates"], rtol=0, atol=1e-5)
 
+    # The search pickles as its candidates, bit for bit: the same path, optimum and runners-up.
+    again = pickle.loads(pickle.dumps(found))
+    assert (again.path, again.optimum, again.runners_up(3)) == (path, best, found.runners_up(3))
+    with pytest.raises(ValueError, match="not a pickled Search"):
+        nibrig.design.Search.__new__(nibrig.design.Search).__setstate__((found.__getstate__()[0], [99], [target]))
+
 
 def test_bad_designs_and_searches_are_value_errors(designer):
     with pytest.raises(ValueError, match="wood"):

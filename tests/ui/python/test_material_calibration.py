@@ -62,6 +62,11 @@ def test_a_bar_and_its_ring_down_make_a_lab_material_as_the_command_line_does(tm
                  "relative_residual", "saved"):
         assert getattr(fit_again, name) == getattr(fit, name), name
     assert np.array_equal(fit_again.fitted, fit.fitted)
+    # A printer PrusaSlicer does not slice has no .ini: None before and after the pickle, never ".".
+    material, printer, length, volume, files = bar.__getstate__()
+    unsliced = nibrig.design.CalibrationBar.__new__(nibrig.design.CalibrationBar)
+    unsliced.__setstate__((material, printer, length, volume, files[:2] + ("",) + files[3:]))
+    assert unsliced.ini is None and pickle.loads(pickle.dumps(unsliced)).ini is None
     with pytest.raises(ValueError, match="not a pickled RingDownCalibration"):
         nibrig.design.RingDownCalibration.__new__(nibrig.design.RingDownCalibration).__setstate__(("py-pla",))
 
