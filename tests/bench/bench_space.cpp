@@ -71,12 +71,14 @@ void BM_FitLagunas3D(benchmark::State& state) {
 
 // The same fit as every face makes it (`nibrig space fit`, the panel, nibrig.space.fit): the fit
 // with its diagnosis and the space file's statistics, the judgments read before the loop. What
-// tests/bench/python_space_fit.py sets the Python call beside.
+// tests/bench/python_space_fit.py sets the Python call beside. threads: 0 a thread per core, as the
+// faces' default; 1 for a steadier figure on a machine shared with other work.
 void BM_FitSpaceFileLagunas3D(benchmark::State& state) {
   const auto file = nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json";
   const space::SpaceInputs in = space::read_space_inputs(file, {}, 3, 0.0);
   space::SpaceFitSettings settings;
   settings.starts = 8;
+  settings.threads = static_cast<unsigned>(state.range(0));
   for (auto _ : state) {
     const auto fitted = space::fit_space_file(in, file, {}, settings);
     benchmark::DoNotOptimize(fitted.file.objective);
@@ -148,7 +150,12 @@ void BM_Bootstrap1000PaperSized2D(benchmark::State& state) {
 BENCHMARK(BM_FitPaperSizedStudy2D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Bootstrap1000PaperSized2D)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FitLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_FitSpaceFileLagunas3D)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FitSpaceFileLagunas3D)
+    ->ArgName("threads")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_SpaceObjectiveLagunas3D)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpaceStartLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
