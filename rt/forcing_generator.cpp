@@ -26,6 +26,15 @@ namespace {
 // thousands of Gaussian draws; the draws come in the same order, so the noise does not depend on it.
 constexpr std::size_t kNoiseChunks = 8;
 
+// Where in each step's share of the hop a generator does it: the seed's multiple of the golden
+// ratio, so that voices seeded 1, 2, 3 ... (as a pool seeds them) are spread evenly over it. Only
+// when the work is done depends on it, never the output.
+double step_phase(std::uint64_t seed) {
+  constexpr double kGoldenRatioFraction = 0.6180339887498949;
+  const double phase = static_cast<double>(seed % (1u << 20)) * kGoldenRatioFraction;
+  return phase - std::floor(phase);
+}
+
 }  // namespace
 
 ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
@@ -34,7 +43,8 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
       fft_(table_ ? table_->frame_length() : 2,
            model::numeric::RealFft::Plans::forward_and_backward),
       frame_(table_ ? table_->frame_length() : 2),
-      hop_(frame_ / 2) {
+      hop_(frame_ / 2),
+      step_phase_(step_phase(seed)) {
   if (!table_) throw std::invalid_argument("a forcing generator needs a table");
   window_.resize(frame_);
   for (std::size_t n = 0; n < frame_; ++n)
@@ -95,14 +105,15 @@ void ForcingGenerator::generate(const double* speed_m_s, const double* normal_fo
                                 double* out, std::size_t count) noexcept {
   const auto& speeds = table_->speeds();
   const std::size_t last = speeds.size() - 1;
-  // The next frame is made a few steps per call, as many as keep it on time for the hop whatever
-  // the block size (one step per call at the usual few dozen samples: a hop is thousands).
-  if (steps_done_ < frame_steps()) {
-    const std::size_t left = frame_steps() - steps_done_;
-    const std::size_t samples_left = std::max<std::size_t>(hop_ - position_, 1);
-    const std::size_t steps = std::min(left, std::max<std::size_t>(1, left * count / samples_left));
-    for (std::size_t i = 0; i < steps; ++i) prepare_next_frame_step();
-  }
+  // The next frame's steps are spread evenly over the hop, step j due at (j + phase) / steps of it,
+  // so that a call does at most one at the usual few dozen samples (a hop is thousands), and voices
+  // whose hops start together do theirs in different calls.
+  const double due_at = static_cast<double>(std::min(position_ + count, hop_)) *
+                            static_cast<double>(frame_steps()) / static_cast<double>(hop_) -
+                        step_phase_;
+  const std::size_t due =
+      std::min(frame_steps(), static_cast<std::size_t>(std::max(0.0, std::ceil(due_at))));
+  while (steps_done_ < due) prepare_next_frame_step();
   for (std::size_t i = 0; i < count; ++i) {
     if (position_ == hop_) start_next_hop();
     const double v = std::isfinite(speed_m_s[i]) ? std::max(0.0, speed_m_s[i]) : 0.0;

@@ -39,10 +39,12 @@ class ForcingGenerator {
   // Samples generated above the table's highest speed (the clamp of ARCHITECTURE.md, "Science notes").
   std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
 
- private:
   // The work of one frame, in steps: kNoiseChunks draws of a part of Z, then one windowed inverse
-  // FFT per table speed.
+  // FFT per table speed; and how many of the next frame's are done (for a test of when they are).
   std::size_t frame_steps() const noexcept;
+  std::size_t frame_steps_done() const noexcept { return steps_done_; }
+
+ private:
   void prepare_next_frame_step() noexcept;
   void finish_next_frame() noexcept;
   void start_next_hop() noexcept;
@@ -54,6 +56,7 @@ class ForcingGenerator {
   GaussianNoise noise_;
   model::numeric::RealFft fft_;
   std::size_t frame_, hop_;
+  double step_phase_;  // in [0, 1): where in its share of the hop each frame step is done
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
   // Three slots of speeds × frame windowed frames: the previous frame (its second half is being

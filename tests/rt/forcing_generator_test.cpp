@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <vector>
@@ -164,6 +165,62 @@ TEST(ForcingGenerator, GeneratingAllocatesNothingAndNaNIsSilence) {
   EXPECT_EQ(out[5], 0.0);
   EXPECT_EQ(out[7], 0.0);
   for (double x : out) ASSERT_TRUE(std::isfinite(x));
+}
+
+TEST(ForcingGenerator, TheOutputIsTheSameWhateverTheBlocksAndWhenTheFramesAreMade) {
+  // The frames' work is done at times that depend on the block size and the seed's phase; the
+  // output must not: bit for bit, from single samples to blocks longer than a hop.
+  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kInternalRate);
+  const std::size_t n = 30000;
+  std::vector<double> v(n), f(n, kReferenceNormalForce);
+  for (std::size_t i = 0; i < n; ++i) v[i] = 0.12 + 0.1 * std::sin(static_cast<double>(i) * 1e-3);
+  std::vector<double> whole(n);
+  ForcingGenerator reference(table, 4);
+  reference.generate(v.data(), f.data(), whole.data(), n);
+  for (std::size_t block : {1u, 11u, 64u, 5000u}) {
+    ForcingGenerator g(table, 4);
+    std::vector<double> out(n);
+    for (std::size_t at = 0; at < n; at += block)
+      g.generate(v.data() + at, f.data() + at, out.data() + at, std::min(block, n - at));
+    for (std::size_t i = 0; i < n; ++i)
+      ASSERT_EQ(out[i], whole[i]) << "block " << block << ", sample " << i;
+  }
+}
+
+TEST(ForcingGenerator, VoicesSeededInTurnMakeTheirFramesInDifferentCalls) {
+  // Sixteen voices started together, as an engine's slots are, each asked for what a 64-frame
+  // callback at 48 kHz needs of the 8 kHz engine (11 samples): a call must not carry several
+  // voices' frame work at once (before, every voice did its inverse FFTs in the same first calls of
+  // a hop).
+  auto table = std::make_shared<const ForcingTable>(crayon_on_office_paper(), kInternalRate);
+  constexpr std::size_t kVoices = 16, kBlock = 11;
+  std::vector<std::unique_ptr<ForcingGenerator>> voices;
+  for (std::uint64_t seed = 1; seed <= kVoices; ++seed)
+    voices.push_back(std::make_unique<ForcingGenerator>(table, seed));
+  const std::size_t steps = voices.front()->frame_steps();
+  const std::size_t hop = table->frame_length() / 2;
+  std::vector<double> v(kBlock, 0.1), f(kBlock, kReferenceNormalForce), out(kBlock);
+  std::size_t most_in_a_call = 0, total = 0;
+  for (std::size_t call = 0; call < 4 * hop / kBlock; ++call) {
+    std::size_t busy = 0;
+    for (auto& g : voices) {
+      const std::size_t before = g->frame_steps_done();
+      g->generate(v.data(), f.data(), out.data(), kBlock);
+      const std::size_t after = g->frame_steps_done();
+      const std::size_t done = after >= before ? after - before : steps - before + after;
+      ASSERT_LE(done, 1u) << "one voice did several steps in one call";
+      busy += done;
+    }
+    most_in_a_call = std::max(most_in_a_call, busy);
+    total += busy;
+  }
+  // Each step's share of a hop spans this many calls (27 here); spread evenly over them, the
+  // voices' steps fill a call with at most voices / calls, rounded up, and the golden-ratio phases
+  // of seeds 1-16 are within one of even.
+  const double calls_per_step = static_cast<double>(hop) / static_cast<double>(steps * kBlock);
+  const auto bound = static_cast<std::size_t>(std::ceil(kVoices / calls_per_step)) + 1;
+  EXPECT_LE(most_in_a_call, bound) << calls_per_step << " calls per step";
+  EXPECT_GE(total, 3 * kVoices * steps) << "every voice made its frames";
 }
 
 TEST(ForcingTable, RefusesSpectraItCannotRender) {
