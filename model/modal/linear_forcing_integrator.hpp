@@ -1,7 +1,8 @@
 // The streaming integrator of a whole ModalModel under a sampled force, joined linearly between
-// samples (exact for that force): a two-pole recursion per mode, state in preallocated
-// structure-of-arrays, and a process() that neither allocates, locks nor throws, for rt/ to run on
-// the audio thread. Everything that can fail happens in the constructor.
+// samples (exact for that force): a two-pole recursion per mode, the modes' state and coefficients
+// preallocated in groups of four (a vector register each), and a process() that neither
+// allocates, locks nor throws, for rt/ to run on the audio thread. Everything that can fail
+// happens in the constructor.
 #pragma once
 
 #include <cstddef>
@@ -50,7 +51,7 @@ class LinearForcingIntegrator {
 
   // For each n: takes f(t_n) = force[n] (N), advances the modes from t_{n−1} (force linear in
   // between) and writes the sensor acceleration a(t_n) (m/s²). force and acceleration may be the
-  // same buffer. Real-time safe: no allocation, lock or exception; cost ≈ 12 multiply-adds per mode
+  // same buffer. Real-time safe: no allocation, lock or exception; cost 11 multiply-adds per mode
   // per sample. The state is double whatever the buffers. Decaying modes reach subnormal numbers
   // after a long silence: the caller (rt/) runs with flush-to-zero set.
   void process(const float* force, float* acceleration, std::size_t count) noexcept;

@@ -48,7 +48,7 @@ std::vector<double> noise_force(std::size_t n) {
 }
 
 TEST(LinearForcingIntegrator, EngineIsThePerModeRecursion) {
-  // The struct-of-arrays engine must compute exactly x_{n+1} = Φx_n + bΓ₀f_n + bΓ₁f_{n+1} and
+  // The grouped, vectorised engine must compute exactly x_{n+1} = Φx_n + bΓ₀f_n + bΓ₁f_{n+1} and
   // a = Σ c(−ω²q − 2ζωq̇ + b f) per mode. Only the order of the sums differs, so the tolerance is
   // 1e-14 of the sum of the magnitudes of the terms.
   const ModalModel m = stylus_like_model();
