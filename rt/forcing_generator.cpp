@@ -18,6 +18,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "model/numeric/vector_math.hpp"
+
 namespace nibrig::rt {
 
 namespace {
@@ -52,6 +54,8 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
                           static_cast<double>(frame_));
   frames_.assign(3 * table_->speeds().size() * frame_, 0.0);
   z_.resize(table_->bins());
+  draws_.resize(3 * (table_->bins() / kNoiseChunks + 1));
+  model::numeric::vector_math_kind();  // its choice made here, not on the audio thread
   finish_next_frame();
   start_next_hop();     // frame −1: its second half overlaps the first output hop
   finish_next_frame();  // frame 0, which the first call's hop makes current
@@ -68,11 +72,11 @@ void ForcingGenerator::prepare_next_frame_step() noexcept {
     // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
     const std::size_t from = bins * steps_done_ / kNoiseChunks;
     const std::size_t to = bins * (steps_done_ + 1) / kNoiseChunks;
-    for (std::size_t k = from; k < to; ++k) {
-      double re, im;
-      noise_.normal_pair(re, im);
-      z_[k] = {re * std::numbers::sqrt2 / 2, im * std::numbers::sqrt2 / 2};
-    }
+    double* re = draws_.data();
+    double* im = re + draws_.size() / 3;
+    noise_.normal_pairs(re, im, im + draws_.size() / 3, to - from);
+    for (std::size_t k = from; k < to; ++k)
+      z_[k] = {re[k - from] * std::numbers::sqrt2 / 2, im[k - from] * std::numbers::sqrt2 / 2};
   } else {
     const std::size_t s = steps_done_ - kNoiseChunks;
     const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised

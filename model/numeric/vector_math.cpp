@@ -22,6 +22,8 @@ void scalar_from(const double* x, double* y, std::size_t from, std::size_t n) {
 double erfc_of(double x) { return std::erfc(x); }
 double exp_of(double x) { return std::exp(x); }
 double log_of(double x) { return std::log(x); }
+double sin_of(double x) { return std::sin(x); }
+double cos_of(double x) { return std::cos(x); }
 
 template <double (*F)(double)>
 void scalar_all(const double* x, double* y, std::size_t n) {
@@ -36,6 +38,8 @@ extern "C" {
 __m128d _ZGVbN2v_erfc(__m128d);
 __m128d _ZGVbN2v_exp(__m128d);
 __m128d _ZGVbN2v_log(__m128d);
+__m128d _ZGVbN2v_sin(__m128d);
+__m128d _ZGVbN2v_cos(__m128d);
 }
 
 template <__m128d (*V)(__m128d), double (*F)(double)>
@@ -49,6 +53,8 @@ extern "C" {
 __m256d _ZGVdN4v_erfc(__m256d);
 __m256d _ZGVdN4v_exp(__m256d);
 __m256d _ZGVdN4v_log(__m256d);
+__m256d _ZGVdN4v_sin(__m256d);
+__m256d _ZGVdN4v_cos(__m256d);
 }
 
 template <__m256d (*V)(__m256d), double (*F)(double)>
@@ -61,19 +67,28 @@ __attribute__((target("avx2"))) void avx2_all(const double* x, double* y, std::s
 
 struct Implementation {
   const char* kind;
-  ArrayFunction erfc, exp, log;
+  ArrayFunction erfc, exp, log, sin, cos;
 };
 
 Implementation choose() {
 #ifdef NIBRIG_LIBMVEC
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx2"))
-    return {"avx2", avx2_all<_ZGVdN4v_erfc, erfc_of>, avx2_all<_ZGVdN4v_exp, exp_of>,
-            avx2_all<_ZGVdN4v_log, log_of>};
-  return {"sse2", sse2_all<_ZGVbN2v_erfc, erfc_of>, sse2_all<_ZGVbN2v_exp, exp_of>,
-          sse2_all<_ZGVbN2v_log, log_of>};
+    return {"avx2",
+            avx2_all<_ZGVdN4v_erfc, erfc_of>,
+            avx2_all<_ZGVdN4v_exp, exp_of>,
+            avx2_all<_ZGVdN4v_log, log_of>,
+            avx2_all<_ZGVdN4v_sin, sin_of>,
+            avx2_all<_ZGVdN4v_cos, cos_of>};
+  return {"sse2",
+          sse2_all<_ZGVbN2v_erfc, erfc_of>,
+          sse2_all<_ZGVbN2v_exp, exp_of>,
+          sse2_all<_ZGVbN2v_log, log_of>,
+          sse2_all<_ZGVbN2v_sin, sin_of>,
+          sse2_all<_ZGVbN2v_cos, cos_of>};
 #else
-  return {"scalar", scalar_all<erfc_of>, scalar_all<exp_of>, scalar_all<log_of>};
+  return {"scalar",           scalar_all<erfc_of>, scalar_all<exp_of>,
+          scalar_all<log_of>, scalar_all<sin_of>,  scalar_all<cos_of>};
 #endif
 }
 
@@ -88,6 +103,8 @@ const Implementation& implementation() {
 void erfc_all(const double* x, double* y, std::size_t n) { implementation().erfc(x, y, n); }
 void exp_all(const double* x, double* y, std::size_t n) { implementation().exp(x, y, n); }
 void log_all(const double* x, double* y, std::size_t n) { implementation().log(x, y, n); }
+void sin_all(const double* x, double* y, std::size_t n) { implementation().sin(x, y, n); }
+void cos_all(const double* x, double* y, std::size_t n) { implementation().cos(x, y, n); }
 const char* vector_math_kind() { return implementation().kind; }
 
 }  // namespace nibrig::model::numeric

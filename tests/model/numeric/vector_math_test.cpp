@@ -47,6 +47,19 @@ TEST(VectorMath, ErfcExpAndLogAgreeWithTheScalarFunctions) {
   expect_close(log_all, [](double v) { return std::log(v); }, evenly(0.5, 2.0, 1001), "log near 1");
 }
 
+TEST(VectorMath, SinAndCosAgreeWithTheScalarFunctionsOverATurn) {
+  // Where the Gaussian draws take them (rt/gaussian_noise.hpp): angles from 0 to 2π, and a few
+  // turns beyond for the reduction.
+  expect_close(
+      sin_all, [](double v) { return std::sin(v); }, evenly(0.0, 2.0 * M_PI, 1001), "sin");
+  expect_close(
+      cos_all, [](double v) { return std::cos(v); }, evenly(0.0, 2.0 * M_PI, 1001), "cos");
+  expect_close(
+      sin_all, [](double v) { return std::sin(v); }, evenly(-40.0, 40.0, 1001), "sin, turns");
+  expect_close(
+      cos_all, [](double v) { return std::cos(v); }, evenly(-40.0, 40.0, 1001), "cos, turns");
+}
+
 TEST(VectorMath, TheEdgesAreTheScalarFunctionsEdges) {
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<double> x = {0.0, -800.0, 800.0, inf};
