@@ -33,6 +33,13 @@ struct Comparison {
 Comparison comparison_of(rig::ComparisonRun run, model::io::ComparisonFile report,
                          std::string simulated_modes);
 
+// Each as its records and samples and back (rig_pickle.cpp); a state that is not one is a
+// ValueError naming the class.
+pybind11::tuple session_state(const Session& session);
+Session session_of(const pybind11::tuple& state);
+pybind11::tuple comparison_state(const Comparison& comparison);
+Comparison comparison_from(const pybind11::tuple& state);
+
 // RigSession, Comparison and session(), added to the submodule before the calls that give them.
 void add_rig_results(pybind11::module_ m);
 
