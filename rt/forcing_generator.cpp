@@ -54,7 +54,8 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
                           static_cast<double>(frame_));
   frames_.assign(3 * table_->speeds().size() * frame_, 0.0);
   z_.resize(table_->bins());
-  draws_.resize(3 * (table_->bins() / kNoiseChunks + 1));
+  for (auto* draws : {&draw_re_, &draw_im_, &draw_scratch_})
+    draws->resize(table_->bins() / kNoiseChunks + 1);
   model::numeric::vector_math_kind();  // its choice made here, not on the audio thread
   finish_next_frame();
   start_next_hop();     // frame −1: its second half overlaps the first output hop
@@ -72,11 +73,10 @@ void ForcingGenerator::prepare_next_frame_step() noexcept {
     // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
     const std::size_t from = bins * steps_done_ / kNoiseChunks;
     const std::size_t to = bins * (steps_done_ + 1) / kNoiseChunks;
-    double* re = draws_.data();
-    double* im = re + draws_.size() / 3;
-    noise_.normal_pairs(re, im, im + draws_.size() / 3, to - from);
+    noise_.normal_pairs(draw_re_.data(), draw_im_.data(), draw_scratch_.data(), to - from);
     for (std::size_t k = from; k < to; ++k)
-      z_[k] = {re[k - from] * std::numbers::sqrt2 / 2, im[k - from] * std::numbers::sqrt2 / 2};
+      z_[k] = {draw_re_[k - from] * std::numbers::sqrt2 / 2,
+               draw_im_[k - from] * std::numbers::sqrt2 / 2};
   } else {
     const std::size_t s = steps_done_ - kNoiseChunks;
     const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised

@@ -59,7 +59,7 @@ class ForcingGenerator {
   double step_phase_;  // in [0, 1): where in its share of the hop each frame step is done
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
-  std::vector<double> draws_;            // a chunk's Gaussian pairs and their scratch
+  std::vector<double> draw_re_, draw_im_, draw_scratch_;  // a chunk's Gaussian pairs
   // Three slots of speeds × frame windowed frames: the previous frame (its second half is being
   // handed out), the current one (its first half), and the next (being made). A hop only renames
   // them, so no call pays for moving a whole frame.

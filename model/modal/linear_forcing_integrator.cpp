@@ -7,6 +7,7 @@
 
 #include "model/modal/linear_forcing_step.hpp"
 #include "model/modal/modal_model_checks.hpp"
+#include "model/numeric/cpu_features.hpp"
 
 namespace nibrig::model::modal {
 namespace {
@@ -72,15 +73,6 @@ template <class Sample>
 }
 #endif
 
-bool has_avx2_fma() noexcept {
-#if defined(__x86_64__)
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-#else
-  return false;
-#endif
-}
-
 }  // namespace
 
 LinearForcingIntegrator::LinearForcingIntegrator(const ModalModel& model, double sample_rate)
@@ -88,7 +80,7 @@ LinearForcingIntegrator::LinearForcingIntegrator(const ModalModel& model, double
       sample_rate_(sample_rate),
       resonant_feedthrough_(0.0),
       feedthrough_(0.0),
-      kernel_(has_avx2_fma() ? Kernel::avx2_fma : Kernel::portable) {
+      kernel_(numeric::cpu_has_avx2_fma() ? Kernel::avx2_fma : Kernel::portable) {
   const std::string caller = "LinearForcingIntegrator";
   check_modal_model(model, caller);
   check_sample_rate(sample_rate, caller);
@@ -120,7 +112,7 @@ LinearForcingIntegrator::LinearForcingIntegrator(const ModalModel& model, double
 }
 
 void LinearForcingIntegrator::set_kernel(Kernel kernel) {
-  if (kernel == Kernel::avx2_fma && !has_avx2_fma())
+  if (kernel == Kernel::avx2_fma && !numeric::cpu_has_avx2_fma())
     throw std::invalid_argument("LinearForcingIntegrator: this CPU has no AVX2 and FMA");
   kernel_ = kernel;
 }

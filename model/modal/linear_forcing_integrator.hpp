@@ -58,7 +58,7 @@ class LinearForcingIntegrator {
   void process(const double* force, double* acceleration, std::size_t count) noexcept;
 
   // The loop that runs the modes: the portable one, or the same compiled for AVX2 and FMA, chosen
-  // at construction when this CPU has them (about twice the modes per second). A fused
+  // at construction when this CPU has them (bench_integrator.cpp times both). A fused
   // multiply-add rounds once where the portable loop rounds twice, so the two agree to rounding,
   // not bit for bit. set_kernel is for comparing them: it throws std::invalid_argument for
   // avx2_fma on a CPU without them. Not for the audio thread.

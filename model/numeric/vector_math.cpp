@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "model/numeric/cpu_features.hpp"
+
 #if defined(__x86_64__) && defined(__GLIBC__)
 #if __GLIBC_PREREQ(2, 35)  // libmvec's erfc came with 2.35
 #define NIBRIG_LIBMVEC 1
@@ -72,8 +74,7 @@ struct Implementation {
 
 Implementation choose() {
 #ifdef NIBRIG_LIBMVEC
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2"))
+  if (cpu_has_avx2_fma())
     return {"avx2",
             avx2_all<_ZGVdN4v_erfc, erfc_of>,
             avx2_all<_ZGVdN4v_exp, exp_of>,
