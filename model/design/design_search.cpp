@@ -20,15 +20,6 @@ DesignPoint mix_point(const RangeSearchOptions& o, double second_fraction, doubl
   return point;
 }
 
-std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
-  std::vector<std::size_t> order(evaluated.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return evaluated[a].search_key() < evaluated[b].search_key();
-  });
-  return order;
-}
-
 std::string fmt_mm(double m) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g mm", m * 1e3);
@@ -52,6 +43,15 @@ std::size_t line_search_budget(const LineSearchOptions& o) {
 
 
 }  // namespace
+
+std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated) {
+  std::vector<std::size_t> order(evaluated.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return evaluated[a].search_key() < evaluated[b].search_key();
+  });
+  return order;
+}
 
 bool same_design(const DesignPoint& a, const DesignPoint& b) {
   double variation = 0;

@@ -78,6 +78,9 @@ Evaluate distance_to_targets(const PredictionSetup& setup, const std::string& su
                              const space::DescriptorMap& map, std::vector<space::Placement> targets,
                              space::GroupAim aim, int samples = 2000, std::uint64_t seed = 1);
 
+// Indices into `evaluated`, nearest first by search_key(); equal keys keep their order.
+std::vector<std::size_t> ranking(const std::vector<Candidate>& evaluated);
+
 struct SearchResult {
   std::vector<Candidate> evaluated;  // in the order evaluated: the path
   std::vector<std::size_t> ranked;   // indices into evaluated, nearest first

@@ -1,5 +1,7 @@
 #include "model/design/design_search_file.hpp"
 
+#include <stdexcept>
+
 #include "model/io/atomic_file.hpp"
 #include "model/io/finite_output.hpp"
 
@@ -53,6 +55,13 @@ nlohmann::json design_search_json(const SearchResult& result,
     j["runners_up"].push_back(candidate_json(result.evaluated[k], cost));
   j["path"] = nlohmann::json::array();
   for (const auto& c : result.evaluated) j["path"].push_back(candidate_json(c, cost));
+  if (const auto& guided = description.guided) {
+    if (guided->fem_solved.size() != result.evaluated.size())
+      throw std::invalid_argument("design search: a FEM flag per candidate expected");
+    j["grid"] = {{"error", guided->grid_error}, {"fem_solves", guided->fem_solves}};
+    for (std::size_t k = 0; k < result.evaluated.size(); ++k)
+      j["path"][k]["fem_solved"] = static_cast<bool>(guided->fem_solved[k]);
+  }
   return j;
 }
 

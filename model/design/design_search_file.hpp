@@ -5,11 +5,21 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "model/design/design_search.hpp"
 
 namespace nibrig::model::design {
+
+// A search through a design grid (grid_guided_search.hpp): which candidates the FEM solved, the
+// grid's error measured and the FEM solves made.
+struct GuidedDescription {
+  std::vector<bool> fem_solved;  // per candidate of the path
+  double grid_error = 0.0;
+  std::size_t fem_solves = 0;
+};
 
 // What the search was: its target and surface, how it searched (in words), how long it took and
 // how many runners-up to report; the space file it searched in, empty when not named.
@@ -26,6 +36,7 @@ struct DesignSearchDescription {
   // The targets placed from their descriptors (a catalog pairing the space never judged); the
   // others are the space's own stimuli.
   std::vector<std::string> placed;
+  std::optional<GuidedDescription> guided;
 };
 
 // One candidate: design, distance, distance_sd, mu, weighted_mean, coordinates, and
@@ -36,7 +47,7 @@ nlohmann::json candidate_json(const Candidate& candidate, const std::map<std::st
 // kind "design_search": target, surface, search, seconds, space (when named), placed, targets and
 // aim (a group), constraints {min_tip_mm, max_tip_mm, materials, cost, max_cost} (when any),
 // optimum, runners_up (distinct designs, SearchResult::runners_up), path (every candidate in the
-// order evaluated).
+// order evaluated); through a grid, grid {error, fem_solves} and each path candidate's fem_solved.
 nlohmann::json design_search_json(const SearchResult& result,
                                   const DesignSearchDescription& description);
 

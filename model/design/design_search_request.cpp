@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "model/design/grid_guided_search.hpp"
 #include "model/design/printability.hpp"
 #include "model/numeric/cancellation.hpp"
 
@@ -153,21 +154,63 @@ DesignSearch::DesignSearch(DesignSearchRequest request, const DesignSearchNames&
                          targets_.placements[t].mean.size(), dims));
 }
 
+void DesignSearch::check_surface(const forcing::ForcingModel& model) const {
+  if (model.surface_forcing.contains(request_.surface)) return;
+  std::string surfaces;
+  for (const auto& [name, forcing] : model.surface_forcing)
+    surfaces += (surfaces.empty() ? "" : ", ") + name;
+  refuse(
+      Field::surface, names_,
+      "'" + request_.surface + "' is not a surface of the forcing model (it has " + surfaces + ")");
+}
+
 DesignSearchOutcome DesignSearch::run(const PredictionInputs& inputs, std::stop_token stop,
                                       const SearchProgress& progress) const {
   const auto& model = inputs.model;
-  if (!model.surface_forcing.contains(request_.surface)) {
-    std::string surfaces;
-    for (const auto& [name, forcing] : model.surface_forcing)
-      surfaces += (surfaces.empty() ? "" : ", ") + name;
-    refuse(Field::surface, names_,
-           "'" + request_.surface + "' is not a surface of the forcing model (it has " + surfaces +
-               ")");
-  }
+  check_surface(model);
   const Predict predict = [&setup = inputs.setup, surface = request_.surface](
                               const DesignPoint& p) { return predict_tool(setup, p, surface); };
   return run(predict, model.tip_log_gain.begin()->first, model.tip_log_gain.rbegin()->first, stop,
              progress);
+}
+
+DesignSearchOutcome DesignSearch::run(const PredictionInputs& inputs,
+                                      const DesignResponseGrid& grid, std::stop_token stop,
+                                      const SearchProgress& progress) const {
+  check_surface(inputs.model);
+  const auto& r = request_;
+  const auto& axes = grid.axes;
+  auto mixed_by_grid = [&](const std::string& material) {
+    return material == axes.material_a || material == axes.material_b;
+  };
+  if (r.between) {
+    for (const DesignPoint* end : {&r.between->first, &r.between->second})
+      for (const auto& share : end->mix)
+        if (!mixed_by_grid(share.material))
+          refuse(Field::between, names_,
+                 to_string(*end) + " is not a mix of the design grid's " + axes.material_a +
+                     " and " + axes.material_b);
+  } else if (!mixed_by_grid(r.first_material) || !mixed_by_grid(r.second_material)) {
+    refuse(Field::mix, names_,
+           r.first_material + " and " + r.second_material + " are not the design grid's " +
+               axes.material_a + " and " + axes.material_b);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  DesignSearchOutcome out = run(grid_predictor(inputs.setup, grid, r.surface), axes.tips_m.front(),
+                                axes.tips_m.back(), stop, progress);
+  const Evaluate by_fem = group() ? distance_to_targets(inputs.setup, r.surface, descriptor_map(),
+                                                        targets_.placements, r.aim)
+                                  : distance_to_target(inputs.setup, r.surface, descriptor_map(),
+                                                       targets_.placements.front());
+  GuidedSearch guided = guide_by_fem(std::move(out.result), inputs.setup, grid, r.surface,
+                                     descriptor_map(), by_fem, 0, stop);
+  out.result = std::move(guided.result);
+  out.fem_solved = std::move(guided.fem_solved);
+  out.grid_error = guided.grid_error;
+  out.fem_solves = guided.fem_solves;
+  out.how += " through the design grid";
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
 }
 
 DesignSearchOutcome DesignSearch::run(const Predict& predict, double min_tip_m, double max_tip_m,

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <stop_token>
@@ -15,6 +16,7 @@
 
 #include "model/design/design_constraints.hpp"
 #include "model/design/design_point.hpp"
+#include "model/design/design_response_grid.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/prediction_inputs.hpp"
 #include "model/io/printer_profile.hpp"
@@ -93,6 +95,12 @@ struct DesignSearchOutcome {
   // A line search: the scan's first and last candidates (indices into result.evaluated), the ends
   // of the segment the constraints allow. Empty for a range search.
   std::vector<std::size_t> line_ends;
+  // A search through a design grid (grid_guided_search.hpp): per candidate, whether the FEM solved
+  // it; the grid's error measured; the FEM solves made (contenders and checks). Empty, NaN and 0
+  // for a search that solved every candidate.
+  std::vector<bool> fem_solved;
+  double grid_error = std::numeric_limits<double>::quiet_NaN();
+  std::size_t fem_solves = 0;
 };
 
 // A checked request, ready to run once the predictions are set up.
@@ -112,6 +120,12 @@ class DesignSearch {
   // numeric::Cancelled before the next candidate; progress as SearchProgress says.
   DesignSearchOutcome run(const PredictionInputs& inputs, std::stop_token stop = {},
                           const SearchProgress& progress = {}) const;
+  // The same through `grid`, a design-response grid of these inputs over the request's mix (the
+  // line's designs must mix the grid's materials: else refused as between or mix), the FEM solved
+  // only where the grid's error could change the answer (grid_guided_search.hpp); seconds where
+  // the above takes a second a candidate. `evaluations` counts the grid's predictions.
+  DesignSearchOutcome run(const PredictionInputs& inputs, const DesignResponseGrid& grid,
+                          std::stop_token stop = {}, const SearchProgress& progress = {}) const;
   // The same with another predictor (a design-response grid's) and the tips it was fitted over.
   DesignSearchOutcome run(const Predict& predict, double min_tip_m, double max_tip_m,
                           std::stop_token stop = {}, const SearchProgress& progress = {}) const;
@@ -120,6 +134,8 @@ class DesignSearch {
   DesignSearchRequest request_;
   DesignSearchNames names_;
   DesignSearchTargets targets_;
+
+  void check_surface(const forcing::ForcingModel& model) const;
 };
 
 }  // namespace nibrig::model::design

@@ -5,10 +5,12 @@
 // design_cli_test): its cost does not depend on how the space was fitted.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_search.hpp"
+#include "model/design/grid_guided_search.hpp"
 #include "model/design/interpolation_check.hpp"
 #include "model/design/material_hold_out.hpp"
 #include "model/forcing/catalog_exemplars.hpp"
@@ -115,38 +117,94 @@ void BM_ForcingHeldOutDescriptorErrors(benchmark::State& state) {
 }
 BENCHMARK(BM_ForcingHeldOutDescriptorErrors)->Iterations(3)->Unit(benchmark::kMillisecond);
 
-void BM_DesignLineSearch(benchmark::State& state) {
+// The line search's world: the catalog's forcing model, a space of its descriptors, the target
+// cryon/office's place in it, the setup predicting at the template's full resolution.
+struct LineSearchWorld {
+  forcing::ForcingModel model;
+  space::DescriptorMap map;
+  space::Placement target;
+  measure::ThresholdCurve threshold = measure::ThresholdCurve::load(
+      nibrig::test::assets_dir() / "thresholds" / "israr2006_pen_hold.csv");
+  design::DescriptorErrorCovariance errors;
+  design::DesignPoint a = design::parse_design_point("vero,tip=1mm"),
+                      b = design::parse_design_point("DM85,tip=4mm");
+};
+
+const LineSearchWorld& line_search_world() {
+  static const LineSearchWorld w = [] {
+    auto& in = inputs(true);
+    LineSearchWorld w;
+    w.model = forcing::fit_forcing_model(in.exemplars);
+    const std::vector<std::string> stimuli{"cryon/office", "stab/office",  "vero1/office",
+                                           "vero4/office", "DM854/office", "vero1/glass",
+                                           "DM851/glass",  "vero4/glass"};
+    const auto table = space::descriptors_for_stimuli(in.catalog, "bundled catalog", stimuli, 2);
+    Eigen::MatrixXd coordinates = table.values.transpose();
+    for (Eigen::Index i = 0; i < coordinates.cols(); ++i) coordinates(0, i) += 0.01 * (i % 3);
+    w.map = space::fit_descriptor_map(coordinates, table.values, table.names);
+    w.target = space::Placement{coordinates.col(0), Eigen::MatrixXd::Zero(2, 2)};
+    w.errors = design::descriptor_error_covariance(
+        forcing::held_out_descriptor_errors(in.exemplars, w.threshold),
+        design::friction_interpolation_errors(in.catalog));
+    return w;
+  }();
+  return w;
+}
+
+design::PredictionSetup line_search_setup(const LineSearchWorld& w) {
   auto& in = inputs(true);
-  const auto model = forcing::fit_forcing_model(in.exemplars);
-  const std::vector<std::string> stimuli{"cryon/office", "stab/office",  "vero1/office",
-                                         "vero4/office", "DM854/office", "vero1/glass",
-                                         "DM851/glass",  "vero4/glass"};
-  const auto table = space::descriptors_for_stimuli(in.catalog, "bundled catalog", stimuli, 2);
-  Eigen::MatrixXd coordinates = table.values.transpose();
-  for (Eigen::Index i = 0; i < coordinates.cols(); ++i) coordinates(0, i) += 0.01 * (i % 3);
-  const auto map = space::fit_descriptor_map(coordinates, table.values, table.names);
-  const space::Placement target{coordinates.col(0), Eigen::MatrixXd::Zero(2, 2)};
-  const auto threshold = measure::ThresholdCurve::load(nibrig::test::assets_dir() / "thresholds" /
-                                                       "israr2006_pen_hold.csv");
   design::PredictionSetup setup;
-  setup.model = &model;
+  setup.model = &w.model;
   setup.catalog = &in.catalog;
   setup.template_design = in.template_design;
   setup.materials = in.materials;
-  setup.threshold = &threshold;
-  const auto errors = design::descriptor_error_covariance(
-      forcing::held_out_descriptor_errors(in.exemplars, threshold),
-      design::friction_interpolation_errors(in.catalog));
-  setup.descriptor_errors = &errors;
+  setup.threshold = &w.threshold;
+  setup.descriptor_errors = &w.errors;
+  return setup;
+}
+
+void BM_DesignLineSearch(benchmark::State& state) {
+  const auto& w = line_search_world();
+  const auto setup = line_search_setup(w);
   std::size_t predictions = 0;
   for (auto _ : state) {
     const auto result = design::line_search(
-        design::parse_design_point("vero,tip=1mm"), design::parse_design_point("DM85,tip=4mm"),
-        design::distance_to_target(setup, "protector", map, target));
+        w.a, w.b, design::distance_to_target(setup, "protector", w.map, w.target));
     predictions = result.evaluated.size();
   }
   state.counters["predictions"] = static_cast<double>(predictions);
 }
 BENCHMARK(BM_DesignLineSearch)->Iterations(1)->Unit(benchmark::kSecond);
+
+// The same search through the default design grid (5 × 7 nodes over vero-DM85 × 1-4 mm, solved
+// before the timing as the cache holds it), the FEM solved only where the grid's error could change
+// the answer (grid_guided_search.hpp). Beside it, in the same run: the full search's optimum, and
+// how far the guided one is from it against the grid's measured error.
+void BM_DesignLineSearchGuided(benchmark::State& state) {
+  const auto& w = line_search_world();
+  const auto setup = line_search_setup(w);
+  const auto grid = design::compute_design_response_grid(
+      setup, design::even_axes("vero", "DM85", design::kDefaultFractionPoints, 0.001, 0.004,
+                               design::kDefaultTipPoints));
+  const auto by_fem = design::distance_to_target(setup, "protector", w.map, w.target);
+  const auto full_start = std::chrono::steady_clock::now();
+  const auto full = design::line_search(w.a, w.b, by_fem);
+  const double full_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - full_start).count();
+  design::GuidedSearch guided;
+  for (auto _ : state) {
+    const auto on_grid =
+        design::line_search(w.a, w.b,
+                            design::distance_to_target(
+                                design::grid_predictor(setup, grid, "protector"), w.map, w.target));
+    guided = design::guide_by_fem(on_grid, setup, grid, "protector", w.map, by_fem);
+  }
+  state.counters["fem_solves"] = static_cast<double>(guided.fem_solves);
+  state.counters["full_predictions"] = static_cast<double>(full.evaluated.size());
+  state.counters["full_s"] = full_seconds;
+  state.counters["grid_error"] = guided.grid_error;
+  state.counters["optimum_gap"] = std::abs(guided.result.best().distance - full.best().distance);
+}
+BENCHMARK(BM_DesignLineSearchGuided)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

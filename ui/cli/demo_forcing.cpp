@@ -113,8 +113,9 @@ DemoSection run_forcing_demo(const std::filesystem::path& catalog_file,
           line);
       const double seconds = seconds_since(search_start);
       const std::string how = fmt::format("along the line {} -> {}", kFrom, kTo);
-      design::write_design_search(dir / "design_search.json", result,
-                                  {kTarget, kSearchSurface, how, seconds, 4, "", {}, {}, {}, {}});
+      design::write_design_search(
+          dir / "design_search.json", result,
+          {kTarget, kSearchSurface, how, seconds, 4, "", {}, {}, {}, {}, {}});
       const auto last = static_cast<std::size_t>(line.scan_points - 1);
       write_search_plot(space, kTarget, {}, result, {0, last}, kSearchSurface,
                         dir / "design_path.png");

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "model/design/design_grid_file.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/design_search_request.hpp"
 #include "model/design/prediction_inputs.hpp"
@@ -40,6 +41,9 @@ struct Prediction {
 struct Search {
   design::SearchResult result;
   std::vector<std::string> targets;
+  // Through a design grid: per candidate, whether the FEM solved it, and the grid's error measured.
+  std::vector<bool> fem_solved;
+  std::optional<double> grid_error;
 };
 
 Designer make_designer(const std::optional<std::filesystem::path>& catalog, const std::optional<std::filesystem::path>& forcing,
@@ -95,12 +99,15 @@ std::string search_argument(design::DesignSearchField field) {
   return field == design::DesignSearchField::mix ? "mix_a, mix_b" : design::field_name(field);
 }
 
-Search search_designs(const Designer& d, const Space& s, const py::object& targets, const std::string& surface,
-              const std::optional<std::pair<std::string, std::string>>& between, const std::string& aim,
-              const std::optional<double>& min_tip_mm, const std::optional<double>& max_tip_mm,
-              const std::vector<std::string>& allow, const std::map<std::string, double>& cost,
-              const std::optional<double>& max_cost, const std::string& mix_a, const std::string& mix_b,
-              const py::object& progress) {
+Search search_designs(const Designer& d, const Space& s, const py::object& targets,
+                      const std::string& surface,
+                      const std::optional<std::pair<std::string, std::string>>& between,
+                      const std::string& aim, const std::optional<double>& min_tip_mm,
+                      const std::optional<double>& max_tip_mm,
+                      const std::vector<std::string>& allow,
+                      const std::map<std::string, double>& cost,
+                      const std::optional<double>& max_cost, const std::string& mix_a,
+                      const std::string& mix_b, bool through_grid, const py::object& progress) {
   design::DesignSearchRequest request;
   request.targets = [&] {
     design::DesignSearchTargets out{s.file.descriptor_map, {}, {}};
@@ -135,7 +142,23 @@ Search search_designs(const Designer& d, const Space& s, const py::object& targe
         const design::SearchProgress counted = [&](const design::Candidate&, std::size_t done, std::size_t total) {
           report("predicting designs", done, total);
         };
-        out.result = search.run(*d.inputs, stop, counted).result;
+        if (!through_grid) {
+          out.result = search.run(*d.inputs, stop, counted).result;
+          return;
+        }
+        const auto& tips = d.inputs->model.tip_log_gain;
+        const auto grid = design::cached_design_response_grid(
+            *d.inputs,
+            design::even_axes(mix_a, mix_b, design::kDefaultFractionPoints, tips.begin()->first,
+                              tips.rbegin()->first, design::kDefaultTipPoints),
+            [&](std::size_t done, std::size_t total) {
+              report("solving the design grid", done, total);
+            },
+            stop);
+        auto searched = search.run(*d.inputs, grid, stop, counted);
+        out.result = std::move(searched.result);
+        out.fem_solved = std::move(searched.fem_solved);
+        out.grid_error = searched.grid_error;
       },
       progress);
   return out;
@@ -161,11 +184,11 @@ py::tuple search_state(const Search& s) {
     candidates.append(py::make_tuple(design_point_state(c.point), py::cast(Placement{c.placement}),
                                      c.mu, c.weighted_mean, c.distance, c.distance_sd,
                                      c.target_distances, c.target_distance_sds, c.score));
-  return py::make_tuple(candidates, s.result.ranked, s.targets);
+  return py::make_tuple(candidates, s.result.ranked, s.targets, s.fem_solved, s.grid_error);
 }
 
 Search search_of(const py::tuple& state) {
-  require_state(state, 3, "Search");
+  require_state(state, 5, "Search");
   Search s;
   for (const auto& item : state[0].cast<py::list>()) {
     const auto t = item.cast<py::tuple>();
@@ -182,6 +205,10 @@ Search search_of(const py::tuple& state) {
   }
   s.result.ranked = state[1].cast<std::vector<std::size_t>>();
   s.targets = state[2].cast<std::vector<std::string>>();
+  s.fem_solved = state[3].cast<std::vector<bool>>();
+  s.grid_error = state[4].cast<std::optional<double>>();
+  if (!s.fem_solved.empty() && s.fem_solved.size() != s.result.evaluated.size())
+    throw std::invalid_argument("Search: not a pickled Search");
   // best() and runners_up() index the candidates with these.
   for (const auto k : s.result.ranked)
     if (k >= s.result.evaluated.size()) throw std::invalid_argument("Search: not a pickled Search");
@@ -242,6 +269,16 @@ void add_design_module(py::module_ m) {
             return out;
           },
           "Every candidate in the order evaluated")
+      .def_property_readonly(
+          "fem_solved", [](const Search& s) { return s.fem_solved; },
+          "Through the design grid (grid=True): per candidate of the path, whether the FEM solved "
+          "it "
+          "(else its numbers are the grid's); empty when every candidate was solved")
+      .def_property_readonly(
+          "grid_error", [](const Search& s) { return s.grid_error; },
+          "Through the design grid: its placement error measured at the cells of the designs that "
+          "could "
+          "be the optimum, in space units; None otherwise")
       .def(
           "runners_up",
           [](const Search& s, std::size_t count) {
@@ -262,14 +299,17 @@ void add_design_module(py::module_ m) {
            py::arg("min_tip_mm") = py::none(), py::arg("max_tip_mm") = py::none(),
            py::arg("allow") = std::vector<std::string>{},
            py::arg("cost") = std::map<std::string, double>{}, py::arg("max_cost") = py::none(),
-           py::arg("mix_a") = "vero", py::arg("mix_b") = "DM85", py::arg("progress") = py::none(),
+           py::arg("mix_a") = "vero", py::arg("mix_b") = "DM85", py::arg("grid") = false,
+           py::arg("progress") = py::none(),
            "The design nearest the target (a stimulus name or a Placement) or a group of them "
            "(their largest or "
            "mean distance), along `between` (two design points) or over the two-material mix x "
            "fitted tips; "
            "tips in mm, `allow` the materials a printer may load, `cost` a proxy per material "
            "limited by "
-           "`max_cost`. Releases the GIL; Ctrl-C stops it.")
+           "`max_cost`. `grid=True` searches through the design grid (solved once, then kept) and "
+           "solves the FEM only where its measured error could change the answer: seconds. "
+           "Releases the GIL; Ctrl-C stops it.")
       .def(py::pickle(&designer_state, &designer_of));
 
   m.def("designer", &make_designer, py::kw_only(), py::arg("catalog") = py::none(), py::arg("forcing") = py::none(),

@@ -44,7 +44,8 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
                                             {},
                                             {},
                                             {},
-                                            {"cryon/office"}};
+                                            {"cryon/office"},
+                                            {}};
   const auto file = nibrig::test::scratch_dir("design_search_file") / "design_search.json";
   write_design_search(file, result, description);
   std::ifstream in(file);
@@ -101,6 +102,21 @@ TEST(DesignSearchFile, RoundTripsTheOptimumRunnersUpAndPath) {
   EXPECT_DOUBLE_EQ(g.at("constraints").at("cost").at("DM85").get<double>(), 3.0);
   const double f = result.best().point.fraction_of("DM85");
   EXPECT_NEAR(g.at("optimum").at("cost").get<double>(), (1 - f) * 1.0 + f * 3.0, 1e-12);
+
+  // Through a grid: its error and solves, and per candidate whether the FEM solved it; a flag per
+  // candidate or the file is refused.
+  EXPECT_FALSE(j.contains("grid"));
+  EXPECT_FALSE(j.at("path")[0].contains("fem_solved"));
+  DesignSearchDescription guided = description;
+  guided.guided = GuidedDescription{std::vector<bool>(result.evaluated.size(), false), 2.5e-4, 3};
+  guided.guided->fem_solved[result.ranked.front()] = true;
+  const auto on_grid = design_search_json(result, guided);
+  EXPECT_EQ(on_grid.at("grid").at("error").get<double>(), 2.5e-4);
+  EXPECT_EQ(on_grid.at("grid").at("fem_solves").get<std::size_t>(), 3u);
+  for (std::size_t k = 0; k < result.evaluated.size(); ++k)
+    EXPECT_EQ(on_grid.at("path")[k].at("fem_solved").get<bool>(), k == result.ranked.front()) << k;
+  guided.guided->fem_solved.pop_back();
+  EXPECT_THROW(design_search_json(result, guided), std::invalid_argument);
 }
 
 TEST(DesignSearchFile, RefusesANonFiniteDistanceNamingTheField) {
@@ -109,7 +125,7 @@ TEST(DesignSearchFile, RefusesANonFiniteDistanceNamingTheField) {
   const auto file = nibrig::test::scratch_dir("design_search_file_nan") / "broken.json";
   try {
     write_design_search(file, result,
-                        {"cryon/office", "glass", "a line", 1.0, 4, "", {}, {}, {}, {}});
+                        {"cryon/office", "glass", "a line", 1.0, 4, "", {}, {}, {}, {}, {}});
     FAIL() << "wrote a NaN";
   } catch (const io::UnwritableOutput& e) {
     EXPECT_NE(std::string(e.what()).find("distance_sd"), std::string::npos) << e.what();

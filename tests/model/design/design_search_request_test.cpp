@@ -136,6 +136,27 @@ TEST(DesignSearchRequest, EachRefusableFieldIsRefusedByNameBeforeTheTargetsAreAs
   EXPECT_EQ(parse_group_aim("mean"), space::GroupAim::mean);
 }
 
+// Through a design grid, a design it does not mix is refused by field, before any prediction.
+TEST(DesignSearchRequest, ASearchThroughAGridRefusesDesignsItDoesNotMix) {
+  auto& w = world();
+  auto line = w.request({w.near_mix});
+  line.between.emplace(parse_design_point("vero,tip=1mm"), parse_design_point("DM95,tip=4mm"));
+  auto range = w.request({w.near_mix});
+  range.second_material = "DM95";
+  for (auto [request, field] : {std::pair{line, Field::between}, std::pair{range, Field::mix}}) {
+    const DesignSearch search(std::move(request));
+    try {
+      search.run(*w.inputs, w.grid, {}, [](const Candidate& c, std::size_t, std::size_t) {
+        ADD_FAILURE() << to_string(c.point) << " predicted";
+      });
+      ADD_FAILURE() << field_name(field) << " not refused";
+    } catch (const DesignSearchRefused& e) {
+      EXPECT_EQ(e.field(), field);
+      EXPECT_NE(std::string(e.what()).find("DM95"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(DesignSearchRequest, TargetsWithoutAMapOrInAnotherSpaceAreRefusedByName) {
   auto& w = world();
   auto no_map = w.request({w.near_mix});

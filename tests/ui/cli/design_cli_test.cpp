@@ -295,6 +295,33 @@ TEST(DesignCli, TheLineSearchOnGlassTowardsAMeasuredDm85ToolEndsAtItsDesign) {
   // A pairing the test's space never judged: placed from its descriptors.
   EXPECT_EQ(search["placed"], nlohmann::json::array({"DM854/glass"}));
 
+  // The same search through the design grid (solved here into the test's own cache): the FEM only
+  // where the grid's measured error could change the answer, an optimum the FEM solved, within that
+  // error of the full search's, for fewer solves than the full search's candidates.
+  {
+    const nibrig::test::ScopedCacheDir cache(out / "cache");
+    std::vector<std::string> guided = args;
+    guided.erase(guided.end() - static_cast<long>(coarse.size()) - 4,
+                 guided.end() - static_cast<long>(coarse.size()));
+    guided.insert(guided.end(), {"--grid", "-o", (out / "search_grid.json").string()});
+    ::testing::internal::CaptureStdout();
+    const int guided_code = run_cli(guided);
+    const std::string guided_text = ::testing::internal::GetCapturedStdout();
+    ASSERT_EQ(guided_code, 0) << guided_text;
+    const auto on_grid = read_json(out / "search_grid.json");
+    const double error = on_grid["grid"]["error"];
+    EXPECT_GT(error, 0.0);
+    EXPECT_LT(on_grid["grid"]["fem_solves"].get<std::size_t>(), path.size());
+    EXPECT_NEAR(on_grid["optimum"]["distance"].get<double>(), best, error);
+    std::size_t solved = 0;
+    for (const auto& c : on_grid["path"]) {
+      solved += c["fem_solved"].get<bool>();
+      if (c["design"] == on_grid["optimum"]["design"]) EXPECT_TRUE(c["fem_solved"].get<bool>());
+    }
+    EXPECT_GE(solved, 1u);
+    EXPECT_LT(solved, on_grid["grid"]["fem_solves"].get<std::size_t>() + 1);
+  }
+
   // The acceptance command (with this test's coarse FEM and its fitted model): the optimum's
   // stylus written into a new folder, one STL per region beside the 3MF, which PrusaSlicer slices.
   std::vector<std::string> exported{"design", "--target", "cryon/office", "--surface", "protector", "--space",

@@ -93,7 +93,21 @@ def test_a_search_keeps_to_its_constraints_and_beats_the_ends(designer):
     again = pickle.loads(pickle.dumps(found))
     assert (again.path, again.optimum, again.runners_up(3)) == (path, best, found.runners_up(3))
     with pytest.raises(ValueError, match="not a pickled Search"):
-        nibrig.design.Search.__new__(nibrig.design.Search).__setstate__((found.__getstate__()[0], [99], [target]))
+        state = found.__getstate__()
+        nibrig.design.Search.__new__(nibrig.design.Search).__setstate__((state[0], [99], [target], [], None))
+    assert found.fem_solved == [] and found.grid_error is None
+
+    # Through the design grid: the FEM only where the grid's measured error could change the answer,
+    # an optimum the FEM solved, within that error of the full search's, for fewer solves.
+    guided = designer.search(space, target, "protector", between=("vero:1,tip=1mm", "DM85:1,tip=4mm"),
+                             max_tip_mm=3.0, grid=True)
+    assert guided.grid_error > 0
+    assert abs(guided.optimum["distance"] - best["distance"]) <= guided.grid_error
+    solved = guided.fem_solved
+    assert len(solved) == len(guided.path) and 0 < sum(solved) < len(path)
+    assert solved[[c["design"] for c in guided.path].index(guided.optimum["design"])]
+    again = pickle.loads(pickle.dumps(guided))
+    assert (again.fem_solved, again.grid_error, again.path) == (solved, guided.grid_error, guided.path)
 
 
 def test_bad_designs_and_searches_are_value_errors(designer):
