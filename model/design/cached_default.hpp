@@ -50,20 +50,24 @@ inline std::filesystem::path cache_file(const std::filesystem::path& dir, const 
 
 // read(file) -> T throws on a file it cannot take; compute() -> T; write(file, value) writes
 // atomically (the format writers do). `what` names the result in warnings ("default space").
+// A file of the user cache missing there is read from the shipped layer (io::shipped_twin) when
+// the build computed it.
 template <typename T, typename Read, typename Compute, typename Write>
 Cached<T> cached_default(const std::filesystem::path& file, const std::string& what, Read read,
                          Compute compute, Write write) {
   Cached<T> out;
   out.file = file;
   std::error_code error;
-  if (std::filesystem::exists(file, error)) {
+  for (const auto& candidate : {file, io::shipped_twin(file)}) {
+    if (candidate.empty() || !std::filesystem::exists(candidate, error)) continue;
     try {
-      out.value = read(file);
+      out.value = read(candidate);
+      out.file = candidate;
       return out;
     } catch (const std::exception& e) {
       // A file cut short by a full disk, edited by hand or from an older build: computing again
       // costs time, failing would cost the face.
-      out.warnings.push_back(file.string() + ": the cached " + what + " cannot be read (" +
+      out.warnings.push_back(candidate.string() + ": the cached " + what + " cannot be read (" +
                              e.what() + "); computing it again");
       spdlog::warn("{}", out.warnings.back());
     }

@@ -133,20 +133,24 @@ std::optional<DesignResponseGrid> load_cached_design_grid(const PredictionInputs
   const std::string key = design_grid_cache_key(inputs, axes);
   const std::filesystem::path file = design_grid_cache_file(key);
   std::error_code error;
-  if (!std::filesystem::exists(file, error)) return std::nullopt;
-  try {
-    DesignResponseGrid grid = read_design_grid(file, key);
-    // The key holds the axes' exact bits; a file that says otherwise was not written for them.
-    if (grid.axes.material_a != axes.material_a || grid.axes.material_b != axes.material_b ||
-        grid.axes.fractions != axes.fractions || grid.axes.tips_m != axes.tips_m ||
-        grid.frequencies_hz != inputs.model.frequencies_hz)
-      throw io::FormatError(file, "", "its axes or frequencies are not those its key stands for");
-    return grid;
-  } catch (const std::exception& e) {
-    spdlog::warn("the cached design grid cannot be used, it is recomputed: {}", e.what());
-    std::filesystem::remove(file, error);
-    return std::nullopt;
+  for (const auto& candidate : {file, io::shipped_twin(file)}) {
+    if (candidate.empty() || !std::filesystem::exists(candidate, error)) continue;
+    try {
+      DesignResponseGrid grid = read_design_grid(candidate, key);
+      // The key holds the axes' exact bits; a file that says otherwise was not written for them.
+      if (grid.axes.material_a != axes.material_a || grid.axes.material_b != axes.material_b ||
+          grid.axes.fractions != axes.fractions || grid.axes.tips_m != axes.tips_m ||
+          grid.frequencies_hz != inputs.model.frequencies_hz)
+        throw io::FormatError(candidate, "",
+                              "its axes or frequencies are not those its key stands for");
+      return grid;
+    } catch (const std::exception& e) {
+      spdlog::warn("the cached design grid cannot be used, it is recomputed: {}", e.what());
+      if (candidate == file)
+        std::filesystem::remove(file, error);  // the shipped layer is read-only
+    }
   }
+  return std::nullopt;
 }
 
 namespace {

@@ -17,6 +17,24 @@ std::filesystem::path user_cache_dir() {
   return std::filesystem::path(home && *home ? home : ".") / ".cache" / "nibrig";
 }
 
+std::filesystem::path shipped_cache_dir() {
+  if (const char* d = std::getenv("NIBRIG_SHIPPED_CACHE")) return d;
+#ifdef NIBRIG_SHIPPED_CACHE_DIR
+  return NIBRIG_SHIPPED_CACHE_DIR;
+#else
+  return {};
+#endif
+}
+
+std::filesystem::path shipped_twin(const std::filesystem::path& user_cache_file) {
+  const auto shipped = shipped_cache_dir();
+  if (shipped.empty() || user_cache_file.parent_path() != user_cache_dir()) return {};
+  std::error_code error;
+  if (std::filesystem::equivalent(shipped, user_cache_dir(), error)) return {};
+  auto twin = shipped / user_cache_file.filename();
+  return std::filesystem::is_regular_file(twin, error) ? twin : std::filesystem::path();
+}
+
 void CacheKey::mix(const void* data, std::size_t size) {
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (std::size_t i = 0; i < size; ++i) {

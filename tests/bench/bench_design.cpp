@@ -7,7 +7,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <optional>
 
+#include "model/design/bundled_defaults.hpp"
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_search.hpp"
 #include "model/design/grid_guided_search.hpp"
@@ -206,5 +209,32 @@ void BM_DesignLineSearchGuided(benchmark::State& state) {
   state.counters["optimum_gap"] = std::abs(guided.result.best().distance - full.best().distance);
 }
 BENCHMARK(BM_DesignLineSearchGuided)->Iterations(1)->Unit(benchmark::kSecond);
+
+// A first start on the bundled inputs with an empty user cache: everything the panel and the
+// commands would compute (compute_bundled_defaults), read from the layer the build computed
+// (`shipped:1`) beside computed as a first start did before it (`shipped:0`, the layer switched
+// off).
+void BM_BundledDefaultsFirstStart(benchmark::State& state) {
+  const bool shipped = state.range(0) != 0;
+  const auto cache = nibrig::test::scratch_dir("bench_first_start") / "cache";
+  std::optional<nibrig::test::ScopedEnvironment> no_layer;
+  if (!shipped) no_layer.emplace("NIBRIG_SHIPPED_CACHE", "");
+  const nibrig::test::ScopedCacheDir user(cache);
+  std::size_t computed = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::filesystem::remove_all(cache);
+    state.ResumeTiming();
+    computed = 0;
+    for (const auto& d : design::compute_bundled_defaults()) computed += d.computed;
+  }
+  state.counters["computed"] = static_cast<double>(computed);
+}
+BENCHMARK(BM_BundledDefaultsFirstStart)
+    ->ArgName("shipped")
+    ->Arg(1)
+    ->Arg(0)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -41,6 +41,8 @@ void add_rig_parts_command(CLI::App* rig, std::shared_ptr<const GlobalOptions> g
 void add_material_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `defaults`: the bundled defaults computed into the user cache (the build runs it).
+void add_defaults_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 
 // Threads to use for parallel work: the --threads option, or the number of cores.
 unsigned worker_threads(const GlobalOptions& global);

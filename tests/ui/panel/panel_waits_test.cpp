@@ -1,9 +1,9 @@
 // What a person waiting is told, in a real window: the first click on a tool with nothing in the
-// user cache says that the stylus's modes are being solved (and kept), and its Cancel drops the
-// sound being made; F12 shows the frame times.
-#include <gtest/gtest.h>
-
+// user cache nor shipped with the build says that the stylus's modes are being solved (and kept),
+// and its Cancel drops the sound being made; with the build's shipped modes nothing is solved; F12
+// shows the frame times.
 #include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -11,6 +11,8 @@
 #include <thread>
 
 #include "model/design/stylus_modes.hpp"
+#include "model/io/user_cache.hpp"
+#include "tests/support/test_paths.hpp"
 #include "tests/ui/panel/panel_test_setup.hpp"
 #include "tests/ui/panel/test_space.hpp"
 #include "ui/panel/panel.hpp"
@@ -39,6 +41,8 @@ TEST(PanelWaits, TheFirstClickSaysTheStylusModesAreSolvedAndCancelDropsIt) {
   const auto dir = std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_waits";
   std::filesystem::remove_all(dir);
   ::setenv("NIBRIG_CACHE", (dir / "cache").c_str(), 1);  // empty: nothing solved yet
+  // Nor shipped: the modes of a stylus the build did not solve (a lab's own template).
+  const nibrig::test::ScopedEnvironment no_shipped_layer("NIBRIG_SHIPPED_CACHE", "");
   PanelSetup setup;
   setup.space = testing::write_small_space(dir);
   WaitSession s(setup);
@@ -73,6 +77,30 @@ TEST(PanelWaits, TheFirstClickSaysTheStylusModesAreSolvedAndCancelDropsIt) {
   EXPECT_TRUE(s.panel.frame_times_shown());
   press(GLFW_KEY_F12);
   EXPECT_FALSE(s.panel.frame_times_shown());
+}
+
+// The bundled stylus's modes, shipped with the build (model/design/bundled_defaults.hpp): the first
+// click on a tool with an empty user cache solves nothing and writes nothing there.
+TEST(PanelWaits, WithTheShippedModesTheFirstClickSolvesNothing) {
+  if (model::io::shipped_cache_dir().empty())
+    GTEST_SKIP() << "a build without the shipped defaults";
+  const auto dir =
+      std::filesystem::path(NIBRIG_TEST_BINARY_DIR) / "scratch" / "panel_waits_shipped";
+  std::filesystem::remove_all(dir);
+  const nibrig::test::ScopedCacheDir cache(dir / "cache");
+  PanelSetup setup;
+  setup.space = testing::write_small_space(dir);
+  WaitSession s(setup);
+  ASSERT_TRUE(s.until([&] { return s.panel.settled(); }));
+  s.panel.audio().play({{"cryon", "office"}});
+  bool solving_said = false;
+  ASSERT_TRUE(s.until([&] {
+    solving_said |=
+        s.panel.audio().making_message().find("solving the stylus's modes") != std::string::npos;
+    return !s.panel.audio().playing().empty();
+  })) << s.panel.audio().error();
+  EXPECT_FALSE(solving_said);
+  EXPECT_FALSE(std::filesystem::exists(model::design::stylus_modes_file({})));
 }
 
 }  // namespace
