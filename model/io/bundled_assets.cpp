@@ -5,8 +5,20 @@
 
 namespace nibrig::model::io {
 
+std::filesystem::path installed_share_dir() {
+  static const std::filesystem::path found = [] {
+    std::error_code error;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) return std::filesystem::path();
+    auto share = exe.parent_path().parent_path() / "share" / "nibrig";
+    return std::filesystem::is_directory(share / "assets", error) ? share : std::filesystem::path();
+  }();
+  return found;
+}
+
 std::filesystem::path assets_dir() {
   if (const char* env = std::getenv("NIBRIG_ASSETS"); env != nullptr && *env != '\0') return env;
+  if (const auto share = installed_share_dir(); !share.empty()) return share / "assets";
   return std::filesystem::path(NIBRIG_SOURCE_DIR) / "assets";
 }
 

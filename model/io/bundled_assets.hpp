@@ -1,6 +1,6 @@
 // Where the bundled assets are (the default catalog, materials, stylus designs, threshold curve):
-// $NIBRIG_ASSETS, else the repository's assets/ folder this binary was built from. Every face
-// finds its defaults here.
+// $NIBRIG_ASSETS, else the installed share/nibrig/assets when the program is installed, else the
+// repository's assets/ folder this binary was built from. Every face finds its defaults here.
 #pragma once
 
 #include <filesystem>
@@ -8,6 +8,11 @@
 namespace nibrig::model::io {
 
 std::filesystem::path assets_dir();
+
+// <prefix>/share/nibrig for an installed program: the folder ../share/nibrig beside the running
+// executable's bin/ (cmake --install, the Debian packages), when it holds assets/; else empty (a
+// build tree). The Python module runs in python3, so it finds /usr/share/nibrig beside /usr/bin.
+std::filesystem::path installed_share_dir();
 
 // assets_dir() / relative, or a clear error naming what is missing and how to point at it.
 std::filesystem::path asset(const std::filesystem::path& relative);

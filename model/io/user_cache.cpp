@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "model/io/bounded_read.hpp"
+#include "model/io/bundled_assets.hpp"
 #include "model/io/json_fields.hpp"
 
 namespace nibrig::model::io {
@@ -19,6 +20,7 @@ std::filesystem::path user_cache_dir() {
 
 std::filesystem::path shipped_cache_dir() {
   if (const char* d = std::getenv("NIBRIG_SHIPPED_CACHE")) return d;
+  if (const auto share = installed_share_dir(); !share.empty()) return share / "defaults";
 #ifdef NIBRIG_SHIPPED_CACHE_DIR
   return NIBRIG_SHIPPED_CACHE_DIR;
 #else

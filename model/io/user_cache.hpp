@@ -16,7 +16,8 @@ std::filesystem::path user_cache_dir();
 // A read-only layer under the user cache: the bundled defaults computed when nibrig was built
 // (`nibrig defaults`, run by the build into its defaults/ folder), each named as the user cache
 // names it, so that a first start finds them at once. $NIBRIG_SHIPPED_CACHE when set (empty: none),
-// else the folder the build filled; empty for a build made without them. Never written to.
+// else an installed program's share/nibrig/defaults (bundled_assets.hpp), else the folder the build
+// filled; empty for a build made without them. Never written to.
 std::filesystem::path shipped_cache_dir();
 
 // For a file in the user cache (directly in user_cache_dir()), its twin in the shipped layer when

@@ -1,0 +1,22 @@
+# `cmake --install`: the programs, the bundled assets and the defaults the build computed, and the
+# rig's udev rule, in the GNU install directories. An installed program finds its assets and
+# defaults in <prefix>/share/nibrig beside its bin/ (model/io/bundled_assets.hpp), from any folder.
+include(GNUInstallDirs)
+
+set(NIBRIG_INSTALL_SHARE "${CMAKE_INSTALL_DATADIR}/nibrig")
+if(TARGET nibrig)
+  install(TARGETS nibrig RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT command)
+  # The README's pictures are not the program's.
+  install(DIRECTORY "${CMAKE_SOURCE_DIR}/assets/" DESTINATION "${NIBRIG_INSTALL_SHARE}/assets"
+          COMPONENT command PATTERN "readme" EXCLUDE)
+endif()
+if(TARGET nibrig-panel)
+  install(TARGETS nibrig-panel RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT panel)
+endif()
+if(NIBRIG_SHIPPED_DEFAULTS)
+  install(DIRECTORY "${NIBRIG_DEFAULTS_DIR}/" DESTINATION "${NIBRIG_INSTALL_SHARE}/defaults"
+          COMPONENT command FILES_MATCHING PATTERN "*.json")
+endif()
+# udev reads packaged rules from /usr/lib/udev/rules.d (the prefix's lib/, never lib/<multiarch>).
+install(FILES "${CMAKE_SOURCE_DIR}/rig/70-nibrig-rig.rules" DESTINATION "lib/udev/rules.d"
+        COMPONENT command)
