@@ -1,5 +1,5 @@
-# `cmake --install`: the programs, the bundled assets and the defaults the build computed, and the
-# rig's udev rule, in the GNU install directories. An installed program finds its assets and
+# `cmake --install`: the programs, the bundled assets and the defaults the build computed, the
+# manual pages and bash completion the command writes from its own parser, and the rig's udev rule, in the GNU install directories. An installed program finds its assets and
 # defaults in <prefix>/share/nibrig beside its bin/ (model/io/bundled_assets.hpp), from any folder.
 include(GNUInstallDirs)
 
@@ -9,6 +9,12 @@ if(TARGET nibrig)
   # The README's pictures are not the program's.
   install(DIRECTORY "${CMAKE_SOURCE_DIR}/assets/" DESTINATION "${NIBRIG_INSTALL_SHARE}/assets"
           COMPONENT command PATTERN "readme" EXCLUDE)
+endif()
+if(TARGET nibrig_docs_pages)
+  install(DIRECTORY "${NIBRIG_MAN_DIR}/" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1" COMPONENT command
+          FILES_MATCHING PATTERN "*.1")
+  install(FILES "${NIBRIG_COMPLETION}" DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions"
+          RENAME nibrig COMPONENT command)
 endif()
 if(TARGET nibrig-panel)
   install(TARGETS nibrig-panel RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT panel)

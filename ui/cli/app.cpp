@@ -87,6 +87,7 @@ int run(int argc, char** argv) {
   add_experiment_command(app, global);
   add_demo_command(app, global);
   add_defaults_command(app, global);
+  add_docs_command(app, global);
   add_global_options(app, global);
   check_outputs_before_running(app);
 

@@ -43,6 +43,8 @@ void add_experiment_command(CLI::App& app, std::shared_ptr<const GlobalOptions> 
 void add_demo_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 // `defaults`: the bundled defaults computed into the user cache (the build runs it).
 void add_defaults_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
+// `docs` (hidden): the manual pages and bash completion, written from the command line itself.
+void add_docs_command(CLI::App& app, std::shared_ptr<const GlobalOptions> global);
 
 // Threads to use for parallel work: the --threads option, or the number of cores.
 unsigned worker_threads(const GlobalOptions& global);

@@ -1,5 +1,6 @@
 // `cmake --install` of this tree into a prefix of the test's own: the command, its assets, the
-// defaults the build computed and the rig's udev rule land in the GNU directories, and the
+// defaults the build computed, its manual pages and completion, and the rig's udev rule land in
+// the GNU directories, and the
 // installed `nibrig` runs its demo from them, finding its assets and defaults beside its bin/
 // rather than in the source tree it was built from.
 #include <gtest/gtest.h>
@@ -32,6 +33,8 @@ TEST(Install, TheInstalledCommandRunsItsDemoFromItsOwnShareFolder) {
   EXPECT_TRUE(fs::is_regular_file(share / "assets" / "default_catalog.json"));
   EXPECT_FALSE(fs::exists(share / "assets" / "readme"));  // the README's pictures stay behind
   EXPECT_TRUE(fs::is_regular_file(prefix / "lib" / "udev" / "rules.d" / "70-nibrig-rig.rules"));
+  EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "man" / "man1" / "nibrig-design-loop.1"));
+  EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "bash-completion" / "completions" / "nibrig"));
 
   const nibrig::test::ScopedCacheDir cache(scratch / "cache");
   const auto demo =
