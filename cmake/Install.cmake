@@ -1,5 +1,6 @@
 # `cmake --install`: the programs, the bundled assets and the defaults the build computed, the
-# manual pages and bash completion the command writes from its own parser, and the rig's udev rule, in the GNU install directories. An installed program finds its assets and
+# manual pages and bash completion the command writes from its own parser, the Python package, and
+# the rig's udev rule, in the GNU install directories. An installed program finds its assets and
 # defaults in <prefix>/share/nibrig beside its bin/ (model/io/bundled_assets.hpp), from any folder.
 include(GNUInstallDirs)
 
@@ -15,6 +16,11 @@ if(TARGET nibrig_docs_pages)
           FILES_MATCHING PATTERN "*.1")
   install(FILES "${NIBRIG_COMPLETION}" DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions"
           RENAME nibrig COMPONENT command)
+endif()
+# Where Debian's python3 finds packages of the prefix (/usr/lib/python3/dist-packages).
+if(TARGET nibrig_python)
+  install(DIRECTORY "${CMAKE_BINARY_DIR}/python/nibrig" DESTINATION "lib/python3/dist-packages" COMPONENT python
+          PATTERN "__pycache__" EXCLUDE)
 endif()
 if(TARGET nibrig-panel)
   install(TARGETS nibrig-panel RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT panel)

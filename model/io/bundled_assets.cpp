@@ -1,17 +1,30 @@
 #include "model/io/bundled_assets.hpp"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <stdexcept>
 
 namespace nibrig::model::io {
 
 std::filesystem::path installed_share_dir() {
+  // Found from the file this code was loaded from: <prefix>/bin/nibrig, or the Python module's
+  // <prefix>/lib/python3/dist-packages/nibrig/_core.so, a few folders below <prefix>.
   static const std::filesystem::path found = [] {
     std::error_code error;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error) return std::filesystem::path();
-    auto share = exe.parent_path().parent_path() / "share" / "nibrig";
-    return std::filesystem::is_directory(share / "assets", error) ? share : std::filesystem::path();
+    std::filesystem::path object;
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&installed_share_dir), &info) != 0 &&
+        info.dli_fname != nullptr)
+      object = info.dli_fname;
+    if (!object.is_absolute()) object = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error || object.empty()) return std::filesystem::path();
+    auto folder = object.parent_path();
+    for (int up = 0; up < 5 && folder.has_relative_path(); ++up, folder = folder.parent_path()) {
+      const auto share = folder.parent_path() / "share" / "nibrig";
+      if (std::filesystem::is_directory(share / "assets", error)) return share;
+    }
+    return std::filesystem::path();
   }();
   return found;
 }

@@ -9,9 +9,10 @@ namespace nibrig::model::io {
 
 std::filesystem::path assets_dir();
 
-// <prefix>/share/nibrig for an installed program: the folder ../share/nibrig beside the running
-// executable's bin/ (cmake --install, the Debian packages), when it holds assets/; else empty (a
-// build tree). The Python module runs in python3, so it finds /usr/share/nibrig beside /usr/bin.
+// <prefix>/share/nibrig for an installed program (cmake --install, the Debian packages): the first
+// share/nibrig holding assets/ beside a folder above the file this code runs from (<prefix>/bin/
+// nibrig, or the Python module under <prefix>/lib/python3/dist-packages); else empty (a build
+// tree).
 std::filesystem::path installed_share_dir();
 
 // assets_dir() / relative, or a clear error naming what is missing and how to point at it.

@@ -55,6 +55,27 @@ TEST(Install, TheInstalledCommandRunsItsDemoFromItsOwnShareFolder) {
     }
   }
 
+  // The Python package where Debian's python3 finds a prefix's packages, finding the same share
+  // folder from its own place.
+  const auto site = prefix / "lib" / "python3" / "dist-packages";
+  if (fs::is_directory(build / "python" / "nibrig")) {
+    const auto python = run_program({"cmake", "--install", build.string(), "--prefix",
+                                     prefix.string(), "--component", "python"},
+                                    scratch);
+    ASSERT_EQ(python.exit_code, 0) << python.output;
+    const auto imported = run_program({"env", "PYTHONPATH=" + site.string(),
+                                       "LSAN_OPTIONS=detect_leaks=0", "/usr/bin/python3", "-c",
+                                       "import nibrig, nibrig.measure; print(nibrig.__file__); "
+                                       "print(nibrig.measure.bundled_catalog())"},
+                                      scratch);
+    ASSERT_EQ(imported.exit_code, 0) << imported.output;
+    EXPECT_NE(imported.output.find((site / "nibrig" / "__init__.py").string()), std::string::npos)
+        << imported.output;
+    EXPECT_NE(imported.output.find((share / "assets" / "default_catalog.json").string()),
+              std::string::npos)
+        << imported.output;
+  }
+
   // Its assets are the installed ones: without the installed catalog it names the installed path,
   // not falling back on the source tree's.
   fs::remove(share / "assets" / "default_catalog.json");
