@@ -46,7 +46,7 @@ packages=(
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
 window=(xvfb xauth libgl1-mesa-dri)
-test_only=(libgtest-dev libgmock-dev groff-base umockdev libclang-rt-14-dev python3-pytest python3-nbclient python3-ipykernel python3-matplotlib python3-sklearn mypy prusa-slicer admesh unzip gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
+test_only=(libgtest-dev libgmock-dev groff-base desktop-file-utils umockdev libclang-rt-14-dev python3-pytest python3-nbclient python3-ipykernel python3-matplotlib python3-sklearn mypy prusa-slicer admesh unzip gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
 bench_only=(libbenchmark-dev python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.

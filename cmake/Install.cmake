@@ -1,6 +1,6 @@
 # `cmake --install`: the programs, the bundled assets and the defaults the build computed, the
-# manual pages and bash completion the command writes from its own parser, the Python package, and
-# the rig's udev rule, in the GNU install directories. An installed program finds its assets and
+# manual pages and bash completion the command writes from its own parser, the Python package, the
+# panel's desktop entry and icon, and the rig's udev rule, in the GNU install directories. An installed program finds its assets and
 # defaults in <prefix>/share/nibrig beside its bin/ (model/io/bundled_assets.hpp), from any folder.
 include(GNUInstallDirs)
 
@@ -24,6 +24,11 @@ if(TARGET nibrig_python)
 endif()
 if(TARGET nibrig-panel)
   install(TARGETS nibrig-panel RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT panel)
+  # The desktop's menu entry and its icon, found by name (Icon=nibrig-panel) in the hicolor theme.
+  install(FILES "${CMAKE_SOURCE_DIR}/ui/panel/nibrig-panel.desktop"
+          DESTINATION "${CMAKE_INSTALL_DATADIR}/applications" COMPONENT panel)
+  install(FILES "${CMAKE_SOURCE_DIR}/ui/panel/nibrig-panel.svg"
+          DESTINATION "${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps" COMPONENT panel)
 endif()
 if(NIBRIG_SHIPPED_DEFAULTS)
   install(DIRECTORY "${NIBRIG_DEFAULTS_DIR}/" DESTINATION "${NIBRIG_INSTALL_SHARE}/defaults"

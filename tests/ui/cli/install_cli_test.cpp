@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "model/io/user_cache.hpp"
@@ -74,6 +75,30 @@ TEST(Install, TheInstalledCommandRunsItsDemoFromItsOwnShareFolder) {
     EXPECT_NE(imported.output.find((share / "assets" / "default_catalog.json").string()),
               std::string::npos)
         << imported.output;
+  }
+
+  // The panel, its menu entry (valid to desktop-file-validate) and the icon the entry names.
+  if (fs::is_regular_file(build / "ui" / "panel" / "nibrig-panel")) {
+    const auto panel = run_program(
+        {"cmake", "--install", build.string(), "--prefix", prefix.string(), "--component", "panel"},
+        scratch);
+    ASSERT_EQ(panel.exit_code, 0) << panel.output;
+    EXPECT_TRUE(fs::is_regular_file(prefix / "bin" / "nibrig-panel"));
+    const auto entry = prefix / "share" / "applications" / "nibrig-panel.desktop";
+    const auto valid = run_program({"desktop-file-validate", entry.string()}, scratch);
+    EXPECT_EQ(valid.exit_code, 0) << valid.output;
+    EXPECT_EQ(valid.output, "");
+    // What it runs and shows are what was installed.
+    std::ifstream in(entry);
+    std::string exec, icon;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("Exec=", 0) == 0) exec = line.substr(5);
+      if (line.rfind("Icon=", 0) == 0) icon = line.substr(5);
+    }
+    EXPECT_TRUE(fs::is_regular_file(prefix / "bin" / exec)) << exec;
+    EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "icons" / "hicolor" / "scalable" / "apps" /
+                                    (icon + ".svg")))
+        << icon;
   }
 
   // Its assets are the installed ones: without the installed catalog it names the installed path,
