@@ -34,6 +34,11 @@ if(NIBRIG_SHIPPED_DEFAULTS)
   install(DIRECTORY "${NIBRIG_DEFAULTS_DIR}/" DESTINATION "${NIBRIG_INSTALL_SHARE}/defaults"
           COMPONENT command FILES_MATCHING PATTERN "*.json")
 endif()
+# The rig controller's firmware, for `nibrig rig flash` (rig/usb/firmware_flash.hpp).
+if(NIBRIG_BUILD_FIRMWARE)
+  install(FILES "${CMAKE_BINARY_DIR}/rig/firmware/nibrig-rig.hex" DESTINATION "${NIBRIG_INSTALL_SHARE}/firmware"
+          COMPONENT command)
+endif()
 # udev reads packaged rules from /usr/lib/udev/rules.d (the prefix's lib/, never lib/<multiarch>).
 install(FILES "${CMAKE_SOURCE_DIR}/rig/70-nibrig-rig.rules" DESTINATION "lib/udev/rules.d"
         COMPONENT command)

@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "model/io/bundled_assets.hpp"
 #include "rig/usb/usb_rig_controller.hpp"
 
 #ifndef NIBRIG_FIRMWARE_HEX_DEFAULT
@@ -81,6 +82,11 @@ std::filesystem::path find_firmware_hex(const std::optional<std::filesystem::pat
       throw FirmwareFlashError(std::string("$NIBRIG_FIRMWARE_HEX=") + env + ": no such file");
     }
     return env;
+  }
+  // An installed nibrig's (cmake --install of a tree that built the firmware).
+  if (const auto share = model::io::installed_share_dir(); !share.empty()) {
+    const auto installed = share / "firmware" / "nibrig-rig.hex";
+    if (fs::is_regular_file(installed)) return installed;
   }
   const fs::path built = NIBRIG_FIRMWARE_HEX_DEFAULT;
   if (built.empty() || !fs::is_regular_file(built)) {

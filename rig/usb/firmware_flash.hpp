@@ -22,8 +22,9 @@ class FirmwareFlashError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The firmware to write: `given` (--hex), else $NIBRIG_FIRMWARE_HEX, else what this build tree's
-// firmware build writes. Throws FirmwareFlashError naming where it looked and how to build it.
+// The firmware to write: `given` (--hex), else $NIBRIG_FIRMWARE_HEX, else an installed nibrig's
+// share/nibrig/firmware/nibrig-rig.hex, else what this build tree's firmware build writes. Throws
+// FirmwareFlashError naming where it looked and how to build it.
 std::filesystem::path find_firmware_hex(const std::optional<std::filesystem::path>& given);
 
 struct FirmwareFlashOptions {

@@ -200,8 +200,10 @@ void add_rig_setup_commands(CLI::App* rig_cmd, std::shared_ptr<const GlobalOptio
   fl->add_option("--port", f->port,
                  "The bootloader's serial port, when you pressed the board's reset button (e.g. /dev/ttyACM0); "
                  "without it the controller is asked into its bootloader");
-  fl->add_option("--hex", f->hex,
-                 "The firmware (default: $NIBRIG_FIRMWARE_HEX, else this build's rig/firmware/nibrig-rig.hex)");
+  fl->add_option(
+      "--hex", f->hex,
+      "The firmware (default: $NIBRIG_FIRMWARE_HEX, else the installed "
+      "share/nibrig/firmware/nibrig-rig.hex, else this build's rig/firmware/nibrig-rig.hex)");
   add_json_option(fl, f->json, "the controller as it came back");
   fl->callback([f, global] {
     configure_logging(global->verbosity);
