@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "model/design/descriptor_uncertainty.hpp"
 #include "model/design/design_response_grid.hpp"
@@ -106,6 +107,16 @@ space::DescriptorMap descriptor_space(const io::Catalog& catalog) {
   return space::fit_descriptor_map(coordinates, table.values, table.names);
 }
 
+// The catalog's vero4 on office, placed in `map` from its descriptors: the searches' target.
+space::Placement vero4_office(const space::DescriptorMap& map) {
+  const auto table = space::descriptors_of_catalog(real().catalog, "bundled catalog", 2);
+  const auto row =
+      std::find(table.rows.begin(), table.rows.end(), "vero4/office") - table.rows.begin();
+  if (static_cast<std::size_t>(row) >= table.rows.size())
+    throw std::runtime_error("no vero4/office in the catalog");
+  return space::place_from_descriptors(map, table.values.row(row).transpose());
+}
+
 TEST(DesignGridFem, PredictToolInTwoStepsIsPredictToolWhole) {
   const PredictionSetup setup = setup_of(real());
   const DesignPoint point = grid_point(real_grid().axes, 0.5, 0.0025);
@@ -184,10 +195,7 @@ namespace {
 TEST(DesignGridFem, ASearchThroughTheGridEvaluatesNodesAsTheFemSearchDoes) {
   const PredictionSetup setup = setup_of(real());
   const space::DescriptorMap map = descriptor_space(real().catalog);
-  const auto table = space::descriptors_of_catalog(real().catalog, "bundled catalog", 2);
-  const auto row = std::find(table.rows.begin(), table.rows.end(), "vero4/office") - table.rows.begin();
-  ASSERT_LT(static_cast<std::size_t>(row), table.rows.size());
-  const space::Placement target = space::place_from_descriptors(map, table.values.row(row).transpose());
+  const space::Placement target = vero4_office(map);
   const Evaluate on_grid = distance_to_target(grid_predictor(setup, real_grid(), "office"), map, target, 500);
   const Evaluate by_fem = distance_to_target(setup, "office", map, target, 500);
   const DesignPoint node = grid_point(real_grid().axes, 0.5, 0.0025);
@@ -219,12 +227,7 @@ namespace {
 TEST(DesignGridFem, AGuidedSearchFindsTheFullSearchsOptimumWithinTheGridsErrorWithFewerSolves) {
   const PredictionSetup setup = setup_of(real());
   const space::DescriptorMap map = descriptor_space(real().catalog);
-  const auto table = space::descriptors_of_catalog(real().catalog, "bundled catalog", 2);
-  const auto row =
-      std::find(table.rows.begin(), table.rows.end(), "vero4/office") - table.rows.begin();
-  ASSERT_LT(static_cast<std::size_t>(row), table.rows.size());
-  const space::Placement target =
-      space::place_from_descriptors(map, table.values.row(row).transpose());
+  const space::Placement target = vero4_office(map);
   const Evaluate by_fem = distance_to_target(setup, "office", map, target, 500);
   const DesignPoint a = parse_design_point("vero,tip=1mm"), b = parse_design_point("DM85,tip=4mm");
 
