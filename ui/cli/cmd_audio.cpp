@@ -67,9 +67,11 @@ void devices(const std::filesystem::path& json) {
 }
 
 // The engine follows the pen until --seconds pass or the tablet goes; each stroke on its own line,
-// and with --record each stroke of the session in one drawing file.
+// and with --record each stroke of the session in one drawing file. Strokes are timed from
+// `started_s`, on the pen's clock: when the stream opened, so that a stroke drawn as soon as the
+// output appears is not timed before the audition began.
 nlohmann::json play_with_pen(playback::LiveAudition& audition, rig::pen::PenStylus& pen,
-                             const AuditionOptions& o) {
+                             const AuditionOptions& o, double started_s) {
   const auto& t = pen.tablet();
   const auto& curve = pen.curve();
   std::printf("pen: \"%s\" (%.1f x %.1f mm); force from %s\n", t.name.c_str(), t.width_mm, t.height_mm,
@@ -87,7 +89,6 @@ nlohmann::json play_with_pen(playback::LiveAudition& audition, rig::pen::PenStyl
     std::printf("recording to %s\n", recorder->start().string().c_str());
   }
   nlohmann::json strokes = nlohmann::json::array();
-  const double started_s = rig::pen::pen_clock_now_s();
   rig::pen::PenPlayEvents events;
   events.stroke = [&strokes, started_s](const rig::pen::PenStrokeNote& note) {
     strokes.push_back(
@@ -180,6 +181,7 @@ void audition(const AuditionOptions& o) {
   }
   const double seconds = o.seconds > 0 ? o.seconds : stroke.natural_seconds;
 
+  const double started_s = rig::pen::pen_clock_now_s();
   audition.open(device);
   const auto info = *audition.stream_info();
   std::printf("playing %s through %s on %s '%s' channel %u at %u Hz, %u-frame periods; %s\n",
@@ -193,7 +195,7 @@ void audition(const AuditionOptions& o) {
   result["switches"] = nlohmann::json::array();
   result["device_lost_at_s"] = nlohmann::json::array();
   if (pen) {
-    result["pen"] = play_with_pen(audition, *pen, o);
+    result["pen"] = play_with_pen(audition, *pen, o, started_s);
   } else {
     playback::AlternationEvents events;
     events.switched = [&names, &tools, &result](double t, std::size_t slot) {
