@@ -8,6 +8,8 @@
 #include "model/design/prediction_inputs.hpp"
 #include "model/design/stylus_modes.hpp"
 #include "model/io/bundled_assets.hpp"
+#include "model/io/user_cache.hpp"
+#include "model/io/user_cache.hpp"
 
 namespace nibrig::model::design {
 
@@ -101,9 +103,10 @@ ToolSound predicted_sound(PredictedTool p) {
 }
 
 bool ToolSounds::solves_stylus_modes() const {
+  if (state_->stylus) return false;
   std::error_code error;
-  return !state_->stylus &&
-         !std::filesystem::exists(stylus_modes_file(state_->options.stylus_design), error);
+  const auto file = stylus_modes_file(state_->options.stylus_design);
+  return !std::filesystem::exists(file, error) && io::shipped_twin(file).empty();  // nor shipped
 }
 
 ToolSound ToolSounds::sound(const std::string& tool, const std::string& surface) {

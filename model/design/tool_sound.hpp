@@ -67,7 +67,8 @@ class ToolSounds {
   void check(const std::string& tool, const std::string& surface) const;
   ToolSound sound(const std::string& tool, const std::string& surface);
   // Whether sound() for this catalog tool solves the stylus's modes first (seconds; once, then
-  // kept in the user cache): what a face tells a person who waits.
+  // kept in the user cache; never when the build shipped them): what a face tells a person who
+  // waits.
   bool solves_stylus_modes() const;
   // A design point's full prediction (its descriptors, μ, response), for faces that show them.
   PredictedTool predict(const std::string& point, const std::string& surface);
