@@ -9,7 +9,6 @@
 #include "model/design/stylus_modes.hpp"
 #include "model/io/bundled_assets.hpp"
 #include "model/io/user_cache.hpp"
-#include "model/io/user_cache.hpp"
 
 namespace nibrig::model::design {
 
