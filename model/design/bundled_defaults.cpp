@@ -55,9 +55,7 @@ std::vector<BundledDefault> compute_bundled_defaults(const DefaultsOptions& opti
     inputs_options.materials = options.materials;
     const auto inputs =
         load_prediction_inputs(inputs_options, panel_model_file, std::move(panel_model));
-    const auto& tips = inputs->model.tip_log_gain;
-    const GridAxes axes = even_axes("vero", "DM85", kDefaultFractionPoints, tips.begin()->first,
-                                    tips.rbegin()->first, kDefaultTipPoints);
+    const GridAxes axes = default_grid_axes(*inputs, "vero", "DM85");
     Cached<DesignResponseGrid> grid;
     grid.file = design_grid_cache_file(design_grid_cache_key(*inputs, axes));
     const auto shipped = io::shipped_twin(grid.file);

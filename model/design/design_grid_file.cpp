@@ -46,6 +46,13 @@ std::string design_grid_cache_key(const PredictionInputs& inputs, const GridAxes
   return key.hex();
 }
 
+GridAxes default_grid_axes(const PredictionInputs& inputs, const std::string& material_a,
+                           const std::string& material_b) {
+  const auto& tips = inputs.model.tip_log_gain;
+  return even_axes(material_a, material_b, kDefaultFractionPoints, tips.begin()->first,
+                   tips.rbegin()->first, kDefaultTipPoints);
+}
+
 std::filesystem::path design_grid_cache_file(const std::string& key) {
   return io::user_cache_dir() / ("design-grid-" + key + ".json");
 }

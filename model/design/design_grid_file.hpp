@@ -26,6 +26,12 @@ inline constexpr long long kDesignGridFormatVersion = 1;
 // that cannot be read.
 std::string design_grid_cache_key(const PredictionInputs& inputs, const GridAxes& axes);
 
+// The default grid of two materials for these inputs: kDefaultFractionPoints mixes ×
+// kDefaultTipPoints tips over the forcing model's fitted tips (what `design --grid`, Python's
+// search(grid=True) and the shipped defaults solve).
+GridAxes default_grid_axes(const PredictionInputs& inputs, const std::string& material_a,
+                           const std::string& material_b);
+
 // user_cache_dir() / "design-grid-<key>.json".
 std::filesystem::path design_grid_cache_file(const std::string& key);
 

@@ -226,11 +226,8 @@ void run_design(const DesignOptions& o) {
   InterruptScope interrupt;
   std::optional<design::DesignResponseGrid> grid;
   if (o.grid) {
-    const auto& tips = inputs->model.tip_log_gain;
-    const auto axes =
-        design::even_axes(search.request().first_material, search.request().second_material,
-                          design::kDefaultFractionPoints, tips.begin()->first, tips.rbegin()->first,
-                          design::kDefaultTipPoints);
+    const auto axes = design::default_grid_axes(*inputs, search.request().first_material,
+                                                search.request().second_material);
     try {
       grid = design::cached_design_response_grid(
           *inputs, axes, progress_bar("solving the design grid (once, then kept)"),

@@ -146,11 +146,8 @@ Search search_designs(const Designer& d, const Space& s, const py::object& targe
           out.result = search.run(*d.inputs, stop, counted).result;
           return;
         }
-        const auto& tips = d.inputs->model.tip_log_gain;
         const auto grid = design::cached_design_response_grid(
-            *d.inputs,
-            design::even_axes(mix_a, mix_b, design::kDefaultFractionPoints, tips.begin()->first,
-                              tips.rbegin()->first, design::kDefaultTipPoints),
+            *d.inputs, design::default_grid_axes(*d.inputs, mix_a, mix_b),
             [&](std::size_t done, std::size_t total) {
               report("solving the design grid", done, total);
             },
