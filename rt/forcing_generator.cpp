@@ -1,8 +1,8 @@
 // How the noise is made. Every hop (half a frame) a new frame of independent complex Gaussian bins
 // Z_k is drawn; for each table speed s the frame Z_k·M_s(k) is inverse-transformed and multiplied
 // by a sine window, and each output sample is the sum of two such frames, 50 % overlapped. The work
-// of a frame is spread over the calls of the hop before it and the overlap-add is done as samples
-// are read, so no call pays for a whole frame (when several warm voices hopped in the same call,
+// of a frame, its overlap-add included, is spread over the calls of the hop before it, so no call
+// pays for a whole frame (when several warm voices hopped in the same call,
 // moving their frames cost up to a millisecond). The sine window's squares sum to 1 at 50 %
 // overlap, so the streams are stationary Gaussian processes with the table's spectra, and frames
 // never repeat (xoshiro256**), so nothing in the output is periodic: a fixed-phase sum of
@@ -10,7 +10,7 @@
 // are coherent: mixing two of them with weights w and 1−w gives noise whose amplitude spectrum is
 // exactly w·M_s + (1−w)·M_{s+1}. The speed therefore acts through per-sample weights, with no
 // filter state to update and no lag; the only cost is computing every speed's stream (one inverse
-// FFT per speed per hop).
+// FFT per speed per hop, planned by measuring: it is the engine's largest cost after the modes).
 #include "rt/forcing_generator.hpp"
 
 #include <algorithm>
@@ -42,8 +42,8 @@ double step_phase(std::uint64_t seed) {
 ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
     : table_(std::move(table)),
       noise_(seed),
-      fft_(table_ ? table_->frame_length() : 2,
-           model::numeric::RealFft::Plans::forward_and_backward),
+      fft_(table_ ? table_->frame_length() : 2, model::numeric::RealFft::Plans::backward,
+           model::numeric::RealFft::Planning::measured),
       frame_(table_ ? table_->frame_length() : 2),
       hop_(frame_ / 2),
       step_phase_(step_phase(seed)) {
@@ -52,7 +52,7 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
   for (std::size_t n = 0; n < frame_; ++n)
     window_[n] = std::sin(std::numbers::pi * (static_cast<double>(n) + 0.5) /
                           static_cast<double>(frame_));
-  frames_.assign(3 * table_->speeds().size() * frame_, 0.0);
+  frames_.assign(2 * table_->speeds().size() * frame_, 0.0);
   z_.resize(table_->bins());
   for (auto* draws : {&draw_re_, &draw_im_, &draw_scratch_})
     draws->resize(table_->bins() / kNoiseChunks + 1);
@@ -82,11 +82,15 @@ void ForcingGenerator::prepare_next_frame_step() noexcept {
     const double scale = 1.0 / static_cast<double>(frame_);  // FFTW's backward is unnormalised
     auto spectrum = fft_.spectrum();
     const auto magnitude = table_->magnitudes(s);
-    for (std::size_t k = 0; k < bins; ++k) spectrum[k] = z_[k] * magnitude[k];
+    const std::size_t active = table_->active_bins();
+    for (std::size_t k = 0; k < active; ++k) spectrum[k] = z_[k] * magnitude[k];
+    std::fill(spectrum.begin() + static_cast<std::ptrdiff_t>(active), spectrum.end(), 0.0);
     fft_.backward();
     const auto real = fft_.real();
     double* next = frame_slot(next_, s);
+    const double* current = frame_slot(current_, s);
     for (std::size_t n = 0; n < frame_; ++n) next[n] = window_[n] * real[n] * scale;
+    for (std::size_t n = 0; n < hop_; ++n) next[n] += current[hop_ + n];
   }
   ++steps_done_;
 }
@@ -97,10 +101,7 @@ void ForcingGenerator::finish_next_frame() noexcept {
 
 void ForcingGenerator::start_next_hop() noexcept {
   finish_next_frame();  // normally done already, spread over the calls of the hop
-  const std::size_t freed = previous_;
-  previous_ = current_;
-  current_ = next_;
-  next_ = freed;
+  std::swap(current_, next_);
   steps_done_ = 0;
   position_ = 0;
 }
@@ -123,11 +124,7 @@ void ForcingGenerator::generate(const double* speed_m_s, const double* normal_fo
     const double v = std::isfinite(speed_m_s[i]) ? std::max(0.0, speed_m_s[i]) : 0.0;
     const double force = std::isfinite(normal_force_n[i]) ? normal_force_n[i] : 0.0;
     const double gain = std::clamp(force / kReferenceNormalForce, 0.0, kMaxNormalForceRatio);
-    // Overlap-add as the samples are read: the previous frame's second half plus the current
-    // frame's first half.
-    auto stream = [&](std::size_t s) {
-      return frame_slot(previous_, s)[hop_ + position_] + frame_slot(current_, s)[position_];
-    };
+    auto stream = [&](std::size_t s) { return frame_slot(current_, s)[position_]; };
     double value;
     if (v <= speeds.front()) {
       value = (v / speeds.front()) * stream(0);

@@ -40,7 +40,8 @@ class ForcingGenerator {
   std::uint64_t samples_above_speed_range() const noexcept { return above_range_; }
 
   // The work of one frame, in steps: kNoiseChunks draws of a part of Z, then one windowed inverse
-  // FFT per table speed; and how many of the next frame's are done (for a test of when they are).
+  // FFT per table speed, overlap-added; and how many of the next frame's are done (for a test of
+  // when they are).
   std::size_t frame_steps() const noexcept;
   std::size_t frame_steps_done() const noexcept { return steps_done_; }
 
@@ -60,11 +61,12 @@ class ForcingGenerator {
   std::vector<double> window_;
   std::vector<std::complex<double>> z_;  // this frame's complex Gaussian bins
   std::vector<double> draw_re_, draw_im_, draw_scratch_;  // a chunk's Gaussian pairs
-  // Three slots of speeds × frame windowed frames: the previous frame (its second half is being
-  // handed out), the current one (its first half), and the next (being made). A hop only renames
-  // them, so no call pays for moving a whole frame.
+  // Two slots of speeds × frame windowed frames: the current one, whose first half already holds
+  // the overlap-add of the frame before (its first half is being handed out), and the next (being
+  // made, the current one's second half added to it as it is). A hop only swaps them, so no call
+  // pays for moving a whole frame.
   std::vector<double> frames_;
-  std::size_t previous_ = 0, current_ = 1, next_ = 2;
+  std::size_t current_ = 0, next_ = 1;
   std::size_t steps_done_ = 0;   // of the next frame (see frame_steps)
   std::size_t position_;         // next sample of the current hop to hand out
   std::uint64_t above_range_ = 0;

@@ -83,6 +83,8 @@ ForcingTable::ForcingTable(const model::io::VelocitySpectrum& target, double sam
     const std::span<double> row(magnitudes_.data() + s * bins() + 1, bins() - 2);
     interpolate_rising(target.frequencies_hz, target.amplitude_m_s2[s], sample_rate_hz / n, row);
     for (double& m : row) m *= per_amplitude;
+    for (std::size_t k = bins(); k > active_bins_; --k)
+      if (magnitudes_[s * bins() + k - 1] != 0.0) active_bins_ = k;
   }
 }
 

@@ -36,10 +36,15 @@ class ForcingTable {
   std::span<const double> magnitudes(std::size_t s) const noexcept {
     return {magnitudes_.data() + s * bins(), bins()};
   }
+  // One past the last bin that any speed's magnitudes reach: the bins above are zero for every
+  // speed (the target ends far below the Nyquist frequency), so a frame's spectrum is made up to
+  // it.
+  std::size_t active_bins() const noexcept { return active_bins_; }
 
  private:
   double sample_rate_;
   std::size_t frame_length_;
+  std::size_t active_bins_ = 0;
   std::vector<double> speeds_;
   std::vector<double> magnitudes_;  // speeds × bins, row-major
 };

@@ -17,7 +17,7 @@ namespace nibrig::model::numeric {
 // is handed to FFTW as the one and read by the callers as the other.
 static_assert(sizeof(std::complex<double>) == sizeof(fftw_complex));
 
-RealFft::RealFft(std::size_t n, Plans plans) {
+RealFft::RealFft(std::size_t n, Plans plans, Planning planning) {
   if (n < 1 || n > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw std::invalid_argument("RealFft: size must be 1 to " +
                                 std::to_string(std::numeric_limits<int>::max()) + ", got " +
@@ -31,14 +31,16 @@ RealFft::RealFft(std::size_t n, Plans plans) {
     throw std::bad_alloc();
   }
   auto* spectrum = reinterpret_cast<fftw_complex*>(spectrum_);
+  const unsigned flags = planning == Planning::measured ? FFTW_MEASURE : FFTW_ESTIMATE;
   {
     std::lock_guard lock(detail::fftw_planner_mutex());
-    forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(n), real_, spectrum, FFTW_ESTIMATE);
-    if (plans == Plans::forward_and_backward) {
-      backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum, real_, FFTW_ESTIMATE);
-    }
+    if (plans != Plans::backward)
+      forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(n), real_, spectrum, flags);
+    if (plans != Plans::forward)
+      backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum, real_, flags);
   }
-  if (forward_ == nullptr || (plans == Plans::forward_and_backward && backward_ == nullptr)) {
+  if ((plans != Plans::backward && forward_ == nullptr) ||
+      (plans != Plans::forward && backward_ == nullptr)) {
     release();
     throw std::runtime_error("RealFft: FFTW could not make a plan for " + std::to_string(n) +
                              " points");
@@ -66,7 +68,12 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
   return *this;
 }
 
-void RealFft::forward() { fftw_execute(forward_); }
+void RealFft::forward() {
+  if (forward_ == nullptr) {
+    throw std::logic_error("RealFft: forward() on a transform made without a forward plan");
+  }
+  fftw_execute(forward_);
+}
 
 void RealFft::backward() {
   if (backward_ == nullptr) {
