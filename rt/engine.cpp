@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -270,22 +269,10 @@ void Engine::render_piece(float* out, std::size_t frames) noexcept {
   output_.process(out, frames);
 }
 
-namespace {
-
-// CPU time of the calling thread: an overrun is work that did not fit the period, and this does
-// not count the time the thread was preempted (a shared machine without real-time scheduling
-// preempts it; that shows in the device's xruns and the wall-time histogram instead).
-double thread_cpu_seconds() noexcept {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-}  // namespace
-
 void Engine::render(float* out, std::size_t frames) noexcept {
   const auto start = std::chrono::steady_clock::now();
-  const double cpu_start = thread_cpu_seconds();
+  const double period = static_cast<double>(frames) / settings_.sample_rate_hz;
+  cpu_clock_.block_starts(std::chrono::duration<double>(start.time_since_epoch()).count(), period);
   {
     DenormalGuard flush_to_zero;
     for (std::size_t done = 0; done < frames;) {
@@ -295,11 +282,7 @@ void Engine::render(float* out, std::size_t frames) noexcept {
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double period = static_cast<double>(frames) / settings_.sample_rate_hz;
-  // A thread's CPU time within an interval never exceeds the interval, so only a block whose wall
-  // time passed its period can have overrun it. Only then is the thread's CPU clock read again: it
-  // is a system call (no vDSO), and two per block were a fifth of the engine's whole cost.
-  const double cpu = seconds > period ? thread_cpu_seconds() - cpu_start : seconds;
+  const double cpu = cpu_clock_.block_ends(seconds, period);
   constexpr auto relaxed = std::memory_order_relaxed;
   stats_.callbacks.fetch_add(1, relaxed);
   stats_.frames.fetch_add(frames, relaxed);

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "rt/block_cpu_clock.hpp"
 #include "rt/block_renderer.hpp"
 #include "rt/engine_stats.hpp"
 #include "rt/fir_filter.hpp"
@@ -147,6 +148,7 @@ class Engine final : public BlockRenderer {
   std::vector<double> speed_buffer_, force_buffer_, voice_buffer_, mix_buffer_;
   Upsampler upsampler_;
   OutputStage output_;
+  BlockCpuClock cpu_clock_;
   AtomicEngineStats stats_;
 };
 

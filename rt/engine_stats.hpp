@@ -25,8 +25,9 @@ struct EngineStats {
   std::uint64_t overruns = 0;
   std::uint64_t device_xruns = 0;  // reported by the audio back end (playback/)
   double max_callback_s = 0;
-  // The largest CPU time of one block (what overruns compare); a block within its period counts
-  // its wall time, which bounds its CPU time (the CPU clock is read only past the period).
+  // The largest CPU time of one block (what overruns compare), an upper bound: a block within its
+  // period counts its wall time, and one past it at most period/8 more than its own
+  // (BlockCpuClock).
   double max_callback_cpu_s = 0;
   std::array<std::uint64_t, kCallbackTimeBins> callback_time_histogram{};
   double peak_output = 0;                 // largest |sample| sent to the device (full scale 1)
