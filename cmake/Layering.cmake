@@ -54,6 +54,13 @@ function(nibrig_check_layering module)
   nibrig_check_includes(${module} ${allowed_${module}} EXCEPT ${except_${module}})
 endfunction()
 
+# Headers are included by their path from the source root ("rt/engine.hpp"); installed, the same
+# paths lie under include/nibrig (cmake/Export.cmake).
+function(nibrig_source_includes name scope)
+  target_include_directories(${name} ${scope} $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}>
+                                              $<INSTALL_INTERFACE:include/nibrig>)
+endfunction()
+
 # Adds the library of a module from every .cpp below its folder. Modules without sources yet are
 # interface targets so that the dependency graph already has its final shape.
 function(nibrig_module_library name module)
@@ -66,11 +73,11 @@ function(nibrig_module_library name module)
   endforeach()
   if(sources)
     add_library(${name} STATIC ${sources})
-    target_include_directories(${name} PUBLIC ${CMAKE_SOURCE_DIR})
+    nibrig_source_includes(${name} PUBLIC)
     target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
   else()
     add_library(${name} INTERFACE)
-    target_include_directories(${name} INTERFACE ${CMAKE_SOURCE_DIR})
+    nibrig_source_includes(${name} INTERFACE)
     target_link_libraries(${name} INTERFACE ${ARG_DEPENDS})
   endif()
 endfunction()
