@@ -6,21 +6,46 @@ include(GNUInstallDirs)
 
 set(NIBRIG_INSTALL_SHARE "${CMAKE_INSTALL_DATADIR}/nibrig")
 if(TARGET nibrig)
-  install(TARGETS nibrig RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT command)
+  # The tests' tree links LeakSanitizer into `nibrig` (NIBRIG_LEAK_CHECK), which a user's must not
+  # have: there the command is linked again without it, from the same objects, and that one is
+  # installed, so that `cmake --install` and the packages of any tree hold the command a user builds.
+  set(nibrig_installed nibrig)
+  if(NIBRIG_LEAK_CHECK AND NOT NIBRIG_SANITIZE)
+    add_executable(nibrig_installed "${CMAKE_SOURCE_DIR}/ui/cli/main.cpp")
+    target_link_libraries(nibrig_installed PRIVATE nibrig_cli)
+    set_target_properties(nibrig_installed PROPERTIES OUTPUT_NAME nibrig
+      RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/installed-command")
+    set(nibrig_installed nibrig_installed)
+  endif()
+  install(TARGETS ${nibrig_installed} RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT command)
   # The README's pictures are not the program's.
   install(DIRECTORY "${CMAKE_SOURCE_DIR}/assets/" DESTINATION "${NIBRIG_INSTALL_SHARE}/assets"
           COMPONENT command PATTERN "readme" EXCLUDE)
 endif()
 if(TARGET nibrig_docs_pages)
-  install(DIRECTORY "${NIBRIG_MAN_DIR}/" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1" COMPONENT command
-          FILES_MATCHING PATTERN "*.1")
+  # The manual pages installed as Debian's policy has them and man reads them: gzip -9, no name or
+  # time stamp in the header, so the same pages make the same files.
+  set(man_gz "${CMAKE_BINARY_DIR}/docs/man-gz")
+  add_custom_command(OUTPUT "${man_gz}/nibrig.1.gz"
+    COMMAND "${CMAKE_COMMAND}" -E rm -rf "${man_gz}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${man_gz}"
+    COMMAND sh -c [[for page in "$0"/*.1; do gzip -9n -c "$page" >"$1/${page##*/}.gz" || exit 1; done]]
+            "${NIBRIG_MAN_DIR}" "${man_gz}"
+    DEPENDS "${NIBRIG_MAN_DIR}/nibrig.1" nibrig_docs_pages
+    COMMENT "Compressing the manual pages"
+    VERBATIM)
+  add_custom_target(nibrig_man_gz ALL DEPENDS "${man_gz}/nibrig.1.gz")
+  install(DIRECTORY "${man_gz}/" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1" COMPONENT command
+          FILES_MATCHING PATTERN "*.1.gz")
   install(FILES "${NIBRIG_COMPLETION}" DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions"
           RENAME nibrig COMPONENT command)
 endif()
 # Where Debian's python3 finds packages of the prefix (/usr/lib/python3/dist-packages).
 if(TARGET nibrig_python)
+  # The compiled module as a target, so that an install that strips (the packages') strips it too.
   install(DIRECTORY "${CMAKE_BINARY_DIR}/python/nibrig" DESTINATION "lib/python3/dist-packages" COMPONENT python
-          PATTERN "__pycache__" EXCLUDE)
+          PATTERN "__pycache__" EXCLUDE PATTERN "_core*.so" EXCLUDE)
+  install(TARGETS nibrig_python LIBRARY DESTINATION "lib/python3/dist-packages/nibrig" COMPONENT python)
 endif()
 if(TARGET nibrig-panel)
   install(TARGETS nibrig-panel RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT panel)

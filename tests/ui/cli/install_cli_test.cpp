@@ -34,7 +34,7 @@ TEST(Install, TheInstalledCommandRunsItsDemoFromItsOwnShareFolder) {
   EXPECT_TRUE(fs::is_regular_file(share / "assets" / "default_catalog.json"));
   EXPECT_FALSE(fs::exists(share / "assets" / "readme"));  // the README's pictures stay behind
   EXPECT_TRUE(fs::is_regular_file(prefix / "lib" / "udev" / "rules.d" / "70-nibrig-rig.rules"));
-  EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "man" / "man1" / "nibrig-design-loop.1"));
+  EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "man" / "man1" / "nibrig-design-loop.1.gz"));
   EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "bash-completion" / "completions" / "nibrig"));
 
   const nibrig::test::ScopedCacheDir cache(scratch / "cache");
