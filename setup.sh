@@ -8,6 +8,8 @@
 #   ./setup.sh panel   build (Release) and open nibrig-panel (extra arguments go to it)
 #   ./setup.sh python  build the Python module and install it for this user (import nibrig)
 #   ./setup.sh build   build (Release) only
+#   ./setup.sh package build (Release) the command, the panel and the Python module, and pack them
+#                      as Debian packages (CPack) -> build/release/packages/*.deb
 set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
@@ -29,6 +31,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy  # the Python module in ui/python: numpy arrays in and out
   # A window without a screen or a GPU, for the panel, its tests and its benchmark: Xvfb, Mesa
   xvfb xauth libgl1-mesa-dri
+  # The dependencies of the Debian packages, read from their binaries by dpkg-shlibdeps, which CPack
+  # runs: it comes with build-essential, and is named here for what needs it
+  dpkg-dev
   # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
   libgtest-dev libgmock-dev umockdev libclang-rt-14-dev python3-pytest
   python3-nbclient python3-ipykernel python3-matplotlib  # the Python example notebook, executed by its test
@@ -37,6 +42,8 @@ packages=(
   # The exported styli's real consumers: PrusaSlicer slices the 3MF, admesh checks each STL, unzip
   # reads the 3MF's slicer settings as a reader that is not ours
   prusa-slicer admesh unzip
+  # The test of the Debian packages: a fresh Debian 12 root to install them in, and lintian to check them
+  mmdebstrap lintian
   # The rig controller's firmware in rig/firmware: Debian's AVR toolchain builds it, and simavr runs it
   # in the tests; libsimavr's pkg-config file needs libelf's
   gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev
@@ -46,7 +53,7 @@ packages=(
 # What each job does not need, left out of its install: the demo on a fresh machine is the first
 # thing a new user waits for, and these bring in scipy, OpenBLAS, Mesa's drivers and an X server.
 window=(xvfb xauth libgl1-mesa-dri)
-test_only=(libgtest-dev libgmock-dev groff-base desktop-file-utils umockdev libclang-rt-14-dev python3-pytest python3-nbclient python3-ipykernel python3-matplotlib python3-sklearn mypy prusa-slicer admesh unzip gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev)
+test_only=(libgtest-dev libgmock-dev groff-base desktop-file-utils umockdev libclang-rt-14-dev python3-pytest python3-nbclient python3-ipykernel python3-matplotlib python3-sklearn mypy prusa-slicer admesh unzip gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev mmdebstrap lintian)
 bench_only=(libbenchmark-dev python3-scipy)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.
@@ -224,8 +231,19 @@ case "$job" in
     # Built for Debian's interpreter and its numpy: another python3 first on PATH (pyenv) may lack numpy.
     echo "setup: installed the Python module in $site/nibrig for /usr/bin/python3; try: /usr/bin/python3 -c 'import nibrig; print(nibrig.__all__)'"
     ;;
+  package)
+    # The tree every job shares, as `build` configures it, with the module: what the packages hold
+    # (cmake/Package.cmake), installed under /usr.
+    configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel" \
+      -DNIBRIG_BUILD_PYTHON=ON
+    rm -f build/release/packages/*.deb
+    (cd build/release && cpack)
+    stage_done "packing"
+    echo "setup: Debian packages in build/release/packages; install them with:"
+    echo "  sudo apt install ./build/release/packages/*.deb"
+    ;;
   *)
-    echo "usage: ./setup.sh [demo|test|bench|panel|python|build]" >&2
+    echo "usage: ./setup.sh [demo|test|bench|panel|python|build|package]" >&2
     exit 2
     ;;
 esac
