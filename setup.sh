@@ -36,6 +36,7 @@ packages=(
   dpkg-dev
   # Only the test job's: its suites, the emulated USB device, the sanitizers' runtime, fuzzers
   libgtest-dev libgmock-dev umockdev libclang-rt-14-dev python3-pytest
+  groff-base desktop-file-utils  # the manual pages checked with groff, the desktop entry validated
   python3-nbclient python3-ipykernel python3-matplotlib  # the Python example notebook, executed by its test
   python3-sklearn  # SpaceEstimator's test runs scikit-learn's cross-validation on it
   mypy  # its stubtest checks the Python type hints against the compiled module
