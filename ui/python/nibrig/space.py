@@ -15,6 +15,7 @@ default = _space.default
 Evaluation = _space.Evaluation
 Validation = _space.Validation
 validate = _space.validate
+#: The judgment models fit's model= takes (with "auto", which picks among them).
 MODELS = _space.MODELS
 
 
