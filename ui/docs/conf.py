@@ -18,6 +18,8 @@ extensions = ["myst_parser", "sphinx.ext.autodoc", "nibrig_commands", "repo_link
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
 exclude_patterns = ["README.landing.md", "_build"]
 myst_enable_extensions = ["colon_fence"]
+# Options are written --name: docutils' smart quotes would make their "--" an en dash.
+smartquotes = False
 myst_heading_anchors = 4  # GitHub's heading slugs, so the repository's Markdown links still work
 
 html_theme = "alabaster"

@@ -7,8 +7,8 @@ stub's `nibrig-help` directive from that help: usage, description, arguments, op
 
 from __future__ import annotations
 
+import os
 import re
-import shutil
 from pathlib import Path
 
 from docutils import nodes
@@ -58,6 +58,8 @@ def _write_stubs(app) -> None:
 
 def _inline(text: str) -> list[nodes.Node]:
     """Help text with its `code` spans as literals; nothing else in it is markup."""
+    # The help names the user's own folders under the home of whoever builds the site.
+    text = text.replace(os.path.expanduser("~") + "/", "~/")
     out: list[nodes.Node] = []
     for i, part in enumerate(re.split(r"`([^`]+)`", text)):
         if part:
