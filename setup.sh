@@ -10,6 +10,8 @@
 #   ./setup.sh build   build (Release) only
 #   ./setup.sh package build (Release) the command, the panel and the Python module, and pack them
 #                      as Debian packages (CPack) -> build/release/packages/*.deb
+#   ./setup.sh docs    build (Release) the command, the panel and the Python module, then the
+#                      documentation site (ui/docs) -> build/docs/html
 set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
@@ -39,6 +41,7 @@ packages=(
   groff-base desktop-file-utils  # the manual pages checked with groff, the desktop entry validated
   python3-nbclient python3-ipykernel python3-matplotlib  # the Python example notebook, executed by its test
   python3-sklearn  # SpaceEstimator's test runs scikit-learn's cross-validation on it
+  python3-sphinx python3-myst-parser  # the documentation site in ui/docs: Sphinx, MyST for the Markdown; its tests build it
   mypy  # its stubtest checks the Python type hints against the compiled module
   # The exported styli's real consumers: PrusaSlicer slices the 3MF, admesh checks each STL, unzip
   # reads the 3MF's slicer settings as a reader that is not ours
@@ -56,6 +59,8 @@ packages=(
 window=(xvfb xauth libgl1-mesa-dri)
 test_only=(libgtest-dev libgmock-dev groff-base desktop-file-utils umockdev libclang-rt-14-dev python3-pytest python3-nbclient python3-ipykernel python3-matplotlib python3-sklearn mypy prusa-slicer admesh unzip gcc-avr binutils-avr avr-libc libsimavr-dev libelf-dev mmdebstrap lintian)
 bench_only=(libbenchmark-dev python3-scipy)
+# Only the test job's (its site tests) and the docs job's: Sphinx and MyST.
+docs_only=(python3-sphinx python3-myst-parser)
 # The demo builds the command alone (-DNIBRIG_BUILD_PANEL=OFF), plays nothing live, and runs no
 # emulated USB device.
 not_demo=(libimgui-dev libglfw3-dev libstb-dev libumockdev-dev jackd2 avrdude pybind11-dev python3-dev python3-numpy)
@@ -141,11 +146,12 @@ run_fuzzers() {  # each fuzzer on a core of its own; fails when any found a cras
 
 case "$job" in
   test) install_packages "${bench_only[@]}" ;;
-  bench) install_packages "${test_only[@]}" ;;
-  panel) install_packages "${test_only[@]}" "${bench_only[@]}" ;;
-  python) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
-  demo) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${not_demo[@]}" ;;
-  *) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
+  bench) install_packages "${test_only[@]}" "${docs_only[@]}" ;;
+  panel) install_packages "${test_only[@]}" "${bench_only[@]}" "${docs_only[@]}" ;;
+  python) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${docs_only[@]}" ;;
+  demo) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${not_demo[@]}" "${docs_only[@]}" ;;
+  docs) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" ;;
+  *) install_packages "${window[@]}" "${test_only[@]}" "${bench_only[@]}" "${docs_only[@]}" ;;
 esac
 stage_done "installing packages"
 # The tree a user runs (demo, panel, bench, build) and the test job's scenario tree are one: clang,
@@ -171,7 +177,7 @@ case "$job" in
     # A test jackd that died with its process (a crashed test) keeps its slot in jack2's
     # machine-wide registry of 8 servers; with no jackd running, the registry can go.
     if ! pgrep -x jackd >/dev/null; then rm -f /dev/shm/jack-shm-registry /dev/shm/jack_sem.*nibrig-test-*; fi
-    # Two trees, each test in one (README, "Tests"). The libraries' own suites (label unit) under
+    # Two trees, each test in one (the Tests page, ui/docs/development/tests.md). The libraries' own suites (label unit) under
     # ASan+UBSan, compiled by clang, which builds them with the sanitizers in well under GCC's
     # time. Line tables only (-g1): reports still name file and line.
     configure_and_build build/asan -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -243,8 +249,18 @@ case "$job" in
     echo "setup: Debian packages in build/release/packages; install them with:"
     echo "  sudo apt install ./build/release/packages/*.deb"
     ;;
+  docs)
+    # The command pages come from the built command's --help and the Python reference from the
+    # built module; warnings are errors, as in the tests.
+    targets="nibrig nibrig-panel nibrig_python_package" configure_and_build "${release[@]}" -DNIBRIG_BUILD_TESTS=OFF \
+      -DNIBRIG_BUILD_BENCH=OFF -DNIBRIG_LEAK_CHECK=OFF "$with_panel" -DNIBRIG_BUILD_PYTHON=ON
+    NIBRIG_COMMAND=build/release/ui/nibrig NIBRIG_PANEL=build/release/ui/panel/nibrig-panel NIBRIG_PYTHON=build/release/python \
+      /usr/bin/python3 -m sphinx -W --keep-going -b html ui/docs build/docs/html
+    stage_done "building the site"
+    echo "setup: the site is in build/docs/html/index.html"
+    ;;
   *)
-    echo "usage: ./setup.sh [demo|test|bench|panel|python|build|package]" >&2
+    echo "usage: ./setup.sh [demo|test|bench|panel|python|build|package|docs]" >&2
     exit 2
     ;;
 esac

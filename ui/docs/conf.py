@@ -16,7 +16,7 @@ copyright = "the nibrig authors"
 
 extensions = ["myst_parser", "sphinx.ext.autodoc", "nibrig_commands", "repo_links"]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
-exclude_patterns = ["README.landing.md", "_build"]
+exclude_patterns = ["_build"]
 myst_enable_extensions = ["colon_fence"]
 # Options are written --name: docutils' smart quotes would make their "--" an en dash.
 smartquotes = False

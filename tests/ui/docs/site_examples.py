@@ -32,7 +32,7 @@ def pages() -> list[Path]:
     are --help itself and are left out."""
     found: list[Path] = []
     for page in sorted(SITE.rglob("*.md")):
-        if page.parent.name == "commands" or page.name == "README.landing.md":
+        if page.parent.name == "commands":
             continue
         found.append(page)
         for target in INCLUDE.findall(page.read_text()):
