@@ -10,7 +10,7 @@
 // are coherent: mixing two of them with weights w and 1−w gives noise whose amplitude spectrum is
 // exactly w·M_s + (1−w)·M_{s+1}. The speed therefore acts through per-sample weights, with no
 // filter state to update and no lag; the only cost is computing every speed's stream (one inverse
-// FFT per speed per hop, planned by measuring: it is the engine's largest cost after the modes).
+// FFT per speed per hop).
 #include "rt/forcing_generator.hpp"
 
 #include <algorithm>
@@ -42,8 +42,7 @@ double step_phase(std::uint64_t seed) {
 ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed)
     : table_(std::move(table)),
       noise_(seed),
-      fft_(table_ ? table_->frame_length() : 2, model::numeric::RealFft::Plans::backward,
-           model::numeric::RealFft::Planning::measured),
+      fft_(table_ ? table_->frame_length() : 2, model::numeric::RealFft::Plans::backward),
       frame_(table_ ? table_->frame_length() : 2),
       hop_(frame_ / 2),
       step_phase_(step_phase(seed)) {

@@ -17,7 +17,7 @@ namespace nibrig::model::numeric {
 // is handed to FFTW as the one and read by the callers as the other.
 static_assert(sizeof(std::complex<double>) == sizeof(fftw_complex));
 
-RealFft::RealFft(std::size_t n, Plans plans, Planning planning) {
+RealFft::RealFft(std::size_t n, Plans plans) {
   if (n < 1 || n > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw std::invalid_argument("RealFft: size must be 1 to " +
                                 std::to_string(std::numeric_limits<int>::max()) + ", got " +
@@ -31,13 +31,12 @@ RealFft::RealFft(std::size_t n, Plans plans, Planning planning) {
     throw std::bad_alloc();
   }
   auto* spectrum = reinterpret_cast<fftw_complex*>(spectrum_);
-  const unsigned flags = planning == Planning::measured ? FFTW_MEASURE : FFTW_ESTIMATE;
   {
     std::lock_guard lock(detail::fftw_planner_mutex());
     if (plans != Plans::backward)
-      forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(n), real_, spectrum, flags);
+      forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(n), real_, spectrum, FFTW_ESTIMATE);
     if (plans != Plans::forward)
-      backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum, real_, flags);
+      backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum, real_, FFTW_ESTIMATE);
   }
   if ((plans != Plans::backward && forward_ == nullptr) ||
       (plans != Plans::forward && backward_ == nullptr)) {

@@ -12,20 +12,19 @@ struct fftw_plan_s;  // FFTW's plan type, kept out of this header
 namespace nibrig::model::numeric {
 
 // Buffers come from fftw_malloc (aligned for SIMD); plans are made with FFTW_ESTIMATE (see
-// SpectrumAnalyzer for why) unless Planning::measured is asked for: FFTW then times candidate
-// algorithms (a few tenths of a second for the first plan of a size in a process, then reused),
-// for transforms about twice as fast whose rounding may differ from one process to the next.
+// SpectrumAnalyzer for why), so that every process computes the same values: FFTW_MEASURE's
+// transforms are about twice as fast here, but its choice, and so the rounding, varies from one
+// process to the next (a simulated capture then differed between Python and the command).
 // forward() transforms real() into spectrum(), the n/2 + 1 one-sided bins, unnormalised. backward()
 // transforms spectrum() back into real() multiplied by n, and overwrites spectrum() on the way
 // (FFTW's c2r does). Move-only; one object per thread, since the transforms work in its buffers.
 class RealFft {
  public:
   enum class Plans { forward, backward, forward_and_backward };
-  enum class Planning { estimated, measured };
 
   // n >= 1 and within FFTW's int sizes, else std::invalid_argument; std::bad_alloc when the
   // buffers cannot be had, std::runtime_error when FFTW makes no plan.
-  RealFft(std::size_t n, Plans plans, Planning planning = Planning::estimated);
+  RealFft(std::size_t n, Plans plans);
   ~RealFft();
   RealFft(RealFft&& other) noexcept;
   RealFft& operator=(RealFft&& other) noexcept;
