@@ -43,16 +43,17 @@ TEST(BlockCpuClock, APreemptedBlockIsNotAnOverrunAndABusyOneIs) {
     // 50 µs of work, then 5 ms asleep: four periods of wall time, a twenty-fifth of one of CPU.
     const auto preempted = run_block(clock, 50e-6, 5e-3);
     ASSERT_GT(preempted.wall, kPeriod);
-    // The test's own readings frame the clock's: two system calls (a microsecond or two each
-    // under the sanitizers) are in the test's window and not in the clock's.
-    EXPECT_GE(preempted.estimate, preempted.cpu - 5e-6);
+    // The test's readings and the clock's frame the block differently: a few system calls (each a
+    // microsecond or more under the sanitizers, up to 9 µs apart seen on a busy machine) are in
+    // one window and not the other. 20 µs of the 50 still shows the work is counted.
+    EXPECT_GE(preempted.estimate, preempted.cpu - 20e-6);
     // Its own CPU time plus at most an eighth of a period since the last reading; the reads and
     // the sleep's own system calls add microseconds.
     EXPECT_LE(preempted.estimate, preempted.cpu + kPeriod / 8 + 50e-6);
     EXPECT_LT(preempted.estimate, kPeriod);
   }
   const auto busy = run_block(clock, 3 * kPeriod, 0);
-  EXPECT_GE(busy.estimate, busy.cpu - 5e-6);
+  EXPECT_GE(busy.estimate, busy.cpu - 20e-6);
   EXPECT_GT(busy.estimate, kPeriod);
   EXPECT_LE(busy.estimate, busy.wall);
 }
