@@ -47,6 +47,25 @@ def test_every_command_has_a_page_with_every_option_its_help_lists(site):
                 f"{page.name}: no link to {sub.names[0]}"
 
 
+def test_every_manual_page_command_has_a_site_page_with_its_options(site):
+    # The manual pages come from the CLI11 tree itself (ui/cli/help_pages.cpp), not from --help's
+    # text, so a command or option the site's --help reader missed is caught here.
+    manuals = sorted(Path(os.environ["NIBRIG_MAN_DIR"]).glob("nibrig*.1"))
+    assert len(manuals) > 40
+    for manual in manuals:
+        roff = manual.read_text().replace("\\-", "-")
+        words = re.search(r"^\.B nibrig(.*)$", roff, re.M).group(1).split()
+        names = [re.sub(r"\\fR.*", "", line[3:])
+                 for before, line in zip(roff.splitlines(), roff.splitlines()[1:])
+                 if before == ".TP" and line.startswith("\\fB")]
+        assert names, manual.name
+        page = site / "commands" / (cli_help.page_name(words) + ".html")
+        assert page.is_file(), f"{manual.name}: no {page.name}"
+        text = html.unescape(re.sub(r"<[^>]+>", "", page.read_text()))
+        for name in names:
+            assert ", ".join(name.split(",")) in text, f"{page.name}: {name} (from {manual.name})"
+
+
 def test_the_python_reference_documents_each_submodule_from_its_docstrings(site):
     sys.path.insert(0, os.environ.get("NIBRIG_PYTHON", str(REPOSITORY / "build/release/python")))
     import nibrig  # the module the site was built from
