@@ -5,18 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "model/io/catalog_file.hpp"
-#include "rt/engine.hpp"
-#include "rt/voice_builder.hpp"
 #include "tests/support/run_program.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -26,44 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 using nibrig::test::run_program;
 
-struct Played {
-  double rms = 0, peak = 0;
-};
-
-// What tests/example_project/play_a_tool.cpp renders, with the tree's libraries: the same stylus,
-// the same stroke and seed.
-Played play_in_process(const fs::path& catalog_file, const std::string& tool,
-                       const std::string& surface) {
-  const auto catalog = model::io::read_catalog(catalog_file);
-  const auto pairing = std::find_if(catalog.pairings.begin(), catalog.pairings.end(), [&](auto& p) {
-    return p.tool == tool && p.surface == surface && p.vibration;
-  });
-  model::modal::ModalModel stylus;
-  for (double hz : {200.0, 900.0, 3000.0}) {
-    const double omega = 2 * std::numbers::pi * hz;
-    stylus.omega.push_back(omega);
-    stylus.zeta.push_back(model::modal::rayleigh_damping_ratio(omega, 0.0, 1.25e-3));
-    stylus.input.push_back(1.0);
-    stylus.output.push_back(1.0);
-  }
-  rt::Engine engine{rt::EngineSettings{}};
-  engine.load(0, rt::build_voice(tool + " on " + surface, stylus, pairing->vibration->spectrum,
-                                 engine.internal_rate(), 1));
-  engine.select(0);
-  engine.attach(std::make_unique<rt::SweepStroke>());
-  std::vector<float> block(64);
-  double sum = 0;
-  Played played;
-  const std::size_t blocks = 3 * 48000 / block.size();
-  for (std::size_t b = 0; b < blocks; ++b) {
-    engine.render(block.data(), block.size());
-    for (float x : block) {
-      sum += static_cast<double>(x) * x;
-      played.peak = std::max(played.peak, std::abs(static_cast<double>(x)));
-    }
-  }
-  played.rms = std::sqrt(sum / static_cast<double>(blocks * block.size()));
-  return played;
+// play_a_tool's answer: {"frames": …, "rms": …, "peak": …}.
+nlohmann::json answer_of(const nibrig::test::ProgramRun& run) {
+  return nlohmann::json::parse(run.output.substr(run.output.find('{')));
 }
 
 TEST(LibraryInstall, AProjectOutsideTheTreeBuildsAgainstFindPackageAndPlaysATool) {
@@ -104,14 +64,18 @@ TEST(LibraryInstall, AProjectOutsideTheTreeBuildsAgainstFindPackageAndPlaysATool
   const auto played = run_program(
       {(example / "play_a_tool").string(), catalog.string(), "DM851", "paperlike"}, scratch);
   ASSERT_EQ(played.exit_code, 0) << played.output;
-  const auto answer = nlohmann::json::parse(played.output.substr(played.output.find('{')));
+  const auto answer = answer_of(played);
   EXPECT_EQ(answer["frames"].get<std::size_t>(), 3u * 48000u);
-  const auto expected = play_in_process(catalog, "DM851", "paperlike");
-  ASSERT_GT(expected.rms, 0.0);
+  // The same program built in the tree with the tree's libraries (tests/CMakeLists.txt).
+  const auto in_tree =
+      run_program({NIBRIG_EXAMPLE_IN_TREE, catalog.string(), "DM851", "paperlike"}, scratch);
+  ASSERT_EQ(in_tree.exit_code, 0) << in_tree.output;
+  const auto expected = answer_of(in_tree);
+  ASSERT_GT(expected["rms"].get<double>(), 0.0);
   // The same library code and seed; only the example's own sums are another compiler's, which may
   // contract or order them differently (1e-16 relative a sample), far under 1e-9.
-  EXPECT_NEAR(answer["rms"].get<double>() / expected.rms, 1.0, 1e-9);
-  EXPECT_NEAR(answer["peak"].get<double>() / expected.peak, 1.0, 1e-9);
+  for (const char* figure : {"rms", "peak"})
+    EXPECT_NEAR(answer[figure].get<double>() / expected[figure].get<double>(), 1.0, 1e-9) << figure;
   // A tool the catalog does not pair is refused with its name, not played as silence.
   const auto refused = run_program(
       {(example / "play_a_tool").string(), catalog.string(), "DM851", "no-such-surface"}, scratch);
