@@ -1,7 +1,8 @@
 # `cmake --install`: the programs, the bundled assets and the defaults the build computed, the
 # manual pages and bash completion the command writes from its own parser, the Python package, the
-# panel's desktop entry and icon, and the rig's udev rule, in the GNU install directories. An installed program finds its assets and
-# defaults in <prefix>/share/nibrig beside its bin/ (model/io/bundled_assets.hpp), from any folder.
+# panel's desktop entry and icon, and the rig's udev rule, in the GNU install directories. An
+# installed program finds its assets and defaults in <prefix>/share/nibrig beside its bin/
+# (model/io/bundled_assets.hpp), from any folder.
 include(GNUInstallDirs)
 
 set(NIBRIG_INSTALL_SHARE "${CMAKE_INSTALL_DATADIR}/nibrig")
