@@ -1,5 +1,6 @@
 #include "tests/playback/simulated_actuator.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -35,7 +36,8 @@ SimulatedActuator::SimulatedActuator(const std::string& name) {
 SimulatedActuator::~SimulatedActuator() { jack_client_close(client_); }
 
 bool SimulatedActuator::connect(const std::string& source, const std::string& destination) {
-  return jack_connect(client_, source.c_str(), destination.c_str()) == 0;
+  const int status = jack_connect(client_, source.c_str(), destination.c_str());
+  return status == 0 || status == EEXIST;
 }
 
 std::complex<double> SimulatedActuator::response(double frequency_hz) const {

@@ -19,6 +19,7 @@ class SimulatedActuator {
   SimulatedActuator(const SimulatedActuator&) = delete;
   SimulatedActuator& operator=(const SimulatedActuator&) = delete;
 
+  // True when the ports are connected, by this call or before it (jack_connect's EEXIST).
   bool connect(const std::string& source, const std::string& destination);
   // The exact response of the simulated chain at f (Hz): b(z)/a(z) at z = e^{j2πf/fs}.
   std::complex<double> response(double frequency_hz) const;
