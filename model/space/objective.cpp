@@ -134,7 +134,7 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
   // then spread back to the distances and the model.
   TripletBlock block;
   std::array<double, TripletBlock::kSize> per, sum;  // ∂x/∂d = s/σ_t, and Σσ_i² of the three
-  double nll = 0.0;
+  double nll = 0.0, lapse_gradient = 0.0;
   for (std::size_t first = 0; first < p.triplets.size(); first += TripletBlock::kSize) {
     block.size = std::min(TripletBlock::kSize, p.triplets.size() - first);
     for (std::size_t i = 0; i < block.size; ++i) {
@@ -150,23 +150,26 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
       block.count_a[i] = t.count_a, block.count_b[i] = t.count_b;
     }
     block_terms<L>(kernel, block, with_gradient);
+    for (std::size_t i = 0; i < block.size; ++i) nll += block.nll[i];
+    if (coordinate_gradient)
+      for (std::size_t i = 0; i < block.size; ++i)
+        distances.pull(p.triplets[first + i], block.d_xa[i] * per[i], block.d_xb[i] * per[i]);
+    if (!model_gradient) continue;
+    // In a local, not through the pointer: a store and a load a triplet otherwise, as the
+    // compiler cannot tell the model's gradient from the distances' pulls.
+    for (std::size_t i = 0; i < block.size; ++i) lapse_gradient += block.d_lapse[i];
+    if (!noise) continue;
     for (std::size_t i = 0; i < block.size; ++i) {
       const io::Triplet& t = p.triplets[first + i];
-      const TripletTerms& terms = block.terms[i];
-      nll += terms.nll;
-      if (coordinate_gradient) distances.pull(t, terms.d_xa * per[i], terms.d_xb * per[i]);
-      if (!model_gradient) continue;
-      model_gradient->lapse += terms.d_lapse;
-      if (noise) {
-        // ∂x/∂log σ = −x
-        const double d_log_sigma = -(terms.d_xa * block.xa[i] + terms.d_xb * block.xb[i]);
-        for (std::size_t s : {t.reference, t.a, t.b}) {
-          const auto k = static_cast<Eigen::Index>(s);
-          model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum[i];
-        }
+      // ∂x/∂log σ = −x
+      const double d_log_sigma = -(block.d_xa[i] * block.xa[i] + block.d_xb[i] * block.xb[i]);
+      for (std::size_t s : {t.reference, t.a, t.b}) {
+        const auto k = static_cast<Eigen::Index>(s);
+        model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum[i];
       }
     }
   }
+  if (model_gradient) model_gradient->lapse += lapse_gradient;
   if (coordinate_gradient) distances.finish();
   return nll;
 }

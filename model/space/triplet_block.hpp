@@ -16,23 +16,27 @@
 namespace nibrig::model::space {
 
 struct TripletBlock {
-  static constexpr std::size_t kSize = 256;  // about 50 KiB with the work below: within L2
+  static constexpr std::size_t kSize = 256;  // about 56 KiB with the work below: within L2
   using Column = std::array<double, kSize>;
   std::size_t size = 0;
-  Column xa, xb, count_a, count_b;        // in
-  std::array<TripletTerms, kSize> terms;  // out
-  // Work between the two (here, so that it is made once an evaluation).
-  std::array<detail::LinkTerms, kSize> link;
-  Column c1, c2, c3, c4, c5, c6;
+  Column xa, xb, count_a, count_b;  // in
+  Column nll, d_xa, d_xb, d_lapse;  // out: TripletTerms, a column each
+  TripletTerms terms(std::size_t i) const { return {nll[i], d_xa[i], d_xb[i], d_lapse[i]}; }
+  // The link's parts (detail::LinkTerms, a column each) and work between the two, here so that
+  // they are made once an evaluation. Columns, not a struct per triplet, and selects, not branches:
+  // the loops then run in vector registers, where the sides' signs and the counts, which follow no
+  // pattern, cost no mispredicted branches.
+  Column p_a, p_b, log_a, log_b, log_a_dxa, log_a_dxb, log_b_dxa, log_b_dxb;
+  Column c1, c2, c3, c4, c5;
 };
 
 namespace detail {
 
 using Column = TripletBlock::Column;
 
-// Each link fills b.link[i] for i < b.size: the logs of P only where logs_wanted (no lapse: with
-// one, the logs taken are of the mixture), and then only for a side some answer took (else 0, as
-// link_terms leaves them: a log of an underflowed P would be −∞, and 0·∞ is not 0).
+// Each link fills the link columns for i < b.size: the logs of P only where logs_wanted (no lapse:
+// with one, the logs taken are of the mixture), and then only for a side some answer took (else 0,
+// as link_terms leaves them: a log of an underflowed P would be −∞, and 0·∞ is not 0).
 
 // The probit, as normal_sides: Φ of the smaller side from erfc, 1 − it for the larger, φ from exp.
 // Returns whether a triplet lies beyond kNormalTail, where erfc nears underflow: the caller works
@@ -40,7 +44,7 @@ using Column = TripletBlock::Column;
 inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
   const std::size_t n = b.size;
   Column &z = b.c1, &erfc_arg = b.c2, &exp_arg = b.c3, &small = b.c4, &pdf = b.c5;
-  bool far = false;
+  int far = 0;
   for (std::size_t i = 0; i < n; ++i) {
     z[i] = b.xb[i] - b.xa[i];  // P(a) = Φ(z)
     const double t = std::abs(z[i]);
@@ -55,21 +59,22 @@ inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
   for (std::size_t i = 0; i < n; ++i) {
     small[i] *= 0.5;  // Φ(−|z|)
     large[i] = 1.0 - small[i];
-    LinkTerms& t = b.link[i];
-    t.p_a = z[i] < 0 ? small[i] : large[i];
-    t.p_b = z[i] < 0 ? large[i] : small[i];
-    const double ra = pdf[i] / t.p_a, rb = pdf[i] / t.p_b;  // φ/Φ at z and at −z
-    t.log_a_dxa = -ra, t.log_a_dxb = ra, t.log_b_dxa = rb, t.log_b_dxb = -rb;
+    const bool negative = z[i] < 0;
+    b.p_a[i] = negative ? small[i] : large[i];
+    b.p_b[i] = negative ? large[i] : small[i];
+    const double ra = pdf[i] / b.p_a[i], rb = pdf[i] / b.p_b[i];  // φ/Φ at z and at −z
+    b.log_a_dxa[i] = -ra, b.log_a_dxb[i] = ra, b.log_b_dxa[i] = rb, b.log_b_dxb[i] = -rb;
   }
   if (!logs_wanted) return false;
-  Column &log_small = b.c3, &log_large = b.c6;
+  Column &log_small = b.c3, &log_large = b.c5;
   numeric::log_all(small.data(), log_small.data(), n);
   numeric::log_all(large.data(), log_large.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
     const double larger = log_larger_side(small[i], log_large[i]);
-    LinkTerms& t = b.link[i];
-    t.log_a = b.count_a[i] == 0 ? 0.0 : z[i] < 0 ? log_small[i] : larger;
-    t.log_b = b.count_b[i] == 0 ? 0.0 : z[i] < 0 ? larger : log_small[i];
+    const bool negative = z[i] < 0;
+    const double log_a = negative ? log_small[i] : larger, log_b = negative ? larger : log_small[i];
+    b.log_a[i] = b.count_a[i] == 0 ? 0.0 : log_a;
+    b.log_b[i] = b.count_b[i] == 0 ? 0.0 : log_b;
   }
   return false;
 }
@@ -85,19 +90,18 @@ inline void logistic_block_link(TripletBlock& b, bool logs_wanted) {
   numeric::exp_all(exp_arg.data(), e.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
     one_plus_e[i] = 1.0 + e[i];
-    LinkTerms& t = b.link[i];
     const double near = 1.0 / one_plus_e[i], far = e[i] * near;  // σ(|cz|), σ(−|cz|)
-    t.p_a = cz[i] >= 0 ? near : far, t.p_b = cz[i] >= 0 ? far : near;
-    const double ga = kLogisticSlope * t.p_b, gb = kLogisticSlope * t.p_a;
-    t.log_a_dxa = -ga, t.log_a_dxb = ga, t.log_b_dxa = gb, t.log_b_dxb = -gb;
+    const bool up = cz[i] >= 0;
+    b.p_a[i] = up ? near : far, b.p_b[i] = up ? far : near;
+    const double ga = kLogisticSlope * b.p_b[i], gb = kLogisticSlope * b.p_a[i];
+    b.log_a_dxa[i] = -ga, b.log_a_dxb[i] = ga, b.log_b_dxa[i] = gb, b.log_b_dxb[i] = -gb;
   }
   if (!logs_wanted) return;
   numeric::log_all(one_plus_e.data(), log_one_plus_e.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
     const double softplus_cz = std::max(cz[i], 0.0) + log_one_plus_e[i];
-    LinkTerms& t = b.link[i];
-    t.log_a = b.count_a[i] == 0 ? 0.0 : -(softplus_cz - cz[i]);
-    t.log_b = b.count_b[i] == 0 ? 0.0 : -softplus_cz;
+    b.log_a[i] = b.count_a[i] == 0 ? 0.0 : -(softplus_cz - cz[i]);
+    b.log_b[i] = b.count_b[i] == 0 ? 0.0 : -softplus_cz;
   }
 }
 
@@ -105,70 +109,79 @@ inline void logistic_block_link(TripletBlock& b, bool logs_wanted) {
 // ratio, then log(1 + k) for the likelier side and log r for the other.
 inline void student_t_block_link(TripletBlock& b, double alpha, bool logs_wanted) {
   const std::size_t n = b.size;
-  Column &r = b.c1, &one_plus_k = b.c2, &log_one_plus_k = b.c3, &log_r = b.c4;
+  Column &r = b.c1, &k = b.c2, &root = b.c3, &log_r = b.c4;
   Column& a_likelier_then = b.c5;  // 1 where w_a ≤ w_b, else 0
-  const long power = std::lround(alpha + 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double wa = alpha + b.xa[i] * b.xa[i], wb = alpha + b.xb[i] * b.xb[i];
+    a_likelier_then[i] = wa <= wb ? 1.0 : 0.0;
+    r[i] = std::min(wa, wb) / std::max(wa, wb);
+    root[i] = std::sqrt(r[i]);
+    k[i] = 1.0;
+  }
+  // √r multiplied in α+1 times, a loop of its own so that the loop above has no inner one.
+  for (long m = std::lround(alpha + 1.0); m > 0; --m)
+    for (std::size_t i = 0; i < n; ++i) k[i] *= root[i];
+  Column& one_plus_k = k;  // k itself is needed no further than the first line below
   for (std::size_t i = 0; i < n; ++i) {
     const double xa = b.xa[i], xb = b.xb[i];
     const double wa = alpha + xa * xa, wb = alpha + xb * xb;
-    const bool a_likelier = wa <= wb;
-    a_likelier_then[i] = a_likelier ? 1.0 : 0.0;
-    r[i] = a_likelier ? wa / wb : wb / wa;
-    const double root = std::sqrt(r[i]);
-    double k = 1.0;  // P(less likely)/P(likelier)
-    for (long m = power; m > 0; --m) k *= root;
-    one_plus_k[i] = 1.0 + k;
-    const double likelier = 1.0 / one_plus_k[i], less = k * likelier;
-    LinkTerms& t = b.link[i];
-    t.p_a = a_likelier ? likelier : less, t.p_b = a_likelier ? less : likelier;
+    const double likelier = 1.0 / (1.0 + k[i]), less = k[i] * likelier;  // P(less)/P(likelier) = k
+    one_plus_k[i] = 1.0 + k[i];
+    const bool a_likelier = a_likelier_then[i] != 0.0;
+    b.p_a[i] = a_likelier ? likelier : less, b.p_b[i] = a_likelier ? less : likelier;
     const double du_dxa = (alpha + 1.0) * xa / wa, du_dxb = -(alpha + 1.0) * xb / wb;
-    const double la_du = -t.p_b, lb_du = t.p_a;  // d log P(a)/du = −P(b)
-    t.log_a_dxa = la_du * du_dxa, t.log_a_dxb = la_du * du_dxb;
-    t.log_b_dxa = lb_du * du_dxa, t.log_b_dxb = lb_du * du_dxb;
+    const double la_du = -b.p_b[i], lb_du = b.p_a[i];  // d log P(a)/du = −P(b)
+    b.log_a_dxa[i] = la_du * du_dxa, b.log_a_dxb[i] = la_du * du_dxb;
+    b.log_b_dxa[i] = lb_du * du_dxa, b.log_b_dxb[i] = lb_du * du_dxb;
   }
   if (!logs_wanted) return;
+  Column& log_one_plus_k = root;
   numeric::log_all(one_plus_k.data(), log_one_plus_k.data(), n);
   numeric::log_all(r.data(), log_r.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
-    LinkTerms& t = b.link[i];
     const double log_likelier = -log_one_plus_k[i];
     const bool a_likelier = a_likelier_then[i] != 0.0;
-    // log r is −∞ where r = 0 (α = 0 in 1-D, and x = 0): taken only for a side an answer took.
-    const bool less_taken = a_likelier ? b.count_b[i] != 0 : b.count_a[i] != 0;
-    const double log_less = less_taken ? 0.5 * (alpha + 1.0) * log_r[i] + log_likelier : 0.0;
-    t.log_a = b.count_a[i] == 0 ? 0.0 : a_likelier ? log_likelier : log_less;
-    t.log_b = b.count_b[i] == 0 ? 0.0 : a_likelier ? log_less : log_likelier;
+    // log r is −∞ where r = 0 (α = 0 in 1-D, and x = 0): a side no answer took is 0 instead.
+    const double log_less = 0.5 * (alpha + 1.0) * log_r[i] + log_likelier;
+    const double log_a = a_likelier ? log_likelier : log_less;
+    const double log_b = a_likelier ? log_less : log_likelier;
+    b.log_a[i] = b.count_a[i] == 0 ? 0.0 : log_a;
+    b.log_b[i] = b.count_b[i] == 0 ? 0.0 : log_b;
   }
 }
 
-// Each answer's part from the link's: the link's logs with no lapse, else the mixture
-// ε/2 + (1−ε)P and its log (ε ≥ kLapseInLogs here, so the mixture does not underflow).
+// Each answer's part from the link's, and the terms, as combined() takes them: the link's logs with
+// no lapse, else the mixture ε/2 + (1−ε)P and its log (ε ≥ kLapseInLogs here, so the mixture does
+// not underflow and every part is finite: a side no answer took is multiplied by its count, 0).
 inline void block_answers(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
   const std::size_t n = b.size;
   const double lapse = k.lapse;
   if (lapse == 0.0) {
     for (std::size_t i = 0; i < n; ++i) {
-      const LinkTerms& t = b.link[i];
-      Lapsed on_a, on_b;  // a side no answer took keeps its defaults: its count multiplies it by 0
-      if (b.count_a[i] != 0) on_a.value = t.log_a;
-      if (b.count_b[i] != 0) on_b.value = t.log_b;
-      b.terms[i] = combined(t, on_a, on_b, b.count_a[i], b.count_b[i], with_gradient);
+      const double ca = b.count_a[i], cb = b.count_b[i];
+      b.nll[i] = -(ca * b.log_a[i] + cb * b.log_b[i]);
+      b.d_xa[i] = with_gradient ? -(ca * b.log_a_dxa[i] + cb * b.log_b_dxa[i]) : 0.0;
+      b.d_xb[i] = with_gradient ? -(ca * b.log_a_dxb[i] + cb * b.log_b_dxb[i]) : 0.0;
+      b.d_lapse[i] = 0.0;
     }
     return;
   }
   Column &mixed_a = b.c1, &mixed_b = b.c2, &log_a = b.c3, &log_b = b.c4;
   for (std::size_t i = 0; i < n; ++i) {
-    mixed_a[i] = 0.5 * lapse + (1.0 - lapse) * b.link[i].p_a;
-    mixed_b[i] = 0.5 * lapse + (1.0 - lapse) * b.link[i].p_b;
+    mixed_a[i] = 0.5 * lapse + (1.0 - lapse) * b.p_a[i];
+    mixed_b[i] = 0.5 * lapse + (1.0 - lapse) * b.p_b[i];
   }
   numeric::log_all(mixed_a.data(), log_a.data(), n);
   numeric::log_all(mixed_b.data(), log_b.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
-    const LinkTerms& t = b.link[i];
-    Lapsed on_a, on_b;
-    if (b.count_a[i] != 0) on_a = lapsed_mixture(t.p_a, lapse, mixed_a[i], log_a[i]);
-    if (b.count_b[i] != 0) on_b = lapsed_mixture(t.p_b, lapse, mixed_b[i], log_b[i]);
-    b.terms[i] = combined(t, on_a, on_b, b.count_a[i], b.count_b[i], with_gradient);
+    const double ca = b.count_a[i], cb = b.count_b[i];
+    const Lapsed on_a = lapsed_mixture(b.p_a[i], lapse, mixed_a[i], log_a[i]);
+    const Lapsed on_b = lapsed_mixture(b.p_b[i], lapse, mixed_b[i], log_b[i]);
+    b.nll[i] = -(ca * on_a.value + cb * on_b.value);
+    const double da = ca * on_a.d_log, db = cb * on_b.d_log;
+    b.d_xa[i] = with_gradient ? -(da * b.log_a_dxa[i] + db * b.log_b_dxa[i]) : 0.0;
+    b.d_xb[i] = with_gradient ? -(da * b.log_a_dxb[i] + db * b.log_b_dxb[i]) : 0.0;
+    b.d_lapse[i] = with_gradient ? -(ca * on_a.d_lapse + cb * on_b.d_lapse) : 0.0;
   }
 }
 
@@ -176,13 +189,17 @@ inline void block_answers(const TripletKernel& k, TripletBlock& b, bool with_gra
 // tail.
 template <Link L>
 void block_terms_one_by_one(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
-  for (std::size_t i = 0; i < b.size; ++i)
-    b.terms[i] = triplet_terms<L>(k, b.xa[i], b.xb[i], b.count_a[i], b.count_b[i], with_gradient);
+  for (std::size_t i = 0; i < b.size; ++i) {
+    const TripletTerms t =
+        triplet_terms<L>(k, b.xa[i], b.xb[i], b.count_a[i], b.count_b[i], with_gradient);
+    b.nll[i] = t.nll, b.d_xa[i] = t.d_xa, b.d_xb[i] = t.d_xb, b.d_lapse[i] = t.d_lapse;
+  }
 }
 
 }  // namespace detail
 
-// b.terms[i] for every i < b.size, for the link L (k.link is not read).
+// The terms (b.nll, b.d_xa, b.d_xb, b.d_lapse) for every i < b.size, for the link L (k.link is not
+// read).
 template <Link L>
 void block_terms(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
   if (k.lapse != 0.0 && k.lapse < detail::kLapseInLogs)

@@ -116,18 +116,26 @@ void BM_SpaceStartLagunas3D(benchmark::State& state) {
   state.counters["iterations"] = iterations / static_cast<double>(seed);
 }
 
-// One evaluation of the objective and its gradient (probit) at a random 3-D space of Lagunas's
-// stimuli, beside numpy_space_fit.py's per-evaluation time.
+// One evaluation of the objective and its gradient at a random 3-D space of Lagunas's stimuli, per
+// judgment model, beside numpy_space_fit.py's per-evaluation time.
 void BM_SpaceObjectiveLagunas3D(benchmark::State& state) {
   static const io::TripletSet set = io::read_lagunas_json(
       nibrig::test::shared_data() / "lagunas2019" / "answers_processed_train.json");
+  const char* families[] = {"probit", "logistic", "student-t", "probit+lapse+noise"};
   space::SpaceProblem p;
   p.dims = 3;
   p.stimuli = set.stimuli.size();
   p.triplets = set.triplets;
+  p.model.family = space::parse_family(families[state.range(0)]);
+  if (p.model.family.lapse) p.model.lapse = 0.02;  // as a fit meets it: some lapse, typical noises
+  if (p.model.family.stimulus_noise)
+    p.model.log_noise = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(p.stimuli));
   const Eigen::MatrixXd q = Eigen::MatrixXd::Random(3, static_cast<Eigen::Index>(p.stimuli));
   Eigen::MatrixXd g;
-  for (auto _ : state) benchmark::DoNotOptimize(space::objective(p, q, &g));
+  space::ModelGradient model_gradient;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(space::objective(p, q, p.model, &g, &model_gradient));
+  state.SetLabel(families[state.range(0)]);
   state.counters["ns_per_triplet"] = benchmark::Counter(
       static_cast<double>(p.triplets.size()),
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
@@ -156,7 +164,7 @@ BENCHMARK(BM_FitSpaceFileLagunas3D)
     ->Arg(1)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-BENCHMARK(BM_SpaceObjectiveLagunas3D)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpaceObjectiveLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpaceStartLagunas3D)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

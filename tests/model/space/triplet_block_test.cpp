@@ -37,7 +37,7 @@ void expect_block_matches_one_by_one(double alpha, double lapse, double spread, 
     for (std::size_t i = 0; i < b.size; ++i) {
       const TripletTerms want =
           triplet_terms<L>(k, b.xa[i], b.xb[i], b.count_a[i], b.count_b[i], with_gradient);
-      const TripletTerms& got = b.terms[i];
+      const TripletTerms got = b.terms(i);
       const std::string where = "link " + std::to_string(static_cast<int>(L)) + ", lapse " +
                                 std::to_string(lapse) + ", x_a " + std::to_string(b.xa[i]) +
                                 ", x_b " + std::to_string(b.xb[i]) + ", counts " +
@@ -76,12 +76,12 @@ TEST(TripletBlock, AProbitTripletBeyondTheNormalTailIsStillWorkedOut) {
   for (std::size_t i = 0; i < b.size; ++i) {
     const TripletTerms want = triplet_terms<Link::probit>(k, b.xa[i], b.xb[i], b.count_a[i],
                                                           b.count_b[i], true);
-    EXPECT_NEAR(b.terms[i].nll, want.nll, 1e-12 * std::abs(want.nll)) << i;
-    EXPECT_NEAR(b.terms[i].d_xa, want.d_xa, 1e-12 * std::max(1.0, std::abs(want.d_xa))) << i;
+    EXPECT_NEAR(b.terms(i).nll, want.nll, 1e-12 * std::abs(want.nll)) << i;
+    EXPECT_NEAR(b.terms(i).d_xa, want.d_xa, 1e-12 * std::max(1.0, std::abs(want.d_xa))) << i;
   }
   // −log Φ(−40) by its asymptotic series, 40²/2 + log(40·√(2π)) − log(1 − 1/40² + 3/40⁴) = 804.6084
   // (the next term is 15/40⁶).
-  EXPECT_NEAR(b.terms[4].nll, 804.6084, 1e-3);
+  EXPECT_NEAR(b.terms(4).nll, 804.6084, 1e-3);
 }
 
 }  // namespace
