@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
+#include "model/numeric/cpu_features.hpp"
 #include "model/space/triplet_block.hpp"
 
 namespace nibrig::model::space {
@@ -32,14 +34,18 @@ class TripletOffsets {
   TripletOffsets(const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient)
       : q_(q), gradient_(gradient), va_(q.rows()), vb_(q.rows()) {}
 
-  std::pair<double, double> distances(const io::Triplet& t) {
+  using Key = const io::Triplet*;
+  static Key key(const io::Triplet& t) { return &t; }
+  std::pair<double, double> distances(Key k) {
+    const io::Triplet& t = *k;
     va_ = column(t.a) - column(t.reference);
     vb_ = column(t.b) - column(t.reference);
     return {va_.norm(), vb_.norm()};
   }
   // ∂nll/∂d of triplet t. ∂‖v‖/∂v = v/‖v‖, taken as 0 where two stimuli coincide (a subgradient).
-  void pull(const io::Triplet& t, double along_a, double along_b) {
-    const auto [da, db] = distances(t);
+  void pull(Key k, double along_a, double along_b) {
+    const io::Triplet& t = *k;
+    const auto [da, db] = distances(k);
     const double ka = da > 0 ? along_a / da : 0.0, kb = db > 0 ? along_b / db : 0.0;
     gradient_column(t.a) += ka * va_;
     gradient_column(t.b) += kb * vb_;
@@ -71,18 +77,26 @@ class PairTable {
   using Vector = Eigen::Matrix<double, D, 1>;
   PairTable(const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient)
       : q_(q), gradient_(gradient), n_(q.cols()), distance_(n_, n_) {
+    // Squares first, then their roots a column at a time: the roots then run in vector registers.
     for (Eigen::Index j = 1; j < n_; ++j)
-      for (Eigen::Index i = 0; i < j; ++i) distance_(i, j) = (column(j) - column(i)).norm();
+      for (Eigen::Index i = 0; i < j; ++i) distance_(i, j) = (column(j) - column(i)).squaredNorm();
+    for (Eigen::Index j = 1; j < n_; ++j) {
+      double* d = &distance_(0, j);
+      for (Eigen::Index i = 0; i < j; ++i) d[i] = std::sqrt(d[i]);
+    }
     // A stimulus from itself, as the offsets give it: only a triplet validate() refuses reads it.
     distance_.diagonal().setZero();
     if (gradient_) pull_.setZero(n_, n_);
   }
-  std::pair<double, double> distances(const io::Triplet& t) const {
-    return {distance_.data()[index(t.reference, t.a)], distance_.data()[index(t.reference, t.b)]};
+  // Where the triplet's two pairs are, found once for both its distances and its pulls.
+  using Key = std::array<Eigen::Index, 2>;
+  Key key(const io::Triplet& t) const { return {index(t.reference, t.a), index(t.reference, t.b)}; }
+  std::pair<double, double> distances(Key k) const {
+    return {distance_.data()[k[0]], distance_.data()[k[1]]};
   }
-  void pull(const io::Triplet& t, double along_a, double along_b) {
-    pull_.data()[index(t.reference, t.a)] += along_a;
-    pull_.data()[index(t.reference, t.b)] += along_b;
+  void pull(Key k, double along_a, double along_b) {
+    pull_.data()[k[0]] += along_a;
+    pull_.data()[k[1]] += along_b;
   }
   void finish() {
     if (!gradient_) return;
@@ -133,39 +147,56 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
   // A block's x_a, x_b and counts are gathered, its terms worked out together (block_terms), and
   // then spread back to the distances and the model.
   TripletBlock block;
+  static const bool avx2 = numeric::cpu_has_avx2_fma();
   std::array<double, TripletBlock::kSize> per, sum;  // ∂x/∂d = s/σ_t, and Σσ_i² of the three
+  std::array<typename Distances::Key, TripletBlock::kSize> keys;
   double nll = 0.0, lapse_gradient = 0.0;
+  const double scale = m.scale;
   for (std::size_t first = 0; first < p.triplets.size(); first += TripletBlock::kSize) {
     block.size = std::min(TripletBlock::kSize, p.triplets.size() - first);
     for (std::size_t i = 0; i < block.size; ++i) {
       const io::Triplet& t = p.triplets[first + i];
-      const auto [da, db] = distances.distances(t);
-      per[i] = m.scale;
-      if (noise) {
+      keys[i] = distances.key(t);
+      std::tie(block.xa[i], block.xb[i]) = distances.distances(keys[i]);  // d_a, d_b until scaled
+      block.count_a[i] = t.count_a, block.count_b[i] = t.count_b;
+      if (noise)
         sum[i] = variance(static_cast<Eigen::Index>(t.reference)) +
                  variance(static_cast<Eigen::Index>(t.a)) + variance(static_cast<Eigen::Index>(t.b));
-        per[i] = m.scale * std::sqrt(3.0 / sum[i]);
-      }
-      block.xa[i] = per[i] * da, block.xb[i] = per[i] * db;
-      block.count_a[i] = t.count_a, block.count_b[i] = t.count_b;
     }
-    block_terms<L>(kernel, block, with_gradient);
-    for (std::size_t i = 0; i < block.size; ++i) nll += block.nll[i];
-    if (coordinate_gradient)
-      for (std::size_t i = 0; i < block.size; ++i)
-        distances.pull(p.triplets[first + i], block.d_xa[i] * per[i], block.d_xb[i] * per[i]);
+    // The gathers above apart from the arithmetic here, which then runs in vector registers.
+    if (noise)
+      for (std::size_t i = 0; i < block.size; ++i) per[i] = scale * std::sqrt(3.0 / sum[i]);
+    else
+      per.fill(scale);
+    for (std::size_t i = 0; i < block.size; ++i) block.xa[i] *= per[i], block.xb[i] *= per[i];
+    if (avx2)
+      block_terms_avx2<L>(kernel, block, with_gradient);
+    else
+      block_terms<L>(kernel, block, with_gradient);
+    // The sum in the pulls' loop, in the same order: its additions' latency hides behind their
+    // loads.
+    if (coordinate_gradient) {
+      for (std::size_t i = 0; i < block.size; ++i) {
+        nll += block.nll[i];
+        distances.pull(keys[i], block.d_xa[i] * per[i], block.d_xb[i] * per[i]);
+      }
+    } else {
+      for (std::size_t i = 0; i < block.size; ++i) nll += block.nll[i];
+    }
     if (!model_gradient) continue;
     // In a local, not through the pointer: a store and a load a triplet otherwise, as the
     // compiler cannot tell the model's gradient from the distances' pulls.
-    for (std::size_t i = 0; i < block.size; ++i) lapse_gradient += block.d_lapse[i];
+    if (kernel.lapse != 0.0)  // else every ∂/∂ε is 0
+      for (std::size_t i = 0; i < block.size; ++i) lapse_gradient += block.d_lapse[i];
     if (!noise) continue;
     for (std::size_t i = 0; i < block.size; ++i) {
       const io::Triplet& t = p.triplets[first + i];
-      // ∂x/∂log σ = −x
+      // ∂x/∂log σ = −x, and ∂log σ_t/∂η_k = σ_k²/Σσ²: one division a triplet, not three.
       const double d_log_sigma = -(block.d_xa[i] * block.xa[i] + block.d_xb[i] * block.xb[i]);
+      const double per_variance = d_log_sigma / sum[i];
       for (std::size_t s : {t.reference, t.a, t.b}) {
         const auto k = static_cast<Eigen::Index>(s);
-        model_gradient->log_noise(k) += d_log_sigma * variance(k) / sum[i];
+        model_gradient->log_noise(k) += per_variance * variance(k);
       }
     }
   }

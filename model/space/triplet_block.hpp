@@ -41,7 +41,7 @@ using Column = TripletBlock::Column;
 // The probit, as normal_sides: Φ of the smaller side from erfc, 1 − it for the larger, φ from exp.
 // Returns whether a triplet lies beyond kNormalTail, where erfc nears underflow: the caller works
 // the block out one triplet at a time then (normal_sides' continued fraction).
-inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
+[[gnu::always_inline]] inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
   const std::size_t n = b.size;
   Column &z = b.c1, &erfc_arg = b.c2, &exp_arg = b.c3, &small = b.c4, &pdf = b.c5;
   int far = 0;
@@ -80,7 +80,7 @@ inline bool probit_block_link(TripletBlock& b, bool logs_wanted) {
 }
 
 // The logistic, as link_terms<Link::logistic>: e = e^{−|cz|}, and log(1 + e) for both sides.
-inline void logistic_block_link(TripletBlock& b, bool logs_wanted) {
+[[gnu::always_inline]] inline void logistic_block_link(TripletBlock& b, bool logs_wanted) {
   const std::size_t n = b.size;
   Column &cz = b.c1, &exp_arg = b.c2, &e = b.c3, &one_plus_e = b.c4, &log_one_plus_e = b.c5;
   for (std::size_t i = 0; i < n; ++i) {
@@ -107,7 +107,8 @@ inline void logistic_block_link(TripletBlock& b, bool logs_wanted) {
 
 // The Student-t, as link_terms<Link::student_t>: k = r^{(α+1)/2} with r ≤ 1 the two kernels' bases'
 // ratio, then log(1 + k) for the likelier side and log r for the other.
-inline void student_t_block_link(TripletBlock& b, double alpha, bool logs_wanted) {
+[[gnu::always_inline]] inline void student_t_block_link(TripletBlock& b, double alpha,
+                                                        bool logs_wanted) {
   const std::size_t n = b.size;
   Column &r = b.c1, &k = b.c2, &root = b.c3, &log_r = b.c4;
   Column& a_likelier_then = b.c5;  // 1 where w_a ≤ w_b, else 0
@@ -153,7 +154,8 @@ inline void student_t_block_link(TripletBlock& b, double alpha, bool logs_wanted
 // Each answer's part from the link's, and the terms, as combined() takes them: the link's logs with
 // no lapse, else the mixture ε/2 + (1−ε)P and its log (ε ≥ kLapseInLogs here, so the mixture does
 // not underflow and every part is finite: a side no answer took is multiplied by its count, 0).
-inline void block_answers(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
+[[gnu::always_inline]] inline void block_answers(const TripletKernel& k, TripletBlock& b,
+                                                 bool with_gradient) {
   const std::size_t n = b.size;
   const double lapse = k.lapse;
   if (lapse == 0.0) {
@@ -188,7 +190,8 @@ inline void block_answers(const TripletKernel& k, TripletBlock& b, bool with_gra
 // One triplet at a time: a lapse below kLapseInLogs (mixed in logs), or a probit triplet in the far
 // tail.
 template <Link L>
-void block_terms_one_by_one(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
+[[gnu::always_inline]] inline void block_terms_one_by_one(const TripletKernel& k, TripletBlock& b,
+                                                          bool with_gradient) {
   for (std::size_t i = 0; i < b.size; ++i) {
     const TripletTerms t =
         triplet_terms<L>(k, b.xa[i], b.xb[i], b.count_a[i], b.count_b[i], with_gradient);
@@ -199,9 +202,10 @@ void block_terms_one_by_one(const TripletKernel& k, TripletBlock& b, bool with_g
 }  // namespace detail
 
 // The terms (b.nll, b.d_xa, b.d_xb, b.d_lapse) for every i < b.size, for the link L (k.link is not
-// read).
+// read). Inlined whole into its callers, so that block_terms_avx2 compiles all of it for AVX2.
 template <Link L>
-void block_terms(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
+[[gnu::always_inline]] inline void block_terms(const TripletKernel& k, TripletBlock& b,
+                                               bool with_gradient) {
   if (k.lapse != 0.0 && k.lapse < detail::kLapseInLogs)
     return detail::block_terms_one_by_one<L>(k, b, with_gradient);
   const bool logs_wanted = k.lapse == 0.0;
@@ -218,6 +222,15 @@ void block_terms(const TripletKernel& k, TripletBlock& b, bool with_gradient) {
       break;
   }
   detail::block_answers(k, b, with_gradient);
+}
+
+// The same in AVX2's four lanes, twice SSE2's two, for a CPU that has them
+// (numeric::cpu_has_avx2_fma). The same operations in the same order and no FMA (whose one
+// rounding would differ), so the same bits.
+template <Link L>
+[[gnu::target("avx2")]] void block_terms_avx2(const TripletKernel& k, TripletBlock& b,
+                                              bool with_gradient) {
+  block_terms<L>(k, b, with_gradient);
 }
 
 }  // namespace nibrig::model::space
