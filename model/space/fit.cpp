@@ -44,7 +44,7 @@ struct StartResult {
   Eigen::MatrixXd coordinates;
   JudgmentModel model;
   double objective = 0.0;
-  int iterations = 0;
+  int iterations = 0, evaluations = 0;
 };
 
 // The fitted parts of the model after the coordinates in the optimiser's vector: θ with
@@ -93,10 +93,18 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
   // The best finite point any evaluation saw: LBFGSpp's line search evaluates trial points in
   // place and, when it gives up (at a kink where stimuli coincide, at round-off level near the
   // optimum, or after a trial step overflowed to a non-finite point), leaves x at its last trial.
-  Eigen::VectorXd best_x = x;
+  Eigen::VectorXd best_x = x, best_grad;
   double best_f = std::numeric_limits<double>::infinity();
   JudgmentModel trial = model;
+  StartResult result;
   auto function = [&](const Eigen::VectorXd& v, Eigen::VectorXd& grad) {
+    // A restart (below) begins where an evaluation has been: its value and gradient are kept. A
+    // Student-t start restarts several times in its first steps, where the curvature is negative.
+    if (best_grad.size() > 0 && v == best_x) {
+      grad = best_grad;
+      return best_f;
+    }
+    ++result.evaluations;
     const Eigen::MatrixXd q =
         to_coordinates(v.head(free_coordinates), problem.dims, problem.stimuli, options.pinned);
     read_model(v, free_coordinates, trial);
@@ -114,6 +122,7 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
     if (std::isfinite(f) && f < best_f && grad.allFinite()) {
       best_f = f;
       best_x = v;
+      best_grad = grad;
     }
     return std::isfinite(f) ? f : std::numeric_limits<double>::infinity();
   };
@@ -127,7 +136,6 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
   param.m = 10;  // corrections kept, as scipy's L-BFGS-B (maxcor); LBFGSpp's default is 6
   param.max_iterations = options.max_iterations;
   LBFGSpp::LBFGSSolver<double> solver(param);
-  StartResult result;
   // A line search that gives up at a kink (two stimuli crossing, common in 1-D) has stopped short
   // of the optimum, not reached it: restart the quasi-Newton memory from the best point while that
   // still improves the objective.
@@ -186,6 +194,7 @@ StartResult run_start(const SpaceProblem& problem, const FitOptions& options, in
   const StartResult first = minimize_from(link_alone, q0, options, start);
   StartResult result = minimize_from(problem, first.coordinates, options, start);
   result.iterations += first.iterations;
+  result.evaluations += first.evaluations;
   return result;
 }
 
@@ -230,6 +239,7 @@ FitResult fit_space(const SpaceProblem& problem, const FitOptions& options,
   fit.model = best.model;
   fit.objective = best.objective;
   fit.iterations = best.iterations;
+  fit.evaluations = best.evaluations;
   SpaceProblem fitted = problem;
   fitted.model = best.model;
   fit.negative_log_likelihood = negative_log_likelihood(fitted, best.coordinates);

@@ -45,6 +45,9 @@ struct FitResult {
   std::vector<double> start_objectives;  // the optimum each start reached, ascending
   int best_start = 0;
   int iterations = 0;  // of the best start
+  // of the objective with its gradient, in the best start (a restart's first point is not
+  // evaluated again)
+  int evaluations = 0;
 };
 
 // Throws what validate(problem) throws, and std::invalid_argument for starts outside

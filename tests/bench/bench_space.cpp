@@ -104,16 +104,18 @@ void BM_SpaceStartLagunas3D(benchmark::State& state) {
   options.threads = 1;
   options.spectral_start = false;  // random, as the reference's starts
   unsigned seed = 0;
-  double best = 0.0, iterations = 0.0;
+  double best = 0.0, iterations = 0.0, evaluations = 0.0;
   for (auto _ : state) {
     options.seed = seed++;  // a new start each time, as the reference's three
     const auto fit = space::fit_space(p, options);
     best = seed == 1 ? fit.objective : std::min(best, fit.objective);
     iterations += fit.iterations;
+    evaluations += fit.evaluations;
   }
   state.SetLabel(family);
   state.counters["objective"] = best;
   state.counters["iterations"] = iterations / static_cast<double>(seed);
+  state.counters["evaluations"] = evaluations / static_cast<double>(seed);
 }
 
 // One evaluation of the objective and its gradient at a random 3-D space of Lagunas's stimuli, per
