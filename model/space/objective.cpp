@@ -130,9 +130,11 @@ class PairTable {
 
 // The likelihood over the triplets, their distances from `Distances`, for the link L.
 template <Link L, class Distances>
-double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
-                                Distances& distances, bool coordinate_gradient,
-                                ModelGradient* model_gradient) {
+[[gnu::always_inline]] inline double likelihood_over_triplets(const SpaceProblem& p,
+                                                              const JudgmentModel& m,
+                                                              Distances& distances,
+                                                              bool coordinate_gradient,
+                                                              ModelGradient* model_gradient) {
   const bool noise = m.log_noise.size() > 0;
   const TripletKernel kernel = kernel_of(m, p.dims);
   const bool with_gradient = coordinate_gradient || model_gradient;
@@ -147,7 +149,6 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
   // A block's x_a, x_b and counts are gathered, its terms worked out together (block_terms), and
   // then spread back to the distances and the model.
   TripletBlock block;
-  static const bool avx2 = numeric::cpu_has_avx2_fma();
   std::array<double, TripletBlock::kSize> per, sum;  // ∂x/∂d = s/σ_t, and Σσ_i² of the three
   std::array<typename Distances::Key, TripletBlock::kSize> keys;
   double nll = 0.0, lapse_gradient = 0.0;
@@ -169,10 +170,7 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
     else
       per.fill(scale);
     for (std::size_t i = 0; i < block.size; ++i) block.xa[i] *= per[i], block.xb[i] *= per[i];
-    if (avx2)
-      block_terms_avx2<L>(kernel, block, with_gradient);
-    else
-      block_terms<L>(kernel, block, with_gradient);
+    block_terms<L>(kernel, block, with_gradient);
     // The sum in the pulls' loop, in the same order: its additions' latency hides behind their
     // loads.
     if (coordinate_gradient) {
@@ -206,8 +204,11 @@ double likelihood_over_triplets(const SpaceProblem& p, const JudgmentModel& m,
 }
 
 template <class Distances>
-double likelihood_by_link(const SpaceProblem& p, const JudgmentModel& m, Distances& distances,
-                          bool coordinate_gradient, ModelGradient* model_gradient) {
+[[gnu::always_inline]] inline double likelihood_by_link(const SpaceProblem& p,
+                                                        const JudgmentModel& m,
+                                                        Distances& distances,
+                                                        bool coordinate_gradient,
+                                                        ModelGradient* model_gradient) {
   switch (m.family.link) {
     case Link::logistic:
       return likelihood_over_triplets<Link::logistic>(p, m, distances, coordinate_gradient,
@@ -223,8 +224,10 @@ double likelihood_by_link(const SpaceProblem& p, const JudgmentModel& m, Distanc
 }
 
 template <int D>
-double likelihood_in(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
-                     Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
+[[gnu::always_inline]] inline double likelihood_in(const SpaceProblem& p, const JudgmentModel& m,
+                                                   const Eigen::MatrixXd& q,
+                                                   Eigen::MatrixXd* gradient,
+                                                   ModelGradient* model_gradient) {
   const auto n = static_cast<std::size_t>(q.cols());
   if (n * (n - 1) / 2 <= 2 * p.triplets.size()) {
     PairTable<D> pairs(q, gradient);
@@ -234,17 +237,47 @@ double likelihood_in(const SpaceProblem& p, const JudgmentModel& m, const Eigen:
   return likelihood_by_link(p, m, offsets, gradient != nullptr, model_gradient);
 }
 
+// The likelihood's loops compiled twice: for any x86-64 (SSE2's two lanes) and for AVX2 (four),
+// everything from likelihood_in down inlined into each. No FMA in either (its single rounding
+// would differ), so both give the same bits (LikelihoodLoops, in the tests).
+template <int D>
+double likelihood_in_portable(const SpaceProblem& p, const JudgmentModel& m,
+                              const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient,
+                              ModelGradient* model_gradient) {
+  return likelihood_in<D>(p, m, q, gradient, model_gradient);
+}
+template <int D>
+[[gnu::target("avx2")]] double likelihood_in_avx2(const SpaceProblem& p, const JudgmentModel& m,
+                                                  const Eigen::MatrixXd& q,
+                                                  Eigen::MatrixXd* gradient,
+                                                  ModelGradient* model_gradient) {
+  return likelihood_in<D>(p, m, q, gradient, model_gradient);
+}
+
+template <int D>
+double likelihood_built(LoopBuild build, const SpaceProblem& p, const JudgmentModel& m,
+                        const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient,
+                        ModelGradient* model_gradient) {
+  static const bool avx2 = numeric::cpu_has_avx2_fma();
+  if (build == LoopBuild::avx2 && !avx2)
+    throw std::invalid_argument("the likelihood's AVX2 loops were asked for; this CPU has no AVX2");
+  if (build == LoopBuild::avx2 || (build == LoopBuild::automatic && avx2))
+    return likelihood_in_avx2<D>(p, m, q, gradient, model_gradient);
+  return likelihood_in_portable<D>(p, m, q, gradient, model_gradient);
+}
+
 double likelihood_part(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,
-                       Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
+                       Eigen::MatrixXd* gradient, ModelGradient* model_gradient,
+                       LoopBuild build = LoopBuild::automatic) {
   switch (p.dims) {
     case 1:
-      return likelihood_in<1>(p, m, q, gradient, model_gradient);
+      return likelihood_built<1>(build, p, m, q, gradient, model_gradient);
     case 2:
-      return likelihood_in<2>(p, m, q, gradient, model_gradient);
+      return likelihood_built<2>(build, p, m, q, gradient, model_gradient);
     case 3:
-      return likelihood_in<3>(p, m, q, gradient, model_gradient);
+      return likelihood_built<3>(build, p, m, q, gradient, model_gradient);
     default:
-      return likelihood_in<Eigen::Dynamic>(p, m, q, gradient, model_gradient);
+      return likelihood_built<Eigen::Dynamic>(build, p, m, q, gradient, model_gradient);
   }
 }
 
@@ -331,12 +364,17 @@ double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, Eigen::MatrixX
 
 double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const JudgmentModel& m,
                  Eigen::MatrixXd* gradient, ModelGradient* model_gradient) {
+  return objective(p, q, m, gradient, model_gradient, LoopBuild::automatic);
+}
+
+double objective(const SpaceProblem& p, const Eigen::MatrixXd& q, const JudgmentModel& m,
+                 Eigen::MatrixXd* gradient, ModelGradient* model_gradient, LoopBuild build) {
   if (gradient) gradient->setZero(q.rows(), q.cols());
   if (model_gradient) {
     model_gradient->lapse = 0.0;
     model_gradient->log_noise.setZero(m.log_noise.size());
   }
-  double value = likelihood_part(p, m, q, gradient, model_gradient);
+  double value = likelihood_part(p, m, q, gradient, model_gradient, build);
   if (p.lambda > 0) value += p.lambda * correlation_part(p, q, gradient, p.lambda);
   if (p.prior_sd > 0) {
     const double precision = 1.0 / (p.prior_sd * p.prior_sd);

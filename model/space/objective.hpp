@@ -58,6 +58,14 @@ struct ModelGradient {
 double objective(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates, const JudgmentModel& model,
                  Eigen::MatrixXd* gradient, ModelGradient* model_gradient);
 
+// Which build of the likelihood's loops runs: the AVX2 one where the CPU has AVX2 (automatic, what
+// the objectives above do), or one of the two by name, so that a test can compare their bits.
+// LoopBuild::avx2 on a CPU without AVX2 throws std::invalid_argument.
+enum class LoopBuild { automatic, portable, avx2 };
+double objective(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates,
+                 const JudgmentModel& model, Eigen::MatrixXd* gradient,
+                 ModelGradient* model_gradient, LoopBuild build);
+
 // The two parts separately (for reports): −log P_exp (under problem.model) and −log P_corr
 // (without λ).
 double negative_log_likelihood(const SpaceProblem& problem, const Eigen::MatrixXd& coordinates);

@@ -202,7 +202,8 @@ template <Link L>
 }  // namespace detail
 
 // The terms (b.nll, b.d_xa, b.d_xb, b.d_lapse) for every i < b.size, for the link L (k.link is not
-// read). Inlined whole into its callers, so that block_terms_avx2 compiles all of it for AVX2.
+// read). Inlined whole into its callers, so that the likelihood's AVX2 build (objective.cpp)
+// compiles all of it for AVX2.
 template <Link L>
 [[gnu::always_inline]] inline void block_terms(const TripletKernel& k, TripletBlock& b,
                                                bool with_gradient) {
@@ -222,15 +223,6 @@ template <Link L>
       break;
   }
   detail::block_answers(k, b, with_gradient);
-}
-
-// The same in AVX2's four lanes, twice SSE2's two, for a CPU that has them
-// (numeric::cpu_has_avx2_fma). The same operations in the same order and no FMA (whose one
-// rounding would differ), so the same bits.
-template <Link L>
-[[gnu::target("avx2")]] void block_terms_avx2(const TripletKernel& k, TripletBlock& b,
-                                              bool with_gradient) {
-  block_terms<L>(k, b, with_gradient);
 }
 
 }  // namespace nibrig::model::space

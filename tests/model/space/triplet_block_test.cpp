@@ -7,8 +7,6 @@
 #include <random>
 #include <string>
 
-#include "model/numeric/cpu_features.hpp"
-
 namespace nibrig::model::space {
 namespace {
 
@@ -62,40 +60,6 @@ TEST(TripletBlock, EveryLinkGivesTheTermsOfOneTripletAtATime) {
     expect_block_matches_one_by_one<Link::logistic>(1.0, lapse, 12.0, 3);
     for (double alpha : {0.0, 1.0, 2.0})
       expect_block_matches_one_by_one<Link::student_t>(alpha, lapse, 6.0, 4);
-  }
-}
-
-// The AVX2 build of the same loops runs the same operations in the same order, with no FMA: the
-// same bits as the portable one, so a fit does not depend on the machine's vector width.
-template <Link L>
-void expect_avx2_bit_equal(double alpha, double lapse, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> x(0.0, 8.0);
-  std::uniform_int_distribution<int> count(0, 3);
-  TripletBlock portable;
-  portable.size = 251;
-  for (std::size_t i = 0; i < portable.size; ++i) {
-    portable.xa[i] = x(generator), portable.xb[i] = x(generator);
-    portable.count_a[i] = count(generator), portable.count_b[i] = count(generator);
-  }
-  TripletBlock wide = portable;
-  const TripletKernel k{L, alpha, lapse};
-  block_terms<L>(k, portable, true);
-  block_terms_avx2<L>(k, wide, true);
-  for (std::size_t i = 0; i < portable.size; ++i) {
-    EXPECT_EQ(wide.nll[i], portable.nll[i]) << i;
-    EXPECT_EQ(wide.d_xa[i], portable.d_xa[i]) << i;
-    EXPECT_EQ(wide.d_xb[i], portable.d_xb[i]) << i;
-    EXPECT_EQ(wide.d_lapse[i], portable.d_lapse[i]) << i;
-  }
-}
-
-TEST(TripletBlock, TheAvx2LoopsGiveTheSameBitsAsThePortableOnes) {
-  if (!numeric::cpu_has_avx2_fma()) GTEST_SKIP() << "this CPU has no AVX2";
-  for (double lapse : {0.0, 0.07}) {
-    expect_avx2_bit_equal<Link::probit>(1.0, lapse, 5);
-    expect_avx2_bit_equal<Link::logistic>(1.0, lapse, 6);
-    expect_avx2_bit_equal<Link::student_t>(2.0, lapse, 7);
   }
 }
 
