@@ -237,15 +237,10 @@ template <int D>
   return likelihood_by_link(p, m, offsets, gradient != nullptr, model_gradient);
 }
 
-// The likelihood's loops compiled twice: for any x86-64 (SSE2's two lanes) and for AVX2 (four),
-// everything from likelihood_in down inlined into each. No FMA in either (its single rounding
-// would differ), so both give the same bits (LikelihoodLoops, in the tests).
-template <int D>
-double likelihood_in_portable(const SpaceProblem& p, const JudgmentModel& m,
-                              const Eigen::MatrixXd& q, Eigen::MatrixXd* gradient,
-                              ModelGradient* model_gradient) {
-  return likelihood_in<D>(p, m, q, gradient, model_gradient);
-}
+// The likelihood's loops compiled twice: for any x86-64 (SSE2's two lanes, likelihood_in itself)
+// and for AVX2 (four), everything from likelihood_in down inlined into each. No FMA in either (its
+// single rounding would differ), so both give the same bits
+// (SpaceObjective.TheAvx2LoopsGiveThePortableLoopsBits).
 template <int D>
 [[gnu::target("avx2")]] double likelihood_in_avx2(const SpaceProblem& p, const JudgmentModel& m,
                                                   const Eigen::MatrixXd& q,
@@ -263,7 +258,7 @@ double likelihood_built(LoopBuild build, const SpaceProblem& p, const JudgmentMo
     throw std::invalid_argument("the likelihood's AVX2 loops were asked for; this CPU has no AVX2");
   if (build == LoopBuild::avx2 || (build == LoopBuild::automatic && avx2))
     return likelihood_in_avx2<D>(p, m, q, gradient, model_gradient);
-  return likelihood_in_portable<D>(p, m, q, gradient, model_gradient);
+  return likelihood_in<D>(p, m, q, gradient, model_gradient);
 }
 
 double likelihood_part(const SpaceProblem& p, const JudgmentModel& m, const Eigen::MatrixXd& q,

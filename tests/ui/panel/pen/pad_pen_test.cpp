@@ -81,8 +81,7 @@ TEST(PadPen, APenStrokeDrivesThePadWithItsSpeedAndForceAndUnpluggingHandsBackThe
       pad_frame(window, pad);
       // What the pad sent in the stroke's middle frames. Their median speed: on a loaded machine
       // the pen's reader thread can wait past the speed's timeout now and then, and the pad then
-      // rightly sends 0 for a frame (seen once in CI, while a Debian root was being built
-      // beside it); a wrong speed is wrong in every frame.
+      // rightly sends 0 for a frame; a wrong speed is wrong in every frame.
       if (i >= 80 && i <= 100) middle_speeds.push_back(pad.speed_mm_s());
       if (i == 90) {
         sent_force = pad.force_n();
