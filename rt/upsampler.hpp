@@ -28,12 +28,26 @@ class Upsampler {
   void process(const double* in, float* out, std::size_t frames) noexcept;
   void reset() noexcept;
 
+  // Phase p's tap on the input `lag` steps back (for a test of the sums' order).
+  double tap(std::size_t phase, std::size_t lag) const noexcept {
+    return by_lag_[lag * stride_ + phase];
+  }
+
  private:
+  static constexpr std::size_t kChunk = 64;  // inputs whose outputs are made together
+
+  void compute_rows(const double* in, std::size_t inputs) noexcept;
+
   std::size_t factor_, taps_;
-  std::vector<double> phases_;   // phase p's taps at [p·taps, (p+1)·taps), newest input first
-  std::vector<double> history_;  // last `taps` inputs, doubled so a window is contiguous
-  std::size_t newest_ = 0;       // history_ index of the newest input (and newest + taps)
-  std::size_t phase_ = 0;        // phase of the next output
+  std::size_t stride_;  // factor rounded up to a whole vector of phases
+  // The taps by lag: lag l's taps for every phase at [l·stride, l·stride + factor), so that an
+  // input's `factor` outputs are made together, a vector of phases at a time.
+  std::vector<double> by_lag_;
+  std::vector<double> line_;  // the last taps − 1 inputs, then the chunk being computed
+  std::vector<double>
+      rows_;             // the chunk's outputs: input i's phases at [i·stride, i·stride + factor)
+  std::size_t row_ = 0;  // rows_'s row of the newest input
+  std::size_t phase_ = 0;  // phase of the next output
 };
 
 }  // namespace nibrig::rt

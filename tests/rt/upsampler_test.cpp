@@ -61,6 +61,25 @@ TEST(Upsampler, BlockSizesDoNotChangeTheOutput) {
   for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << i;
 }
 
+// The phases are made side by side in lanes; each output must still be its own sum over the lags
+// in order, the same bits as the filter written out one output at a time.
+TEST(Upsampler, EveryOutputIsItsPhasesSumInOrder) {
+  for (std::size_t factor : {1u, 5u, 6u, 12u}) {
+    Upsampler up(factor, 8);
+    std::vector<double> in(300);
+    for (std::size_t i = 0; i < in.size(); ++i) in[i] = std::sin(0.37 * i) + 1e-3 * i;
+    std::vector<float> out(in.size() * factor);
+    up.process(in.data(), out.data(), out.size());
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      const std::size_t newest = j / factor, phase = j % factor;
+      double y = 0;
+      for (std::size_t l = 0; l < 8; ++l)
+        y += up.tap(phase, l) * (newest >= l ? in[newest - l] : 0.0);
+      ASSERT_EQ(out[j], static_cast<float>(y)) << factor << " " << j;
+    }
+  }
+}
+
 TEST(Upsampler, ConstantInputGivesConstantOutput) {
   Upsampler up(12);
   std::vector<double> in(100, 0.5);
