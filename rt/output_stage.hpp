@@ -35,9 +35,18 @@ class OutputStage {
 
   const OutputStageCounts& counts() const noexcept { return counts_; }
   double dc_pole() const noexcept { return pole_; }
+  // The limiter's gain now: 1 when it is not attenuating.
+  double gain() const noexcept { return gain_; }
 
  private:
+  static constexpr std::size_t kChunk = 64;  // samples filtered together, in a stack array
+
+  void high_pass_grouped(const float* in, double* out, std::size_t count) noexcept;
+  void high_pass_guarded(const float* in, double* out, std::size_t count) noexcept;
+  void limit(const double* in, float* out, std::size_t count) noexcept;
+
   double pole_;          // R of y[n] = x[n] − x[n−1] + R·y[n−1]
+  double pole_powers_[4];  // R, R², R³, R⁴
   double release_step_;  // per-sample approach of the gain back towards 1
   double limit_;
   float limit_float_;

@@ -78,6 +78,43 @@ TEST(OutputStage, NothingAVoiceCanComputePassesTheLimit) {
   EXPECT_NEAR(peak(after, 24000), 0.3, 0.01);
 }
 
+// The high-pass runs four samples a step (a shorter serial chain); it must still be the recursion
+// y[n] = x[n] − x[n−1] + R·y[n−1], whatever the chunk and block boundaries.
+TEST(OutputStage, TheHighPassIsItsRecursionInAnyBlocks) {
+  std::mt19937 generator(11);
+  std::normal_distribution<float> noise(0.0f, 0.1f);
+  std::vector<float> in(20000);
+  for (std::size_t i = 0; i < in.size(); ++i)
+    in[i] = noise(generator) + (i < 10000 ? 0.2f : 0.0f);  // a DC step, never near the limit
+  OutputStage stage({});
+  std::vector<float> out = in;
+  for (std::size_t at = 0, block = 1; at < out.size(); at += block, block = block % 97 + 3)
+    stage.process(out.data() + at, std::min(block, out.size() - at));
+  double previous_in = 0, previous_out = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const double y = in[i] - previous_in + stage.dc_pole() * previous_out;
+    previous_in = in[i];
+    previous_out = y;
+    // The two orders of the same sums differ by a few double roundings (~1e-16), far below the
+    // float output's half-step (3e-8 at these levels): at most one float step apart.
+    ASSERT_NEAR(out[i], y, std::abs(y) * 1.2e-7 + 1e-12) << i;
+  }
+  EXPECT_EQ(stage.counts().limited_samples, 0u);
+}
+
+// After a limited burst the gain releases to exactly 1, not to a rounding step below it, so quiet
+// audio afterwards passes the limiter untouched.
+TEST(OutputStage, TheGainReleasesToExactlyOne) {
+  OutputStage stage({});
+  std::vector<float> loud = sine(100.0, 2.0, 4800);
+  stage.process(loud.data(), loud.size());
+  EXPECT_LT(stage.gain(), 0.5);
+  // From 0.45 to within 1e-12 of 1 takes ln(1e12 / 0.55) ≈ 27 time constants of 0.05 s: 1.4 s.
+  std::vector<float> quiet = sine(200.0, 0.3, 96000);
+  stage.process(quiet.data(), quiet.size());
+  EXPECT_EQ(stage.gain(), 1.0);
+}
+
 TEST(OutputStage, ALoudSineIsHeldAtTheLimit) {
   OutputStage stage({});
   std::vector<float> s = sine(100.0, 2.0, 48000);
