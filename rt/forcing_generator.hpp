@@ -12,17 +12,24 @@
 
 #include "model/numeric/real_fft.hpp"
 #include "rt/forcing_table.hpp"
+#include "rt/frame_interpolator.hpp"
 #include "rt/gaussian_noise.hpp"
 #include "rt/reference_load.hpp"
 
 namespace nibrig::rt {
+
+// How a frame's inverse FFT is made: at a fraction of the table's rate and interpolated back
+// (FrameInterpolator: within 80 dB of the full-rate frame, several times faster), or at the full
+// rate (the reference the reduced one is tested against).
+enum class FrameRate { reduced, full };
 
 class ForcingGenerator {
  public:
   // Keeps `table` (shared: voices of the same tool and surface can share one). Allocates frames
   // and the FFT plan here, on the control thread; the first frames are made here too, so output
   // is stationary from the first sample. Equal seeds give equal output.
-  ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed);
+  ForcingGenerator(std::shared_ptr<const ForcingTable> table, std::uint64_t seed,
+                   FrameRate frame_rate = FrameRate::reduced);
 
   // out[i] = forcing (N) at speed[i] (m/s) and normal force[i] (N), one sample each at the
   // table's rate. Speed dependence: the amplitude spectrum is interpolated linearly between the
@@ -44,6 +51,8 @@ class ForcingGenerator {
   // when they are).
   std::size_t frame_steps() const noexcept;
   std::size_t frame_steps_done() const noexcept { return steps_done_; }
+  // The factor the frames' inverse FFTs are shortened by (1 at the full rate).
+  std::size_t frame_rate_factor() const noexcept { return interpolator_.factor(); }
 
  private:
   void prepare_next_frame_step() noexcept;
@@ -55,7 +64,8 @@ class ForcingGenerator {
 
   std::shared_ptr<const ForcingTable> table_;
   GaussianNoise noise_;
-  model::numeric::RealFft fft_;
+  FrameInterpolator interpolator_;
+  model::numeric::RealFft fft_;  // of the interpolator's reduced length
   std::size_t frame_, hop_;
   double step_phase_;  // in [0, 1): where in its share of the hop each frame step is done
   std::vector<double> window_;

@@ -6,12 +6,11 @@
 #include <stdexcept>
 
 #include "model/numeric/cpu_features.hpp"
+#include "rt/kaiser_window.hpp"
 
 namespace nibrig::rt {
 namespace {
 
-// Kaiser's β for about 80 dB of stop-band attenuation (Kaiser's formula 0.1102·(A − 8.7)).
-constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 constexpr std::size_t kLanes = 4;  // phases a vector holds (AVX2's doubles)
 
 // rows[i·stride + p] = Σ_l by_lag[l·stride + p]·line[taps − 1 + i − l], each sum over the lags in
@@ -79,9 +78,7 @@ Upsampler::Upsampler(std::size_t factor, std::size_t taps_per_phase)
     const double t = (static_cast<double>(i) - centre) / static_cast<double>(factor);  // inputs
     const double sinc = t == 0 ? 1.0 : std::sin(std::numbers::pi * t) / (std::numbers::pi * t);
     const double r = (static_cast<double>(i) - centre) / (centre + 0.5);
-    const double kaiser = std::cyl_bessel_i(0.0, kKaiserBeta * std::sqrt(std::max(0.0, 1 - r * r))) /
-                          std::cyl_bessel_i(0.0, kKaiserBeta);
-    prototype[i] = sinc * kaiser;
+    prototype[i] = sinc * kaiser_window(r, kaiser_beta(80.0));
   }
   // Output phase p (p outputs after an input arrived) uses prototype[p + l·factor] on the input
   // l steps back; each phase normalised to sum 1. The padding phases stay 0.

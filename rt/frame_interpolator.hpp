@@ -1,0 +1,35 @@
+// The forcing generator's frames are band-limited far below their rate (the catalog ends at 500 Hz,
+// the voices run at 8 kHz), so each is made at a fraction of the rate, by an inverse FFT that many
+// times shorter, and brought back to the full rate here. A frame is one period of a periodic signal
+// (an inverse FFT's output), so the interpolation wraps around its ends: a polyphase
+// Kaiser-windowed sinc, cut off halfway between the band's top and its first image, designed for 90
+// dB.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace nibrig::rt {
+
+class FrameInterpolator {
+ public:
+  // The largest factor (1, 2, 4 or 8, dividing frame_length) whose reduced rate keeps the first
+  // image at least one band above the band (the band's top at most a third of the reduced rate),
+  // for a band of `active_bins` bins of a frame_length-point frame. Allocates (control thread).
+  FrameInterpolator(std::size_t frame_length, std::size_t active_bins);
+
+  std::size_t factor() const noexcept { return factor_; }
+  std::size_t taps() const noexcept { return taps_; }
+  std::size_t reduced_length() const noexcept { return frame_length_ / factor_; }
+
+  // out[0, frame_length) from reduced[0, reduced_length()), reduced[m] being out[m·factor]
+  // (which comes back exactly). With a factor of 1, a copy. No allocation, lock or exception.
+  void interpolate(const double* reduced, double* out) noexcept;
+
+ private:
+  std::size_t frame_length_, factor_, taps_ = 0, stride_ = 0;
+  std::vector<double> by_tap_;  // tap j's coefficient for phase r at [j·stride + r]
+  std::vector<double> ends_;    // copies of the reduced frame's ends, wrapped (see interpolate)
+};
+
+}  // namespace nibrig::rt
