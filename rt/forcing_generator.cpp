@@ -26,8 +26,8 @@ namespace nibrig::rt {
 
 namespace {
 
-// Z is drawn in this many parts (a few hundred bins each at 8 kHz), so that no call pays for
-// thousands of Gaussian draws; the draws come in the same order, so the noise does not depend on it.
+// Z is drawn in this many parts (about 64 bins each at 8 kHz), so that no call pays for all of a
+// frame's Gaussian draws; the draws come in the same order, so the noise does not depend on it.
 constexpr std::size_t kNoiseChunks = 8;
 
 // Where in each step's share of the hop a generator does it: the seed's multiple of the golden
@@ -59,9 +59,10 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
     window_[n] = std::sin(std::numbers::pi * (static_cast<double>(n) + 0.5) /
                           static_cast<double>(frame_));
   frames_.assign(2 * table_->speeds().size() * frame_, 0.0);
-  z_.resize(table_->bins());
+  // Only the bins some speed reaches are drawn: the others are zero in every frame.
+  z_.resize(table_->active_bins());
   for (auto* draws : {&draw_re_, &draw_im_, &draw_scratch_})
-    draws->resize(table_->bins() / kNoiseChunks + 1);
+    draws->resize(table_->active_bins() / kNoiseChunks + 1);
   model::numeric::vector_math_kind();  // its choice made here, not on the audio thread
   finish_next_frame();
   start_next_hop();     // frame −1: its second half overlaps the first output hop
@@ -74,11 +75,11 @@ std::size_t ForcingGenerator::frame_steps() const noexcept {
 }
 
 void ForcingGenerator::prepare_next_frame_step() noexcept {
-  const std::size_t bins = table_->bins();
+  const std::size_t active = table_->active_bins();
   if (steps_done_ < kNoiseChunks) {
     // One draw of Z for all speeds (the coherence above), E|Z|² = 1.
-    const std::size_t from = bins * steps_done_ / kNoiseChunks;
-    const std::size_t to = bins * (steps_done_ + 1) / kNoiseChunks;
+    const std::size_t from = active * steps_done_ / kNoiseChunks;
+    const std::size_t to = active * (steps_done_ + 1) / kNoiseChunks;
     noise_.normal_pairs(draw_re_.data(), draw_im_.data(), draw_scratch_.data(), to - from);
     for (std::size_t k = from; k < to; ++k)
       z_[k] = {draw_re_[k - from] * std::numbers::sqrt2 / 2,
@@ -90,7 +91,6 @@ void ForcingGenerator::prepare_next_frame_step() noexcept {
     const double scale = 1.0 / static_cast<double>(frame_);
     auto spectrum = fft_.spectrum();
     const auto magnitude = table_->magnitudes(s);
-    const std::size_t active = table_->active_bins();
     for (std::size_t k = 0; k < active; ++k) spectrum[k] = z_[k] * magnitude[k];
     std::fill(spectrum.begin() + static_cast<std::ptrdiff_t>(active), spectrum.end(), 0.0);
     fft_.backward();
