@@ -69,8 +69,12 @@ TEST(PredictCli, PlotWithoutAMeasurementIsRefusedBeforeAnyWork) {
 }
 
 TEST(PredictCli, WithoutForcingItSaysWhichModelAndCountsItInItsTime) {
-  // The default model's fit, when it is not in the user cache yet, is most of the wait.
+  // The default model's fit, when it is not in the user cache yet, is most of the wait. An empty
+  // user cache of its own and no shipped layer, so that the fit is made here: found in either, the
+  // command took 0.4 s against the 0.86 s its process took to start and end on a busy machine.
   const auto out = nibrig::test::scratch_dir("cli_predict_fits");
+  const nibrig::test::ScopedCacheDir own_cache(nibrig::test::scratch_dir("cli_predict_fits_cache"));
+  const nibrig::test::ScopedEnvironment no_shipped_layer("NIBRIG_SHIPPED_CACHE", "");
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
   const auto start = std::chrono::steady_clock::now();
