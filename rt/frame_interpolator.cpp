@@ -91,7 +91,9 @@ void run_portable(const double* by_tap, std::size_t taps, std::size_t factor, co
 }  // namespace
 
 FrameInterpolator::FrameInterpolator(std::size_t frame_length, std::size_t active_bins)
-    : frame_length_(frame_length), factor_(choose_factor(frame_length, active_bins)) {
+    : frame_length_(frame_length),
+      factor_(choose_factor(frame_length, active_bins)),
+      avx2_fma_(model::numeric::cpu_has_avx2_fma()) {
   if (factor_ == 1) return;
   const std::size_t reduced = frame_length / factor_;
   // The transition runs from the band's top to its first image (the reduced rate less the top),
@@ -107,8 +109,8 @@ FrameInterpolator::FrameInterpolator(std::size_t frame_length, std::size_t activ
     taps_ = 0;
     return;
   }
-  stride_ = factor_ <= kPhasesPerVector ? kPhasesPerVector : 2 * kPhasesPerVector;
-  by_tap_.assign(taps_ * stride_, 0.0);
+  const std::size_t stride = factor_ <= kPhasesPerVector ? kPhasesPerVector : 2 * kPhasesPerVector;
+  by_tap_.assign(taps_ * stride, 0.0);
   // Output phase r of reduced sample m lies r/factor after it; tap j reads reduced sample
   // m + j − (taps/2 − 1), at x = r/factor + taps/2 − 1 − j reduced samples from the output. The
   // sinc is cut off at half the reduced rate, halfway between the band's top and its image; each
@@ -124,10 +126,10 @@ FrameInterpolator::FrameInterpolator(std::size_t frame_length, std::size_t activ
       const double sinc = x == 0   ? 1.0
                           : r == 0 ? 0.0
                                    : std::sin(std::numbers::pi * x) / (std::numbers::pi * x);
-      by_tap_[j * stride_ + r] = sinc * kaiser;
+      by_tap_[j * stride + r] = sinc * kaiser;
       sum += sinc * kaiser;
     }
-    for (std::size_t j = 0; j < taps_; ++j) by_tap_[j * stride_ + r] /= sum;
+    for (std::size_t j = 0; j < taps_; ++j) by_tap_[j * stride + r] /= sum;
   }
   ends_.assign(3 * (taps_ - 1), 0.0);
 }
@@ -148,8 +150,7 @@ void FrameInterpolator::interpolate(const double* reduced, double* out) noexcept
   std::copy_n(reduced, taps_ - 1, head + before);
   std::copy_n(reduced + n - after - before, after + before, tail);
   std::copy_n(reduced, after, tail + after + before);
-  static const bool avx2_fma = model::numeric::cpu_has_avx2_fma();
-  auto run = avx2_fma ? run_avx2_fma : run_portable;
+  auto run = avx2_fma_ ? run_avx2_fma : run_portable;
   const double* by_tap = by_tap_.data();
   run(by_tap, taps_, factor_, head, before, out);
   run(by_tap, taps_, factor_, reduced, n - before - after, out + before * factor_);

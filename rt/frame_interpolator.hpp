@@ -19,7 +19,6 @@ class FrameInterpolator {
   FrameInterpolator(std::size_t frame_length, std::size_t active_bins);
 
   std::size_t factor() const noexcept { return factor_; }
-  std::size_t taps() const noexcept { return taps_; }
   std::size_t reduced_length() const noexcept { return frame_length_ / factor_; }
 
   // out[0, frame_length) from reduced[0, reduced_length()), reduced[m] being out[m·factor]
@@ -27,8 +26,9 @@ class FrameInterpolator {
   void interpolate(const double* reduced, double* out) noexcept;
 
  private:
-  std::size_t frame_length_, factor_, taps_ = 0, stride_ = 0;
-  std::vector<double> by_tap_;  // tap j's coefficient for phase r at [j·stride + r]
+  std::size_t frame_length_, factor_, taps_ = 0;
+  bool avx2_fma_;               // the AVX2 loop: asked here, not on the audio thread
+  std::vector<double> by_tap_;  // tap j's coefficient for phase r at [j·stride + r], stride 4 or 8
   std::vector<double> ends_;    // copies of the reduced frame's ends, wrapped (see interpolate)
 };
 

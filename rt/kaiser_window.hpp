@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace nibrig::rt {
 
@@ -10,7 +11,7 @@ namespace nibrig::rt {
 // samples for a transition band of `transition` (a fraction of the sample rate).
 constexpr double kaiser_beta(double db) { return 0.1102 * (db - 8.7); }
 inline double kaiser_length(double db, double transition) {
-  return (db - 7.95) / (2.285 * 2 * 3.141592653589793 * transition);
+  return (db - 7.95) / (2.285 * 2 * std::numbers::pi * transition);
 }
 
 // The window at u, in half-lengths from its centre (0 beyond ±1).

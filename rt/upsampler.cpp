@@ -68,7 +68,10 @@ template <std::size_t G>
 }  // namespace
 
 Upsampler::Upsampler(std::size_t factor, std::size_t taps_per_phase)
-    : factor_(factor), taps_(taps_per_phase), stride_((factor + kLanes - 1) / kLanes * kLanes) {
+    : factor_(factor),
+      taps_(taps_per_phase),
+      stride_((factor + kLanes - 1) / kLanes * kLanes),
+      avx2_(model::numeric::cpu_has_avx2_fma()) {
   if (factor == 0 || taps_per_phase == 0)
     throw std::invalid_argument("an upsampler needs a factor and taps per phase of at least 1");
   const std::size_t length = factor * taps_per_phase;
@@ -91,7 +94,6 @@ Upsampler::Upsampler(std::size_t factor, std::size_t taps_per_phase)
   }
   line_.assign(taps_ - 1 + kChunk, 0.0);
   rows_.assign(kChunk * stride_, 0.0);
-  model::numeric::cpu_has_avx2_fma();  // asked here, not on the audio thread
 }
 
 std::size_t Upsampler::inputs_needed(std::size_t frames) const noexcept {
@@ -101,8 +103,7 @@ std::size_t Upsampler::inputs_needed(std::size_t frames) const noexcept {
 
 void Upsampler::compute_rows(const double* in, std::size_t inputs) noexcept {
   std::copy_n(in, inputs, line_.data() + taps_ - 1);
-  static const bool avx2 = model::numeric::cpu_has_avx2_fma();
-  if (avx2)
+  if (avx2_)
     accumulate_avx2(by_lag_.data(), stride_, taps_, line_.data(), rows_.data(), inputs);
   else
     accumulate_any(by_lag_.data(), stride_, taps_, line_.data(), rows_.data(), inputs);

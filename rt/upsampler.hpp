@@ -48,6 +48,7 @@ class Upsampler {
       rows_;             // the chunk's outputs: input i's phases at [i·stride, i·stride + factor)
   std::size_t row_ = 0;  // rows_'s row of the newest input
   std::size_t phase_ = 0;  // phase of the next output
+  bool avx2_;              // the AVX2 loop: asked here, not on the audio thread
 };
 
 }  // namespace nibrig::rt

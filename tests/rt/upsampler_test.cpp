@@ -64,7 +64,7 @@ TEST(Upsampler, BlockSizesDoNotChangeTheOutput) {
 // The phases are made side by side in lanes; each output must still be its own sum over the lags
 // in order, the same bits as the filter written out one output at a time.
 TEST(Upsampler, EveryOutputIsItsPhasesSumInOrder) {
-  for (std::size_t factor : {1u, 5u, 6u, 12u}) {
+  for (std::size_t factor : {1u, 5u, 6u, 12u, 24u}) {  // one to four vectors of phases, and more
     Upsampler up(factor, 8);
     std::vector<double> in(300);
     for (std::size_t i = 0; i < in.size(); ++i) in[i] = std::sin(0.37 * i) + 1e-3 * i;
