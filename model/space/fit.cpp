@@ -128,11 +128,11 @@ StartResult minimize_from(const SpaceProblem& problem, const Eigen::MatrixXd& q0
   };
   LBFGSpp::LBFGSParam<double> param;
   param.epsilon = 1e-6;  // relative gradient norm: far below what a count of judgments resolves
-  // Or when an iteration gains less than 1e-9 of the objective (scipy's L-BFGS-B stops at 2.2e-9):
-  // Lagunas's 43,000 nats then move by 4e-5, far below what a judgment resolves, where the gradient
+  // Or when an iteration gains less than 2.2e-9 of the objective, scipy's L-BFGS-B's default ftol:
+  // Lagunas's 43,000 nats then move by 1e-4, far below what a judgment resolves, where the gradient
   // test alone spends many more evaluations polishing the same optimum to its last digits.
   param.past = 1;
-  param.delta = 1e-9;
+  param.delta = 2.220446049250313e-09;
   param.m = 10;  // corrections kept, as scipy's L-BFGS-B (maxcor); LBFGSpp's default is 6
   param.max_iterations = options.max_iterations;
   LBFGSpp::LBFGSSolver<double> solver(param);
