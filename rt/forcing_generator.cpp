@@ -45,10 +45,8 @@ ForcingGenerator::ForcingGenerator(std::shared_ptr<const ForcingTable> table, st
                                    FrameRate frame_rate)
     : table_(std::move(table)),
       noise_(seed),
-      interpolator_(table_ ? table_->frame_length() : 2, !table_ ? 2
-                                                         : frame_rate == FrameRate::full
-                                                             ? table_->frame_length()
-                                                             : table_->active_bins()),
+      interpolator_(table_ ? table_->frame_length() : 2, table_ ? table_->active_bins() : 1,
+                    frame_rate),
       fft_(interpolator_.reduced_length(), model::numeric::RealFft::Plans::backward),
       frame_(table_ ? table_->frame_length() : 2),
       hop_(frame_ / 2),

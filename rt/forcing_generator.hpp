@@ -18,11 +18,6 @@
 
 namespace nibrig::rt {
 
-// How a frame's inverse FFT is made: at a fraction of the table's rate and interpolated back
-// (FrameInterpolator: within 80 dB of the full-rate frame, several times faster), or at the full
-// rate (the reference the reduced one is tested against).
-enum class FrameRate { reduced, full };
-
 class ForcingGenerator {
  public:
   // Keeps `table` (shared: voices of the same tool and surface can share one). Allocates frames

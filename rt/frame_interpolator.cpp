@@ -24,43 +24,39 @@ std::size_t choose_factor(std::size_t frame_length, std::size_t active_bins) {
 // Four doubles: a register of AVX2, two of SSE2 in the portable build.
 using Vector = double __attribute__((vector_size(kPhasesPerVector * sizeof(double))));
 
-// out[m·F + r] = Σ_j by_tap[j·stride + r]·x[m + j], for a factor F of 2, 4 or 8 known when
-// compiled (a run-time count made the phases' stores a call to memmove). An output's phases are
-// side by side in vectors, and kBlock outputs are summed together, since each one's sum is a chain
-// of dependent multiply-adds.
+// out[(m + b)·F + r] = Σ_j by_tap[j·stride + r]·x[m + b + j] for b < B: B outputs summed together,
+// since each one's sum is a chain of dependent multiply-adds. An output's phases are side by side
+// in vectors, for a factor F of 2, 4 or 8 known when compiled (a run-time count made the phases'
+// stores a call to memmove).
+template <std::size_t F, std::size_t B>
+[[gnu::always_inline]] inline void run_outputs(const double* __restrict by_tap, std::size_t taps,
+                                               const double* __restrict x, std::size_t m,
+                                               double* __restrict out) noexcept {
+  constexpr std::size_t kVectors = F <= kPhasesPerVector ? 1 : F / kPhasesPerVector;
+  constexpr std::size_t kStride = kVectors * kPhasesPerVector;
+  Vector sum[B][kVectors] = {};
+  for (std::size_t j = 0; j < taps; ++j)
+    for (std::size_t v = 0; v < kVectors; ++v) {
+      Vector t;  // by_tap is a std::vector's, aligned for a double only
+      __builtin_memcpy(&t, by_tap + (j * kVectors + v) * kPhasesPerVector, sizeof t);
+      for (std::size_t b = 0; b < B; ++b) sum[b][v] += t * x[m + b + j];
+    }
+  for (std::size_t b = 0; b < B; ++b) {
+    double lanes[kStride];
+    __builtin_memcpy(lanes, sum[b], sizeof lanes);
+    for (std::size_t r = 0; r < F; ++r) out[(m + b) * F + r] = lanes[r];
+  }
+}
+
+// Outputs [0, count): four at a time, then one at a time.
 template <std::size_t F>
 [[gnu::always_inline]] inline void run(const double* __restrict by_tap, std::size_t taps,
                                        const double* __restrict x, std::size_t count,
                                        double* __restrict out) noexcept {
-  constexpr std::size_t kVectors = F <= kPhasesPerVector ? 1 : F / kPhasesPerVector, kBlock = 4;
-  constexpr std::size_t kStride = kVectors * kPhasesPerVector;
+  constexpr std::size_t kBlock = 4;
   std::size_t m = 0;
-  for (; m + kBlock <= count; m += kBlock) {
-    Vector sum[kBlock][kVectors] = {};
-    for (std::size_t j = 0; j < taps; ++j)
-      for (std::size_t v = 0; v < kVectors; ++v) {
-        Vector t;  // by_tap is a std::vector's, aligned for a double only
-        __builtin_memcpy(&t, by_tap + (j * kVectors + v) * kPhasesPerVector, sizeof t);
-        for (std::size_t b = 0; b < kBlock; ++b) sum[b][v] += t * x[m + b + j];
-      }
-    for (std::size_t b = 0; b < kBlock; ++b) {
-      double lanes[kStride];
-      __builtin_memcpy(lanes, sum[b], sizeof lanes);
-      for (std::size_t r = 0; r < F; ++r) out[(m + b) * F + r] = lanes[r];
-    }
-  }
-  for (; m < count; ++m) {
-    Vector sum[kVectors] = {};
-    for (std::size_t j = 0; j < taps; ++j)
-      for (std::size_t v = 0; v < kVectors; ++v) {
-        Vector t;
-        __builtin_memcpy(&t, by_tap + (j * kVectors + v) * kPhasesPerVector, sizeof t);
-        sum[v] += t * x[m + j];
-      }
-    double lanes[kStride];
-    __builtin_memcpy(lanes, sum, sizeof lanes);
-    for (std::size_t r = 0; r < F; ++r) out[m * F + r] = lanes[r];
-  }
+  for (; m + kBlock <= count; m += kBlock) run_outputs<F, kBlock>(by_tap, taps, x, m, out);
+  for (; m < count; ++m) run_outputs<F, 1>(by_tap, taps, x, m, out);
 }
 
 [[gnu::always_inline]] inline void run_factor(const double* by_tap, std::size_t taps,
@@ -90,9 +86,10 @@ void run_portable(const double* by_tap, std::size_t taps, std::size_t factor, co
 
 }  // namespace
 
-FrameInterpolator::FrameInterpolator(std::size_t frame_length, std::size_t active_bins)
+FrameInterpolator::FrameInterpolator(std::size_t frame_length, std::size_t active_bins,
+                                     FrameRate rate)
     : frame_length_(frame_length),
-      factor_(choose_factor(frame_length, active_bins)),
+      factor_(rate == FrameRate::full ? 1 : choose_factor(frame_length, active_bins)),
       avx2_fma_(model::numeric::cpu_has_avx2_fma()) {
   if (factor_ == 1) return;
   const std::size_t reduced = frame_length / factor_;

@@ -11,12 +11,19 @@
 
 namespace nibrig::rt {
 
+// How a frame's inverse FFT is made: at a fraction of its rate and interpolated back (within 80 dB
+// of the full-rate frame, several times faster), or at the full rate (the reference the reduced
+// one is tested against; interpolate() is then a copy).
+enum class FrameRate { reduced, full };
+
 class FrameInterpolator {
  public:
   // The largest factor (1, 2, 4 or 8, dividing frame_length) whose reduced rate keeps the first
   // image at least one band above the band (the band's top at most a third of the reduced rate),
-  // for a band of `active_bins` bins of a frame_length-point frame. Allocates (control thread).
-  FrameInterpolator(std::size_t frame_length, std::size_t active_bins);
+  // for a band of `active_bins` bins of a frame_length-point frame; 1 at FrameRate::full.
+  // Allocates (control thread).
+  FrameInterpolator(std::size_t frame_length, std::size_t active_bins,
+                    FrameRate rate = FrameRate::reduced);
 
   std::size_t factor() const noexcept { return factor_; }
   std::size_t reduced_length() const noexcept { return frame_length_ / factor_; }

@@ -42,6 +42,7 @@ TEST(FrameInterpolator, ChoosesTheLargestFactorThatKeepsTheImageABandAway) {
   EXPECT_EQ(FrameInterpolator(8192, 300).factor(), 8u);
   EXPECT_EQ(FrameInterpolator(1024, 400).factor(), 1u);  // a band above a sixth of the rate
   EXPECT_EQ(FrameInterpolator(8190, 511).factor(), 2u);  // a factor must divide the frame
+  EXPECT_EQ(FrameInterpolator(8192, 300, FrameRate::full).factor(), 1u);  // the reference
 }
 
 TEST(FrameInterpolator, ReproducesTheBandLimitedSignalTo80DbAndItsSamplesExactly) {
